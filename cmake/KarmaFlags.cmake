@@ -1,0 +1,17 @@
+# Compiler flags shared by every Karma target.
+# Determinism: no fast-math, and no fused multiply-add contraction, so -O0 and -O2 agree bit for bit.
+set(KARMA_C_FLAGS -ffp-contract=off -fno-fast-math)
+set(KARMA_WARNINGS -Wall -Wextra -pedantic -Wshadow -Wstrict-prototypes -Wmissing-prototypes
+                   -Wdouble-promotion -Wvla -Wno-unused-parameter)
+if(KARMA_WERROR)
+  list(APPEND KARMA_WARNINGS -Werror)
+endif()
+
+if(KARMA_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined -fno-sanitize-recover=all)
+endif()
+
+function(karma_apply_warnings target)
+  target_compile_options(${target} PRIVATE ${KARMA_C_FLAGS} ${KARMA_WARNINGS})
+endfunction()
