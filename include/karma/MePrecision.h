@@ -16,7 +16,7 @@
 #include <float.h>
 #include <stdint.h>
 
-#include "config.h"
+#include <karma/config.h>
 
 #ifdef __cplusplus
 #  define ME_EXTERN_C_BEGIN extern "C" {

@@ -1,0 +1,26 @@
+/* McdContact.h -- a contact point produced by a nearfield (pair) test.
+ *
+ * Conventions: the normal is a unit vector pointing from model 1 towards model 2 of the pair (the
+ * direction in which model 2 must move to separate); `separation` is the signed distance between the
+ * surfaces along the normal: negative when they overlap (penetration depth = -separation), positive
+ * when a contact is reported early because it lies within the models' contact tolerance. */
+#ifndef MCD_CONTACT_H
+#define MCD_CONTACT_H
+
+#include "MePrecision.h"
+
+ME_EXTERN_C_BEGIN
+
+typedef struct McdContact {
+    MeVector3 position; /**< world point, midway between the two surfaces */
+    MeVector3 normal;   /**< unit, model 1 -> model 2 */
+    MeReal separation;  /**< < 0: penetration */
+    MeI16 dims;         /**< dimension of the touching features' overlap: 0 point, 1 line, 2 face */
+    MeI16 pad_;
+    void *element1;     /**< sub-element of model 1 (e.g. a triangle or an aggregate child), or NULL */
+    void *element2;     /**< sub-element of model 2, or NULL */
+} McdContact;
+
+ME_EXTERN_C_END
+
+#endif /* MCD_CONTACT_H */

@@ -1,0 +1,42 @@
+/* MeChunk.h -- a scratch block that doubles when a larger size is asked of it.
+ *
+ * The step's temporary arrays (partition lists, the solver's rows and matrices) come from chunks
+ * owned by the world. A chunk keeps its largest size, so after the first few steps of a scene the
+ * step allocates nothing; each growth is reported as ME_ERR_CHUNK_GROWTH (info level) with the new
+ * size, and MeChunkSetAuto pre-sizes a chunk so that it never grows during the game. */
+#ifndef ME_CHUNK_H
+#define ME_CHUNK_H
+
+#include <stddef.h>
+
+#include "MePrecision.h"
+
+ME_EXTERN_C_BEGIN
+
+typedef struct MeChunk {
+    void *memory;
+    size_t size;         /**< bytes currently allocated */
+    size_t maxSize;      /**< largest size asked for since init */
+    int inUse;           /**< between GetMem and PutMem */
+    int growthCount;     /**< how many times the block grew */
+    const char *name;    /**< for messages, e.g. "Kea workspace" (string literal) */
+} MeChunk;
+
+/** Default initial size of a chunk, in bytes. */
+#define ME_CHUNK_DEFAULT_SIZE 1024
+
+ME_API void MeChunkInit(MeChunk *chunk, const char *name);
+ME_API void MeChunkTerm(MeChunk *chunk);
+/** A block of at least `bytes` bytes, 64-byte aligned (contents undefined), or NULL when memory ran
+ *  out or the chunk is already in use. */
+ME_API void *MeChunkGetMem(MeChunk *chunk, size_t bytes);
+ME_API void MeChunkPutMem(MeChunk *chunk, void *memory);
+/** Grow now to at least `bytes`, so that later requests up to that size allocate nothing. */
+ME_API MeBool MeChunkSetAuto(MeChunk *chunk, size_t bytes);
+ME_API size_t MeChunkGetCurrentSize(const MeChunk *chunk);
+ME_API size_t MeChunkGetMaxSize(const MeChunk *chunk);
+ME_API MeBool MeChunkIsInUse(const MeChunk *chunk);
+
+ME_EXTERN_C_END
+
+#endif /* ME_CHUNK_H */

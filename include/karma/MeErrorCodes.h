@@ -1,0 +1,58 @@
+/* MeErrorCodes.h -- every message code Karma can report, in one list.
+ *
+ * Each entry is X(name, number, level, text). Numbers are stable: never renumber or reuse one; add new
+ * codes at the end of their layer's block. Ranges: Me 1-99, Mdt 100-299, Kea 300-399, Mcd 400-599,
+ * Mst 600-699, tools and viewer 700-799. A message handler receives the code, its level, the name of
+ * the API function the caller used, and a sentence that names the offending argument. */
+#ifndef ME_ERROR_CODES_H
+#define ME_ERROR_CODES_H
+
+/* clang-format off */
+#define ME_ERROR_LIST_ME(X) \
+    X(ME_ERR_NONE,               0, ME_LEVEL_INFO,    "no error") \
+    X(ME_ERR_USER_MESSAGE,       1, ME_LEVEL_INFO,    "message sent by the application through MeWarning/MeInfo/...") \
+    X(ME_ERR_OUT_OF_MEMORY,      2, ME_LEVEL_WARNING, "the memory API could not allocate a block") \
+    X(ME_ERR_NULL_ARGUMENT,      3, ME_LEVEL_WARNING, "a required pointer or handle argument is NULL") \
+    X(ME_ERR_INVALID_HANDLE,     4, ME_LEVEL_WARNING, "a handle refers to an object that was destroyed, or is not a handle at all") \
+    X(ME_ERR_FOREIGN_HANDLE,     5, ME_LEVEL_WARNING, "a handle belongs to another world, framework or space than the one it is used with") \
+    X(ME_ERR_WRONG_HANDLE_KIND,  6, ME_LEVEL_WARNING, "a handle of one kind was passed where another kind is expected") \
+    X(ME_ERR_NONFINITE_ARGUMENT, 7, ME_LEVEL_WARNING, "an argument is NaN or infinite") \
+    X(ME_ERR_ARGUMENT_RANGE,     8, ME_LEVEL_WARNING, "an argument is outside its valid range") \
+    X(ME_ERR_POOL_FULL,          9, ME_LEVEL_WARNING, "a fixed-size pool is full; raise the size named in the message") \
+    X(ME_ERR_CHUNK_GROWTH,      10, ME_LEVEL_INFO,    "a scratch chunk grew; pre-size it to avoid allocation during the step") \
+    X(ME_ERR_INTERNAL,          11, ME_LEVEL_FATAL,   "internal inconsistency: a bug in Karma, please report it") \
+    X(ME_ERR_TOO_MANY_OWNERS,   12, ME_LEVEL_WARNING, "too many worlds, frameworks or spaces exist at once") \
+    X(ME_ERR_BAD_STATE,         13, ME_LEVEL_WARNING, "the call is not allowed in the object's current state") \
+    X(ME_ERR_PROFILE_SECTIONS,  14, ME_LEVEL_WARNING, "a profile has no room for another named section") \
+    X(ME_ERR_PROFILE_NESTING,   15, ME_LEVEL_WARNING, "profile sections were ended in a different order from the one they were started in")
+
+#define ME_ERROR_LIST_MDT(X) \
+    X(ME_ERR_MASS_NOT_POSITIVE,     100, ME_LEVEL_WARNING, "a mass is zero or negative") \
+    X(ME_ERR_INERTIA_INVALID,       101, ME_LEVEL_WARNING, "an inertia tensor is not symmetric positive definite") \
+    X(ME_ERR_NEGATIVE_DAMPING,      102, ME_LEVEL_WARNING, "a damping coefficient is negative") \
+    X(ME_ERR_ZERO_AXIS,             103, ME_LEVEL_WARNING, "an axis or direction has zero length") \
+    X(ME_ERR_QUATERNION_NOT_UNIT,   104, ME_LEVEL_WARNING, "a quaternion is not of unit length within tolerance") \
+    X(ME_ERR_STEP_SIZE,             105, ME_LEVEL_WARNING, "a time step is zero, negative or not finite") \
+    X(ME_ERR_NONFINITE_STATE,       106, ME_LEVEL_WARNING, "the simulation produced a NaN or infinite value; the partition was disabled") \
+    X(ME_ERR_SCALE_NOT_POSITIVE,    107, ME_LEVEL_WARNING, "a length or mass scale is zero, negative or not finite") \
+    X(ME_ERR_NEGATIVE_VALUE,        108, ME_LEVEL_WARNING, "a value that must be zero or positive is negative") \
+    X(ME_ERR_NOT_ROTATION,          109, ME_LEVEL_WARNING, "a matrix is not a rotation (orthonormal, right-handed) within tolerance") \
+    X(ME_ERR_WORLD_LOCKED,          110, ME_LEVEL_WARNING, "the world is stepping; this change is not allowed from a callback") \
+    X(ME_ERR_MASS_RATIO,            111, ME_LEVEL_INFO,    "a mass or inertia is far (over 100x) from the world's massScale; expect poor accuracy") \
+    X(ME_ERR_BODY_INDEX,            112, ME_LEVEL_WARNING, "a body index must be 0 or 1")
+
+#define ME_ERROR_LIST_KEA(X) \
+    X(ME_ERR_KEA_MAX_ITERATIONS,    300, ME_LEVEL_DEBUG,   "the LCP solver stopped at its iteration cap; the result is approximate") \
+    X(ME_ERR_KEA_WORKSPACE,         301, ME_LEVEL_WARNING, "the LCP solver's workspace is too small")
+
+#define ME_ERROR_LIST_MCD(X) \
+    X(ME_ERR_MCD_DEGENERATE_GEOMETRY, 400, ME_LEVEL_WARNING, "a geometry dimension is zero, negative or not finite") \
+    X(ME_ERR_MCD_IN_USE,              401, ME_LEVEL_WARNING, "the object is still in use and cannot be destroyed")
+
+#define ME_ERROR_LIST_MST(X) \
+    X(ME_ERR_MST_MATERIAL,            600, ME_LEVEL_WARNING, "a material index is out of range")
+
+#define ME_ERROR_LIST(X) ME_ERROR_LIST_ME(X) ME_ERROR_LIST_MDT(X) ME_ERROR_LIST_KEA(X) ME_ERROR_LIST_MCD(X) ME_ERROR_LIST_MST(X)
+/* clang-format on */
+
+#endif /* ME_ERROR_CODES_H */

@@ -1,0 +1,64 @@
+/* check.h -- internal macros for reporting errors and checking arguments (not installed).
+ *
+ * ME_REPORT reports a coded message naming the calling API function (C99 __func__), so a check must
+ * sit in the public function the application called, or pass that name with ME_REPORT_IN.
+ * Two kinds of checks, kept apart:
+ *  - argument checks (the user's fault): always compiled in when cheap (a compare); the costly ones
+ *    (full validation of matrices, re-normalisation tests...) only with ME_ENABLE_CHECKS;
+ *  - ME_ASSERT_INTERNAL (Karma's own bug): debug builds only. */
+#ifndef ME_CHECK_H
+#define ME_CHECK_H
+
+#include <math.h>
+
+#include <karma/MeMessage.h>
+
+#define ME_REPORT(code, ...) MeReport((code), __func__, __FILE__, __LINE__, __VA_ARGS__)
+#define ME_REPORT_IN(function, code, ...) MeReport((code), (function), __FILE__, __LINE__, __VA_ARGS__)
+
+#if defined(ME_ENABLE_CHECKS) || !defined(NDEBUG)
+#  define ME_CHECKS_ON 1
+#else
+#  define ME_CHECKS_ON 0
+#endif
+
+/** MeReal is finite (not NaN, not infinite). */
+#define ME_IS_FINITE(x) (isfinite(x))
+
+/** Reject a non-finite argument: report and return `ret` (use ME_NOTHING for void functions). */
+#define ME_NOTHING
+#define ME_CHECK_FINITE(x, ret)                                                                      \
+    do {                                                                                             \
+        if (!ME_IS_FINITE(x)) {                                                                      \
+            ME_REPORT(ME_ERR_NONFINITE_ARGUMENT, "argument '%s' is %g (not finite); call ignored", #x, \
+                      (double)(x));                                                                  \
+            return ret;                                                                              \
+        }                                                                                            \
+    } while (0)
+
+#define ME_CHECK_FINITE3(x, y, z, ret)                                                               \
+    do {                                                                                             \
+        ME_CHECK_FINITE(x, ret);                                                                     \
+        ME_CHECK_FINITE(y, ret);                                                                     \
+        ME_CHECK_FINITE(z, ret);                                                                     \
+    } while (0)
+
+#define ME_CHECK_NOT_NULL(p, ret)                                                                    \
+    do {                                                                                             \
+        if (!(p)) {                                                                                  \
+            ME_REPORT(ME_ERR_NULL_ARGUMENT, "argument '%s' is NULL; call ignored", #p);              \
+            return ret;                                                                              \
+        }                                                                                            \
+    } while (0)
+
+#if !defined(NDEBUG)
+#  define ME_ASSERT_INTERNAL(cond)                                                                   \
+      do {                                                                                           \
+          if (!(cond))                                                                               \
+              ME_REPORT(ME_ERR_INTERNAL, "internal check failed: %s", #cond);                        \
+      } while (0)
+#else
+#  define ME_ASSERT_INTERNAL(cond) ((void)0)
+#endif
+
+#endif /* ME_CHECK_H */

@@ -1,0 +1,167 @@
+/* handle.c -- the owner registry and ID encoding (see handle.h). */
+#include "handle.h"
+
+#include "check.h"
+
+#define INDEX_SHIFT 0
+#define GEN_SHIFT (ME_HANDLE_INDEX_BITS)
+#define OWNER_SHIFT (ME_HANDLE_INDEX_BITS + ME_HANDLE_GEN_BITS)
+#define KIND_SHIFT (ME_HANDLE_INDEX_BITS + ME_HANDLE_GEN_BITS + ME_HANDLE_OWNER_BITS)
+#define FIELD_MASK(bits) (((uintptr_t)1 << (bits)) - 1)
+
+/* Slot 0 is never used, so that no ID is 0. */
+static MeHandleOwner registry[ME_HANDLE_MAX_OWNERS + 1];
+/* Registry slots are handed out round-robin so a freed slot is reused as late as possible. */
+static int nextOwnerSlot = 1;
+/* Seed for pool generations: advances per owner so that two owners' slots rarely share values. */
+static MeU32 generationSeed = 2;
+
+static const char *kindName(MeHandleKind kind)
+{
+    static const char *const names[ME_HANDLE_KIND_COUNT] = {"none",     "world",    "body",  "constraint",
+                                                            "framework", "geometry", "model", "space"};
+    return (kind >= 0 && kind < ME_HANDLE_KIND_COUNT) ? names[kind] : "unknown";
+}
+
+static uintptr_t encode(MeHandleKind kind, int owner, MeU32 generation, int index)
+{
+    return ((uintptr_t)kind << KIND_SHIFT) | ((uintptr_t)owner << OWNER_SHIFT) |
+           (((uintptr_t)generation & FIELD_MASK(ME_HANDLE_GEN_BITS)) << GEN_SHIFT) | ((uintptr_t)index << INDEX_SHIFT);
+}
+
+int MeHandleRegisterOwner(void *object, MeHandleKind ownerKind, const char *function)
+{
+    for (int tries = 0; tries < ME_HANDLE_MAX_OWNERS; tries++) {
+        int slot = nextOwnerSlot;
+        nextOwnerSlot = nextOwnerSlot % ME_HANDLE_MAX_OWNERS + 1;
+        if (registry[slot].object == NULL) {
+            MeHandleOwner *o = &registry[slot];
+            o->object = object;
+            o->ownerKind = ownerKind;
+            o->generation = (o->generation + 1) & (MeU32)FIELD_MASK(ME_HANDLE_GEN_BITS);
+            for (int k = 0; k < ME_HANDLE_KIND_COUNT; k++)
+                o->pools[k] = NULL;
+            return slot;
+        }
+    }
+    ME_REPORT_IN(function, ME_ERR_TOO_MANY_OWNERS, "at most %d worlds, frameworks and spaces may exist at once",
+                 ME_HANDLE_MAX_OWNERS);
+    return 0;
+}
+
+void MeHandleSetOwnerPool(int ownerSlot, MeHandleKind kind, MePool *pool)
+{
+    registry[ownerSlot].pools[kind] = pool;
+    /* Give this owner's slots a generation base of their own (see generationSeed). */
+    if (pool)
+        for (int i = 0; i < pool->capacity; i++)
+            pool->generation[i] = (pool->generation[i] + generationSeed) & ~1u;
+    generationSeed += 2u * 7919u;
+}
+
+void MeHandleUnregisterOwner(int ownerSlot)
+{
+    if (ownerSlot <= 0 || ownerSlot > ME_HANDLE_MAX_OWNERS)
+        return;
+    registry[ownerSlot].object = NULL;
+    registry[ownerSlot].generation++;
+    for (int k = 0; k < ME_HANDLE_KIND_COUNT; k++)
+        registry[ownerSlot].pools[k] = NULL;
+}
+
+uintptr_t MeHandleOfOwner(int ownerSlot)
+{
+    return encode(registry[ownerSlot].ownerKind, ownerSlot, registry[ownerSlot].generation, 0);
+}
+
+uintptr_t MeHandleOfSlot(int ownerSlot, MeHandleKind kind, int index)
+{
+    const MePool *pool = registry[ownerSlot].pools[kind];
+    return encode(kind, ownerSlot, MePoolSlotGeneration(pool, index), index);
+}
+
+void *MeHandleOwnerObject(int ownerSlot) { return registry[ownerSlot].object; }
+
+/* Decodes and checks an ID; returns a reason code (ME_ERR_NONE when valid). */
+static MeErrorCode check(uintptr_t id, MeHandleKind kind, int *ownerOut, int *indexOut)
+{
+    if (id == 0)
+        return ME_ERR_NULL_ARGUMENT;
+    MeHandleKind k = (MeHandleKind)((id >> KIND_SHIFT) & FIELD_MASK(ME_HANDLE_KIND_BITS));
+    int owner = (int)((id >> OWNER_SHIFT) & FIELD_MASK(ME_HANDLE_OWNER_BITS));
+    MeU32 gen = (MeU32)((id >> GEN_SHIFT) & FIELD_MASK(ME_HANDLE_GEN_BITS));
+    int index = (int)((id >> INDEX_SHIFT) & FIELD_MASK(ME_HANDLE_INDEX_BITS));
+    if (k != kind)
+        return (k > 0 && k < ME_HANDLE_KIND_COUNT) ? ME_ERR_WRONG_HANDLE_KIND : ME_ERR_INVALID_HANDLE;
+    if (owner <= 0 || owner > ME_HANDLE_MAX_OWNERS || registry[owner].object == NULL)
+        return ME_ERR_INVALID_HANDLE;
+    const MeHandleOwner *o = &registry[owner];
+    if (o->ownerKind == kind) { /* the ID of an owner */
+        if (index != 0 || gen != (o->generation & (MeU32)FIELD_MASK(ME_HANDLE_GEN_BITS)))
+            return ME_ERR_INVALID_HANDLE;
+    } else {
+        const MePool *pool = o->pools[kind];
+        if (!pool || !MePoolSlotIsLive(pool, index) ||
+            (MePoolSlotGeneration(pool, index) & (MeU32)FIELD_MASK(ME_HANDLE_GEN_BITS)) != gen)
+            return ME_ERR_INVALID_HANDLE;
+    }
+    *ownerOut = owner;
+    *indexOut = index;
+    return ME_ERR_NONE;
+}
+
+static void reportBad(MeErrorCode code, uintptr_t id, MeHandleKind kind, const char *function, const char *argument)
+{
+    if (code == ME_ERR_NULL_ARGUMENT)
+        ME_REPORT_IN(function, ME_ERR_NULL_ARGUMENT, "argument '%s' is a NULL %s ID; call ignored", argument,
+                     kindName(kind));
+    else if (code == ME_ERR_WRONG_HANDLE_KIND)
+        ME_REPORT_IN(function, ME_ERR_WRONG_HANDLE_KIND, "argument '%s' is a %s ID, not a %s ID; call ignored",
+                     argument, kindName((MeHandleKind)((id >> KIND_SHIFT) & FIELD_MASK(ME_HANDLE_KIND_BITS))), kindName(kind));
+    else
+        ME_REPORT_IN(function, ME_ERR_INVALID_HANDLE,
+                     "argument '%s' is not a live %s ID (destroyed, stale or never created); call ignored",
+                     argument, kindName(kind));
+}
+
+void *MeHandleResolveOwner(uintptr_t id, MeHandleKind ownerKind, const char *function, const char *argument)
+{
+    int owner, index;
+    MeErrorCode code = check(id, ownerKind, &owner, &index);
+    if (code != ME_ERR_NONE) {
+        reportBad(code, id, ownerKind, function, argument);
+        return NULL;
+    }
+    return registry[owner].object;
+}
+
+void *MeHandleResolve(uintptr_t id, MeHandleKind kind, const char *function, const char *argument, int *ownerSlot)
+{
+    int owner, index;
+    MeErrorCode code = check(id, kind, &owner, &index);
+    if (code != ME_ERR_NONE) {
+        reportBad(code, id, kind, function, argument);
+        return NULL;
+    }
+    if (ownerSlot)
+        *ownerSlot = owner;
+    return MePoolSlot(registry[owner].pools[kind], index);
+}
+
+void *MeHandleResolveOptional(uintptr_t id, MeHandleKind kind, const char *function, const char *argument,
+                              int *ownerSlot, MeBool *valid)
+{
+    if (id == 0) {
+        *valid = METRUE;
+        return NULL;
+    }
+    void *p = MeHandleResolve(id, kind, function, argument, ownerSlot);
+    *valid = p != NULL;
+    return p;
+}
+
+MeBool MeHandleIsValid(uintptr_t id, MeHandleKind kind)
+{
+    int owner, index;
+    return check(id, kind, &owner, &index) == ME_ERR_NONE;
+}
