@@ -102,6 +102,12 @@ static inline void MeRealSwap(MeReal *a, MeReal *b)
     (ME_IS_ZERO_TOL((y), (e)) ? ME_IS_ZERO_TOL((x), (e)) : MeFabs(((x) - (y)) / (y)) < (e))
 /** ME_ARE_EQUAL_TOL with ME_SMALL_EPSILON. */
 #define ME_ARE_EQUAL(x, y) ME_ARE_EQUAL_TOL((x), (y), ME_SMALL_EPSILON)
+/** Every element of the 3-vector x is within e of zero. */
+#define ME_IS_ZERO_3VEC_TOL(x, e) (ME_IS_ZERO_TOL((x)[0], (e)) && ME_IS_ZERO_TOL((x)[1], (e)) && ME_IS_ZERO_TOL((x)[2], (e)))
+/** The 3-vectors x and y are element-wise ME_ARE_EQUAL_TOL. */
+#define ME_ARE_EQUAL_3VEC_TOL(x, y, e)                                                               \
+    (ME_ARE_EQUAL_TOL((x)[0], (y)[0], (e)) && ME_ARE_EQUAL_TOL((x)[1], (y)[1], (e)) &&                \
+     ME_ARE_EQUAL_TOL((x)[2], (y)[2], (e)))
 
 /** Seed the library's own pseudo-random generator (used by MeRealRandomInRange). The generator is
  * deterministic and independent of rand(); its state is global (not thread-safe). Default seed 0. */

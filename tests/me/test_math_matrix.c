@@ -105,6 +105,17 @@ static void test_invert(void **state)
         assert_mat3_near(S, copy, 0);
     }
     {
+        /* rank 2 up to rounding: row 2 = 0.3 row 0 + 0.7 row 1 in floating point, so det is tiny
+         * but usually not exactly 0; every one must be refused */
+        for (k = 0; k < 50; k++) {
+            MeMatrix3 S;
+            RandomMatrix3(S, 5);
+            MeVector3MultiplyScalar(S[2], S[0], ME_R(0.3));
+            MeVector3MultiplyAdd(S[2], ME_R(0.7), S[1]);
+            assert_false(MeMatrix3Invert(S));
+        }
+    }
+    {
         /* the singularity test does not depend on scale: a tiny well-conditioned matrix inverts */
         MeMatrix3 A, P, A0;
         MeMatrix3MakeRotationX(A, ME_R(0.3));
@@ -144,6 +155,12 @@ static void test_symmetric_invert(void **state)
         assert_true(Sinv[0][1] == Sinv[1][0] && Sinv[0][2] == Sinv[2][0] && Sinv[1][2] == Sinv[2][1]);
         MeMatrix3MultiplyMatrix(P, S, Sinv);
         assert_true(MeMatrix3IsIdentity(P, ME_TOL(1e-12, 1e-5)));
+    }
+    {
+        /* asymmetric by 1e-3 relative: refused */
+        MeMatrix3 A = {{2, 1, 0}, {1, 2, 0}, {0, 0, 1}};
+        A[0][1] += ME_R(2e-3);
+        assert_false(MeMatrix3SymmetricInvert(A));
     }
     {
         MeMatrix3 A = {{1, 2, 0}, {0, 1, 0}, {0, 0, 1}}, copy;

@@ -34,6 +34,13 @@ static void test_scalars(void **state)
     assert_false(ME_IS_ZERO(ME_SMALL_EPSILON * 2));
     assert_true(ME_ARE_EQUAL(ME_R(1000.0), ME_R(1000.0) * (1 + ME_SMALL_EPSILON / 2)));
     assert_false(ME_ARE_EQUAL(ME_R(1000.0), ME_R(1001.0)));
+    {
+        MeVector3 a = {ME_R(1e-7), 0, ME_R(-1e-7)}, b = {1, 2, 3}, c = {1, ME_R(2.0001), 3};
+        assert_true(ME_IS_ZERO_3VEC_TOL(a, ME_R(1e-6)));
+        assert_false(ME_IS_ZERO_3VEC_TOL(b, ME_R(1e-6)));
+        assert_true(ME_ARE_EQUAL_3VEC_TOL(b, c, ME_R(1e-3)));
+        assert_false(ME_ARE_EQUAL_3VEC_TOL(b, c, ME_R(1e-6)));
+    }
 }
 
 static void test_random_is_deterministic_and_uniform(void **state)
