@@ -15,7 +15,7 @@ void karma_assert_rel(double a, double b, double tol, const char *sa, const char
     double scale = fabs(b);
     if (!(err <= tol * scale)) {
         print_error("%s = %.17g, %s = %.17g: relative difference %.3g exceeds %.3g\n", sa, a, sb, b,
-                    scale > 0 ? err / scale : INFINITY, tol);
+                    scale > 0 ? err / scale : (double)INFINITY, tol);
         _fail(file, line);
     }
 }
