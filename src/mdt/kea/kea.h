@@ -1,0 +1,154 @@
+/* kea.h -- Kea, Karma's LCP solver core: the bounded LCP of one partition, solved exactly (direct
+ * path) or by projected Gauss-Seidel with subspace minimisation (iterative path).
+ *
+ * The problem (one partition at a time; the constraint packer fills a KeaProblem):
+ *   bodies 0..nb-1 with inverse mass m^-1 and world-frame inverse inertia I^-1 (3x3 symmetric);
+ *   rows 0..n-1, row i with a Jacobian J_i = (lin0, ang0 | lin1, ang1) acting on bodies b0_i, b1_i
+ *   (KEA_WORLD = -1: that half is ignored), softness eps_i >= 0, right-hand side r_i (target
+ *   constraint-velocity change), bounds lo_i <= hi_i (+-MEINFINITY allowed) and optionally a
+ *   friction link (link_i = index of the normal row, coefficient mu_i).
+ *   Unknown: the row impulses x over the step. With A = J M^-1 J^T + diag(eps) and w = A x - r:
+ *       lo <= x <= hi,  x_i = lo_i => w_i >= 0,  x_i = hi_i => w_i <= 0,  lo_i < x_i < hi_i => w_i = 0.
+ *   With A positive definite (eps > 0 is enough) this is the strictly convex box QP
+ *   min 1/2 x^T A x - r^T x over the box, with one solution.
+ *
+ * Friction links make the bounds depend on the solution: a linked row i has the effective bounds
+ *   [max(lo_i, -mu_i max(x_link, 0)), min(hi_i, mu_i max(x_link, 0))]    (lo_i <= 0 <= hi_i assumed;
+ * a row's own bounds are widened to include 0 if they do not). The iterative path applies them
+ * dynamically row by row; the direct path solves a sequence of box QPs, the bounds of each taken from
+ * the previous solution (the first from the warm start), until the bounds stop moving or
+ * maxFrictionPasses is reached (an outer fixed-point; KeaStats.frictionPasses counts the passes).
+ *
+ * Residual (KeaResidual, KeaStats.residual): the natural-map residual in constraint-velocity units,
+ *   res = max_i d_i |x_i - mid(lo_i, x_i - w_i / d_i, hi_i)|,   d_i = A_ii,
+ * with the effective (link) bounds at x. It is zero exactly at a solution; for a row strictly inside
+ * its bounds it is |w_i|, for a row at a bound it is the velocity with which the row would still
+ * push against that bound (or the size of a bound violation scaled by d_i).
+ *
+ * Memory: Kea never allocates. The caller asks KeaMemoryRequired(nRows, nBodies, path) and passes a
+ * workspace of at least that many bytes (any alignment) to KeaSolve.
+ *
+ * The algorithms, their costs and measured accuracy are described in docs/kea.md and at the top of
+ * kea_direct.c and kea_iterative.c. Internal API: the public MdtKea* wrappers will sit on top. */
+#ifndef KEA_H
+#define KEA_H
+
+#include <stddef.h>
+
+#include <karma/MePrecision.h>
+
+/** Body index of a row half that acts on the world (or on nothing): that half is ignored. */
+#define KEA_WORLD (-1)
+
+/** One Jacobian row, padded to 16 reals so that each 3-vector starts on a 16-byte boundary (float).
+ *  The fourth element of each part is padding and is never read. */
+typedef struct KeaJacobianRow {
+    MeReal lin0[4]; /**< linear part on body 0 (acts on its linear velocity) */
+    MeReal ang0[4]; /**< angular part on body 0 */
+    MeReal lin1[4]; /**< linear part on body 1 */
+    MeReal ang1[4]; /**< angular part on body 1 */
+} KeaJacobianRow;
+
+/** Inverse mass data of a body, world frame. A body with invMass 0 and zero invInertia is immovable. */
+typedef struct KeaBody {
+    MeReal invMass;          /**< 1/m, 1/kg; >= 0 */
+    MeReal invInertia[3][3]; /**< I^-1 in the world frame, symmetric positive semi-definite */
+} KeaBody;
+
+/** Velocity change of a body: the solver's output Delta v = M^-1 J^T x. */
+typedef struct KeaBodyVelocity {
+    MeReal lin[3]; /**< linear velocity change, m/s */
+    MeReal ang[3]; /**< angular velocity change, rad/s (world frame) */
+} KeaBodyVelocity;
+
+/** One partition's bounded LCP. Arrays are indexed by row (nRows entries) unless said otherwise;
+ *  they are read only. Optional arrays may be NULL. */
+typedef struct KeaProblem {
+    int nRows;                 /**< number of rows n >= 0 */
+    int nBodies;               /**< number of bodies nb >= 0 */
+    const KeaBody *bodies;     /**< nb bodies */
+    const KeaJacobianRow *J;   /**< Jacobian rows */
+    const int (*rowBodies)[2]; /**< partition-local body indices of each row's halves, or KEA_WORLD */
+    const MeReal *epsilon;     /**< softness eps_i >= 0 added to A_ii (NULL = 0 for every row) */
+    const MeReal *rhs;         /**< r_i: target constraint-velocity change */
+    const MeReal *lo;          /**< lower bounds (may be -MEINFINITY) */
+    const MeReal *hi;          /**< upper bounds (may be MEINFINITY), lo_i <= hi_i */
+    const int *link;           /**< friction link: normal row of row i, or -1 (NULL = no links) */
+    const MeReal *mu;          /**< friction coefficient of linked rows (needed if link != NULL) */
+    const MeReal *x0;          /**< warm start (NULL = start from 0); may alias the output x */
+} KeaProblem;
+
+/** Which method solves a partition. */
+typedef enum KeaPath {
+    KeaPathAuto = 0,      /**< direct when nRows <= maxDirectRows, else iterative */
+    KeaPathDirect = 1,    /**< exact: dense Cholesky-based active-set (pivoting) method */
+    KeaPathIterative = 2  /**< projected Gauss-Seidel (+ subspace minimisation) on the sparse rows */
+} KeaPath;
+
+/** Outcome of a solve. The solution is usable for every status except the last two. */
+typedef enum KeaStatus {
+    KeaStatusOk = 0,             /**< converged (direct: exact; iterative: residual <= tolerance) */
+    KeaStatusMaxIterations = 1,  /**< iterative path stopped at maxIterations (the usual case) */
+    KeaStatusMaxPivots = 2,      /**< direct path hit maxPivots (best feasible iterate returned) */
+    KeaStatusFrictionPasses = 3, /**< direct path: friction bounds still moving after the last pass */
+    KeaStatusWorkspaceTooSmall = 4, /**< workspace smaller than KeaMemoryRequired: nothing solved */
+    KeaStatusBadInput = 5        /**< invalid problem (index out of range, lo > hi, eps < 0, NaN) */
+} KeaStatus;
+
+/** Solver settings; fill with KeaParametersDefault, then change what you need. */
+typedef struct KeaParameters {
+    KeaPath path;           /**< method; default KeaPathAuto */
+    int maxDirectRows;      /**< Auto chooses direct up to this many rows; default 128 */
+    int maxIterations;      /**< iterative: Gauss-Seidel sweeps; default 10 (Karma's) */
+    MeReal tolerance;       /**< iterative: stop when a sweep's residual (velocity units, see top
+                                 comment, measured during the sweep) is <= this; default 1e-6 m/s */
+    MeReal sor;             /**< iterative: over-relaxation factor in (0, 2); default 1 */
+    int subspaceIterations; /**< iterative: conjugate-gradient steps on the free rows between two
+                                 sweeps (subspace minimisation); 0 = plain PGS; default 4 */
+    int maxPivots;          /**< direct: cap on active-set changes; 0 = automatic (8 n + 64) */
+    int maxFrictionPasses;  /**< direct: box-QP passes for friction links; default 8 */
+} KeaParameters;
+
+/** What a solve did. */
+typedef struct KeaStats {
+    KeaPath path;       /**< path used (never Auto) */
+    KeaStatus status;   /**< same as KeaSolve's return value */
+    int rows;           /**< nRows */
+    int bodies;         /**< nBodies */
+    int iterations;     /**< iterative: Gauss-Seidel sweeps done */
+    int subspaceSteps;  /**< iterative: conjugate-gradient steps done (all sweeps) */
+    int pivots;         /**< direct: active-set changes (a row freed or fixed at a bound) */
+    int frictionPasses; /**< direct: box-QP passes (1 without links) */
+    int factorizations; /**< direct: full Cholesky factorisations */
+    int regularised;    /**< direct: free-block pivots raised to the floor (A near singular) */
+    MeReal residual;    /**< natural-map residual of the returned x (top comment), velocity units */
+} KeaStats;
+
+/** Default settings (see the field comments). */
+void KeaParametersDefault(KeaParameters *params);
+
+/** The path KeaSolve will use for a partition of nRows rows under params. */
+KeaPath KeaSelectPath(int nRows, const KeaParameters *params);
+
+/** Bytes of workspace KeaSolve needs for nRows rows and nBodies bodies on the given path
+ *  (KeaPathAuto: enough for either path). Independent of alignment: any buffer of this size works. */
+size_t KeaMemoryRequired(int nRows, int nBodies, KeaPath path);
+
+/** Solve one partition. x (nRows) receives the impulses; dv (nBodies, may be NULL) the velocity
+ *  changes M^-1 J^T x; stats (may be NULL) what happened. workspace: at least
+ *  KeaMemoryRequired(nRows, nBodies, KeaSelectPath(nRows, params)) bytes. No allocation, no
+ *  messages: the status says what went wrong. Deterministic: rows are visited in index order. */
+KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void *workspace,
+                   size_t workspaceSize, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
+
+/** Delta v = M^-1 J^T x for every body (nBodies entries). */
+void KeaBodyVelocityFromImpulses(const KeaProblem *problem, const MeReal *x, KeaBodyVelocity *dv);
+
+/** The effective bounds of row i at x (friction links applied; see the top comment). */
+void KeaRowBounds(const KeaProblem *problem, const MeReal *x, int i, MeReal *lo, MeReal *hi);
+
+/** Natural-map residual of x (top comment), with dv = M^-1 J^T x as KeaBodyVelocityFromImpulses
+ *  gives it. Velocity units; 0 at the exact solution. */
+MeReal KeaResidual(const KeaProblem *problem, const MeReal *x, const KeaBodyVelocity *dv);
+
+#endif /* KEA_H */

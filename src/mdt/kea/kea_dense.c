@@ -1,0 +1,196 @@
+/* kea_dense.c -- the dense side of Kea's direct path: forming A = J M^-1 J^T + diag(eps), and a
+ * Cholesky factor of A restricted to the free rows that can grow and shrink one row at a time.
+ *
+ * Forming A: each row touches at most two bodies, so A_ij is non-zero only when rows i and j share a
+ * body. A body -> (row, half) incidence list turns the O(n^2) pair scan into O(sum over bodies of
+ * degree^2) six-term dot products (plus the O(n^2) clearing of A).
+ *
+ * Factor updates (free set F, A_FF = L L^T, rows of L in the order of F):
+ *  - append row i: solve L l = A_F,i, then d = A_ii - l.l, new row (l, sqrt(d)): O(|F|^2);
+ *  - remove the row at position p: the rows below lose column p; their trailing block L33 must then
+ *    satisfy L33' L33'^T = L33 L33^T + v v^T with v the removed column, a rank-one update done with
+ *    Givens-like rotations (Golub & Van Loan, "Matrix Computations", sec. on updating Cholesky): O(|F|^2).
+ *  A pivot d below KEA_PIVOT_FLOOR * A_ii (a row dependent on the free ones, possible only when
+ *  eps = 0) is raised to that floor and counted. */
+#include <string.h>
+
+#include "kea_internal.h"
+
+/* The half h of a row as (linear, angular) 3-vectors. */
+static const MeReal *KeaHalfLin(const KeaJacobianRow *row, int half) { return half ? row->lin1 : row->lin0; }
+static const MeReal *KeaHalfAng(const KeaJacobianRow *row, int half) { return half ? row->ang1 : row->ang0; }
+
+void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeReal *A, int *incidence,
+                        int *start)
+{
+    const int n = problem->nRows, nb = problem->nBodies;
+    int i, b, h, p1, p2;
+
+    /* Body -> (row, half) incidence in CSR form, rows in ascending order within each body. */
+    for (b = 0; b <= nb; ++b)
+        start[b] = 0;
+    for (i = 0; i < n; ++i)
+        for (h = 0; h < 2; ++h)
+            if (problem->rowBodies[i][h] >= 0)
+                ++start[problem->rowBodies[i][h] + 1];
+    for (b = 0; b < nb; ++b)
+        start[b + 1] += start[b];
+    for (i = 0; i < n; ++i)
+        for (h = 0; h < 2; ++h) {
+            b = problem->rowBodies[i][h];
+            if (b >= 0)
+                incidence[start[b]++] = 2 * i + h;
+        }
+    for (b = nb; b > 0; --b) /* the fill advanced each start to the next body's: shift back */
+        start[b] = start[b - 1];
+    start[0] = 0;
+
+    memset(A, 0, sizeof(MeReal) * (size_t)n * (size_t)n);
+    for (b = 0; b < nb; ++b) {
+        for (p1 = start[b]; p1 < start[b + 1]; ++p1) {
+            const int e1 = incidence[p1], r1 = e1 >> 1, h1 = e1 & 1;
+            const MeReal *jl = KeaHalfLin(&problem->J[r1], h1), *ja = KeaHalfAng(&problem->J[r1], h1);
+            for (p2 = p1; p2 < start[b + 1]; ++p2) {
+                const int e2 = incidence[p2], r2 = e2 >> 1, h2 = e2 & 1;
+                const MeReal v = KeaDot3(jl, KeaHalfLin(&B[r2], h2)) + KeaDot3(ja, KeaHalfAng(&B[r2], h2));
+                A[(size_t)r1 * (size_t)n + (size_t)r2] += v;
+                if (p1 != p2) /* also covers a row touching one body through both halves */
+                    A[(size_t)r2 * (size_t)n + (size_t)r1] += v;
+            }
+        }
+    }
+    if (problem->epsilon)
+        for (i = 0; i < n; ++i)
+            A[(size_t)i * (size_t)n + (size_t)i] += problem->epsilon[i];
+}
+
+static MeReal *KeaRow(const KeaCholesky *c, int k) { return c->L + (size_t)k * (size_t)c->ld; }
+
+void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int i)
+{
+    const int k = c->size;
+    const MeReal *Ai = A + (size_t)i * (size_t)c->ld;
+    MeReal *lk = KeaRow(c, k);
+    MeReal d = Ai[i], floor = KEA_PIVOT_FLOOR * KeaMax(Ai[i], ME_R(0.0));
+    int j, m;
+
+    /* Forward substitution L l = A_F,i, written straight into row k. */
+    for (j = 0; j < k; ++j) {
+        const MeReal *lj = KeaRow(c, j);
+        MeReal s = Ai[c->F[j]];
+        for (m = 0; m < j; ++m)
+            s -= lj[m] * lk[m];
+        lk[j] = s / lj[j];
+        d -= lk[j] * lk[j];
+    }
+    if (!(d > floor)) {
+        d = floor > ME_R(0.0) ? floor : ME_MIN_EPSILON;
+        ++c->regularised;
+    }
+    lk[k] = KeaSqrt(d);
+    c->F[k] = i;
+    c->pos[i] = k;
+    c->size = k + 1;
+}
+
+void KeaCholeskyRemove(KeaCholesky *c, int p)
+{
+    const int k = c->size;
+    int i, j, m;
+
+    /* Rank-one update of the trailing block with the removed column v (kept in column p as it is
+     * consumed: v_i lives in L[i][p]). */
+    for (j = p + 1; j < k; ++j) {
+        MeReal *lj = KeaRow(c, j);
+        const MeReal ljj = lj[j], vj = lj[p];
+        const MeReal r = KeaSqrt(ljj * ljj + vj * vj);
+        const MeReal cs = r / ljj, sn = vj / ljj;
+        lj[j] = r;
+        for (i = j + 1; i < k; ++i) {
+            MeReal *li = KeaRow(c, i);
+            const MeReal lij = (li[j] + sn * li[p]) / cs;
+            li[p] = cs * li[p] - sn * lij;
+            li[j] = lij;
+        }
+    }
+    /* Drop row p and column p: rows below move up one, their columns after p move left one. */
+    c->pos[c->F[p]] = -1;
+    for (i = p + 1; i < k; ++i) {
+        MeReal *src = KeaRow(c, i), *dst = KeaRow(c, i - 1);
+        for (m = 0; m < p; ++m)
+            dst[m] = src[m];
+        for (m = p; m < i; ++m)
+            dst[m] = src[m + 1];
+        c->F[i - 1] = c->F[i];
+        c->pos[c->F[i - 1]] = i - 1;
+    }
+    c->size = k - 1;
+}
+
+void KeaCholeskySolve(const KeaCholesky *c, MeReal *b)
+{
+    const int k = c->size;
+    int i, j;
+    for (i = 0; i < k; ++i) { /* L y = b */
+        const MeReal *li = KeaRow(c, i);
+        MeReal s = b[i];
+        for (j = 0; j < i; ++j)
+            s -= li[j] * b[j];
+        b[i] = s / li[i];
+    }
+    for (i = k - 1; i >= 0; --i) { /* L^T x = y, column-oriented so that L is read by rows */
+        const MeReal *li = KeaRow(c, i);
+        const MeReal xi = b[i] / li[i];
+        b[i] = xi;
+        for (j = 0; j < i; ++j)
+            b[j] -= li[j] * xi;
+    }
+}
+
+int KeaDenseFactor(int m, MeReal *G, int *perm)
+{
+    MeReal scale = ME_R(0.0);
+    int i, j, k;
+    for (i = 0; i < m * m; ++i)
+        scale = KeaMax(scale, KeaFabs(G[i]));
+    for (k = 0; k < m; ++k) {
+        int piv = k;
+        for (i = k + 1; i < m; ++i)
+            if (KeaFabs(G[i * m + k]) > KeaFabs(G[piv * m + k]))
+                piv = i;
+        perm[k] = piv;
+        if (!(KeaFabs(G[piv * m + k]) > ME_SMALL_EPSILON * scale))
+            return 0;
+        if (piv != k)
+            for (j = 0; j < m; ++j) {
+                const MeReal t = G[k * m + j];
+                G[k * m + j] = G[piv * m + j];
+                G[piv * m + j] = t;
+            }
+        for (i = k + 1; i < m; ++i) {
+            const MeReal f = G[i * m + k] / G[k * m + k];
+            G[i * m + k] = f; /* the multiplier, kept for the solves */
+            for (j = k + 1; j < m; ++j)
+                G[i * m + j] -= f * G[k * m + j];
+        }
+    }
+    return 1;
+}
+
+void KeaDenseSolveFactored(int m, const MeReal *G, const int *perm, MeReal *b)
+{
+    int i, j;
+    for (i = 0; i < m; ++i) { /* apply the row swaps and L (unit diagonal) */
+        const MeReal t = b[perm[i]];
+        b[perm[i]] = b[i];
+        b[i] = t;
+        for (j = i + 1; j < m; ++j)
+            b[j] -= G[j * m + i] * b[i];
+    }
+    for (i = m - 1; i >= 0; --i) {
+        MeReal s = b[i];
+        for (j = i + 1; j < m; ++j)
+            s -= G[i * m + j] * b[j];
+        b[i] = s / G[i * m + i];
+    }
+}

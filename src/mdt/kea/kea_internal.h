@@ -1,0 +1,165 @@
+/* kea_internal.h -- pieces shared by Kea's source files (not part of any API).
+ *
+ * - scalar wrappers (float or double maths without promotion),
+ * - the workspace arena: a bump allocator over the caller's buffer that can also run in "counting"
+ *   mode, so that KeaMemoryRequired and the solve lay the workspace out with the same code,
+ * - row kernels: J_i . (dv_b0, dv_b1) and dv += B_i s, with B_i = M^-1 J_i^T stored as a row,
+ * - the updatable Cholesky factor of the direct path,
+ * - the entry points of the two paths. */
+#ifndef KEA_INTERNAL_H
+#define KEA_INTERNAL_H
+
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "kea.h"
+
+/* ---- scalars -------------------------------------------------------------------------------- */
+
+static inline MeReal KeaSqrt(MeReal a)
+{
+#if KARMA_DOUBLE
+    return sqrt(a);
+#else
+    return sqrtf(a);
+#endif
+}
+
+static inline MeReal KeaFabs(MeReal a)
+{
+#if KARMA_DOUBLE
+    return fabs(a);
+#else
+    return fabsf(a);
+#endif
+}
+
+static inline MeReal KeaMax(MeReal a, MeReal b) { return a > b ? a : b; }
+static inline MeReal KeaMin(MeReal a, MeReal b) { return a < b ? a : b; }
+
+/** mid(lo, v, hi) for lo <= hi. */
+static inline MeReal KeaClamp(MeReal v, MeReal lo, MeReal hi) { return v < lo ? lo : (v > hi ? hi : v); }
+
+/** A bound at or beyond +-MEINFINITY means "no bound". */
+static inline int KeaIsFinite(MeReal bound) { return bound > -MEINFINITY && bound < MEINFINITY; }
+
+/* Relative thresholds of the direct path, tied to the precision:
+ *  KEA_PIVOT_FLOOR: a free-block Cholesky pivot d (squared) below KEA_PIVOT_FLOOR * A_ii is raised
+ *    to it (the row then behaves as if it had that much extra softness);
+ *  KEA_DIRECT_TOL: multipliers and feasibility are judged against KEA_DIRECT_TOL times the problem's
+ *    scale (|r| + max A_ii |x|), so that rounding noise does not cause pivots. */
+#if KARMA_DOUBLE
+#  define KEA_PIVOT_FLOOR ME_R(1e-12)
+#  define KEA_DIRECT_TOL ME_R(1e-12)
+#else
+#  define KEA_PIVOT_FLOOR ME_R(1e-6)
+#  define KEA_DIRECT_TOL ME_R(2e-6)
+#endif
+
+/* ---- workspace arena ------------------------------------------------------------------------ */
+
+#define KEA_ALIGN 16
+
+typedef struct KeaArena {
+    unsigned char *base; /**< NULL: counting mode (allocations return NULL, only `used` grows) */
+    size_t size;         /**< bytes available from base */
+    size_t used;         /**< bytes handed out so far, including alignment gaps */
+} KeaArena;
+
+/** 16-byte aligned block of `bytes` bytes from the arena (NULL in counting mode or when full). */
+static inline void *KeaArenaAlloc(KeaArena *arena, size_t bytes)
+{
+    size_t offset = (arena->used + (KEA_ALIGN - 1)) & ~(size_t)(KEA_ALIGN - 1);
+    arena->used = offset + bytes;
+    if (!arena->base || arena->used > arena->size)
+        return NULL;
+    return arena->base + offset;
+}
+
+#define KEA_ALLOC(arena, type, count) ((type *)KeaArenaAlloc((arena), sizeof(type) * (size_t)(count)))
+
+/* ---- row kernels ---------------------------------------------------------------------------- */
+
+static inline MeReal KeaDot3(const MeReal *a, const MeReal *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/** J_i . (dv of body b0, dv of body b1): the constraint velocity of row i under dv. */
+static inline MeReal KeaRowVelocity(const KeaJacobianRow *J, const int b[2], const KeaBodyVelocity *dv)
+{
+    MeReal s = ME_R(0.0);
+    if (b[0] >= 0)
+        s += KeaDot3(J->lin0, dv[b[0]].lin) + KeaDot3(J->ang0, dv[b[0]].ang);
+    if (b[1] >= 0)
+        s += KeaDot3(J->lin1, dv[b[1]].lin) + KeaDot3(J->ang1, dv[b[1]].ang);
+    return s;
+}
+
+/** dv += B s over the row's bodies (B = M^-1 J^T of the row). */
+static inline void KeaRowApply(const KeaJacobianRow *B, const int b[2], MeReal s, KeaBodyVelocity *dv)
+{
+    int k;
+    if (b[0] >= 0) {
+        KeaBodyVelocity *v = &dv[b[0]];
+        for (k = 0; k < 3; ++k) {
+            v->lin[k] += B->lin0[k] * s;
+            v->ang[k] += B->ang0[k] * s;
+        }
+    }
+    if (b[1] >= 0) {
+        KeaBodyVelocity *v = &dv[b[1]];
+        for (k = 0; k < 3; ++k) {
+            v->lin[k] += B->lin1[k] * s;
+            v->ang[k] += B->ang1[k] * s;
+        }
+    }
+}
+
+/** B = M^-1 J_i^T of row i (zero halves for the world); returns the row's diagonal J_i B + eps_i. */
+MeReal KeaRowInvMassJT(const KeaProblem *problem, int i, KeaJacobianRow *B);
+
+/** Effective bounds of row i when its linked normal row has the impulse xLink. */
+void KeaLinkBounds(const KeaProblem *problem, int i, MeReal xLink, MeReal *lo, MeReal *hi);
+
+/* ---- dense matrix and updatable Cholesky factor (kea_dense.c) -------------------------------- */
+
+/** A = J M^-1 J^T + diag(eps), dense n x n row-major, using B (M^-1 J^T rows) and a body -> rows
+ *  incidence list built in `incidence` (2n ints) and `start` (nb + 1 ints). */
+void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeReal *A, int *incidence,
+                        int *start);
+
+/** Cholesky factor L (row-major, leading dimension ld) of A restricted to an ordered list of rows
+ *  F[0..size-1]: A_FF = L L^T. */
+typedef struct KeaCholesky {
+    MeReal *L;  /**< ld x ld storage; row k holds L[k][0..k] */
+    int ld;     /**< leading dimension (n) */
+    int size;   /**< rows in the factor */
+    int *F;     /**< F[k] = problem row at position k */
+    int *pos;   /**< pos[i] = position of problem row i in F, or -1 */
+    int regularised; /**< pivots raised to the floor so far */
+} KeaCholesky;
+
+/** Append row i of A to the factor (O(size^2)). */
+void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int i);
+/** Remove the row at position p from the factor (rank-one update of the trailing block, O(size^2)). */
+void KeaCholeskyRemove(KeaCholesky *c, int p);
+/** LU factorisation with partial pivoting of the general m x m matrix G, in place (row swaps in
+ *  perm). Returns 0 when G is numerically singular. */
+int KeaDenseFactor(int m, MeReal *G, int *perm);
+/** Solve G y = b in place with the factors from KeaDenseFactor. */
+void KeaDenseSolveFactored(int m, const MeReal *G, const int *perm, MeReal *b);
+/** Solve A_FF y = b in place (b and y indexed by position in F). */
+void KeaCholeskySolve(const KeaCholesky *c, MeReal *b);
+
+/* ---- the two paths -------------------------------------------------------------------------- */
+
+size_t KeaDirectWorkspaceBytes(int nRows, int nBodies);
+size_t KeaIterativeWorkspaceBytes(int nRows, int nBodies);
+
+/* Both take a validated problem, an arena of at least their WorkspaceBytes, write x (nRows) and
+ * dv (nBodies, never NULL here) and fill the path-specific fields of stats. */
+KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
+                         MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
+KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
+                            MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
+
+#endif /* KEA_INTERNAL_H */

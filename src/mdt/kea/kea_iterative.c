@@ -1,0 +1,238 @@
+/* kea_iterative.c -- Kea's iterative path: projected Gauss-Seidel (PGS) on the sparse rows, with
+ * subspace minimisation (SM) steps between sweeps, for partitions too large for the direct path.
+ *
+ * Data: per row B_i = M^-1 J_i^T (a padded row, like J_i) and the diagonal d_i = J_i B_i + eps_i;
+ * per body the velocity change dv = M^-1 J^T x, kept up to date, so that a row needs only its own
+ * two bodies: w_i = J_i . dv + eps_i x_i - r_i is O(1) and so is the update dv += B_i delta_i.
+ *
+ * PGS sweep (rows in index order):  x_i <- mid(lo_i, x_i - omega w_i / d_i, hi_i), with lo_i, hi_i
+ * the effective bounds at that moment (a friction row reads the current impulse of its normal row),
+ * omega the SOR factor. A sweep costs O(n). The sweep also measures the natural-map residual of
+ * each row just before its update; the largest is the sweep's residual, compared with the
+ * tolerance. PGS converges for A positive definite (0 < omega < 2) but slowly when information must
+ * travel along a chain of bodies (a stack of k boxes needs of the order of k^2 sweeps) and on the
+ * near-null directions that redundant contacts create (eps small).
+ *
+ * Subspace minimisation (after the idea of Silcowitz, Niebe and Erleben, "Interactive rigid body
+ * dynamics using a projected Gauss-Seidel subspace minimization method", 2010): a PGS sweep is good
+ * at finding which rows sit at a bound, poor at solving the linear system on the rows that do not.
+ * So between two sweeps, with the bounds frozen at their current values, the free rows F (strictly
+ * inside their bounds) take a few conjugate-gradient steps on A_FF delta = -w_F (Jacobi
+ * preconditioned, matrix-free: A_FF p = J_F M^-1 J_F^T p + eps p costs two passes over F through the
+ * per-body scratch), then a projected backtracking line search x_F <- mid(lo, x_F + a delta, hi),
+ * a = 1, 1/2, 1/4, 1/8, accepts the first step that lowers the QP objective
+ *   f(x) = 1/2 x^T A x - r^T x;   f(x + s) - f(x) = s . (w + 1/2 (J M^-1 J^T s + eps s))
+ * (computed from the step alone, free of cancellation). A rejected step leaves x as PGS made it, so
+ * SM never makes the QP worse; the next sweep re-applies the friction links and the active set.
+ * Each CG step costs about one sweep; KeaStats.subspaceSteps counts them.
+ *
+ * Warm start: x0 is clamped to its bounds and dv computed from it before the first sweep. */
+#include "kea_internal.h"
+
+typedef struct KeaIterativeWork {
+    KeaJacobianRow *B;     /**< M^-1 J^T per row */
+    MeReal *invDiag;       /**< 1 / d_i (0 for a row that touches nothing and has eps 0) */
+    MeReal *diag;          /**< d_i */
+    /* Subspace minimisation: */
+    int *freeRows;         /**< rows strictly inside their bounds */
+    MeReal *lo, *hi;       /**< bounds frozen for the SM step (by row) */
+    MeReal *grad;          /**< w on the free rows (by position) */
+    MeReal *step;          /**< CG solution delta */
+    MeReal *res, *z, *dir, *q; /**< CG vectors */
+    KeaBodyVelocity *dvTmp; /**< per-body scratch for A_FF p and for the trial step */
+} KeaIterativeWork;
+
+static void KeaIterativeLayout(KeaArena *arena, int n, int nb, KeaIterativeWork *w)
+{
+    w->B = KEA_ALLOC(arena, KeaJacobianRow, n);
+    w->invDiag = KEA_ALLOC(arena, MeReal, n);
+    w->diag = KEA_ALLOC(arena, MeReal, n);
+    w->freeRows = KEA_ALLOC(arena, int, n);
+    w->lo = KEA_ALLOC(arena, MeReal, n);
+    w->hi = KEA_ALLOC(arena, MeReal, n);
+    w->grad = KEA_ALLOC(arena, MeReal, n);
+    w->step = KEA_ALLOC(arena, MeReal, n);
+    w->res = KEA_ALLOC(arena, MeReal, n);
+    w->z = KEA_ALLOC(arena, MeReal, n);
+    w->dir = KEA_ALLOC(arena, MeReal, n);
+    w->q = KEA_ALLOC(arena, MeReal, n);
+    w->dvTmp = KEA_ALLOC(arena, KeaBodyVelocity, nb);
+}
+
+size_t KeaIterativeWorkspaceBytes(int nRows, int nBodies)
+{
+    KeaArena counter = {NULL, 0, 0};
+    KeaIterativeWork w;
+    KeaIterativeLayout(&counter, nRows, nBodies, &w);
+    return counter.used;
+}
+
+static MeReal KeaRowW(const KeaProblem *problem, int i, const MeReal *x, const KeaBodyVelocity *dv)
+{
+    const MeReal eps = problem->epsilon ? problem->epsilon[i] : ME_R(0.0);
+    return KeaRowVelocity(&problem->J[i], problem->rowBodies[i], dv) + eps * x[i] - problem->rhs[i];
+}
+
+/* One projected Gauss-Seidel sweep; returns the largest natural-map residual met on the way. */
+static MeReal KeaSweep(const KeaProblem *problem, const KeaIterativeWork *w, MeReal omega, MeReal *x,
+                       KeaBodyVelocity *dv)
+{
+    MeReal worst = ME_R(0.0);
+    int i;
+    for (i = 0; i < problem->nRows; ++i) {
+        MeReal lo, hi, wi, xNew, r;
+        if (w->invDiag[i] == ME_R(0.0))
+            continue;
+        KeaRowBounds(problem, x, i, &lo, &hi);
+        wi = KeaRowW(problem, i, x, dv);
+        r = w->diag[i] * KeaFabs(x[i] - KeaClamp(x[i] - wi * w->invDiag[i], lo, hi));
+        worst = KeaMax(worst, r);
+        xNew = KeaClamp(x[i] - omega * wi * w->invDiag[i], lo, hi);
+        if (xNew != x[i]) {
+            KeaRowApply(&w->B[i], problem->rowBodies[i], xNew - x[i], dv);
+            x[i] = xNew;
+        }
+    }
+    return worst;
+}
+
+/* dvTmp = M^-1 J_F^T v (v by position in the free list). */
+static void KeaScatter(const KeaProblem *problem, const KeaIterativeWork *w, int nFree, const MeReal *v)
+{
+    int b, k, p;
+    for (b = 0; b < problem->nBodies; ++b)
+        for (k = 0; k < 3; ++k)
+            w->dvTmp[b].lin[k] = w->dvTmp[b].ang[k] = ME_R(0.0);
+    for (p = 0; p < nFree; ++p)
+        if (v[p] != ME_R(0.0))
+            KeaRowApply(&w->B[w->freeRows[p]], problem->rowBodies[w->freeRows[p]], v[p], w->dvTmp);
+}
+
+static MeReal KeaDotN(const MeReal *a, const MeReal *b, int n)
+{
+    MeReal s = ME_R(0.0);
+    int p;
+    for (p = 0; p < n; ++p)
+        s += a[p] * b[p];
+    return s;
+}
+
+/* Subspace minimisation on the rows strictly inside their bounds; returns the CG steps taken. */
+static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x,
+                               KeaBodyVelocity *dv)
+{
+    const int n = problem->nRows;
+    MeReal rz, rz0, scale;
+    int i, p, nFree = 0, steps = 0, tries;
+
+    for (i = 0; i < n; ++i) {
+        KeaRowBounds(problem, x, i, &w->lo[i], &w->hi[i]);
+        if (w->invDiag[i] != ME_R(0.0) && w->lo[i] < x[i] && x[i] < w->hi[i])
+            w->freeRows[nFree++] = i;
+    }
+    if (nFree == 0)
+        return 0;
+
+    /* Preconditioned CG on A_FF step = -w_F from step = 0. */
+    for (p = 0; p < nFree; ++p) {
+        i = w->freeRows[p];
+        w->grad[p] = KeaRowW(problem, i, x, dv);
+        w->step[p] = ME_R(0.0);
+        w->res[p] = -w->grad[p];
+        w->z[p] = w->res[p] * w->invDiag[i];
+        w->dir[p] = w->z[p];
+    }
+    rz = rz0 = KeaDotN(w->res, w->z, nFree);
+    if (!(rz0 > ME_R(0.0)))
+        return 0;
+    while (steps < maxSteps) {
+        MeReal pq, a, rzNew, beta;
+        KeaScatter(problem, w, nFree, w->dir);
+        for (p = 0; p < nFree; ++p) {
+            i = w->freeRows[p];
+            w->q[p] = KeaRowVelocity(&problem->J[i], problem->rowBodies[i], w->dvTmp) +
+                      (problem->epsilon ? problem->epsilon[i] : ME_R(0.0)) * w->dir[p];
+        }
+        pq = KeaDotN(w->dir, w->q, nFree);
+        if (!(pq > ME_R(0.0)))
+            break;
+        a = rz / pq;
+        for (p = 0; p < nFree; ++p) {
+            w->step[p] += a * w->dir[p];
+            w->res[p] -= a * w->q[p];
+            w->z[p] = w->res[p] * w->invDiag[w->freeRows[p]];
+        }
+        ++steps;
+        rzNew = KeaDotN(w->res, w->z, nFree);
+        if (!(rzNew > ME_SMALL_EPSILON * ME_SMALL_EPSILON * rz0))
+            break;
+        beta = rzNew / rz;
+        for (p = 0; p < nFree; ++p)
+            w->dir[p] = w->z[p] + beta * w->dir[p];
+        rz = rzNew;
+    }
+    if (steps == 0)
+        return 0;
+
+    /* Projected backtracking line search on the QP objective (bounds frozen). */
+    for (tries = 0, scale = ME_R(1.0); tries < 4; ++tries, scale *= ME_R(0.5)) {
+        MeReal df = ME_R(0.0);
+        for (p = 0; p < nFree; ++p) { /* z holds the trial step s */
+            i = w->freeRows[p];
+            w->z[p] = KeaClamp(x[i] + scale * w->step[p], w->lo[i], w->hi[i]) - x[i];
+        }
+        KeaScatter(problem, w, nFree, w->z);
+        for (p = 0; p < nFree; ++p) {
+            i = w->freeRows[p];
+            const MeReal eps = problem->epsilon ? problem->epsilon[i] : ME_R(0.0);
+            const MeReal As = KeaRowVelocity(&problem->J[i], problem->rowBodies[i], w->dvTmp) + eps * w->z[p];
+            df += w->z[p] * (w->grad[p] + ME_R(0.5) * As);
+        }
+        if (df < ME_R(0.0)) {
+            int b, k;
+            for (p = 0; p < nFree; ++p)
+                x[w->freeRows[p]] += w->z[p];
+            for (b = 0; b < problem->nBodies; ++b)
+                for (k = 0; k < 3; ++k) {
+                    dv[b].lin[k] += w->dvTmp[b].lin[k];
+                    dv[b].ang[k] += w->dvTmp[b].ang[k];
+                }
+            break;
+        }
+    }
+    return steps;
+}
+
+KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
+                            MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
+{
+    const int n = problem->nRows;
+    const MeReal omega = params->sor > ME_R(0.0) && params->sor < ME_R(2.0) ? params->sor : ME_R(1.0);
+    KeaIterativeWork w;
+    KeaStatus status = KeaStatusMaxIterations;
+    int i, it;
+
+    KeaIterativeLayout(arena, n, problem->nBodies, &w);
+    for (i = 0; i < n; ++i) {
+        w.diag[i] = KeaRowInvMassJT(problem, i, &w.B[i]);
+        w.invDiag[i] = w.diag[i] > ME_R(0.0) ? ME_R(1.0) / w.diag[i] : ME_R(0.0);
+    }
+    /* Warm start: clamp (bounds read from the unclamped x, as the direct path does), then dv. */
+    for (i = 0; i < n; ++i)
+        KeaRowBounds(problem, x, i, &w.lo[i], &w.hi[i]);
+    for (i = 0; i < n; ++i)
+        x[i] = KeaClamp(x[i], w.lo[i], w.hi[i]);
+    KeaBodyVelocityFromImpulses(problem, x, dv);
+
+    for (it = 1; it <= params->maxIterations; ++it) {
+        const MeReal sweepResidual = KeaSweep(problem, &w, omega, x, dv);
+        stats->iterations = it;
+        if (sweepResidual <= params->tolerance) {
+            status = KeaStatusOk;
+            break;
+        }
+        if (params->subspaceIterations > 0 && it < params->maxIterations)
+            stats->subspaceSteps += KeaSubspaceMinimise(problem, &w, params->subspaceIterations, x, dv);
+    }
+    return status;
+}

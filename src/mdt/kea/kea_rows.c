@@ -1,0 +1,113 @@
+/* kea_rows.c -- per-row quantities shared by both of Kea's paths: M^-1 J^T of a row, the effective
+ * (friction-linked) bounds, Delta v = M^-1 J^T x, and the natural-map residual that both paths report.
+ * Everything here is O(rows + bodies) and needs no workspace. */
+#include "kea_internal.h"
+
+static void KeaInvInertiaTimes(const KeaBody *body, const MeReal *v, MeReal *out)
+{
+    int k;
+    for (k = 0; k < 3; ++k)
+        out[k] = KeaDot3(body->invInertia[k], v);
+}
+
+MeReal KeaRowInvMassJT(const KeaProblem *problem, int i, KeaJacobianRow *B)
+{
+    const KeaJacobianRow *J = &problem->J[i];
+    const int *b = problem->rowBodies[i];
+    MeReal diag = problem->epsilon ? problem->epsilon[i] : ME_R(0.0);
+    int k;
+
+    for (k = 0; k < 4; ++k)
+        B->lin0[k] = B->ang0[k] = B->lin1[k] = B->ang1[k] = ME_R(0.0);
+    if (b[0] >= 0) {
+        const KeaBody *body = &problem->bodies[b[0]];
+        for (k = 0; k < 3; ++k)
+            B->lin0[k] = body->invMass * J->lin0[k];
+        KeaInvInertiaTimes(body, J->ang0, B->ang0);
+        diag += KeaDot3(J->lin0, B->lin0) + KeaDot3(J->ang0, B->ang0);
+    }
+    if (b[1] >= 0) {
+        const KeaBody *body = &problem->bodies[b[1]];
+        for (k = 0; k < 3; ++k)
+            B->lin1[k] = body->invMass * J->lin1[k];
+        KeaInvInertiaTimes(body, J->ang1, B->ang1);
+        diag += KeaDot3(J->lin1, B->lin1) + KeaDot3(J->ang1, B->ang1);
+    }
+    return diag;
+}
+
+void KeaLinkBounds(const KeaProblem *problem, int i, MeReal xLink, MeReal *lo, MeReal *hi)
+{
+    MeReal bound = problem->mu[i] * KeaMax(xLink, ME_R(0.0));
+    /* Widen the row's own bounds to contain 0 so that the intersection is never empty. */
+    MeReal ownLo = KeaMin(problem->lo[i], ME_R(0.0));
+    MeReal ownHi = KeaMax(problem->hi[i], ME_R(0.0));
+    *lo = KeaMax(ownLo, -bound);
+    *hi = KeaMin(ownHi, bound);
+}
+
+void KeaRowBounds(const KeaProblem *problem, const MeReal *x, int i, MeReal *lo, MeReal *hi)
+{
+    if (problem->link && problem->link[i] >= 0) {
+        KeaLinkBounds(problem, i, x[problem->link[i]], lo, hi);
+    } else {
+        *lo = problem->lo[i];
+        *hi = problem->hi[i];
+    }
+}
+
+void KeaBodyVelocityFromImpulses(const KeaProblem *problem, const MeReal *x, KeaBodyVelocity *dv)
+{
+    int i, b, k;
+    /* Accumulate the impulses J^T x per body, then apply M^-1 once per body. */
+    for (b = 0; b < problem->nBodies; ++b)
+        for (k = 0; k < 3; ++k)
+            dv[b].lin[k] = dv[b].ang[k] = ME_R(0.0);
+    for (i = 0; i < problem->nRows; ++i) {
+        const KeaJacobianRow *J = &problem->J[i];
+        const int *rb = problem->rowBodies[i];
+        MeReal s = x[i];
+        if (s == ME_R(0.0))
+            continue;
+        if (rb[0] >= 0)
+            for (k = 0; k < 3; ++k) {
+                dv[rb[0]].lin[k] += J->lin0[k] * s;
+                dv[rb[0]].ang[k] += J->ang0[k] * s;
+            }
+        if (rb[1] >= 0)
+            for (k = 0; k < 3; ++k) {
+                dv[rb[1]].lin[k] += J->lin1[k] * s;
+                dv[rb[1]].ang[k] += J->ang1[k] * s;
+            }
+    }
+    for (b = 0; b < problem->nBodies; ++b) {
+        MeReal angularImpulse[3];
+        const KeaBody *body = &problem->bodies[b];
+        for (k = 0; k < 3; ++k) {
+            dv[b].lin[k] *= body->invMass;
+            angularImpulse[k] = dv[b].ang[k];
+        }
+        KeaInvInertiaTimes(body, angularImpulse, dv[b].ang);
+    }
+}
+
+MeReal KeaResidual(const KeaProblem *problem, const MeReal *x, const KeaBodyVelocity *dv)
+{
+    MeReal worst = ME_R(0.0);
+    int i;
+    for (i = 0; i < problem->nRows; ++i) {
+        KeaJacobianRow B;
+        MeReal d = KeaRowInvMassJT(problem, i, &B);
+        MeReal eps = problem->epsilon ? problem->epsilon[i] : ME_R(0.0);
+        MeReal w = KeaRowVelocity(&problem->J[i], problem->rowBodies[i], dv) + eps * x[i] - problem->rhs[i];
+        MeReal lo, hi, r;
+        KeaRowBounds(problem, x, i, &lo, &hi);
+        if (d > ME_R(0.0))
+            r = d * KeaFabs(x[i] - KeaClamp(x[i] - w / d, lo, hi));
+        else /* a row that touches nothing: only its feasibility counts */
+            r = KeaFabs(x[i] - KeaClamp(x[i], lo, hi));
+        if (r > worst || r != r)
+            worst = r;
+    }
+    return worst;
+}

@@ -1,0 +1,159 @@
+/* kea_solve.c -- Kea's front door: default parameters, the choice between the direct and the
+ * iterative path, the workspace size query, input validation and the dispatch.
+ *
+ * The workspace: each path lays its arrays out with one function that runs either on a counting
+ * arena (KeaMemoryRequired) or on the caller's buffer (KeaSolve), so the two can never disagree.
+ * The caller's buffer may have any alignment: KeaMemoryRequired includes KEA_ALIGN - 1 bytes so that
+ * KeaSolve can align the base itself. */
+#include <string.h>
+
+#include "kea_internal.h"
+
+void KeaParametersDefault(KeaParameters *params)
+{
+    params->path = KeaPathAuto;
+    params->maxDirectRows = 128;
+    params->maxIterations = 10;
+    params->tolerance = ME_R(1e-6);
+    params->sor = ME_R(1.0);
+    params->subspaceIterations = 4;
+    params->maxPivots = 0;
+    params->maxFrictionPasses = 8;
+}
+
+KeaPath KeaSelectPath(int nRows, const KeaParameters *params)
+{
+    if (params->path == KeaPathDirect || params->path == KeaPathIterative)
+        return params->path;
+    return nRows <= params->maxDirectRows ? KeaPathDirect : KeaPathIterative;
+}
+
+static size_t KeaVelocityBytes(int nBodies)
+{
+    return (sizeof(KeaBodyVelocity) * (size_t)nBodies + (KEA_ALIGN - 1)) & ~(size_t)(KEA_ALIGN - 1);
+}
+
+size_t KeaMemoryRequired(int nRows, int nBodies, KeaPath path)
+{
+    size_t bytes;
+    if (nRows < 0 || nBodies < 0)
+        return 0;
+    switch (path) {
+    case KeaPathDirect:
+        bytes = KeaDirectWorkspaceBytes(nRows, nBodies);
+        break;
+    case KeaPathIterative:
+        bytes = KeaIterativeWorkspaceBytes(nRows, nBodies);
+        break;
+    default: {
+        const size_t direct = KeaDirectWorkspaceBytes(nRows, nBodies);
+        const size_t iterative = KeaIterativeWorkspaceBytes(nRows, nBodies);
+        bytes = direct > iterative ? direct : iterative;
+        break;
+    }
+    }
+    /* + room for dv when the caller does not want it, + the alignment of the caller's base. */
+    return bytes + KeaVelocityBytes(nBodies) + (KEA_ALIGN - 1);
+}
+
+static int KeaIsNumber(MeReal v) { return v == v; }
+
+/* Indices in range, bounds ordered, softness non-negative, numbers where numbers are needed. */
+static int KeaProblemIsValid(const KeaProblem *p)
+{
+    int i, b, k;
+    if (p->nRows < 0 || p->nBodies < 0)
+        return 0;
+    if (p->nRows > 0 && (!p->J || !p->rowBodies || !p->rhs || !p->lo || !p->hi))
+        return 0;
+    if (p->nBodies > 0 && !p->bodies)
+        return 0;
+    if (p->link && !p->mu)
+        return 0;
+    for (b = 0; b < p->nBodies; ++b) {
+        if (!(p->bodies[b].invMass >= ME_R(0.0)) || !KeaIsFinite(p->bodies[b].invMass))
+            return 0;
+        for (k = 0; k < 9; ++k)
+            if (!KeaIsFinite(p->bodies[b].invInertia[k / 3][k % 3]))
+                return 0;
+    }
+    for (i = 0; i < p->nRows; ++i) {
+        for (k = 0; k < 2; ++k)
+            if (p->rowBodies[i][k] < KEA_WORLD || p->rowBodies[i][k] >= p->nBodies)
+                return 0;
+        for (k = 0; k < 3; ++k)
+            if (!KeaIsFinite(p->J[i].lin0[k]) || !KeaIsFinite(p->J[i].ang0[k]) ||
+                !KeaIsFinite(p->J[i].lin1[k]) || !KeaIsFinite(p->J[i].ang1[k]))
+                return 0;
+        if (!KeaIsFinite(p->rhs[i]) || !KeaIsNumber(p->lo[i]) || !KeaIsNumber(p->hi[i]) || !(p->lo[i] <= p->hi[i]))
+            return 0;
+        if (p->epsilon && !(p->epsilon[i] >= ME_R(0.0) && KeaIsFinite(p->epsilon[i])))
+            return 0;
+        if (p->x0 && !KeaIsFinite(p->x0[i]))
+            return 0;
+        if (p->link && p->link[i] >= 0) {
+            const int l = p->link[i];
+            if (l >= p->nRows || l == i || (p->link[l] >= 0) || !(p->mu[i] >= ME_R(0.0)) || !KeaIsFinite(p->mu[i]))
+                return 0;
+        } else if (p->link && p->link[i] < -1) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void *workspace,
+                   size_t workspaceSize, MeReal *x, KeaBodyVelocity *dv, KeaStats *statsOut)
+{
+    KeaStats localStats, *stats = statsOut ? statsOut : &localStats;
+    KeaArena arena;
+    KeaPath path;
+    KeaBodyVelocity *velocity = dv;
+    size_t need, skew;
+    int i;
+
+    memset(stats, 0, sizeof *stats);
+    if (!params) {
+        stats->status = KeaStatusBadInput;
+        return stats->status;
+    }
+    path = KeaSelectPath(problem ? problem->nRows : 0, params);
+    stats->path = path;
+    if (!problem || (!x && problem->nRows > 0) || !KeaProblemIsValid(problem)) {
+        stats->status = KeaStatusBadInput;
+        return stats->status;
+    }
+    stats->rows = problem->nRows;
+    stats->bodies = problem->nBodies;
+
+    /* Align the workspace base; the velocity output gets workspace room when the caller has none. */
+    need = KeaMemoryRequired(problem->nRows, problem->nBodies, path);
+    skew = workspace ? (size_t)((KEA_ALIGN - ((uintptr_t)workspace & (KEA_ALIGN - 1))) & (KEA_ALIGN - 1)) : 0;
+    if (!workspace || workspaceSize < need) {
+        stats->status = KeaStatusWorkspaceTooSmall;
+        return stats->status;
+    }
+    arena.base = (unsigned char *)workspace + skew;
+    arena.size = workspaceSize - skew;
+    arena.used = 0;
+    if (!velocity) /* Kea needs dv internally: without an output array it lives in the workspace */
+        velocity = KEA_ALLOC(&arena, KeaBodyVelocity, problem->nBodies);
+    else
+        (void)KeaArenaAlloc(&arena, KeaVelocityBytes(problem->nBodies)); /* same layout either way */
+
+    if (problem->x0) {
+        if (x != problem->x0)
+            for (i = 0; i < problem->nRows; ++i)
+                x[i] = problem->x0[i];
+    } else {
+        for (i = 0; i < problem->nRows; ++i)
+            x[i] = ME_R(0.0);
+    }
+
+    if (path == KeaPathDirect)
+        stats->status = KeaSolveDirect(problem, params, &arena, x, velocity, stats);
+    else
+        stats->status = KeaSolveIterative(problem, params, &arena, x, velocity, stats);
+    stats->residual = KeaResidual(problem, x, velocity);
+    return stats->status;
+}

@@ -1,0 +1,211 @@
+/* test_kea_direct.c -- Kea's direct path against brute-force enumeration on random box LCPs.
+ *
+ * Random partitions of n = 1..8 rows (bilateral, unilateral, two-sided bounded and one-sided upper
+ * rows over 1-3 random bodies, random softness) are solved by the direct path and by trying every
+ * assignment of the rows to {free, at lo, at hi} in double. The solutions must agree and the
+ * natural-map residual must be at rounding level. Friction-linked contact problems are compared with
+ * the brute force of the coupled problem. */
+#include "karma_test.h"
+
+#include "kea_test_problems.h"
+
+/* Relative agreement with the brute force, and residual relative to 1 + |r|. */
+#define DIRECT_TOL ME_TOL(1e-9, 2e-3)
+#define RESIDUAL_TOL ME_TOL(1e-9, 1e-4)
+
+static void random_box_lcps_match_brute_force(void **state)
+{
+    KeaParameters prm = kt_params(KeaPathDirect);
+    double worst = 0.0, worstRes = 0.0;
+    int n, seed, solved = 0, pivots = 0;
+    (void)state;
+    for (n = 1; n <= 8; ++n) {
+        const int seeds = n <= 6 ? 120 : 40;
+        for (seed = 0; seed < seeds; ++seed) {
+            KtRng rng = kt_rng((uint64_t)(1000 * n + seed));
+            KtProblem t;
+            MeReal x[8];
+            double xb[8], scale;
+            KeaStats st;
+            int found;
+            kt_random_problem(&t, &rng, n, 1 + kt_int(&rng, 3), 1e-3, 1e-1);
+            found = kt_brute_force(&t.p, xb, ME_TOL(1e-9, 1e-5));
+            assert_true(found >= 1);
+            assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusOk);
+            assert_int_equal(st.path, KeaPathDirect);
+            scale = 1.0 + kt_max_abs(xb, n);
+            worst = fmax(worst, kt_max_abs_diff(x, xb, n) / scale);
+            assert_near(kt_max_abs_diff(x, xb, n) / scale, 0.0, DIRECT_TOL);
+            worstRes = fmax(worstRes, (double)st.residual);
+            assert_near(st.residual, 0.0, RESIDUAL_TOL);
+            pivots += st.pivots;
+            ++solved;
+            kt_free(&t);
+        }
+    }
+    print_message("direct vs brute force: %d problems, max relative error %.3g, max residual %.3g, "
+                  "mean pivots %.2f\n", solved, worst, worstRes, (double)pivots / solved);
+}
+
+/* Started from its own solution, the direct path does not pivot and does not move. */
+static void warm_start_from_solution_needs_no_pivots(void **state)
+{
+    KeaParameters prm = kt_params(KeaPathDirect);
+    int seed;
+    (void)state;
+    for (seed = 0; seed < 50; ++seed) {
+        KtRng rng = kt_rng((uint64_t)(77 + seed));
+        KtProblem t;
+        MeReal x[8], x2[8];
+        KeaStats st;
+        int i;
+        kt_random_problem(&t, &rng, 8, 3, 1e-2, 1e-1);
+        assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusOk);
+        for (i = 0; i < 8; ++i)
+            t.x0[i] = x[i];
+        t.p.x0 = t.x0;
+        assert_int_equal(kt_solve(&t.p, &prm, x2, NULL, &st), KeaStatusOk);
+        assert_int_equal(st.pivots, 0);
+        assert_int_equal(st.factorizations, 1);
+        for (i = 0; i < 8; ++i)
+            assert_near(x2[i], x[i], ME_TOL(1e-12, 1e-5) * (1.0 + fabs((double)x[i])));
+        kt_free(&t);
+    }
+}
+
+/* A poor warm start (far outside the box, wrong signs) changes the work, not the answer. */
+static void bad_warm_start_same_answer(void **state)
+{
+    KeaParameters prm = kt_params(KeaPathDirect);
+    int seed;
+    (void)state;
+    for (seed = 0; seed < 50; ++seed) {
+        KtRng rng = kt_rng((uint64_t)(300 + seed));
+        KtProblem t;
+        MeReal x[8], x2[8];
+        KeaStats st;
+        int i;
+        kt_random_problem(&t, &rng, 8, 2, 1e-2, 1e-1);
+        assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusOk);
+        for (i = 0; i < 8; ++i)
+            t.x0[i] = (MeReal)kt_range(&rng, -5, 5);
+        t.p.x0 = t.x0;
+        assert_int_equal(kt_solve(&t.p, &prm, x2, NULL, &st), KeaStatusOk);
+        for (i = 0; i < 8; ++i)
+            assert_near(x2[i], x[i], ME_TOL(1e-9, 1e-3) * (1.0 + fabs((double)x[i])));
+        kt_free(&t);
+    }
+}
+
+/* Contacts with friction linked to their normals: the outer passes reach the coupled solution. */
+static void friction_links_match_brute_force(void **state)
+{
+    KeaParameters prm = kt_params(KeaPathDirect);
+    double worst = 0.0;
+    int seed, passes = 0, problems = 0, maxPasses = 0;
+    (void)state;
+    prm.maxFrictionPasses = 60;
+    for (seed = 0; seed < 150; ++seed) {
+        KtRng rng = kt_rng((uint64_t)(5000 + seed));
+        KtProblem t;
+        MeReal x[9];
+        double xb[9];
+        KeaStats st;
+        const int nContacts = 1 + seed % 2, nJoint = kt_int(&rng, 3);
+        const int n = 3 * nContacts + nJoint;
+        int found;
+        kt_random_contacts(&t, &rng, nContacts, nJoint, 1 + kt_int(&rng, 2), kt_range(&rng, 0.1, 0.5), 1e-2);
+        found = kt_brute_force(&t.p, xb, ME_TOL(1e-9, 1e-5));
+        if (found != 1) { /* the coupled problem may have several solutions: test only unique ones */
+            kt_free(&t);
+            continue;
+        }
+        assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusOk);
+        worst = fmax(worst, kt_max_abs_diff(x, xb, n) / (1.0 + kt_max_abs(xb, n)));
+        assert_near(kt_max_abs_diff(x, xb, n) / (1.0 + kt_max_abs(xb, n)), 0.0, ME_TOL(1e-7, 2e-3));
+        assert_near(st.residual, 0.0, ME_TOL(1e-7, 1e-3));
+        passes += st.frictionPasses;
+        maxPasses = st.frictionPasses > maxPasses ? st.frictionPasses : maxPasses;
+        ++problems;
+        kt_free(&t);
+    }
+    assert_true(problems >= 100);
+    print_message("friction links vs brute force: %d problems, max relative error %.3g, passes mean %.2f "
+                  "max %d\n", problems, worst, (double)passes / problems, maxPasses);
+}
+
+/* A pivot cap that is too small is reported, and the iterate is still feasible. */
+static void pivot_cap_is_reported(void **state)
+{
+    KeaParameters prm = kt_params(KeaPathDirect);
+    KtRng rng = kt_rng(4242);
+    KtProblem t;
+    MeReal x[40], lo, hi;
+    KeaStats st;
+    int i;
+    (void)state;
+    kt_random_contacts(&t, &rng, 10, 10, 6, 0.5, 1e-2);
+    prm.maxPivots = 2;
+    assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusMaxPivots);
+    assert_int_equal(st.pivots, 2);
+    for (i = 0; i < t.p.nRows; ++i) {
+        KeaRowBounds(&t.p, x, i, &lo, &hi);
+        assert_true((double)x[i] >= (double)lo - 1e-6 * (1.0 + fabs((double)lo)));
+        assert_true((double)x[i] <= (double)hi + 1e-6 * (1.0 + fabs((double)hi)));
+    }
+    kt_free(&t);
+}
+
+/* Without softness, four contacts under a box are redundant (A singular): the floor on the free
+ * block's pivots keeps the solve finite and the physics right (total impulse = m g h). */
+static void singular_matrix_without_softness(void **state)
+{
+    KeaParameters prm = kt_params(KeaPathDirect);
+    KtProblem t;
+    MeReal x[4];
+    KeaBodyVelocity dv[1];
+    KeaStats st;
+    const double g = 9.81, h = 1.0 / 60.0, m = 2.0;
+    double sum = 0.0;
+    int i;
+    (void)state;
+    kt_alloc(&t, 4, 1, 0);
+    t.bodies[0].invMass = (MeReal)(1.0 / m);
+    for (i = 0; i < 3; ++i)
+        t.bodies[0].invInertia[i][i] = (MeReal)(6.0 / m);
+    for (i = 0; i < 4; ++i) {
+        const double px = (i & 1) ? 0.5 : -0.5, py = (i & 2) ? 0.5 : -0.5, pz = -0.5;
+        t.rowBodies[i][0] = 0;
+        t.rowBodies[i][1] = KEA_WORLD;
+        t.J[i].lin0[2] = ME_R(1.0); /* normal +z at corner (px, py, pz): r x n = (py, -px, 0) */
+        t.J[i].ang0[0] = (MeReal)py;
+        t.J[i].ang0[1] = (MeReal)-px;
+        (void)pz;
+        t.eps[i] = ME_R(0.0);
+        t.rhs[i] = (MeReal)(g * h);
+        t.lo[i] = ME_R(0.0);
+        t.hi[i] = MEINFINITY;
+    }
+    assert_int_equal(kt_solve(&t.p, &prm, x, dv, &st), KeaStatusOk);
+    for (i = 0; i < 4; ++i) {
+        assert_true(x[i] >= 0);
+        sum += (double)x[i];
+    }
+    assert_rel(sum, m * g * h, ME_TOL(1e-9, 1e-4));
+    assert_near(dv[0].lin[2], g * h, ME_TOL(1e-9, 1e-5));
+    assert_near(st.residual, 0.0, ME_TOL(1e-9, 1e-4));
+    kt_free(&t);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(random_box_lcps_match_brute_force),
+        cmocka_unit_test(warm_start_from_solution_needs_no_pivots),
+        cmocka_unit_test(bad_warm_start_same_answer),
+        cmocka_unit_test(friction_links_match_brute_force),
+        cmocka_unit_test(pivot_cap_is_reported),
+        cmocka_unit_test(singular_matrix_without_softness),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
