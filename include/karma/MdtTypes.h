@@ -14,6 +14,48 @@ typedef struct MdtWorldHandle_ *MdtWorldID;           /**< a dynamics world */
 typedef struct MdtBodyHandle_ *MdtBodyID;             /**< a rigid body of a world */
 typedef struct MdtConstraintHandle_ *MdtConstraintID; /**< any constraint: joint, contact, contact group */
 
+/* Each constraint type has an ID type of its own; Mdt<Type>QuaConstraint converts it to an
+ * MdtConstraintID and MdtConstraintDCast<Type> converts back (NULL if the type differs). */
+typedef struct MdtBSJointHandle_ *MdtBSJointID;
+typedef struct MdtHingeHandle_ *MdtHingeID;
+typedef struct MdtPrismaticHandle_ *MdtPrismaticID;
+typedef struct MdtUniversalHandle_ *MdtUniversalID;
+typedef struct MdtAngular3Handle_ *MdtAngular3ID;
+typedef struct MdtCarWheelHandle_ *MdtCarWheelID;
+typedef struct MdtLinear1Handle_ *MdtLinear1ID;
+typedef struct MdtLinear2Handle_ *MdtLinear2ID;
+typedef struct MdtFixedPathHandle_ *MdtFixedPathID;
+typedef struct MdtRPROJointHandle_ *MdtRPROJointID;
+typedef struct MdtSkeletalHandle_ *MdtSkeletalID;
+typedef struct MdtSpring6Handle_ *MdtSpring6ID;
+typedef struct MdtSpringHandle_ *MdtSpringID;
+typedef struct MdtConeLimitHandle_ *MdtConeLimitID;
+typedef struct MdtContactHandle_ *MdtContactID;
+typedef struct MdtContactGroupHandle_ *MdtContactGroupID;
+typedef struct MdtUserConstraintHandle_ *MdtUserConstraintID;
+
+/** The constraint types, in Karma's order (the order is part of the API: it indexes dispatch). */
+typedef enum MdtBclJointType {
+    MdtBclBSJOINT = 0,
+    MdtBclHINGE,
+    MdtBclPRISMATIC,
+    MdtBclCARWHEEL,
+    MdtBclCONTACT,
+    MdtBclCONTACTGROUP,
+    MdtBclFIXEDPATH,
+    MdtBclRPROJOINT,
+    MdtBclUNIVERSAL,
+    MdtBclSKELETAL,
+    MdtBclLINEAR1,
+    MdtBclLINEAR2,
+    MdtBclANGULAR3,
+    MdtBclSPRING6,
+    MdtBclSPRING,
+    MdtBclCONELIMIT,
+    MdtBclUSER,
+    MdtBclJOINT_TYPE_COUNT
+} MdtBclJointType;
+
 /** Called when the world enables or disables a body (the bridge freezes/unfreezes its model). */
 typedef void (*MdtBodyEnableCBPtr)(MdtBodyID body, void *userData);
 /** Called for each constraint by the ForAll iterators. */

@@ -72,6 +72,31 @@ typedef struct MdtWorldCounters {
 } MdtWorldCounters;
 ME_API void MdtWorldGetCounters(MdtWorldID w, MdtWorldCounters *counters);
 
+/** Which LCP method solves a partition. */
+typedef enum MdtLCPSolver {
+    MdtLCPSolverAuto = 0,      /**< exact (direct) up to MdtWorldSetMaxDirectRows rows, else iterative */
+    MdtLCPSolverDirect = 1,    /**< always the exact pivoting solver */
+    MdtLCPSolverIterative = 2  /**< always the iterative solver (MdtWorldSetMaxLCPIterations sweeps) */
+} MdtLCPSolver;
+
+/** What the solver did in the last step, over all partitions. */
+typedef struct MdtSolverStats {
+    int partitions;          /**< partitions solved */
+    int rows;                /**< constraint rows, all partitions */
+    int maxPartitionRows;    /**< rows of the largest partition */
+    int directPartitions;    /**< partitions solved exactly */
+    int iterativePartitions; /**< partitions solved iteratively */
+    int iterations;          /**< iterative sweeps, summed over partitions */
+    int pivots;              /**< direct-path pivots, summed */
+    int unconverged;         /**< partitions that stopped at a cap (iterations, pivots) */
+    MeReal maxResidual;      /**< largest residual (m/s: how far a row's velocity is from what the
+                                  constraint asks), over partitions */
+} MdtSolverStats;
+ME_API void MdtWorldGetSolverStats(MdtWorldID w, MdtSolverStats *stats);
+ME_API MdtLCPSolver MdtWorldGetLCPSolver(MdtWorldID w);
+ME_API int MdtWorldGetMaxDirectRows(MdtWorldID w);
+ME_API MeReal MdtWorldGetLCPTolerance(MdtWorldID w);
+
 /* ---- mutators ----------------------------------------------------------------------------- */
 /** Gravity acceleration (m/s²); default (0,0,0). */
 ME_API void MdtWorldSetGravity(MdtWorldID w, MeReal gx, MeReal gy, MeReal gz);
@@ -98,6 +123,12 @@ ME_API void MdtWorldSetAutoDisableAngularAccelerationThreshold(MdtWorldID w, MeR
 ME_API void MdtWorldSetAutoDisableAliveTime(MdtWorldID w, MeReal aw);
 /** Iteration cap of the LCP solver (≥ 1). Default 10. */
 ME_API void MdtWorldSetMaxLCPIterations(MdtWorldID w, int mi);
+/** Choose the LCP method (default MdtLCPSolverAuto). */
+ME_API void MdtWorldSetLCPSolver(MdtWorldID w, MdtLCPSolver solver);
+/** Largest partition (in rows) that MdtLCPSolverAuto solves exactly. Default 128. */
+ME_API void MdtWorldSetMaxDirectRows(MdtWorldID w, int rows);
+/** The iterative solver stops early once its residual is below this (m/s, > 0). Default 1e-6. */
+ME_API void MdtWorldSetLCPTolerance(MdtWorldID w, MeReal tolerance);
 /** Called when the world enables a body (also by the partitioner) / disables one (auto-disable). */
 ME_API void MdtWorldSetBodyEnableCallback(MdtWorldID w, MdtBodyEnableCBPtr cb, void *userData);
 ME_API void MdtWorldSetBodyDisableCallback(MdtWorldID w, MdtBodyEnableCBPtr cb, void *userData);

@@ -6,6 +6,7 @@
  * (bodies woken by the partitioner this step are exempt from the window: a resting stack that a
  * constraint touched goes back to sleep at once). Disabling calls the world's disable callback, which
  * the bridge uses to freeze the collision models. Forces do not wake bodies; constraints do. */
+#include "constraint.h"
 #include "world.h"
 
 static MeBool bodyIsAtRest(const MdtBody *b, const MdtAutoDisableParams *p)
@@ -21,9 +22,10 @@ void MdtAutoDisable(MdtWorld *w)
     if (!w->autoDisable.enabled)
         return;
     MdtPartitionOutput *out = &w->partitions;
-    int kept = 0, keptPartitions = 0;
+    int kept = 0, keptConstraints = 0, keptPartitions = 0;
     for (int p = 0; p < out->partitionCount; p++) {
         int start = out->partitionStart[p], end = out->partitionStart[p + 1];
+        int cStart = out->constraintStart[p], cEnd = out->constraintStart[p + 1];
         MeBool rest = METRUE;
         for (int i = start; i < end && rest; i++)
             rest = bodyIsAtRest(out->bodies[i], &w->autoDisable);
@@ -35,10 +37,17 @@ void MdtAutoDisable(MdtWorld *w)
                 MdtBodySetEnabledInternal(b, MEFALSE);
                 b->stepIndex = -1;
             }
+            for (int i = cStart; i < cEnd; i++)
+                out->constraints[i]->partition = -1;
             continue;
         }
         /* Compact the surviving partitions in place (order preserved). */
         out->partitionStart[keptPartitions] = kept;
+        out->constraintStart[keptPartitions] = keptConstraints;
+        for (int i = cStart; i < cEnd; i++) {
+            out->constraints[i]->partition = keptPartitions;
+            out->constraints[keptConstraints++] = out->constraints[i];
+        }
         for (int i = start; i < end; i++) {
             MdtBody *b = out->bodies[i];
             b->stepIndex = kept;
@@ -48,6 +57,8 @@ void MdtAutoDisable(MdtWorld *w)
         keptPartitions++;
     }
     out->partitionStart[keptPartitions] = kept;
+    out->constraintStart[keptPartitions] = keptConstraints;
     out->bodyCount = kept;
+    out->constraintCount = keptConstraints;
     out->partitionCount = keptPartitions;
 }

@@ -8,6 +8,8 @@
 
 #include "../me/check.h"
 #include "../me/handle.h"
+#include <karma/MdtConstraint.h>
+
 #include "body.h"
 #include "world.h"
 
@@ -173,6 +175,8 @@ void MdtBodyDestroy(MdtBodyID id)
         ME_REPORT(ME_ERR_WORLD_LOCKED, "bodies cannot be destroyed during the world's step");
         return;
     }
+    /* Its constraints go with it (as in Karma): a joint to a body that no longer exists has no meaning. */
+    MdtBodyDestroyConstraints(id);
     if (b->enabled)
         w->enabledBodyCount--;
     MePoolPutStruct(&w->bodyPool, b);

@@ -54,6 +54,7 @@ typedef struct MdtBody {
     MeReal enabledTime;          /* seconds simulated since last enabled */
     int partition;               /* index in the last step's partitions, or -1 */
     int stepIndex;               /* position in the step's body arrays, or -1 */
+    unsigned long visitStamp;    /* partitioner: step in which it was last visited */
     MeVector3 velStar, velrotStar; /* velocities with external forces applied, before constraints */
     MeVector3 stepStartCom;        /* pose at the start of the step, restored if the step fails */
     MeVector4 stepStartQ;

@@ -1,17 +1,23 @@
-/* partition.c -- MdtUpdatePartitions: group the enabled bodies into independent partitions.
+/* partition.c -- MdtUpdatePartitions: group the enabled bodies and constraints into partitions.
  *
- * A partition (island) is a set of bodies joined by constraints that can be solved without
- * reference to any other. Bodies are visited in (sort key, slot) order so that the partitions and
- * the order of bodies within them are the same run after run, whatever the order of creation and
- * destruction was. Output goes to the world's partition chunk: the enabled bodies grouped by
- * partition, plus the offsets where each partition starts. Until constraints exist every enabled
- * body is a partition of its own; the constraint layer adds the breadth-first search over them. */
+ * A partition (island) is a minimal set of bodies and constraints that can be solved without
+ * reference to any other: if a body is in it, every enabled constraint on that body is, and so is
+ * the body at the constraint's other end. Partitions are found by a breadth-first search over the
+ * constraints from each enabled body not yet placed. A disabled body reached this way is enabled
+ * ("woken by the partitioner", which calls the world's enable callback so the bridge can unfreeze
+ * its model). The world is not a body: two bodies each jointed to the world are separate partitions.
+ *
+ * Determinism: seeds are taken in (sort key, slot) order, and each partition's bodies and
+ * constraints are then sorted by (sort key, slot), so the result does not depend on the order in
+ * which the application created or destroyed things.
+ *
+ * Output (world->partitions) lives in the world's partition chunk until the next step. */
 #include <stdlib.h>
 
 #include "../me/check.h"
+#include "constraint.h"
 #include "world.h"
 
-/* Stable order for determinism: sort key, then pool slot (never the address). */
 static int compareBodies(const void *pa, const void *pb)
 {
     const MdtBody *a = *(MdtBody *const *)pa, *b = *(MdtBody *const *)pb;
@@ -20,40 +26,103 @@ static int compareBodies(const void *pa, const void *pb)
     return (a->slot > b->slot) - (a->slot < b->slot);
 }
 
+static int compareConstraints(const void *pa, const void *pb)
+{
+    const MdtConstraint *a = *(MdtConstraint *const *)pa, *b = *(MdtConstraint *const *)pb;
+    if (a->sortKey != b->sortKey)
+        return a->sortKey < b->sortKey ? -1 : 1;
+    return (a->slot > b->slot) - (a->slot < b->slot);
+}
+
+/* Carve the output arrays out of the partition chunk. */
+static MeBool allocateOutput(MdtWorld *w, MdtBody ***seeds, int maxBodies, int maxConstraints)
+{
+    MdtPartitionOutput *out = &w->partitions;
+    size_t nb = (size_t)maxBodies, nc = (size_t)maxConstraints;
+    size_t bytes = sizeof(MdtBody *) * 2 * (nb + 1) + sizeof(int) * (nb + 1) + sizeof(MdtConstraint *) * (nc + 1) +
+                   sizeof(int) * (nb + 1) + 64;
+    unsigned char *mem = MeChunkGetMem(&w->partitionChunk, bytes);
+    if (!mem)
+        return MEFALSE;
+    MeChunkPutMem(&w->partitionChunk, mem); /* the arrays stay valid until the next step */
+    /* Pointer arrays first (strictest alignment), then ints. */
+    out->bodies = (MdtBody **)mem;
+    *seeds = out->bodies + nb + 1;
+    out->constraints = (MdtConstraint **)(*seeds + nb + 1);
+    out->partitionStart = (int *)(out->constraints + nc + 1);
+    out->constraintStart = out->partitionStart + nb + 1;
+    return METRUE;
+}
+
 void MdtUpdatePartitions(MdtWorld *w)
 {
     MdtPartitionOutput *out = &w->partitions;
-    int n = w->enabledBodyCount;
-    size_t bodyBytes = sizeof(MdtBody *) * (size_t)(n > 0 ? n : 1);
-    size_t startBytes = sizeof(int) * (size_t)(n + 1);
-    unsigned char *mem = MeChunkGetMem(&w->partitionChunk, bodyBytes + startBytes);
-    out->bodyCount = 0;
-    out->partitionCount = 0;
-    if (!mem) {
-        /* Out of memory: nothing is simulated this step, and the world stays consistent. */
+    const unsigned long stamp = ++w->partitionStamp;
+    MdtBody **seeds;
+    int maxBodies = MePoolGetUsed(&w->bodyPool);
+    out->bodyCount = out->partitionCount = out->constraintCount = 0;
+    if (!allocateOutput(w, &seeds, maxBodies, w->enabledConstraintCount)) {
+        /* Out of memory (reported by the chunk): nothing is simulated this step; state is intact. */
         return;
     }
-    MeChunkPutMem(&w->partitionChunk, mem); /* the arrays live until the next step */
-    out->bodies = (MdtBody **)mem;
-    out->partitionStart = (int *)(mem + bodyBytes);
 
+    /* Seeds: the enabled bodies in (key, slot) order. */
+    int seedCount = 0;
     for (int i = 0; i < w->bodyPool.capacity; i++) {
         if (!MePoolSlotIsLive(&w->bodyPool, i))
             continue;
         MdtBody *b = MePoolSlot(&w->bodyPool, i);
         b->partition = -1;
         b->stepIndex = -1;
-        if (b->enabled && out->bodyCount < n)
-            out->bodies[out->bodyCount++] = b;
+        if (b->enabled)
+            seeds[seedCount++] = b;
     }
-    ME_ASSERT_INTERNAL(out->bodyCount == n);
-    qsort(out->bodies, (size_t)out->bodyCount, sizeof(MdtBody *), compareBodies);
+    qsort(seeds, (size_t)seedCount, sizeof(MdtBody *), compareBodies);
 
-    for (int i = 0; i < out->bodyCount; i++) {
-        MdtBody *b = out->bodies[i];
-        b->stepIndex = i;
-        b->partition = out->partitionCount;
-        out->partitionStart[out->partitionCount++] = i;
+    for (int s = 0; s < seedCount; s++) {
+        MdtBody *seed = seeds[s];
+        if (seed->visitStamp == stamp)
+            continue;
+        int bodyStart = out->bodyCount, constraintStart = out->constraintCount;
+        seed->visitStamp = stamp;
+        out->bodies[out->bodyCount++] = seed;
+        /* Breadth-first: the body array itself is the queue. */
+        for (int head = bodyStart; head < out->bodyCount; head++) {
+            MdtBody *b = out->bodies[head];
+            for (MdtConstraint *c = b->firstConstraint; c; c = c->nextForBody[c->body[0] == b ? 0 : 1]) {
+                if (!c->enabled || c->visitStamp == stamp)
+                    continue;
+                c->visitStamp = stamp;
+                out->constraints[out->constraintCount++] = c;
+                for (int k = 0; k < 2; k++) {
+                    MdtBody *other = c->body[k];
+                    if (!other || other->visitStamp == stamp)
+                        continue;
+                    other->visitStamp = stamp;
+                    if (!other->enabled) {
+                        MdtBodySetEnabledInternal(other, METRUE);
+                        other->enabledByPartitioner = METRUE;
+                    }
+                    out->bodies[out->bodyCount++] = other;
+                }
+            }
+        }
+        qsort(out->bodies + bodyStart, (size_t)(out->bodyCount - bodyStart), sizeof(MdtBody *), compareBodies);
+        qsort(out->constraints + constraintStart, (size_t)(out->constraintCount - constraintStart),
+              sizeof(MdtConstraint *), compareConstraints);
+        out->partitionStart[out->partitionCount] = bodyStart;
+        out->constraintStart[out->partitionCount] = constraintStart;
+        out->partitionCount++;
     }
     out->partitionStart[out->partitionCount] = out->bodyCount;
+    out->constraintStart[out->partitionCount] = out->constraintCount;
+
+    for (int p = 0; p < out->partitionCount; p++) {
+        for (int i = out->partitionStart[p]; i < out->partitionStart[p + 1]; i++) {
+            out->bodies[i]->stepIndex = i;
+            out->bodies[i]->partition = p;
+        }
+        for (int i = out->constraintStart[p]; i < out->constraintStart[p + 1]; i++)
+            out->constraints[i]->partition = p;
+    }
 }

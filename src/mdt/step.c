@@ -13,13 +13,6 @@
 #include "kea/kea_integrate.h"
 #include "world.h"
 
-void MdtPack(MdtWorld *w)
-{
-    MdtKeaPredictVelocities(w);
-    /* Constraint rows are written here by the constraint library (BCL) once it exists. */
-    w->lastRowCount = 0;
-}
-
 /* Clears the accumulators of the bodies that were simulated; disabled bodies keep theirs. */
 static void clearAccumulators(MdtWorld *w)
 {
@@ -69,16 +62,16 @@ void MdtWorldStep(MdtWorldID id, MeReal stepSize)
     MdtPack(w);
     MeProfileEndSection(prof, MDT_SECTION_PACK);
 
-    /* The solver runs on the packed rows; without constraints there is nothing to solve and the
-     * constraint velocity changes are zero. */
     MeProfileStartSection(prof, MDT_SECTION_SOLVE);
+    MdtSolve(w);
     MeProfileEndSection(prof, MDT_SECTION_SOLVE);
 
     MeProfileStartSection(prof, MDT_SECTION_INTEGRATE);
-    MdtKeaIntegratePartitions(w, NULL);
+    MdtKeaIntegratePartitions(w, (const MeReal *)w->rows.dv);
     MeProfileEndSection(prof, MDT_SECTION_INTEGRATE);
 
     MeProfileStartSection(prof, MDT_SECTION_UNPACK);
+    MdtUnpackForces(w);
     clearAccumulators(w);
     MeProfileEndSection(prof, MDT_SECTION_UNPACK);
 

@@ -37,6 +37,8 @@ void MdtWorldSetDefaults(MdtWorld *w)
     w->epsilon = DEFAULT_EPSILON / w->massScale;
     w->gamma = DEFAULT_GAMMA;
     w->maxLCPIterations = DEFAULT_LCP_ITERATIONS;
+    KeaParametersDefault(&w->kea);
+    w->kea.maxIterations = DEFAULT_LCP_ITERATIONS;
     w->autoDisable.enabled = METRUE;
     w->autoDisable.velocity = DEFAULT_AD_VELOCITY * l2;
     w->autoDisable.angularVelocity = DEFAULT_AD_ANGULAR_VELOCITY;
@@ -82,6 +84,7 @@ MdtWorldID MdtWorldCreate(unsigned int maxBodies, unsigned int maxConstraints, M
     w->id = MeHandleOfOwner(w->ownerSlot);
     MeChunkInit(&w->partitionChunk, "partition output");
     MeChunkInit(&w->keaChunk, "Kea workspace");
+    MeChunkInit(&w->rowChunk, "constraint rows");
     MeProfileInit(&w->profile);
     MdtWorldSetDefaults(w);
     return (MdtWorldID)w->id;
@@ -97,6 +100,7 @@ void MdtWorldDestroy(MdtWorldID id)
     MeHandleUnregisterOwner(w->ownerSlot);
     MeChunkTerm(&w->partitionChunk);
     MeChunkTerm(&w->keaChunk);
+    MeChunkTerm(&w->rowChunk);
     MePoolDestroy(&w->bodyPool);
     MePoolDestroy(&w->constraintPool);
     MeMemoryDestroy(w);
@@ -112,6 +116,7 @@ void MdtWorldReset(MdtWorldID id)
     MePoolDeset(&w->bodyPool);
     MePoolDeset(&w->constraintPool);
     w->enabledBodyCount = 0;
+    w->enabledConstraintCount = 0;
     w->partitions.bodyCount = 0;
     w->partitions.partitionCount = 0;
 }
@@ -146,7 +151,7 @@ int MdtWorldGetTotalConstraints(MdtWorldID id)
 int MdtWorldGetEnabledConstraints(MdtWorldID id)
 {
     WORLD_OR_RETURN(w, id, 0);
-    return 0; /* constraints arrive with the constraint layer */
+    return w->enabledConstraintCount;
 }
 
 int MdtWorldGetMaxBodies(MdtWorldID id)
@@ -260,7 +265,7 @@ void MdtWorldGetCounters(MdtWorldID id, MdtWorldCounters *c)
     c->bodies = MePoolGetUsed(&w->bodyPool);
     c->enabledBodies = w->enabledBodyCount;
     c->constraints = MePoolGetUsed(&w->constraintPool);
-    c->enabledConstraints = 0;
+    c->enabledConstraints = w->enabledConstraintCount;
     c->partitions = w->partitions.partitionCount;
     c->rows = w->lastRowCount;
     c->bodyPoolHighWater = MePoolGetHighWater(&w->bodyPool);
@@ -387,6 +392,7 @@ void MdtWorldSetMaxLCPIterations(MdtWorldID id, int mi)
         return;
     }
     w->maxLCPIterations = mi;
+    w->kea.maxIterations = mi;
 }
 
 void MdtWorldSetBodyEnableCallback(MdtWorldID id, MdtBodyEnableCBPtr cb, void *userData)
@@ -401,4 +407,61 @@ void MdtWorldSetBodyDisableCallback(MdtWorldID id, MdtBodyEnableCBPtr cb, void *
     WORLD_OR_RETURN(w, id, ME_NOTHING);
     w->bodyDisableCB = cb;
     w->bodyDisableData = userData;
+}
+
+/* ---- solver settings ---------------------------------------------------------------------- */
+void MdtWorldGetSolverStats(MdtWorldID id, MdtSolverStats *stats)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(stats, ME_NOTHING);
+    *stats = w->solverStats;
+}
+
+MdtLCPSolver MdtWorldGetLCPSolver(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, MdtLCPSolverAuto);
+    return (MdtLCPSolver)w->kea.path;
+}
+
+int MdtWorldGetMaxDirectRows(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return w->kea.maxDirectRows;
+}
+
+MeReal MdtWorldGetLCPTolerance(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return w->kea.tolerance;
+}
+
+void MdtWorldSetLCPSolver(MdtWorldID id, MdtLCPSolver solver)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    if (solver != MdtLCPSolverAuto && solver != MdtLCPSolverDirect && solver != MdtLCPSolverIterative) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'solver' (%d) is not an MdtLCPSolver", (int)solver);
+        return;
+    }
+    w->kea.path = (KeaPath)solver;
+}
+
+void MdtWorldSetMaxDirectRows(MdtWorldID id, int rows)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    if (rows < 0) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'rows' (%d) must not be negative", rows);
+        return;
+    }
+    w->kea.maxDirectRows = rows;
+}
+
+void MdtWorldSetLCPTolerance(MdtWorldID id, MeReal tolerance)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    ME_CHECK_FINITE(tolerance, ME_NOTHING);
+    if (!(tolerance > 0)) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'tolerance' (%g) must be positive", (double)tolerance);
+        return;
+    }
+    w->kea.tolerance = tolerance;
 }

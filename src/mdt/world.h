@@ -11,6 +11,7 @@
 #include <karma/MdtWorld.h>
 
 #include "body.h"
+#include "kea/kea.h"
 
 /* Names of the step's profile sections (docs/step.md). */
 #define MDT_SECTION_STEP "Dynamics"
@@ -27,13 +28,31 @@ typedef struct MdtAutoDisableParams {
     MeReal aliveTime;                                                    /* seconds */
 } MdtAutoDisableParams;
 
-/* The step's view of the enabled bodies, grouped into partitions (islands). */
+struct MdtConstraint;
+
+/* The step's view of the enabled bodies and constraints, grouped into partitions (islands). */
 typedef struct MdtPartitionOutput {
     int bodyCount;
     MdtBody **bodies;        /* enabled bodies, grouped by partition */
     int partitionCount;
     int *partitionStart;     /* partitionCount + 1 offsets into bodies */
+    int constraintCount;
+    struct MdtConstraint **constraints; /* enabled constraints, grouped by partition */
+    int *constraintStart;    /* partitionCount + 1 offsets into constraints */
 } MdtPartitionOutput;
+
+/* The solver rows of the step, all partitions one after the other (written by MdtPack). */
+typedef struct MdtStepRows {
+    int count;
+    KeaJacobianRow *J;
+    int (*rowBodies)[2];
+    MeReal *epsilon, *rhs, *lo, *hi, *mu, *x;
+    int *link;
+    int *partitionRowStart;  /* partitionCount + 1 offsets */
+    KeaBody *bodies;         /* per step body (partition order) */
+    KeaBodyVelocity *dv;     /* per step body: velocity change from the constraints */
+    size_t workspaceBytes;   /* Kea workspace for the largest partition */
+} MdtStepRows;
 
 typedef struct MdtWorld {
     int ownerSlot;           /* registry slot behind the MdtWorldID */
@@ -57,9 +76,15 @@ typedef struct MdtWorld {
     MeBool locked;           /* inside MdtWorldStep */
     MeReal stepSize;         /* of the step in progress or the last one */
     int enabledBodyCount;
+    int enabledConstraintCount;
     MdtPartitionOutput partitions;
-    MeChunk partitionChunk;  /* body lists and partition offsets */
+    MdtStepRows rows;
+    unsigned long partitionStamp;
+    MeChunk partitionChunk;  /* body and constraint lists, partition offsets */
+    MeChunk rowChunk;        /* the step's solver rows */
     MeChunk keaChunk;        /* solver workspace */
+    KeaParameters kea;       /* solver settings (path, iterations, tolerance...) */
+    MdtSolverStats solverStats;
     MeProfile profile;
     unsigned long steps;
     MeReal time;
@@ -75,5 +100,7 @@ void MdtWorldSetDefaults(MdtWorld *w);
 void MdtUpdatePartitions(MdtWorld *w);
 void MdtAutoDisable(MdtWorld *w);
 void MdtPack(MdtWorld *w);
+void MdtSolve(MdtWorld *w);
+void MdtUnpackForces(MdtWorld *w);
 
 #endif /* MDT_WORLD_INTERNAL_H */

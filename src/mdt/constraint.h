@@ -1,0 +1,171 @@
+/* constraint.h -- the constraint record, the per-type class table and the row writer (internal).
+ *
+ * Every constraint (joint, contact, contact group) lives in a slot of the world's constraint pool:
+ * a common header (bodies, frames, flags, outputs, links into the bodies' constraint lists) followed
+ * by MDT_CONSTRAINT_DATA_BYTES of type-specific data that only the type's own file interprets. Each
+ * type registers an MdtConstraintClass: its name, its maximum row count, how to reset its data, and
+ * its row writer, which the packer (BCL) calls once per step for each enabled constraint of a
+ * partition.
+ *
+ * Rows. A row i constrains the relative velocity J_i·v of the two bodies. The writer is given, per
+ * row, the Jacobian halves, a desired constraint velocity c, a position error φ (the constraint
+ * function's value, in the row's units), a relaxation γ (share of φ removed per step), an extra
+ * softness ε and force bounds. It computes the solver's right-hand side
+ *
+ *     r = c − γ φ / h − J v*       (v*: velocities after external forces; see predict.c)
+ *
+ * and Kea finds impulses x with  J v⁺ + ε x = c − γ φ / h  inside the bounds (bounds are given as
+ * forces and become impulses f·h). See docs/step.md for the derivation and the meaning of ε and γ. */
+#ifndef MDT_CONSTRAINT_INTERNAL_H
+#define MDT_CONSTRAINT_INTERNAL_H
+
+#include <karma/MdtConstraint.h>
+
+#include "body.h"
+#include "kea/kea.h"
+
+struct MdtWorld;
+struct MdtConstraint;
+struct MdtRowWriter;
+
+/** Largest number of rows any joint writes (contact groups write 3 per contact). */
+#define MDT_MAX_JOINT_ROWS 6
+/** Bytes of type-specific data in a constraint slot. */
+#define MDT_CONSTRAINT_DATA_BYTES 320
+
+/** One type of constraint. */
+typedef struct MdtConstraintClass {
+    const char *name;
+    int maxRows; /* rows written at most (contact groups: per contact) */
+    /* Restore the type's defaults in c->data (and frames if the type has its own defaults). */
+    void (*reset)(struct MdtConstraint *c);
+    /* Rows this step (an upper bound is fine); NULL means maxRows. */
+    int (*rowCount)(const struct MdtConstraint *c);
+    /* Write this step's rows. */
+    void (*addRows)(struct MdtConstraint *c, struct MdtRowWriter *w);
+    /* After the solve: per-type outputs from the row impulses (optional). */
+    void (*unpack)(struct MdtConstraint *c, const MeReal *impulses, int rows, MeReal h);
+    /* Before the slot is released (optional; contact groups free their contacts). */
+    void (*destroy)(struct MdtConstraint *c);
+} MdtConstraintClass;
+
+/** The common header and the type data of a constraint. */
+typedef struct MdtConstraint {
+    uintptr_t id;
+    struct MdtWorld *world;
+    int slot;
+    MdtBclJointType type;
+    const MdtConstraintClass *cls;
+    MdtBody *body[2];             /* body[1] NULL = the world */
+    MeBool enabled;
+    MeBool inGroup;               /* a contact owned by a contact group (not partitioned itself) */
+    void *userData;
+    MeI32 sortKey;
+
+    /* Constraint frame per body, in that body's frame (world frame when the body is NULL). */
+    MeVector3 position[2];
+    MeVector3 primary[2];
+    MeVector3 orthogonal[2];
+    MeVector3 worldLinearVelocity, worldAngularVelocity;
+
+    /* Outputs of the last step. */
+    MeVector3 force[2], torque[2];
+    int rowCount;
+    MeReal impulse[MDT_MAX_JOINT_ROWS]; /* last step's row impulses: the next step's warm start */
+
+    /* Links: the constraint lists of body 0 and body 1. */
+    struct MdtConstraint *nextForBody[2];
+    /* Step bookkeeping. */
+    unsigned long visitStamp;     /* partitioner: step in which it was last placed */
+    int rowStart;                 /* first row in the step's row arrays, or -1 */
+    int partition;
+
+    /* Type-specific data, interpreted by the type's file only. */
+    union {
+        MeReal reals[MDT_CONSTRAINT_DATA_BYTES / sizeof(MeReal)];
+        void *pointer;
+        double alignment;
+    } data;
+} MdtConstraint;
+
+/** Type data of a constraint, as the type's own struct. */
+#define MDT_CONSTRAINT_DATA(c, Type) ((Type *)(void *)(c)->data.reals)
+/** Compile-time check that a type's data fits in the slot. */
+#define MDT_CONSTRAINT_DATA_FITS(Type)                                                               \
+    _Static_assert(sizeof(Type) <= MDT_CONSTRAINT_DATA_BYTES, #Type " does not fit a constraint slot")
+
+/* ---- creation and lookup ------------------------------------------------------------------ */
+/** A new disabled constraint of `type` (behaviour in `cls`) in world `wid`, reset to its defaults;
+ *  NULL (reported in `function`'s name) when the ID is bad or the pool is full. */
+MdtConstraint *MdtConstraintCreateInternal(MdtWorldID wid, MdtBclJointType type, const MdtConstraintClass *cls,
+                                           const char *function);
+/** Resolve an ID of any constraint type; NULL (reported) if invalid. */
+MdtConstraint *MdtConstraintFromID(MdtConstraintID id, const char *function);
+/** Resolve an ID that must be of `type`; NULL (reported) if invalid or of another type. */
+MdtConstraint *MdtConstraintFromIDOfType(const void *id, MdtBclJointType type, const char *function);
+/** Release the slot (after the class's destroy hook), unlinking from the bodies. */
+void MdtConstraintRelease(MdtConstraint *c);
+/** Attach to bodies (NULL body1 = world); relinks the bodies' constraint lists. */
+void MdtConstraintAttach(MdtConstraint *c, MdtBody *b0, MdtBody *b1);
+/** Reset the common frames: positions 0, primary (1,0,0), orthogonal (0,1,0) in each body's frame. */
+void MdtConstraintResetFrames(MdtConstraint *c);
+
+/* ---- frames in world coordinates ----------------------------------------------------------- */
+void MdtConstraintWorldPosition(const MdtConstraint *c, int body, MeVector3 out);
+void MdtConstraintWorldPrimary(const MdtConstraint *c, int body, MeVector3 out);
+void MdtConstraintWorldOrthogonal(const MdtConstraint *c, int body, MeVector3 out);
+/** A world point / direction expressed in body `index`'s frame (identity for the world). */
+void MdtConstraintToBodyPoint(const MdtConstraint *c, int index, const MeVector3 world, MeVector3 out);
+void MdtConstraintToBodyVector(const MdtConstraint *c, int index, const MeVector3 world, MeVector3 out);
+
+/* ---- the row writer (BCL) ------------------------------------------------------------------ */
+/** One row as a constraint describes it. Zero-initialise, then fill what applies. */
+typedef struct MdtRow {
+    MeVector3 lin0, ang0;  /* Jacobian on body 0: constraint velocity += lin0·v0 + ang0·ω0 */
+    MeVector3 lin1, ang1;  /* on body 1 (ignored when body 1 is the world, except for its velocity) */
+    MeReal velocity;       /* desired constraint velocity c */
+    MeReal error;          /* position error φ (constraint units); corrected at rate γ/h */
+    MeReal gamma;          /* relaxation for this row; < 0 means the world's γ */
+    MeReal epsilon;        /* softness added to the world's ε */
+    MeBool noWorldEpsilon; /* do not add the world's ε (rows with their own compliance) */
+    MeReal lo, hi;         /* force bounds, N (or N·m); ±MEINFINITY for none */
+    int link;              /* friction: row index (relative to the constraint's first row) of the
+                              normal row whose impulse bounds this one, or -1 */
+    MeReal mu;             /* friction coefficient with `link` */
+} MdtRow;
+
+typedef struct MdtRowWriter {
+    /* Output arrays for the whole step (indexed by global row). */
+    KeaJacobianRow *J;
+    int (*rowBodies)[2];
+    MeReal *epsilon, *rhs, *lo, *hi, *mu, *x0;
+    int *link;
+    int count;    /* rows written so far */
+    int capacity;
+    /* The constraint being written. */
+    MdtConstraint *constraint;
+    int first;    /* its first row */
+    int localBody[2]; /* partition-local indices of its bodies, or KEA_WORLD */
+    MeReal h, gamma, epsilon0;
+} MdtRowWriter;
+
+/** Append a row for the current constraint; returns its index relative to the constraint's first
+ *  row, or -1 when the capacity (the class's row count) is exhausted. */
+int MdtRowWriterAdd(MdtRowWriter *w, const MdtRow *row);
+/** An empty row with the defaults (gamma −1: the world's, link −1, unbounded). */
+void MdtRowInit(MdtRow *row);
+
+/* ---- shared row pieces (bcl/parts.c) -------------------------------------------------------- */
+/** Three rows holding a point of body 0 on a point of body 1 (ball and socket). */
+void MdtBclAddPointRows(MdtRowWriter *w, const MdtConstraint *c);
+/** Rows keeping the world direction `d1` of body 0 perpendicular to body 1's direction `d2`:
+ *  one row, error d1·d2. */
+void MdtBclAddPerpendicularRow(MdtRowWriter *w, const MdtConstraint *c, const MeVector3 d1, const MeVector3 d2);
+/** Two rows keeping body 0's primary axis parallel to body 1's (hinge). */
+void MdtBclAddParallelAxisRows(MdtRowWriter *w, const MdtConstraint *c);
+/** Three rows locking the relative orientation (fixed angle) of the two frames. */
+void MdtBclAddOrientationRows(MdtRowWriter *w, const MdtConstraint *c);
+/** Lever arm of the attachment point from body `index`'s COM, world frame (zero for the world). */
+void MdtBclLeverArm(const MdtConstraint *c, int index, MeVector3 r);
+
+#endif /* MDT_CONSTRAINT_INTERNAL_H */

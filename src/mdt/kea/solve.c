@@ -1,0 +1,91 @@
+/* solve.c -- MdtSolve: run Kea on each partition of the step and collect its statistics.
+ *
+ * Each partition is an independent LCP over its slice of the step's rows. The world's KeaParameters
+ * choose the path (exact up to maxDirectRows rows, iterative beyond, or forced), and the workspace
+ * comes from the world's Kea chunk, sized once for the largest partition. The result per partition:
+ * the row impulses (in place of the warm start) and each body's velocity change, which the
+ * integrator adds to the predicted velocities. */
+#include <string.h>
+
+#include "../../me/check.h"
+#include "../world.h"
+
+void MdtSolve(MdtWorld *w)
+{
+    const MdtPartitionOutput *out = &w->partitions;
+    MdtStepRows *r = &w->rows;
+    MdtSolverStats *stats = &w->solverStats;
+    memset(stats, 0, sizeof *stats);
+    for (int i = 0; i < out->bodyCount; i++)
+        memset(&r->dv[i], 0, sizeof r->dv[i]);
+    if (r->count == 0)
+        return;
+
+    /* One workspace for the largest partition. */
+    size_t need = 0;
+    for (int p = 0; p < out->partitionCount; p++) {
+        int rows = r->partitionRowStart[p + 1] - r->partitionRowStart[p];
+        int bodies = out->partitionStart[p + 1] - out->partitionStart[p];
+        if (rows == 0)
+            continue;
+        size_t bytes = KeaMemoryRequired(rows, bodies, KeaSelectPath(rows, &w->kea));
+        if (bytes > need)
+            need = bytes;
+    }
+    void *workspace = MeChunkGetMem(&w->keaChunk, need);
+    if (!workspace)
+        return; /* reported by the chunk; the constraints act as if absent this step */
+
+    for (int p = 0; p < out->partitionCount; p++) {
+        int row0 = r->partitionRowStart[p], rows = r->partitionRowStart[p + 1] - row0;
+        int body0 = out->partitionStart[p], bodies = out->partitionStart[p + 1] - body0;
+        if (rows == 0)
+            continue;
+        KeaProblem problem;
+        problem.nRows = rows;
+        problem.nBodies = bodies;
+        problem.bodies = r->bodies + body0;
+        problem.J = r->J + row0;
+        problem.rowBodies = (const int(*)[2])(r->rowBodies + row0);
+        problem.epsilon = r->epsilon + row0;
+        problem.rhs = r->rhs + row0;
+        problem.lo = r->lo + row0;
+        problem.hi = r->hi + row0;
+        problem.link = r->link + row0;
+        problem.mu = r->mu + row0;
+        problem.x0 = r->x + row0;
+        /* Links were written as step-global row indices: make them partition-local. */
+        for (int i = 0; i < rows; i++)
+            if (r->link[row0 + i] >= 0)
+                r->link[row0 + i] -= row0;
+        KeaStats ks;
+        KeaStatus status = KeaSolve(&problem, &w->kea, workspace, need, r->x + row0, r->dv + body0, &ks);
+        stats->partitions++;
+        stats->rows += rows;
+        if (rows > stats->maxPartitionRows)
+            stats->maxPartitionRows = rows;
+        if (ks.path == KeaPathDirect)
+            stats->directPartitions++;
+        else
+            stats->iterativePartitions++;
+        stats->iterations += ks.iterations;
+        stats->pivots += ks.pivots;
+        if (status != KeaStatusOk)
+            stats->unconverged++;
+        if (ks.residual > stats->maxResidual)
+            stats->maxResidual = ks.residual;
+        if (status == KeaStatusWorkspaceTooSmall || status == KeaStatusBadInput) {
+            ME_REPORT_IN("MdtWorldStep", status == KeaStatusBadInput ? ME_ERR_NONFINITE_STATE : ME_ERR_KEA_WORKSPACE,
+                         "the solver could not solve partition %d (%d rows, status %d); its constraints were "
+                         "ignored this step",
+                         p, rows, (int)status);
+            memset(r->x + row0, 0, sizeof(MeReal) * (size_t)rows);
+            memset(r->dv + body0, 0, sizeof(KeaBodyVelocity) * (size_t)bodies);
+        } else if (status != KeaStatusOk) {
+            ME_REPORT_IN("MdtWorldStep", ME_ERR_KEA_MAX_ITERATIONS,
+                         "partition %d (%d rows) stopped at the solver's cap (status %d, residual %g m/s)", p, rows,
+                         (int)status, (double)ks.residual);
+        }
+    }
+    MeChunkPutMem(&w->keaChunk, workspace);
+}
