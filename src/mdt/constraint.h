@@ -147,6 +147,7 @@ typedef struct MdtRowWriter {
     int first;    /* its first row */
     int localBody[2]; /* partition-local indices of its bodies, or KEA_WORLD */
     MeReal h, gamma, epsilon0;
+    MdtRow *captured; /* when not NULL, rows are copied here instead (MdtConstraintCaptureRows) */
 } MdtRowWriter;
 
 /** Append a row for the current constraint; returns its index relative to the constraint's first
@@ -154,6 +155,9 @@ typedef struct MdtRowWriter {
 int MdtRowWriterAdd(MdtRowWriter *w, const MdtRow *row);
 /** An empty row with the defaults (gamma −1: the world's, link −1, unbounded). */
 void MdtRowInit(MdtRow *row);
+/** The rows constraint `c` would write now, as MdtRows (at most `max`); for tests and tools (e.g.
+ *  Jacobians against finite differences of the errors). `h` is the step the rows are written for. */
+int MdtConstraintCaptureRows(MdtConstraint *c, MdtRow *rows, int max, MeReal h);
 
 /* ---- shared row pieces (bcl/parts.c) -------------------------------------------------------- */
 /** Three rows holding a point of body 0 on a point of body 1 (ball and socket). */

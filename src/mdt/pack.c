@@ -43,6 +43,10 @@ int MdtRowWriterAdd(MdtRowWriter *w, const MdtRow *row)
         return -1;
     }
     int i = w->count++;
+    if (w->captured) {
+        w->captured[local] = *row;
+        return local;
+    }
     KeaJacobianRow *J = &w->J[i];
     memset(J, 0, sizeof *J);
     MeVector3Copy(J->lin0, row->lin0);
@@ -144,6 +148,7 @@ void MdtPack(MdtWorld *w)
     writer.x0 = r->x;
     writer.link = r->link;
     writer.count = 0;
+    writer.captured = NULL;
     writer.h = w->stepSize;
     writer.gamma = w->gamma;
     writer.epsilon0 = w->epsilon;
@@ -165,4 +170,20 @@ void MdtPack(MdtWorld *w)
     r->partitionRowStart[out->partitionCount] = writer.count;
     r->count = writer.count;
     w->lastRowCount = writer.count;
+}
+
+int MdtConstraintCaptureRows(MdtConstraint *c, MdtRow *rows, int max, MeReal h)
+{
+    MdtRowWriter w;
+    memset(&w, 0, sizeof w);
+    w.captured = rows;
+    w.constraint = c;
+    w.capacity = max;
+    w.h = h;
+    w.gamma = c->world->gamma;
+    w.epsilon0 = c->world->epsilon;
+    w.localBody[0] = 0;
+    w.localBody[1] = c->body[1] ? 1 : KEA_WORLD;
+    c->cls->addRows(c, &w);
+    return w.count;
 }
