@@ -4,7 +4,12 @@
 
 #include "MeMath.h"
 #include "MeMessage.h"
+#include "MdtBSJoint.h"
 #include "MdtBody.h"
+#include "MdtConstraint.h"
+#include "MdtContact.h"
+#include "MdtContactGroup.h"
+#include "MdtContactParams.h"
 #include "MdtTypes.h"
 #include "MdtWorld.h"
 

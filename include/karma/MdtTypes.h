@@ -58,6 +58,8 @@ typedef enum MdtBclJointType {
 
 /** Called when the world enables or disables a body (the bridge freezes/unfreezes its model). */
 typedef void (*MdtBodyEnableCBPtr)(MdtBodyID body, void *userData);
+/** Called when a contact group is destroyed (the bridge clears its pair's reference). */
+typedef void (*MdtContactGroupDestroyCBPtr)(MdtContactGroupID group, void *userData);
 /** Called for each constraint by the ForAll iterators. */
 typedef void (*MdtConstraintIteratorCBPtr)(MdtConstraintID constraint, void *userData);
 

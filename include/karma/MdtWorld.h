@@ -132,6 +132,8 @@ ME_API void MdtWorldSetLCPTolerance(MdtWorldID w, MeReal tolerance);
 /** Called when the world enables a body (also by the partitioner) / disables one (auto-disable). */
 ME_API void MdtWorldSetBodyEnableCallback(MdtWorldID w, MdtBodyEnableCBPtr cb, void *userData);
 ME_API void MdtWorldSetBodyDisableCallback(MdtWorldID w, MdtBodyEnableCBPtr cb, void *userData);
+/** Called when a contact group is destroyed, by the application or with its body. */
+ME_API void MdtWorldSetContactGroupDestroyCallback(MdtWorldID w, MdtContactGroupDestroyCBPtr cb, void *userData);
 
 /** Whether `w` is a live world ID (no message). */
 ME_API MeBool MdtWorldIsValid(MdtWorldID w);

@@ -409,6 +409,13 @@ void MdtWorldSetBodyDisableCallback(MdtWorldID id, MdtBodyEnableCBPtr cb, void *
     w->bodyDisableData = userData;
 }
 
+void MdtWorldSetContactGroupDestroyCallback(MdtWorldID id, MdtContactGroupDestroyCBPtr cb, void *userData)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    w->contactGroupDestroyCB = cb;
+    w->contactGroupDestroyData = userData;
+}
+
 /* ---- solver settings ---------------------------------------------------------------------- */
 void MdtWorldGetSolverStats(MdtWorldID id, MdtSolverStats *stats)
 {

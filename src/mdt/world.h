@@ -71,6 +71,8 @@ typedef struct MdtWorld {
     /* callbacks */
     MdtBodyEnableCBPtr bodyEnableCB, bodyDisableCB;
     void *bodyEnableData, *bodyDisableData;
+    MdtContactGroupDestroyCBPtr contactGroupDestroyCB;
+    void *contactGroupDestroyData;
 
     /* step state */
     MeBool locked;           /* inside MdtWorldStep */

@@ -1,0 +1,72 @@
+/* MdtContact.h -- a contact point between two bodies (or a body and the world).
+ *
+ * Sign conventions (as Karma): the normal is a unit vector pointing from body 0 towards body 1 (the
+ * direction in which body 1 is pushed; body 0 is pushed the other way), and the penetration is
+ * positive when the bodies overlap. A collision system's McdContact (normal model 1 → model 2,
+ * separation < 0 when penetrating) converts with normal as is and penetration = −separation.
+ * Contacts are normally members of an MdtContactGroup (one per touching pair, see
+ * MdtContactGroup.h); a stand-alone contact is a constraint of its own (MdtContactCreate, then
+ * MdtContactSetBodies and MdtContactEnable).
+ * Rows: 1 (frictionless), 2 (1D friction) or 3 (2D friction), see MdtContactParams.h. */
+#ifndef MDT_CONTACT_H
+#define MDT_CONTACT_H
+
+#include "MdtConstraint.h"
+#include "MdtContactParams.h"
+
+ME_EXTERN_C_BEGIN
+
+/** A new disabled stand-alone contact, or NULL when the constraint pool is full. */
+ME_API MdtContactID MdtContactCreate(MdtWorldID w);
+/** Restore the defaults: position 0, normal (0,1,0), direction (0,1,0), penetration 0, params reset. */
+ME_API void MdtContactReset(MdtContactID c);
+ME_API MdtConstraintID MdtContactQuaConstraint(MdtContactID c);
+ME_API MdtContactID MdtConstraintDCastContact(MdtConstraintID c);
+
+/** Contact point, world frame. */
+ME_API void MdtContactSetPosition(MdtContactID c, MeReal x, MeReal y, MeReal z);
+ME_API void MdtContactGetPosition(MdtContactID c, MeVector3 p);
+/** Normal from body 0 to body 1 (normalised here; a zero vector is refused). */
+ME_API void MdtContactSetNormal(MdtContactID c, MeReal x, MeReal y, MeReal z);
+ME_API void MdtContactGetNormal(MdtContactID c, MeVector3 n);
+/** Overlap depth (> 0 when penetrating), m. */
+ME_API void MdtContactSetPenetration(MdtContactID c, MeReal p);
+ME_API MeReal MdtContactGetPenetration(MdtContactID c);
+/** Primary friction direction (made perpendicular to the normal; used with the UseDirection
+ *  option, else a direction is chosen). The secondary is normal × primary. */
+ME_API void MdtContactSetDirection(MdtContactID c, MeReal x, MeReal y, MeReal z);
+ME_API void MdtContactGetDirection(MdtContactID c, MeVector3 d);
+/** Velocity of the world's surface at this contact (body 1 NULL; sets the UseWorldVelocity option). */
+ME_API void MdtContactSetWorldVelocity(MdtContactID c, MeReal vx, MeReal vy, MeReal vz);
+ME_API void MdtContactGetWorldVelocity(MdtContactID c, MeVector3 v);
+/** The contact's parameters (a pointer into the contact: change them in place). */
+ME_API MdtContactParamsID MdtContactGetParams(MdtContactID c);
+/** Copy parameters into the contact. */
+ME_API void MdtContactSetParams(MdtContactID c, const MdtContactParams *p);
+/** Relative velocity of body 1's material point with respect to body 0's at the contact. */
+ME_API void MdtContactGetRelativeVelocity(MdtContactID c, MeVector3 v);
+/** Normal force (N) the contact applied in the last step (≥ 0 unless adhesive). */
+ME_API MeReal MdtContactGetNormalForce(MdtContactID c);
+/** Importance for matrix capping (larger is kept first). */
+ME_API void MdtContactSetImportance(MdtContactID c, MeReal importance);
+ME_API MeReal MdtContactGetImportance(MdtContactID c);
+/** Next contact in the same group, or NULL. */
+ME_API MdtContactID MdtContactGetNext(MdtContactID c);
+/** The group the contact belongs to, or NULL. */
+ME_API MdtContactGroupID MdtContactGetContactGroup(MdtContactID c);
+
+#define MdtContactDestroy(c) MdtConstraintDestroy(MdtContactQuaConstraint(c))
+#define MdtContactEnable(c) MdtConstraintEnable(MdtContactQuaConstraint(c))
+#define MdtContactDisable(c) MdtConstraintDisable(MdtContactQuaConstraint(c))
+#define MdtContactIsEnabled(c) MdtConstraintIsEnabled(MdtContactQuaConstraint(c))
+#define MdtContactSetBodies(c, b1, b2) MdtConstraintSetBodies(MdtContactQuaConstraint(c), (b1), (b2))
+#define MdtContactGetBody(c, i) MdtConstraintGetBody(MdtContactQuaConstraint(c), (i))
+#define MdtContactGetForce(c, i, f) MdtConstraintGetForce(MdtContactQuaConstraint(c), (i), (f))
+#define MdtContactGetTorque(c, i, t) MdtConstraintGetTorque(MdtContactQuaConstraint(c), (i), (t))
+#define MdtContactGetUserData(c) MdtConstraintGetUserData(MdtContactQuaConstraint(c))
+#define MdtContactSetUserData(c, d) MdtConstraintSetUserData(MdtContactQuaConstraint(c), (d))
+#define MdtContactGetWorld(c) MdtConstraintGetWorld(MdtContactQuaConstraint(c))
+
+ME_EXTERN_C_END
+
+#endif /* MDT_CONTACT_H */

@@ -1,0 +1,61 @@
+/* MdtContactGroup.h -- the contacts between one pair of bodies (or a body and the world), as one
+ * constraint.
+ *
+ * A collision system (the bridge) creates a group when two models first touch, refreshes its contacts
+ * every step while they stay in contact, and destroys it when they part. Because the group persists,
+ * its contacts keep last step's impulses, which start the next solve (warm starting): contact k of
+ * the group is assumed to be the continuation of last step's contact k, so refresh contacts in a
+ * stable order (reuse the group's existing contacts before creating new ones, as Karma's bridge did).
+ * Rows: the sum of its contacts' rows. */
+#ifndef MDT_CONTACT_GROUP_H
+#define MDT_CONTACT_GROUP_H
+
+#include "MdtConstraint.h"
+#include "MdtContact.h"
+
+ME_EXTERN_C_BEGIN
+
+/** A new disabled, empty contact group, or NULL when the constraint pool is full. */
+ME_API MdtContactGroupID MdtContactGroupCreate(MdtWorldID w);
+/** Destroy the group and its contacts. */
+ME_API void MdtContactGroupDestroy(MdtContactGroupID g);
+/** Destroy the contacts, keep the group. */
+ME_API void MdtContactGroupReset(MdtContactGroupID g);
+ME_API MdtConstraintID MdtContactGroupQuaConstraint(MdtContactGroupID g);
+ME_API MdtContactGroupID MdtConstraintDCastContactGroup(MdtConstraintID c);
+
+ME_API MdtContactID MdtContactGroupGetFirstContact(MdtContactGroupID g);
+ME_API MdtContactID MdtContactGroupGetNextContact(MdtContactGroupID g, MdtContactID c);
+/** Add a stand-alone (disabled) contact to the end of the group; it takes the group's bodies. */
+ME_API void MdtContactGroupAppendContact(MdtContactGroupID g, MdtContactID c);
+/** Take a contact out of the group (it becomes a disabled stand-alone contact). */
+ME_API void MdtContactGroupRemoveContact(MdtContactGroupID g, MdtContactID c);
+/** A new contact at the end of the group (params reset), or NULL when the pool is full. */
+ME_API MdtContactID MdtContactGroupCreateContact(MdtContactGroupID g);
+ME_API void MdtContactGroupDestroyContact(MdtContactGroupID g, MdtContactID c);
+/** Whether the group's bodies are in the opposite order from its generator's models. */
+ME_API MeBool MdtContactGroupIsSwapped(MdtContactGroupID g);
+ME_API void MdtContactGroupSetSwapped(MdtContactGroupID g, MeBool swapped);
+ME_API int MdtContactGroupGetCount(MdtContactGroupID g);
+/** Sum of the contacts' normal forces in the last step, N. */
+ME_API MeReal MdtContactGroupGetNormalForce(MdtContactGroupID g);
+/** What created the group (the bridge stores its model pair). */
+ME_API void MdtContactGroupSetGenerator(MdtContactGroupID g, void *generator);
+ME_API void *MdtContactGroupGetGenerator(MdtContactGroupID g);
+
+#define MdtContactGroupEnable(g) MdtConstraintEnable(MdtContactGroupQuaConstraint(g))
+#define MdtContactGroupDisable(g) MdtConstraintDisable(MdtContactGroupQuaConstraint(g))
+#define MdtContactGroupIsEnabled(g) MdtConstraintIsEnabled(MdtContactGroupQuaConstraint(g))
+#define MdtContactGroupSetBodies(g, b1, b2) MdtConstraintSetBodies(MdtContactGroupQuaConstraint(g), (b1), (b2))
+#define MdtContactGroupGetBody(g, i) MdtConstraintGetBody(MdtContactGroupQuaConstraint(g), (i))
+#define MdtContactGroupGetWorld(g) MdtConstraintGetWorld(MdtContactGroupQuaConstraint(g))
+#define MdtContactGroupGetForce(g, i, f) MdtConstraintGetForce(MdtContactGroupQuaConstraint(g), (i), (f))
+#define MdtContactGroupGetTorque(g, i, t) MdtConstraintGetTorque(MdtContactGroupQuaConstraint(g), (i), (t))
+#define MdtContactGroupSetSortKey(g, k) MdtConstraintSetSortKey(MdtContactGroupQuaConstraint(g), (k))
+#define MdtContactGroupGetSortKey(g) MdtConstraintGetSortKey(MdtContactGroupQuaConstraint(g))
+#define MdtContactGroupSetUserData(g, d) MdtConstraintSetUserData(MdtContactGroupQuaConstraint(g), (d))
+#define MdtContactGroupGetUserData(g) MdtConstraintGetUserData(MdtContactGroupQuaConstraint(g))
+
+ME_EXTERN_C_END
+
+#endif /* MDT_CONTACT_GROUP_H */

@@ -1,0 +1,110 @@
+/* MdtContactParams.h -- the physical parameters of a contact: friction, restitution, softness,
+ * adhesion, slip and slide.
+ *
+ * Parameters are a plain struct, copied by value into each contact (the bridge copies them from its
+ * material table), so that an application may change them per contact. Defaults (Karma's): a
+ * frictionless contact (MdtContactTypeFrictionZero); friction model Box with an infinite force
+ * bound (no sliding once friction is switched on) and coefficient 0; restitution 0 above an approach
+ * speed of 0.001; softness 0; no adhesion, slip or slide.
+ *
+ * Friction models. Box: the friction force along a direction is bounded by a constant
+ * (SetPrimaryFriction, N), whatever the load. NormalForce: bounded by coefficient × normal force
+ * (Coulomb). Karma bounded it by the previous step's normal force; we solve the bound with the
+ * current normal force (the solver starts from the previous one), which gives the same answer in
+ * steady sliding and the right one on impact (docs/decisions.md).
+ *
+ * Setting softness, adhesion, slip, slide or a restitution above 0 also sets the matching option bit,
+ * as Karma did; the bits can be read and changed through `options`. */
+#ifndef MDT_CONTACT_PARAMS_H
+#define MDT_CONTACT_PARAMS_H
+
+#include "MdtTypes.h"
+
+ME_EXTERN_C_BEGIN
+
+/** Which friction directions a contact has. */
+typedef enum MdtContactType {
+    MdtContactTypeFrictionZero = 0, /**< normal only: 1 row */
+    MdtContactTypeFriction1D = 1,   /**< normal + primary direction: 2 rows */
+    MdtContactTypeFriction2D = 2    /**< normal + two directions: 3 rows */
+} MdtContactType;
+
+/** How a friction direction's force bound is found. */
+typedef enum MdtFrictionModel {
+    MdtFrictionModelBox = 0,        /**< constant bound (N) */
+    MdtFrictionModelNormalForce = 1 /**< coefficient × normal force */
+} MdtFrictionModel;
+
+/* Option bits (params.options). */
+#define MdtBclContactOptionUseDirection 0x1     /**< primary direction given by MdtContactSetDirection */
+#define MdtBclContactOptionBounce 0x2           /**< restitution */
+#define MdtBclContactOptionSoft 0x4             /**< softness */
+#define MdtBclContactOptionAdhesive 0x8         /**< may pull, up to max_adhesive_force */
+#define MdtBclContactOptionSlip1 0x10           /**< first-order slip along the primary direction */
+#define MdtBclContactOptionSlip2 0x20
+#define MdtBclContactOptionSlide1 0x40          /**< surface velocity (conveyor) along the primary */
+#define MdtBclContactOptionSlide2 0x80
+#define MdtBclContactOptionUseWorldVelocity 0x100 /**< the world at this contact moves (body 1 NULL) */
+
+typedef struct MdtContactParams {
+    MdtContactType type;
+    MeU32 options;
+    MdtFrictionModel model1, model2;   /**< primary, secondary direction */
+    MeReal friction1, friction2;       /**< Box model bounds, N (MEINFINITY: no sliding) */
+    MeReal frictioncoeff1, frictioncoeff2; /**< NormalForce model coefficients */
+    MeReal restitution;                /**< 0 ... 1 */
+    MeReal velThreshold;               /**< restitution only above this approach speed, m/s */
+    MeReal softness;                   /**< added to the normal row's ε (velocity per impulse, 1/kg) */
+    MeReal max_adhesive_force;         /**< N */
+    MeReal slip1, slip2;               /**< tangential compliance (velocity per impulse, 1/kg) */
+    MeReal slide1, slide2;             /**< surface velocity along the directions, m/s */
+} MdtContactParams;
+
+/** Parameters are addressed through a plain pointer (inside a contact or a material table). */
+typedef MdtContactParams *MdtContactParamsID;
+/* Karma's name for the struct. */
+typedef MdtContactParams MdtBclContactParams;
+
+ME_API void MdtContactParamsReset(MdtContactParamsID p);
+
+ME_API MdtContactType MdtContactParamsGetType(MdtContactParamsID p);
+ME_API MdtFrictionModel MdtContactParamsGetPrimaryFrictionModel(MdtContactParamsID p);
+ME_API MdtFrictionModel MdtContactParamsGetSecondaryFrictionModel(MdtContactParamsID p);
+ME_API MeReal MdtContactParamsGetRestitution(MdtContactParamsID p);
+ME_API MeReal MdtContactParamsGetRestitutionThreshold(MdtContactParamsID p);
+ME_API MeReal MdtContactParamsGetSoftness(MdtContactParamsID p);
+ME_API MeReal MdtContactParamsGetMaxAdhesiveForce(MdtContactParamsID p);
+ME_API MeReal MdtContactParamsGetPrimaryFriction(MdtContactParamsID p);
+ME_API MeReal MdtContactParamsGetPrimaryFrictionCoeffecient(MdtContactParamsID p);
+ME_API MeReal MdtContactParamsGetPrimarySlip(MdtContactParamsID p);
+ME_API MeReal MdtContactParamsGetPrimarySlide(MdtContactParamsID p);
+ME_API MeReal MdtContactParamsGetSecondaryFriction(MdtContactParamsID p);
+ME_API MeReal MdtContactParamsGetSecondaryFrictionCoeffecient(MdtContactParamsID p);
+ME_API MeReal MdtContactParamsGetSecondarySlip(MdtContactParamsID p);
+ME_API MeReal MdtContactParamsGetSecondarySlide(MdtContactParamsID p);
+
+ME_API void MdtContactParamsSetType(MdtContactParamsID p, MdtContactType t);
+ME_API void MdtContactParamsSetPrimaryFrictionModel(MdtContactParamsID p, MdtFrictionModel m);
+ME_API void MdtContactParamsSetSecondaryFrictionModel(MdtContactParamsID p, MdtFrictionModel m);
+/** Both directions. */
+ME_API void MdtContactParamsSetFrictionModel(MdtContactParamsID p, MdtFrictionModel m);
+ME_API void MdtContactParamsSetRestitution(MdtContactParamsID p, MeReal r);
+ME_API void MdtContactParamsSetRestitutionThreshold(MdtContactParamsID p, MeReal v);
+ME_API void MdtContactParamsSetSoftness(MdtContactParamsID p, MeReal s);
+ME_API void MdtContactParamsSetMaxAdhesiveForce(MdtContactParamsID p, MeReal f);
+ME_API void MdtContactParamsSetPrimaryFriction(MdtContactParamsID p, MeReal f);
+ME_API void MdtContactParamsSetPrimaryFrictionCoeffecient(MdtContactParamsID p, MeReal f);
+ME_API void MdtContactParamsSetPrimarySlip(MdtContactParamsID p, MeReal s);
+ME_API void MdtContactParamsSetPrimarySlide(MdtContactParamsID p, MeReal s);
+ME_API void MdtContactParamsSetSecondaryFriction(MdtContactParamsID p, MeReal f);
+ME_API void MdtContactParamsSetSecondaryFrictionCoeffecient(MdtContactParamsID p, MeReal f);
+ME_API void MdtContactParamsSetSecondarySlip(MdtContactParamsID p, MeReal s);
+ME_API void MdtContactParamsSetSecondarySlide(MdtContactParamsID p, MeReal s);
+/** Both directions. */
+ME_API void MdtContactParamsSetFriction(MdtContactParamsID p, MeReal f);
+ME_API void MdtContactParamsSetFrictionCoeffecient(MdtContactParamsID p, MeReal f);
+ME_API void MdtContactParamsSetSlip(MdtContactParamsID p, MeReal s);
+
+ME_EXTERN_C_END
+
+#endif /* MDT_CONTACT_PARAMS_H */

@@ -1,0 +1,358 @@
+/* contact.c -- MdtContact: its API and the rows of one contact (used alone and by contact groups).
+ *
+ * Rows of a contact at point p with unit normal n (body 0 → body 1), lever arms r0 = p − com0 and
+ * r1 = p − com1. The constraint velocity of a direction d is the velocity of body 1's material point
+ * relative to body 0's along d:  J v = d·(v1 + ω1 × r1 − v0 − ω0 × r0).
+ *   normal:   φ = −penetration (separation), impulse ≥ 0 (≥ −max adhesive force·h when adhesive);
+ *             when approaching faster than the restitution threshold, the target separating speed is
+ *             restitution × approach speed (and no position correction is added on top);
+ *             softness adds to the row's ε.
+ *   friction: t1 = the primary direction (given, or chosen perpendicular to n), t2 = n × t1; target
+ *             velocity = slide; ε += slip; bounds ±friction (Box) or |x| ≤ μ x_normal (NormalForce,
+ *             a friction link the solver applies with the current normal impulse).
+ * A world that moves under the contact (UseWorldVelocity) shifts each row's target by −d·v_world. */
+#include <string.h>
+
+#include <karma/MdtContact.h>
+#include <karma/MdtContactGroup.h>
+
+#include "../../me/check.h"
+#include "../world.h"
+#include "contact_internal.h"
+
+static void resetData(ContactData *d)
+{
+    memset(d, 0, sizeof *d);
+    MeVector3Set(d->normal, 0, 1, 0);
+    MeVector3Set(d->direction, 0, 1, 0);
+    MdtContactParamsReset(&d->params);
+}
+
+static void reset(MdtConstraint *c)
+{
+    ContactData *d = MDT_CONSTRAINT_DATA(c, ContactData);
+    MdtConstraint *group = d->group, *next = d->next;
+    resetData(d);
+    d->group = group; /* membership survives a reset */
+    d->next = next;
+}
+
+int MdtContactRowCount(const ContactData *d)
+{
+    switch (d->params.type) {
+    case MdtContactTypeFriction1D:
+        return 2;
+    case MdtContactTypeFriction2D:
+        return 3;
+    default:
+        return 1;
+    }
+}
+
+static int rowCount(const MdtConstraint *c) { return MdtContactRowCount(MDT_CONSTRAINT_DATA(c, const ContactData)); }
+
+/* Fills lin/ang of both halves for direction dir: J v = dir·(v1p − v0p). */
+static void directionRow(MdtRow *row, const MeVector3 dir, const MeVector3 r0, const MeVector3 r1)
+{
+    MeVector3Copy(row->lin1, dir);
+    MeVector3MultiplyScalar(row->lin0, dir, -1);
+    MeVector3Cross(row->ang1, r1, dir);
+    MeVector3Cross(row->ang0, r0, dir);
+    MeVector3Scale(row->ang0, -1);
+}
+
+static MeReal pointVelocityAlong(const MdtBody *b, const MeVector3 r, const MeVector3 dir)
+{
+    if (!b)
+        return 0;
+    MeVector3 wxr;
+    MeVector3Cross(wxr, b->velrot, r);
+    return MeVector3Dot(dir, b->vel) + MeVector3Dot(dir, wxr);
+}
+
+void MdtContactAddRows(const MdtConstraint *owner, MdtConstraint *contact, MdtRowWriter *w)
+{
+    ContactData *d = MDT_CONSTRAINT_DATA(contact, ContactData);
+    const MdtContactParams *p = &d->params;
+    const MdtBody *b0 = owner->body[0], *b1 = owner->body[1];
+    const MeReal h = w->h;
+    MeVector3 r0, r1 = {0, 0, 0};
+    MeVector3Set(r0, d->position[0] - b0->comTM[3][0], d->position[1] - b0->comTM[3][1],
+                 d->position[2] - b0->comTM[3][2]);
+    if (b1)
+        MeVector3Set(r1, d->position[0] - b1->comTM[3][0], d->position[1] - b1->comTM[3][1],
+                     d->position[2] - b1->comTM[3][2]);
+    const MeBool movingWorld = !b1 && (p->options & MdtBclContactOptionUseWorldVelocity);
+
+    /* normal */
+    MdtRow row;
+    MdtRowInit(&row);
+    directionRow(&row, d->normal, r0, r1);
+    row.lo = (p->options & MdtBclContactOptionAdhesive) ? -p->max_adhesive_force : 0;
+    row.hi = MEINFINITY;
+    row.epsilon = (p->options & MdtBclContactOptionSoft) ? p->softness : 0;
+    MeReal vn = pointVelocityAlong(b1, r1, d->normal) - pointVelocityAlong(b0, r0, d->normal);
+    if (movingWorld)
+        vn += MeVector3Dot(d->normal, d->worldVelocity);
+    if ((p->options & MdtBclContactOptionBounce) && -vn > p->velThreshold) {
+        /* Bounce: separate at e·|vn|; the position error is covered by the bounce itself. */
+        MeReal correction = w->gamma * d->penetration / h;
+        MeReal bounce = -p->restitution * vn;
+        row.velocity = bounce > correction ? bounce : correction;
+        row.gamma = 0;
+    } else {
+        row.error = -d->penetration;
+    }
+    if (movingWorld)
+        row.velocity -= MeVector3Dot(d->normal, d->worldVelocity);
+    int normalRow = MdtRowWriterAdd(w, &row);
+    if (!w->captured && normalRow >= 0)
+        w->x0[w->first + normalRow] = d->impulse[0];
+
+    if (p->type == MdtContactTypeFrictionZero)
+        return;
+
+    /* friction directions */
+    MeVector3 t[2];
+    MeBool haveDirection = MEFALSE;
+    if (p->options & MdtBclContactOptionUseDirection) {
+        MeReal dn = MeVector3Dot(d->direction, d->normal);
+        MeVector3Set(t[0], d->direction[0] - dn * d->normal[0], d->direction[1] - dn * d->normal[1],
+                     d->direction[2] - dn * d->normal[2]);
+        haveDirection = MeVector3NormalizeSafe(t[0]);
+    }
+    if (!haveDirection) {
+        MeVector3 other;
+        MeVector3PlaneSpace(d->normal, t[0], other);
+    }
+    MeVector3Cross(t[1], d->normal, t[0]);
+
+    const MdtFrictionModel model[2] = {p->model1, p->model2};
+    const MeReal bound[2] = {p->friction1, p->friction2};
+    const MeReal coefficient[2] = {p->frictioncoeff1, p->frictioncoeff2};
+    const MeReal slip[2] = {(p->options & MdtBclContactOptionSlip1) ? p->slip1 : 0,
+                            (p->options & MdtBclContactOptionSlip2) ? p->slip2 : 0};
+    const MeReal slide[2] = {(p->options & MdtBclContactOptionSlide1) ? p->slide1 : 0,
+                             (p->options & MdtBclContactOptionSlide2) ? p->slide2 : 0};
+    int directions = p->type == MdtContactTypeFriction2D ? 2 : 1;
+    for (int k = 0; k < directions; k++) {
+        MdtRowInit(&row);
+        directionRow(&row, t[k], r0, r1);
+        row.velocity = slide[k];
+        if (movingWorld)
+            row.velocity -= MeVector3Dot(t[k], d->worldVelocity);
+        row.epsilon = slip[k];
+        if (model[k] == MdtFrictionModelNormalForce) {
+            row.link = normalRow;
+            row.mu = coefficient[k];
+        } else {
+            row.lo = -bound[k];
+            row.hi = bound[k];
+        }
+        int local = MdtRowWriterAdd(w, &row);
+        if (!w->captured && local >= 0)
+            w->x0[w->first + local] = d->impulse[1 + k];
+    }
+}
+
+void MdtContactUnpack(MdtConstraint *contact, const MeReal *impulses, int rows, MeReal h)
+{
+    ContactData *d = MDT_CONSTRAINT_DATA(contact, ContactData);
+    for (int k = 0; k < 3; k++)
+        d->impulse[k] = k < rows ? impulses[k] : 0;
+    d->normalForce = rows > 0 ? impulses[0] / h : 0;
+}
+
+static void addRows(MdtConstraint *c, MdtRowWriter *w) { MdtContactAddRows(c, c, w); }
+
+static void unpack(MdtConstraint *c, const MeReal *impulses, int rows, MeReal h)
+{
+    MdtContactUnpack(c, impulses, rows, h);
+}
+
+const MdtConstraintClass MdtContactClass = {"Contact", 3, reset, rowCount, addRows, unpack, NULL};
+
+/* ---- API ---------------------------------------------------------------------------------- */
+static MdtConstraint *contactFromID(MdtContactID id, const char *function)
+{
+    return MdtConstraintFromIDOfType(id, MdtBclCONTACT, function);
+}
+
+#define CONTACT_OR_RETURN(c, d, id, ret)                                                             \
+    MdtConstraint *c = contactFromID((id), __func__);                                                \
+    if (!c)                                                                                          \
+        return ret;                                                                                  \
+    ContactData *d = MDT_CONSTRAINT_DATA(c, ContactData)
+
+MdtContactID MdtContactCreate(MdtWorldID w)
+{
+    MdtConstraint *c = MdtConstraintCreateInternal(w, MdtBclCONTACT, &MdtContactClass, __func__);
+    return c ? (MdtContactID)c->id : NULL;
+}
+
+void MdtContactReset(MdtContactID id)
+{
+    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
+    (void)d;
+    reset(c);
+}
+
+MdtConstraintID MdtContactQuaConstraint(MdtContactID c) { return (MdtConstraintID)c; }
+
+MdtContactID MdtConstraintDCastContact(MdtConstraintID c)
+{
+    return MdtConstraintGetType(c) == MdtBclCONTACT ? (MdtContactID)c : NULL;
+}
+
+void MdtContactSetPosition(MdtContactID id, MeReal x, MeReal y, MeReal z)
+{
+    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
+    ME_CHECK_FINITE3(x, y, z, ME_NOTHING);
+    MeVector3Set(d->position, x, y, z);
+}
+
+void MdtContactGetPosition(MdtContactID id, MeVector3 p)
+{
+    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(p, ME_NOTHING);
+    MeVector3Copy(p, d->position);
+}
+
+void MdtContactSetNormal(MdtContactID id, MeReal x, MeReal y, MeReal z)
+{
+    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
+    ME_CHECK_FINITE3(x, y, z, ME_NOTHING);
+    MeVector3 n = {x, y, z};
+    if (!MeVector3NormalizeSafe(n)) {
+        ME_REPORT(ME_ERR_ZERO_AXIS, "the normal (%g, %g, %g) has zero length; call ignored", (double)x, (double)y,
+                  (double)z);
+        return;
+    }
+    MeVector3Copy(d->normal, n);
+}
+
+void MdtContactGetNormal(MdtContactID id, MeVector3 n)
+{
+    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(n, ME_NOTHING);
+    MeVector3Copy(n, d->normal);
+}
+
+void MdtContactSetPenetration(MdtContactID id, MeReal p)
+{
+    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
+    ME_CHECK_FINITE(p, ME_NOTHING);
+    d->penetration = p;
+}
+
+MeReal MdtContactGetPenetration(MdtContactID id)
+{
+    CONTACT_OR_RETURN(c, d, id, 0);
+    return d->penetration;
+}
+
+void MdtContactSetDirection(MdtContactID id, MeReal x, MeReal y, MeReal z)
+{
+    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
+    ME_CHECK_FINITE3(x, y, z, ME_NOTHING);
+    MeVector3 t = {x, y, z};
+    if (!MeVector3NormalizeSafe(t)) {
+        ME_REPORT(ME_ERR_ZERO_AXIS, "the direction (%g, %g, %g) has zero length; call ignored", (double)x,
+                  (double)y, (double)z);
+        return;
+    }
+    MeVector3Copy(d->direction, t);
+    d->params.options |= MdtBclContactOptionUseDirection;
+}
+
+void MdtContactGetDirection(MdtContactID id, MeVector3 t)
+{
+    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(t, ME_NOTHING);
+    MeVector3Copy(t, d->direction);
+}
+
+void MdtContactSetWorldVelocity(MdtContactID id, MeReal vx, MeReal vy, MeReal vz)
+{
+    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
+    ME_CHECK_FINITE3(vx, vy, vz, ME_NOTHING);
+    MeVector3Set(d->worldVelocity, vx, vy, vz);
+    d->params.options |= MdtBclContactOptionUseWorldVelocity;
+}
+
+void MdtContactGetWorldVelocity(MdtContactID id, MeVector3 v)
+{
+    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(v, ME_NOTHING);
+    MeVector3Copy(v, d->worldVelocity);
+}
+
+MdtContactParamsID MdtContactGetParams(MdtContactID id)
+{
+    CONTACT_OR_RETURN(c, d, id, NULL);
+    return &d->params;
+}
+
+void MdtContactSetParams(MdtContactID id, const MdtContactParams *p)
+{
+    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(p, ME_NOTHING);
+    /* Keep the option bits this contact set itself (its own direction and world velocity). */
+    MeU32 own = d->params.options & (MdtBclContactOptionUseDirection | MdtBclContactOptionUseWorldVelocity);
+    d->params = *p;
+    d->params.options |= own;
+}
+
+void MdtContactGetRelativeVelocity(MdtContactID id, MeVector3 v)
+{
+    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(v, ME_NOTHING);
+    const MdtConstraint *owner = d->group ? d->group : c;
+    MeVector3 v0 = {0, 0, 0}, v1 = {0, 0, 0};
+    for (int i = 0; i < 2; i++) {
+        const MdtBody *b = owner->body[i];
+        MeVector3 *out = i == 0 ? &v0 : &v1;
+        if (!b) {
+            if (d->params.options & MdtBclContactOptionUseWorldVelocity)
+                MeVector3Copy(*out, d->worldVelocity);
+            continue;
+        }
+        MeVector3 r, wxr;
+        MeVector3Set(r, d->position[0] - b->comTM[3][0], d->position[1] - b->comTM[3][1],
+                     d->position[2] - b->comTM[3][2]);
+        MeVector3Cross(wxr, b->velrot, r);
+        MeVector3Add(*out, b->vel, wxr);
+    }
+    MeVector3Subtract(v, v1, v0);
+}
+
+MeReal MdtContactGetNormalForce(MdtContactID id)
+{
+    CONTACT_OR_RETURN(c, d, id, 0);
+    return d->normalForce;
+}
+
+void MdtContactSetImportance(MdtContactID id, MeReal importance)
+{
+    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
+    ME_CHECK_FINITE(importance, ME_NOTHING);
+    d->importance = importance;
+}
+
+MeReal MdtContactGetImportance(MdtContactID id)
+{
+    CONTACT_OR_RETURN(c, d, id, 0);
+    return d->importance;
+}
+
+MdtContactID MdtContactGetNext(MdtContactID id)
+{
+    CONTACT_OR_RETURN(c, d, id, NULL);
+    return d->next ? (MdtContactID)d->next->id : NULL;
+}
+
+MdtContactGroupID MdtContactGetContactGroup(MdtContactID id)
+{
+    CONTACT_OR_RETURN(c, d, id, NULL);
+    return d->group ? (MdtContactGroupID)d->group->id : NULL;
+}

@@ -1,0 +1,282 @@
+/* contact_group.c -- MdtContactGroup: the contacts of one body pair as one constraint.
+ *
+ * The group is what the partitioner and the packer see; its contacts (pool slots marked inGroup)
+ * are a singly linked list in the group's data, each writing its rows in list order with the
+ * group's bodies. After the solve each contact keeps its own impulses, so the next step starts
+ * from them (warm starting), and the group sums their normal forces. */
+#include <karma/MdtContactGroup.h>
+
+#include "../../me/check.h"
+#include "../world.h"
+#include "contact_internal.h"
+
+typedef struct GroupData {
+    MdtConstraint *first, *last;
+    int count;
+    MeBool swapped;
+    void *generator;
+    MeReal normalForce;
+} GroupData;
+MDT_CONSTRAINT_DATA_FITS(GroupData);
+
+static void destroyContacts(MdtConstraint *g)
+{
+    GroupData *d = MDT_CONSTRAINT_DATA(g, GroupData);
+    MdtConstraint *c = d->first;
+    while (c) {
+        MdtConstraint *next = MDT_CONSTRAINT_DATA(c, ContactData)->next;
+        MdtConstraintRelease(c);
+        c = next;
+    }
+    d->first = d->last = NULL;
+    d->count = 0;
+}
+
+static void reset(MdtConstraint *g)
+{
+    GroupData *d = MDT_CONSTRAINT_DATA(g, GroupData);
+    if (d->count)
+        destroyContacts(g);
+    d->first = d->last = NULL;
+    d->count = 0;
+    d->swapped = MEFALSE;
+    d->generator = NULL;
+    d->normalForce = 0;
+}
+
+static int rowCount(const MdtConstraint *g)
+{
+    int rows = 0;
+    for (const MdtConstraint *c = MDT_CONSTRAINT_DATA(g, const GroupData)->first; c;
+         c = MDT_CONSTRAINT_DATA(c, const ContactData)->next)
+        rows += MdtContactRowCount(MDT_CONSTRAINT_DATA(c, const ContactData));
+    return rows;
+}
+
+static void addRows(MdtConstraint *g, MdtRowWriter *w)
+{
+    for (MdtConstraint *c = MDT_CONSTRAINT_DATA(g, GroupData)->first; c; c = MDT_CONSTRAINT_DATA(c, ContactData)->next) {
+        c->body[0] = g->body[0];
+        c->body[1] = g->body[1];
+        c->rowStart = w->count;
+        MdtContactAddRows(g, c, w);
+        c->rowCount = w->count - c->rowStart;
+    }
+}
+
+static void unpack(MdtConstraint *g, const MeReal *impulses, int rows, MeReal h)
+{
+    GroupData *d = MDT_CONSTRAINT_DATA(g, GroupData);
+    int offset = 0;
+    d->normalForce = 0;
+    for (MdtConstraint *c = d->first; c && offset < rows; c = MDT_CONSTRAINT_DATA(c, ContactData)->next) {
+        MdtContactUnpack(c, impulses + offset, c->rowCount, h);
+        d->normalForce += MDT_CONSTRAINT_DATA(c, ContactData)->normalForce;
+        offset += c->rowCount;
+    }
+}
+
+static void destroy(MdtConstraint *g)
+{
+    MdtWorld *w = g->world;
+    destroyContacts(g);
+    if (w->contactGroupDestroyCB)
+        w->contactGroupDestroyCB((MdtContactGroupID)g->id, w->contactGroupDestroyData);
+}
+
+static const MdtConstraintClass groupClass = {"ContactGroup", 0, reset, rowCount, addRows, unpack, destroy};
+
+/* ---- API ---------------------------------------------------------------------------------- */
+#define GROUP_OR_RETURN(g, d, id, ret)                                                               \
+    MdtConstraint *g = MdtConstraintFromIDOfType((id), MdtBclCONTACTGROUP, __func__);                \
+    if (!g)                                                                                          \
+        return ret;                                                                                  \
+    GroupData *d = MDT_CONSTRAINT_DATA(g, GroupData)
+
+MdtContactGroupID MdtContactGroupCreate(MdtWorldID w)
+{
+    MdtConstraint *g = MdtConstraintCreateInternal(w, MdtBclCONTACTGROUP, &groupClass, __func__);
+    return g ? (MdtContactGroupID)g->id : NULL;
+}
+
+void MdtContactGroupDestroy(MdtContactGroupID id)
+{
+    MdtConstraintDestroy((MdtConstraintID)id);
+}
+
+void MdtContactGroupReset(MdtContactGroupID id)
+{
+    GROUP_OR_RETURN(g, d, id, ME_NOTHING);
+    (void)d;
+    reset(g);
+}
+
+MdtConstraintID MdtContactGroupQuaConstraint(MdtContactGroupID g) { return (MdtConstraintID)g; }
+
+MdtContactGroupID MdtConstraintDCastContactGroup(MdtConstraintID c)
+{
+    return MdtConstraintGetType(c) == MdtBclCONTACTGROUP ? (MdtContactGroupID)c : NULL;
+}
+
+MdtContactID MdtContactGroupGetFirstContact(MdtContactGroupID id)
+{
+    GROUP_OR_RETURN(g, d, id, NULL);
+    return d->first ? (MdtContactID)d->first->id : NULL;
+}
+
+MdtContactID MdtContactGroupGetNextContact(MdtContactGroupID id, MdtContactID cid)
+{
+    GROUP_OR_RETURN(g, d, id, NULL);
+    (void)d;
+    MdtConstraint *c = MdtConstraintFromIDOfType(cid, MdtBclCONTACT, __func__);
+    if (!c)
+        return NULL;
+    ContactData *cd = MDT_CONSTRAINT_DATA(c, ContactData);
+    if (cd->group != g) {
+        ME_REPORT(ME_ERR_BAD_STATE, "the contact is not a member of this group");
+        return NULL;
+    }
+    return cd->next ? (MdtContactID)cd->next->id : NULL;
+}
+
+static void append(MdtConstraint *g, GroupData *d, MdtConstraint *c)
+{
+    ContactData *cd = MDT_CONSTRAINT_DATA(c, ContactData);
+    if (c->enabled) {
+        c->enabled = MEFALSE;
+        c->world->enabledConstraintCount--;
+    }
+    MdtConstraintAttach(c, NULL, NULL); /* out of the bodies' lists: the group stands for it */
+    c->inGroup = METRUE;
+    c->body[0] = g->body[0];
+    c->body[1] = g->body[1];
+    cd->group = g;
+    cd->next = NULL;
+    if (d->last)
+        MDT_CONSTRAINT_DATA(d->last, ContactData)->next = c;
+    else
+        d->first = c;
+    d->last = c;
+    d->count++;
+}
+
+void MdtContactGroupAppendContact(MdtContactGroupID id, MdtContactID cid)
+{
+    GROUP_OR_RETURN(g, d, id, ME_NOTHING);
+    MdtConstraint *c = MdtConstraintFromIDOfType(cid, MdtBclCONTACT, __func__);
+    if (!c)
+        return;
+    if (MDT_CONSTRAINT_DATA(c, ContactData)->group) {
+        ME_REPORT(ME_ERR_BAD_STATE, "the contact already belongs to a group; remove it first");
+        return;
+    }
+    if (c->world != g->world) {
+        ME_REPORT(ME_ERR_FOREIGN_HANDLE, "the contact belongs to another world than the group");
+        return;
+    }
+    append(g, d, c);
+}
+
+/* Unlink c from g's list; returns METRUE if it was there. */
+static MeBool unlink(MdtConstraint *g, GroupData *d, MdtConstraint *c)
+{
+    MdtConstraint *prev = NULL;
+    for (MdtConstraint *it = d->first; it; prev = it, it = MDT_CONSTRAINT_DATA(it, ContactData)->next) {
+        if (it != c)
+            continue;
+        MdtConstraint *next = MDT_CONSTRAINT_DATA(c, ContactData)->next;
+        if (prev)
+            MDT_CONSTRAINT_DATA(prev, ContactData)->next = next;
+        else
+            d->first = next;
+        if (d->last == c)
+            d->last = prev;
+        d->count--;
+        ContactData *cd = MDT_CONSTRAINT_DATA(c, ContactData);
+        cd->group = NULL;
+        cd->next = NULL;
+        c->inGroup = MEFALSE;
+        (void)g;
+        return METRUE;
+    }
+    return MEFALSE;
+}
+
+void MdtContactGroupRemoveContact(MdtContactGroupID id, MdtContactID cid)
+{
+    GROUP_OR_RETURN(g, d, id, ME_NOTHING);
+    MdtConstraint *c = MdtConstraintFromIDOfType(cid, MdtBclCONTACT, __func__);
+    if (!c)
+        return;
+    if (!unlink(g, d, c)) {
+        ME_REPORT(ME_ERR_BAD_STATE, "the contact is not a member of this group");
+        return;
+    }
+    MdtBody *b0 = c->body[0], *b1 = c->body[1];
+    c->body[0] = c->body[1] = NULL;
+    MdtConstraintAttach(c, b0, b1); /* a stand-alone contact again, on the same bodies */
+}
+
+MdtContactID MdtContactGroupCreateContact(MdtContactGroupID id)
+{
+    GROUP_OR_RETURN(g, d, id, NULL);
+    MdtConstraint *c = MdtConstraintCreateInternal((MdtWorldID)g->world->id, MdtBclCONTACT, &MdtContactClass, __func__);
+    if (!c)
+        return NULL;
+    append(g, d, c);
+    return (MdtContactID)c->id;
+}
+
+void MdtContactGroupDestroyContact(MdtContactGroupID id, MdtContactID cid)
+{
+    GROUP_OR_RETURN(g, d, id, ME_NOTHING);
+    MdtConstraint *c = MdtConstraintFromIDOfType(cid, MdtBclCONTACT, __func__);
+    if (!c)
+        return;
+    if (g->world->locked) {
+        ME_REPORT(ME_ERR_WORLD_LOCKED, "contacts cannot be destroyed during the world's step");
+        return;
+    }
+    if (!unlink(g, d, c)) {
+        ME_REPORT(ME_ERR_BAD_STATE, "the contact is not a member of this group");
+        return;
+    }
+    c->body[0] = c->body[1] = NULL;
+    MdtConstraintRelease(c);
+}
+
+MeBool MdtContactGroupIsSwapped(MdtContactGroupID id)
+{
+    GROUP_OR_RETURN(g, d, id, MEFALSE);
+    return d->swapped;
+}
+
+void MdtContactGroupSetSwapped(MdtContactGroupID id, MeBool swapped)
+{
+    GROUP_OR_RETURN(g, d, id, ME_NOTHING);
+    d->swapped = swapped ? METRUE : MEFALSE;
+}
+
+int MdtContactGroupGetCount(MdtContactGroupID id)
+{
+    GROUP_OR_RETURN(g, d, id, 0);
+    return d->count;
+}
+
+MeReal MdtContactGroupGetNormalForce(MdtContactGroupID id)
+{
+    GROUP_OR_RETURN(g, d, id, 0);
+    return d->normalForce;
+}
+
+void MdtContactGroupSetGenerator(MdtContactGroupID id, void *generator)
+{
+    GROUP_OR_RETURN(g, d, id, ME_NOTHING);
+    d->generator = generator;
+}
+
+void *MdtContactGroupGetGenerator(MdtContactGroupID id)
+{
+    GROUP_OR_RETURN(g, d, id, NULL);
+    return d->generator;
+}
