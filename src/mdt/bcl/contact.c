@@ -4,9 +4,10 @@
  * r1 = p − com1. The constraint velocity of a direction d is the velocity of body 1's material point
  * relative to body 0's along d:  J v = d·(v1 + ω1 × r1 − v0 − ω0 × r0).
  *   normal:   φ = −penetration (separation), impulse ≥ 0 (≥ −max adhesive force·h when adhesive);
- *             when approaching faster than the restitution threshold, the target separating speed is
- *             restitution × approach speed (and no position correction is added on top);
- *             softness adds to the row's ε.
+ *             a separated contact (penetration < 0) may close its gap exactly (γ = 1: speculative);
+ *             when approaching faster than the restitution threshold and touching within the step,
+ *             the target separating speed is restitution × approach speed (no position correction
+ *             on top); softness adds to the row's ε.
  *   friction: t1 = the primary direction (given, or chosen perpendicular to n), t2 = n × t1; target
  *             velocity = slide; ε += slip; bounds ±friction (Box) or |x| ≤ μ x_normal (NormalForce,
  *             a friction link the solver applies with the current normal impulse).
@@ -94,14 +95,40 @@ void MdtContactAddRows(const MdtConstraint *owner, MdtConstraint *contact, MdtRo
     MeReal vn = pointVelocityAlong(b1, r1, d->normal) - pointVelocityAlong(b0, r0, d->normal);
     if (movingWorld)
         vn += MeVector3Dot(d->normal, d->worldVelocity);
-    if ((p->options & MdtBclContactOptionBounce) && -vn > p->velThreshold) {
-        /* Bounce: separate at e·|vn|; the position error is covered by the bounce itself. */
+    /* Restitution. A contact reported with a gap g that the bodies close within this step (at speed
+     * v = −vn) bounces now if g is small (the bounce comes at most g early), or else lands exactly
+     * this step and bounces at the start of the next with the remembered approach speed (at most
+     * one step late); the choice g < e v h / (1 + 2e) balances the two position errors. */
+    const MeBool bounces = (p->options & MdtBclContactOptionBounce) != 0;
+    const MeReal gap = -d->penetration;
+    MeReal approach = -vn;
+    if (bounces && d->pendingBounce > approach)
+        approach = d->pendingBounce;
+    d->pendingBounce = 0;
+    MeBool bounceNow = MEFALSE;
+    if (bounces && approach > p->velThreshold && approach * h >= gap) {
+        MeReal e = p->restitution;
+        if (gap <= 0 || gap * (1 + 2 * e) <= e * approach * h)
+            bounceNow = METRUE;
+        else if (!w->captured)
+            d->pendingBounce = approach; /* land first */
+    }
+    if (bounceNow) {
+        /* Separate at e·|vn|; a deeper penetration's correction wins if it asks for more. */
         MeReal correction = w->gamma * d->penetration / h;
-        MeReal bounce = -p->restitution * vn;
+        MeReal bounce = p->restitution * approach;
         row.velocity = bounce > correction ? bounce : correction;
         row.gamma = 0;
+        /* The world's softness would absorb part of the bounce (ε x of it); keep only a trace of it
+         * to regularise redundant contacts, so that the restitution law holds. */
+        row.noWorldEpsilon = METRUE;
+        row.epsilon += ME_R(1e-3) * w->epsilon0;
     } else {
         row.error = -d->penetration;
+        /* A separated contact (reported within the contact tolerance) may close its gap completely this
+         * step, no less: anything slower would stop the bodies before they touch. */
+        if (d->penetration < 0)
+            row.gamma = 1;
     }
     if (movingWorld)
         row.velocity -= MeVector3Dot(d->normal, d->worldVelocity);

@@ -16,6 +16,7 @@ typedef struct ContactData {
     MdtContactParams params;
     MeReal impulse[3];        /* last step's row impulses: normal, primary, secondary */
     MeReal normalForce;       /* last step, N */
+    MeReal pendingBounce;     /* approach speed of a contact that landed last step and bounces now */
     MdtConstraint *group;     /* owning group, or NULL */
     MdtConstraint *next;      /* next contact of the group */
 } ContactData;
