@@ -25,6 +25,7 @@ static MeMessageHandler currentHandler = MeDefaultMessageHandler;
 static void *currentUser = NULL;
 static MeMessageLevel minimumLevel = ME_LEVEL_INFO;
 static unsigned long counts[ME_ERR_CODE_LIMIT_];
+static unsigned long levelCounts[ME_LEVEL_FATAL + 1];
 static MeErrorCode lastCode = ME_ERR_NONE;
 
 static const MeErrorEntry *findEntry(MeErrorCode code)
@@ -74,9 +75,8 @@ unsigned long MeMessageGetCount(MeErrorCode code)
 unsigned long MeMessageGetTotalCount(MeMessageLevel level)
 {
     unsigned long total = 0;
-    for (int i = 0; i < ERROR_TABLE_SIZE; i++)
-        if (errorTable[i].level >= level)
-            total += counts[errorTable[i].code];
+    for (int l = (int)level; l <= ME_LEVEL_FATAL; l++)
+        total += levelCounts[l];
     return total;
 }
 
@@ -84,6 +84,8 @@ void MeMessageResetCounts(void)
 {
     for (int i = 0; i < ME_ERR_CODE_LIMIT_; i++)
         counts[i] = 0;
+    for (int l = 0; l <= ME_LEVEL_FATAL; l++)
+        levelCounts[l] = 0;
     lastCode = ME_ERR_NONE;
 }
 
@@ -107,6 +109,7 @@ static void dispatch(MeErrorCode code, MeMessageLevel level, const char *functio
     char text[512];
     if ((int)code >= 0 && code < ME_ERR_CODE_LIMIT_)
         counts[code]++;
+    levelCounts[level]++;
     if (level >= ME_LEVEL_WARNING)
         lastCode = code;
     if (level < minimumLevel && level != ME_LEVEL_FATAL)

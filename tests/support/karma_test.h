@@ -30,3 +30,31 @@ void karma_assert_near(double a, double b, double tol, const char *sa, const cha
 void karma_assert_rel(double a, double b, double tol, const char *sa, const char *sb, const char *file, int line);
 
 #endif
+
+#include <karma/MeMessage.h>
+
+/** Route Karma's messages to a quiet recorder (nothing printed below fatal) and clear the counts.
+ *  Use MeMessageGetCount(code) / karma_last_code() to assert what was reported. */
+void karma_capture_messages(void);
+/** Code of the most recent message of any level since karma_capture_messages. */
+MeErrorCode karma_last_code(void);
+/** Text of the most recent message. */
+const char *karma_last_text(void);
+/** Function name the most recent message named. */
+const char *karma_last_function(void);
+/** Total messages at warning level or above since karma_capture_messages. */
+unsigned long karma_warning_count(void);
+
+/** Assert that running `stmt` reports exactly one message with `code` (and no other warning). */
+#define assert_reports(code, stmt)                                                                   \
+    do {                                                                                             \
+        unsigned long before_ = MeMessageGetCount(code);                                             \
+        unsigned long warnings_ = karma_warning_count();                                             \
+        stmt;                                                                                        \
+        assert_int_equal(MeMessageGetCount(code) - before_, 1);                                      \
+        assert_int_equal(karma_warning_count() - warnings_, MeErrorCodeLevel(code) >= ME_LEVEL_WARNING ? 1 : 0); \
+    } while (0)
+
+/** FNV-1a hash of raw bytes, for state hashes. */
+uint64_t karma_hash_bytes(uint64_t hash, const void *data, size_t size);
+#define KARMA_HASH_INIT 1469598103934665603ull

@@ -1,0 +1,110 @@
+/* MdtWorld.h -- the dynamics world: its pools, its settings and its step.
+ *
+ * A world holds fixed pools of bodies and constraints, sized at creation, and the solver settings.
+ * Defaults follow Karma: gravity (0,0,0); epsilon 0.01 / massScale; gamma 0.2; 10 LCP iterations;
+ * auto-disable on, with thresholds velocity 0.02, angular velocity 0.001, acceleration 0.05,
+ * angular acceleration 0.05 (each compared with a squared magnitude, and scaled by lengthScale at
+ * creation) and an alive window of 0.2 s (see docs/conventions.md, decision D1).
+ *
+ * One MdtWorldStep(w, h) runs the stages of docs/step.md, each also callable on its own and each a
+ * timed section of the world's MeProfile: update partitions, auto-disable, pack, Kea solve,
+ * integrate, unpack forces. The step allocates nothing once its scratch chunks have grown. */
+#ifndef MDT_WORLD_H
+#define MDT_WORLD_H
+
+#include "MdtTypes.h"
+#include "MeProfile.h"
+
+ME_EXTERN_C_BEGIN
+
+/* A library built with the other precision does not have this symbol: link errors, not corruption. */
+#define MdtWorldCreate ME_PRECISION_SYMBOL(MdtWorldCreate)
+
+/** Create a world with room for `maxBodies` bodies and `maxConstraints` constraints (joints,
+ *  contact groups and contacts together). `lengthScale` is a typical object size and `massScale` a
+ *  typical mass (both > 0; 1 for SI scenes of human-sized objects): tolerances and defaults derive
+ *  from them. Returns NULL (and reports) on bad arguments or when memory runs out. */
+ME_API MdtWorldID MdtWorldCreate(unsigned int maxBodies, unsigned int maxConstraints, MeReal lengthScale,
+                                 MeReal massScale);
+/** Destroy the world with every body and constraint in it. Their IDs become invalid. */
+ME_API void MdtWorldDestroy(MdtWorldID w);
+/** Destroy every body and constraint but keep the world and its settings. */
+ME_API void MdtWorldReset(MdtWorldID w);
+/** Restore every setting to its default (keeps bodies and constraints). */
+ME_API void MdtWorldReCreate(MdtWorldID w);
+
+/** Advance every enabled body by `stepSize` seconds (> 0, finite). */
+ME_API void MdtWorldStep(MdtWorldID w, MeReal stepSize);
+
+/* ---- accessors ---------------------------------------------------------------------------- */
+ME_API int MdtWorldGetTotalBodies(MdtWorldID w);
+ME_API int MdtWorldGetEnabledBodies(MdtWorldID w);
+ME_API int MdtWorldGetTotalConstraints(MdtWorldID w);
+ME_API int MdtWorldGetEnabledConstraints(MdtWorldID w);
+ME_API int MdtWorldGetMaxBodies(MdtWorldID w);
+ME_API int MdtWorldGetMaxConstraints(MdtWorldID w);
+ME_API MeReal MdtWorldGetEpsilon(MdtWorldID w);
+ME_API MeReal MdtWorldGetGamma(MdtWorldID w);
+ME_API void MdtWorldGetGravity(MdtWorldID w, MeVector3 g);
+ME_API MeBool MdtWorldGetAutoDisable(MdtWorldID w);
+ME_API MeReal MdtWorldGetAutoDisableVelocityThreshold(MdtWorldID w);
+ME_API MeReal MdtWorldGetAutoDisableAngularVelocityThreshold(MdtWorldID w);
+ME_API MeReal MdtWorldGetAutoDisableAccelerationThreshold(MdtWorldID w);
+ME_API MeReal MdtWorldGetAutoDisableAngularAccelerationThreshold(MdtWorldID w);
+ME_API MeReal MdtWorldGetAutoDisableAliveTime(MdtWorldID w);
+ME_API int MdtWorldGetMaxLCPIterations(MdtWorldID w);
+/** Density giving a cube of side lengthScale the mass massScale. */
+ME_API MeReal MdtWorldGetDefaultDensity(MdtWorldID w);
+ME_API MeReal MdtWorldGetLengthScale(MdtWorldID w);
+ME_API MeReal MdtWorldGetMassScale(MdtWorldID w);
+/** The world's profile: one section per step stage (times of the last completed step). */
+ME_API const MeProfile *MdtWorldGetProfile(MdtWorldID w);
+ME_API MeProfile *MdtWorldGetProfilePtr(MdtWorldID w);
+
+/** Counts describing the last step and the pools, for tools and the viewer. */
+typedef struct MdtWorldCounters {
+    int bodies, enabledBodies, constraints, enabledConstraints;
+    int partitions;           /**< partitions simulated in the last step */
+    int rows;                 /**< constraint rows solved in the last step */
+    int bodyPoolHighWater, constraintPoolHighWater;
+    unsigned long steps;      /**< completed calls to MdtWorldStep */
+    MeReal time;              /**< simulated seconds */
+} MdtWorldCounters;
+ME_API void MdtWorldGetCounters(MdtWorldID w, MdtWorldCounters *counters);
+
+/* ---- mutators ----------------------------------------------------------------------------- */
+/** Gravity acceleration (m/s²); default (0,0,0). */
+ME_API void MdtWorldSetGravity(MdtWorldID w, MeReal gx, MeReal gy, MeReal gz);
+/** Constraint softness ε (> 0): added to the diagonal of the solver's matrix; larger is softer and
+ *  converges faster. Default 0.01 / massScale; sensible 1e-5 ... 0.1. */
+ME_API void MdtWorldSetEpsilon(MdtWorldID w, MeReal e);
+/** Error relaxation γ (0 < γ ≤ 1): share of a constraint's position error corrected per step.
+ *  Default 0.2. */
+ME_API void MdtWorldSetGamma(MdtWorldID w, MeReal g);
+/** γ chosen for a reference step and rescaled to the actual step: γ = aGamma·aTimeStep/aRefStep. */
+ME_API void MdtWorldSetGammaWithRefTimeStep(MdtWorldID w, MeReal aGamma, MeReal aRefStep, MeReal aTimeStep);
+/** Zero the force, torque and impulse accumulators of every body. */
+ME_API void MdtWorldResetForces(MdtWorldID w);
+ME_API void MdtWorldSetAutoDisable(MdtWorldID w, MeBool d);
+/** Squared-speed threshold (m²/s²) below which a body may be disabled. Default 0.02·lengthScale². */
+ME_API void MdtWorldSetAutoDisableVelocityThreshold(MdtWorldID w, MeReal vt);
+/** Squared angular speed threshold (rad²/s²). Default 0.001. */
+ME_API void MdtWorldSetAutoDisableAngularVelocityThreshold(MdtWorldID w, MeReal avt);
+/** Squared acceleration threshold (m²/s⁴). Default 0.05·lengthScale². */
+ME_API void MdtWorldSetAutoDisableAccelerationThreshold(MdtWorldID w, MeReal at);
+/** Squared angular acceleration threshold (rad²/s⁴). Default 0.05. */
+ME_API void MdtWorldSetAutoDisableAngularAccelerationThreshold(MdtWorldID w, MeReal aat);
+/** Seconds a body must have been enabled before it may be auto-disabled. Default 0.2. */
+ME_API void MdtWorldSetAutoDisableAliveTime(MdtWorldID w, MeReal aw);
+/** Iteration cap of the LCP solver (≥ 1). Default 10. */
+ME_API void MdtWorldSetMaxLCPIterations(MdtWorldID w, int mi);
+/** Called when the world enables a body (also by the partitioner) / disables one (auto-disable). */
+ME_API void MdtWorldSetBodyEnableCallback(MdtWorldID w, MdtBodyEnableCBPtr cb, void *userData);
+ME_API void MdtWorldSetBodyDisableCallback(MdtWorldID w, MdtBodyEnableCBPtr cb, void *userData);
+
+/** Whether `w` is a live world ID (no message). */
+ME_API MeBool MdtWorldIsValid(MdtWorldID w);
+
+ME_EXTERN_C_END
+
+#endif /* MDT_WORLD_H */

@@ -1,0 +1,53 @@
+/* autodisable.c -- MdtAutoDisable: put partitions at rest to sleep.
+ *
+ * Karma's rule (KARMA.md §5.1, decision D1): a partition is disabled only when every one of its
+ * bodies has squared speed, squared angular speed, squared acceleration and squared angular
+ * acceleration below the world's thresholds, and has been enabled for longer than the alive window
+ * (bodies woken by the partitioner this step are exempt from the window: a resting stack that a
+ * constraint touched goes back to sleep at once). Disabling calls the world's disable callback, which
+ * the bridge uses to freeze the collision models. Forces do not wake bodies; constraints do. */
+#include "world.h"
+
+static MeBool bodyIsAtRest(const MdtBody *b, const MdtAutoDisableParams *p)
+{
+    return MeVector3MagnitudeSqr(b->vel) < p->velocity && MeVector3MagnitudeSqr(b->velrot) < p->angularVelocity &&
+           MeVector3MagnitudeSqr(b->accel) < p->acceleration &&
+           MeVector3MagnitudeSqr(b->accelrot) < p->angularAcceleration &&
+           (b->enabledTime > p->aliveTime || b->enabledByPartitioner);
+}
+
+void MdtAutoDisable(MdtWorld *w)
+{
+    if (!w->autoDisable.enabled)
+        return;
+    MdtPartitionOutput *out = &w->partitions;
+    int kept = 0, keptPartitions = 0;
+    for (int p = 0; p < out->partitionCount; p++) {
+        int start = out->partitionStart[p], end = out->partitionStart[p + 1];
+        MeBool rest = METRUE;
+        for (int i = start; i < end && rest; i++)
+            rest = bodyIsAtRest(out->bodies[i], &w->autoDisable);
+        if (rest) {
+            for (int i = start; i < end; i++) {
+                MdtBody *b = out->bodies[i];
+                MeVector3Set(b->vel, 0, 0, 0);
+                MeVector3Set(b->velrot, 0, 0, 0);
+                MdtBodySetEnabledInternal(b, MEFALSE);
+                b->stepIndex = -1;
+            }
+            continue;
+        }
+        /* Compact the surviving partitions in place (order preserved). */
+        out->partitionStart[keptPartitions] = kept;
+        for (int i = start; i < end; i++) {
+            MdtBody *b = out->bodies[i];
+            b->stepIndex = kept;
+            b->partition = keptPartitions;
+            out->bodies[kept++] = b;
+        }
+        keptPartitions++;
+    }
+    out->partitionStart[keptPartitions] = kept;
+    out->bodyCount = kept;
+    out->partitionCount = keptPartitions;
+}

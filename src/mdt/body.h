@@ -1,0 +1,76 @@
+/* body.h -- the rigid body record (internal).
+ *
+ * State is kept for the centre-of-mass (COM) frame, which is what the integrator advances:
+ * comTM (rotation = the body's, translation = COM in world), linear velocity of the COM and world
+ * angular velocity. The body frame the application sees (bodyTM) differs from the COM frame only by
+ * the fixed offset `comOffset` (body frame) and is recomputed whenever the state changes.
+ * Quaternion q (w,x,y,z) is the authoritative orientation; both TMs derive from it. */
+#ifndef MDT_BODY_INTERNAL_H
+#define MDT_BODY_INTERNAL_H
+
+#include <stdint.h>
+
+#include <karma/MdtBody.h>
+#include <karma/MeMath.h>
+
+struct MdtWorld;
+
+typedef struct MdtBody {
+    uintptr_t id;            /* this body's own checked ID */
+    struct MdtWorld *world;
+    int slot;                /* index in the world's body pool */
+
+    /* state */
+    MeMatrix4 bodyTM;        /* body frame; renderers hold a pointer to this */
+    MeMatrix4 comTM;         /* centre-of-mass frame */
+    MeVector4 q;             /* orientation (w,x,y,z), unit */
+    MeVector3 vel;           /* COM velocity, world */
+    MeVector3 velrot;        /* angular velocity, world */
+    MeVector3 accel;         /* over the last step (read only) */
+    MeVector3 accelrot;
+
+    /* mass properties */
+    MeReal mass, invMass;
+    MeMatrix3 inertia;       /* about the COM, body frame, as set by the application */
+    MeMatrix3 invInertia;    /* inverse of the inertia in use (full or spherical), body frame */
+    MeVector3 comOffset;     /* COM in the body frame */
+    MeBool nonSpherical;     /* use the full tensor (else the mean of its diagonal) */
+    MeBool coriolis;         /* include the gyroscopic term */
+
+    /* settings */
+    MeReal linearDamping, angularDamping;
+    MeVector3 fastSpinAxis;  /* world frame, unit */
+    MeBool useFastSpin;
+    MeI32 sortKey;
+    void *userData;
+
+    /* accumulators, cleared by each step that simulates the body */
+    MeVector3 force, torque;
+    MeVector3 impulse, angularImpulse;
+
+    /* bookkeeping for the step */
+    MeBool enabled;
+    MeBool enabledByPartitioner; /* woken by a constraint this step: exempt from auto-disable */
+    MeReal enabledTime;          /* seconds simulated since last enabled */
+    int partition;               /* index in the last step's partitions, or -1 */
+    int stepIndex;               /* position in the step's body arrays, or -1 */
+    MeVector3 velStar, velrotStar; /* velocities with external forces applied, before constraints */
+    MeVector3 stepStartCom;        /* pose at the start of the step, restored if the step fails */
+    MeVector4 stepStartQ;
+
+    /* constraints attached to this body: a singly linked list through the constraints (later) */
+    void *firstConstraint;
+} MdtBody;
+
+/* Resolve an ID or report in the caller's name; NULL when invalid. */
+MdtBody *MdtBodyFromID(MdtBodyID id, const char *function);
+/* Recompute bodyTM and comTM from q, the COM position and the offset. */
+void MdtBodyUpdateTransforms(MdtBody *b, const MeVector3 comPosition);
+/* World-frame inverse inertia tensor (symmetric) of the body's current orientation. */
+void MdtBodyWorldInverseInertia(const MdtBody *b, MeMatrix3 out);
+/* World-frame inertia tensor. */
+void MdtBodyWorldInertia(const MdtBody *b, MeMatrix3 out);
+/* Enable or disable, calling the world's callbacks (used by the partitioner and auto-disable). */
+void MdtBodySetEnabledInternal(MdtBody *b, MeBool enabled);
+
+#endif /* MDT_BODY_INTERNAL_H */

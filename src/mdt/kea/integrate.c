@@ -1,0 +1,99 @@
+/* integrate.c -- MdtKeaIntegrate: advance the bodies of the step by one time step.
+ *
+ * Karma's integrator is first order, velocities first and then positions ("symplectic Euler"):
+ *
+ *     v⁺ = v* + Δv_c          x⁺ = x + h v⁺          q⁺ = q + (h/2) (0, ω⁺) q, renormalised
+ *
+ * where v* (see predict.c) already holds the external forces, impulses and damping, and Δv_c is the
+ * velocity change from the constraint impulses the solver found. A fast-spin axis (wheels) splits ω
+ * into its component along the axis, which is integrated exactly (a rotation by |ω_a| h), and the
+ * rest, integrated to first order: a wheel spinning at 100 rad/s then turns at its true rate, which
+ * the first-order update alone would not.
+ *
+ * After integration each partition's state is checked: a NaN or infinity is reported
+ * (ME_ERR_NONFINITE_STATE) and the partition's bodies are put back to their pose at the start of the
+ * step, stopped and disabled, so that the error cannot spread to other partitions. */
+#include "../../me/check.h"
+#include "../world.h"
+#include "kea_integrate.h"
+
+/* Orientation update: first order, with the fast-spin component (if any) integrated exactly. */
+static void integrateOrientation(MdtBody *b, MeReal h)
+{
+    MeVector3 w;
+    MeVector3Copy(w, b->velrot);
+    if (b->useFastSpin) {
+        MeVector3 spin;
+        MeVector3MultiplyScalar(spin, b->fastSpinAxis, MeVector3Dot(w, b->fastSpinAxis));
+        MeVector3Subtract(w, w, spin);
+        MeQuaternionFiniteRotation(b->q, spin, h);
+    }
+    MeVector4 dq;
+    MeQuaternionWtoDQ(dq, b->q, w); /* dq = ½ (0, ω) q */
+    for (int k = 0; k < 4; k++)
+        b->q[k] += h * dq[k];
+    MeQuaternionNormalize(b->q);
+}
+
+static MeBool stateIsFinite(const MdtBody *b)
+{
+    MeBool ok = METRUE;
+    for (int k = 0; k < 3; k++)
+        ok &= ME_IS_FINITE(b->comTM[3][k]) && ME_IS_FINITE(b->vel[k]) && ME_IS_FINITE(b->velrot[k]);
+    for (int k = 0; k < 4; k++)
+        ok &= ME_IS_FINITE(b->q[k]);
+    return ok;
+}
+
+static void integrateBody(MdtBody *b, const MeReal *dv, const MeReal *dw, MeReal h)
+{
+    MeVector3 oldVel, oldVelrot, com;
+    MeVector3Copy(oldVel, b->vel);
+    MeVector3Copy(oldVelrot, b->velrot);
+    MeVector3Add(b->vel, b->velStar, dv);
+    MeVector3Add(b->velrot, b->velrotStar, dw);
+    for (int k = 0; k < 3; k++) {
+        b->accel[k] = (b->vel[k] - oldVel[k]) / h;
+        b->accelrot[k] = (b->velrot[k] - oldVelrot[k]) / h;
+        com[k] = b->comTM[3][k] + h * b->vel[k];
+    }
+    integrateOrientation(b, h);
+    MdtBodyUpdateTransforms(b, com);
+    b->enabledTime += h;
+}
+
+static void stopAndDisable(MdtBody *b)
+{
+    MeVector4Copy(b->q, b->stepStartQ);
+    MdtBodyUpdateTransforms(b, b->stepStartCom);
+    MeVector3Set(b->vel, 0, 0, 0);
+    MeVector3Set(b->velrot, 0, 0, 0);
+    MeVector3Set(b->accel, 0, 0, 0);
+    MeVector3Set(b->accelrot, 0, 0, 0);
+    MdtBodySetEnabledInternal(b, MEFALSE);
+}
+
+void MdtKeaIntegratePartitions(MdtWorld *w, const MeReal *deltaVelocities)
+{
+    const MdtPartitionOutput *out = &w->partitions;
+    static const MeReal zero[3] = {0, 0, 0};
+    for (int p = 0; p < out->partitionCount; p++) {
+        int start = out->partitionStart[p], end = out->partitionStart[p + 1];
+        MeBool finite = METRUE;
+        for (int i = start; i < end; i++) {
+            MdtBody *b = out->bodies[i];
+            const MeReal *dv = deltaVelocities ? deltaVelocities + 6 * (size_t)i : zero;
+            const MeReal *dw = deltaVelocities ? deltaVelocities + 6 * (size_t)i + 3 : zero;
+            integrateBody(b, dv, dw, w->stepSize);
+            finite &= stateIsFinite(b);
+        }
+        if (finite)
+            continue;
+        ME_REPORT_IN("MdtWorldStep", ME_ERR_NONFINITE_STATE,
+                     "partition %d (%d bodies) produced a NaN or infinite state; its bodies were put back to "
+                     "their pose at the start of the step, stopped and disabled",
+                     p, end - start);
+        for (int i = start; i < end; i++)
+            stopAndDisable(out->bodies[i]);
+    }
+}

@@ -1,0 +1,404 @@
+/* world.c -- creating, configuring and destroying a dynamics world (see MdtWorld.h). */
+#include <string.h>
+
+#include <karma/MeMemory.h>
+
+#include "../me/check.h"
+#include "../me/handle.h"
+#include "world.h"
+
+/* Karma's defaults (KARMA.md §5.1, decision D1 for auto-disable). */
+#define DEFAULT_EPSILON ME_R(0.01)
+#define DEFAULT_GAMMA ME_R(0.2)
+#define DEFAULT_LCP_ITERATIONS 10
+#define DEFAULT_AD_VELOCITY ME_R(0.02)
+#define DEFAULT_AD_ANGULAR_VELOCITY ME_R(0.001)
+#define DEFAULT_AD_ACCELERATION ME_R(0.05)
+#define DEFAULT_AD_ANGULAR_ACCELERATION ME_R(0.05)
+#define DEFAULT_AD_ALIVE_TIME ME_R(0.2)
+
+/* Room reserved in a constraint slot; constraints (a later layer) must fit in it. */
+#define CONSTRAINT_SLOT_BYTES 512
+
+MdtWorld *MdtWorldFromID(MdtWorldID id, const char *function)
+{
+    return MeHandleResolveOwner((uintptr_t)id, ME_HANDLE_WORLD, function, "w");
+}
+
+#define WORLD_OR_RETURN(w, id, ret)                                                                  \
+    MdtWorld *w = MdtWorldFromID((id), __func__);                                                    \
+    if (!w)                                                                                          \
+    return ret
+
+void MdtWorldSetDefaults(MdtWorld *w)
+{
+    MeReal l2 = w->lengthScale * w->lengthScale;
+    w->gravity[0] = w->gravity[1] = w->gravity[2] = 0;
+    w->epsilon = DEFAULT_EPSILON / w->massScale;
+    w->gamma = DEFAULT_GAMMA;
+    w->maxLCPIterations = DEFAULT_LCP_ITERATIONS;
+    w->autoDisable.enabled = METRUE;
+    w->autoDisable.velocity = DEFAULT_AD_VELOCITY * l2;
+    w->autoDisable.angularVelocity = DEFAULT_AD_ANGULAR_VELOCITY;
+    w->autoDisable.acceleration = DEFAULT_AD_ACCELERATION * l2;
+    w->autoDisable.angularAcceleration = DEFAULT_AD_ANGULAR_ACCELERATION;
+    w->autoDisable.aliveTime = DEFAULT_AD_ALIVE_TIME;
+}
+
+MdtWorldID MdtWorldCreate(unsigned int maxBodies, unsigned int maxConstraints, MeReal lengthScale, MeReal massScale)
+{
+    if (!(ME_IS_FINITE(lengthScale) && lengthScale > 0) || !(ME_IS_FINITE(massScale) && massScale > 0)) {
+        ME_REPORT(ME_ERR_SCALE_NOT_POSITIVE, "lengthScale (%g) and massScale (%g) must be positive and finite",
+                  (double)lengthScale, (double)massScale);
+        return NULL;
+    }
+    if (maxBodies > (unsigned int)ME_HANDLE_MAX_INDEX || maxConstraints > (unsigned int)ME_HANDLE_MAX_INDEX) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "maxBodies (%u) and maxConstraints (%u) may be at most %ld", maxBodies,
+                  maxConstraints, (long)ME_HANDLE_MAX_INDEX);
+        return NULL;
+    }
+    MdtWorld *w = MeMemoryCreateZeroed(sizeof *w);
+    if (!w)
+        return NULL;
+    w->maxBodies = maxBodies;
+    w->maxConstraints = maxConstraints;
+    w->lengthScale = lengthScale;
+    w->massScale = massScale;
+    if (!MePoolInit(&w->bodyPool, (int)maxBodies, sizeof(MdtBody), 16, "maxBodies", 0) ||
+        !MePoolInit(&w->constraintPool, (int)maxConstraints, CONSTRAINT_SLOT_BYTES, 16, "maxConstraints", 0)) {
+        MePoolDestroy(&w->bodyPool);
+        MeMemoryDestroy(w);
+        return NULL;
+    }
+    w->ownerSlot = MeHandleRegisterOwner(w, ME_HANDLE_WORLD, __func__);
+    if (!w->ownerSlot) {
+        MePoolDestroy(&w->bodyPool);
+        MePoolDestroy(&w->constraintPool);
+        MeMemoryDestroy(w);
+        return NULL;
+    }
+    MeHandleSetOwnerPool(w->ownerSlot, ME_HANDLE_BODY, &w->bodyPool);
+    MeHandleSetOwnerPool(w->ownerSlot, ME_HANDLE_CONSTRAINT, &w->constraintPool);
+    w->id = MeHandleOfOwner(w->ownerSlot);
+    MeChunkInit(&w->partitionChunk, "partition output");
+    MeChunkInit(&w->keaChunk, "Kea workspace");
+    MeProfileInit(&w->profile);
+    MdtWorldSetDefaults(w);
+    return (MdtWorldID)w->id;
+}
+
+void MdtWorldDestroy(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    if (w->locked) {
+        ME_REPORT(ME_ERR_WORLD_LOCKED, "a world cannot be destroyed from inside its own step");
+        return;
+    }
+    MeHandleUnregisterOwner(w->ownerSlot);
+    MeChunkTerm(&w->partitionChunk);
+    MeChunkTerm(&w->keaChunk);
+    MePoolDestroy(&w->bodyPool);
+    MePoolDestroy(&w->constraintPool);
+    MeMemoryDestroy(w);
+}
+
+void MdtWorldReset(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    if (w->locked) {
+        ME_REPORT(ME_ERR_WORLD_LOCKED, "a world cannot be reset from inside its own step");
+        return;
+    }
+    MePoolDeset(&w->bodyPool);
+    MePoolDeset(&w->constraintPool);
+    w->enabledBodyCount = 0;
+    w->partitions.bodyCount = 0;
+    w->partitions.partitionCount = 0;
+}
+
+void MdtWorldReCreate(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    MdtWorldSetDefaults(w);
+}
+
+MeBool MdtWorldIsValid(MdtWorldID id) { return MeHandleIsValid((uintptr_t)id, ME_HANDLE_WORLD); }
+
+/* ---- accessors ---------------------------------------------------------------------------- */
+int MdtWorldGetTotalBodies(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return MePoolGetUsed(&w->bodyPool);
+}
+
+int MdtWorldGetEnabledBodies(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return w->enabledBodyCount;
+}
+
+int MdtWorldGetTotalConstraints(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return MePoolGetUsed(&w->constraintPool);
+}
+
+int MdtWorldGetEnabledConstraints(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return 0; /* constraints arrive with the constraint layer */
+}
+
+int MdtWorldGetMaxBodies(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return (int)w->maxBodies;
+}
+
+int MdtWorldGetMaxConstraints(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return (int)w->maxConstraints;
+}
+
+MeReal MdtWorldGetEpsilon(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return w->epsilon;
+}
+
+MeReal MdtWorldGetGamma(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return w->gamma;
+}
+
+void MdtWorldGetGravity(MdtWorldID id, MeVector3 g)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(g, ME_NOTHING);
+    MeVector3Copy(g, w->gravity);
+}
+
+MeBool MdtWorldGetAutoDisable(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, MEFALSE);
+    return w->autoDisable.enabled;
+}
+
+MeReal MdtWorldGetAutoDisableVelocityThreshold(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return w->autoDisable.velocity;
+}
+
+MeReal MdtWorldGetAutoDisableAngularVelocityThreshold(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return w->autoDisable.angularVelocity;
+}
+
+MeReal MdtWorldGetAutoDisableAccelerationThreshold(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return w->autoDisable.acceleration;
+}
+
+MeReal MdtWorldGetAutoDisableAngularAccelerationThreshold(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return w->autoDisable.angularAcceleration;
+}
+
+MeReal MdtWorldGetAutoDisableAliveTime(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return w->autoDisable.aliveTime;
+}
+
+int MdtWorldGetMaxLCPIterations(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return w->maxLCPIterations;
+}
+
+MeReal MdtWorldGetDefaultDensity(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return w->massScale / (w->lengthScale * w->lengthScale * w->lengthScale);
+}
+
+MeReal MdtWorldGetLengthScale(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return w->lengthScale;
+}
+
+MeReal MdtWorldGetMassScale(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return w->massScale;
+}
+
+const MeProfile *MdtWorldGetProfile(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, NULL);
+    return &w->profile;
+}
+
+MeProfile *MdtWorldGetProfilePtr(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, NULL);
+    return &w->profile;
+}
+
+void MdtWorldGetCounters(MdtWorldID id, MdtWorldCounters *c)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(c, ME_NOTHING);
+    memset(c, 0, sizeof *c);
+    c->bodies = MePoolGetUsed(&w->bodyPool);
+    c->enabledBodies = w->enabledBodyCount;
+    c->constraints = MePoolGetUsed(&w->constraintPool);
+    c->enabledConstraints = 0;
+    c->partitions = w->partitions.partitionCount;
+    c->rows = w->lastRowCount;
+    c->bodyPoolHighWater = MePoolGetHighWater(&w->bodyPool);
+    c->constraintPoolHighWater = MePoolGetHighWater(&w->constraintPool);
+    c->steps = w->steps;
+    c->time = w->time;
+}
+
+/* ---- mutators ----------------------------------------------------------------------------- */
+void MdtWorldSetGravity(MdtWorldID id, MeReal gx, MeReal gy, MeReal gz)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    ME_CHECK_FINITE3(gx, gy, gz, ME_NOTHING);
+    MeVector3Set(w->gravity, gx, gy, gz);
+}
+
+void MdtWorldSetEpsilon(MdtWorldID id, MeReal e)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    ME_CHECK_FINITE(e, ME_NOTHING);
+    if (!(e > 0)) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'e' (%g) must be positive (typical 1e-5 ... 0.1)", (double)e);
+        return;
+    }
+    w->epsilon = e;
+}
+
+void MdtWorldSetGamma(MdtWorldID id, MeReal g)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    ME_CHECK_FINITE(g, ME_NOTHING);
+    if (!(g >= 0 && g <= 1)) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'g' (%g) must lie in [0, 1] (typical 0.1 ... 0.8)", (double)g);
+        return;
+    }
+    w->gamma = g;
+}
+
+void MdtWorldSetGammaWithRefTimeStep(MdtWorldID id, MeReal aGamma, MeReal aRefStep, MeReal aTimeStep)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    ME_CHECK_FINITE3(aGamma, aRefStep, aTimeStep, ME_NOTHING);
+    if (!(aRefStep > 0 && aTimeStep > 0)) {
+        ME_REPORT(ME_ERR_STEP_SIZE, "aRefStep (%g) and aTimeStep (%g) must be positive", (double)aRefStep,
+                  (double)aTimeStep);
+        return;
+    }
+    MeReal g = aGamma * aTimeStep / aRefStep;
+    if (!(g >= 0 && g <= 1)) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "the resulting gamma (%g) must lie in [0, 1]", (double)g);
+        return;
+    }
+    w->gamma = g;
+}
+
+void MdtWorldResetForces(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    for (int i = 0; i < w->bodyPool.capacity; i++) {
+        if (!MePoolSlotIsLive(&w->bodyPool, i))
+            continue;
+        MdtBody *b = MePoolSlot(&w->bodyPool, i);
+        MeVector3Set(b->force, 0, 0, 0);
+        MeVector3Set(b->torque, 0, 0, 0);
+        MeVector3Set(b->impulse, 0, 0, 0);
+        MeVector3Set(b->angularImpulse, 0, 0, 0);
+    }
+}
+
+void MdtWorldSetAutoDisable(MdtWorldID id, MeBool d)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    w->autoDisable.enabled = d ? METRUE : MEFALSE;
+}
+
+/* All auto-disable thresholds share one check: finite and not negative. */
+static void setThreshold(MdtWorldID id, MeReal value, size_t offset, const char *function)
+{
+    MdtWorld *w = MdtWorldFromID(id, function);
+    if (!w)
+        return;
+    if (!ME_IS_FINITE(value)) {
+        ME_REPORT_IN(function, ME_ERR_NONFINITE_ARGUMENT, "the threshold is %g (not finite); call ignored",
+                     (double)value);
+        return;
+    }
+    if (value < 0) {
+        ME_REPORT_IN(function, ME_ERR_NEGATIVE_VALUE, "the threshold (%g) must not be negative", (double)value);
+        return;
+    }
+    *(MeReal *)((unsigned char *)&w->autoDisable + offset) = value;
+}
+
+void MdtWorldSetAutoDisableVelocityThreshold(MdtWorldID id, MeReal vt)
+{
+    setThreshold(id, vt, offsetof(MdtAutoDisableParams, velocity), __func__);
+}
+
+void MdtWorldSetAutoDisableAngularVelocityThreshold(MdtWorldID id, MeReal avt)
+{
+    setThreshold(id, avt, offsetof(MdtAutoDisableParams, angularVelocity), __func__);
+}
+
+void MdtWorldSetAutoDisableAccelerationThreshold(MdtWorldID id, MeReal at)
+{
+    setThreshold(id, at, offsetof(MdtAutoDisableParams, acceleration), __func__);
+}
+
+void MdtWorldSetAutoDisableAngularAccelerationThreshold(MdtWorldID id, MeReal aat)
+{
+    setThreshold(id, aat, offsetof(MdtAutoDisableParams, angularAcceleration), __func__);
+}
+
+void MdtWorldSetAutoDisableAliveTime(MdtWorldID id, MeReal aw)
+{
+    setThreshold(id, aw, offsetof(MdtAutoDisableParams, aliveTime), __func__);
+}
+
+void MdtWorldSetMaxLCPIterations(MdtWorldID id, int mi)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    if (mi < 1) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'mi' (%d) must be at least 1", mi);
+        return;
+    }
+    w->maxLCPIterations = mi;
+}
+
+void MdtWorldSetBodyEnableCallback(MdtWorldID id, MdtBodyEnableCBPtr cb, void *userData)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    w->bodyEnableCB = cb;
+    w->bodyEnableData = userData;
+}
+
+void MdtWorldSetBodyDisableCallback(MdtWorldID id, MdtBodyEnableCBPtr cb, void *userData)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    w->bodyDisableCB = cb;
+    w->bodyDisableData = userData;
+}
