@@ -457,19 +457,17 @@ static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
     for (j = 0; j < n; ++j)
         if (w->cand[j] != ME_R(0.0))
             w->nonzero[nz++] = j;
-    for (i = 0; i < n; ++i) {
-        MeReal lo, hi;
+    for (i = 0; i < n; ++i) { /* natural-map test at the candidate's own bounds, every row alike */
+        const MeReal *Ai = lcp->A + (size_t)i * (size_t)n;
+        const MeReal d = Ai[i] > ME_R(0.0) ? Ai[i] : ME_R(1.0);
+        MeReal lo, hi, wi = -lcp->r[i];
         KeaDenseBounds(lcp, w->cand, i, &lo, &hi);
         if (w->cand[i] < lo - tolX || w->cand[i] > hi + tolX)
             return 0;
-        if (w->state[i] != KEA_FREE && w->lo[i] < w->hi[i]) {
-            const MeReal *Ai = lcp->A + (size_t)i * (size_t)n;
-            MeReal wi = -lcp->r[i];
-            for (j = 0; j < nz; ++j)
-                wi += Ai[w->nonzero[j]] * w->cand[w->nonzero[j]];
-            if (w->state[i] == KEA_AT_LO ? wi < -tolW : wi > tolW)
-                return 0;
-        }
+        for (j = 0; j < nz; ++j)
+            wi += Ai[w->nonzero[j]] * w->cand[w->nonzero[j]];
+        if (d * KeaFabs(KeaClamp(w->cand[i], lo, hi) - KeaClamp(w->cand[i] - wi / d, lo, hi)) > tolW)
+            return 0;
     }
     for (i = 0; i < n; ++i) {
         KeaDenseBounds(lcp, w->cand, i, &w->lo[i], &w->hi[i]);
@@ -534,7 +532,7 @@ KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses,
             polished = 1;
             break;
         }
-        if (moved <= KEA_DIRECT_TOL * ME_R(1e3) * scale)
+        if (moved <= KEA_DIRECT_TOL * ME_R(10.0) * scale)
             break;
         if (passes >= maxPasses) {
             status = KeaStatusFrictionPasses;

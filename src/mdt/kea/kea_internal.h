@@ -1,6 +1,6 @@
 /* kea_internal.h -- pieces shared by Kea's source files (not part of any API).
  *
- * - scalar wrappers (float or double maths without promotion),
+ * - scalar helpers (MeMath's wrappers under short names; clamp, finite-bound test),
  * - the workspace arena: a bump allocator over the caller's buffer that can also run in "counting"
  *   mode, so that KeaMemoryRequired and the solve lay the workspace out with the same code,
  * - row kernels: J_i . (dv_b0, dv_b1) and dv += B_i s, with B_i = M^-1 J_i^T stored as a row,
@@ -9,32 +9,17 @@
 #ifndef KEA_INTERNAL_H
 #define KEA_INTERNAL_H
 
-#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
+
+#include <karma/MeMath.h>
 
 #include "kea.h"
 
 /* ---- scalars -------------------------------------------------------------------------------- */
 
-static inline MeReal KeaSqrt(MeReal a)
-{
-#if KARMA_DOUBLE
-    return sqrt(a);
-#else
-    return sqrtf(a);
-#endif
-}
-
-static inline MeReal KeaFabs(MeReal a)
-{
-#if KARMA_DOUBLE
-    return fabs(a);
-#else
-    return fabsf(a);
-#endif
-}
-
+static inline MeReal KeaSqrt(MeReal a) { return MeSqrt(a); }
+static inline MeReal KeaFabs(MeReal a) { return MeFabs(a); }
 static inline MeReal KeaMax(MeReal a, MeReal b) { return a > b ? a : b; }
 static inline MeReal KeaMin(MeReal a, MeReal b) { return a < b ? a : b; }
 
