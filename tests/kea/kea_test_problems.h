@@ -385,6 +385,103 @@ static inline int kt_brute_force(const KeaProblem *p, double *x, double tol)
     return found;
 }
 
+
+/* ---- a column of boxes ---------------------------------------------------------------------- */
+
+static inline void kt_cross(const double a[3], const double b[3], double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/** Contact row between body0 (upper, centre c0) and body1 (lower, centre c1, or the world) at point p
+ *  along unit direction d: J = (d, (p - c0) x d | -d, -(p - c1) x d). */
+static inline void kt_contact_row(KeaJacobianRow *J, const double p[3], const double c0[3], const double *c1,
+                                  const double d[3])
+{
+    double r[3], rxd[3];
+    int k;
+    memset(J, 0, sizeof *J);
+    for (k = 0; k < 3; ++k)
+        r[k] = p[k] - c0[k];
+    kt_cross(r, d, rxd);
+    for (k = 0; k < 3; ++k) {
+        J->lin0[k] = (MeReal)d[k];
+        J->ang0[k] = (MeReal)rxd[k];
+    }
+    if (c1) {
+        for (k = 0; k < 3; ++k)
+            r[k] = p[k] - c1[k];
+        kt_cross(r, d, rxd);
+        for (k = 0; k < 3; ++k) {
+            J->lin1[k] = (MeReal)-d[k];
+            J->ang1[k] = (MeReal)-rxd[k];
+        }
+    }
+}
+
+/** A column of nBoxes unit cubes (mass m, side 1) standing on the ground (z up): interface k carries
+ *  4 corner contacts, each a normal row (0, inf) and two friction rows linked to it with mu. Box k's
+ *  centre is at z = k + 1/2. Rows in order: interface by interface from the ground up, each contact's
+ *  normal then its x and y friction rows. Softness eps on every row. The rhs is left at 0: set it
+ *  with kt_set_rhs_from_velocities. */
+static inline void kt_column(KtProblem *t, int nBoxes, double m, double mu, double eps)
+{
+    const double corners[4][2] = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
+    const double dirs[3][3] = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}};
+    int b, k, c, d, row = 0;
+    kt_alloc(t, 12 * nBoxes, nBoxes, 1);
+    for (b = 0; b < nBoxes; ++b) {
+        memset(&t->bodies[b], 0, sizeof t->bodies[b]);
+        t->bodies[b].invMass = (MeReal)(1.0 / m);
+        for (k = 0; k < 3; ++k)
+            t->bodies[b].invInertia[k][k] = (MeReal)(6.0 / m); /* I = m (1 + 1) / 12 */
+    }
+    for (b = 0; b < nBoxes; ++b) { /* interface b: below box b */
+        const double c0[3] = {0, 0, b + 0.5}, c1[3] = {0, 0, b - 0.5};
+        for (c = 0; c < 4; ++c) {
+            const double p[3] = {corners[c][0], corners[c][1], (double)b};
+            const int normal = row;
+            for (d = 0; d < 3; ++d, ++row) {
+                kt_contact_row(&t->J[row], p, c0, b > 0 ? c1 : NULL, dirs[d]);
+                t->rowBodies[row][0] = b;
+                t->rowBodies[row][1] = b > 0 ? b - 1 : KEA_WORLD;
+                t->eps[row] = (MeReal)eps;
+                if (d == 0) {
+                    t->lo[row] = ME_R(0.0);
+                    t->hi[row] = MEINFINITY;
+                } else {
+                    t->lo[row] = -MEINFINITY;
+                    t->hi[row] = MEINFINITY;
+                    t->link[row] = normal;
+                    t->mu[row] = (MeReal)mu;
+                }
+            }
+        }
+    }
+}
+
+/** r = -J (v + h a) for body velocities v (6 per body: linear, angular) and a uniform acceleration
+ *  a (gravity) over the step h: the target is zero constraint velocity after the step. */
+static inline void kt_set_rhs_from_velocities(KtProblem *t, const double *v, double h, const double a[3])
+{
+    int i, hf, k;
+    for (i = 0; i < t->p.nRows; ++i) {
+        double s = 0.0;
+        for (hf = 0; hf < 2; ++hf) {
+            const int b = t->rowBodies[i][hf];
+            if (b < 0)
+                continue;
+            for (k = 0; k < 3; ++k) {
+                s += (double)(hf ? t->J[i].lin1[k] : t->J[i].lin0[k]) * (v[6 * b + k] + h * a[k]);
+                s += (double)(hf ? t->J[i].ang1[k] : t->J[i].ang0[k]) * v[6 * b + 3 + k];
+            }
+        }
+        t->rhs[i] = (MeReal)-s;
+    }
+}
+
 /* ---- solving -------------------------------------------------------------------------------- */
 
 /** KeaSolve with a heap workspace of exactly KeaMemoryRequired bytes. */

@@ -37,6 +37,9 @@
 
 #include <karma/MePrecision.h>
 
+/** Largest block of rows the iterative path solves together (KeaParameters.maxBlockRows). */
+#define KEA_MAX_BLOCK_ROWS 24
+
 /** Body index of a row half that acts on the world (or on nothing): that half is ignored. */
 #define KEA_WORLD (-1)
 
@@ -105,6 +108,9 @@ typedef struct KeaParameters {
     MeReal sor;             /**< iterative: over-relaxation factor in (0, 2); default 1 */
     int subspaceIterations; /**< iterative: conjugate-gradient steps on the free rows between two
                                  sweeps (subspace minimisation); 0 = plain PGS; default 4 */
+    int maxBlockRows;       /**< iterative: consecutive rows on the same two bodies (a constraint,
+                                 a contact group) up to this many are solved together exactly in
+                                 each sweep; 1 = scalar PGS; at most KEA_MAX_BLOCK_ROWS; default 12 */
     int maxPivots;          /**< direct: cap on active-set changes; 0 = automatic (8 n + 64) */
     int maxFrictionPasses;  /**< direct: box-QP passes for friction links; default 8 */
 } KeaParameters;

@@ -66,10 +66,10 @@ void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeRe
 
 static MeReal *KeaRow(const KeaCholesky *c, int k) { return c->L + (size_t)k * (size_t)c->ld; }
 
-void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int i)
+void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int lda, int i)
 {
     const int k = c->size;
-    const MeReal *Ai = A + (size_t)i * (size_t)c->ld;
+    const MeReal *Ai = A + (size_t)i * (size_t)lda;
     MeReal *lk = KeaRow(c, k);
     MeReal d = Ai[i], floor = KEA_PIVOT_FLOOR * KeaMax(Ai[i], ME_R(0.0));
     int j, m;
@@ -192,5 +192,44 @@ void KeaDenseSolveFactored(int m, const MeReal *G, const int *perm, MeReal *b)
         for (j = i + 1; j < m; ++j)
             s -= G[i * m + j] * b[j];
         b[i] = s / G[i * m + i];
+    }
+}
+
+int KeaCholeskyDense(int m, const MeReal *A, MeReal *L)
+{
+    int i, j, k;
+    for (i = 0; i < m; ++i) {
+        for (j = 0; j <= i; ++j) {
+            MeReal s = A[i * m + j];
+            for (k = 0; k < j; ++k)
+                s -= L[i * m + k] * L[j * m + k];
+            if (j < i) {
+                L[i * m + j] = s / L[j * m + j];
+            } else {
+                if (!(s > KEA_PIVOT_FLOOR * A[i * m + i]))
+                    return 0;
+                L[i * m + i] = KeaSqrt(s);
+            }
+        }
+        for (j = i + 1; j < m; ++j)
+            L[i * m + j] = ME_R(0.0);
+    }
+    return 1;
+}
+
+void KeaCholeskyDenseSolve(int m, const MeReal *L, MeReal *b)
+{
+    int i, j;
+    for (i = 0; i < m; ++i) {
+        MeReal s = b[i];
+        for (j = 0; j < i; ++j)
+            s -= L[i * m + j] * b[j];
+        b[i] = s / L[i * m + i];
+    }
+    for (i = m - 1; i >= 0; --i) {
+        const MeReal xi = b[i] / L[i * m + i];
+        b[i] = xi;
+        for (j = 0; j < i; ++j)
+            b[j] -= L[i * m + j] * xi;
     }
 }

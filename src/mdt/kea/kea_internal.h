@@ -1,6 +1,6 @@
 /* kea_internal.h -- pieces shared by Kea's source files (not part of any API).
  *
- * - scalar wrappers (float or double maths without promotion),
+ * - scalar helpers (MeMath's wrappers under short names; clamp, finite-bound test),
  * - the workspace arena: a bump allocator over the caller's buffer that can also run in "counting"
  *   mode, so that KeaMemoryRequired and the solve lay the workspace out with the same code,
  * - row kernels: J_i . (dv_b0, dv_b1) and dv += B_i s, with B_i = M^-1 J_i^T stored as a row,
@@ -9,32 +9,17 @@
 #ifndef KEA_INTERNAL_H
 #define KEA_INTERNAL_H
 
-#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
+
+#include <karma/MeMath.h>
 
 #include "kea.h"
 
 /* ---- scalars -------------------------------------------------------------------------------- */
 
-static inline MeReal KeaSqrt(MeReal a)
-{
-#if KARMA_DOUBLE
-    return sqrt(a);
-#else
-    return sqrtf(a);
-#endif
-}
-
-static inline MeReal KeaFabs(MeReal a)
-{
-#if KARMA_DOUBLE
-    return fabs(a);
-#else
-    return fabsf(a);
-#endif
-}
-
+static inline MeReal KeaSqrt(MeReal a) { return MeSqrt(a); }
+static inline MeReal KeaFabs(MeReal a) { return MeFabs(a); }
 static inline MeReal KeaMax(MeReal a, MeReal b) { return a > b ? a : b; }
 static inline MeReal KeaMin(MeReal a, MeReal b) { return a < b ? a : b; }
 
@@ -117,6 +102,15 @@ static inline void KeaRowApply(const KeaJacobianRow *B, const int b[2], MeReal s
 /** B = M^-1 J_i^T of row i (zero halves for the world); returns the row's diagonal J_i B + eps_i. */
 MeReal KeaRowInvMassJT(const KeaProblem *problem, int i, KeaJacobianRow *B);
 
+/** The friction rule: own bounds [lo, hi] widened to contain 0, intersected with
+ *  [-mu max(xLink, 0), mu max(xLink, 0)]. */
+static inline void KeaFrictionBounds(MeReal lo, MeReal hi, MeReal mu, MeReal xLink, MeReal *effLo, MeReal *effHi)
+{
+    const MeReal bound = mu * KeaMax(xLink, ME_R(0.0));
+    *effLo = KeaMax(KeaMin(lo, ME_R(0.0)), -bound);
+    *effHi = KeaMin(KeaMax(hi, ME_R(0.0)), bound);
+}
+
 /** Effective bounds of row i when its linked normal row has the impulse xLink. */
 void KeaLinkBounds(const KeaProblem *problem, int i, MeReal xLink, MeReal *lo, MeReal *hi);
 
@@ -138,10 +132,16 @@ typedef struct KeaCholesky {
     int regularised; /**< pivots raised to the floor so far */
 } KeaCholesky;
 
-/** Append row i of A to the factor (O(size^2)). */
-void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int i);
+/** Append row i of A (leading dimension lda) to the factor (O(size^2)). */
+void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int lda, int i);
 /** Remove the row at position p from the factor (rank-one update of the trailing block, O(size^2)). */
 void KeaCholeskyRemove(KeaCholesky *c, int p);
+/** Plain Cholesky A = L L^T of a small dense m x m matrix (row-major). Returns 0, leaving L
+ *  unusable, if a pivot falls below the floor (A not safely positive definite). */
+int KeaCholeskyDense(int m, const MeReal *A, MeReal *L);
+/** Solve L L^T y = b in place with the factor from KeaCholeskyDense. */
+void KeaCholeskyDenseSolve(int m, const MeReal *L, MeReal *b);
+
 /** LU factorisation with partial pivoting of the general m x m matrix G, in place (row swaps in
  *  perm). Returns 0 when G is numerically singular. */
 int KeaDenseFactor(int m, MeReal *G, int *perm);
@@ -149,6 +149,32 @@ int KeaDenseFactor(int m, MeReal *G, int *perm);
 void KeaDenseSolveFactored(int m, const MeReal *G, const int *perm, MeReal *b);
 /** Solve A_FF y = b in place (b and y indexed by position in F). */
 void KeaCholeskySolve(const KeaCholesky *c, MeReal *b);
+
+/* ---- the dense box LCP solver (kea_dense_lcp.c) --------------------------------------------- */
+
+/** A dense box LCP: w = A x - r, bounds lo <= hi, optional friction links (indices into this LCP). */
+typedef struct KeaDenseLcp {
+    int n;               /**< rows */
+    const MeReal *A;     /**< n x n row-major, symmetric positive (semi-)definite */
+    const MeReal *r;     /**< right-hand side */
+    const MeReal *lo;    /**< own lower bounds */
+    const MeReal *hi;    /**< own upper bounds */
+    const int *link;     /**< normal row of a friction row, or -1 (NULL: no links) */
+    const MeReal *mu;    /**< friction coefficients of linked rows */
+} KeaDenseLcp;
+
+/** Workspace of the dense solver, for LCPs of up to `capacity` rows. */
+typedef struct KeaDenseWork KeaDenseWork;
+
+/** Lay out a dense-solver workspace for n rows in the arena (NULL in counting mode). */
+KeaDenseWork *KeaDenseWorkCreate(KeaArena *arena, int n);
+/** Bytes KeaDenseWorkCreate takes for n rows (from an aligned arena position). */
+size_t KeaDenseWorkspaceBytes(int n);
+/** Solve the LCP exactly (kea_dense_lcp.c top comment). x: warm start in, solution out. Adds its
+ *  pivots, factorisations, friction passes and regularised pivots to stats. maxPivots 0 = automatic
+ *  (8 n + 64). */
+KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses, KeaDenseWork *w,
+                           MeReal *x, KeaStats *stats);
 
 /* ---- the two paths -------------------------------------------------------------------------- */
 

@@ -27,12 +27,27 @@
  * Each CG step costs about one sweep; KeaStats.subspaceSteps counts them.
  *
  * Warm start: x0 is clamped to its bounds and dv computed from it before the first sweep. */
+#include <string.h>
+
 #include "kea_internal.h"
 
 typedef struct KeaIterativeWork {
     KeaJacobianRow *B;     /**< M^-1 J^T per row */
     MeReal *invDiag;       /**< 1 / d_i (0 for a row that touches nothing and has eps 0) */
     MeReal *diag;          /**< d_i */
+    /* Blocks: runs of consecutive rows on the same two bodies, solved together exactly. */
+    int nBlocks;
+    int *blockStart;       /**< nBlocks + 1 row offsets */
+    int *blockMatrix;      /**< offset of each block's m x m matrix in blockA */
+    MeReal *blockA;        /**< the blocks' A_bb, at most n * maxBlockRows reals */
+    MeReal *blockL;        /**< their Cholesky factors (same offsets) */
+    unsigned char *blockFactored; /**< the factor exists (A_bb safely positive definite) */
+    MeReal *localW;        /**< a block's w */
+    int *rowBlock;         /**< block of each row */
+    int *segmentPos, *segmentBlock, nSegments; /**< SM: free blocks preconditioned by their factor */
+    MeReal *localR, *localLo, *localHi, *localX; /**< a block's LCP (maxBlockRows each) */
+    int *localLink;
+    KeaDenseWork *dense;   /**< the dense solver, sized for maxBlockRows */
     /* Subspace minimisation: */
     int *freeRows;         /**< rows strictly inside their bounds */
     MeReal *lo, *hi;       /**< bounds frozen for the SM step (by row) */
@@ -42,11 +57,33 @@ typedef struct KeaIterativeWork {
     KeaBodyVelocity *dvTmp; /**< per-body scratch for A_FF p and for the trial step */
 } KeaIterativeWork;
 
-static void KeaIterativeLayout(KeaArena *arena, int n, int nb, KeaIterativeWork *w)
+static int KeaBlockCap(int n, int maxBlockRows)
 {
+    const int cap = maxBlockRows < KEA_MAX_BLOCK_ROWS ? maxBlockRows : KEA_MAX_BLOCK_ROWS;
+    return cap < 1 ? 1 : (cap < n ? cap : (n > 0 ? n : 1));
+}
+
+static void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIterativeWork *w)
+{
+    const int cap = KeaBlockCap(n, maxBlockRows);
     w->B = KEA_ALLOC(arena, KeaJacobianRow, n);
     w->invDiag = KEA_ALLOC(arena, MeReal, n);
     w->diag = KEA_ALLOC(arena, MeReal, n);
+    w->blockStart = KEA_ALLOC(arena, int, n + 1);
+    w->blockMatrix = KEA_ALLOC(arena, int, n);
+    w->blockA = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)cap);
+    w->blockL = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)cap);
+    w->blockFactored = KEA_ALLOC(arena, unsigned char, n);
+    w->localW = KEA_ALLOC(arena, MeReal, cap);
+    w->rowBlock = KEA_ALLOC(arena, int, n);
+    w->segmentPos = KEA_ALLOC(arena, int, n);
+    w->segmentBlock = KEA_ALLOC(arena, int, n);
+    w->localR = KEA_ALLOC(arena, MeReal, cap);
+    w->localLo = KEA_ALLOC(arena, MeReal, cap);
+    w->localHi = KEA_ALLOC(arena, MeReal, cap);
+    w->localX = KEA_ALLOC(arena, MeReal, cap);
+    w->localLink = KEA_ALLOC(arena, int, cap);
+    w->dense = KeaDenseWorkCreate(arena, cap);
     w->freeRows = KEA_ALLOC(arena, int, n);
     w->lo = KEA_ALLOC(arena, MeReal, n);
     w->hi = KEA_ALLOC(arena, MeReal, n);
@@ -63,8 +100,50 @@ size_t KeaIterativeWorkspaceBytes(int nRows, int nBodies)
 {
     KeaArena counter = {NULL, 0, 0};
     KeaIterativeWork w;
-    KeaIterativeLayout(&counter, nRows, nBodies, &w);
+    KeaIterativeLayout(&counter, nRows, nBodies, KEA_MAX_BLOCK_ROWS, &w);
     return counter.used;
+}
+
+/* Split the rows into blocks (runs on the same body pair, at most cap rows) and form each block's
+ * matrix A_bb = J_b M^-1 J_b^T + diag(eps) from the rows' B = M^-1 J^T. */
+static void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
+{
+    const int n = problem->nRows;
+    int i = 0, offset = 0;
+    w->nBlocks = 0;
+    while (i < n) {
+        const int *b = problem->rowBodies[i];
+        int m = 1, r, c, h, g;
+        while (i + m < n && m < cap && problem->rowBodies[i + m][0] == b[0] && problem->rowBodies[i + m][1] == b[1])
+            ++m;
+        w->blockStart[w->nBlocks] = i;
+        w->blockMatrix[w->nBlocks] = offset;
+        for (r = 0; r < m; ++r)
+            w->rowBlock[i + r] = w->nBlocks;
+        if (m > 1) {
+            MeReal *A = w->blockA + offset;
+            for (r = 0; r < m; ++r)
+                for (c = 0; c < m; ++c) {
+                    const KeaJacobianRow *Jr = &problem->J[i + r], *Bc = &w->B[i + c];
+                    MeReal v = ME_R(0.0);
+                    for (h = 0; h < 2; ++h)
+                        for (g = 0; g < 2; ++g) {
+                            if (b[h] < 0 || b[h] != b[g])
+                                continue;
+                            v += KeaDot3(h ? Jr->lin1 : Jr->lin0, g ? Bc->lin1 : Bc->lin0) +
+                                 KeaDot3(h ? Jr->ang1 : Jr->ang0, g ? Bc->ang1 : Bc->ang0);
+                        }
+                    if (r == c && problem->epsilon)
+                        v += problem->epsilon[i + r];
+                    A[r * m + c] = v;
+                }
+            w->blockFactored[w->nBlocks] = (unsigned char)KeaCholeskyDense(m, A, w->blockL + offset);
+            offset += m * m;
+        }
+        ++w->nBlocks;
+        i += m;
+    }
+    w->blockStart[w->nBlocks] = n;
 }
 
 static MeReal KeaRowW(const KeaProblem *problem, int i, const MeReal *x, const KeaBodyVelocity *dv)
@@ -73,14 +152,110 @@ static MeReal KeaRowW(const KeaProblem *problem, int i, const MeReal *x, const K
     return KeaRowVelocity(&problem->J[i], problem->rowBodies[i], dv) + eps * x[i] - problem->rhs[i];
 }
 
-/* One projected Gauss-Seidel sweep; returns the largest natural-map residual met on the way. */
-static MeReal KeaSweep(const KeaProblem *problem, const KeaIterativeWork *w, MeReal omega, MeReal *x,
-                       KeaBodyVelocity *dv)
+/* The common case of a block at rest: all its rows free. Try x_b - A_bb^-1 w_b with the block's
+ * precomputed factor; if it lies within every row's bounds (friction links inside the block read
+ * the new normal values), w_b = 0 there and it is the block's exact solution. Returns 1 if taken. */
+static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int block, MeReal *x, KeaBodyVelocity *dv)
+{
+    const int s = w->blockStart[block], m = w->blockStart[block + 1] - s;
+    int r;
+    if (!w->blockFactored[block])
+        return 0;
+    for (r = 0; r < m; ++r)
+        w->localX[r] = -w->localW[r];
+    KeaCholeskyDenseSolve(m, w->blockL + w->blockMatrix[block], w->localX);
+    for (r = 0; r < m; ++r)
+        w->localX[r] += x[s + r];
+    for (r = 0; r < m; ++r) {
+        MeReal lo = w->localLo[r], hi = w->localHi[r];
+        if (w->localLink[r] >= 0)
+            KeaFrictionBounds(lo, hi, problem->mu[s + r], w->localX[w->localLink[r]], &lo, &hi);
+        if (!(w->localX[r] >= lo && w->localX[r] <= hi))
+            return 0;
+    }
+    for (r = 0; r < m; ++r) {
+        const MeReal delta = w->localX[r] - x[s + r];
+        if (delta != ME_R(0.0)) {
+            KeaRowApply(&w->B[s + r], problem->rowBodies[s + r], delta, dv);
+            x[s + r] = w->localX[r];
+        }
+    }
+    return 1;
+}
+
+/* Solve the block of m rows from s exactly with the rest of x fixed: its local LCP has the matrix
+ * A_bb and r_loc = A_bb x_b - w_b, so that its w is the true w of these rows. A friction link to a
+ * row outside the block becomes a fixed bound. Returns the block's largest row residual before. */
+static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, int maxPasses,
+                           MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
+{
+    const int s = w->blockStart[block], m = w->blockStart[block + 1] - s;
+    const MeReal *A = w->blockA + w->blockMatrix[block];
+    KeaDenseLcp lcp;
+    KeaStats local;
+    MeReal worst = ME_R(0.0);
+    int r, c;
+    for (r = 0; r < m; ++r) {
+        const int i = s + r;
+        const MeReal wi = KeaRowW(problem, i, x, dv);
+        MeReal lo, hi, ax = ME_R(0.0);
+        KeaRowBounds(problem, x, i, &lo, &hi);
+        if (w->invDiag[i] != ME_R(0.0))
+            worst = KeaMax(worst, w->diag[i] * KeaFabs(x[i] - KeaClamp(x[i] - wi * w->invDiag[i], lo, hi)));
+        for (c = 0; c < m; ++c)
+            ax += A[r * m + c] * x[s + c];
+        w->localR[r] = ax - wi;
+        w->localW[r] = wi;
+        w->localLink[r] = -1;
+        if (problem->link && problem->link[i] >= s && problem->link[i] < s + m) {
+            w->localLink[r] = problem->link[i] - s;
+            w->localLo[r] = problem->lo[i];
+            w->localHi[r] = problem->hi[i];
+        } else {
+            w->localLo[r] = lo;
+            w->localHi[r] = hi;
+        }
+    }
+    if (KeaBlockAllFree(problem, w, block, x, dv))
+        return worst;
+    for (r = 0; r < m; ++r)
+        w->localX[r] = x[s + r];
+    lcp.n = m;
+    lcp.A = A;
+    lcp.r = w->localR;
+    lcp.lo = w->localLo;
+    lcp.hi = w->localHi;
+    lcp.link = w->localLink;
+    lcp.mu = problem->mu ? problem->mu + s : NULL;
+    if (!lcp.mu)
+        lcp.link = NULL;
+    memset(&local, 0, sizeof local);
+    (void)KeaDenseLcpSolve(&lcp, 0, maxPasses, w->dense, w->localX, &local);
+    stats->pivots += local.pivots;
+    stats->regularised += local.regularised;
+    for (r = 0; r < m; ++r) {
+        const MeReal delta = w->localX[r] - x[s + r];
+        if (delta != ME_R(0.0)) {
+            KeaRowApply(&w->B[s + r], problem->rowBodies[s + r], delta, dv);
+            x[s + r] = w->localX[r];
+        }
+    }
+    return worst;
+}
+
+/* One projected (block) Gauss-Seidel sweep; returns the largest natural-map residual met on the way. */
+static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
+                       MeReal omega, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
 {
     MeReal worst = ME_R(0.0);
-    int i;
-    for (i = 0; i < problem->nRows; ++i) {
+    int block;
+    for (block = 0; block < w->nBlocks; ++block) {
+        const int i = w->blockStart[block];
         MeReal lo, hi, wi, xNew, r;
+        if (w->blockStart[block + 1] - i > 1) {
+            worst = KeaMax(worst, KeaBlockStep(problem, w, block, params->maxFrictionPasses, x, dv, stats));
+            continue;
+        }
         if (w->invDiag[i] == ME_R(0.0))
             continue;
         KeaRowBounds(problem, x, i, &lo, &hi);
@@ -106,6 +281,41 @@ static void KeaScatter(const KeaProblem *problem, const KeaIterativeWork *w, int
     for (p = 0; p < nFree; ++p)
         if (v[p] != ME_R(0.0))
             KeaRowApply(&w->B[w->freeRows[p]], problem->rowBodies[w->freeRows[p]], v[p], w->dvTmp);
+}
+
+/* The blocks whose rows are all free (and whose factor exists) become segments of the free list,
+ * preconditioned by their exact inverse A_bb^-1; the other free rows by 1 / d_i. */
+static void KeaFindSegments(KeaIterativeWork *w, int nFree)
+{
+    int p = 0;
+    w->nSegments = 0;
+    while (p < nFree) {
+        const int i = w->freeRows[p], b = w->rowBlock[i];
+        const int m = w->blockStart[b + 1] - w->blockStart[b];
+        if (m > 1 && i == w->blockStart[b] && w->blockFactored[b] && p + m <= nFree &&
+            w->freeRows[p + m - 1] == i + m - 1) {
+            w->segmentPos[w->nSegments] = p;
+            w->segmentBlock[w->nSegments++] = b;
+            p += m;
+        } else {
+            ++p;
+        }
+    }
+}
+
+/* z = P^-1 res (block-Jacobi preconditioner of the free rows). */
+static void KeaPrecondition(const KeaIterativeWork *w, int nFree, const MeReal *res, MeReal *z)
+{
+    int p, k;
+    for (p = 0; p < nFree; ++p)
+        z[p] = res[p] * w->invDiag[w->freeRows[p]];
+    for (k = 0; k < w->nSegments; ++k) {
+        const int b = w->segmentBlock[k], m = w->blockStart[b + 1] - w->blockStart[b];
+        MeReal *zb = z + w->segmentPos[k];
+        for (p = 0; p < m; ++p)
+            zb[p] = res[w->segmentPos[k] + p];
+        KeaCholeskyDenseSolve(m, w->blockL + w->blockMatrix[b], zb);
+    }
 }
 
 static MeReal KeaDotN(const MeReal *a, const MeReal *b, int n)
@@ -134,14 +344,16 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
         return 0;
 
     /* Preconditioned CG on A_FF step = -w_F from step = 0. */
+    KeaFindSegments(w, nFree);
     for (p = 0; p < nFree; ++p) {
         i = w->freeRows[p];
         w->grad[p] = KeaRowW(problem, i, x, dv);
         w->step[p] = ME_R(0.0);
         w->res[p] = -w->grad[p];
-        w->z[p] = w->res[p] * w->invDiag[i];
-        w->dir[p] = w->z[p];
     }
+    KeaPrecondition(w, nFree, w->res, w->z);
+    for (p = 0; p < nFree; ++p)
+        w->dir[p] = w->z[p];
     rz = rz0 = KeaDotN(w->res, w->z, nFree);
     if (!(rz0 > ME_R(0.0)))
         return 0;
@@ -160,8 +372,8 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
         for (p = 0; p < nFree; ++p) {
             w->step[p] += a * w->dir[p];
             w->res[p] -= a * w->q[p];
-            w->z[p] = w->res[p] * w->invDiag[w->freeRows[p]];
         }
+        KeaPrecondition(w, nFree, w->res, w->z);
         ++steps;
         rzNew = KeaDotN(w->res, w->z, nFree);
         if (!(rzNew > ME_SMALL_EPSILON * ME_SMALL_EPSILON * rz0))
@@ -212,11 +424,12 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
     KeaStatus status = KeaStatusMaxIterations;
     int i, it;
 
-    KeaIterativeLayout(arena, n, problem->nBodies, &w);
+    KeaIterativeLayout(arena, n, problem->nBodies, KEA_MAX_BLOCK_ROWS, &w);
     for (i = 0; i < n; ++i) {
         w.diag[i] = KeaRowInvMassJT(problem, i, &w.B[i]);
         w.invDiag[i] = w.diag[i] > ME_R(0.0) ? ME_R(1.0) / w.diag[i] : ME_R(0.0);
     }
+    KeaSetUpBlocks(problem, &w, KeaBlockCap(n, params->maxBlockRows));
     /* Warm start: clamp (bounds read from the unclamped x, as the direct path does), then dv. */
     for (i = 0; i < n; ++i)
         KeaRowBounds(problem, x, i, &w.lo[i], &w.hi[i]);
@@ -225,7 +438,7 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
     KeaBodyVelocityFromImpulses(problem, x, dv);
 
     for (it = 1; it <= params->maxIterations; ++it) {
-        const MeReal sweepResidual = KeaSweep(problem, &w, omega, x, dv);
+        const MeReal sweepResidual = KeaSweep(problem, &w, params, omega, x, dv, stats);
         stats->iterations = it;
         if (sweepResidual <= params->tolerance) {
             status = KeaStatusOk;

@@ -38,12 +38,7 @@ MeReal KeaRowInvMassJT(const KeaProblem *problem, int i, KeaJacobianRow *B)
 
 void KeaLinkBounds(const KeaProblem *problem, int i, MeReal xLink, MeReal *lo, MeReal *hi)
 {
-    MeReal bound = problem->mu[i] * KeaMax(xLink, ME_R(0.0));
-    /* Widen the row's own bounds to contain 0 so that the intersection is never empty. */
-    MeReal ownLo = KeaMin(problem->lo[i], ME_R(0.0));
-    MeReal ownHi = KeaMax(problem->hi[i], ME_R(0.0));
-    *lo = KeaMax(ownLo, -bound);
-    *hi = KeaMin(ownHi, bound);
+    KeaFrictionBounds(problem->lo[i], problem->hi[i], problem->mu[i], xLink, lo, hi);
 }
 
 void KeaRowBounds(const KeaProblem *problem, const MeReal *x, int i, MeReal *lo, MeReal *hi)

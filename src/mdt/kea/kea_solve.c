@@ -17,6 +17,7 @@ void KeaParametersDefault(KeaParameters *params)
     params->tolerance = ME_R(1e-6);
     params->sor = ME_R(1.0);
     params->subspaceIterations = 4;
+    params->maxBlockRows = 12;
     params->maxPivots = 0;
     params->maxFrictionPasses = 8;
 }

@@ -1,0 +1,549 @@
+/* kea_dense_lcp.c -- the exact solver of a dense box LCP, the core of Kea's direct path (whole
+ * partition) and of the block sweeps of its iterative path (the rows of one constraint): a primal
+ * active-set (pivoting) method on A = J M^-1 J^T + diag(eps), symmetric positive definite, with an
+ * updatable Cholesky factor of the free block.
+ *
+ * The box LCP with A symmetric positive definite is the convex QP  min 1/2 x^T A x - r^T x  over
+ * lo <= x <= hi. Every row is in one of three states: free, fixed at lo, fixed at hi (a row with
+ * lo == hi is pinned and never freed). The method keeps a feasible x and the factor A_FF = L L^T of
+ * the free rows F, and repeats:
+ *   1. Newton point on the current face: y_F = A_FF^-1 (r_F - A_FB x_B) (two triangular solves).
+ *   2. Ratio test: walk from x_F towards y_F; if a free row reaches a bound first, stop there, fix
+ *      that row at the bound (remove it from the factor) and go to 1. The objective does not increase.
+ *   3. Otherwise x_F = y_F is optimal on the face. Compute the multipliers w_j = (A x - r)_j of the
+ *      fixed rows; a row at lo with w_j < 0 (or at hi with w_j > 0) could lower the objective by
+ *      moving inside. If none does (within a tolerance scaled to the problem), x solves the LCP;
+ *      else free the one with the largest predicted decrease w_j^2 / A_jj (append it to the factor)
+ *      and go to 1.
+ * Each free/fix is a pivot costing O(n^2) (factor update, solves, multipliers). The objective
+ * decreases strictly at every step of positive length, so no face repeats unless steps of zero
+ * length occur (degeneracy); against that, a row freed and immediately re-fixed without progress is
+ * locked (not freed again) until a step of positive length is taken, and maxPivots caps the total,
+ * returning the current (feasible, best so far) iterate with KeaStatusMaxPivots.
+ *
+ * Warm start: x0 clamped to the bounds gives the first x; rows strictly inside are free, and the
+ * first factor is built from them. With last step's impulses the active set is usually right and
+ * the solve is one factorisation plus a handful of pivots. Cold (x0 = 0), each unilateral row that
+ * ends up free costs one append, which together amount to one factorisation: O(n^3/3) plus
+ * O(n^2) per pivot for solves and multipliers.
+ *
+ * Friction links (bounds +-mu x_link): each pass solves the box QP with the bounds fixed from the
+ * current x; then the bounds are recomputed from the solution. If they moved by more than a small
+ * tolerance, the next pass starts from the current x and factor (rows whose bound moved stay at the
+ * same side of their new bound, free rows now outside are fixed, rows pinned at 0 that can now move
+ * are freed), until the bounds stop moving or maxFrictionPasses. The fixed point of this outer loop
+ * is the solution of the friction-coupled LCP.
+ *
+ * A final step of iterative refinement on the free block removes the drift left by the updates. */
+#include "kea_internal.h"
+
+enum { KEA_FREE = 0, KEA_AT_LO = 1, KEA_AT_HI = 2 };
+
+struct KeaDenseWork {
+    int capacity;        /**< largest n this workspace serves */
+    KeaCholesky chol;    /**< factor of the free block */
+    MeReal *lo, *hi;     /**< bounds of the current pass */
+    MeReal *y;           /**< Newton point (by position in F) */
+    int *nonzero;        /**< rows with x != 0 (scratch list) */
+    signed char *state;  /**< KEA_FREE, KEA_AT_LO, KEA_AT_HI */
+    unsigned char *locked; /**< freed-and-refixed without progress: not freed again for now */
+    /* Friction polish (coupled solve), at most n/2 normal rows carry sliding friction rows: */
+    MeReal *U;           /**< n x n/2: columns u_N, then A_FF^-1 u_N */
+    MeReal *G;           /**< (n/2)^2: the capacitance matrix I + V^T A_FF^-1 U */
+    MeReal *t;           /**< n/2 */
+    MeReal *cand;        /**< n: candidate solution */
+    int *slot;           /**< n: column of a normal row in U, or -1 */
+    int *normals;        /**< n/2: normal rows with sliding friction rows */
+    int *perm;           /**< n/2: row swaps of the capacitance matrix's LU */
+};
+
+KeaDenseWork *KeaDenseWorkCreate(KeaArena *arena, int n)
+{
+    KeaDenseWork *result = KEA_ALLOC(arena, KeaDenseWork, 1);
+    KeaDenseWork counting, *w = result ? result : &counting; /* counting mode: same layout */
+    const int half = (n + 1) / 2;
+    w->capacity = n;
+    w->chol.L = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)n);
+    w->chol.F = KEA_ALLOC(arena, int, n);
+    w->chol.pos = KEA_ALLOC(arena, int, n);
+    w->lo = KEA_ALLOC(arena, MeReal, n);
+    w->hi = KEA_ALLOC(arena, MeReal, n);
+    w->y = KEA_ALLOC(arena, MeReal, n);
+    w->nonzero = KEA_ALLOC(arena, int, n);
+    w->state = KEA_ALLOC(arena, signed char, n);
+    w->locked = KEA_ALLOC(arena, unsigned char, n);
+    w->U = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)half);
+    w->G = KEA_ALLOC(arena, MeReal, (size_t)half * (size_t)half);
+    w->t = KEA_ALLOC(arena, MeReal, half);
+    w->cand = KEA_ALLOC(arena, MeReal, n);
+    w->slot = KEA_ALLOC(arena, int, n);
+    w->normals = KEA_ALLOC(arena, int, half);
+    w->perm = KEA_ALLOC(arena, int, half);
+    w->chol.ld = n;
+    w->chol.size = 0;
+    w->chol.regularised = 0;
+    return result;
+}
+
+size_t KeaDenseWorkspaceBytes(int n)
+{
+    KeaArena counter = {NULL, 0, 0};
+    (void)KeaDenseWorkCreate(&counter, n);
+    return counter.used;
+}
+
+/* Effective bounds of row i (friction links applied, same rule as KeaRowBounds). */
+static void KeaDenseLinkBounds(const KeaDenseLcp *lcp, int i, MeReal xLink, MeReal *lo, MeReal *hi)
+{
+    KeaFrictionBounds(lcp->lo[i], lcp->hi[i], lcp->mu[i], xLink, lo, hi);
+}
+
+static void KeaDenseBounds(const KeaDenseLcp *lcp, const MeReal *x, int i, MeReal *lo, MeReal *hi)
+{
+    if (lcp->link && lcp->link[i] >= 0) {
+        KeaDenseLinkBounds(lcp, i, x[lcp->link[i]], lo, hi);
+    } else {
+        *lo = lcp->lo[i];
+        *hi = lcp->hi[i];
+    }
+}
+
+/* Free every row that is free by state, in index order (a fresh factorisation). */
+static void KeaDenseFactorFree(const KeaDenseLcp *lcp, KeaDenseWork *w, KeaStats *stats)
+{
+    const int n = lcp->n;
+    int i;
+    w->chol.size = 0;
+    for (i = 0; i < n; ++i)
+        w->chol.pos[i] = -1;
+    for (i = 0; i < n; ++i)
+        if (w->state[i] == KEA_FREE)
+            KeaCholeskyAppend(&w->chol, lcp->A, n, i);
+    ++stats->factorizations;
+}
+
+/* Active-set iterations for the current bounds. Returns KeaStatusOk at the optimum of the box QP,
+ * KeaStatusMaxPivots when the cap is hit (x stays feasible). */
+static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x, int maxPivots,
+                              KeaStats *stats)
+{
+    const int n = lcp->n;
+    const MeReal *r = lcp->r;
+    KeaCholesky *c = &w->chol;
+    MeReal rScale = ME_R(0.0), diagMax = ME_R(0.0);
+    int i, j, p, lastFreed = -1, nLocked = 0;
+
+    for (i = 0; i < n; ++i) {
+        rScale = KeaMax(rScale, KeaFabs(r[i]));
+        diagMax = KeaMax(diagMax, lcp->A[(size_t)i * (size_t)n + (size_t)i]);
+    }
+    for (i = 0; i < n; ++i)
+        w->locked[i] = 0;
+
+    for (;;) {
+        MeReal alpha = ME_R(1.0);
+        int block = -1, blockSide = KEA_FREE, nz = 0;
+
+        /* 1. Newton point on the face: A_FF y = r_F - A_FB x_B. */
+        for (j = 0; j < n; ++j)
+            if (c->pos[j] < 0 && x[j] != ME_R(0.0))
+                w->nonzero[nz++] = j;
+        for (p = 0; p < c->size; ++p) {
+            const MeReal *Ai = lcp->A + (size_t)c->F[p] * (size_t)n;
+            MeReal s = r[c->F[p]];
+            for (j = 0; j < nz; ++j)
+                s -= Ai[w->nonzero[j]] * x[w->nonzero[j]];
+            w->y[p] = s;
+        }
+        KeaCholeskySolve(c, w->y);
+
+        /* 2. Ratio test along y - x_F (ties go to the first row in F: deterministic). */
+        for (p = 0; p < c->size; ++p) {
+            i = c->F[p];
+            const MeReal d = w->y[p] - x[i];
+            if (d < ME_R(0.0) && KeaIsFinite(w->lo[i]) && w->y[p] < w->lo[i]) {
+                const MeReal t = KeaMax((w->lo[i] - x[i]) / d, ME_R(0.0));
+                if (t < alpha) {
+                    alpha = t;
+                    block = p;
+                    blockSide = KEA_AT_LO;
+                }
+            } else if (d > ME_R(0.0) && KeaIsFinite(w->hi[i]) && w->y[p] > w->hi[i]) {
+                const MeReal t = KeaMax((w->hi[i] - x[i]) / d, ME_R(0.0));
+                if (t < alpha) {
+                    alpha = t;
+                    block = p;
+                    blockSide = KEA_AT_HI;
+                }
+            }
+        }
+        for (p = 0; p < c->size; ++p) {
+            i = c->F[p];
+            const MeReal xi = block < 0 ? w->y[p] : x[i] + alpha * (w->y[p] - x[i]);
+            x[i] = KeaClamp(xi, w->lo[i], w->hi[i]);
+        }
+
+        if (block >= 0) {
+            i = c->F[block];
+            x[i] = blockSide == KEA_AT_LO ? w->lo[i] : w->hi[i];
+            w->state[i] = (signed char)blockSide;
+            KeaCholeskyRemove(c, block);
+            ++stats->pivots;
+            if (alpha > ME_R(0.0)) {
+                if (nLocked) {
+                    for (j = 0; j < n; ++j)
+                        w->locked[j] = 0;
+                    nLocked = 0;
+                }
+            } else if (i == lastFreed) {
+                w->locked[i] = 1; /* freed then re-fixed with no progress: degenerate, skip it */
+                ++nLocked;
+            }
+            lastFreed = -1;
+            if (stats->pivots >= maxPivots)
+                return KeaStatusMaxPivots;
+            continue;
+        }
+
+        /* 3. Optimal on the face: look for a fixed row whose multiplier has the wrong sign. */
+        {
+            MeReal xScale = ME_R(0.0), tolW, bestScore = ME_R(0.0);
+            int best = -1;
+            nz = 0;
+            for (j = 0; j < n; ++j) {
+                xScale = KeaMax(xScale, KeaFabs(x[j]));
+                if (x[j] != ME_R(0.0))
+                    w->nonzero[nz++] = j;
+            }
+            tolW = KEA_DIRECT_TOL * (rScale + diagMax * xScale);
+            for (j = 0; j < n; ++j) {
+                const MeReal *Aj;
+                MeReal wj, score;
+                int k;
+                if (w->state[j] == KEA_FREE || w->locked[j] || !(w->lo[j] < w->hi[j]))
+                    continue;
+                Aj = lcp->A + (size_t)j * (size_t)n;
+                wj = -r[j];
+                for (k = 0; k < nz; ++k)
+                    wj += Aj[w->nonzero[k]] * x[w->nonzero[k]];
+                if (w->state[j] == KEA_AT_LO ? wj >= -tolW : wj <= tolW)
+                    continue;
+                score = wj * wj / KeaMax(Aj[j], ME_MIN_EPSILON);
+                if (score > bestScore) {
+                    bestScore = score;
+                    best = j;
+                }
+            }
+            if (best < 0)
+                return KeaStatusOk;
+            w->state[best] = KEA_FREE;
+            KeaCholeskyAppend(c, lcp->A, n, best);
+            lastFreed = best;
+            if (++stats->pivots >= maxPivots)
+                return KeaStatusMaxPivots;
+        }
+    }
+}
+
+/* State of row i from its value and bounds (warm start, or a pass with new bounds). */
+static signed char KeaStateFromValue(MeReal *xi, MeReal lo, MeReal hi)
+{
+    if (!(lo < hi) || *xi <= lo) {
+        *xi = lo;
+        return KEA_AT_LO;
+    }
+    if (*xi >= hi) {
+        *xi = hi;
+        return KEA_AT_HI;
+    }
+    return KEA_FREE;
+}
+
+/* How far the friction bounds would move if recomputed from the current x. */
+/* How inconsistent x is with the friction bounds recomputed from it: for a row at a bound, how far
+ * that bound moved; for a pinned row, how much room it gained; for a free row, how far it lies
+ * outside. Free rows that stay inside do not count: moving bounds do not change their equations. */
+static MeReal KeaDenseBoundMotion(const KeaDenseLcp *lcp, const KeaDenseWork *w, const MeReal *x)
+{
+    MeReal moved = ME_R(0.0);
+    int i;
+    for (i = 0; i < lcp->n; ++i) {
+        MeReal lo, hi, m;
+        if (lcp->link[i] < 0)
+            continue;
+        KeaDenseLinkBounds(lcp, i, x[lcp->link[i]], &lo, &hi);
+        if (w->state[i] == KEA_FREE)
+            m = KeaMax(lo - x[i], x[i] - hi);
+        else if (!(w->lo[i] < w->hi[i]))
+            m = hi - lo;
+        else
+            m = w->state[i] == KEA_AT_LO ? KeaFabs(lo - w->lo[i]) : KeaFabs(hi - w->hi[i]);
+        moved = KeaMax(moved, m);
+    }
+    return moved;
+}
+
+/* Recompute the friction bounds from x and move the rows onto them (see the top comment), updating
+ * the factor row by row, or refactoring when many rows change state. */
+static void KeaDenseApplyBounds(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x, KeaStats *stats)
+{
+    const int n = lcp->n;
+    int i, leaving = 0, entering = 0;
+    signed char *newState = (signed char *)w->locked; /* free scratch between passes */
+
+    for (i = 0; i < n; ++i) {
+        MeReal lo, hi;
+        signed char s = w->state[i];
+        if (lcp->link[i] < 0) {
+            newState[i] = s;
+            continue;
+        }
+        KeaDenseLinkBounds(lcp, i, x[lcp->link[i]], &lo, &hi);
+        if (s == KEA_FREE || !(w->lo[i] < w->hi[i]) || !(lo < hi))
+            s = KeaStateFromValue(&x[i], lo, hi); /* free, pinned or now pinned: clamp into the box */
+        else
+            x[i] = s == KEA_AT_LO ? lo : hi; /* a row at a bound follows its bound */
+        w->lo[i] = lo;
+        w->hi[i] = hi;
+        newState[i] = s;
+        if (w->state[i] == KEA_FREE && s != KEA_FREE)
+            ++leaving;
+        else if (w->state[i] != KEA_FREE && s == KEA_FREE)
+            ++entering;
+    }
+    if (4 * (leaving + entering) > w->chol.size) {
+        for (i = 0; i < n; ++i)
+            w->state[i] = newState[i];
+        KeaDenseFactorFree(lcp, w, stats);
+    } else {
+        for (i = 0; i < n; ++i)
+            if (w->state[i] == KEA_FREE && newState[i] != KEA_FREE) {
+                KeaCholeskyRemove(&w->chol, w->chol.pos[i]);
+                ++stats->pivots;
+            }
+        for (i = 0; i < n; ++i)
+            if (w->state[i] != KEA_FREE && newState[i] == KEA_FREE) {
+                KeaCholeskyAppend(&w->chol, lcp->A, n, i);
+                ++stats->pivots;
+            }
+        for (i = 0; i < n; ++i)
+            w->state[i] = newState[i];
+    }
+}
+
+/* Friction polish: with the current states, a linked row at a bound whose normal row is free sits at
+ * sigma mu x_N (sigma = +1 at hi, -1 at lo). Substituting that into the free rows' equations gives
+ * (A_FF + U V^T) x_F = b, where column u_N of U gathers sigma mu A_F,i over the sliding rows i of
+ * normal N and V^T picks x_N: a rank-m change of A_FF (m = normals with sliding rows). Woodbury's
+ * identity solves it with the existing factor: m + 1 solves and an m x m system. If the result is
+ * feasible and every fixed row's multiplier has the right sign, it is the exact solution of the
+ * coupled problem (the outer passes need not creep towards it). Returns 1 when accepted. */
+static int KeaIsSliding(const KeaDenseLcp *lcp, const KeaDenseWork *w, int i)
+{
+    const int nrm = lcp->link ? lcp->link[i] : -1;
+    return nrm >= 0 && w->state[i] != KEA_FREE && w->lo[i] < w->hi[i] && w->state[nrm] == KEA_FREE;
+}
+
+/* v <- (A_FF + U V^T)^-1 v by Woodbury, with Z = A_FF^-1 U in w->U and the LU of the capacitance
+ * matrix in w->G (m sliding normals). */
+static void KeaWoodburySolve(KeaDenseWork *w, int m, MeReal *v)
+{
+    const KeaCholesky *c = &w->chol;
+    const int k = c->size;
+    int a, p;
+    KeaCholeskySolve(c, v);
+    for (a = 0; a < m; ++a)
+        w->t[a] = v[c->pos[w->normals[a]]];
+    KeaDenseSolveFactored(m, w->G, w->perm, w->t);
+    for (a = 0; a < m; ++a) {
+        const MeReal *z = w->U + (size_t)a * (size_t)k;
+        for (p = 0; p < k; ++p)
+            v[p] -= z[p] * w->t[a];
+    }
+}
+
+/* cand = x with the free rows from y (by position) and the sliding rows at sigma mu x_N. */
+static void KeaPolishCandidate(const KeaDenseLcp *lcp, KeaDenseWork *w)
+{
+    const KeaCholesky *c = &w->chol;
+    int i, p;
+    for (p = 0; p < c->size; ++p)
+        w->cand[c->F[p]] = w->y[p];
+    for (i = 0; i < lcp->n; ++i)
+        if (KeaIsSliding(lcp, w, i))
+            w->cand[i] = (w->state[i] == KEA_AT_HI ? ME_R(1.0) : ME_R(-1.0)) * lcp->mu[i] *
+                         w->cand[lcp->link[i]];
+}
+
+/* y[p] = (r - A cand)_F[p]: the residual of the free rows' equations at cand. */
+static void KeaPolishResidual(const KeaDenseLcp *lcp, KeaDenseWork *w)
+{
+    const int n = lcp->n;
+    const KeaCholesky *c = &w->chol;
+    int j, p, nz = 0;
+    for (j = 0; j < n; ++j)
+        if (w->cand[j] != ME_R(0.0))
+            w->nonzero[nz++] = j;
+    for (p = 0; p < c->size; ++p) {
+        const MeReal *Ai = lcp->A + (size_t)c->F[p] * (size_t)n;
+        MeReal s = lcp->r[c->F[p]];
+        for (j = 0; j < nz; ++j)
+            s -= Ai[w->nonzero[j]] * w->cand[w->nonzero[j]];
+        w->y[p] = s;
+    }
+}
+
+static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
+{
+    const int n = lcp->n;
+    const KeaCholesky *c = &w->chol;
+    const int k = c->size;
+    MeReal rScale = ME_R(0.0), diagMax = ME_R(0.0), xScale = ME_R(0.0), tolW, tolX;
+    int i, j, p, a, m = 0, nz = 0;
+
+    for (i = 0; i < n; ++i)
+        w->slot[i] = -1;
+    for (i = 0; i < n; ++i) {
+        if (!KeaIsSliding(lcp, w, i) || w->slot[lcp->link[i]] >= 0)
+            continue;
+        w->slot[lcp->link[i]] = m;
+        w->normals[m++] = lcp->link[i];
+    }
+    if (m == 0 || k == 0)
+        return 0;
+
+    /* Z = A_FF^-1 U (column-major, k rows) and the capacitance matrix I + V^T Z. */
+    for (p = 0; p < k * m; ++p)
+        w->U[p] = ME_R(0.0);
+    for (i = 0; i < n; ++i) {
+        MeReal coef, *u;
+        if (!KeaIsSliding(lcp, w, i))
+            continue;
+        coef = (w->state[i] == KEA_AT_HI ? ME_R(1.0) : ME_R(-1.0)) * lcp->mu[i];
+        u = w->U + (size_t)w->slot[lcp->link[i]] * (size_t)k;
+        for (p = 0; p < k; ++p)
+            u[p] += coef * lcp->A[(size_t)c->F[p] * (size_t)n + (size_t)i];
+    }
+    for (a = 0; a < m; ++a)
+        KeaCholeskySolve(c, w->U + (size_t)a * (size_t)k);
+    for (a = 0; a < m; ++a) {
+        const int pa = c->pos[w->normals[a]];
+        for (j = 0; j < m; ++j)
+            w->G[a * m + j] = (a == j ? ME_R(1.0) : ME_R(0.0)) + w->U[(size_t)j * (size_t)k + (size_t)pa];
+    }
+    if (!KeaDenseFactor(m, w->G, w->perm))
+        return 0;
+
+    /* Solve from cand = x with the free and sliding rows zeroed, then one refinement step. */
+    for (i = 0; i < n; ++i)
+        w->cand[i] = (w->state[i] == KEA_FREE || KeaIsSliding(lcp, w, i)) ? ME_R(0.0) : x[i];
+    KeaPolishResidual(lcp, w);
+    KeaWoodburySolve(w, m, w->y);
+    KeaPolishCandidate(lcp, w);
+    KeaPolishResidual(lcp, w);
+    KeaWoodburySolve(w, m, w->y);
+    for (p = 0; p < k; ++p)
+        w->y[p] += w->cand[c->F[p]];
+    KeaPolishCandidate(lcp, w);
+
+    /* Accept only a feasible, complementary candidate. */
+    for (i = 0; i < n; ++i) {
+        rScale = KeaMax(rScale, KeaFabs(lcp->r[i]));
+        diagMax = KeaMax(diagMax, lcp->A[(size_t)i * (size_t)n + (size_t)i]);
+        xScale = KeaMax(xScale, KeaFabs(w->cand[i]));
+    }
+    tolW = ME_R(10.0) * KEA_DIRECT_TOL * (rScale + diagMax * xScale);
+    tolX = ME_R(100.0) * KEA_DIRECT_TOL * xScale;
+    for (j = 0; j < n; ++j)
+        if (w->cand[j] != ME_R(0.0))
+            w->nonzero[nz++] = j;
+    for (i = 0; i < n; ++i) { /* natural-map test at the candidate's own bounds, every row alike */
+        const MeReal *Ai = lcp->A + (size_t)i * (size_t)n;
+        const MeReal d = Ai[i] > ME_R(0.0) ? Ai[i] : ME_R(1.0);
+        MeReal lo, hi, wi = -lcp->r[i];
+        KeaDenseBounds(lcp, w->cand, i, &lo, &hi);
+        if (w->cand[i] < lo - tolX || w->cand[i] > hi + tolX)
+            return 0;
+        for (j = 0; j < nz; ++j)
+            wi += Ai[w->nonzero[j]] * w->cand[w->nonzero[j]];
+        if (d * KeaFabs(KeaClamp(w->cand[i], lo, hi) - KeaClamp(w->cand[i] - wi / d, lo, hi)) > tolW)
+            return 0;
+    }
+    for (i = 0; i < n; ++i) {
+        KeaDenseBounds(lcp, w->cand, i, &w->lo[i], &w->hi[i]);
+        x[i] = KeaClamp(w->cand[i], w->lo[i], w->hi[i]);
+    }
+    return 1;
+}
+
+/* One step of iterative refinement on the free block: x_F += A_FF^-1 (r - A x)_F. */
+static void KeaDenseRefine(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
+{
+    const int n = lcp->n;
+    KeaCholesky *c = &w->chol;
+    int p, j, nz = 0;
+    if (c->size == 0)
+        return;
+    for (j = 0; j < n; ++j)
+        if (x[j] != ME_R(0.0))
+            w->nonzero[nz++] = j;
+    for (p = 0; p < c->size; ++p) {
+        const MeReal *Ai = lcp->A + (size_t)c->F[p] * (size_t)n;
+        MeReal s = lcp->r[c->F[p]];
+        for (j = 0; j < nz; ++j)
+            s -= Ai[w->nonzero[j]] * x[w->nonzero[j]];
+        w->y[p] = s;
+    }
+    KeaCholeskySolve(c, w->y);
+    for (p = 0; p < c->size; ++p) {
+        const int i = c->F[p];
+        x[i] = KeaClamp(x[i] + w->y[p], w->lo[i], w->hi[i]);
+    }
+}
+
+KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses, KeaDenseWork *w,
+                           MeReal *x, KeaStats *stats)
+{
+    const int n = lcp->n;
+    const int pivotCap = stats->pivots + (maxPivots > 0 ? maxPivots : 8 * n + 64);
+    KeaStatus status;
+    int i, polished = 0, passes = 1;
+
+    w->chol.regularised = 0;
+    /* Warm start: bounds from x as given (links read the unclamped normal impulses), then clamp. */
+    for (i = 0; i < n; ++i)
+        KeaDenseBounds(lcp, x, i, &w->lo[i], &w->hi[i]);
+    for (i = 0; i < n; ++i)
+        w->state[i] = KeaStateFromValue(&x[i], w->lo[i], w->hi[i]);
+    KeaDenseFactorFree(lcp, w, stats);
+
+    for (;;) {
+        MeReal moved, scale = ME_R(0.0);
+        status = KeaActiveSet(lcp, w, x, pivotCap, stats);
+        if (status != KeaStatusOk || !lcp->link)
+            break;
+        moved = KeaDenseBoundMotion(lcp, w, x);
+        for (i = 0; i < n; ++i)
+            scale = KeaMax(scale, KeaFabs(x[i]));
+        if (moved <= ME_R(0.0))
+            break; /* x is consistent with its own friction bounds */
+        /* Try the exact coupled solve with the current states; else settle for small motion. */
+        if (KeaDensePolish(lcp, w, x)) {
+            polished = 1;
+            break;
+        }
+        if (moved <= KEA_DIRECT_TOL * ME_R(10.0) * scale)
+            break;
+        if (passes >= maxPasses) {
+            status = KeaStatusFrictionPasses;
+            break;
+        }
+        KeaDenseApplyBounds(lcp, w, x, stats);
+        ++passes;
+    }
+    if (!polished)
+        KeaDenseRefine(lcp, w, x);
+    stats->frictionPasses += passes;
+    stats->regularised += w->chol.regularised;
+    return status;
+}

@@ -1,0 +1,210 @@
+/* test_kea_iterative.c -- Kea's iterative path against its direct path.
+ *
+ * The iterates of the iterative path for caps 1, 5, 20, 100, 1000 are prefixes of one deterministic
+ * sequence, and every operation in it (a projected Gauss-Seidel row or block update, an accepted
+ * subspace step) lowers the QP objective f(x) = 1/2 x^T A x - r^T x. So on box LCPs the objective gap
+ * f(x_k) - f(x*) must not increase with the cap, and it bounds the error: 1/2 |x_k - x*|_A^2 <= gap.
+ * f is evaluated in double from the test's own dense A. The max-norm error to the direct solution is
+ * printed as the convergence table of docs/kea.md and must reach rounding level at the largest cap. */
+#include "karma_test.h"
+
+#include "kea_test_problems.h"
+
+static double objective(int n, const double *A, const MeReal *r, const MeReal *x)
+{
+    double f = 0.0;
+    int i, j;
+    for (i = 0; i < n; ++i) {
+        double ax = 0.0;
+        for (j = 0; j < n; ++j)
+            ax += A[i * n + j] * (double)x[j];
+        f += 0.5 * (double)x[i] * ax - (double)r[i] * (double)x[i];
+    }
+    return f;
+}
+
+typedef struct Variant {
+    const char *name;
+    int blockRows, subspace;
+} Variant;
+
+static const Variant variants[] = {{"PGS", 1, 0}, {"block PGS", 12, 0}, {"block PGS + SM (default)", 12, 4}};
+static const int caps[] = {1, 5, 20, 100, 1000};
+#define NCAPS 5
+
+/* Random box LCPs of 36 rows in blocks of 3 rows on the same bodies, over 8 bodies. */
+static void make_problem(KtProblem *t, int seed)
+{
+    KtRng rng = kt_rng((uint64_t)(9000 + seed));
+    int i;
+    kt_random_problem(t, &rng, 36, 8, 1e-3, 1e-2);
+    for (i = 0; i < 36; ++i)
+        if (i % 3) { /* rows of a block share their bodies */
+            t->rowBodies[i][0] = t->rowBodies[i - i % 3][0];
+            t->rowBodies[i][1] = t->rowBodies[i - i % 3][1];
+        }
+}
+
+static void error_does_not_grow_with_iteration_cap(void **state)
+{
+    double table[3][NCAPS] = {{0}};
+    int v, k, seed;
+    (void)state;
+    for (seed = 0; seed < 10; ++seed) {
+        KtProblem t;
+        MeReal xd[36], xi[36];
+        double A[36 * 36], fStar, gapPrev = INFINITY, scale;
+        KeaParameters direct = kt_params(KeaPathDirect);
+        KeaStats st;
+        make_problem(&t, seed);
+        kt_dense_matrix(&t.p, A);
+        assert_int_equal(kt_solve(&t.p, &direct, xd, NULL, &st), KeaStatusOk);
+        fStar = objective(36, A, t.rhs, xd);
+        scale = 1.0;
+        for (k = 0; k < 36; ++k)
+            scale = fmax(scale, fabs((double)xd[k]));
+        for (v = 0; v < 3; ++v) {
+            gapPrev = INFINITY;
+            for (k = 0; k < NCAPS; ++k) {
+                KeaParameters prm = kt_params(KeaPathIterative);
+                double gap, err = 0.0;
+                int i;
+                prm.maxIterations = caps[k];
+                prm.tolerance = ME_R(0.0);
+                prm.maxBlockRows = variants[v].blockRows;
+                prm.subspaceIterations = variants[v].subspace;
+                /* tolerance 0: stops early only at an exact fixed point */
+                if (kt_solve(&t.p, &prm, xi, NULL, &st) == KeaStatusMaxIterations)
+                    assert_int_equal(st.iterations, caps[k]);
+                else
+                    assert_true(st.iterations <= caps[k]);
+                gap = objective(36, A, t.rhs, xi) - fStar;
+                /* non-increasing, up to the rounding of f itself */
+                assert_true(gap <= gapPrev + ME_TOL(1e-12, 1e-5) * (1.0 + fabs(fStar)));
+                gapPrev = gap;
+                for (i = 0; i < 36; ++i)
+                    err = fmax(err, fabs((double)xi[i] - (double)xd[i]) / scale);
+                table[v][k] = fmax(table[v][k], err);
+            }
+        }
+        kt_free(&t);
+    }
+    print_message("max relative error to the direct solution over 10 random 36-row box LCPs:\n");
+    print_message("%-26s %10s %10s %10s %10s %10s\n", "iterations", "1", "5", "20", "100", "1000");
+    for (v = 0; v < 3; ++v)
+        print_message("%-26s %10.2e %10.2e %10.2e %10.2e %10.2e\n", variants[v].name, table[v][0], table[v][1],
+                      table[v][2], table[v][3], table[v][4]);
+    for (v = 0; v < 3; ++v)
+        assert_near(table[v][NCAPS - 1], 0.0, ME_TOL(1e-8, 2e-3));
+    /* the improvements pay: at 20 iterations the default is far closer than plain PGS */
+    assert_true(table[2][2] < 0.1 * table[0][2]);
+}
+
+/* With friction links the iterative path converges to the direct path's coupled solution. */
+static void friction_links_converge_to_direct(void **state)
+{
+    double worst = 0.0;
+    int seed;
+    (void)state;
+    for (seed = 0; seed < 20; ++seed) {
+        KtRng rng = kt_rng((uint64_t)(700 + seed));
+        KtProblem t;
+        MeReal xd[40], xi[40];
+        KeaParameters direct = kt_params(KeaPathDirect), iter = kt_params(KeaPathIterative);
+        KeaStats st;
+        double err = 0.0, scale = 1.0;
+        int i;
+        kt_random_contacts(&t, &rng, 10, 6, 6, 0.2, 1e-2);
+        direct.maxFrictionPasses = 50;
+        assert_int_equal(kt_solve(&t.p, &direct, xd, NULL, &st), KeaStatusOk);
+        iter.maxIterations = 2000;
+        iter.tolerance = ME_R(0.0);
+        kt_solve(&t.p, &iter, xi, NULL, &st);
+        for (i = 0; i < t.p.nRows; ++i)
+            scale = fmax(scale, fabs((double)xd[i]));
+        for (i = 0; i < t.p.nRows; ++i)
+            err = fmax(err, fabs((double)xi[i] - (double)xd[i]) / scale);
+        worst = fmax(worst, err);
+        assert_near(err, 0.0, ME_TOL(1e-7, 2e-3));
+        assert_near(st.residual, 0.0, ME_TOL(1e-7, 1e-3));
+        kt_free(&t);
+    }
+    print_message("friction links: iterative (2000 iterations) vs direct, max relative error %.3g\n", worst);
+}
+
+/* Over-relaxation changes the path, not the limit. */
+static void sor_converges_to_the_same_solution(void **state)
+{
+    KtProblem t;
+    MeReal xd[36], xi[36];
+    KeaParameters direct = kt_params(KeaPathDirect), iter = kt_params(KeaPathIterative);
+    KeaStats st;
+    int i;
+    (void)state;
+    make_problem(&t, 3);
+    assert_int_equal(kt_solve(&t.p, &direct, xd, NULL, &st), KeaStatusOk);
+    iter.sor = ME_R(1.3);
+    iter.maxBlockRows = 1;
+    iter.subspaceIterations = 0;
+    iter.maxIterations = 3000;
+    iter.tolerance = ME_R(0.0);
+    kt_solve(&t.p, &iter, xi, NULL, &st);
+    for (i = 0; i < 36; ++i)
+        assert_near(xi[i], xd[i], ME_TOL(1e-8, 2e-3) * (1.0 + fabs((double)xd[i])));
+    kt_free(&t);
+}
+
+/* A loose tolerance stops the sweeps early and says so. */
+static void tolerance_stops_early(void **state)
+{
+    KtProblem t;
+    MeReal x[36];
+    KeaParameters iter = kt_params(KeaPathIterative);
+    KeaStats st;
+    (void)state;
+    make_problem(&t, 5);
+    iter.maxIterations = 1000;
+    iter.tolerance = ME_R(1e-3);
+    assert_int_equal(kt_solve(&t.p, &iter, x, NULL, &st), KeaStatusOk);
+    assert_true(st.iterations > 1 && st.iterations < 1000);
+    iter.tolerance = ME_R(0.0);
+    iter.maxIterations = 3;
+    assert_int_equal(kt_solve(&t.p, &iter, x, NULL, &st), KeaStatusMaxIterations);
+    assert_int_equal(st.iterations, 3);
+    assert_int_equal(st.subspaceSteps > 0, 1);
+    kt_free(&t);
+}
+
+/* Warm-started from the exact solution, one sweep changes nothing and reports convergence. */
+static void warm_start_at_solution_stays(void **state)
+{
+    KtProblem t;
+    MeReal xd[36], xi[36];
+    KeaParameters direct = kt_params(KeaPathDirect), iter = kt_params(KeaPathIterative);
+    KeaStats st;
+    int i;
+    (void)state;
+    make_problem(&t, 8);
+    assert_int_equal(kt_solve(&t.p, &direct, xd, NULL, &st), KeaStatusOk);
+    for (i = 0; i < 36; ++i)
+        t.x0[i] = xd[i];
+    t.p.x0 = t.x0;
+    iter.tolerance = ME_TOL(1e-9, 1e-4);
+    assert_int_equal(kt_solve(&t.p, &iter, xi, NULL, &st), KeaStatusOk);
+    assert_int_equal(st.iterations, 1);
+    for (i = 0; i < 36; ++i)
+        assert_near(xi[i], xd[i], ME_TOL(1e-9, 1e-4) * (1.0 + fabs((double)xd[i])));
+    kt_free(&t);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(error_does_not_grow_with_iteration_cap),
+        cmocka_unit_test(friction_links_converge_to_direct),
+        cmocka_unit_test(sor_converges_to_the_same_solution),
+        cmocka_unit_test(tolerance_stops_early),
+        cmocka_unit_test(warm_start_at_solution_stays),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
