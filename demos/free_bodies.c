@@ -214,7 +214,7 @@ static void reportFreeBodies(const DemoInstance *demo, FILE *out)
     MeReal h = demo->steps ? demo->time / (MeReal)demo->steps : 0;
     MeVector3 v, w;
 
-    fprintf(out, "  projectile: apex %.3f m (continuous answer v²/2g = %.3f m)", (double)s->apex,
+    fprintf(out, "    projectile: apex %.3f m (continuous answer v²/2g = %.3f m)", (double)s->apex,
             (double)(PROJECTILE_SPEED * PROJECTILE_SPEED / (2 * GRAVITY)));
     if (s->landed)
         fprintf(out, ", back at launch height after %.3f m (2·vx·vy/g = %.3f m)\n", (double)s->landingX,
@@ -222,17 +222,17 @@ static void reportFreeBodies(const DemoInstance *demo, FILE *out)
     else
         fprintf(out, ", not yet back at launch height\n");
 
-    fprintf(out, "  tumbler: %d flips of the intermediate axis; largest relative drift of rotational energy %.2g, "
+    fprintf(out, "    tumbler: %d flips of the intermediate axis; largest relative drift of rotational energy %.2g, "
             "of |L| %.2g\n", s->flips, (double)s->energyDrift, (double)s->momentumDrift);
 
     MdtBodyGetAngularVelocity(s->wheel, w);
-    fprintf(out, "  wheel: spins at %.3f rad/s, turned %.4f rad in the last step (ω·h = %.4f; without the "
+    fprintf(out, "    wheel: spins at %.3f rad/s, turned %.4f rad in the last step (ω·h = %.4f; without the "
             "fast-spin axis 2·atan(ω·h/2) = %.4f)\n", (double)magnitude(w), (double)s->wheelStepAngle,
             (double)(WHEEL_SPIN * h), (double)(2 * MeAtan2(WHEEL_SPIN * h / 2, 1)));
 
     MdtBodyGetLinearVelocity(s->damped, v);
     MdtBodyGetAngularVelocity(s->damped, w);
-    fprintf(out, "  damped: falls at %.3f m/s (terminal m·g/c = %.3f m/s, continuous answer at t = %.2f s: %.3f "
+    fprintf(out, "    damped: falls at %.3f m/s (terminal m·g/c = %.3f m/s, continuous answer at t = %.2f s: %.3f "
             "m/s), spin %.4f rad/s (continuous: %.4f)\n", (double)-v[1],
             (double)(DAMPED_MASS * GRAVITY / DAMPED_LINEAR_DRAG), (double)demo->time,
             (double)(DAMPED_MASS * GRAVITY / DAMPED_LINEAR_DRAG) *
