@@ -1,0 +1,57 @@
+# Karma: a thin wrapper around CMake for the README's commands.
+#
+#   make demo      build, then run the default scene headless (karma run freebodies)
+#   make test      build and test float (-O2, checks on), double, and ASan + UBSan; prints "N passed, N failed"
+#   make build     build the float configuration (build/float)
+#   make install   install it (PREFIX=/usr/local by default)
+#   make deps      install missing Debian packages (as root), or print the apt-get line
+#   make clean     remove build/
+#
+# Benchmarks (make bench) arrive with bench/.
+
+BUILD   ?= build/float
+PREFIX  ?= /usr/local
+JOBS    ?= 2
+DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config
+
+.PHONY: all deps build test demo install clean
+
+all: build
+
+# Packages are checked with dpkg-query; on a system without dpkg the check is skipped.
+deps:
+	@if command -v dpkg-query >/dev/null 2>&1; then \
+	  missing=""; \
+	  for p in $(DEBIAN_PACKAGES); do \
+	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed$$' || missing="$$missing $$p"; \
+	  done; \
+	  if [ -n "$$missing" ]; then \
+	    if [ "$$(id -u)" = 0 ]; then \
+	      echo "installing:$$missing"; \
+	      export DEBIAN_FRONTEND=noninteractive; \
+	      apt-get -o DPkg::Lock::Timeout=600 update && \
+	      apt-get -o DPkg::Lock::Timeout=600 install -y --no-install-recommends$$missing || exit 1; \
+	    else \
+	      echo "Karma needs these Debian packages:$$missing"; \
+	      echo "install them with:"; \
+	      echo "  sudo apt-get -o DPkg::Lock::Timeout=600 install -y$$missing"; \
+	      exit 1; \
+	    fi; \
+	  fi; \
+	fi
+
+build: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DKARMA_CHECKS=ON
+	cmake --build $(BUILD) -j $(JOBS)
+
+test: deps
+	@JOBS=$(JOBS) bash tests/run_configs.sh float double asan
+
+demo: build
+	$(BUILD)/tools/karma run freebodies
+
+install: build
+	cmake --install $(BUILD) --prefix $(PREFIX)
+
+clean:
+	rm -rf build

@@ -1,0 +1,25 @@
+# Determinism: the golden-hash scene (tests/determinism/determinism_scene.c) against two copies of the
+# core library, one compiled at -O0 and one at -O2, with the same flags otherwise (-ffp-contract=off,
+# no fast-math, from KarmaFlags.cmake). Both programs must reproduce the same golden hash, so an
+# optimisation that changes floating-point results is caught.
+foreach(level O0 O2)
+  set(lib karma_determinism_${level})
+  add_library(${lib} STATIC ${KARMA_CORE_SOURCES})
+  target_include_directories(${lib} PUBLIC ${PROJECT_SOURCE_DIR}/include ${PROJECT_BINARY_DIR}/include
+                             PRIVATE ${PROJECT_SOURCE_DIR}/src)
+  target_compile_definitions(${lib} PRIVATE KARMA_BUILDING_LIBRARY
+                             $<$<BOOL:${KARMA_CHECKS}>:ME_ENABLE_CHECKS=1> PUBLIC ME_STATIC)
+  karma_apply_warnings(${lib})
+  # Comes after CMAKE_C_FLAGS_<CONFIG> on the command line, so it sets the level whatever the build type.
+  target_compile_options(${lib} PRIVATE -${level})
+  target_link_libraries(${lib} PUBLIC m)
+
+  set(exe test_determinism_${level})
+  add_executable(${exe} ${CMAKE_CURRENT_SOURCE_DIR}/determinism/determinism_scene.c ${KARMA_TEST_SUPPORT})
+  target_include_directories(${exe} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/support ${CMOCKA_INCLUDE_DIR}
+                             ${PROJECT_SOURCE_DIR}/src)
+  target_link_libraries(${exe} PRIVATE ${lib} ${CMOCKA_LIBRARY} m)
+  karma_apply_warnings(${exe})
+  target_compile_options(${exe} PRIVATE -Wno-double-promotion)
+  add_test(NAME ${exe} COMMAND ${exe})
+endforeach()

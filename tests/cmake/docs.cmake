@@ -1,0 +1,6 @@
+# The documentation stays true: the README's example is examples/hello.c, and docs/errors.md lists
+# exactly the codes of include/karma/MeErrorCodes.h.
+add_test(NAME docs_readme_example_is_hello_c
+         COMMAND ${CMAKE_COMMAND} -DSOURCE=${PROJECT_SOURCE_DIR} -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/readme_example.cmake)
+add_test(NAME docs_error_codes_listed
+         COMMAND ${CMAKE_COMMAND} -DSOURCE=${PROJECT_SOURCE_DIR} -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/error_codes_doc.cmake)

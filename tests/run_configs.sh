@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# run_configs.sh -- build and test Karma in several configurations; `make test` calls it.
+#
+#   tests/run_configs.sh [CONFIG...]        CONFIG: float | double | asan (default: all three)
+#
+#   float   build/float   Release (-O3) with KARMA_CHECKS=ON: argument checks on in an optimised build
+#   double  build/double  Release, KARMA_DOUBLE=ON (MeReal = double)
+#   asan    build/asan    Debug, KARMA_SANITIZE=ON (AddressSanitizer + UBSan, no recovery)
+#
+# Every configuration compiles with -std=c11 -Wall -Wextra -Werror -pedantic (and more; see
+# cmake/KarmaFlags.cmake) and runs the whole CTest suite. A configuration that fails to configure or
+# build counts as one failed test. The last line is the summary CI reads: "N passed, N failed".
+set -uo pipefail
+cd "$(dirname "$0")/.."
+
+JOBS=${JOBS:-2}
+configs=("$@")
+[ ${#configs[@]} -eq 0 ] && configs=(float double asan)
+
+total_passed=0
+total_failed=0
+summary=()
+start_all=$(date +%s)
+
+for config in "${configs[@]}"; do
+    case $config in
+        float)  options=(-DCMAKE_BUILD_TYPE=Release -DKARMA_CHECKS=ON -DKARMA_DOUBLE=OFF -DKARMA_SANITIZE=OFF) ;;
+        double) options=(-DCMAKE_BUILD_TYPE=Release -DKARMA_DOUBLE=ON -DKARMA_SANITIZE=OFF) ;;
+        asan)   options=(-DCMAKE_BUILD_TYPE=Debug -DKARMA_SANITIZE=ON -DKARMA_DOUBLE=OFF) ;;
+        *) echo "run_configs.sh: unknown configuration '$config' (float, double or asan)" >&2; exit 2 ;;
+    esac
+    dir=build/$config
+    start=$(date +%s)
+    echo "==== $config: configure and build in $dir"
+    mkdir -p "$dir"
+    if ! cmake -S . -B "$dir" "${options[@]}" >"$dir/configure.log" 2>&1; then
+        cat "$dir/configure.log"
+        echo "==== $config: CONFIGURE FAILED"
+        total_failed=$((total_failed + 1))
+        summary+=("$config: configure failed")
+        continue
+    fi
+    if ! cmake --build "$dir" -j "$JOBS"; then
+        echo "==== $config: BUILD FAILED"
+        total_failed=$((total_failed + 1))
+        summary+=("$config: build failed")
+        continue
+    fi
+    echo "==== $config: test"
+    log=$dir/ctest.log
+    ctest --test-dir "$dir" --output-on-failure -j "$JOBS" 2>&1 | tee "$log"
+    line=$(grep -E 'tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -1)
+    if [ -z "$line" ]; then
+        echo "==== $config: ctest produced no result"
+        total_failed=$((total_failed + 1))
+        summary+=("$config: no test result")
+        continue
+    fi
+    failed=$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\1/' <<<"$line")
+    count=$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\2/' <<<"$line")
+    passed=$((count - failed))
+    total_passed=$((total_passed + passed))
+    total_failed=$((total_failed + failed))
+    summary+=("$config: $passed passed, $failed failed ($(( $(date +%s) - start )) s)")
+done
+
+echo
+echo "==== summary ($(( $(date +%s) - start_all )) s)"
+for s in "${summary[@]}"; do echo "  $s"; done
+echo "$total_passed passed, $total_failed failed"
+[ "$total_failed" -eq 0 ]

@@ -1,0 +1,291 @@
+/* karma.c -- the karma command-line tool: list the demo scenes and run one headless.
+ *
+ *     karma list
+ *     karma run SCENE [--steps N] [--dt H] [--csv FILE]
+ *     karma version
+ *     karma --help
+ *
+ * `run` builds the scene from the registry (demos/), steps it and prints what happened: body
+ * counts, the time spent in each stage of the step (from the world's MeProfile), energy and momenta
+ * before and after, final positions and the scene's own report. `--csv` writes every body's state
+ * at every step. Exit status: 0 on success, 1 when the run reported a Karma warning or the scene
+ * could not be built, 2 on a bad command line. */
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "demo.h"
+
+#define EXIT_USAGE 2
+
+static const char *const stageNames[] = {"Partition", "AutoDisable", "Pack", "Solve", "Integrate", "Unpack"};
+#define STAGE_COUNT ((int)(sizeof stageNames / sizeof stageNames[0]))
+
+static void printUsage(FILE *out)
+{
+    fprintf(out,
+            "usage: karma <command> [options]\n"
+            "\n"
+            "commands:\n"
+            "  list                      list the demo scenes\n"
+            "  run SCENE [options]       run SCENE headless and print what happened\n"
+            "      --steps N             number of steps (default: the scene's)\n"
+            "      --dt H                step size in seconds (default: the scene's)\n"
+            "      --csv FILE            write every body's state at every step to FILE\n"
+            "  version                   print the library version and precision\n"
+            "  help, --help, -h          print this help\n"
+            "\n"
+            "The first scene of `karma list` is the default demo (`make demo`).\n");
+}
+
+static int usageError(const char *format, const char *argument)
+{
+    fprintf(stderr, "karma: ");
+    fprintf(stderr, format, argument);
+    fprintf(stderr, "\n(see `karma --help`)\n");
+    return EXIT_USAGE;
+}
+
+static int listScenes(void)
+{
+    for (int i = 0; i < DemoSceneCount(); i++) {
+        const DemoScene *scene = DemoSceneAt(i);
+        printf("%-12s %s (%d steps of %.4g s)%s\n", scene->name, scene->description, scene->defaultSteps,
+               (double)scene->defaultStepSize, i == 0 ? " [default]" : "");
+    }
+    return EXIT_SUCCESS;
+}
+
+/* ---- command-line values ------------------------------------------------------------------- */
+
+static MeBool parseSteps(const char *text, long *steps)
+{
+    char *end;
+    errno = 0;
+    long value = strtol(text, &end, 10);
+    if (errno || end == text || *end || value < 0 || value > INT_MAX)
+        return MEFALSE;
+    *steps = value;
+    return METRUE;
+}
+
+static MeBool parseStepSize(const char *text, MeReal *h)
+{
+    char *end;
+    errno = 0;
+    double value = strtod(text, &end);
+    if (errno || end == text || *end || !(value > 0) || !isfinite(value) || value > 10)
+        return MEFALSE;
+    *h = (MeReal)value;
+    return METRUE;
+}
+
+/* ---- what the run measures ----------------------------------------------------------------- */
+
+typedef struct Totals {
+    double kinetic, potential;       /* J */
+    double momentum[3];              /* kg·m/s */
+    double angularMomentum[3];       /* about the world origin, kg·m²/s */
+    double gravityImpulsePerSecond[3]; /* Σ m·g over enabled bodies, N */
+    int bodies, enabled;
+} Totals;
+
+static void measure(MdtWorldID world, Totals *t)
+{
+    MeVector3 g;
+    memset(t, 0, sizeof *t);
+    MdtWorldGetGravity(world, g);
+    for (MdtBodyID b = MdtBodyGetFirst(world); b; b = MdtBodyGetNext(b)) {
+        MeVector3 x, v, L;
+        double m = (double)MdtBodyGetMass(b);
+        MdtBodyGetCenterOfMassPosition(b, x);
+        MdtBodyGetLinearVelocity(b, v);
+        DemoBodyAngularMomentum(b, L);
+        t->bodies++;
+        if (MdtBodyIsEnabled(b)) {
+            t->enabled++;
+            for (int k = 0; k < 3; k++)
+                t->gravityImpulsePerSecond[k] += m * (double)g[k];
+        }
+        t->kinetic += (double)MdtBodyGetKineticEnergy(b);
+        for (int k = 0; k < 3; k++) {
+            t->potential -= m * (double)g[k] * (double)x[k];
+            t->momentum[k] += m * (double)v[k];
+        }
+        t->angularMomentum[0] += m * ((double)x[1] * (double)v[2] - (double)x[2] * (double)v[1]) + (double)L[0];
+        t->angularMomentum[1] += m * ((double)x[2] * (double)v[0] - (double)x[0] * (double)v[2]) + (double)L[1];
+        t->angularMomentum[2] += m * ((double)x[0] * (double)v[1] - (double)x[1] * (double)v[0]) + (double)L[2];
+    }
+}
+
+static void printVector(const char *label, const double v[3], const char *unit)
+{
+    printf("%s(%.4f, %.4f, %.4f)%s%s", label, v[0], v[1], v[2], *unit ? " " : "", unit);
+}
+
+static void writeCsvHeader(FILE *csv)
+{
+    fprintf(csv, "step,time,body,name,enabled,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz\n");
+}
+
+static void writeCsvRows(FILE *csv, const DemoInstance *demo)
+{
+    int index = 0;
+    for (MdtBodyID b = MdtBodyGetFirst(demo->world); b; b = MdtBodyGetNext(b), index++) {
+        MeVector3 x, v, w;
+        MeVector4 q;
+        const char *name = DemoBodyName(demo, b);
+        MdtBodyGetPosition(b, x);
+        MdtBodyGetQuaternion(b, q);
+        MdtBodyGetLinearVelocity(b, v);
+        MdtBodyGetAngularVelocity(b, w);
+        fprintf(csv, "%lu,%.9g,%d,%s,%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
+                demo->steps, (double)demo->time, index, name ? name : "", MdtBodyIsEnabled(b) ? 1 : 0,
+                (double)x[0], (double)x[1], (double)x[2], (double)q[0], (double)q[1], (double)q[2], (double)q[3],
+                (double)v[0], (double)v[1], (double)v[2], (double)w[0], (double)w[1], (double)w[2]);
+    }
+}
+
+/* ---- karma run ------------------------------------------------------------------------------ */
+
+static int runScene(int argc, char **argv)
+{
+    if (argc < 1)
+        return usageError("%s", "`run` needs a scene name; `karma list` shows them");
+    const DemoScene *scene = DemoSceneFind(argv[0]);
+    if (!scene)
+        return usageError("no scene called '%s'; `karma list` shows the scenes", argv[0]);
+
+    long steps = scene->defaultSteps;
+    MeReal h = scene->defaultStepSize;
+    const char *csvPath = NULL;
+    for (int i = 1; i < argc; i++) {
+        const char *option = argv[i];
+        const char *value = i + 1 < argc ? argv[i + 1] : NULL;
+        if (strcmp(option, "--steps") == 0 || strcmp(option, "--dt") == 0 || strcmp(option, "--csv") == 0) {
+            if (!value)
+                return usageError("option %s needs a value", option);
+            i++;
+        } else {
+            return usageError("unknown option '%s' for `run`", option);
+        }
+        if (strcmp(option, "--steps") == 0 && !parseSteps(value, &steps))
+            return usageError("--steps takes a whole number from 0 to 2147483647, not '%s'", value);
+        if (strcmp(option, "--dt") == 0 && !parseStepSize(value, &h))
+            return usageError("--dt takes a step size in seconds, greater than 0 and at most 10, not '%s'", value);
+        if (strcmp(option, "--csv") == 0)
+            csvPath = value;
+    }
+
+    FILE *csv = NULL;
+    if (csvPath) {
+        csv = fopen(csvPath, "w");
+        if (!csv) {
+            fprintf(stderr, "karma: cannot write '%s': %s\n", csvPath, strerror(errno));
+            return EXIT_FAILURE;
+        }
+        writeCsvHeader(csv);
+    }
+
+    unsigned long warningsBefore = MeMessageGetTotalCount(ME_LEVEL_WARNING);
+    DemoInstance demo;
+    if (!DemoCreate(scene, &demo)) {
+        fprintf(stderr, "karma: scene '%s' could not be built (see the messages above)\n", scene->name);
+        if (csv)
+            fclose(csv);
+        return EXIT_FAILURE;
+    }
+
+    Totals before, after;
+    measure(demo.world, &before);
+    if (csv)
+        writeCsvRows(csv, &demo);
+    for (long i = 0; i < steps; i++) {
+        DemoStep(&demo, h);
+        if (csv)
+            writeCsvRows(csv, &demo);
+    }
+    measure(demo.world, &after);
+    unsigned long warnings = MeMessageGetTotalCount(ME_LEVEL_WARNING) - warningsBefore;
+
+    printf("karma run %s: %s\n", scene->name, scene->description);
+    printf("  %s; %ld steps of %.6g s = %.4g s simulated\n", MeToolkitVersionString(), steps, (double)h,
+           (double)demo.time);
+    printf("  bodies: %d, enabled %d at the start and %d at the end; constraints: %d\n", after.bodies,
+           before.enabled, after.enabled, MdtWorldGetTotalConstraints(demo.world));
+
+    const MeProfile *profile = MdtWorldGetProfile(demo.world);
+    double perStep = steps > 0 ? 1e6 / (double)steps : 0;
+    printf("  time per step by stage (µs, mean of %ld):", steps);
+    for (int s = 0; s < STAGE_COUNT; s++)
+        printf(" %s %.3f", stageNames[s], MeProfileGetSectionTotal(profile, stageNames[s]) * perStep);
+    printf("; whole step %.3f\n", MeProfileGetSectionTotal(profile, "Dynamics") * perStep);
+
+    printf("  energy (kinetic + gravitational potential): before %.4f J, after %.4f J\n",
+           before.kinetic + before.potential, after.kinetic + after.potential);
+    double expected[3];
+    for (int k = 0; k < 3; k++)
+        expected[k] = before.momentum[k] + before.gravityImpulsePerSecond[k] * (double)demo.time;
+    printVector("  linear momentum: before ", before.momentum, "");
+    printVector(", after ", after.momentum, "kg·m/s");
+    printVector(" (before + gravity's impulse: ", expected, "");
+    printf(")\n");
+    printVector("  angular momentum about the origin: before ", before.angularMomentum, "");
+    printVector(", after ", after.angularMomentum, "kg·m²/s");
+    printf("\n");
+
+    printf("  final positions (m):\n");
+    int index = 0;
+    for (MdtBodyID b = MdtBodyGetFirst(demo.world); b; b = MdtBodyGetNext(b), index++) {
+        MeVector3 x;
+        const char *name = DemoBodyName(&demo, b);
+        char fallback[32];
+        if (!name) {
+            snprintf(fallback, sizeof fallback, "body %d", index);
+            name = fallback;
+        }
+        MdtBodyGetPosition(b, x);
+        printf("    %-12s (%10.4f, %10.4f, %10.4f)%s\n", name, (double)x[0], (double)x[1], (double)x[2],
+               MdtBodyIsEnabled(b) ? "" : "  disabled");
+    }
+    if (scene->report) {
+        printf("  what the scene measured:\n");
+        scene->report(&demo, stdout);
+    }
+    printf("  Karma warnings during the run: %lu\n", warnings);
+
+    DemoDestroy(&demo);
+    if (csv && fclose(csv) != 0) {
+        fprintf(stderr, "karma: error writing '%s'\n", csvPath);
+        return EXIT_FAILURE;
+    }
+    return warnings ? EXIT_FAILURE : EXIT_SUCCESS;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        printUsage(stderr);
+        return EXIT_USAGE;
+    }
+    const char *command = argv[1];
+    if (strcmp(command, "help") == 0 || strcmp(command, "--help") == 0 || strcmp(command, "-h") == 0) {
+        printUsage(stdout);
+        return EXIT_SUCCESS;
+    }
+    if (strcmp(command, "list") == 0) {
+        if (argc > 2)
+            return usageError("`list` takes no arguments (got '%s')", argv[2]);
+        return listScenes();
+    }
+    if (strcmp(command, "version") == 0) {
+        printf("%s\n", MeToolkitVersionString());
+        return EXIT_SUCCESS;
+    }
+    if (strcmp(command, "run") == 0)
+        return runScene(argc - 2, argv + 2);
+    return usageError("unknown command '%s'", command);
+}
