@@ -5,6 +5,7 @@
 
 #include "../me/check.h"
 #include "../me/handle.h"
+#include "constraint.h"
 #include "world.h"
 
 /* Karma's defaults (KARMA.md §5.1, decision D1 for auto-disable). */
@@ -17,8 +18,8 @@
 #define DEFAULT_AD_ANGULAR_ACCELERATION ME_R(0.05)
 #define DEFAULT_AD_ALIVE_TIME ME_R(0.2)
 
-/* Room reserved in a constraint slot; constraints (a later layer) must fit in it. */
-#define CONSTRAINT_SLOT_BYTES 512
+/* A constraint slot holds the common header and the largest type's data (constraint.h). */
+#define CONSTRAINT_SLOT_BYTES sizeof(MdtConstraint)
 
 MdtWorld *MdtWorldFromID(MdtWorldID id, const char *function)
 {
