@@ -1,0 +1,72 @@
+/* McdTypes.h -- the IDs, geometry type numbers and pair records of Karma Collision (Mcd).
+ *
+ * IDs are opaque, checked handles (as in Mdt): NULL means none, and a destroyed, stale or foreign ID
+ * is reported through the message hook and ignored, in every build. Model pairs and intersection
+ * results are plain structs, as in Karma: the space hands out pairs, the application (or the bridge)
+ * passes them to McdHello / McdIntersect / McdGoodbye.
+ *
+ * Conventions: the symmetric axis of cylinders, sphyls (capsules), cones and the plane's normal is
+ * local z; box sizes are full edge lengths; every geometry's origin is its centre of mass. */
+#ifndef MCD_TYPES_H
+#define MCD_TYPES_H
+
+#include "McdContact.h"
+#include "MePrecision.h"
+
+ME_EXTERN_C_BEGIN
+
+typedef struct McdFrameworkHandle_ *McdFrameworkID; /**< the collision framework (McdInit) */
+typedef struct McdGeometryHandle_ *McdGeometryID;   /**< a shape, shareable by many models */
+typedef struct McdModelHandle_ *McdModelID;         /**< a geometry placed in the world */
+typedef struct McdSpaceHandle_ *McdSpaceID;         /**< a farfield space (axis sort) */
+
+/** Geometry type numbers (Karma's; Cone, which Karma left unnumbered, gets 9). User types
+ *  registered with McdFrameworkRegisterGeometryType get the numbers after the built-in ones. */
+typedef enum McdGeometryType {
+    kMcdGeometryTypeNull = 0,
+    kMcdGeometryTypeSphere = 1,
+    kMcdGeometryTypeBox = 2,
+    kMcdGeometryTypePlane = 3,
+    kMcdGeometryTypeCylinder = 4,
+    kMcdGeometryTypeSphyl = 5,
+    kMcdGeometryTypeTriangleList = 6,
+    kMcdGeometryTypeConvexMesh = 7,
+    kMcdGeometryTypeAggregate = 8,
+    kMcdGeometryTypeCone = 9,
+    kMcdGeometryBuiltInTypes = 10
+} McdGeometryType;
+
+/** What a pair test is asked for (Karma's McdRequest). */
+typedef struct McdRequest {
+    int contactMaxCount;   /**< contacts wanted at most for the pair */
+    int faceNormalsFirst;  /**< prefer face normals over edge normals where both are valid */
+} McdRequest;
+
+/** A pair of models that the farfield found overlapping (or that the application made). */
+typedef struct McdModelPair {
+    McdModelID model1;
+    McdModelID model2;
+    const McdRequest *request; /**< NULL: the framework's default request */
+    void *userData;            /**< the application's (the bridge keeps its contact group here) */
+    /* Set by McdHello, used by McdIntersect, cleared by McdGoodbye: */
+    int testIndex;             /**< entry of the interaction table, or -1 when no test exists */
+    int swapped;               /**< the table's test takes the models in the other order */
+    void *cache;               /**< per-pair data of the test (e.g. GJK warm start), or NULL */
+    MeU32 id;                  /**< stable identity while the pair lives (deterministic order) */
+} McdModelPair;
+typedef McdModelPair *McdModelPairID;
+
+/** The answer of McdIntersect. The caller provides the contact array and its size. */
+typedef struct McdIntersectResult {
+    McdModelPair *pair;
+    McdContact *contacts;  /**< caller's array */
+    int contactMaxCount;   /**< its size */
+    int contactCount;      /**< contacts written */
+    int touch;             /**< non-zero when the models touch (within their contact tolerances) */
+    MeVector3 normal;      /**< representative normal, model 1 -> model 2 */
+    void *data;            /**< test-specific extra data, or NULL */
+} McdIntersectResult;
+
+ME_EXTERN_C_END
+
+#endif /* MCD_TYPES_H */

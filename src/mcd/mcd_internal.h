@@ -1,0 +1,70 @@
+/* mcd_internal.h -- the records behind Mcd's IDs and the contract between the framework, the
+ * geometries, the space and the nearfield tests (internal).
+ *
+ * Ownership: framework.c, model.c and geometry/*.c own these structs; space_axis_sort.c owns the
+ * space; nearfield/*.c implement McdNearfieldFn for pairs of geometry types and register them in
+ * the framework's interaction table. Every geometry's origin is its centre of mass, its symmetric
+ * axis local z. */
+#ifndef MCD_INTERNAL_H
+#define MCD_INTERNAL_H
+
+#include <stdint.h>
+
+#include <karma/McdTypes.h>
+#include <karma/MeMath.h>
+
+struct McdFramework;
+struct McdSpace;
+
+/** Per-type shape data. Only the fields of the geometry's own type are meaningful. */
+typedef struct McdSphereData { MeReal radius; } McdSphereData;
+typedef struct McdBoxData { MeVector3 radii; } McdBoxData;                     /* half extents */
+typedef struct McdCylinderData { MeReal radius, halfHeight; } McdCylinderData; /* z in ±halfHeight */
+typedef struct McdSphylData { MeReal radius, halfHeight; } McdSphylData;       /* segment z in ±halfHeight, plus radius */
+/* A (possibly truncated) cone along z: the disc of lowerRadius at z = zLower, the disc of upperRadius
+ * (0 for a pointed cone) at z = zUpper > zLower; the origin is the centre of mass. */
+typedef struct McdConeData { MeReal lowerRadius, upperRadius, zLower, zUpper; } McdConeData;
+
+typedef struct McdGeometry {
+    uintptr_t id;
+    struct McdFramework *framework;
+    int type;             /* McdGeometryType or a user type number */
+    int refCount;         /* models and aggregates using it; destroy is refused while > 0 */
+    union {
+        McdSphereData sphere;
+        McdBoxData box;
+        McdCylinderData cylinder;
+        McdSphylData sphyl;
+        McdConeData cone;
+        void *user;       /* user-registered types */
+    } u;
+} McdGeometry;
+
+typedef struct McdModel {
+    uintptr_t id;
+    struct McdFramework *framework;
+    McdGeometry *geometry;         /* NULL until set */
+    MeReal (*transform)[4];        /* world TM pointer (shared with a body's by the bridge), or NULL */
+    MeMatrix4 ownTransform;        /* used when no pointer was given */
+    MeMatrix4 relativeTransform;   /* geometry relative to `transform` (identity by default) */
+    MeBool hasRelative;
+    MeMatrix4 worldTransform;      /* compounded at update: what the tests use */
+    MeVector3 aabbMin, aabbMax;    /* at the last update, padded by the contact tolerance */
+    MeReal contactTolerance;
+    int material;
+    MeI32 sortKey;                 /* 0 ... 2^15 - 1; orders pairs deterministically */
+    void *userData;
+    void *body;                    /* MdtBodyID set by the bridge (Mcd never looks inside) */
+    struct McdSpace *space;        /* the space it is in, or NULL */
+    int spaceIndex;                /* its slot in that space */
+    MeBool frozen;
+} McdModel;
+
+/** A pair test: contacts (world frame, normal from g1 to g2, separation < 0 when overlapping) for g1
+ *  at world transform tm1 and g2 at tm2, reporting only contacts with separation <= tolerance (the
+ *  sum of the models' contact tolerances). Writes at most maxContacts; returns the count written.
+ *  `cache` is the pair's McdModelPair.cache slot (may be NULL). */
+typedef int (*McdNearfieldFn)(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+                              MeReal tolerance, McdContact *contacts, int maxContacts, void **cache);
+
+#endif /* MCD_INTERNAL_H */
