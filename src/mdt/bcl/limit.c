@@ -538,9 +538,8 @@ void MdtLimitAddRow(MdtLimit *l, MdtRowWriter *w, const MdtRow *jacobian, MeReal
                 MeReal sigma = s == 0 ? 1 : -1, phi = sigma * (x - l->limit[s].stop), approach = -sigma * vstar;
                 need[s] = isHard(l, s) ? phi <= h * (approach > 0 ? approach : 0) : phi < 0;
             }
-            /* Two soft stops at one place (a spring's natural length): one two-sided spring. */
-            if (sideExists(&l->limit[0]) && sideExists(&l->limit[1]) && !isHard(l, 0) && !isHard(l, 1) &&
-                l->limit[1].stop <= l->limit[0].stop)
+            /* Two stops at one place (a spring's natural length, a rod): one two-sided row. */
+            if (sideExists(&l->limit[0]) && sideExists(&l->limit[1]) && l->limit[1].stop <= l->limit[0].stop)
                 need[0] = need[1] = METRUE;
         }
         if (need[0] && need[1]) {
