@@ -99,9 +99,16 @@ static void hinge_motor_reaches_target_speed(void **state)
     print_message("hinge motor: rate %.6f rad/s for a target of 3\n", rate(&r));
     assert_near(rate(&r), 3, ME_TOL(1e-6, 1e-4));
     /* Against a load the cap allows, the motor keeps the speed and supplies the load's torque. */
+    double drift = 0;
     for (int i = 0; i < 30; i++) {
-        MdtBodyAddTorque(r.b, 0, 0, -1);
+        MdtBodyAddTorque(r.b, 4, -3, -1); /* the hinge carries the torque across its axis */
+        MdtBodyAddForce(r.b, 2, 5, -1);
         MdtWorldStep(r.w, 1.0f / 60);
+        MeVector3 p;
+        MeMatrix3 R;
+        MdtBodyGetPosition(r.b, p);
+        MdtBodyGetOrientation(r.b, R); /* row 2: the rotor's z axis, which must stay the hinge axis */
+        drift = fmax(drift, fmax(sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), fmax(fabs(R[2][0]), fabs(R[2][1]))));
     }
     MeVector3 t;
     MdtHingeGetTorque(r.j, 0, t);
@@ -110,6 +117,8 @@ static void hinge_motor_reaches_target_speed(void **state)
     print_message("hinge motor under a 1 N m load: rate %.7f (3 - eps tau h = %.7f), motor torque %.6f N m\n",
                   rate(&r), expected, t[2]);
     assert_near(rate(&r), expected, ME_TOL(1e-9, 1e-5));
+    print_message("hinge under torque and force across its axis: axis and point kept within %.1e\n", drift);
+    assert_true(drift < 1e-3);
     assert_near(t[2], 1, ME_TOL(1e-6, 1e-4));
     MdtWorldDestroy(r.w);
 }
@@ -148,22 +157,31 @@ static void setStops(MdtLimitID l, double lo, double hi, double e)
     MdtSingleLimitSetRestitution(MdtLimitGetUpperLimit(l), (MeReal)e);
 }
 
+/* A 1 kg bob at (x, 0, z) under gravity −z, hinged to the world at the origin about (0, ay, 0). */
+static MdtHingeID makeArm(MdtWorldID *w, double x, double z, double ay, MdtBodyID *bob)
+{
+    *w = MdtWorldCreate(4, 4, 1, 1);
+    MdtWorldSetGravity(*w, 0, 0, -9.81f);
+    MdtWorldSetAutoDisable(*w, MEFALSE);
+    *bob = MdtBodyCreate(*w);
+    MdtBodySetPosition(*bob, (MeReal)x, 0, (MeReal)z);
+    MdtBodyEnable(*bob);
+    MdtHingeID j = MdtHingeCreate(*w);
+    MdtHingeSetBodies(j, *bob, NULL);
+    MdtHingeSetPosition(j, 0, 0, 0);
+    MdtHingeSetAxis(j, 0, (MeReal)ay, 0);
+    MdtHingeEnable(j);
+    return j;
+}
+
 static void hinge_hard_stops_hold(void **state)
 {
     (void)state;
     /* A pendulum swinging hard into stops at ±0.3 rad, without bounce. */
-    MdtWorldID w = MdtWorldCreate(4, 4, 1, 1);
-    MdtWorldSetGravity(w, 0, 0, -9.81f);
-    MdtWorldSetAutoDisable(w, MEFALSE);
-    MdtBodyID bob = MdtBodyCreate(w);
-    MdtBodySetPosition(bob, 0, 0, -1);
+    MdtWorldID w;
+    MdtBodyID bob;
+    MdtHingeID j = makeArm(&w, 0, -1, 1, &bob);
     MdtBodySetLinearVelocity(bob, 4, 0, 0);
-    MdtBodyEnable(bob);
-    MdtHingeID j = MdtHingeCreate(w);
-    MdtHingeSetBodies(j, bob, NULL);
-    MdtHingeSetPosition(j, 0, 0, 0);
-    MdtHingeSetAxis(j, 0, 1, 0);
-    MdtHingeEnable(j);
     MdtLimitID l = MdtHingeGetLimit(j);
     setStops(l, -0.3, 0.3, 0);
     double worst = 0;
@@ -288,17 +306,10 @@ static void hinge_limit_controller(void **state)
 static void hinge_motor_lifts_off_stop_only_when_strong_enough(void **state)
 {
     (void)state;
-    MdtWorldID w = MdtWorldCreate(4, 4, 1, 1);
-    MdtWorldSetGravity(w, 0, 0, -9.81f);
-    MdtWorldSetAutoDisable(w, MEFALSE);
-    MdtBodyID bob = MdtBodyCreate(w);
-    MdtBodySetPosition(bob, 1, 0, 0); /* horizontal arm, 1 m: gravity's torque 9.81 N m */
-    MdtBodyEnable(bob);
-    MdtHingeID j = MdtHingeCreate(w);
-    MdtHingeSetBodies(j, bob, NULL);
-    MdtHingeSetPosition(j, 0, 0, 0);
-    MdtHingeSetAxis(j, 0, -1, 0); /* positive angle lifts the arm */
-    MdtHingeEnable(j);
+    /* A horizontal arm of 1 m (gravity's torque 9.81 N m); a positive angle lifts it. */
+    MdtWorldID w;
+    MdtBodyID bob;
+    MdtHingeID j = makeArm(&w, 1, 0, -1, &bob);
     MdtLimitID l = MdtHingeGetLimit(j);
     setStops(l, 0, 1, 0);
     MdtLimitSetLimitedForceMotor(l, 1, 8);
@@ -307,8 +318,10 @@ static void hinge_motor_lifts_off_stop_only_when_strong_enough(void **state)
         MdtWorldStep(w, 1.0f / 60);
         worst = fmax(worst, fabs(MdtLimitGetPosition(l)));
     }
-    print_message("motor of 8 N m against 9.81 N m: stays on the stop within %.2e rad\n", worst);
+    print_message("motor of 8 N m against 9.81 N m: stays on the stop within %.2e rad (stalled: %d)\n", worst,
+                  l->stalled);
     assert_true(worst < 1e-3);
+    assert_true(l->stalled); /* the stop row carries the motor's 8 N m (limit.c) */
     MdtLimitSetLimitedForceMotor(l, 1, 20);
     for (int i = 0; i < 20; i++)
         MdtWorldStep(w, 1.0f / 60);

@@ -31,6 +31,7 @@ static void limit_defaults_and_bad_values(void **state)
     assert_reports(ME_ERR_NONFINITE_ARGUMENT, MdtLimitSetLimitedForceMotor(&limit, (MeReal)INFINITY, 2));
     assert_reports(ME_ERR_ARGUMENT_RANGE, MdtLimitController(&limit, 1, 0, 1, 1));
     assert_reports(ME_ERR_NEGATIVE_VALUE, MdtLimitController(&limit, 1, 1, -1, 1));
+    assert_reports(ME_ERR_NONFINITE_ARGUMENT, MdtLimitController(&limit, 1, 1, MEINFINITY, 1));
     assert_reports(ME_ERR_ARGUMENT_RANGE, MdtLimitSetStiffnessThreshold(&limit, 0));
     assert_reports(ME_ERR_NEGATIVE_VALUE, MdtLimitSetLock(&limit, 0, -1));
     assert_reports(ME_ERR_NULL_ARGUMENT, MdtLimitIsActive(NULL));
@@ -90,6 +91,7 @@ static void joints_bad_input(void **state)
 
     assert_reports(ME_ERR_ARGUMENT_RANGE, MdtCarWheelSetSuspension(wheel, 1, 1, 0, 1, -1, 0));
     assert_reports(ME_ERR_NEGATIVE_VALUE, MdtCarWheelSetSuspension(wheel, -1, 1, 0, -1, 1, 0));
+    assert_reports(ME_ERR_NONFINITE_ARGUMENT, MdtCarWheelSetSuspension(wheel, MEINFINITY, 1, 0, -1, 1, 0));
     assert_reports(ME_ERR_NEGATIVE_VALUE, MdtCarWheelSetHingeLimitedForceMotor(wheel, 1, -1));
     assert_reports(ME_ERR_NONFINITE_ARGUMENT, MdtCarWheelSetSteeringLimitedForceMotor(wheel, (MeReal)NAN, 1));
     assert_true(MdtCarWheelGetSuspensionKp(wheel) == 0 && MdtCarWheelGetHingeMotorMaxForce(wheel) == 0);

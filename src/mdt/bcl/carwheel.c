@@ -83,15 +83,7 @@ static int rowCount(const MdtConstraint *c)
 /* Suspension: a stop reached within the step (speculative, no bounce) holds; otherwise the spring. */
 static void addSuspensionRow(const MdtConstraint *c, const CarWheelData *d, MdtRowWriter *w, MdtRow *row, MeReal x)
 {
-    const MeReal h = w->h, v0 = MdtRowVelocity(c, row);
-    MeReal vstar = v0;
-    if (c->body[0]) {
-        /* predicted rate with the external forces of this step */
-        const MdtBody *b0 = c->body[0], *b1 = c->body[1];
-        vstar = MeVector3Dot(row->lin0, b0->velStar) + MeVector3Dot(row->ang0, b0->velrotStar);
-        if (b1)
-            vstar += MeVector3Dot(row->lin1, b1->velStar) + MeVector3Dot(row->ang1, b1->velrotStar);
-    }
+    const MeReal h = w->h, v0 = MdtRowVelocity(c, row), vstar = MdtRowPredictedVelocity(c, row);
     const MeBool spring = d->kp > 0 || d->kd > 0;
     const MeBool atLo = x - d->lo <= h * (vstar < 0 ? -vstar : 0);
     const MeBool atHi = d->hi - x <= h * (vstar > 0 ? vstar : 0);
@@ -100,13 +92,13 @@ static void addSuspensionRow(const MdtConstraint *c, const CarWheelData *d, MdtR
         row->epsilon = d->softness;
     } else if (atLo || atHi) {
         MeReal stop = atLo ? d->lo : d->hi, phi = atLo ? x - d->lo : d->hi - x;
-        /* the spring's impulse this step, explicit: the stop adds to it, never takes from it */
-        MeReal springImpulse = h * (-d->kp * (x - d->reference) - d->kd * v0);
+        /* the spring's force, explicit: the stop adds to it, never takes from it */
+        MeReal springForce = -d->kp * (x - d->reference) - d->kd * v0;
         row->error = x - stop;
         row->gamma = phi > 0 ? 1 : -1;
         row->epsilon = d->softness;
-        row->lo = atLo ? springImpulse / h : -MEINFINITY;
-        row->hi = atLo ? MEINFINITY : springImpulse / h;
+        row->lo = atLo ? springForce : -MEINFINITY;
+        row->hi = atLo ? MEINFINITY : springForce;
     } else if (spring) {
         MdtRowMakeSpring(row, c, d->kp, d->kd, x - d->reference, h);
     } else {
@@ -161,12 +153,6 @@ static const MdtConstraintClass carWheelClass = {"CarWheel", 6, reset, rowCount,
     MdtConstraint *c = MdtConstraintFromIDOfType((j), MdtBclCARWHEEL, __func__);                     \
     if (!c)                                                                                          \
     return ret
-#define CARWHEEL_WITH_BODY_OR_RETURN(c, j, ret)                                                      \
-    CARWHEEL_OR_RETURN(c, j, ret);                                                                   \
-    if (!c->body[0]) {                                                                               \
-        ME_REPORT(ME_ERR_BAD_STATE, "the car wheel has no bodies yet (MdtCarWheelSetBodies)");       \
-        return ret;                                                                                  \
-    }
 
 MdtCarWheelID MdtCarWheelCreate(MdtWorldID w)
 {
@@ -202,63 +188,33 @@ void MdtCarWheelGetHingeAxis(MdtCarWheelID j, MeVector3 v)
     MdtConstraintWorldOrthogonal(c, 1, v);
 }
 
-MeReal MdtCarWheelGetSteeringAngle(MdtCarWheelID j)
+/* The steering angle, the hinge angle or the suspension height (or their rates) at the current poses. */
+enum { STEERING, HINGE, HEIGHT };
+static MeReal reading(MdtCarWheelID j, int which, MeBool wantRate, const char *function)
 {
-    CARWHEEL_WITH_BODY_OR_RETURN(c, j, 0);
+    MdtConstraint *c = MdtConstraintFromIDOfType(j, MdtBclCARWHEEL, function);
+    if (!c)
+        return 0;
+    if (!c->body[0]) {
+        ME_REPORT_IN(function, ME_ERR_BAD_STATE, "the car wheel has no bodies yet (MdtCarWheelSetBodies)");
+        return 0;
+    }
     Axes a;
     MdtRow row;
     axes(c, &a);
-    return steeringRow(c, &a, &row);
+    MeReal value = which == STEERING ? steeringRow(c, &a, &row)
+                                     : (which == HINGE ? hingeRow(c, &a, &row) : heightRow(c, &a, &row));
+    if (wantRate)
+        return MdtRowVelocity(c, &row);
+    return which == HINGE && value < 0 ? value + 2 * ME_PI : value;
 }
 
-MeReal MdtCarWheelGetSteeringAngleRate(MdtCarWheelID j)
-{
-    CARWHEEL_WITH_BODY_OR_RETURN(c, j, 0);
-    Axes a;
-    MdtRow row;
-    axes(c, &a);
-    steeringRow(c, &a, &row);
-    return MdtRowVelocity(c, &row);
-}
-
-MeReal MdtCarWheelGetHingeAngle(MdtCarWheelID j)
-{
-    CARWHEEL_WITH_BODY_OR_RETURN(c, j, 0);
-    Axes a;
-    MdtRow row;
-    axes(c, &a);
-    MeReal angle = hingeRow(c, &a, &row);
-    return angle < 0 ? angle + 2 * ME_PI : angle;
-}
-
-MeReal MdtCarWheelGetHingeAngleRate(MdtCarWheelID j)
-{
-    CARWHEEL_WITH_BODY_OR_RETURN(c, j, 0);
-    Axes a;
-    MdtRow row;
-    axes(c, &a);
-    hingeRow(c, &a, &row);
-    return MdtRowVelocity(c, &row);
-}
-
-MeReal MdtCarWheelGetSuspensionHeight(MdtCarWheelID j)
-{
-    CARWHEEL_WITH_BODY_OR_RETURN(c, j, 0);
-    Axes a;
-    MdtRow row;
-    axes(c, &a);
-    return heightRow(c, &a, &row);
-}
-
-MeReal MdtCarWheelGetSuspensionRate(MdtCarWheelID j)
-{
-    CARWHEEL_WITH_BODY_OR_RETURN(c, j, 0);
-    Axes a;
-    MdtRow row;
-    axes(c, &a);
-    heightRow(c, &a, &row);
-    return MdtRowVelocity(c, &row);
-}
+MeReal MdtCarWheelGetSteeringAngle(MdtCarWheelID j) { return reading(j, STEERING, MEFALSE, __func__); }
+MeReal MdtCarWheelGetSteeringAngleRate(MdtCarWheelID j) { return reading(j, STEERING, METRUE, __func__); }
+MeReal MdtCarWheelGetHingeAngle(MdtCarWheelID j) { return reading(j, HINGE, MEFALSE, __func__); }
+MeReal MdtCarWheelGetHingeAngleRate(MdtCarWheelID j) { return reading(j, HINGE, METRUE, __func__); }
+MeReal MdtCarWheelGetSuspensionHeight(MdtCarWheelID j) { return reading(j, HEIGHT, MEFALSE, __func__); }
+MeReal MdtCarWheelGetSuspensionRate(MdtCarWheelID j) { return reading(j, HEIGHT, METRUE, __func__); }
 
 #define CARWHEEL_GETTER(name, type, expr)                                                            \
     type name(MdtCarWheelID j)                                                                       \
@@ -280,21 +236,11 @@ CARWHEEL_GETTER(MdtCarWheelGetSuspensionKp, MeReal, d->kp)
 CARWHEEL_GETTER(MdtCarWheelGetSuspensionKd, MeReal, d->kd)
 
 /* ---- mutators ---- */
-static MeBool checkNonNegative(MeReal x, const char *name, const char *function)
-{
-    if (!ME_IS_FINITE(x) || x < 0) {
-        ME_REPORT_IN(function, ME_IS_FINITE(x) ? ME_ERR_NEGATIVE_VALUE : ME_ERR_NONFINITE_ARGUMENT,
-                     "argument '%s' is %g; it must be finite and zero or positive; call ignored", name, (double)x);
-        return MEFALSE;
-    }
-    return METRUE;
-}
-
 void MdtCarWheelSetSteeringLimitedForceMotor(MdtCarWheelID j, MeReal desiredVelocity, MeReal forceLimit)
 {
     CARWHEEL_OR_RETURN(c, j, ME_NOTHING);
     ME_CHECK_FINITE(desiredVelocity, ME_NOTHING);
-    if (!checkNonNegative(forceLimit, "forceLimit", __func__))
+    if (!MdtCheckNonNegative(forceLimit, "forceLimit", METRUE, __func__))
         return;
     CarWheelData *d = MDT_CONSTRAINT_DATA(c, CarWheelData);
     d->steerVelocity = desiredVelocity;
@@ -311,7 +257,7 @@ void MdtCarWheelSetHingeLimitedForceMotor(MdtCarWheelID j, MeReal desiredVelocit
 {
     CARWHEEL_OR_RETURN(c, j, ME_NOTHING);
     ME_CHECK_FINITE(desiredVelocity, ME_NOTHING);
-    if (!checkNonNegative(forceLimit, "forceLimit", __func__))
+    if (!MdtCheckNonNegative(forceLimit, "forceLimit", METRUE, __func__))
         return;
     CarWheelData *d = MDT_CONSTRAINT_DATA(c, CarWheelData);
     d->hingeVelocity = desiredVelocity;
@@ -323,8 +269,8 @@ void MdtCarWheelSetSuspension(MdtCarWheelID j, MeReal Kp, MeReal Kd, MeReal limi
 {
     CARWHEEL_OR_RETURN(c, j, ME_NOTHING);
     ME_CHECK_FINITE3(lolimit, hilimit, reference, ME_NOTHING);
-    if (!checkNonNegative(Kp, "Kp", __func__) || !checkNonNegative(Kd, "Kd", __func__) ||
-        !checkNonNegative(limit_softness, "limit_softness", __func__))
+    if (!MdtCheckNonNegative(Kp, "Kp", MEFALSE, __func__) || !MdtCheckNonNegative(Kd, "Kd", MEFALSE, __func__) ||
+        !MdtCheckNonNegative(limit_softness, "limit_softness", MEFALSE, __func__))
         return;
     if (lolimit > hilimit) {
         ME_REPORT(ME_ERR_ARGUMENT_RANGE, "lolimit (%g) is above hilimit (%g); call ignored", (double)lolimit,

@@ -360,11 +360,12 @@ void MdtLimitActivateMotor(MdtLimitID l, MeBool on)
         m->locked = MEFALSE;
 }
 
-static MeBool checkForce(MeReal f, const char *name, const char *function)
+MeBool MdtCheckNonNegative(MeReal x, const char *name, MeBool infiniteAllowed, const char *function)
 {
-    if (f != f || f < 0) {
-        ME_REPORT_IN(function, f < 0 ? ME_ERR_NEGATIVE_VALUE : ME_ERR_NONFINITE_ARGUMENT,
-                     "argument '%s' is %g; it must be zero or positive; call ignored", name, (double)f);
+    if (x != x || x < 0 || (!infiniteAllowed && x >= MEINFINITY)) {
+        ME_REPORT_IN(function, x < 0 ? ME_ERR_NEGATIVE_VALUE : ME_ERR_NONFINITE_ARGUMENT,
+                     "argument '%s' is %g; it must be %szero or positive; call ignored", name, (double)x,
+                     infiniteAllowed ? "" : "finite and ");
         return MEFALSE;
     }
     return METRUE;
@@ -374,7 +375,7 @@ void MdtLimitSetLimitedForceMotor(MdtLimitID l, MeReal desiredVelocity, MeReal m
 {
     LIMIT_OR_RETURN(m, l, ME_NOTHING);
     ME_CHECK_FINITE(desiredVelocity, ME_NOTHING);
-    if (!checkForce(maxForce, "maxForce", __func__))
+    if (!MdtCheckNonNegative(maxForce, "maxForce", METRUE, __func__))
         return;
     m->desired_velocity = desiredVelocity;
     m->fmax = maxForce;
@@ -395,7 +396,7 @@ void MdtLimitSetLock(MdtLimitID l, MeReal position, MeReal maxForce)
 {
     LIMIT_OR_RETURN(m, l, ME_NOTHING);
     ME_CHECK_FINITE(position, ME_NOTHING);
-    if (!checkForce(maxForce, "maxForce", __func__))
+    if (!MdtCheckNonNegative(maxForce, "maxForce", METRUE, __func__))
         return;
     m->position_lock = position;
     m->fmax_lock = maxForce;
@@ -410,8 +411,8 @@ void MdtLimitController(MdtLimitID l, MeReal desiredPos, MeReal gap, MeReal maxS
                   "argument 'gap' is %g; it must be positive and finite; call ignored", (double)gap);
         return;
     }
-    if (!ME_IS_FINITE(maxSpeed) || !checkForce(maxSpeed, "maxSpeed", __func__) ||
-        !checkForce(maxForce, "maxForce", __func__))
+    if (!MdtCheckNonNegative(maxSpeed, "maxSpeed", MEFALSE, __func__) ||
+        !MdtCheckNonNegative(maxForce, "maxForce", METRUE, __func__))
         return;
     MeReal v = maxSpeed * (desiredPos - m->position) / gap;
     if (v > maxSpeed)
@@ -438,8 +439,7 @@ MeReal MdtRowVelocity(const MdtConstraint *c, const MdtRow *row)
     return v;
 }
 
-/* Constraint velocity with the predicted velocities v* (external forces applied). */
-static MeReal predictedVelocity(const MdtConstraint *c, const MdtRow *row)
+MeReal MdtRowPredictedVelocity(const MdtConstraint *c, const MdtRow *row)
 {
     const MdtBody *b0 = c->body[0], *b1 = c->body[1];
     MeReal v = dot3(row->lin0, b0->velStar) + dot3(row->ang0, b0->velrotStar);
@@ -531,7 +531,7 @@ void MdtLimitAddRow(MdtLimit *l, MdtRowWriter *w, const MdtRow *jacobian, MeReal
     } else {
         MeBool need[2] = {MEFALSE, MEFALSE};
         if (l->limited) {
-            const MeReal vstar = predictedVelocity(c, jacobian);
+            const MeReal vstar = MdtRowPredictedVelocity(c, jacobian);
             for (int s = 0; s < 2; s++) {
                 if (!sideExists(&l->limit[s]))
                     continue;
@@ -607,25 +607,16 @@ void MdtLimitUnpack(MdtLimit *l, const MeReal *impulses, int rows, MeReal h)
 {
     if (l->row < 0 || l->row >= rows)
         return;
-    const MeReal x = impulses[l->row], cap = l->fmax * h;
-    switch (l->rowKind) {
-    case ROW_MOTOR_AT_STOP0: /* saturated and still sinking into the lower stop */
-        if (x >= cap * ME_R(0.999) && l->velocity < 0)
+    const int kind = l->rowKind;
+    const MeReal sigma = (kind == ROW_MOTOR_AT_STOP1 || kind == ROW_STALLED1) ? -1 : 1;
+    const MeReal x = sigma * impulses[l->row], cap = l->fmax * h; /* x: pushing away from the stop */
+    if (kind == ROW_MOTOR_AT_STOP0 || kind == ROW_MOTOR_AT_STOP1) {
+        /* saturated and still sinking into the stop */
+        if (x >= cap * ME_R(0.999) && sigma * l->velocity < 0)
             l->stalled = METRUE;
-        break;
-    case ROW_MOTOR_AT_STOP1:
-        if (x <= -cap * ME_R(0.999) && l->velocity > 0)
-            l->stalled = METRUE;
-        break;
-    case ROW_STALLED0: /* the stop no longer had to add to the motor */
+    } else if (kind == ROW_STALLED0 || kind == ROW_STALLED1) {
+        /* the stop no longer had to add to the motor */
         if (x <= cap * ME_R(1.001))
             l->stalled = MEFALSE;
-        break;
-    case ROW_STALLED1:
-        if (x >= -cap * ME_R(1.001))
-            l->stalled = MEFALSE;
-        break;
-    default:
-        break;
     }
 }

@@ -7,6 +7,9 @@
 
 #include "../constraint.h"
 
+/** Reject (report in `function`'s name) a NaN or negative `x` named `name`, or an infinite one unless
+ *  `infiniteAllowed` (MEINFINITY = no bound). */
+MeBool MdtCheckNonNegative(MeReal x, const char *name, MeBool infiniteAllowed, const char *function);
 /** Initialise a limit embedded in a joint (MdtLimitReset without the argument check). */
 void MdtLimitInit(MdtLimit *l);
 /** Resolve a limit passed by the application: NULL or uninitialised ones are reported (in
@@ -23,6 +26,9 @@ void MdtLimitSetMeasured(MdtLimit *l, MeReal measured, MeReal rate);
 /** Constraint velocity J·v of `row` with the bodies' velocities at the start of the step (and the
  *  world's velocity when body 1 is the world). */
 MeReal MdtRowVelocity(const MdtConstraint *c, const MdtRow *row);
+
+/** The same with the predicted velocities v* (this step's external forces applied). */
+MeReal MdtRowPredictedVelocity(const MdtConstraint *c, const MdtRow *row);
 
 /** A spring-damper row (stiffness k ≥ 0, damping d ≥ 0, not both 0) on the row's coordinate, whose
  *  displacement from rest is `displacement`: sets the row's ε, γ and target velocity (SPOOK). */
