@@ -212,6 +212,27 @@ static void spring_period_and_length(void **state)
         assert_rel(T, expected, 0.02);
         MdtWorldDestroy(s.w);
     }
+    /* Damped: successive peaks shrink by exp(−π ζ / sqrt(1 − ζ²)) with ζ = d / (2 sqrt(k m)). */
+    {
+        const double d = 2, zeta = d / (2 * sqrt(k)), expected = exp(-2 * PI * zeta / sqrt(1 - zeta * zeta));
+        SpringScene s = makeSpring(k, d);
+        MdtBodySetLinearVelocity(s.b, 0.3f, 0, 0);
+        double prev2 = 0, prev = 0, peaks[2];
+        int n = 0;
+        for (int i = 0; i < 600 && n < 2; i++) {
+            MdtWorldStep(s.w, 1.0f / 240);
+            double x = MdtSpringGetLength(s.j) - 1;
+            if (i > 1 && prev > prev2 && prev >= x && prev > 0)
+                peaks[n++] = prev;
+            prev2 = prev;
+            prev = x;
+        }
+        assert_int_equal(n, 2);
+        print_message("damped spring zeta=%.3f: peak ratio %.5f vs %.5f (%.2f %%)\n", zeta, peaks[1] / peaks[0], expected,
+                      100 * fabs(peaks[1] / peaks[0] - expected) / expected);
+        assert_rel(peaks[1] / peaks[0], expected, 0.02);
+        MdtWorldDestroy(s.w);
+    }
     /* The natural length adds to the initial separation (1 m); a damped spring settles there. */
     SpringScene s = makeSpring(k, 5);
     MdtSpringSetNaturalLength(s.j, 0.5f);
