@@ -138,16 +138,26 @@ MeReal McdFrameworkGetLengthScale(McdFrameworkID id)
     return fw->lengthScale;
 }
 
+MeBool McdCheckTolerance(MeReal tolerance, const char *function)
+{
+    if (!ME_IS_FINITE(tolerance)) {
+        ME_REPORT_IN(function, ME_ERR_NONFINITE_ARGUMENT, "argument 'tolerance' is %g (not finite); call ignored",
+                     (double)tolerance);
+        return MEFALSE;
+    }
+    if (tolerance < 0) {
+        ME_REPORT_IN(function, ME_ERR_NEGATIVE_VALUE, "argument 'tolerance' is %g; it must be >= 0; call ignored",
+                     (double)tolerance);
+        return MEFALSE;
+    }
+    return METRUE;
+}
+
 void McdFrameworkSetDefaultContactTolerance(McdFrameworkID id, MeReal tolerance)
 {
     FW_OR_RETURN(fw, id, ME_NOTHING);
-    ME_CHECK_FINITE(tolerance, ME_NOTHING);
-    if (tolerance < 0) {
-        ME_REPORT(ME_ERR_NEGATIVE_VALUE, "argument 'tolerance' is %g; it must be >= 0; call ignored",
-                  (double)tolerance);
-        return;
-    }
-    fw->defaultContactTolerance = tolerance;
+    if (McdCheckTolerance(tolerance, __func__))
+        fw->defaultContactTolerance = tolerance;
 }
 
 MeReal McdFrameworkGetDefaultContactTolerance(McdFrameworkID id)

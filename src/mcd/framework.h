@@ -58,6 +58,9 @@ static inline McdGeometryID McdGeometryToID(const McdGeometry *g) { return (McdG
 static inline McdModelID McdModelToID(const McdModel *m) { return (McdModelID)m->id; }
 static inline McdFrameworkID McdFrameworkToID(const McdFramework *fw) { return (McdFrameworkID)fw->id; }
 
+/** A contact tolerance must be finite and >= 0; reports in `function`'s name. */
+MeBool McdCheckTolerance(MeReal tolerance, const char *function);
+
 /* ---- the interaction table ------------------------------------------------------------------ */
 /** Register `fn` as the test of (type1, type2) in that order (replacing any); NULL removes it.
  *  Types must be known to the framework; returns MEFALSE (reported) otherwise. */

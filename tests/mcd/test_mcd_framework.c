@@ -33,6 +33,35 @@ static void fakeRelease(void *cache)
     releases++;
 }
 
+/* Term actions run newest first, while the framework's objects are still alive. */
+static int termOrder[20], termCount;
+static McdModelID termModel;
+static void termAction(McdFrameworkID fw, void *data)
+{
+    assert_true(McdFrameworkIsValid(fw));
+    assert_true(McdModelIsValid(termModel));
+    termOrder[termCount++] = *(int *)data;
+}
+
+static void term_actions(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    McdFrameworkID fw = McdInit(0, 2, 0, 1);
+    termModel = McdModelCreate(McdSphereCreate(fw, 1));
+    static int tags[17];
+    for (int i = 0; i < 16; i++) {
+        tags[i] = i;
+        assert_true(McdFrameworkRegisterTermAction(fw, termAction, &tags[i]));
+    }
+    assert_reports(ME_ERR_POOL_FULL, assert_false(McdFrameworkRegisterTermAction(fw, termAction, &tags[16])));
+    termCount = 0;
+    McdTerm(fw);
+    assert_int_equal(termCount, 16);
+    for (int i = 0; i < 16; i++)
+        assert_int_equal(termOrder[i], 15 - i);
+}
+
 static void init_defaults_and_term(void **state)
 {
     (void)state;
@@ -267,6 +296,13 @@ static void unregistered_pair_warned_once(void **state)
     McdModelPairReset(&pair, n, a);
     McdHello(&pair); /* null geometries touch nothing, silently */
     assert_int_equal(MeMessageGetCount(ME_ERR_MCD_NO_INTERACTION) - before, 1);
+    /* Models of two frameworks never make a pair. */
+    McdFrameworkID other = McdInit(0, 2, 0, 1);
+    McdModelID foreign = placedModel(McdSphereCreate(other, 1), 0, 0, 0);
+    assert_reports(ME_ERR_FOREIGN_HANDLE, assert_null(McdModelPairCreate(a, foreign)));
+    McdModelPairReset(&pair, a, foreign);
+    assert_reports(ME_ERR_FOREIGN_HANDLE, McdHello(&pair));
+    McdTerm(other);
     printf("missing pair tests reported %lu times for 2 type pairs, 5 hellos\n",
            MeMessageGetCount(ME_ERR_MCD_NO_INTERACTION));
     McdTerm(fw);
@@ -309,6 +345,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(init_defaults_and_term),
+        cmocka_unit_test(term_actions),
         cmocka_unit_test(user_geometry_type),
         cmocka_unit_test(interaction_table_one_way_and_swap),
         cmocka_unit_test(unregistered_pair_warned_once),
