@@ -29,6 +29,7 @@ typedef struct McdTermAction {
 typedef struct McdInteraction {
     McdNearfieldFn fn;                 /* NULL: none registered this way round */
     void (*releaseCache)(void *cache); /* frees McdModelPair.cache at goodbye (optional) */
+    McdUserIntersectFn userFn;         /* an application's test, called through `fn` */
 } McdInteraction;
 
 typedef struct McdFramework {

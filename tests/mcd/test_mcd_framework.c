@@ -133,6 +133,25 @@ static void cubeMass(McdGeometryID g, void *data, MeMatrix4 rel, MeMatrix3 I, Me
     I[0][0] = I[1][1] = I[2][2] = *v * side * side / 6;
 }
 
+/* The application's cube-sphere test: closest point of the cube to the sphere's centre. */
+static int cubeSphere(McdGeometryID g1, void *data1, MeMatrix4 tm1, McdGeometryID g2, void *data2, MeMatrix4 tm2,
+                      MeReal tolerance, McdContact *contacts, int maxContacts)
+{
+    (void)g1, (void)maxContacts;
+    assert_int_equal(McdGeometryGetTypeId(g2), kMcdGeometryTypeSphere);
+    MeReal h = *(MeReal *)data1, r = ((MeReal *)data2)[0]; /* built-in data: McdSphereData (radius) */
+    MeVector3 c, q, w;
+    MeMatrix4TMInverseTransform(c, tm1, tm2[3]);
+    for (int i = 0; i < 3; i++)
+        q[i] = c[i] < -h ? -h : c[i] > h ? h : c[i];
+    MeMatrix4TMTransform(w, tm1, q);
+    MeVector3Subtract(contacts[0].normal, tm2[3], w);
+    MeReal d = MeVector3Normalize(contacts[0].normal);
+    contacts[0].separation = d - r;
+    MeVector3Copy(contacts[0].position, w);
+    return contacts[0].separation <= tolerance;
+}
+
 static void user_geometry_type(void **state)
 {
     (void)state;
@@ -182,6 +201,25 @@ static void user_geometry_type(void **state)
     McdLineSegIntersectResult r;
     MeVector3 a = {-5, 2, 3}, b = {5, 2, 3};
     assert_int_equal(McdLineSegIntersect(m, a, b, &r), 0);
+    /* A pair test of the application's: registered (Cube, Sphere), used for (Sphere, Cube) too. */
+    assert_true(McdFrameworkSetUserInteraction(fw, type, kMcdGeometryTypeSphere, cubeSphere));
+    assert_reports(ME_ERR_ARGUMENT_RANGE, assert_false(McdFrameworkSetUserInteraction(fw, type, type + 1, cubeSphere)));
+    McdModelID ball = McdModelCreate(McdSphereCreate(fw, ME_R(0.25)));
+    MeMatrix4TMSetPosition(McdModelGetTransformPtr(ball), 1, 2, ME_R(3.6)); /* 0.1 above the cube, overlapping 0.15 */
+    McdModelUpdate(ball);
+    McdModelPairID pair = McdModelPairCreate(ball, m);
+    McdHello(pair);
+    assert_int_equal(pair->swapped, 1);
+    McdContact contact;
+    McdIntersectResult result = {0};
+    result.contacts = &contact;
+    result.contactMaxCount = 1;
+    assert_true(McdIntersect(pair, &result));
+    assert_near(contact.separation, -0.15, 1e-5);
+    assert_near(result.normal[2], -1, 1e-6); /* model 1 (ball) -> model 2 (cube): down */
+    McdGoodbye(pair);
+    McdModelPairDestroy(pair);
+    McdModelDestroy(ball);
     /* Refcount: refused while used, then destroyed through the user's destroy. */
     assert_reports(ME_ERR_MCD_IN_USE, McdGeometryDestroy(g));
     assert_true(McdGeometryIsValid(g));
