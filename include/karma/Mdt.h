@@ -10,6 +10,8 @@
 #include "MdtContact.h"
 #include "MdtContactGroup.h"
 #include "MdtContactParams.h"
+#include "MdtLOD.h"
+#include "MdtMainLoop.h"
 #include "MdtTypes.h"
 #include "MdtWorld.h"
 
