@@ -68,13 +68,39 @@ static void endStep(MdtWorld *w)
     w->locked = MEFALSE;
 }
 
+/* The stages in order: what each runs, its profile section, the stage it completes and the earliest
+ * stage it may follow (the optional auto-disable and LOD stages may be skipped). */
+typedef struct StageDef {
+    void (*run)(MdtWorld *w);
+    const char *section;
+    MdtStage done, after;
+} StageDef;
+
+static const StageDef stages[] = {
+    {MdtPartitionStage, MDT_SECTION_PARTITION, MdtStagePartitioned, MdtStageBegun},
+    {MdtAutoDisableStage, MDT_SECTION_AUTODISABLE, MdtStageAutoDisabled, MdtStagePartitioned},
+    {MdtLODStage, MDT_SECTION_LOD, MdtStageCapped, MdtStagePartitioned},
+    {MdtPackStage, MDT_SECTION_PACK, MdtStagePacked, MdtStagePartitioned},
+    {MdtSolveStage, MDT_SECTION_SOLVE, MdtStageSolved, MdtStagePacked},
+    {MdtIntegrateStage, MDT_SECTION_INTEGRATE, MdtStageIntegrated, MdtStageSolved},
+    {MdtUnpackStage, MDT_SECTION_UNPACK, MdtStageUnpacked, MdtStageIntegrated},
+};
+
 /* One stage, timed in its profile section. */
-static void runStage(MdtWorld *w, void (*stage)(MdtWorld *), const char *section, MdtStage done)
+static void runStage(MdtWorld *w, const StageDef *stage)
 {
-    MeProfileStartSection(&w->profile, section);
-    stage(w);
-    MeProfileEndSection(&w->profile, section);
-    w->stage = done;
+    MeProfileStartSection(&w->profile, stage->section);
+    stage->run(w);
+    MeProfileEndSection(&w->profile, stage->section);
+    w->stage = stage->done;
+}
+
+/* A stage called by the application: checked against the step's progress, then run. */
+static void publicStage(MdtWorldID id, int index, const char *function)
+{
+    MdtWorld *w = enterStage(id, stages[index].done, stages[index].after, function);
+    if (w)
+        runStage(w, &stages[index]);
 }
 
 void MdtWorldStepBegin(MdtWorldID id, MeReal stepSize)
@@ -84,54 +110,13 @@ void MdtWorldStepBegin(MdtWorldID id, MeReal stepSize)
         beginStep(w, stepSize, __func__);
 }
 
-void MdtUpdatePartitions(MdtWorldID id)
-{
-    MdtWorld *w = enterStage(id, MdtStagePartitioned, MdtStageBegun, __func__);
-    if (w)
-        runStage(w, MdtPartitionStage, MDT_SECTION_PARTITION, MdtStagePartitioned);
-}
-
-void MdtAutoDisablePartitions(MdtWorldID id)
-{
-    MdtWorld *w = enterStage(id, MdtStageAutoDisabled, MdtStagePartitioned, __func__);
-    if (w)
-        runStage(w, MdtAutoDisableStage, MDT_SECTION_AUTODISABLE, MdtStageAutoDisabled);
-}
-
-void MdtLODPartitions(MdtWorldID id)
-{
-    MdtWorld *w = enterStage(id, MdtStageCapped, MdtStagePartitioned, __func__);
-    if (w)
-        runStage(w, MdtLODStage, MDT_SECTION_LOD, MdtStageCapped);
-}
-
-void MdtPackAllPartitions(MdtWorldID id)
-{
-    MdtWorld *w = enterStage(id, MdtStagePacked, MdtStagePartitioned, __func__);
-    if (w)
-        runStage(w, MdtPackStage, MDT_SECTION_PACK, MdtStagePacked);
-}
-
-void MdtKeaAddConstraintForces(MdtWorldID id)
-{
-    MdtWorld *w = enterStage(id, MdtStageSolved, MdtStagePacked, __func__);
-    if (w)
-        runStage(w, MdtSolveStage, MDT_SECTION_SOLVE, MdtStageSolved);
-}
-
-void MdtKeaIntegrateSystem(MdtWorldID id)
-{
-    MdtWorld *w = enterStage(id, MdtStageIntegrated, MdtStageSolved, __func__);
-    if (w)
-        runStage(w, MdtIntegrateStage, MDT_SECTION_INTEGRATE, MdtStageIntegrated);
-}
-
-void MdtUnpackForces(MdtWorldID id)
-{
-    MdtWorld *w = enterStage(id, MdtStageUnpacked, MdtStageIntegrated, __func__);
-    if (w)
-        runStage(w, MdtUnpackStage, MDT_SECTION_UNPACK, MdtStageUnpacked);
-}
+void MdtUpdatePartitions(MdtWorldID id) { publicStage(id, 0, __func__); }
+void MdtAutoDisablePartitions(MdtWorldID id) { publicStage(id, 1, __func__); }
+void MdtLODPartitions(MdtWorldID id) { publicStage(id, 2, __func__); }
+void MdtPackAllPartitions(MdtWorldID id) { publicStage(id, 3, __func__); }
+void MdtKeaAddConstraintForces(MdtWorldID id) { publicStage(id, 4, __func__); }
+void MdtKeaIntegrateSystem(MdtWorldID id) { publicStage(id, 5, __func__); }
+void MdtUnpackForces(MdtWorldID id) { publicStage(id, 6, __func__); }
 
 void MdtWorldStepEnd(MdtWorldID id)
 {
@@ -145,13 +130,8 @@ void MdtWorldStep(MdtWorldID id, MeReal stepSize)
     MdtWorld *w = MdtWorldFromID(id, __func__);
     if (!w || !beginStep(w, stepSize, __func__))
         return;
-    runStage(w, MdtPartitionStage, MDT_SECTION_PARTITION, MdtStagePartitioned);
-    runStage(w, MdtAutoDisableStage, MDT_SECTION_AUTODISABLE, MdtStageAutoDisabled);
-    runStage(w, MdtLODStage, MDT_SECTION_LOD, MdtStageCapped);
-    runStage(w, MdtPackStage, MDT_SECTION_PACK, MdtStagePacked);
-    runStage(w, MdtSolveStage, MDT_SECTION_SOLVE, MdtStageSolved);
-    runStage(w, MdtIntegrateStage, MDT_SECTION_INTEGRATE, MdtStageIntegrated);
-    runStage(w, MdtUnpackStage, MDT_SECTION_UNPACK, MdtStageUnpacked);
+    for (size_t i = 0; i < sizeof stages / sizeof stages[0]; i++)
+        runStage(w, &stages[i]);
     endStep(w);
 }
 

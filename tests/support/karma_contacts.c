@@ -4,6 +4,8 @@
  * works). Plain C on the public API, no test framework: bench/ compiles this file too. */
 #include "karma_contacts.h"
 
+#include <stddef.h>
+
 #include <karma/MdtContactGroup.h>
 #include <karma/Mdt.h>
 
@@ -25,6 +27,25 @@ static int ensureContacts(MdtContactGroupID g, int n)
     return 1;
 }
 
+/* The axis k of transform tm whose (tm[k]·d) / scale[k] is largest in magnitude (scale NULL: 1);
+ * *value gets that signed ratio. Picks reference and incident faces. */
+static int mostAlignedAxis(MeMatrix4Ptr tm, const MeVector3 d, const MeReal *scale, MeReal *value)
+{
+    int axis = 0;
+    MeReal best = 0;
+    for (int k = 0; k < 3; k++) {
+        MeReal v = MeVector3Dot(tm[k], d);
+        if (scale)
+            v /= scale[k];
+        if (MeFabs(v) > MeFabs(best)) {
+            best = v;
+            axis = k;
+        }
+    }
+    *value = best;
+    return axis;
+}
+
 int karma_box_on_plane(MdtContactGroupID g, MdtBodyID box, const MeVector3 halfExtents, const MeVector3 up,
                        MeReal planeOffset, const MdtContactParams *params)
 {
@@ -32,15 +53,8 @@ int karma_box_on_plane(MdtContactGroupID g, MdtBodyID box, const MeVector3 halfE
         return 0;
     MeMatrix4Ptr tm = MdtBodyGetTransformPtr(box);
     /* The box's bottom face: the local axis most opposed to `up`. */
-    int axis = 0;
-    MeReal best = 0;
-    for (int k = 0; k < 3; k++) {
-        MeReal d = MeVector3Dot(tm[k], up);
-        if (MeFabs(d) > MeFabs(best)) {
-            best = d;
-            axis = k;
-        }
-    }
+    MeReal best;
+    int axis = mostAlignedAxis(tm, up, NULL, &best);
     MeReal sign = best > 0 ? -1 : 1; /* towards the plane */
     int a = (axis + 1) % 3, b = (axis + 2) % 3;
     MdtContactID c = MdtContactGroupGetFirstContact(g);
@@ -68,30 +82,16 @@ int karma_box_on_box(MdtContactGroupID g, MdtBodyID top, MdtBodyID bottom, const
     MeMatrix4Ptr tt = MdtBodyGetTransformPtr(top), tb = MdtBodyGetTransformPtr(bottom);
     /* Reference face: the bottom box's face whose normal is most aligned with the direction to the top box. */
     MeVector3 d = {tt[3][0] - tb[3][0], tt[3][1] - tb[3][1], tt[3][2] - tb[3][2]};
-    int axis = 0;
-    MeReal best = 0;
-    for (int k = 0; k < 3; k++) {
-        MeReal v = MeVector3Dot(tb[k], d) / halfExtents[k];
-        if (MeFabs(v) > MeFabs(best)) {
-            best = v;
-            axis = k;
-        }
-    }
+    MeReal best;
+    int axis = mostAlignedAxis(tb, d, halfExtents, &best);
     MeVector3 up;
     MeVector3MultiplyScalar(up, tb[axis], best > 0 ? 1 : -1);
     MeReal faceOffset = MeVector3Dot(tb[3], up) + halfExtents[axis];
     MeVector3 down;
     MeVector3MultiplyScalar(down, up, -1);
     /* Incident face: the top box's face most opposed to `up`; its four corners. */
-    int ia = 0;
-    MeReal ib = 0;
-    for (int k = 0; k < 3; k++) {
-        MeReal v = MeVector3Dot(tt[k], up);
-        if (MeFabs(v) > MeFabs(ib)) {
-            ib = v;
-            ia = k;
-        }
-    }
+    MeReal ib;
+    int ia = mostAlignedAxis(tt, up, NULL, &ib);
     int a = (ia + 1) % 3, b = (ia + 2) % 3;
     MdtContactID c = MdtContactGroupGetFirstContact(g);
     for (int i = 0; i < 4; i++, c = MdtContactGroupGetNextContact(g, c)) {
@@ -118,30 +118,16 @@ int karma_box_on_box_clipped(MdtContactGroupID g, MdtBodyID top, const MeVector3
     MeMatrix4Ptr tt = MdtBodyGetTransformPtr(top), tb = MdtBodyGetTransformPtr(bottom);
     /* Reference face: the bottom box's face facing the top box (direction scaled by the extents). */
     MeVector3 d = {tt[3][0] - tb[3][0], tt[3][1] - tb[3][1], tt[3][2] - tb[3][2]};
-    int axis = 0;
-    MeReal best = 0;
-    for (int k = 0; k < 3; k++) {
-        MeReal v = MeVector3Dot(tb[k], d) / bottomHalf[k];
-        if (MeFabs(v) > MeFabs(best)) {
-            best = v;
-            axis = k;
-        }
-    }
+    MeReal best;
+    int axis = mostAlignedAxis(tb, d, bottomHalf, &best);
     MeVector3 up, centre;
     MeVector3MultiplyScalar(up, tb[axis], best > 0 ? 1 : -1);
     for (int k = 0; k < 3; k++)
         centre[k] = tb[3][k] + up[k] * bottomHalf[axis];
     int ra = (axis + 1) % 3, rb = (axis + 2) % 3;
     /* Incident face: the top box's face most opposed to `up`, its outward normal m and centre ci. */
-    int ia = 0;
-    MeReal ib = 0;
-    for (int k = 0; k < 3; k++) {
-        MeReal v = MeVector3Dot(tt[k], up);
-        if (MeFabs(v) > MeFabs(ib)) {
-            ib = v;
-            ia = k;
-        }
-    }
+    MeReal ib;
+    int ia = mostAlignedAxis(tt, up, NULL, &ib);
     MeReal side = ib > 0 ? -1 : 1;
     MeVector3 m, ci;
     MeVector3MultiplyScalar(m, tt[ia], side);
