@@ -185,6 +185,26 @@ static void friction_ratio_protects_the_most_important(void **state)
     MdtWorldDestroy(s.world);
 }
 
+/* An approaching body's contacts matter more: B falling at 2 m/s onto its contacts adds
+ * normVelBias x 2 = 13 to their importance, so A's world contacts go first. */
+static void approach_speed_raises_importance(void **state)
+{
+    (void)state;
+    Scene s;
+    build(&s, 1);
+    MdtBodySetLinearVelocity(s.box[B], 0, 0, -2);
+    MdtWorldSetMaxMatrixSize(s.world, 10);
+    MdtWorldStep(s.world, ME_R(1.0) / 60);
+    char text[64];
+    describe(&s, text);
+    print_message("cap 10, box B approaching at 2 m/s: rows per contact %s\n", text);
+    int expect[GROUPS][PER] = {{0, 0, 1, 1}, {1, 1, 1, 1}, {0, 0, 0, 1}};
+    for (int g = 0; g < GROUPS; g++)
+        for (int k = 0; k < PER; k++)
+            assert_int_equal(rowsOf(s.contact[g][k]), expect[g][k]);
+    MdtWorldDestroy(s.world);
+}
+
 /* Importance by callback: here world contacts count for less than body-body ones. */
 static MeReal worldLast(MdtContactID c, void *data)
 {
@@ -302,6 +322,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(drops_in_karmas_order),
         cmocka_unit_test(friction_ratio_protects_the_most_important),
+        cmocka_unit_test(approach_speed_raises_importance),
         cmocka_unit_test(importance_callback_replaces_the_order),
         cmocka_unit_test(capped_stack_still_stands),
         cmocka_unit_test(settings_are_checked),
