@@ -2,8 +2,6 @@
 #ifndef MDT_H
 #define MDT_H
 
-#include "MeMath.h"
-#include "MeMessage.h"
 #include "MdtBSJoint.h"
 #include "MdtBody.h"
 #include "MdtCarWheel.h"
@@ -12,10 +10,14 @@
 #include "MdtContactGroup.h"
 #include "MdtContactParams.h"
 #include "MdtHinge.h"
+#include "MdtLOD.h"
 #include "MdtLimit.h"
+#include "MdtMainLoop.h"
 #include "MdtPrismatic.h"
 #include "MdtSpring.h"
 #include "MdtTypes.h"
 #include "MdtWorld.h"
+#include "MeMath.h"
+#include "MeMessage.h"
 
 #endif /* MDT_H */
