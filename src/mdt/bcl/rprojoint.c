@@ -35,15 +35,20 @@ static void addRows(MdtConstraint *c, MdtRowWriter *w)
         MeVector3MultiplyAdd(omega, d->angularVelocity[k], f[k]);
     for (int k = 0; k < 6; k++) {
         MdtRow row;
+        MeReal scale = 1;
         MdtRowInit(&row);
         if (k < 3) {
             MdtBclPointAlongRow(&row, c, f[k], METRUE);
         } else {
             MdtBclRotationRow(&row, &r, k - 3);
             row.velocity = MeVector3Dot(row.ang0, omega);
+            /* The row's torque is (impulse / h)·ang0, and |ang0| ≤ 1: bound the impulse so that the
+             * torque itself stays within the strength. */
+            MeReal len = MeVector3Magnitude(row.ang0);
+            scale = len > ME_SMALL_EPSILON ? 1 / len : 1;
         }
-        row.lo = -d->strength[k];
-        row.hi = d->strength[k];
+        row.lo = d->strength[k] >= MEINFINITY ? -MEINFINITY : -d->strength[k] * scale;
+        row.hi = -row.lo;
         MdtRowWriterAdd(w, &row);
     }
 }
