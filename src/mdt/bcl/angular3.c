@@ -60,28 +60,5 @@ MeBool MdtAngular3RotationIsEnabled(MdtAngular3ID j)
     return d->rotationEnabled;
 }
 
-void MdtAngular3SetStiffness(MdtAngular3ID j, MeReal stiffness)
-{
-    DATA_OR_RETURN(d, j, ME_NOTHING);
-    if (MdtBclCheckNonNegative(&stiffness, "stiffness", __func__))
-        d->stiffness = stiffness;
-}
-
-MeReal MdtAngular3GetStiffness(MdtAngular3ID j)
-{
-    DATA_OR_RETURN(d, j, 0);
-    return d->stiffness;
-}
-
-void MdtAngular3SetDamping(MdtAngular3ID j, MeReal damping)
-{
-    DATA_OR_RETURN(d, j, ME_NOTHING);
-    if (MdtBclCheckNonNegative(&damping, "damping", __func__))
-        d->damping = damping;
-}
-
-MeReal MdtAngular3GetDamping(MdtAngular3ID j)
-{
-    DATA_OR_RETURN(d, j, 0);
-    return d->damping;
-}
+MDT_BCL_GAIN_PROPERTY(Angular3, MdtBclANGULAR3, Angular3Data, Stiffness, stiffness, stiffness)
+MDT_BCL_GAIN_PROPERTY(Angular3, MdtBclANGULAR3, Angular3Data, Damping, damping, damping)

@@ -51,48 +51,9 @@ static const MdtConstraintClass coneLimitClass = {"ConeLimit", 1, reset, NULL, a
 
 MDT_BCL_TYPE_FUNCTIONS(ConeLimit, MdtBclCONELIMIT, coneLimitClass)
 
-#define DATA_OR_RETURN(d, j, ret)                                                                    \
-    MDT_BCL_JOINT_OR_RETURN(c_, j, MdtBclCONELIMIT, ret);                                            \
-    ConeLimitData *d = MDT_CONSTRAINT_DATA(c_, ConeLimitData)
-
-void MdtConeLimitSetConeHalfAngle(MdtConeLimitID j, MeReal theta)
-{
-    DATA_OR_RETURN(d, j, ME_NOTHING);
-    if (MdtBclCheckAngle(theta, 0, ME_PI, "theta", __func__))
-        d->halfAngle = theta;
-}
-
-MeReal MdtConeLimitGetConeHalfAngle(MdtConeLimitID j)
-{
-    DATA_OR_RETURN(d, j, 0);
-    return d->halfAngle;
-}
-
-void MdtConeLimitSetStiffness(MdtConeLimitID j, MeReal stiffness)
-{
-    DATA_OR_RETURN(d, j, ME_NOTHING);
-    if (MdtBclCheckNonNegative(&stiffness, "stiffness", __func__))
-        d->stiffness = stiffness;
-}
-
-MeReal MdtConeLimitGetStiffness(MdtConeLimitID j)
-{
-    DATA_OR_RETURN(d, j, 0);
-    return d->stiffness;
-}
-
-void MdtConeLimitSetDamping(MdtConeLimitID j, MeReal damping)
-{
-    DATA_OR_RETURN(d, j, ME_NOTHING);
-    if (MdtBclCheckNonNegative(&damping, "damping", __func__))
-        d->damping = damping;
-}
-
-MeReal MdtConeLimitGetDamping(MdtConeLimitID j)
-{
-    DATA_OR_RETURN(d, j, 0);
-    return d->damping;
-}
+MDT_BCL_ANGLE_PROPERTY(ConeLimit, MdtBclCONELIMIT, ConeLimitData, ConeHalfAngle, halfAngle, theta)
+MDT_BCL_GAIN_PROPERTY(ConeLimit, MdtBclCONELIMIT, ConeLimitData, Stiffness, stiffness, stiffness)
+MDT_BCL_GAIN_PROPERTY(ConeLimit, MdtBclCONELIMIT, ConeLimitData, Damping, damping, damping)
 
 MeReal MdtConeLimitGetAngle(MdtConeLimitID j)
 {

@@ -93,4 +93,25 @@ MeBool MdtBclCheckBodyIndex(unsigned int bodyindex, const char *function);
     if (!c)                                                                                          \
     return ret
 
+/** Defines Mdt<T>Set<Name>(j, arg) and Mdt<T>Get<Name>(j) for the MeReal `field` of the type's data
+ *  struct `Data`; the setter stores `arg` only when `valid` (an expression of `arg`) holds. */
+#define MDT_BCL_CHECKED_PROPERTY(T, kind, Data, Name, field, arg, valid)                             \
+    void Mdt##T##Set##Name(Mdt##T##ID j, MeReal arg)                                                 \
+    {                                                                                                \
+        MDT_BCL_JOINT_OR_RETURN(c, j, kind, ME_NOTHING);                                             \
+        if (valid)                                                                                   \
+            MDT_CONSTRAINT_DATA(c, Data)->field = arg;                                               \
+    }                                                                                                \
+    MeReal Mdt##T##Get##Name(Mdt##T##ID j)                                                           \
+    {                                                                                                \
+        MDT_BCL_JOINT_OR_RETURN(c, j, kind, 0);                                                      \
+        return MDT_CONSTRAINT_DATA(c, Data)->field;                                                  \
+    }
+/** A stiffness or damping property (≥ 0, +∞ stored as MEINFINITY). */
+#define MDT_BCL_GAIN_PROPERTY(T, kind, Data, Name, field, arg)                                       \
+    MDT_BCL_CHECKED_PROPERTY(T, kind, Data, Name, field, arg, MdtBclCheckNonNegative(&arg, #arg, __func__))
+/** An angle property in [0, π]. */
+#define MDT_BCL_ANGLE_PROPERTY(T, kind, Data, Name, field, arg)                                      \
+    MDT_BCL_CHECKED_PROPERTY(T, kind, Data, Name, field, arg, MdtBclCheckAngle(arg, 0, ME_PI, #arg, __func__))
+
 #endif /* MDT_BCL_JOINT_PARTS_H */

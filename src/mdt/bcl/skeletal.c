@@ -167,41 +167,13 @@ MDT_BCL_TYPE_FUNCTIONS(Skeletal, MdtBclSKELETAL, skeletalClass)
     MDT_BCL_JOINT_OR_RETURN(c_, j, MdtBclSKELETAL, ret);                                             \
     SkeletalData *d = MDT_CONSTRAINT_DATA(c_, SkeletalData)
 
-/* Setter and getter of an angle in [0, π]. */
-#define ANGLE_PROPERTY(Name, field)                                                                  \
-    void MdtSkeletalSet##Name(MdtSkeletalID j, MeReal angle)                                         \
-    {                                                                                                \
-        DATA_OR_RETURN(d, j, ME_NOTHING);                                                            \
-        if (MdtBclCheckAngle(angle, 0, ME_PI, "angle", __func__))                                    \
-            d->field = angle;                                                                        \
-    }                                                                                                \
-    MeReal MdtSkeletalGet##Name(MdtSkeletalID j)                                                     \
-    {                                                                                                \
-        DATA_OR_RETURN(d, j, 0);                                                                     \
-        return d->field;                                                                             \
-    }
-
-/* Setter and getter of a stiffness or damping (≥ 0). */
-#define GAIN_PROPERTY(Name, field, what)                                                             \
-    void MdtSkeletalSet##Name(MdtSkeletalID j, MeReal what)                                          \
-    {                                                                                                \
-        DATA_OR_RETURN(d, j, ME_NOTHING);                                                            \
-        if (MdtBclCheckNonNegative(&what, #what, __func__))                                          \
-            d->field = what;                                                                         \
-    }                                                                                                \
-    MeReal MdtSkeletalGet##Name(MdtSkeletalID j)                                                     \
-    {                                                                                                \
-        DATA_OR_RETURN(d, j, 0);                                                                     \
-        return d->field;                                                                             \
-    }
-
-ANGLE_PROPERTY(ConePrimaryLimitAngle, primary)
-ANGLE_PROPERTY(ConeSecondaryLimitAngle, secondary)
-ANGLE_PROPERTY(TwistLimitAngle, twist)
-GAIN_PROPERTY(ConeStiffness, coneK, stiffness)
-GAIN_PROPERTY(ConeDamping, coneD, damping)
-GAIN_PROPERTY(TwistStiffness, twistK, stiffness)
-GAIN_PROPERTY(TwistDamping, twistD, damping)
+MDT_BCL_ANGLE_PROPERTY(Skeletal, MdtBclSKELETAL, SkeletalData, ConePrimaryLimitAngle, primary, angle)
+MDT_BCL_ANGLE_PROPERTY(Skeletal, MdtBclSKELETAL, SkeletalData, ConeSecondaryLimitAngle, secondary, angle)
+MDT_BCL_ANGLE_PROPERTY(Skeletal, MdtBclSKELETAL, SkeletalData, TwistLimitAngle, twist, angle)
+MDT_BCL_GAIN_PROPERTY(Skeletal, MdtBclSKELETAL, SkeletalData, ConeStiffness, coneK, stiffness)
+MDT_BCL_GAIN_PROPERTY(Skeletal, MdtBclSKELETAL, SkeletalData, ConeDamping, coneD, damping)
+MDT_BCL_GAIN_PROPERTY(Skeletal, MdtBclSKELETAL, SkeletalData, TwistStiffness, twistK, stiffness)
+MDT_BCL_GAIN_PROPERTY(Skeletal, MdtBclSKELETAL, SkeletalData, TwistDamping, twistD, damping)
 
 void MdtSkeletalSetConeLimitOption(MdtSkeletalID j, MdtSkeletalConeOption option)
 {
