@@ -11,7 +11,7 @@
  * Change blocks. A space is either changing (between McdSpaceBeginChanges and McdSpaceEndChanges; a
  * new space starts changing) or not:
  *   - only while changing: insert, remove, update (McdSpaceUpdateAll/UpdateModel, McdSpaceBuild),
- *     enable/disable pairs;
+ *     enable/disable pairs (culling tables take effect at McdSpaceEndChanges);
  *   - only while not changing: McdSpaceGetPairs, McdSpaceGetTransitions, line-segment queries,
  *     McdSpaceBeginChanges;
  *   - anywhere: freeze, unfreeze, counts, iteration over models.
@@ -75,6 +75,10 @@ typedef struct McdSpaceModelIterator {
     int slot;
 } McdSpaceModelIterator;
 
+/** A culling table: a symmetric size x size bit matrix. Models inserted with the same table and the
+ *  same id never pair when the bit of their two indices is set (e.g. the parts of one ragdoll). */
+typedef struct McdCullingTable *McdCullingTableID;
+
 /** Called for each overlapping pair that a full pair pool could not record. */
 typedef void (*McdSpacePoolFullHandler)(McdModelID model1, McdModelID model2);
 
@@ -95,6 +99,10 @@ ME_API MeBool McdSpaceIsChanging(McdSpaceID space);
 
 /** Adds a model (updating its transform and AABB first). A model is in at most one space. */
 ME_API MeBool McdSpaceInsertModel(McdSpaceID space, McdModelID model);
+/** As McdSpaceInsertModel, with a culling table, the model's index in it and its group id. The
+ *  table must outlive the model's stay in the space. */
+ME_API MeBool McdSpaceInsertModelWithCulling(McdSpaceID space, McdModelID model, McdCullingTableID table, int index,
+                                             int id);
 /** Takes a model out of its space; its reported pairs say Goodbye at the next McdSpaceEndChanges. */
 ME_API MeBool McdSpaceRemoveModel(McdModelID model);
 /** Re-sorts from scratch (use after inserting many models at once; otherwise optional). */
@@ -126,6 +134,16 @@ ME_API int McdSpaceGetPairCount(McdSpaceID space);
 ME_API int McdSpaceGetPairCapacity(McdSpaceID space);
 /** Overlapping pairs not recorded for lack of pool room since the space was created. */
 ME_API int McdSpaceGetLostPairCount(McdSpaceID space);
+
+/* ---- culling tables --------------------------------------------------------------------- */
+
+/** A table of size x size bits, all clear. Changes take effect at the next McdSpaceEndChanges. */
+ME_API McdCullingTableID McdCullingTableCreate(int size);
+/** Refused (ME_ERR_MCD_IN_USE) while models in a space use the table. */
+ME_API void McdCullingTableDestroy(McdCullingTableID table);
+/** Set (cull = METRUE) or clear the bit of indices i and j (and of j and i). */
+ME_API void McdCullingTableSet(McdCullingTableID table, int i, int j, MeBool cull);
+ME_API MeBool McdCullingTableGet(McdCullingTableID table, int i, int j);
 
 /* ---- reading the pairs ------------------------------------------------------------------- */
 

@@ -56,6 +56,9 @@ McdSpace *McdSpaceCreateInternal(struct McdFramework *fw, int axes, int objectCo
 
 void McdSpaceDestroyInternal(McdSpace *s)
 {
+    for (int slot = 0; slot < s->maxObjects; slot++) /* release the culling tables */
+        if (s->obj[slot].flags & MCD_OBJ_LIVE)
+            McdSpaceObjectSetCulling(s, slot, NULL, 0, 0);
     MeHandleUnregisterOwner(s->ownerSlot);
     McdSpaceEngineTerm(s);
     MeMemoryDestroy(s);

@@ -40,8 +40,17 @@ typedef struct McdSpaceEndpoint {
 #define MCD_EP_SLOT(tag) ((int)((tag) & (MCD_EP_MAX - 1u)))
 #define MCD_EP_IS_MAX(tag) (((tag) & MCD_EP_MAX) != 0)
 
+/* A symmetric bit matrix: models with the same table and id whose indices' bit is set never pair. */
+typedef struct McdCullingTable {
+    int size;
+    int users;            /* objects using it: destroying is refused while > 0 */
+    unsigned char *bits;  /* size * size bits, row-major, kept symmetric */
+} McdCullingTable;
+
 typedef struct McdSpaceObject {
     MeReal lo[3], hi[3];
+    McdCullingTable *cull; /* or NULL */
+    int cullIndex, cullId;
     uintptr_t handle; /* the model's ID, copied into the pairs */
     struct McdModel *model; /* NULL when the engine is driven directly (tests) */
     MeI32 key;        /* sort key */
@@ -72,6 +81,7 @@ typedef struct McdSpace {
     McdSpaceObject *obj;
     int *freeObj, freeObjCount, objectCount;
     int *pending, pendingCount; /* slots inserted since the last merge */
+    int cullingObjects;         /* objects with a culling table: the report re-examines every pair */
     MeBool listsDirty;          /* some object left the lists: compact them */
     MeBool keysChanged;         /* a sort key changed: re-sort the live list at the next report */
 
@@ -124,6 +134,10 @@ MeBool McdSpaceObjectSetAABB(McdSpace *s, int slot, const MeReal lo[3], const Me
 void McdSpaceSort(McdSpace *s, MeBool sort, const char *function);
 /* Re-sorts from scratch and re-derives every overlap (McdSpaceBuild). */
 void McdSpaceRebuild(McdSpace *s, const char *function);
+/* Gives an object a culling table (NULL: none), its index in it and its group id. */
+void McdSpaceObjectSetCulling(McdSpace *s, int slot, McdCullingTable *table, int index, int id);
+/* Whether the culling tables keep objects a and b apart. */
+MeBool McdSpaceObjectsCulled(const McdSpace *s, int a, int b);
 /* Freezes or unfreezes an object (unfreezing re-examines its pairs at the next report). */
 void McdSpaceObjectSetFrozen(McdSpace *s, int slot, MeBool frozen);
 /* Whether two objects' boxes overlap on every sorted axis (closed intervals). */

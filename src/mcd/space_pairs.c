@@ -302,7 +302,8 @@ void McdSpacePairRecheckAll(McdSpace *s)
 static MeBool exists(const McdSpace *s, int p)
 {
     unsigned f = s->pairs[p].flags;
-    return (f & MCD_PAIR_INMAP) && (f & MCD_PAIR_OVERLAP) && !(f & MCD_PAIR_DISABLED);
+    return (f & MCD_PAIR_INMAP) && (f & MCD_PAIR_OVERLAP) && !(f & MCD_PAIR_DISABLED) &&
+           !(s->cullingObjects > 0 && McdSpaceObjectsCulled(s, s->pairs[p].a, s->pairs[p].b));
 }
 
 static MeBool bothFrozen(const McdSpace *s, int p)
@@ -367,6 +368,11 @@ void McdSpacePairReport(McdSpace *s)
         sortByOrder(s, s->live, s->liveCount, s->liveTmp);
         s->keysChanged = MEFALSE;
     }
+    /* Culling tables may have changed (the space is not told): look at every recorded pair. */
+    if (s->cullingObjects > 0)
+        for (int p = 0; p < s->maxPairs; p++)
+            if (s->pairs[p].flags & MCD_PAIR_INMAP)
+                touch(s, p);
     /* New pairs: touched, existing, not reported before, not both frozen. */
     int h = 0;
     for (int i = 0; i < s->touchedCount; i++) {

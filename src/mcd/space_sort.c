@@ -106,6 +106,7 @@ int McdSpaceObjectAdd(McdSpace *s, uintptr_t handle, struct McdModel *model, MeI
 void McdSpaceObjectRemove(McdSpace *s, int slot)
 {
     McdSpaceObject *o = &s->obj[slot];
+    McdSpaceObjectSetCulling(s, slot, NULL, 0, 0);
     McdSpacePairDetachObject(s, slot);
     if (o->flags & MCD_OBJ_PENDING) {
         for (int i = 0; i < s->pendingCount; i++)
@@ -134,6 +135,31 @@ MeBool McdSpaceObjectSetAABB(McdSpace *s, int slot, const MeReal lo[3], const Me
         o->hi[k] = hi[k];
     }
     return METRUE;
+}
+
+void McdSpaceObjectSetCulling(McdSpace *s, int slot, McdCullingTable *table, int index, int id)
+{
+    McdSpaceObject *o = &s->obj[slot];
+    if (o->cull) {
+        o->cull->users--;
+        s->cullingObjects--;
+    }
+    o->cull = table;
+    o->cullIndex = index;
+    o->cullId = id;
+    if (table) {
+        table->users++;
+        s->cullingObjects++;
+    }
+}
+
+MeBool McdSpaceObjectsCulled(const McdSpace *s, int a, int b)
+{
+    const McdSpaceObject *p = &s->obj[a], *q = &s->obj[b];
+    if (!p->cull || p->cull != q->cull || p->cullId != q->cullId)
+        return MEFALSE;
+    int bit = p->cullIndex * p->cull->size + q->cullIndex;
+    return (p->cull->bits[bit >> 3] >> (bit & 7)) & 1;
 }
 
 void McdSpaceObjectSetFrozen(McdSpace *s, int slot, MeBool frozen)

@@ -21,6 +21,8 @@ typedef struct TObj {
     int slot;     /* in the space, or -1 */
     int frozen;
     int infinite; /* a plane-like box: never moves */
+    int cullIndex; /* in the culling table, or -1 */
+    int cullId;
     MeReal lo[3], hi[3];
 } TObj;
 
@@ -38,6 +40,7 @@ typedef struct Sim {
     unsigned char *disabled; /* [i * MAXID + j] */
     LiveEntry *liveList;
     int liveCount;
+    McdCullingTableID table;
     unsigned rng;
     int present;
     long hellos, goodbyes, stayings, maxStaying;
@@ -102,6 +105,12 @@ static int insertObj(Sim *w, int infinite)
     }
     o->slot = McdSpaceObjectAdd(w->s, handleOf(id), NULL, keyOf(id), o->lo, o->hi);
     assert_true(o->slot >= 0);
+    o->cullIndex = -1;
+    if (id % 3 == 0) { /* a third of the boxes use the culling table, in two groups */
+        o->cullIndex = rndInt(w, 8);
+        o->cullId = rndInt(w, 2);
+        McdSpaceObjectSetCulling(w->s, o->slot, (McdCullingTable *)w->table, o->cullIndex, o->cullId);
+    }
     w->present++;
     return id;
 }
@@ -140,9 +149,17 @@ static int overlapsOnAxes(const Sim *w, int i, int j)
     return 1;
 }
 
+static int culled(const Sim *w, int i, int j)
+{
+    const TObj *a = &w->obj[i], *b = &w->obj[j];
+    return a->cullIndex >= 0 && b->cullIndex >= 0 && a->cullId == b->cullId &&
+           McdCullingTableGet(w->table, a->cullIndex, b->cullIndex);
+}
+
 static int truth(const Sim *w, int i, int j)
 {
-    return w->obj[i].slot >= 0 && w->obj[j].slot >= 0 && !w->disabled[i * MAXID + j] && overlapsOnAxes(w, i, j);
+    return w->obj[i].slot >= 0 && w->obj[j].slot >= 0 && !w->disabled[i * MAXID + j] && overlapsOnAxes(w, i, j) &&
+           !culled(w, i, j);
 }
 
 static int bothFrozen(const Sim *w, int i, int j) { return w->obj[i].frozen && w->obj[j].frozen; }
@@ -313,6 +330,7 @@ static void runSim(int axes, int initial, int steps, unsigned seed)
     w.live = calloc((size_t)MAXID * MAXID, sizeof *w.live);
     w.disabled = calloc((size_t)MAXID * MAXID, 1);
     w.liveList = calloc(40000, sizeof *w.liveList);
+    w.table = McdCullingTableCreate(8);
     w.s = McdSpaceCreateInternal(NULL, axes, 400, 40000, "test");
     assert_non_null(w.s);
     w.id = (McdSpaceID)w.s->id;
@@ -360,6 +378,11 @@ static void runSim(int axes, int initial, int steps, unsigned seed)
             toggleFreeze(&w);
         for (int k = rndInt(&w, 8); k > 0; k--)
             toggleDisable(&w);
+        if (rndInt(&w, 5) == 0) { /* a culling bit flips */
+            int i = rndInt(&w, 8), j = rndInt(&w, 8);
+            McdCullingTableSet(w.table, i, j, !McdCullingTableGet(w.table, i, j));
+            assert_int_equal(McdCullingTableGet(w.table, j, i), McdCullingTableGet(w.table, i, j));
+        }
         McdSpaceEndChanges(w.id);
         checkReport(&w, 1 + rndInt(&w, 97));
         if (rndInt(&w, 4) == 0)
@@ -371,7 +394,10 @@ static void runSim(int axes, int initial, int steps, unsigned seed)
                   axes, steps, w.present, w.nextId, w.hellos, w.goodbyes, w.stayings, w.maxStaying,
                   McdSpaceGetPairCount(w.id));
     assert_true(w.hellos > 100 && w.goodbyes > 100);
+    karma_capture_messages();
+    assert_reports(ME_ERR_MCD_IN_USE, McdCullingTableDestroy(w.table)); /* models still use it */
     McdSpaceDestroyInternal(w.s);
+    McdCullingTableDestroy(w.table);
     free(w.live);
     free(w.disabled);
     free(w.liveList);
