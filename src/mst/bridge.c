@@ -7,6 +7,8 @@
  * callback drops the pair. */
 #include <string.h>
 
+#include <karma/McdInteraction.h>
+#include <karma/McdModel.h>
 #include <karma/MeMemory.h>
 #include <karma/MdtBody.h>
 #include <karma/MdtContact.h>
@@ -14,7 +16,7 @@
 #include <karma/MdtWorld.h>
 
 #include "../mcd/mcd_internal.h"
-#include "../mcd/model.h"
+#include "../mcd/framework.h"
 #include "../mdt/body.h"
 #include "../me/check.h"
 #include "../me/handle.h"
