@@ -12,6 +12,7 @@
 
 #include "McdTypes.h"
 #include "MdtTypes.h"
+#include "MeProfile.h"
 #include "MstBridge.h"
 
 ME_EXTERN_C_BEGIN
@@ -45,6 +46,14 @@ ME_API void MstUniverseDestroy(MstUniverseID u);
 ME_API MeBool MstUniverseIsValid(MstUniverseID u);
 /** Exactly McdSpaceUpdateAll, MstBridgeUpdateContacts and MdtWorldStep(world, stepSize). */
 ME_API void MstUniverseStep(MstUniverseID u, MeReal stepSize);
+
+/** Profile sections of the collision half of MstUniverseStep (the dynamics half is in the world's
+ *  profile, MdtWorldGetProfile): "Collision" holds "Farfield" (McdSpaceUpdateAll) and "Nearfield"
+ *  (MstBridgeUpdateContacts: pair tests and contact conversion). */
+#define MST_SECTION_COLLISION "Collision"
+#define MST_SECTION_FARFIELD "Farfield"
+#define MST_SECTION_NEARFIELD "Nearfield"
+ME_API const MeProfile *MstUniverseGetProfile(MstUniverseID u);
 
 ME_API MdtWorldID MstUniverseGetWorld(MstUniverseID u);
 ME_API McdSpaceID MstUniverseGetSpace(MstUniverseID u);

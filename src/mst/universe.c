@@ -21,6 +21,7 @@ typedef struct MstUniverse {
     McdSpaceID space;
     MdtWorldID world;
     MstBridgeID bridge;
+    MeProfile profile;        /* "Collision" = "Farfield" + "Nearfield" of each step */
 } MstUniverse;
 
 static MstUniverse *universeFromID(MstUniverseID id, const char *function)
@@ -110,6 +111,7 @@ MstUniverseID MstUniverseCreate(const MstUniverseSizes *sizes)
         return NULL;
     }
     u->id = MeHandleOfOwner(u->ownerSlot);
+    MeProfileInit(&u->profile);
     MstSetWorldHandlers(u->world);
     return (MstUniverseID)u->id;
 }
@@ -151,9 +153,24 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
     MstUniverse *u = universeFromID(id, __func__);
     if (!u)
         return;
+    MeProfile *prof = &u->profile;
+    MeProfileFrameStart(prof);
+    MeProfileStartSection(prof, MST_SECTION_COLLISION);
+    MeProfileStartSection(prof, MST_SECTION_FARFIELD);
     McdSpaceUpdateAll(u->space);
+    MeProfileEndSection(prof, MST_SECTION_FARFIELD);
+    MeProfileStartSection(prof, MST_SECTION_NEARFIELD);
     MstBridgeUpdateContacts(u->bridge, u->space, u->world);
+    MeProfileEndSection(prof, MST_SECTION_NEARFIELD);
+    MeProfileEndSection(prof, MST_SECTION_COLLISION);
+    MeProfileFrameEnd(prof);
     MdtWorldStep(u->world, stepSize);
+}
+
+const MeProfile *MstUniverseGetProfile(MstUniverseID id)
+{
+    MstUniverse *u = universeFromID(id, __func__);
+    return u ? &u->profile : NULL;
 }
 
 #define UNIVERSE_GETTER(Name, Type, field)                                                           \
