@@ -1,8 +1,8 @@
 /* mcd_internal.h -- the records behind Mcd's IDs and the contract between the framework, the
  * geometries, the space and the nearfield tests (internal).
  *
- * Ownership: framework.c, model.c and geometry/*.c own these structs; space_axis_sort.c owns the
- * space; nearfield/*.c implement McdNearfieldFn for pairs of geometry types and register them in
+ * Ownership: framework.c, model.c and geometry/<type>.c own these structs; space_axis_sort.c owns the
+ * space; nearfield/<pair>.c implement McdNearfieldFn for pairs of geometry types and register them in
  * the framework's interaction table. Every geometry's origin is its centre of mass, its symmetric
  * axis local z. */
 #ifndef MCD_INTERNAL_H
@@ -56,6 +56,7 @@ typedef struct McdModel {
     void *userData;
     void *body;                    /* MdtBodyID set by the bridge (Mcd never looks inside) */
     struct McdSpace *space;        /* the space it is in, or NULL */
+    McdSpaceID spaceID;            /* its ID (McdModelGetSpace), NULL when in no space */
     int spaceIndex;                /* its slot in that space */
     MeBool frozen;
 } McdModel;
