@@ -18,6 +18,9 @@
 struct McdModel;
 struct McdFramework;
 
+#define MCD_BOX_LO(s, slot) (&(s)->box[6 * (slot)])
+#define MCD_BOX_HI(s, slot) (&(s)->box[6 * (slot) + 3])
+
 /* Object flags. */
 #define MCD_OBJ_LIVE 1u     /* slot in use */
 #define MCD_OBJ_INLISTS 2u  /* its end points are in the sorted lists */
@@ -48,7 +51,6 @@ typedef struct McdCullingTable {
 } McdCullingTable;
 
 typedef struct McdSpaceObject {
-    MeReal lo[3], hi[3];
     McdCullingTable *cull; /* or NULL */
     int cullIndex, cullId;
     uintptr_t handle; /* the model's ID, copied into the pairs */
@@ -84,6 +86,10 @@ typedef struct McdSpace {
     int cullingObjects;         /* objects with a culling table: the report re-examines every pair */
     MeBool listsDirty;          /* some object left the lists: compact them */
     MeBool keysChanged;         /* a sort key changed: re-sort the live list at the next report */
+
+    /* boxes, 6 reals per slot (lo x y z, hi x y z), apart from the objects so that the events of the
+     * sort touch little memory; prevBox holds the boxes of the last sort */
+    MeReal *box, *prevBox;
 
     /* end points: ep[k] holds 2 * (objects in the lists) entries for axis[k] */
     McdSpaceEndpoint *ep[3];

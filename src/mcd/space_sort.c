@@ -4,9 +4,11 @@
  * Each sorted axis keeps the start and end values of every object's box in one array ordered by
  * (value, end?, slot). Between updates objects move a little, so re-sorting by insertion costs about
  * one pass plus one swap per change of order. A swap of a start with an end is the only event that
- * can change whether two boxes overlap on that axis; at each such swap the pair is re-tested on every
- * sorted axis with the final values, so after the pass the recorded overlaps are exactly the boxes'
- * overlaps (a pair whose overlap changed must have swapped a start and an end on some axis). */
+ * can change whether two boxes overlap on that axis, and a pair whose overlap changed must have had
+ * such a swap on some axis. All values are final before the passes, so: when a start passes an end,
+ * the pair is recorded if the boxes overlap on every axis; when an end passes a start, the boxes are
+ * apart, and the pair is dropped if their boxes of the last sort overlapped (else there is no record).
+ * After the passes the records are exactly the overlaps, with few hash look-ups. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -44,8 +46,10 @@ MeBool McdSpaceEngineInit(McdSpace *s, int axes, int maxObjects, int maxPairs)
     s->activePosAll = MeMemoryCreate(n * sizeof(int));
     s->activePosNew = MeMemoryCreate(n * sizeof(int));
     s->epTmp = MeMemoryCreate(2 * n * sizeof(McdSpaceEndpoint));
+    s->box = MeMemoryCreateZeroed(6 * n * sizeof(MeReal));
+    s->prevBox = MeMemoryCreateZeroed(6 * n * sizeof(MeReal));
     MeBool ok = s->obj && s->freeObj && s->pending && s->activeAll && s->activeNew && s->activePosAll &&
-                s->activePosNew && s->epTmp;
+                s->activePosNew && s->epTmp && s->box && s->prevBox;
     for (int k = 0; k < s->axisCount; k++) {
         s->ep[k] = MeMemoryCreate(2 * n * sizeof(McdSpaceEndpoint));
         ok = ok && s->ep[k];
@@ -70,6 +74,8 @@ void McdSpaceEngineTerm(McdSpace *s)
     MeMemoryDestroy(s->activePosAll);
     MeMemoryDestroy(s->activePosNew);
     MeMemoryDestroy(s->epTmp);
+    MeMemoryDestroy(s->box);
+    MeMemoryDestroy(s->prevBox);
     for (int k = 0; k < 3; k++)
         MeMemoryDestroy(s->ep[k]);
 }
@@ -96,8 +102,8 @@ int McdSpaceObjectAdd(McdSpace *s, uintptr_t handle, struct McdModel *model, MeI
     o->pairHead = -1;
     o->flags = MCD_OBJ_LIVE | MCD_OBJ_PENDING;
     if (!McdSpaceObjectSetAABB(s, slot, lo, hi))
-        for (int k = 0; k < 3; k++)
-            o->lo[k] = o->hi[k] = 0;
+        for (int k = 0; k < 6; k++)
+            s->box[6 * slot + k] = 0;
     s->pending[s->pendingCount++] = slot;
     s->objectCount++;
     return slot;
@@ -129,10 +135,10 @@ MeBool McdSpaceObjectSetAABB(McdSpace *s, int slot, const MeReal lo[3], const Me
 {
     if (!boxIsValid(lo, hi))
         return MEFALSE;
-    McdSpaceObject *o = &s->obj[slot];
+    MeReal *b = &s->box[6 * slot];
     for (int k = 0; k < 3; k++) {
-        o->lo[k] = lo[k];
-        o->hi[k] = hi[k];
+        b[k] = lo[k];
+        b[k + 3] = hi[k];
     }
     return METRUE;
 }
@@ -173,16 +179,18 @@ void McdSpaceObjectSetFrozen(McdSpace *s, int slot, MeBool frozen)
     }
 }
 
-MeBool McdSpaceObjectsOverlap(const McdSpace *s, int a, int b)
+static MeBool boxesOverlap(const McdSpace *s, const MeReal *box, int a, int b)
 {
-    const McdSpaceObject *p = &s->obj[a], *q = &s->obj[b];
+    const MeReal *p = &box[6 * a], *q = &box[6 * b];
     for (int i = 0; i < s->axisCount; i++) {
         int k = s->axis[i];
-        if (!(p->lo[k] <= q->hi[k] && q->lo[k] <= p->hi[k]))
+        if (!(p[k] <= q[k + 3] && q[k] <= p[k + 3]))
             return MEFALSE;
     }
     return METRUE;
 }
+
+MeBool McdSpaceObjectsOverlap(const McdSpace *s, int a, int b) { return boxesOverlap(s, s->box, a, b); }
 
 /* ---- list maintenance --------------------------------------------------------------------- */
 
@@ -207,14 +215,12 @@ static void refreshValues(McdSpace *s)
     for (int i = 0; i < s->axisCount; i++) {
         int k = s->axis[i];
         McdSpaceEndpoint *ep = s->ep[i];
-        for (int j = 0; j < s->epCount; j++) {
-            const McdSpaceObject *o = &s->obj[MCD_EP_SLOT(ep[j].tag)];
-            ep[j].value = MCD_EP_IS_MAX(ep[j].tag) ? o->hi[k] : o->lo[k];
-        }
+        for (int j = 0; j < s->epCount; j++)
+            ep[j].value = s->box[6 * MCD_EP_SLOT(ep[j].tag) + k + (MCD_EP_IS_MAX(ep[j].tag) ? 3 : 0)];
     }
 }
 
-/* Insertion sort of one axis; every start/end swap re-tests that pair. */
+/* Insertion sort of one axis; a start/end swap is the only event that can change a pair. */
 static void insertionSort(McdSpace *s, int axisIndex)
 {
     McdSpaceEndpoint *ep = s->ep[axisIndex];
@@ -229,7 +235,13 @@ static void insertionSort(McdSpace *s, int axisIndex)
             const McdSpaceEndpoint *o = &ep[j];
             if (MCD_EP_IS_MAX(o->tag) != eMax) {
                 int so = MCD_EP_SLOT(o->tag);
-                McdSpacePairSetOverlap(s, se, so, McdSpaceObjectsOverlap(s, se, so));
+                if (!eMax) { /* a start passed an end: they may begin to overlap (test every axis) */
+                    if (McdSpaceObjectsOverlap(s, se, so))
+                        McdSpacePairSetOverlap(s, se, so, METRUE);
+                } else if (boxesOverlap(s, s->prevBox, se, so)) {
+                    /* An end passed a start: apart now; a pair only if they overlapped before. */
+                    McdSpacePairSetOverlap(s, se, so, MEFALSE);
+                }
             }
             ep[j + 1] = ep[j];
             j--;
@@ -288,9 +300,9 @@ static void mergePending(McdSpace *s)
         McdSpaceEndpoint *fresh = s->epTmp;
         for (int j = 0; j < s->pendingCount; j++) {
             int slot = s->pending[j];
-            fresh[2 * j].value = s->obj[slot].lo[k];
+            fresh[2 * j].value = s->box[6 * slot + k];
             fresh[2 * j].tag = (MeU32)slot;
-            fresh[2 * j + 1].value = s->obj[slot].hi[k];
+            fresh[2 * j + 1].value = s->box[6 * slot + k + 3];
             fresh[2 * j + 1].tag = MCD_EP_MAX | (MeU32)slot;
         }
         qsort(fresh, (size_t)k2, sizeof *fresh, epCompare);
@@ -326,6 +338,12 @@ static void sweepAll(McdSpace *s)
         s->obj[MCD_EP_SLOT(s->ep[0][i].tag)].flags &= ~MCD_OBJ_NEW;
 }
 
+/* The boxes the records now reflect: an end event needs a look-up only if the two overlapped. */
+static void keepBoxes(McdSpace *s)
+{
+    memcpy(s->prevBox, s->box, 6 * (size_t)s->maxObjects * sizeof(MeReal));
+}
+
 static void reportLost(McdSpace *s, const char *function)
 {
     if (s->lostNow > 0)
@@ -353,6 +371,7 @@ void McdSpaceSort(McdSpace *s, MeBool sort, const char *function)
         mergePending(s);
     if (retry)
         sweepAll(s);
+    keepBoxes(s);
     reportLost(s, function);
 }
 
@@ -372,5 +391,6 @@ void McdSpaceRebuild(McdSpace *s, const char *function)
     McdSpacePairRecheckAll(s);
     if (s->pendingCount > 0)
         mergePending(s);
+    keepBoxes(s);
     reportLost(s, function);
 }
