@@ -1,8 +1,8 @@
 /* mcd_internal.h -- the records behind Mcd's IDs and the contract between the framework, the
  * geometries, the space and the nearfield tests (internal).
  *
- * Ownership: framework.c, model.c and geometry/*.c own these structs; space_axis_sort.c owns the
- * space; nearfield/*.c implement McdNearfieldFn for pairs of geometry types and register them in
+ * Ownership: framework.c, model.c and geometry/<type>.c own these structs; space_axis_sort.c owns the
+ * space; nearfield/<pair>.c implement McdNearfieldFn for pairs of geometry types and register them in
  * the framework's interaction table. Every geometry's origin is its centre of mass, its symmetric
  * axis local z. */
 #ifndef MCD_INTERNAL_H
