@@ -47,7 +47,8 @@
 
 #define ME_ERROR_LIST_MCD(X) \
     X(ME_ERR_MCD_DEGENERATE_GEOMETRY, 400, ME_LEVEL_WARNING, "a geometry dimension is zero, negative or not finite") \
-    X(ME_ERR_MCD_IN_USE,              401, ME_LEVEL_WARNING, "the object is still in use and cannot be destroyed")
+    X(ME_ERR_MCD_IN_USE,              401, ME_LEVEL_WARNING, "the object is still in use and cannot be destroyed") \
+    X(ME_ERR_MCD_NO_INTERACTION,      402, ME_LEVEL_WARNING, "no pair test is registered for two geometry types: their pairs give no contacts (reported once per type pair)")
 
 #define ME_ERROR_LIST_MST(X) \
     X(ME_ERR_MST_MATERIAL,            600, ME_LEVEL_WARNING, "a material index is out of range")

@@ -14,5 +14,6 @@
 #include "MeProfile.h"
 #include "MeVersion.h"
 #include "Mdt.h"
+#include "Mcd.h"
 
 #endif /* KARMA_H */

@@ -56,6 +56,7 @@ typedef struct McdModel {
     void *userData;
     void *body;                    /* MdtBodyID set by the bridge (Mcd never looks inside) */
     struct McdSpace *space;        /* the space it is in, or NULL */
+    McdSpaceID spaceID;            /* its ID (McdModelGetSpace), NULL when in no space */
     int spaceIndex;                /* its slot in that space */
     MeBool frozen;
 } McdModel;

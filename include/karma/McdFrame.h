@@ -1,0 +1,90 @@
+/* McdFrame.h -- the collision framework: type and interaction tables, pools, defaults.
+ *
+ * McdInit creates a framework: a pool of `modelCount` models, a pool of geometries, room for
+ * `geoTypeMaxCount` user geometry types besides the built-in ones, and the interaction table of pair
+ * tests. The built-in types (Null, Sphere, Box, Plane, Cylinder, Sphyl, Cone) are always known;
+ * McdPrimitivesRegisterTypes is kept for Karma code and does nothing more. Pair tests are added by
+ * McdPrimitivesRegisterInteractions (all primitive pairs); a pair of types without a test gives no
+ * contacts and is reported once.
+ *
+ * Defaults: contact tolerance 0.005 * lengthScale (docs/decisions.md), request {contactMaxCount 4,
+ * faceNormalsFirst 0}. */
+#ifndef MCD_FRAME_H
+#define MCD_FRAME_H
+
+#include "McdTypes.h"
+
+ME_EXTERN_C_BEGIN
+
+/* A library built with the other precision does not have this symbol: link errors, not corruption. */
+#define McdInit ME_PRECISION_SYMBOL(McdInit)
+
+/** Create a framework. `geoTypeMaxCount` user geometry types may be registered besides the
+ *  built-in ones; `modelCount` models and geometries may exist at once; `instanceCount` is the
+ *  size of the geometry-instance pool (aggregate children); `lengthScale` (> 0) is a typical object
+ *  size from which the default contact tolerance derives. NULL (reported) on bad arguments. */
+ME_API McdFrameworkID McdInit(int geoTypeMaxCount, int modelCount, int instanceCount, MeReal lengthScale);
+/** Run the registered term actions (last registered first), then free every model and geometry. */
+ME_API void McdTerm(McdFrameworkID fw);
+ME_API MeBool McdFrameworkIsValid(McdFrameworkID fw);
+
+/** Called by McdTerm before anything is freed (spaces, bridges and user code tidy up here). */
+typedef void (*McdFrameworkTermActionFn)(McdFrameworkID fw, void *data);
+/** Register a term action; at most 16 per framework. Returns METRUE when registered. */
+ME_API MeBool McdFrameworkRegisterTermAction(McdFrameworkID fw, McdFrameworkTermActionFn fn, void *data);
+
+ME_API MeReal McdFrameworkGetLengthScale(McdFrameworkID fw);
+/** Contact tolerance given to new models (>= 0, finite). */
+ME_API void McdFrameworkSetDefaultContactTolerance(McdFrameworkID fw, MeReal tolerance);
+ME_API MeReal McdFrameworkGetDefaultContactTolerance(McdFrameworkID fw);
+/** The request used by pairs whose `request` is NULL; the application may change it in place. */
+ME_API McdRequest *McdFrameworkGetDefaultRequestPtr(McdFrameworkID fw);
+ME_API int McdFrameworkGetModelCount(McdFrameworkID fw);
+ME_API int McdFrameworkGetGeometryCount(McdFrameworkID fw);
+ME_API int McdFrameworkGetInstanceMaxCount(McdFrameworkID fw);
+
+/* ---- geometry types ------------------------------------------------------------------------ */
+
+/** The protocol every geometry type follows (built-in types too). `data` is the geometry's shape
+ *  data: for a user type, the pointer given to McdUserGeometryCreate. Local frame = the geometry's
+ *  own frame (origin at its centre of mass for the built-in types). */
+typedef struct McdGeometryTypeDesc {
+    const char *typeName; /**< required; a string literal (kept, not copied) */
+    /** Release the shape data (optional; called by McdGeometryDestroy and McdTerm). */
+    void (*destroy)(McdGeometryID g, void *data);
+    /** Required: the tightest axis-aligned box of the geometry placed at `tm` (world). */
+    void (*getAABB)(McdGeometryID g, void *data, MeMatrix4 tm, MeVector3 minCorner, MeVector3 maxCorner);
+    /** Required: a sphere (local centre, radius) containing the geometry. */
+    void (*getBSphere)(McdGeometryID g, void *data, MeVector3 centre, MeReal *radius);
+    /** Required: the support ("maximum") point: a local point of the geometry farthest along the
+     *  local direction `dir` (not necessarily unit). */
+    void (*maximumPoint)(McdGeometryID g, void *data, const MeVector3 dir, MeVector3 point);
+    /** Required: mass properties for unit density: `relTM` = the centre-of-mass frame in the local
+     *  frame, `inertia` about the centre of mass in that frame's axes, `volume`. */
+    void (*getMassProperties)(McdGeometryID g, void *data, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume);
+    /** Optional (NULL: segments never hit): first entry of the local segment p0 -> p1. Returns
+     *  non-zero on a hit with *t in [0, 1] (0 when p0 is inside) and the local outward unit normal. */
+    int (*lineSegIntersect)(McdGeometryID g, void *data, const MeVector3 p0, const MeVector3 p1, MeReal *t,
+                            MeVector3 normal);
+    /** Optional: draw the geometry at `tm` (debug viewers). */
+    void (*debugDraw)(McdGeometryID g, void *data, MeMatrix4 tm, const float colour[3]);
+} McdGeometryTypeDesc;
+
+/** Register a user geometry type. Returns its type number (>= kMcdGeometryBuiltInTypes), or -1
+ *  (reported) when `geoTypeMaxCount` types are already registered or a required function is NULL. */
+ME_API int McdFrameworkRegisterGeometryType(McdFrameworkID fw, const McdGeometryTypeDesc *desc);
+/** Number of geometry types known (built-in and user). */
+ME_API int McdFrameworkGetGeometryTypeCount(McdFrameworkID fw);
+/** Name of a type number, or NULL when unknown. */
+ME_API const char *McdFrameworkGetGeometryTypeName(McdFrameworkID fw, int type);
+
+/** Karma's registration calls. The built-in types are always registered (these return METRUE);
+ *  McdPrimitivesRegisterInteractions adds the pair tests of every pair of primitives. */
+ME_API MeBool McdPrimitivesRegisterTypes(McdFrameworkID fw);
+ME_API MeBool McdPrimitivesRegisterInteractions(McdFrameworkID fw);
+/** Number of primitive types (Null, Sphere, Box, Plane, Cylinder, Sphyl, Cone). */
+ME_API int McdPrimitivesGetTypeCount(void);
+
+ME_EXTERN_C_END
+
+#endif /* MCD_FRAME_H */

@@ -1,0 +1,51 @@
+/* McdGeometry.h -- what every geometry can do, whatever its type.
+ *
+ * A geometry is a shape in its own local frame; models place it in the world. Geometries are shared
+ * by any number of models and are reference counted: McdGeometryDestroy refuses (ME_ERR_MCD_IN_USE)
+ * while a model still uses the geometry. Changing a geometry's dimensions takes effect for its models
+ * at their next update (McdModelUpdate or McdSpaceUpdateAll).
+ *
+ * Mass properties are for unit density (mass = volume); scale by the density. */
+#ifndef MCD_GEOMETRY_H
+#define MCD_GEOMETRY_H
+
+#include "McdTypes.h"
+
+ME_EXTERN_C_BEGIN
+
+/** Destroy a geometry that no model uses; refused (ME_ERR_MCD_IN_USE) while referenced. */
+ME_API void McdGeometryDestroy(McdGeometryID g);
+ME_API MeBool McdGeometryIsValid(McdGeometryID g);
+/** The type number (McdGeometryType or a user type), or -1 for a bad ID. */
+ME_API int McdGeometryGetTypeId(McdGeometryID g);
+ME_API const char *McdGeometryGetTypeName(McdGeometryID g);
+/** Models (and aggregates) using the geometry. */
+ME_API int McdGeometryGetReferenceCount(McdGeometryID g);
+ME_API McdFrameworkID McdGeometryGetFramework(McdGeometryID g);
+
+/** The tightest world axis-aligned box of the geometry placed at `tm` (NULL: identity). Unbounded
+ *  directions (planes) give -MEINFINITY / MEINFINITY. */
+ME_API void McdGeometryGetAABB(McdGeometryID g, MeMatrix4 tm, MeVector3 minCorner, MeVector3 maxCorner);
+/** A bounding sphere in the local frame (centre, radius); MEINFINITY for unbounded geometries. */
+ME_API void McdGeometryGetBSphere(McdGeometryID g, MeVector3 centre, MeReal *radius);
+/** Support point: a point of the geometry placed at `tm` (NULL: identity) farthest along the world
+ *  direction `dir`. Unbounded geometries clamp to +-MEINFINITY in their unbounded directions. */
+ME_API void McdGeometryMaximumPoint(McdGeometryID g, MeMatrix4 tm, const MeVector3 dir, MeVector3 point);
+/** Unit-density mass properties: `relTM` (may be NULL) receives the centre-of-mass frame in the
+ *  local frame (identity for the primitives: their origin is their centre of mass), `inertia` the
+ *  tensor about the centre of mass, `volume` the volume. Planes are infinite: METRUE only for finite
+ *  geometries. */
+ME_API MeBool McdGeometryGetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume);
+/** Draw through the type's debugDraw, if it has one. */
+ME_API void McdGeometryDebugDraw(McdGeometryID g, MeMatrix4 tm, const float colour[3]);
+
+/* ---- user geometry types (see McdFrameworkRegisterGeometryType in McdFrame.h) ------------------ */
+
+/** Create a geometry of a registered user type holding the application's shape `data`. */
+ME_API McdGeometryID McdUserGeometryCreate(McdFrameworkID fw, int type, void *data);
+/** The shape data of a user geometry (NULL for built-in types). */
+ME_API void *McdUserGeometryGetData(McdGeometryID g);
+
+ME_EXTERN_C_END
+
+#endif /* MCD_GEOMETRY_H */

@@ -1,0 +1,76 @@
+/* McdModel.h -- a geometry placed in the world: the object collision works with.
+ *
+ * A model holds a geometry, a transform and what the pair tests and the bridge need: a contact
+ * tolerance (AABB padding: contacts are reported up to this separation), a material, a sort key (the
+ * deterministic order of pairs), user data and an optional body (set by the bridge).
+ *
+ * Transform: a model either follows a transform owned elsewhere (McdModelSetTransformPtr, e.g. a
+ * body's MdtBodyGetTransformPtr) or keeps its own (the default, identity; write it through the
+ * pointer McdModelGetTransformPtr returns). An optional relative transform places the geometry in
+ * that frame: geometry-to-world = relative * transform. McdModelUpdate (or McdSpaceUpdateAll for
+ * models in a space) compounds them and refreshes the AABB; the pair tests and line segment queries
+ * use the transform of the last update. */
+#ifndef MCD_MODEL_H
+#define MCD_MODEL_H
+
+#include "McdTypes.h"
+
+ME_EXTERN_C_BEGIN
+
+/** Largest sort key (Karma's 15 bits). */
+#define MCD_MODEL_SORT_KEY_MAX 32767
+
+/** A model of `geometry` from the framework's model pool; NULL (reported) when full. */
+ME_API McdModelID McdModelCreate(McdGeometryID geometry);
+/** Destroy a model that is in no space (refused with ME_ERR_MCD_IN_USE otherwise). */
+ME_API void McdModelDestroy(McdModelID m);
+/** Restore every setting to its default (own identity transform, no relative transform, default
+ *  tolerance, material 0, sort key 0, no user data, no body); keeps the geometry and the space. */
+ME_API void McdModelReset(McdModelID m);
+ME_API MeBool McdModelIsValid(McdModelID m);
+ME_API McdFrameworkID McdModelGetFramework(McdModelID m);
+
+ME_API void McdModelSetGeometry(McdModelID m, McdGeometryID geometry);
+ME_API McdGeometryID McdModelGetGeometry(McdModelID m);
+
+/** Follow the transform at `tm` (it must outlive the model's use of it); NULL: the model's own. */
+ME_API void McdModelSetTransformPtr(McdModelID m, MeMatrix4Ptr tm);
+/** The transform followed: the pointer given, or the model's own (never NULL for a valid model). */
+ME_API MeMatrix4Ptr McdModelGetTransformPtr(McdModelID m);
+/** Place the geometry at `relTM` (a rigid transform) in the model's transform; NULL: none. */
+ME_API void McdModelSetRelativeTransform(McdModelID m, MeMatrix4 relTM);
+/** The relative transform (identity when none); returns METRUE when one is set. */
+ME_API MeBool McdModelGetRelativeTransform(McdModelID m, MeMatrix4 relTM);
+/** Geometry-to-world transform of the last update. */
+ME_API void McdModelGetWorldTransform(McdModelID m, MeMatrix4 tm);
+
+ME_API void McdModelSetContactTolerance(McdModelID m, MeReal tolerance);
+ME_API MeReal McdModelGetContactTolerance(McdModelID m);
+/** Material index (>= 0) for the bridge's material table. */
+ME_API void McdModelSetMaterial(McdModelID m, int material);
+ME_API int McdModelGetMaterial(McdModelID m);
+ME_API void McdModelSetSortKey(McdModelID m, int key);
+ME_API int McdModelGetSortKey(McdModelID m);
+ME_API void McdModelSetUserData(McdModelID m, void *data);
+ME_API void *McdModelGetUserData(McdModelID m);
+/** The dynamics body of the model (an MdtBodyID, kept opaque: Mcd never looks inside). */
+ME_API void McdModelSetBody(McdModelID m, void *body);
+ME_API void *McdModelGetBody(McdModelID m);
+
+/** Compound the relative transform with the transform (the geometry-to-world transform). */
+ME_API void McdModelCompoundTransforms(McdModelID m);
+/** Compound the transforms and recompute the AABB (padded by the contact tolerance). */
+ME_API void McdModelUpdate(McdModelID m);
+/** AABB of the last update (padded by the contact tolerance). */
+ME_API void McdModelGetAABB(McdModelID m, MeVector3 minCorner, MeVector3 maxCorner);
+/** World bounding sphere at the last update. */
+ME_API void McdModelGetBSphere(McdModelID m, MeVector3 centre, MeReal *radius);
+/** Unit-density mass properties in the model's frame (the body frame): the centre of mass `com`,
+ *  the inertia about it in the model's axes (the relative transform applied), the volume. */
+ME_API MeBool McdModelGetMassProperties(McdModelID m, MeVector3 com, MeMatrix3 inertia, MeReal *volume);
+/** The space the model is in, or NULL. */
+ME_API McdSpaceID McdModelGetSpace(McdModelID m);
+
+ME_EXTERN_C_END
+
+#endif /* MCD_MODEL_H */

@@ -1,0 +1,15 @@
+/* McdNull.h -- the null geometry: a placeholder with no extent, that touches nothing. */
+#ifndef MCD_NULL_H
+#define MCD_NULL_H
+
+#include "McdTypes.h"
+
+ME_EXTERN_C_BEGIN
+
+typedef McdGeometryID McdNullID;
+
+ME_API McdNullID McdNullCreate(McdFrameworkID fw);
+
+ME_EXTERN_C_END
+
+#endif /* MCD_NULL_H */

@@ -1,0 +1,267 @@
+/* framework.c -- McdInit / McdTerm, the geometry type table and the interaction table. */
+#include <string.h>
+
+#include <karma/MeMemory.h>
+
+#include "../me/check.h"
+#include "../me/handle.h"
+#include "framework.h"
+#include "geometry/geometry.h"
+
+/* Default contact tolerance as a fraction of lengthScale (docs/decisions.md, K9). */
+#define DEFAULT_TOLERANCE_FRACTION ME_R(0.005)
+/* Default request: four contacts are enough to hold a box face on a plane. */
+#define DEFAULT_CONTACT_MAX_COUNT 4
+
+McdFramework *McdFrameworkFromID(McdFrameworkID id, const char *function)
+{
+    return MeHandleResolveOwner((uintptr_t)id, ME_HANDLE_FRAMEWORK, function, "fw");
+}
+
+#define FW_OR_RETURN(fw, id, ret)                                                                    \
+    McdFramework *fw = McdFrameworkFromID((id), __func__);                                           \
+    if (!fw)                                                                                         \
+    return ret
+
+static void installBuiltInTypes(McdFramework *fw)
+{
+    fw->types[kMcdGeometryTypeNull] = McdNullTypeDesc;
+    fw->types[kMcdGeometryTypeSphere] = McdSphereTypeDesc;
+    fw->types[kMcdGeometryTypeBox] = McdBoxTypeDesc;
+    fw->types[kMcdGeometryTypePlane] = McdPlaneTypeDesc;
+    fw->types[kMcdGeometryTypeCylinder] = McdCylinderTypeDesc;
+    fw->types[kMcdGeometryTypeSphyl] = McdSphylTypeDesc;
+    fw->types[kMcdGeometryTypeCone] = McdConeTypeDesc;
+    /* TriangleList, ConvexMesh and Aggregate keep their numbers; their types register later. */
+    fw->typeCount = kMcdGeometryBuiltInTypes;
+}
+
+static void freeFramework(McdFramework *fw)
+{
+    MePoolDestroy(&fw->geometryPool);
+    MePoolDestroy(&fw->modelPool);
+    MeMemoryDestroy(fw->types);
+    MeMemoryDestroy(fw->interactions);
+    MeMemoryDestroy(fw->warnedPairs);
+    MeMemoryDestroy(fw);
+}
+
+McdFrameworkID McdInit(int geoTypeMaxCount, int modelCount, int instanceCount, MeReal lengthScale)
+{
+    if (!(ME_IS_FINITE(lengthScale) && lengthScale > 0)) {
+        ME_REPORT(ME_ERR_SCALE_NOT_POSITIVE, "lengthScale (%g) must be positive and finite", (double)lengthScale);
+        return NULL;
+    }
+    if (geoTypeMaxCount < 0 || geoTypeMaxCount > 1000 || modelCount < 0 || instanceCount < 0 ||
+        modelCount > ME_HANDLE_MAX_INDEX) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE,
+                  "geoTypeMaxCount (%d, at most 1000), modelCount (%d, at most %ld) and instanceCount (%d) must "
+                  "not be negative",
+                  geoTypeMaxCount, modelCount, (long)ME_HANDLE_MAX_INDEX, instanceCount);
+        return NULL;
+    }
+    McdFramework *fw = MeMemoryCreateZeroed(sizeof *fw);
+    if (!fw)
+        return NULL;
+    fw->typeCapacity = kMcdGeometryBuiltInTypes + geoTypeMaxCount;
+    size_t cells = (size_t)fw->typeCapacity * (size_t)fw->typeCapacity;
+    fw->types = MeMemoryCreateZeroed(sizeof *fw->types * (size_t)fw->typeCapacity);
+    fw->interactions = MeMemoryCreateZeroed(sizeof *fw->interactions * cells);
+    fw->warnedPairs = MeMemoryCreateZeroed(cells);
+    /* Geometries come from a pool as large as the model pool: shapes are at most one per model
+     * unless shared, and aggregate children count against instanceCount. */
+    int geometryCount = modelCount + instanceCount;
+    if (!fw->types || !fw->interactions || !fw->warnedPairs ||
+        !MePoolInit(&fw->geometryPool, geometryCount, sizeof(McdGeometry), 16, "modelCount", 0) ||
+        !MePoolInit(&fw->modelPool, modelCount, sizeof(McdModel), 16, "modelCount", 0)) {
+        freeFramework(fw);
+        return NULL;
+    }
+    fw->ownerSlot = MeHandleRegisterOwner(fw, ME_HANDLE_FRAMEWORK, __func__);
+    if (!fw->ownerSlot) {
+        freeFramework(fw);
+        return NULL;
+    }
+    MeHandleSetOwnerPool(fw->ownerSlot, ME_HANDLE_GEOMETRY, &fw->geometryPool);
+    MeHandleSetOwnerPool(fw->ownerSlot, ME_HANDLE_MODEL, &fw->modelPool);
+    fw->id = MeHandleOfOwner(fw->ownerSlot);
+    fw->instanceMaxCount = instanceCount;
+    fw->lengthScale = lengthScale;
+    fw->defaultContactTolerance = DEFAULT_TOLERANCE_FRACTION * lengthScale;
+    fw->defaultRequest.contactMaxCount = DEFAULT_CONTACT_MAX_COUNT;
+    fw->defaultRequest.faceNormalsFirst = 0;
+    fw->nextPairId = 1;
+    installBuiltInTypes(fw);
+    return (McdFrameworkID)fw->id;
+}
+
+void McdTerm(McdFrameworkID id)
+{
+    FW_OR_RETURN(fw, id, ME_NOTHING);
+    /* Term actions may still use the framework's objects: run them first, newest first. */
+    while (fw->termActionCount > 0) {
+        McdTermAction a = fw->termActions[--fw->termActionCount];
+        a.fn(id, a.data);
+    }
+    /* User geometries release their data; slots go in index order (deterministic). */
+    for (int i = 0; i < fw->geometryPool.capacity; i++) {
+        if (!MePoolSlotIsLive(&fw->geometryPool, i))
+            continue;
+        McdGeometry *g = MePoolSlot(&fw->geometryPool, i);
+        const McdGeometryTypeDesc *t = McdGeometryTypeOf(g);
+        if (t->destroy)
+            t->destroy(McdGeometryToID(g), McdGeometryData(g));
+    }
+    MeHandleUnregisterOwner(fw->ownerSlot);
+    freeFramework(fw);
+}
+
+MeBool McdFrameworkIsValid(McdFrameworkID fw) { return MeHandleIsValid((uintptr_t)fw, ME_HANDLE_FRAMEWORK); }
+
+MeBool McdFrameworkRegisterTermAction(McdFrameworkID id, McdFrameworkTermActionFn fn, void *data)
+{
+    FW_OR_RETURN(fw, id, MEFALSE);
+    ME_CHECK_NOT_NULL(fn, MEFALSE);
+    if (fw->termActionCount == MCD_TERM_ACTION_MAX) {
+        ME_REPORT(ME_ERR_POOL_FULL, "a framework holds at most %d term actions", MCD_TERM_ACTION_MAX);
+        return MEFALSE;
+    }
+    fw->termActions[fw->termActionCount].fn = fn;
+    fw->termActions[fw->termActionCount].data = data;
+    fw->termActionCount++;
+    return METRUE;
+}
+
+MeReal McdFrameworkGetLengthScale(McdFrameworkID id)
+{
+    FW_OR_RETURN(fw, id, 0);
+    return fw->lengthScale;
+}
+
+void McdFrameworkSetDefaultContactTolerance(McdFrameworkID id, MeReal tolerance)
+{
+    FW_OR_RETURN(fw, id, ME_NOTHING);
+    ME_CHECK_FINITE(tolerance, ME_NOTHING);
+    if (tolerance < 0) {
+        ME_REPORT(ME_ERR_NEGATIVE_VALUE, "argument 'tolerance' is %g; it must be >= 0; call ignored",
+                  (double)tolerance);
+        return;
+    }
+    fw->defaultContactTolerance = tolerance;
+}
+
+MeReal McdFrameworkGetDefaultContactTolerance(McdFrameworkID id)
+{
+    FW_OR_RETURN(fw, id, 0);
+    return fw->defaultContactTolerance;
+}
+
+McdRequest *McdFrameworkGetDefaultRequestPtr(McdFrameworkID id)
+{
+    FW_OR_RETURN(fw, id, NULL);
+    return &fw->defaultRequest;
+}
+
+int McdFrameworkGetModelCount(McdFrameworkID id)
+{
+    FW_OR_RETURN(fw, id, 0);
+    return MePoolGetUsed(&fw->modelPool);
+}
+
+int McdFrameworkGetGeometryCount(McdFrameworkID id)
+{
+    FW_OR_RETURN(fw, id, 0);
+    return MePoolGetUsed(&fw->geometryPool);
+}
+
+int McdFrameworkGetInstanceMaxCount(McdFrameworkID id)
+{
+    FW_OR_RETURN(fw, id, 0);
+    return fw->instanceMaxCount;
+}
+
+/* ---- geometry types ------------------------------------------------------------------------ */
+int McdFrameworkRegisterGeometryType(McdFrameworkID id, const McdGeometryTypeDesc *desc)
+{
+    FW_OR_RETURN(fw, id, -1);
+    ME_CHECK_NOT_NULL(desc, -1);
+    if (!desc->typeName || !desc->getAABB || !desc->getBSphere || !desc->maximumPoint || !desc->getMassProperties) {
+        ME_REPORT(ME_ERR_NULL_ARGUMENT, "a geometry type needs typeName, getAABB, getBSphere, maximumPoint and "
+                                        "getMassProperties; type not registered");
+        return -1;
+    }
+    if (fw->typeCount == fw->typeCapacity) {
+        ME_REPORT(ME_ERR_POOL_FULL, "%d user geometry types are registered already; raise geoTypeMaxCount in McdInit",
+                  fw->typeCapacity - kMcdGeometryBuiltInTypes);
+        return -1;
+    }
+    fw->types[fw->typeCount] = *desc;
+    return fw->typeCount++;
+}
+
+int McdFrameworkGetGeometryTypeCount(McdFrameworkID id)
+{
+    FW_OR_RETURN(fw, id, 0);
+    return fw->typeCount;
+}
+
+const char *McdFrameworkGetGeometryTypeName(McdFrameworkID id, int type)
+{
+    FW_OR_RETURN(fw, id, NULL);
+    if (type < 0 || type >= fw->typeCount)
+        return NULL;
+    return fw->types[type].typeName;
+}
+
+MeBool McdPrimitivesRegisterTypes(McdFrameworkID id)
+{
+    FW_OR_RETURN(fw, id, MEFALSE);
+    (void)fw; /* always installed by McdInit */
+    return METRUE;
+}
+
+MeBool McdPrimitivesRegisterInteractions(McdFrameworkID id)
+{
+    FW_OR_RETURN(fw, id, MEFALSE);
+    McdNearfieldRegisterPrimitives(fw);
+    return METRUE;
+}
+
+int McdPrimitivesGetTypeCount(void) { return 7; }
+
+/* ---- the interaction table ------------------------------------------------------------------- */
+static MeBool typeKnown(const McdFramework *fw, int type)
+{
+    return type >= 0 && type < fw->typeCount && fw->types[type].typeName != NULL;
+}
+
+MeBool McdFrameworkSetInteractionWithCache(McdFramework *fw, int type1, int type2, McdNearfieldFn fn,
+                                           void (*releaseCache)(void *cache))
+{
+    if (!typeKnown(fw, type1) || !typeKnown(fw, type2)) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "geometry types %d and %d must both be registered before their pair test",
+                  type1, type2);
+        return MEFALSE;
+    }
+    McdInteraction *e = &fw->interactions[type1 * fw->typeCapacity + type2];
+    e->fn = fn;
+    e->releaseCache = fn ? releaseCache : NULL;
+    return METRUE;
+}
+
+MeBool McdFrameworkSetInteraction(McdFramework *fw, int type1, int type2, McdNearfieldFn fn)
+{
+    return McdFrameworkSetInteractionWithCache(fw, type1, type2, fn, NULL);
+}
+
+McdNearfieldFn McdFrameworkGetInteraction(const McdFramework *fw, int type1, int type2)
+{
+    if (type1 < 0 || type2 < 0 || type1 >= fw->typeCount || type2 >= fw->typeCount)
+        return NULL;
+    return fw->interactions[type1 * fw->typeCapacity + type2].fn;
+}
+
+MeBool McdFrameworkHasInteraction(const McdFramework *fw, int type1, int type2)
+{
+    return McdFrameworkGetInteraction(fw, type1, type2) != NULL || McdFrameworkGetInteraction(fw, type2, type1) != NULL;
+}

@@ -1,0 +1,103 @@
+/* framework.h -- the collision framework record and its internal API (internal).
+ *
+ * For the other parts of Mcd:
+ *  - nearfield/: McdFrameworkSetInteraction registers a pair test for (type1, type2), one way round;
+ *    McdHello finds it either way round and sets McdModelPair.swapped. The body of
+ *    McdNearfieldRegisterPrimitives (nearfield/register.c) registers every primitive pair test; it is
+ *    what McdPrimitivesRegisterInteractions calls.
+ *  - the space: McdModelFromID / McdGeometryFromID resolve IDs, McdModelUpdateInternal refreshes a
+ *    model's transform and AABB, McdModelSetSpaceInternal records the space a model is in,
+ *    McdModelLineSegIntersectInternal is the per-model segment query, McdHelloInternal /
+ *    McdGoodbyeInternal work on pairs without re-resolving. */
+#ifndef MCD_FRAMEWORK_H
+#define MCD_FRAMEWORK_H
+
+#include <karma/McdFrame.h>
+#include <karma/McdLineSegment.h>
+#include <karma/MePool.h>
+
+#include "mcd_internal.h"
+
+#define MCD_TERM_ACTION_MAX 16
+
+typedef struct McdTermAction {
+    McdFrameworkTermActionFn fn;
+    void *data;
+} McdTermAction;
+
+/** One entry of the interaction table: the test for (type1, type2) in that order. */
+typedef struct McdInteraction {
+    McdNearfieldFn fn;                 /* NULL: none registered this way round */
+    void (*releaseCache)(void *cache); /* frees McdModelPair.cache at goodbye (optional) */
+} McdInteraction;
+
+typedef struct McdFramework {
+    int ownerSlot;                 /* registry slot behind the McdFrameworkID */
+    uintptr_t id;
+    MePool geometryPool;
+    MePool modelPool;
+    int instanceMaxCount;          /* aggregate children (D5) */
+    MeReal lengthScale;
+    MeReal defaultContactTolerance;
+    McdRequest defaultRequest;
+    int typeCount;                 /* built-in + registered user types */
+    int typeCapacity;              /* kMcdGeometryBuiltInTypes + geoTypeMaxCount */
+    McdGeometryTypeDesc *types;    /* typeCapacity entries */
+    McdInteraction *interactions;  /* typeCapacity^2: [type1 * typeCapacity + type2] */
+    unsigned char *warnedPairs;    /* typeCapacity^2 flags: "no test" already reported */
+    McdTermAction termActions[MCD_TERM_ACTION_MAX];
+    int termActionCount;
+    MeU32 nextPairId;              /* identities of pairs made by McdModelPairCreate */
+} McdFramework;
+
+/* ---- resolving IDs (report in the caller's name; NULL when invalid) ------------------------- */
+McdFramework *McdFrameworkFromID(McdFrameworkID id, const char *function);
+McdGeometry *McdGeometryFromID(McdGeometryID id, const char *function);
+McdModel *McdModelFromID(McdModelID id, const char *function);
+static inline McdGeometryID McdGeometryToID(const McdGeometry *g) { return (McdGeometryID)g->id; }
+static inline McdModelID McdModelToID(const McdModel *m) { return (McdModelID)m->id; }
+static inline McdFrameworkID McdFrameworkToID(const McdFramework *fw) { return (McdFrameworkID)fw->id; }
+
+/* ---- the interaction table ------------------------------------------------------------------ */
+/** Register `fn` as the test of (type1, type2) in that order (replacing any); NULL removes it.
+ *  Types must be known to the framework; returns MEFALSE (reported) otherwise. */
+MeBool McdFrameworkSetInteraction(McdFramework *fw, int type1, int type2, McdNearfieldFn fn);
+/** As above, with a function that frees the pair cache the test allocates. */
+MeBool McdFrameworkSetInteractionWithCache(McdFramework *fw, int type1, int type2, McdNearfieldFn fn,
+                                           void (*releaseCache)(void *cache));
+/** The test registered for (type1, type2) in exactly that order, or NULL. */
+McdNearfieldFn McdFrameworkGetInteraction(const McdFramework *fw, int type1, int type2);
+/** Whether a test exists for the pair either way round. */
+MeBool McdFrameworkHasInteraction(const McdFramework *fw, int type1, int type2);
+/** Register every primitive pair test (nearfield/register.c). */
+void McdNearfieldRegisterPrimitives(McdFramework *fw);
+
+/* ---- geometry protocol (dispatch through the type's McdGeometryTypeDesc) ------------------- */
+const McdGeometryTypeDesc *McdGeometryTypeOf(const McdGeometry *g);
+/** The `data` argument the type's functions receive: the shape data (&g->u) or the user's pointer. */
+void *McdGeometryData(const McdGeometry *g);
+/** Support point in the local frame for a local direction. */
+void McdGeometrySupportLocal(const McdGeometry *g, const MeVector3 dir, MeVector3 point);
+/** Support point in the world for a world direction, the geometry placed at tm. */
+void McdGeometrySupportWorld(const McdGeometry *g, MeMatrix4 tm, const MeVector3 dir, MeVector3 point);
+void McdGeometryAABBInternal(const McdGeometry *g, MeMatrix4 tm, MeVector3 minCorner, MeVector3 maxCorner);
+/** Local segment test: first entry parameter t in [0,1] and local outward normal. */
+MeBool McdGeometryLineSegInternal(const McdGeometry *g, const MeVector3 p0, const MeVector3 p1, MeReal *t,
+                                  MeVector3 normal);
+
+/* ---- models ----------------------------------------------------------------------------------- */
+/** The transform the model follows (the pointer given or its own). */
+MeMatrix4Ptr McdModelTransformInternal(McdModel *m);
+void McdModelUpdateInternal(McdModel *m);
+/** Record the space a model is in (space NULL, index -1 when removed). */
+void McdModelSetSpaceInternal(McdModel *m, struct McdSpace *space, McdSpaceID spaceID, int index);
+/** Segment query against one model (world segment, model's last update); fills result->model too. */
+int McdModelLineSegIntersectInternal(const McdModel *m, const MeVector3 p0, const MeVector3 p1,
+                                     McdLineSegIntersectResult *result);
+
+/* ---- pairs ------------------------------------------------------------------------------------ */
+/** McdHello / McdGoodbye on resolved models (the space calls these for its pairs). */
+void McdHelloInternal(McdModelPair *pair, McdModel *m1, McdModel *m2, const char *function);
+void McdGoodbyeInternal(McdModelPair *pair, McdModel *m1);
+
+#endif /* MCD_FRAMEWORK_H */

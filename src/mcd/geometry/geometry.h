@@ -1,0 +1,59 @@
+/* geometry.h -- the built-in geometry types' protocols and shared helpers (internal). */
+#ifndef MCD_GEOMETRY_INTERNAL_H
+#define MCD_GEOMETRY_INTERNAL_H
+
+#include <karma/McdGeometry.h>
+
+#include "../framework.h"
+
+/* The protocol of each built-in type; McdInit installs them at their type numbers. */
+extern const McdGeometryTypeDesc McdNullTypeDesc;
+extern const McdGeometryTypeDesc McdSphereTypeDesc;
+extern const McdGeometryTypeDesc McdBoxTypeDesc;
+extern const McdGeometryTypeDesc McdPlaneTypeDesc;
+extern const McdGeometryTypeDesc McdCylinderTypeDesc;
+extern const McdGeometryTypeDesc McdSphylTypeDesc;
+extern const McdGeometryTypeDesc McdConeTypeDesc;
+
+/** A new geometry of `type` from the framework's pool (reported in `function`'s name when full). */
+McdGeometry *McdGeometryNew(McdFramework *fw, int type, const char *function);
+/** Resolve a geometry ID that must be of `type` (reported otherwise). */
+McdGeometry *McdGeometryOfType(McdGeometryID id, int type, const char *function);
+/** A dimension must be finite and > 0 (or >= 0 when zeroAllowed); reports in `function`'s name. */
+MeBool McdCheckDimension(MeReal value, const char *name, MeBool zeroAllowed, const char *function);
+
+/** AABB of a local box [lo, hi] placed at tm (exact for boxes). */
+void McdAABBOfLocalBox(MeMatrix4 tm, const MeVector3 lo, const MeVector3 hi, MeVector3 minCorner,
+                       MeVector3 maxCorner);
+/** AABB of a shape that is the set {segment from z=-h to z=+h along local z} swept by a disc
+ *  (radius r, in the local xy plane) -- a cylinder; `sphereRadius` adds a sphere (a sphyl). */
+void McdAABBOfAxialShape(MeMatrix4 tm, MeReal zLo, MeReal rLo, MeReal zHi, MeReal rHi, MeReal sphereRadius,
+                         MeVector3 minCorner, MeVector3 maxCorner);
+
+/* ---- segment tests: the set of t (over the whole line p0 + t d) inside a shape is an interval,
+ *      with the outward normal at its start; a convex shape is the intersection of simple parts. */
+typedef struct McdLineInterval {
+    MeReal tIn, tOut;  /* [tIn, tOut]; tIn > tOut: empty */
+    MeVector3 nIn;     /* outward unit normal where the line enters (local) */
+} McdLineInterval;
+
+/** The whole line (before any part is intersected). */
+void McdLineIntervalAll(McdLineInterval *iv);
+/** Intersect with the slab lo <= x_axis <= hi (lo may be -MEINFINITY for a half-space). */
+void McdLineIntervalSlab(McdLineInterval *iv, const MeVector3 p0, const MeVector3 d, int axis, MeReal lo, MeReal hi);
+/** Intersect with the ball |x - centre| <= r. */
+void McdLineIntervalBall(McdLineInterval *iv, const MeVector3 p0, const MeVector3 d, const MeVector3 centre, MeReal r);
+/** Intersect with the solid x^2 + y^2 <= (alpha + beta z)^2 restricted to alpha + beta z >= 0 (a cone,
+ *  or with beta = 0 an infinite cylinder of radius alpha along z). Pass the slab that bounds z first. */
+void McdLineIntervalCone(McdLineInterval *iv, const MeVector3 p0, const MeVector3 d, MeReal alpha, MeReal beta);
+/** The first entry of the segment (t in [0,1]) from a line interval: METRUE on a hit; *t = 0 and
+ *  normal = -d/|d| when p0 is inside. */
+MeBool McdLineIntervalToSegmentHit(const McdLineInterval *iv, const MeVector3 d, MeReal *t, MeVector3 normal);
+
+/** Support point of the disc of radius r at height z (normal z) in direction dir. */
+void McdDiscSupport(const MeVector3 dir, MeReal r, MeReal z, MeVector3 point);
+
+/** Mass properties helpers: a diagonal inertia into a full tensor. */
+void McdDiagonalInertia(MeMatrix3 inertia, MeReal ixx, MeReal iyy, MeReal izz);
+
+#endif /* MCD_GEOMETRY_INTERNAL_H */

@@ -1,0 +1,40 @@
+/* linesegment.c -- McdLineSegIntersect: a segment against one model's geometry.
+ *
+ * The segment is taken into the geometry's frame (the model's transform at its last update), the
+ * geometry's own test finds the first entry there, and the answer comes back to the world. */
+#include <karma/McdLineSegment.h>
+
+#include "../me/check.h"
+#include "framework.h"
+
+int McdModelLineSegIntersectInternal(const McdModel *m, const MeVector3 p0, const MeVector3 p1,
+                                     McdLineSegIntersectResult *result)
+{
+    MeMatrix4Ptr tm = (MeMatrix4Ptr)m->worldTransform;
+    MeVector3 a, b, n;
+    MeReal t;
+    MeMatrix4TMInverseTransform(a, tm, p0);
+    MeMatrix4TMInverseTransform(b, tm, p1);
+    if (!McdGeometryLineSegInternal(m->geometry, a, b, &t, n))
+        return 0;
+    MeVector3 d;
+    MeVector3Subtract(d, p1, p0);
+    result->model = McdModelToID(m);
+    MeVector3ScaleAndAdd(result->position, p0, t, d);
+    MeMatrix4TMRotate(result->normal, tm, n);
+    result->distance = t * MeVector3Magnitude(d);
+    return 1;
+}
+
+int McdLineSegIntersect(McdModelID id, const MeVector3 p0, const MeVector3 p1, McdLineSegIntersectResult *result)
+{
+    McdModel *m = McdModelFromID(id, __func__);
+    if (!m)
+        return 0;
+    ME_CHECK_NOT_NULL(p0, 0);
+    ME_CHECK_NOT_NULL(p1, 0);
+    ME_CHECK_NOT_NULL(result, 0);
+    ME_CHECK_FINITE3(p0[0], p0[1], p0[2], 0);
+    ME_CHECK_FINITE3(p1[0], p1[1], p1[2], 0);
+    return McdModelLineSegIntersectInternal(m, p0, p1, result);
+}

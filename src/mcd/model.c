@@ -1,0 +1,343 @@
+/* model.c -- models: a geometry placed in the world (see McdModel.h). */
+#include <string.h>
+
+#include <karma/McdModel.h>
+
+#include "../me/check.h"
+#include "../me/handle.h"
+#include "framework.h"
+
+/* A relative transform must be rigid to this tolerance. */
+#define TM_TOLERANCE ME_R(1e-3)
+
+McdModel *McdModelFromID(McdModelID id, const char *function)
+{
+    return MeHandleResolve((uintptr_t)id, ME_HANDLE_MODEL, function, "m", NULL);
+}
+
+#define MODEL_OR_RETURN(m, id, ret)                                                                  \
+    McdModel *m = McdModelFromID((id), __func__);                                                    \
+    if (!m)                                                                                          \
+    return ret
+
+static void setDefaults(McdModel *m)
+{
+    m->transform = NULL;
+    MeMatrix4TMMakeIdentity(m->ownTransform);
+    MeMatrix4TMMakeIdentity(m->relativeTransform);
+    m->hasRelative = MEFALSE;
+    MeMatrix4TMMakeIdentity(m->worldTransform);
+    m->contactTolerance = m->framework->defaultContactTolerance;
+    m->material = 0;
+    m->sortKey = 0;
+    m->userData = NULL;
+    m->body = NULL;
+}
+
+MeMatrix4Ptr McdModelTransformInternal(McdModel *m) { return m->transform ? m->transform : m->ownTransform; }
+
+static void compound(McdModel *m)
+{
+    MeMatrix4Ptr tm = McdModelTransformInternal(m);
+    if (m->hasRelative)
+        MeMatrix4TMCompound(m->worldTransform, m->relativeTransform, tm);
+    else
+        MeMatrix4Copy(m->worldTransform, tm);
+}
+
+static MeBool transformIsFinite(MeMatrix4 tm)
+{
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 3; j++)
+            if (!ME_IS_FINITE(tm[i][j]))
+                return MEFALSE;
+    return METRUE;
+}
+
+/* Update in the name of `function`: a non-finite transform is reported and the last AABB kept. */
+static void update(McdModel *m, const char *function)
+{
+    MeMatrix4 previous;
+    MeMatrix4Copy(previous, m->worldTransform);
+    compound(m);
+    if (!transformIsFinite(m->worldTransform)) {
+        ME_REPORT_IN(function, ME_ERR_NONFINITE_ARGUMENT,
+                     "the model's transform holds NaN or infinity; its last transform and AABB are kept");
+        MeMatrix4Copy(m->worldTransform, previous);
+        return;
+    }
+    McdGeometryAABBInternal(m->geometry, m->worldTransform, m->aabbMin, m->aabbMax);
+    for (int j = 0; j < 3; j++) {
+        m->aabbMin[j] -= m->contactTolerance;
+        m->aabbMax[j] += m->contactTolerance;
+    }
+}
+
+void McdModelUpdateInternal(McdModel *m) { update(m, "McdSpaceUpdateAll"); }
+
+void McdModelSetSpaceInternal(McdModel *m, struct McdSpace *space, McdSpaceID spaceID, int index)
+{
+    m->space = space;
+    m->spaceID = spaceID;
+    m->spaceIndex = index;
+}
+
+/* Take a geometry of the model's framework (reported otherwise). */
+static McdGeometry *geometryFor(McdFramework *fw, McdGeometryID id, const char *function)
+{
+    McdGeometry *g = McdGeometryFromID(id, function);
+    if (g && fw && g->framework != fw) {
+        ME_REPORT_IN(function, ME_ERR_FOREIGN_HANDLE, "the geometry belongs to another framework; call ignored");
+        return NULL;
+    }
+    return g;
+}
+
+McdModelID McdModelCreate(McdGeometryID geometry)
+{
+    McdGeometry *g = geometryFor(NULL, geometry, __func__);
+    if (!g)
+        return NULL;
+    McdFramework *fw = g->framework;
+    McdModel *m = MePoolGetStruct(&fw->modelPool);
+    if (!m) {
+        ME_REPORT(ME_ERR_POOL_FULL, "all %d models are in use; raise modelCount in McdInit", fw->modelPool.capacity);
+        return NULL;
+    }
+    m->id = MeHandleOfSlot(fw->ownerSlot, ME_HANDLE_MODEL, MePoolIndexOf(&fw->modelPool, m));
+    m->framework = fw;
+    m->geometry = g;
+    g->refCount++;
+    m->space = NULL;
+    m->spaceID = NULL;
+    m->spaceIndex = -1;
+    m->frozen = MEFALSE;
+    setDefaults(m);
+    update(m, __func__);
+    return (McdModelID)m->id;
+}
+
+void McdModelDestroy(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    if (m->space) {
+        ME_REPORT(ME_ERR_MCD_IN_USE, "the model is in a space; remove it (McdSpaceRemoveModel) first; call ignored");
+        return;
+    }
+    m->geometry->refCount--;
+    MePoolPutStruct(&m->framework->modelPool, m);
+}
+
+void McdModelReset(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    setDefaults(m);
+    update(m, __func__);
+}
+
+MeBool McdModelIsValid(McdModelID m) { return MeHandleIsValid((uintptr_t)m, ME_HANDLE_MODEL); }
+
+McdFrameworkID McdModelGetFramework(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, NULL);
+    return McdFrameworkToID(m->framework);
+}
+
+void McdModelSetGeometry(McdModelID id, McdGeometryID geometry)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    McdGeometry *g = geometryFor(m->framework, geometry, __func__);
+    if (!g)
+        return;
+    g->refCount++;
+    m->geometry->refCount--;
+    m->geometry = g;
+}
+
+McdGeometryID McdModelGetGeometry(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, NULL);
+    return McdGeometryToID(m->geometry);
+}
+
+void McdModelSetTransformPtr(McdModelID id, MeMatrix4Ptr tm)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    m->transform = tm == m->ownTransform ? NULL : tm;
+}
+
+MeMatrix4Ptr McdModelGetTransformPtr(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, NULL);
+    return McdModelTransformInternal(m);
+}
+
+void McdModelSetRelativeTransform(McdModelID id, MeMatrix4 relTM)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    if (!relTM) {
+        m->hasRelative = MEFALSE;
+        MeMatrix4TMMakeIdentity(m->relativeTransform);
+        return;
+    }
+    if (!MeMatrix4IsTM(relTM, TM_TOLERANCE)) {
+        ME_REPORT(ME_ERR_NOT_ROTATION, "argument 'relTM' is not a rigid transform (orthonormal right-handed rotation, "
+                                       "last column 0 0 0 1, finite); call ignored");
+        return;
+    }
+    MeMatrix4Copy(m->relativeTransform, relTM);
+    m->hasRelative = METRUE;
+}
+
+MeBool McdModelGetRelativeTransform(McdModelID id, MeMatrix4 relTM)
+{
+    MODEL_OR_RETURN(m, id, MEFALSE);
+    ME_CHECK_NOT_NULL(relTM, MEFALSE);
+    MeMatrix4Copy(relTM, m->relativeTransform);
+    return m->hasRelative;
+}
+
+void McdModelGetWorldTransform(McdModelID id, MeMatrix4 tm)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(tm, ME_NOTHING);
+    MeMatrix4Copy(tm, m->worldTransform);
+}
+
+void McdModelSetContactTolerance(McdModelID id, MeReal tolerance)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    ME_CHECK_FINITE(tolerance, ME_NOTHING);
+    if (tolerance < 0) {
+        ME_REPORT(ME_ERR_NEGATIVE_VALUE, "argument 'tolerance' is %g; it must be >= 0; call ignored",
+                  (double)tolerance);
+        return;
+    }
+    m->contactTolerance = tolerance;
+}
+
+MeReal McdModelGetContactTolerance(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, 0);
+    return m->contactTolerance;
+}
+
+void McdModelSetMaterial(McdModelID id, int material)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    if (material < 0) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'material' is %d; it must be >= 0; call ignored", material);
+        return;
+    }
+    m->material = material;
+}
+
+int McdModelGetMaterial(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, 0);
+    return m->material;
+}
+
+void McdModelSetSortKey(McdModelID id, int key)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    if (key < 0 || key > MCD_MODEL_SORT_KEY_MAX) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'key' is %d; sort keys run from 0 to %d; call ignored", key,
+                  MCD_MODEL_SORT_KEY_MAX);
+        return;
+    }
+    m->sortKey = key;
+}
+
+int McdModelGetSortKey(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, 0);
+    return (int)m->sortKey;
+}
+
+void McdModelSetUserData(McdModelID id, void *data)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    m->userData = data;
+}
+
+void *McdModelGetUserData(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, NULL);
+    return m->userData;
+}
+
+void McdModelSetBody(McdModelID id, void *body)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    m->body = body;
+}
+
+void *McdModelGetBody(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, NULL);
+    return m->body;
+}
+
+void McdModelCompoundTransforms(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    compound(m);
+}
+
+void McdModelUpdate(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    update(m, __func__);
+}
+
+void McdModelGetAABB(McdModelID id, MeVector3 minCorner, MeVector3 maxCorner)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(minCorner, ME_NOTHING);
+    ME_CHECK_NOT_NULL(maxCorner, ME_NOTHING);
+    MeVector3Copy(minCorner, m->aabbMin);
+    MeVector3Copy(maxCorner, m->aabbMax);
+}
+
+void McdModelGetBSphere(McdModelID id, MeVector3 centre, MeReal *radius)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(centre, ME_NOTHING);
+    ME_CHECK_NOT_NULL(radius, ME_NOTHING);
+    MeVector3 local;
+    McdGeometryTypeOf(m->geometry)->getBSphere(McdGeometryToID(m->geometry), McdGeometryData(m->geometry), local,
+                                                radius);
+    MeMatrix4TMTransform(centre, m->worldTransform, local);
+}
+
+MeBool McdModelGetMassProperties(McdModelID id, MeVector3 com, MeMatrix3 inertia, MeReal *volume)
+{
+    MODEL_OR_RETURN(m, id, MEFALSE);
+    ME_CHECK_NOT_NULL(com, MEFALSE);
+    ME_CHECK_NOT_NULL(inertia, MEFALSE);
+    ME_CHECK_NOT_NULL(volume, MEFALSE);
+    MeMatrix4 massTM, comTM;
+    MeMatrix3 local;
+    McdGeometryTypeOf(m->geometry)->getMassProperties(McdGeometryToID(m->geometry), McdGeometryData(m->geometry),
+                                                       massTM, local, volume);
+    /* The centre-of-mass frame in the model's frame: mass frame, then the relative transform. */
+    MeMatrix4TMCompound(comTM, massTM, m->relativeTransform);
+    MeVector3Copy(com, comTM[3]);
+    /* Rows of comTM are the mass frame's axes in the model frame: I_model = R^T I_local R. */
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            MeReal s = 0;
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++)
+                    s += comTM[a][i] * local[a][b] * comTM[b][j];
+            inertia[i][j] = s;
+        }
+    return ME_IS_FINITE(*volume) && *volume > 0;
+}
+
+McdSpaceID McdModelGetSpace(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, NULL);
+    return m->space ? m->spaceID : NULL;
+}

@@ -1,0 +1,188 @@
+/* pairs.c -- model pairs and the nearfield entry points: McdHello, McdIntersect, McdGoodbye.
+ *
+ * Pair tests are registered one way round (framework.c); McdHello looks the pair's geometry types up
+ * both ways and remembers in `swapped` that the test takes model 2 first. McdIntersect then calls
+ * the test in its own order and turns the answer back: normals negated, elements exchanged, so the
+ * caller always sees normals from model 1 to model 2. */
+#include <string.h>
+
+#include <karma/McdInteraction.h>
+#include <karma/McdModelPair.h>
+#include <karma/MeMemory.h>
+
+#include "../me/check.h"
+#include "framework.h"
+
+McdModelPairID McdModelPairCreate(McdModelID model1, McdModelID model2)
+{
+    McdModel *m1 = McdModelFromID(model1, __func__), *m2 = McdModelFromID(model2, __func__);
+    if (!m1 || !m2)
+        return NULL;
+    if (m1->framework != m2->framework) {
+        ME_REPORT(ME_ERR_FOREIGN_HANDLE, "the two models belong to different frameworks; call ignored");
+        return NULL;
+    }
+    McdModelPair *pair = MeMemoryCreateZeroed(sizeof *pair);
+    if (!pair)
+        return NULL;
+    McdModelPairReset(pair, model1, model2);
+    pair->id = m1->framework->nextPairId++;
+    return pair;
+}
+
+void McdModelPairDestroy(McdModelPairID pair)
+{
+    ME_CHECK_NOT_NULL(pair, ME_NOTHING);
+    MeMemoryDestroy(pair);
+}
+
+void McdModelPairReset(McdModelPairID pair, McdModelID model1, McdModelID model2)
+{
+    ME_CHECK_NOT_NULL(pair, ME_NOTHING);
+    MeU32 id = pair->id;
+    memset(pair, 0, sizeof *pair);
+    pair->model1 = model1;
+    pair->model2 = model2;
+    pair->testIndex = -1;
+    pair->id = id;
+}
+
+/* Resolve both models of a pair in the caller's name. */
+static MeBool pairModels(const McdModelPair *pair, McdModel **m1, McdModel **m2, const char *function)
+{
+    if (!pair) {
+        MeReport(ME_ERR_NULL_ARGUMENT, function, __FILE__, __LINE__, "argument 'pair' is NULL; call ignored");
+        return MEFALSE;
+    }
+    *m1 = McdModelFromID(pair->model1, function);
+    *m2 = McdModelFromID(pair->model2, function);
+    return *m1 && *m2;
+}
+
+void McdHelloInternal(McdModelPair *pair, McdModel *m1, McdModel *m2, const char *function)
+{
+    McdFramework *fw = m1->framework;
+    int t1 = m1->geometry->type, t2 = m2->geometry->type;
+    pair->cache = NULL;
+    pair->swapped = 0;
+    pair->testIndex = -1;
+    if (McdFrameworkGetInteraction(fw, t1, t2)) {
+        pair->testIndex = t1 * fw->typeCapacity + t2;
+    } else if (McdFrameworkGetInteraction(fw, t2, t1)) {
+        pair->testIndex = t2 * fw->typeCapacity + t1;
+        pair->swapped = 1;
+    } else if (t1 != kMcdGeometryTypeNull && t2 != kMcdGeometryTypeNull) {
+        /* Null geometries touch nothing by design; any other missing test is worth one message. */
+        int lo = t1 < t2 ? t1 : t2, hi = t1 < t2 ? t2 : t1;
+        unsigned char *warned = &fw->warnedPairs[lo * fw->typeCapacity + hi];
+        if (!*warned) {
+            *warned = 1;
+            MeReport(ME_ERR_MCD_NO_INTERACTION, function, __FILE__, __LINE__,
+                     "no pair test is registered for %s and %s (McdPrimitivesRegisterInteractions?); such pairs "
+                     "give no contacts",
+                     fw->types[t1].typeName, fw->types[t2].typeName);
+        }
+    }
+}
+
+void McdHello(McdModelPairID pair)
+{
+    McdModel *m1, *m2;
+    if (pairModels(pair, &m1, &m2, __func__))
+        McdHelloInternal(pair, m1, m2, __func__);
+}
+
+void McdGoodbyeInternal(McdModelPair *pair, McdModel *m1)
+{
+    McdFramework *fw = m1->framework;
+    if (pair->cache && pair->testIndex >= 0 && fw->interactions[pair->testIndex].releaseCache)
+        fw->interactions[pair->testIndex].releaseCache(pair->cache);
+    pair->cache = NULL;
+    pair->testIndex = -1;
+    pair->swapped = 0;
+}
+
+void McdGoodbye(McdModelPairID pair)
+{
+    McdModel *m1, *m2;
+    if (pairModels(pair, &m1, &m2, __func__))
+        McdGoodbyeInternal(pair, m1);
+}
+
+/* The representative normal: the mean of the contact normals, or the deepest contact's normal when
+ * they cancel out. */
+static void representativeNormal(const McdContact *c, int count, MeVector3 normal)
+{
+    MeVector3 sum = {0, 0, 0};
+    int deepest = 0;
+    for (int i = 0; i < count; i++) {
+        MeVector3Add(sum, sum, c[i].normal);
+        if (c[i].separation < c[deepest].separation)
+            deepest = i;
+    }
+    if (MeVector3NormalizeSafe(sum))
+        MeVector3Copy(normal, sum);
+    else
+        MeVector3Copy(normal, c[deepest].normal);
+}
+
+int McdIntersect(McdModelPairID pair, McdIntersectResult *result)
+{
+    ME_CHECK_NOT_NULL(result, 0);
+    result->pair = pair;
+    result->contactCount = 0;
+    result->touch = 0;
+    result->data = NULL;
+    MeVector3Set(result->normal, 0, 0, 0);
+    McdModel *m1, *m2;
+    if (!pairModels(pair, &m1, &m2, __func__))
+        return 0;
+    if (result->contactMaxCount > 0 && !result->contacts) {
+        ME_REPORT(ME_ERR_NULL_ARGUMENT, "result->contacts is NULL but result->contactMaxCount is %d; call ignored",
+                  result->contactMaxCount);
+        return 0;
+    }
+    McdFramework *fw = m1->framework;
+    if (pair->testIndex < 0)
+        return 0;
+    const McdRequest *request = pair->request ? pair->request : &fw->defaultRequest;
+    int maxCount = result->contactMaxCount;
+    if (request->contactMaxCount < maxCount)
+        maxCount = request->contactMaxCount;
+    if (maxCount <= 0)
+        return 0;
+    McdNearfieldFn fn = fw->interactions[pair->testIndex].fn;
+    MeReal tolerance = m1->contactTolerance + m2->contactTolerance;
+    McdContact *c = result->contacts;
+    int n = pair->swapped ? fn(m2->geometry, m2->worldTransform, m1->geometry, m1->worldTransform, tolerance, c,
+                               maxCount, &pair->cache)
+                          : fn(m1->geometry, m1->worldTransform, m2->geometry, m2->worldTransform, tolerance, c,
+                               maxCount, &pair->cache);
+    if (n < 0 || n > maxCount) {
+        ME_REPORT(ME_ERR_INTERNAL, "a pair test returned %d contacts for room for %d", n, maxCount);
+        n = n < 0 ? 0 : maxCount;
+    }
+    if (pair->swapped)
+        for (int i = 0; i < n; i++) {
+            void *e = c[i].element1;
+            MeVector3Scale(c[i].normal, -1);
+            c[i].element1 = c[i].element2;
+            c[i].element2 = e;
+        }
+    result->contactCount = n;
+    result->touch = n > 0;
+    if (n > 0)
+        representativeNormal(c, n, result->normal);
+    return result->touch;
+}
+
+MeBool McdNearby(McdModelPairID pair)
+{
+    McdModel *m1, *m2;
+    if (!pairModels(pair, &m1, &m2, __func__))
+        return MEFALSE;
+    for (int j = 0; j < 3; j++)
+        if (m1->aabbMax[j] < m2->aabbMin[j] || m2->aabbMax[j] < m1->aabbMin[j])
+            return MEFALSE;
+    return METRUE;
+}
