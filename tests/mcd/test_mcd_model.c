@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include <karma/Mcd.h>
+#include <karma/MstBridge.h>
 
 #include "mcd/framework.h"
 #include "mcd_shapes.h"
