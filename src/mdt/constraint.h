@@ -171,5 +171,11 @@ void MdtBclAddParallelAxisRows(MdtRowWriter *w, const MdtConstraint *c);
 void MdtBclAddOrientationRows(MdtRowWriter *w, const MdtConstraint *c);
 /** Lever arm of the attachment point from body `index`'s COM, world frame (zero for the world). */
 void MdtBclLeverArm(const MdtConstraint *c, int index, MeVector3 r);
+/** Angular Jacobian of θ = atan2(d·v, d·u), with d fixed in body `dBody` and u, v in the other
+ *  (exact at any pose); fills ang0/ang1 of `row` and returns θ in (−π, π]. */
+MeReal MdtBclAngleRow(MdtRow *row, const MeVector3 u, const MeVector3 v, const MeVector3 d, int dBody);
+/** Jacobian of φ = (p0 − p1)·d (attachment points; d fixed in body `dBody`, world frame now); fills
+ *  lin/ang of `row` and returns φ. */
+MeReal MdtBclSlideRow(MdtRow *row, const MdtConstraint *c, const MeVector3 d, int dBody);
 
 #endif /* MDT_CONSTRAINT_INTERNAL_H */

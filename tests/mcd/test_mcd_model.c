@@ -185,6 +185,12 @@ static void nearby_follows_padded_aabbs(void **state)
     MeMatrix4TMSetPosition(McdModelGetTransformPtr(b), ME_R(2.12), 0, 0);
     McdModelUpdate(b);
     assert_false(McdNearby(pair));
+    /* A geometry's new size reaches its models at their next update. */
+    McdSphereSetRadius(s, ME_R(1.1));
+    assert_false(McdNearby(pair));
+    McdModelUpdate(a);
+    McdModelUpdate(b);
+    assert_true(McdNearby(pair));
     McdModelPairDestroy(pair);
     McdModelDestroy(a);
     McdModelDestroy(b);

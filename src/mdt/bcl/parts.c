@@ -95,3 +95,42 @@ void MdtBclAddOrientationRows(MdtRowWriter *w, const MdtConstraint *c)
         MdtRowWriterAdd(w, &row);
     }
 }
+
+/* θ = atan2(d·v, d·u): the angle of direction d (fixed in body `dBody`) in the plane of u and v
+ * (fixed in the other body). With x = d·u, y = d·v and d/dt(a·b) = (ω_a − ω_b)·(a × b) for a and b
+ * fixed in bodies a and b, dθ/dt = (x ẏ − y ẋ)/(x² + y²) exactly, at any pose. */
+MeReal MdtBclAngleRow(MdtRow *row, const MeVector3 u, const MeVector3 v, const MeVector3 d, int dBody)
+{
+    MeReal x = MeVector3Dot(d, u), y = MeVector3Dot(d, v), r2 = x * x + y * y;
+    MeVector3 vxd, uxd, j;
+    MeVector3Cross(vxd, v, d);
+    MeVector3Cross(uxd, u, d);
+    MeReal s = r2 > ME_SMALL_EPSILON ? 1 / r2 : 0; /* d along the axis: no angle to measure */
+    for (int k = 0; k < 3; k++)
+        j[k] = s * (x * vxd[k] - y * uxd[k]);
+    /* j is the angular Jacobian of the body holding u and v; the other body's is −j. */
+    MeReal *own = dBody == 0 ? row->ang1 : row->ang0, *other = dBody == 0 ? row->ang0 : row->ang1;
+    MeVector3Copy(own, j);
+    MeVector3MultiplyScalar(other, j, -1);
+    return MeAtan2(y, x);
+}
+
+/* φ = (p0 − p1)·d for the attachment points p0, p1 and a direction d fixed in body `dBody`:
+ * dφ/dt = (ṗ0 − ṗ1)·d + (p0 − p1)·(ω_dBody × d), hence lin = ±d and the angular parts
+ * r0 × d, −r1 × d plus d × (p0 − p1) on the body that carries d. */
+MeReal MdtBclSlideRow(MdtRow *row, const MdtConstraint *c, const MeVector3 d, int dBody)
+{
+    MeVector3 p0, p1, r0, r1, D, t;
+    MdtConstraintWorldPosition(c, 0, p0);
+    MdtConstraintWorldPosition(c, 1, p1);
+    MdtBclLeverArm(c, 0, r0);
+    MdtBclLeverArm(c, 1, r1);
+    MeVector3Subtract(D, p0, p1);
+    MeVector3Copy(row->lin0, d);
+    MeVector3MultiplyScalar(row->lin1, d, -1);
+    MeVector3Cross(row->ang0, r0, d);
+    MeVector3Cross(row->ang1, d, r1);
+    MeVector3Cross(t, d, D);
+    MeVector3Add(dBody == 0 ? row->ang0 : row->ang1, dBody == 0 ? row->ang0 : row->ang1, t);
+    return MeVector3Dot(D, d);
+}
