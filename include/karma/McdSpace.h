@@ -33,6 +33,7 @@
 #ifndef MCD_SPACE_H
 #define MCD_SPACE_H
 
+#include "McdLineSegment.h"
 #include "McdTypes.h"
 
 ME_EXTERN_C_BEGIN
@@ -79,6 +80,9 @@ typedef struct McdSpaceModelIterator {
  *  same id never pair when the bit of their two indices is set (e.g. the parts of one ragdoll). */
 typedef struct McdCullingTable *McdCullingTableID;
 
+/** Filter of McdSpaceGetLineSegFirstEnabledIntersection: non-zero when `model` may be hit. */
+typedef MeBool (*McdSpaceLineSegFilterFn)(McdModelID model, void *data);
+
 /** Called for each overlapping pair that a full pair pool could not record. */
 typedef void (*McdSpacePoolFullHandler)(McdModelID model1, McdModelID model2);
 
@@ -86,7 +90,8 @@ typedef void (*McdSpacePoolFullHandler)(McdModelID model1, McdModelID model2);
 
 /** A space sorting on `axes` (McdXAxis | McdYAxis | McdZAxis, or McdAllAxes) with room for
  *  `objectCount` models and `pairCount` pairs (about objects x typical neighbours). The space starts
- *  inside a change block. Returns NULL (reported) on bad sizes or axes. */
+ *  inside a change block. Returns NULL (reported) on bad sizes or axes. Destroy a space before
+ *  McdTerm of its framework (McdTerm frees the models the space refers to). */
 ME_API McdSpaceID McdSpaceAxisSortCreate(McdFrameworkID fw, int axes, int objectCount, int pairCount);
 /** Destroys the space; its models leave it (they are not destroyed). */
 ME_API void McdSpaceDestroy(McdSpaceID space);
@@ -153,6 +158,23 @@ ME_API void McdSpacePairIteratorBegin(McdSpaceID space, McdSpacePairIterator *it
 ME_API MeBool McdSpaceGetPairs(McdSpaceID space, McdSpacePairIterator *iter, McdModelPairContainer *container);
 /** As McdSpaceGetPairs, but only the goodbyes and hellos. */
 ME_API MeBool McdSpaceGetTransitions(McdSpaceID space, McdSpacePairIterator *iter, McdModelPairContainer *container);
+
+/* ---- line segments (outside change blocks) ----------------------------------------------- */
+/* The segment orig -> dest against every model of the space as placed by its last update (box test
+ * first, then McdLineSegIntersect): one entry hit per model; a segment starting inside a model hits
+ * it at distance 0. Hits are ordered by distance, then by the models' sort keys and slots. */
+
+/** The nearest hit into *result; returns 1, or 0 when the segment hits nothing. */
+ME_API int McdSpaceGetLineSegFirstIntersection(McdSpaceID space, const MeVector3 orig, const MeVector3 dest,
+                                               McdLineSegIntersectResult *result);
+/** The nearest hits, nearest first, at most maxCount of them; returns how many were written. */
+ME_API int McdSpaceGetLineSegIntersections(McdSpaceID space, const MeVector3 orig, const MeVector3 dest,
+                                           McdLineSegIntersectResult *results, int maxCount);
+/** As McdSpaceGetLineSegFirstIntersection, among the models for which filterCB(model, data) is
+ *  non-zero (filterCB NULL: every model). */
+ME_API int McdSpaceGetLineSegFirstEnabledIntersection(McdSpaceID space, const MeVector3 orig, const MeVector3 dest,
+                                                      McdLineSegIntersectResult *result,
+                                                      McdSpaceLineSegFilterFn filterCB, void *data);
 
 /* ---- containers -------------------------------------------------------------------------- */
 
