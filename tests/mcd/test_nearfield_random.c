@@ -179,7 +179,7 @@ static void run_pair(void **state)
         for (k = 0; k < 3; k++)
             n2[k] = -n2[k];
         st.swapErr = maxd(st.swapErr, fabs(deepS - deep) / size);
-        st.swapErr = maxd(st.swapErr, fabs(ref_overlap(&g1, tm1, &g2, tm2, n2) - ref_overlap(&g1, tm1, &g2, tm2, n1)) / size);
+        st.swapErr = maxd(st.swapErr, fabs(-ref_overlap(&g1, tm1, &g2, tm2, n2) - dref) / size);
     }
     printf("%-18s %d poses, %4d touching, contacts 1/2/3/4: %d/%d/%d/%d; |n|-1 %.1e, surface %.1e, depth %.1e,"
            " MTD normal %.1e, swap %.1e, SAT %.1e (per size); missed %d, spurious %d\n",

@@ -27,7 +27,7 @@ static int clipPlane(MeVector3 *in, int n, MeVector3 *out, const MeVector3 o, Me
         MeReal sp = MeVector3Dot(o, p) - off, sq = MeVector3Dot(o, q) - off;
         if (sp <= ME_R(0.0))
             MeVector3Copy(out[m++], p);
-        if ((sp < ME_R(0.0)) != (sq < ME_R(0.0)) && sp != sq)
+        if ((sp < ME_R(0.0) && sq > ME_R(0.0)) || (sp > ME_R(0.0) && sq < ME_R(0.0)))
             MeVector3Lerp(out[m++], p, q, sp / (sp - sq));
     }
     return m;

@@ -5,6 +5,12 @@
  * (van den Bergen's book; Ericson ch. 9; the closest-point-in-simplex cases as in Ericson 5.1.5). */
 #include "nearfield.h"
 
+#if KARMA_DOUBLE
+#  define ME_TOL_NF_STEP ME_R(1e-5)
+#else
+#  define ME_TOL_NF_STEP ME_R(1e-3)
+#endif
+
 /* Closest point of the simplex to the origin; keeps only the vertices that carry it and their
  * barycentric weights. Returns MEFALSE when the origin lies inside a tetrahedron. */
 typedef struct Bary {
@@ -134,7 +140,7 @@ static MeBool closestOnTetrahedron(MeVector3 *w, Bary *r, MeReal flat)
         sd = MeVector3Dot(nrm, ad);
         /* origin on the far side of this face, or a flat tetrahedron (signs not to be trusted) */
         if (so * sd <= ME_R(0.0) || MeFabs(sd) <= flat * MeVector3Magnitude(nrm)) {
-            Bary cand;
+            Bary cand = {0, {0, 0, 0, 0}, {ME_R(0.0), ME_R(0.0), ME_R(0.0), ME_R(0.0)}};
             MeReal dist;
             closestOnTriangle(w, face[f][0], face[f][1], face[f][2], &cand);
             dist = baryDistSqr(w, &cand);
@@ -234,9 +240,81 @@ MeBool McdNfGjk(const McdNfShape *s1, const McdNfShape *s2, McdNfSimplex *sx, Mc
     return METRUE;
 }
 
+/* Support of D = core1 - core2 in direction n. */
+static void supportD(const McdNfShape *s1, const McdNfShape *s2, const MeVector3 n, MeVector3 out)
+{
+    MeVector3 a, b, m;
+    MeVector3MultiplyScalar(m, n, -ME_R(1.0));
+    McdNfCoreSupport(s1, n, a);
+    McdNfCoreSupport(s2, m, b);
+    MeVector3Subtract(out, a, b);
+}
+
+/* Overlap F(x, y) = h_D(n) along n = normalize(n0 + x u + y v), and its gradient: the support point
+ * s(n) is the gradient of h_D, chained through the normalisation. */
+static MeReal overlapAt(const McdNfShape *s1, const McdNfShape *s2, const MeVector3 n0, const MeVector3 u,
+                        const MeVector3 v, MeReal x, MeReal y, MeReal g[2], MeVector3 nOut)
+{
+    MeVector3 m, sp, du, dv;
+    MeReal len;
+    MeVector3Copy(m, n0);
+    MeVector3MultiplyAdd(m, x, u);
+    MeVector3MultiplyAdd(m, y, v);
+    len = MeVector3Normalize(m);
+    supportD(s1, s2, m, sp);
+    MeVector3ScaleAndAdd(du, u, -MeVector3Dot(m, u), m);
+    MeVector3ScaleAndAdd(dv, v, -MeVector3Dot(m, v), m);
+    g[0] = MeVector3Dot(sp, du) / len;
+    g[1] = MeVector3Dot(sp, dv) / len;
+    MeVector3Copy(nOut, m);
+    return MeVector3Dot(sp, m);
+}
+
+/* EPA stops when its polytope is within the accuracy of the depth, but on curved cores the depth is
+ * flat in the direction (it varies with the square of the angle), so the normal may still be off by
+ * ~1e-3. A few Newton steps on the overlap h_D(n) over directions (gradient from the support point,
+ * Hessian by differences) sharpen it; a step is kept only when the overlap goes down. */
+static void refineNormal(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance *d)
+{
+    const MeReal h = ME_TOL_NF_STEP;
+    int it;
+    for (it = 0; it < 4; it++) {
+        MeVector3 u, v, n0, nNew, tmp;
+        MeReal g[2], gx[2], gy[2], F, Fnew, a, b, c, det, dx, dy, step;
+        MeVector3Copy(n0, d->normal);
+        McdNfPerpendicular(u, n0);
+        MeVector3Cross(v, n0, u);
+        F = overlapAt(s1, s2, n0, u, v, ME_R(0.0), ME_R(0.0), g, tmp);
+        if (MeFabs(g[0]) + MeFabs(g[1]) <= MCD_NF_REL_EPS * (s1->size + s2->size))
+            break;
+        overlapAt(s1, s2, n0, u, v, h, ME_R(0.0), gx, tmp);
+        overlapAt(s1, s2, n0, u, v, ME_R(0.0), h, gy, tmp);
+        a = (gx[0] - g[0]) / h;
+        c = (gy[1] - g[1]) / h;
+        b = ME_R(0.5) * ((gx[1] - g[1]) / h + (gy[0] - g[0]) / h);
+        det = a * c - b * b;
+        if (!(a > ME_R(0.0) && det > ME_R(0.0)))
+            break; /* not locally convex (a kink or a flat face): nothing to gain */
+        dx = -(c * g[0] - b * g[1]) / det;
+        dy = -(a * g[1] - b * g[0]) / det;
+        step = MeSqrt(dx * dx + dy * dy);
+        if (step > ME_R(0.05)) {
+            dx *= ME_R(0.05) / step;
+            dy *= ME_R(0.05) / step;
+        }
+        Fnew = overlapAt(s1, s2, n0, u, v, dx, dy, g, nNew);
+        if (!(Fnew < F))
+            break;
+        MeVector3Copy(d->normal, nNew);
+        d->distance = -Fnew;
+    }
+}
+
 void McdNfCoreDistance(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance *out)
 {
     McdNfSimplex sx;
-    if (!McdNfGjk(s1, s2, &sx, out))
+    if (!McdNfGjk(s1, s2, &sx, out)) {
         McdNfEpa(s1, s2, &sx, out);
+        refineNormal(s1, s2, out);
+    }
 }

@@ -85,7 +85,7 @@ static int clipFaces(const Side *ref, const Side *inc, const MeVector3 n, MeBool
             s1 = MeVector3Dot(o, dp1);
             if (s0 <= ME_R(0.0) && out < CLIP_MAX)
                 MeVector3Copy(buf[nxt][out++], p);
-            if ((s0 < ME_R(0.0)) != (s1 < ME_R(0.0)) && s0 != s1 && out < CLIP_MAX) {
+            if (((s0 < ME_R(0.0) && s1 > ME_R(0.0)) || (s0 > ME_R(0.0) && s1 < ME_R(0.0))) && out < CLIP_MAX) {
                 MeVector3Lerp(buf[nxt][out++], p, p1, s0 / (s0 - s1));
             }
             if (cnt == 2 && s1 <= ME_R(0.0) && out < CLIP_MAX)
@@ -151,8 +151,9 @@ static int clipSegments(const Side *f1, const Side *f2, const MeVector3 n, MeRea
         MeVector3ScaleAndAdd(a, f1->pts[0], u, e1);
         MeVector3Subtract(ab, b, a);
         MeVector3ScaleAndAdd(lat, ab, -MeVector3Dot(ab, n), n);
-        /* skewed segments touch at one point only: keep the pair only when it is straight along n */
-        if (MeVector3Magnitude(lat) > ME_R(1e-3) * size)
+        /* nearly parallel segments: each end of the common part is its own pair, along its own line
+         * (so exact on rounded surfaces); far apart across n, the segments only cross: one point */
+        if (MeVector3Magnitude(lat) > ME_R(2e-3) * size)
             return 0;
         /* each pair along its own line (the shapes may be rounded): exact surface points */
         MeVector3Copy(nk, ab);
