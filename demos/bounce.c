@@ -17,7 +17,8 @@ typedef struct Bounce {
 static MeBool create(DemoInstance *demo)
 {
     MstUniverseSizes sizes = MstUniverseDefaultSizes;
-    if (!DemoUniverseCreate(demo, &sizes, ME_R(9.81), -1))
+    sizes.massScale = 65; /* typical body mass, kg: the world's softness scales with it */
+    if (!DemoUniverseCreate(demo, &sizes, ME_R(9.81), 0))
         return MEFALSE;
     Bounce *s = calloc(1, sizeof *s);
     demo->data = s;

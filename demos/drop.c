@@ -9,6 +9,7 @@
 static MeBool create(DemoInstance *demo)
 {
     MstUniverseSizes sizes = MstUniverseDefaultSizes;
+    sizes.massScale = 100; /* typical body mass, kg: the world's softness scales with it */
     if (!DemoUniverseCreate(demo, &sizes, ME_R(9.81), ME_R(0.6)))
         return MEFALSE;
     McdFrameworkID fw = MstUniverseGetFramework(demo->universe);

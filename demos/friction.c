@@ -24,6 +24,7 @@ static const char *const names[BLOCKS] = {"frictionless", "box cap 4x5 N", "coul
 static MeBool create(DemoInstance *demo)
 {
     MstUniverseSizes sizes = MstUniverseDefaultSizes;
+    sizes.massScale = 10; /* typical body mass, kg: the world's softness scales with it */
     if (!DemoUniverseCreate(demo, &sizes, G, -1))
         return MEFALSE;
     Friction *s = calloc(1, sizeof *s);
@@ -35,7 +36,7 @@ static MeBool create(DemoInstance *demo)
     MeMatrix4 tm = {{1, 0, 0, 0}, {0, c, sn, 0}, {0, -sn, c, 0}, {0, sn * ME_R(0.5), -c * ME_R(0.5), 1}};
     MeMatrix4Copy(s->inclineTM, tm);
     MeVector3Set(s->downhill, 0, -c, -sn);
-    if (!MstFixedModelCreate(demo->universe, McdBoxCreate(fw, 12, 12, 1), s->inclineTM))
+    if (!MstFixedModelCreate(demo->universe, McdBoxCreate(fw, 12, 40, 1), s->inclineTM))
         return MEFALSE;
     McdGeometryID cube = McdBoxCreate(fw, BLOCK, BLOCK, BLOCK);
     MeVector4 q;

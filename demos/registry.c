@@ -83,11 +83,13 @@ MeBool DemoUniverseCreate(DemoInstance *demo, const MstUniverseSizes *sizes, MeR
         return MEFALSE;
     demo->world = MstUniverseGetWorld(demo->universe);
     MdtWorldSetGravity(demo->world, 0, 0, -g);
-    if (groundFriction >= 0) {
+    if (groundFriction >= 0) { /* a ground plane; friction only when > 0 */
         McdFrameworkID fw = MstUniverseGetFramework(demo->universe);
         if (!MstFixedModelCreate(demo->universe, McdPlaneCreate(fw), groundTM))
             return MEFALSE;
         MdtContactParamsID p = MstBridgeGetContactParams(MstUniverseGetBridge(demo->universe), 0, 0);
+        if (groundFriction == 0)
+            return METRUE;
         MdtContactParamsSetType(p, MdtContactTypeFriction2D);
         MdtContactParamsSetFrictionModel(p, MdtFrictionModelNormalForce);
         MdtContactParamsSetFrictionCoeffecient(p, groundFriction);

@@ -24,6 +24,7 @@ typedef struct Topple {
 static MeBool create(DemoInstance *demo)
 {
     MstUniverseSizes sizes = MstUniverseDefaultSizes;
+    sizes.massScale = 50; /* typical body mass, kg: the world's softness scales with it */
     sizes.dynamicConstraintsMaxCount = 1000;
     sizes.collisionPairsMaxCount = 1000;
     if (!DemoUniverseCreate(demo, &sizes, ME_R(9.81), ME_R(0.6)))

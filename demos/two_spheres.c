@@ -15,6 +15,7 @@ typedef struct TwoSpheres {
 static MeBool create(DemoInstance *demo)
 {
     MstUniverseSizes sizes = MstUniverseDefaultSizes;
+    sizes.massScale = 500; /* typical body mass, kg: the world's softness scales with it */
     if (!DemoUniverseCreate(demo, &sizes, 0, -1))
         return MEFALSE;
     TwoSpheres *s = calloc(1, sizeof *s);

@@ -19,6 +19,7 @@ typedef struct Scene {
 static void sceneInit(Scene *s)
 {
     MstUniverseSizes sizes = MstUniverseDefaultSizes;
+    sizes.massScale = 500; /* the bodies here are of a few hundred kilograms: ε scales with 1/massScale */
     s->u = MstUniverseCreate(&sizes);
     assert_non_null(s->u);
     s->w = MstUniverseGetWorld(s->u);
@@ -214,7 +215,7 @@ static void freeze_follows_disable(void **state)
     assert_near(pos[2], 0.5, 0.01);
     MdtBodyEnable(body);
     assert_false(McdSpaceModelIsFrozen(ball));
-    MdtBodyAddImpulse(body, 100, 0, 0);
+    MdtBodyAddImpulse(body, 1000, 0, 0); /* 1.9 m/s for the 523 kg ball */
     for (int i = 0; i < 30; i++)
         MstUniverseStep(s.u, 1.0f / 60);
     MdtBodyGetPosition(body, pos);
