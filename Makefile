@@ -1,6 +1,6 @@
 # Karma: a thin wrapper around CMake for the README's commands.
 #
-#   make demo      build, then run the default scene headless (karma run freebodies)
+#   make demo      build, then run the Topple scene headless (karma run topple)
 #   make test      build and test float (-O2, checks on), double, and ASan + UBSan; prints "N passed, N failed"
 #   make build     build the float configuration (build/float)
 #   make install   install it (PREFIX=/usr/local by default)
@@ -48,7 +48,7 @@ test: deps
 	@JOBS=$(JOBS) bash tests/run_configs.sh float double asan
 
 demo: build
-	$(BUILD)/tools/karma run freebodies
+	$(BUILD)/tools/karma run topple
 
 install: build
 	cmake --install $(BUILD) --prefix $(PREFIX)

@@ -64,6 +64,9 @@ MeBool DemoUniverseCreate(DemoInstance *demo, const MstUniverseSizes *sizes, MeR
 /** A model with an enabled body at (x, y, z) in the demo's universe (density in kg/m³); NULL on failure. */
 McdModelID DemoAddModel(DemoInstance *demo, McdGeometryID geometry, MeReal density, MeReal x, MeReal y, MeReal z);
 
+/** No contacts between models a and b (jointed neighbours), inside or outside a change block. */
+void DemoDisablePair(DemoInstance *demo, McdModelID a, McdModelID b);
+
 /** One step of `stepSize` seconds: beforeStep hook, MstUniverseStep (or MdtWorldStep for scenes
  *  without collision), afterStep hook. */
 void DemoStep(DemoInstance *demo, MeReal stepSize);

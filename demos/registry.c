@@ -8,11 +8,14 @@
 #include "demo.h"
 
 extern const DemoScene DemoSceneFreeBodies, DemoSceneTwoSpheres, DemoSceneBallHitsWall, DemoSceneBounce,
-    DemoSceneDrop, DemoSceneCubes, DemoSceneTopple, DemoSceneFriction;
+    DemoSceneDrop, DemoSceneCubes, DemoSceneTopple, DemoSceneFriction, DemoSceneManyPendulums, DemoSceneRainbowChain,
+    DemoSceneHinge, DemoScenePrismatic, DemoSceneCradle;
 
 static const DemoScene *const sceneList[] = {
     &DemoSceneFreeBodies, &DemoSceneTwoSpheres, &DemoSceneBallHitsWall, &DemoSceneBounce,
     &DemoSceneDrop,       &DemoSceneCubes,      &DemoSceneTopple,       &DemoSceneFriction,
+    &DemoSceneManyPendulums, &DemoSceneRainbowChain, &DemoSceneHinge,   &DemoScenePrismatic,
+    &DemoSceneCradle,
 };
 
 int DemoSceneCount(void)
@@ -103,6 +106,17 @@ McdModelID DemoAddModel(DemoInstance *demo, McdGeometryID geometry, MeReal densi
     if (m)
         MdtBodySetPosition(McdModelGetBody(m), x, y, z);
     return m;
+}
+
+void DemoDisablePair(DemoInstance *demo, McdModelID a, McdModelID b)
+{
+    McdSpaceID space = MstUniverseGetSpace(demo->universe);
+    MeBool changing = McdSpaceIsChanging(space);
+    if (!changing)
+        McdSpaceBeginChanges(space);
+    McdSpaceDisablePair(a, b);
+    if (!changing)
+        McdSpaceEndChanges(space);
 }
 
 MdtBodyID DemoAddNamedBody(DemoInstance *demo, const char *name)
