@@ -5,16 +5,15 @@
 #   make build     build the float configuration (build/float)
 #   make install   install it (PREFIX=/usr/local by default)
 #   make deps      install missing Debian packages (as root), or print the apt-get line
+#   make bench     build Release with -DKARMA_BUILD_BENCH=ON (build/bench) and run the benchmarks
 #   make clean     remove build/
-#
-# Benchmarks (make bench) arrive with bench/.
 
 BUILD   ?= build/float
 PREFIX  ?= /usr/local
 JOBS    ?= 2
 DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config
 
-.PHONY: all deps build test demo install clean
+.PHONY: all deps build test demo install bench clean
 
 all: build
 
@@ -52,6 +51,12 @@ demo: build
 
 install: build
 	cmake --install $(BUILD) --prefix $(PREFIX)
+
+# BENCH_ARGS is passed to the runner, e.g. make bench BENCH_ARGS="--scenes=chain --steps=100".
+bench: deps
+	cmake -S . -B build/bench -DCMAKE_BUILD_TYPE=Release -DKARMA_BUILD_BENCH=ON -DKARMA_BUILD_TESTS=OFF -DKARMA_BUILD_TOOLS=OFF
+	cmake --build build/bench -j $(JOBS) --target karma_bench_mdt
+	build/bench/bench/mdt/karma_bench_mdt $(BENCH_ARGS)
 
 clean:
 	rm -rf build

@@ -55,6 +55,12 @@ ME_API MdtContactID MdtContactGetNext(MdtContactID c);
 /** The group the contact belongs to, or NULL. */
 ME_API MdtContactGroupID MdtContactGetContactGroup(MdtContactID c);
 
+/** The contacts touching a body (decision D9): those of its contact groups, in group order, and its
+ *  stand-alone contacts, following the body's constraint list. NULL after the last; `c` must be a
+ *  contact of body `b`. Do not destroy contacts while iterating. */
+ME_API MdtContactID MdtBodyGetFirstContact(MdtBodyID b);
+ME_API MdtContactID MdtBodyGetNextContact(MdtBodyID b, MdtContactID c);
+
 #define MdtContactDestroy(c) MdtConstraintDestroy(MdtContactQuaConstraint(c))
 #define MdtContactEnable(c) MdtConstraintEnable(MdtContactQuaConstraint(c))
 #define MdtContactDisable(c) MdtConstraintDisable(MdtContactQuaConstraint(c))

@@ -66,6 +66,9 @@ typedef struct MdtWorldCounters {
     int bodies, enabledBodies, constraints, enabledConstraints;
     int partitions;           /**< partitions simulated in the last step */
     int rows;                 /**< constraint rows solved in the last step */
+    int droppedRows;          /**< rows removed by matrix capping in the last step (MdtLOD.h) */
+    int cappedPartitions;     /**< partitions that matrix capping reduced in the last step */
+    int simErrors;            /**< partitions disabled by the simulation check in the last step */
     int bodyPoolHighWater, constraintPoolHighWater;
     unsigned long steps;      /**< completed calls to MdtWorldStep */
     MeReal time;              /**< simulated seconds */
@@ -134,6 +137,37 @@ ME_API void MdtWorldSetBodyEnableCallback(MdtWorldID w, MdtBodyEnableCBPtr cb, v
 ME_API void MdtWorldSetBodyDisableCallback(MdtWorldID w, MdtBodyEnableCBPtr cb, void *userData);
 /** Called when a contact group is destroyed, by the application or with its body. */
 ME_API void MdtWorldSetContactGroupDestroyCallback(MdtWorldID w, MdtContactGroupDestroyCBPtr cb, void *userData);
+
+/* ---- simulation check (NaN / infinity containment) ---------------------------------------- */
+/** What went wrong in a partition. */
+typedef enum MdtSimErrorKind {
+    MdtSimErrorSolver = 1, /**< the solver's input or result (impulses, velocity changes) was not finite */
+    MdtSimErrorState = 2   /**< the integrated state (position, orientation, velocities) was not finite */
+} MdtSimErrorKind;
+/** A partition that failed the simulation check, as the callback sees it. The partition's bodies are
+ *  still in the failed state during the callback; afterwards they are put back to their pose at the
+ *  start of the step, stopped and disabled, and its constraints' outputs and warm starts cleared. */
+typedef struct MdtSimError {
+    MdtSimErrorKind kind;
+    int partition;          /**< index in the step */
+    int bodyCount;
+    const MdtBodyID *bodies; /**< the partition's bodies (valid during the callback only) */
+    int constraintCount;
+    int rows;               /**< solver rows of the partition */
+    int solverStatus;       /**< the solver's status for the partition (0 = converged) */
+} MdtSimError;
+/** Called once per failed partition, from inside the step (the world is locked). */
+typedef void (*MdtSimErrorCBPtr)(MdtWorldID w, const MdtSimError *error, void *userData);
+/** Check the solver's result of every partition before integrating (default on). The integrated
+ *  state is always checked: a partition whose state is NaN or infinite is restored, stopped and
+ *  disabled, reported with ME_ERR_NONFINITE_STATE and passed to the callback; other partitions are
+ *  not affected. With the check off a bad solve is caught by the state check after integration. */
+ME_API void MdtWorldSetCheckSim(MdtWorldID w, MeBool check);
+ME_API MeBool MdtWorldGetCheckSim(MdtWorldID w);
+/** Callback for failed partitions (NULL: none; the ME_ERR_NONFINITE_STATE report is always made). */
+ME_API void MdtWorldSetSimErrorCB(MdtWorldID w, MdtSimErrorCBPtr cb, void *userData);
+/** A callback that prints the failed partition's bodies (state, forces) at info level. */
+ME_API void MdtDefaultSimErrorCallBack(MdtWorldID w, const MdtSimError *error, void *userData);
 
 /** Whether `w` is a live world ID (no message). */
 ME_API MeBool MdtWorldIsValid(MdtWorldID w);

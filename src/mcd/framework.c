@@ -8,7 +8,7 @@
 #include "framework.h"
 #include "geometry/geometry.h"
 
-/* Default contact tolerance as a fraction of lengthScale (docs/decisions.md, K9). */
+/* Default contact tolerance as a fraction of lengthScale (docs/decisions.md, C1). */
 #define DEFAULT_TOLERANCE_FRACTION ME_R(0.005)
 /* Default request: four contacts are enough to hold a box face on a plane. */
 #define DEFAULT_CONTACT_MAX_COUNT 4

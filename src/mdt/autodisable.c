@@ -1,4 +1,4 @@
-/* autodisable.c -- MdtAutoDisable: put partitions at rest to sleep.
+/* autodisable.c -- MdtAutoDisablePartitions (MdtAutoDisableStage): put partitions at rest to sleep.
  *
  * Karma's rule (KARMA.md §5.1, decision D1): a partition is disabled only when every one of its
  * bodies has squared speed, squared angular speed, squared acceleration and squared angular
@@ -17,7 +17,7 @@ static MeBool bodyIsAtRest(const MdtBody *b, const MdtAutoDisableParams *p)
            (b->enabledTime > p->aliveTime || b->enabledByPartitioner);
 }
 
-void MdtAutoDisable(MdtWorld *w)
+void MdtAutoDisableStage(MdtWorld *w)
 {
     if (!w->autoDisable.enabled)
         return;
@@ -52,6 +52,7 @@ void MdtAutoDisable(MdtWorld *w)
             MdtBody *b = out->bodies[i];
             b->stepIndex = kept;
             b->partition = keptPartitions;
+            out->ids[kept] = out->ids[i];
             out->bodies[kept++] = b;
         }
         keptPartitions++;

@@ -1,4 +1,4 @@
-/* pack.c -- MdtPack: turn the step's partitions into solver input (Karma's BCL stage).
+/* pack.c -- MdtPackAllPartitions (MdtPackStage): turn the step's partitions into solver input (Karma's BCL stage).
  *
  * First the bodies' velocities are predicted with the external forces (predict.c); then, partition
  * by partition, every enabled constraint writes its rows through the row writer below, which turns
@@ -111,7 +111,7 @@ static MeBool allocateRows(MdtWorld *w, int rows, int bodies, int partitions)
     return METRUE;
 }
 
-void MdtPack(MdtWorld *w)
+void MdtPackStage(MdtWorld *w)
 {
     MdtPartitionOutput *out = &w->partitions;
     MdtStepRows *r = &w->rows;
@@ -170,6 +170,7 @@ void MdtPack(MdtWorld *w)
     r->partitionRowStart[out->partitionCount] = writer.count;
     r->count = writer.count;
     w->lastRowCount = writer.count;
+    w->rowsPacked = METRUE;
 }
 
 int MdtConstraintCaptureRows(MdtConstraint *c, MdtRow *rows, int max, MeReal h)

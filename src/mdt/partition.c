@@ -1,4 +1,4 @@
-/* partition.c -- MdtUpdatePartitions: group the enabled bodies and constraints into partitions.
+/* partition.c -- MdtUpdatePartitions (MdtPartitionStage): group the enabled bodies and constraints into partitions.
  *
  * A partition (island) is a minimal set of bodies and constraints that can be solved without
  * reference to any other: if a body is in it, every enabled constraint on that body is, and so is
@@ -38,29 +38,34 @@ static int compareConstraints(const void *pa, const void *pb)
 static MeBool allocateOutput(MdtWorld *w, MdtBody ***seeds, int maxBodies, int maxConstraints)
 {
     MdtPartitionOutput *out = &w->partitions;
-    size_t nb = (size_t)maxBodies, nc = (size_t)maxConstraints;
-    size_t bytes = sizeof(MdtBody *) * 2 * (nb + 1) + sizeof(int) * (nb + 1) + sizeof(MdtConstraint *) * (nc + 1) +
-                   sizeof(int) * (nb + 1) + 64;
+    size_t nb = (size_t)maxBodies + 1, nc = (size_t)maxConstraints + 1;
+    size_t bytes = sizeof(MdtBody *) * 2 * nb + sizeof(MdtBodyID) * nb + sizeof(MdtConstraint *) * nc +
+                   sizeof(int) * 5 * nb + 64;
     unsigned char *mem = MeChunkGetMem(&w->partitionChunk, bytes);
     if (!mem)
         return MEFALSE;
     MeChunkPutMem(&w->partitionChunk, mem); /* the arrays stay valid until the next step */
     /* Pointer arrays first (strictest alignment), then ints. */
     out->bodies = (MdtBody **)mem;
-    *seeds = out->bodies + nb + 1;
-    out->constraints = (MdtConstraint **)(*seeds + nb + 1);
-    out->partitionStart = (int *)(out->constraints + nc + 1);
-    out->constraintStart = out->partitionStart + nb + 1;
+    *seeds = out->bodies + nb;
+    out->ids = (MdtBodyID *)(*seeds + nb);
+    out->constraints = (MdtConstraint **)(out->ids + nb);
+    out->partitionStart = (int *)(out->constraints + nc);
+    out->constraintStart = out->partitionStart + nb;
+    out->droppedRows = out->constraintStart + nb;
+    out->simError = out->droppedRows + nb;
+    out->solverStatus = out->simError + nb;
     return METRUE;
 }
 
-void MdtUpdatePartitions(MdtWorld *w)
+void MdtPartitionStage(MdtWorld *w)
 {
     MdtPartitionOutput *out = &w->partitions;
     const unsigned long stamp = ++w->partitionStamp;
     MdtBody **seeds;
     int maxBodies = MePoolGetUsed(&w->bodyPool);
     out->bodyCount = out->partitionCount = out->constraintCount = 0;
+    w->rowsPacked = MEFALSE;
     if (!allocateOutput(w, &seeds, maxBodies, w->enabledConstraintCount)) {
         /* Out of memory (reported by the chunk): nothing is simulated this step; state is intact. */
         return;
@@ -121,7 +126,9 @@ void MdtUpdatePartitions(MdtWorld *w)
         for (int i = out->partitionStart[p]; i < out->partitionStart[p + 1]; i++) {
             out->bodies[i]->stepIndex = i;
             out->bodies[i]->partition = p;
+            out->ids[i] = (MdtBodyID)out->bodies[i]->id;
         }
+        out->droppedRows[p] = out->simError[p] = out->solverStatus[p] = 0;
         for (int i = out->constraintStart[p]; i < out->constraintStart[p + 1]; i++)
             out->constraints[i]->partition = p;
     }

@@ -1,83 +1,185 @@
-/* step.c -- MdtWorldStep: one time step of the dynamics pipeline (docs/step.md).
+/* step.c -- MdtWorldStep and its stages as public functions (MdtMainLoop.h, docs/step.md).
  *
- *   MdtUpdatePartitions   islands of enabled bodies joined by constraints
- *   MdtAutoDisable        islands at rest go to sleep
- *   MdtPack               external forces → predicted velocities; constraints → solver rows
- *   MdtKeaSolve           the LCP for the constraint impulses, per island
- *   MdtKeaIntegrate       velocities, then positions and orientations; state check
- *   MdtUnpackForces       constraint forces back into the constraints for the application
+ *   MdtWorldStepBegin         check h, lock the world, start the profile frame
+ *   MdtUpdatePartitions       islands of enabled bodies joined by constraints
+ *   MdtAutoDisablePartitions  islands at rest go to sleep                           (optional)
+ *   MdtLODPartitions          matrix capping                                        (optional)
+ *   MdtPackAllPartitions      external forces → predicted velocities; constraints → solver rows
+ *   MdtKeaAddConstraintForces the LCP for the constraint impulses, per island
+ *   MdtKeaIntegrateSystem     velocities, then positions and orientations; state check
+ *   MdtUnpackForces           constraint forces back into the constraints; accumulators cleared
+ *   MdtWorldStepEnd           count the step, unlock
  *
- * Each stage is a section of the world's profile. The world is locked while it steps: creating or
- * destroying bodies from a callback is refused (ME_ERR_WORLD_LOCKED). */
+ * MdtWorldStep runs exactly these, so a step written by the application from the public stages is
+ * bit-identical to MdtWorldStep. A stage called out of order is refused: the partition lists hold
+ * pointers that are only valid within the step that built them. */
+#include <karma/MdtMainLoop.h>
+
 #include "../me/check.h"
-#include "kea/kea_integrate.h"
 #include "world.h"
 
-/* Clears the accumulators of the bodies that were simulated; disabled bodies keep theirs. */
-static void clearAccumulators(MdtWorld *w)
+/* The stage a call needs the world to be in: at least `after`, and before `stage` itself. */
+static MdtWorld *enterStage(MdtWorldID id, MdtStage stage, MdtStage after, const char *function)
 {
-    for (int i = 0; i < w->bodyPool.capacity; i++) {
-        if (!MePoolSlotIsLive(&w->bodyPool, i))
-            continue;
-        MdtBody *b = MePoolSlot(&w->bodyPool, i);
-        if (b->stepIndex < 0)
-            continue;
-        MeVector3Set(b->force, 0, 0, 0);
-        MeVector3Set(b->torque, 0, 0, 0);
-        MeVector3Set(b->impulse, 0, 0, 0);
-        MeVector3Set(b->angularImpulse, 0, 0, 0);
-        b->enabledByPartitioner = MEFALSE;
+    MdtWorld *w = MdtWorldFromID(id, function);
+    if (!w)
+        return NULL;
+    if (w->stage < after || w->stage >= stage) {
+        static const char *const names[] = {"MdtWorldStepBegin",        "MdtWorldStepBegin",
+                                            "MdtUpdatePartitions",      "MdtAutoDisablePartitions",
+                                            "MdtLODPartitions",         "MdtPackAllPartitions",
+                                            "MdtKeaAddConstraintForces", "MdtKeaIntegrateSystem",
+                                            "MdtUnpackForces"};
+        ME_REPORT_IN(function, ME_ERR_BAD_STATE,
+                     "stage called out of order: it must follow %s%s in the same step; call ignored",
+                     names[after], w->stage == MdtStageIdle ? " (no step has begun)" : "");
+        return NULL;
     }
+    return w;
+}
+
+static MeBool beginStep(MdtWorld *w, MeReal stepSize, const char *function)
+{
+    if (!(ME_IS_FINITE(stepSize) && stepSize > 0)) {
+        ME_REPORT_IN(function, ME_ERR_STEP_SIZE, "argument 'stepSize' (%g) must be positive and finite; step skipped",
+                     (double)stepSize);
+        return MEFALSE;
+    }
+    if (w->locked) {
+        ME_REPORT_IN(function, ME_ERR_WORLD_LOCKED, "the world is already stepping; %s refused", function);
+        return MEFALSE;
+    }
+    w->locked = METRUE;
+    w->stage = MdtStageBegun;
+    w->stepSize = stepSize;
+    w->droppedRows = w->cappedPartitions = w->simErrors = 0;
+    MeProfileFrameStart(&w->profile);
+    MeProfileStartSection(&w->profile, MDT_SECTION_STEP);
+    return METRUE;
+}
+
+static void endStep(MdtWorld *w)
+{
+    MeProfileEndSection(&w->profile, MDT_SECTION_STEP);
+    MeProfileFrameEnd(&w->profile);
+    w->steps++;
+    w->time += w->stepSize;
+    w->stage = MdtStageIdle;
+    w->locked = MEFALSE;
+}
+
+/* The stages in order: what each runs, its profile section, the stage it completes and the earliest
+ * stage it may follow (the optional auto-disable and LOD stages may be skipped). */
+typedef struct StageDef {
+    void (*run)(MdtWorld *w);
+    const char *section;
+    MdtStage done, after;
+} StageDef;
+
+static const StageDef stages[] = {
+    {MdtPartitionStage, MDT_SECTION_PARTITION, MdtStagePartitioned, MdtStageBegun},
+    {MdtAutoDisableStage, MDT_SECTION_AUTODISABLE, MdtStageAutoDisabled, MdtStagePartitioned},
+    {MdtLODStage, MDT_SECTION_LOD, MdtStageCapped, MdtStagePartitioned},
+    {MdtPackStage, MDT_SECTION_PACK, MdtStagePacked, MdtStagePartitioned},
+    {MdtSolveStage, MDT_SECTION_SOLVE, MdtStageSolved, MdtStagePacked},
+    {MdtIntegrateStage, MDT_SECTION_INTEGRATE, MdtStageIntegrated, MdtStageSolved},
+    {MdtUnpackStage, MDT_SECTION_UNPACK, MdtStageUnpacked, MdtStageIntegrated},
+};
+
+/* One stage, timed in its profile section. */
+static void runStage(MdtWorld *w, const StageDef *stage)
+{
+    MeProfileStartSection(&w->profile, stage->section);
+    stage->run(w);
+    MeProfileEndSection(&w->profile, stage->section);
+    w->stage = stage->done;
+}
+
+/* A stage called by the application: checked against the step's progress, then run. */
+static void publicStage(MdtWorldID id, int index, const char *function)
+{
+    MdtWorld *w = enterStage(id, stages[index].done, stages[index].after, function);
+    if (w)
+        runStage(w, &stages[index]);
+}
+
+void MdtWorldStepBegin(MdtWorldID id, MeReal stepSize)
+{
+    MdtWorld *w = MdtWorldFromID(id, __func__);
+    if (w)
+        beginStep(w, stepSize, __func__);
+}
+
+void MdtUpdatePartitions(MdtWorldID id) { publicStage(id, 0, __func__); }
+void MdtAutoDisablePartitions(MdtWorldID id) { publicStage(id, 1, __func__); }
+void MdtLODPartitions(MdtWorldID id) { publicStage(id, 2, __func__); }
+void MdtPackAllPartitions(MdtWorldID id) { publicStage(id, 3, __func__); }
+void MdtKeaAddConstraintForces(MdtWorldID id) { publicStage(id, 4, __func__); }
+void MdtKeaIntegrateSystem(MdtWorldID id) { publicStage(id, 5, __func__); }
+void MdtUnpackForces(MdtWorldID id) { publicStage(id, 6, __func__); }
+
+void MdtWorldStepEnd(MdtWorldID id)
+{
+    MdtWorld *w = enterStage(id, (MdtStage)(MdtStageUnpacked + 1), MdtStageUnpacked, __func__);
+    if (w)
+        endStep(w);
 }
 
 void MdtWorldStep(MdtWorldID id, MeReal stepSize)
 {
     MdtWorld *w = MdtWorldFromID(id, __func__);
+    if (!w || !beginStep(w, stepSize, __func__))
+        return;
+    for (size_t i = 0; i < sizeof stages / sizeof stages[0]; i++)
+        runStage(w, &stages[i]);
+    endStep(w);
+}
+
+/* ---- partition queries -------------------------------------------------------------------- */
+static MdtWorld *partitionWorld(MdtWorldID id, int partition, const char *function)
+{
+    MdtWorld *w = MdtWorldFromID(id, function);
+    if (!w)
+        return NULL;
+    if (partition < 0 || partition >= w->partitions.partitionCount) {
+        ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE, "argument 'partition' (%d) must lie in [0, %d)", partition,
+                     w->partitions.partitionCount);
+        return NULL;
+    }
+    return w;
+}
+
+int MdtWorldGetPartitionCount(MdtWorldID id)
+{
+    MdtWorld *w = MdtWorldFromID(id, __func__);
+    return w ? w->partitions.partitionCount : 0;
+}
+
+void MdtWorldGetPartitionInfo(MdtWorldID id, int partition, MdtPartitionInfo *info)
+{
+    ME_CHECK_NOT_NULL(info, ME_NOTHING);
+    info->bodies = info->constraints = info->rows = info->droppedRows = 0;
+    MdtWorld *w = partitionWorld(id, partition, __func__);
     if (!w)
         return;
-    if (!(ME_IS_FINITE(stepSize) && stepSize > 0)) {
-        ME_REPORT(ME_ERR_STEP_SIZE, "argument 'stepSize' (%g) must be positive and finite; step skipped",
-                  (double)stepSize);
-        return;
+    const MdtPartitionOutput *out = &w->partitions;
+    info->bodies = out->partitionStart[partition + 1] - out->partitionStart[partition];
+    info->constraints = out->constraintStart[partition + 1] - out->constraintStart[partition];
+    info->droppedRows = out->droppedRows[partition];
+    if (w->rowsPacked)
+        info->rows = w->rows.partitionRowStart[partition + 1] - w->rows.partitionRowStart[partition];
+}
+
+MdtBodyID MdtWorldGetPartitionBody(MdtWorldID id, int partition, int index)
+{
+    MdtWorld *w = partitionWorld(id, partition, __func__);
+    if (!w)
+        return NULL;
+    const MdtPartitionOutput *out = &w->partitions;
+    int count = out->partitionStart[partition + 1] - out->partitionStart[partition];
+    if (index < 0 || index >= count) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'index' (%d) must lie in [0, %d)", index, count);
+        return NULL;
     }
-    if (w->locked) {
-        ME_REPORT(ME_ERR_WORLD_LOCKED, "MdtWorldStep was called from inside the same world's step");
-        return;
-    }
-    w->locked = METRUE;
-    w->stepSize = stepSize;
-    MeProfile *prof = &w->profile;
-    MeProfileFrameStart(prof);
-    MeProfileStartSection(prof, MDT_SECTION_STEP);
-
-    MeProfileStartSection(prof, MDT_SECTION_PARTITION);
-    MdtUpdatePartitions(w);
-    MeProfileEndSection(prof, MDT_SECTION_PARTITION);
-
-    MeProfileStartSection(prof, MDT_SECTION_AUTODISABLE);
-    MdtAutoDisable(w);
-    MeProfileEndSection(prof, MDT_SECTION_AUTODISABLE);
-
-    MeProfileStartSection(prof, MDT_SECTION_PACK);
-    MdtPack(w);
-    MeProfileEndSection(prof, MDT_SECTION_PACK);
-
-    MeProfileStartSection(prof, MDT_SECTION_SOLVE);
-    MdtSolve(w);
-    MeProfileEndSection(prof, MDT_SECTION_SOLVE);
-
-    MeProfileStartSection(prof, MDT_SECTION_INTEGRATE);
-    MdtKeaIntegratePartitions(w, (const MeReal *)w->rows.dv);
-    MeProfileEndSection(prof, MDT_SECTION_INTEGRATE);
-
-    MeProfileStartSection(prof, MDT_SECTION_UNPACK);
-    MdtUnpackForces(w);
-    clearAccumulators(w);
-    MeProfileEndSection(prof, MDT_SECTION_UNPACK);
-
-    MeProfileEndSection(prof, MDT_SECTION_STEP);
-    MeProfileFrameEnd(prof);
-    w->steps++;
-    w->time += stepSize;
-    w->locked = MEFALSE;
+    return (MdtBodyID)out->bodies[out->partitionStart[partition] + index]->id;
 }

@@ -1,18 +1,45 @@
-/* unpack.c -- MdtUnpackForces: the constraint forces of the step, back into the constraints.
+/* unpack.c -- MdtUnpackForces (MdtUnpackStage): the constraint forces of the step, back into the
+ * constraints, and the simulated bodies' accumulators cleared.
  *
  * For each constraint solved this step: the force and torque on each body are the sums of its rows'
  * Jacobian halves weighted by the row impulses, divided by the step (world frame; torque about the
  * body's centre of mass). The impulses are kept as the next step's warm start, and the type may
- * derive its own outputs (a contact's normal force, a limit's force) through its unpack hook. */
+ * derive its own outputs (a contact's normal force, a limit's force) through its unpack hook. A
+ * partition that failed the simulation check gets zero impulses: no NaN is kept for the next step. */
+#include <string.h>
+
 #include "constraint.h"
 #include "world.h"
 
-void MdtUnpackForces(MdtWorld *w)
+/* Clears the accumulators of the bodies that were simulated; disabled bodies keep theirs. */
+static void clearAccumulators(MdtWorld *w)
+{
+    for (int i = 0; i < w->bodyPool.capacity; i++) {
+        if (!MePoolSlotIsLive(&w->bodyPool, i))
+            continue;
+        MdtBody *b = MePoolSlot(&w->bodyPool, i);
+        if (b->stepIndex < 0)
+            continue;
+        MeVector3Set(b->force, 0, 0, 0);
+        MeVector3Set(b->torque, 0, 0, 0);
+        MeVector3Set(b->impulse, 0, 0, 0);
+        MeVector3Set(b->angularImpulse, 0, 0, 0);
+        b->enabledByPartitioner = MEFALSE;
+    }
+}
+
+void MdtUnpackStage(MdtWorld *w)
 {
     const MdtPartitionOutput *out = &w->partitions;
     const MdtStepRows *r = &w->rows;
     const MeReal invH = 1 / w->stepSize;
-    for (int i = 0; i < out->constraintCount; i++) {
+    if (w->rowsPacked) {
+        for (int p = 0; p < out->partitionCount; p++)
+            if (out->simError[p])
+                memset(r->x + r->partitionRowStart[p], 0,
+                       sizeof(MeReal) * (size_t)(r->partitionRowStart[p + 1] - r->partitionRowStart[p]));
+    }
+    for (int i = 0; w->rowsPacked && i < out->constraintCount; i++) {
         MdtConstraint *c = out->constraints[i];
         MeVector3 f0 = {0, 0, 0}, t0 = {0, 0, 0}, f1 = {0, 0, 0}, t1 = {0, 0, 0};
         for (int k = 0; k < c->rowCount; k++) {
@@ -37,4 +64,5 @@ void MdtUnpackForces(MdtWorld *w)
         if (c->cls->unpack)
             c->cls->unpack(c, r->x + c->rowStart, c->rowCount, w->stepSize);
     }
+    clearAccumulators(w);
 }

@@ -46,6 +46,9 @@ void MdtWorldSetDefaults(MdtWorld *w)
     w->autoDisable.acceleration = DEFAULT_AD_ACCELERATION * l2;
     w->autoDisable.angularAcceleration = DEFAULT_AD_ANGULAR_ACCELERATION;
     w->autoDisable.aliveTime = DEFAULT_AD_ALIVE_TIME;
+    w->checkSim = METRUE;
+    w->maxMatrixSize = MDT_MATRIX_SIZE_UNCAPPED;
+    MdtLODParamsSetDefaults(&w->lod);
 }
 
 MdtWorldID MdtWorldCreate(unsigned int maxBodies, unsigned int maxConstraints, MeReal lengthScale, MeReal massScale)
@@ -86,6 +89,7 @@ MdtWorldID MdtWorldCreate(unsigned int maxBodies, unsigned int maxConstraints, M
     MeChunkInit(&w->partitionChunk, "partition output");
     MeChunkInit(&w->keaChunk, "Kea workspace");
     MeChunkInit(&w->rowChunk, "constraint rows");
+    MeChunkInit(&w->lodChunk, "matrix capping");
     MeProfileInit(&w->profile);
     MdtWorldSetDefaults(w);
     return (MdtWorldID)w->id;
@@ -102,6 +106,7 @@ void MdtWorldDestroy(MdtWorldID id)
     MeChunkTerm(&w->partitionChunk);
     MeChunkTerm(&w->keaChunk);
     MeChunkTerm(&w->rowChunk);
+    MeChunkTerm(&w->lodChunk);
     MePoolDestroy(&w->bodyPool);
     MePoolDestroy(&w->constraintPool);
     MeMemoryDestroy(w);
@@ -120,6 +125,8 @@ void MdtWorldReset(MdtWorldID id)
     w->enabledConstraintCount = 0;
     w->partitions.bodyCount = 0;
     w->partitions.partitionCount = 0;
+    w->partitions.constraintCount = 0;
+    w->rowsPacked = MEFALSE;
 }
 
 void MdtWorldReCreate(MdtWorldID id)
@@ -269,6 +276,9 @@ void MdtWorldGetCounters(MdtWorldID id, MdtWorldCounters *c)
     c->enabledConstraints = w->enabledConstraintCount;
     c->partitions = w->partitions.partitionCount;
     c->rows = w->lastRowCount;
+    c->droppedRows = w->droppedRows;
+    c->cappedPartitions = w->cappedPartitions;
+    c->simErrors = w->simErrors;
     c->bodyPoolHighWater = MePoolGetHighWater(&w->bodyPool);
     c->constraintPoolHighWater = MePoolGetHighWater(&w->constraintPool);
     c->steps = w->steps;

@@ -8,6 +8,7 @@
 #include <karma/MeChunk.h>
 #include <karma/MePool.h>
 #include <karma/MeProfile.h>
+#include <karma/MdtLOD.h>
 #include <karma/MdtWorld.h>
 
 #include "body.h"
@@ -17,6 +18,7 @@
 #define MDT_SECTION_STEP "Dynamics"
 #define MDT_SECTION_PARTITION "Partition"
 #define MDT_SECTION_AUTODISABLE "AutoDisable"
+#define MDT_SECTION_LOD "LOD"
 #define MDT_SECTION_PACK "Pack"
 #define MDT_SECTION_SOLVE "Solve"
 #define MDT_SECTION_INTEGRATE "Integrate"
@@ -39,7 +41,24 @@ typedef struct MdtPartitionOutput {
     int constraintCount;
     struct MdtConstraint **constraints; /* enabled constraints, grouped by partition */
     int *constraintStart;    /* partitionCount + 1 offsets into constraints */
+    int *droppedRows;        /* per partition: rows removed by matrix capping */
+    int *simError;           /* per partition: 0, or the MdtSimErrorKind that failed it */
+    int *solverStatus;       /* per partition: the KeaStatus of its solve */
+    MdtBodyID *ids;          /* scratch for the sim-error callback's body list (maxBodies) */
 } MdtPartitionOutput;
+
+/* Where an application-driven step is (MdtMainLoop.h): each stage requires the previous one. */
+typedef enum MdtStage {
+    MdtStageIdle = 0,   /* no step in progress */
+    MdtStageBegun,      /* MdtWorldStepBegin */
+    MdtStagePartitioned,
+    MdtStageAutoDisabled,
+    MdtStageCapped,
+    MdtStagePacked,
+    MdtStageSolved,
+    MdtStageIntegrated,
+    MdtStageUnpacked
+} MdtStage;
 
 /* The solver rows of the step, all partitions one after the other (written by MdtPack). */
 typedef struct MdtStepRows {
@@ -73,14 +92,27 @@ typedef struct MdtWorld {
     void *bodyEnableData, *bodyDisableData;
     MdtContactGroupDestroyCBPtr contactGroupDestroyCB;
     void *contactGroupDestroyData;
+    MdtSimErrorCBPtr simErrorCB;
+    void *simErrorData;
+    MeBool checkSim;
+    MdtContactImportanceCBPtr importanceCB;
+    void *importanceData;
+
+    /* matrix capping (lod.c) */
+    int maxMatrixSize;
+    MdtLODParams lod;
+    MeChunk lodChunk;        /* the capped partition's contact list */
+    int droppedRows, cappedPartitions, simErrors; /* of the last step */
 
     /* step state */
-    MeBool locked;           /* inside MdtWorldStep */
+    MeBool locked;           /* inside MdtWorldStep, or between MdtWorldStepBegin and End */
+    MdtStage stage;
     MeReal stepSize;         /* of the step in progress or the last one */
     int enabledBodyCount;
     int enabledConstraintCount;
     MdtPartitionOutput partitions;
     MdtStepRows rows;
+    MeBool rowsPacked;       /* rows describe the current partitions (pack ran after partitioning) */
     unsigned long partitionStamp;
     MeChunk partitionChunk;  /* body and constraint lists, partition offsets */
     MeChunk rowChunk;        /* the step's solver rows */
@@ -98,11 +130,15 @@ MdtWorld *MdtWorldFromID(MdtWorldID id, const char *function);
 /* Set every setting to its default for the world's scales. */
 void MdtWorldSetDefaults(MdtWorld *w);
 
-/* The stages of the step (docs/step.md), each timed by MdtWorldStep. */
-void MdtUpdatePartitions(MdtWorld *w);
-void MdtAutoDisable(MdtWorld *w);
-void MdtPack(MdtWorld *w);
-void MdtSolve(MdtWorld *w);
-void MdtUnpackForces(MdtWorld *w);
+/* The stages of the step (docs/step.md, MdtMainLoop.h); step.c wraps each in its public function. */
+void MdtPartitionStage(MdtWorld *w);
+void MdtAutoDisableStage(MdtWorld *w);
+void MdtLODStage(MdtWorld *w);
+void MdtPackStage(MdtWorld *w);
+void MdtSolveStage(MdtWorld *w);
+void MdtIntegrateStage(MdtWorld *w);
+void MdtUnpackStage(MdtWorld *w);
+/* Restore, stop and disable the partitions marked in simError; report each and call the callback. */
+void MdtSimErrorHandlePartitions(MdtWorld *w);
 
 #endif /* MDT_WORLD_INTERNAL_H */

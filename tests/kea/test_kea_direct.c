@@ -47,6 +47,55 @@ static void random_box_lcps_match_brute_force(void **state)
                   "mean pivots %.2f\n", solved, worst, worstRes, (double)pivots / solved);
 }
 
+/* Complementarity checked outside Kea, with the dense matrix in double: for every row, x inside its
+ * bounds, and w = A x - r zero for a free row, >= 0 at the lower bound, <= 0 at the upper one, on
+ * random partitions up to 48 rows (too large for brute force). Tolerance: 1e-6 (double) relative to
+ * the problem's scale. */
+static void complementarity_checked_independently(void **state)
+{
+    static const int sizes[] = {4, 12, 24, 48};
+    KeaParameters prm = kt_params(KeaPathDirect);
+    double worst = 0.0;
+    int s, seed, rows = 0;
+    (void)state;
+    for (s = 0; s < 4; ++s) {
+        const int n = sizes[s];
+        for (seed = 0; seed < 20; ++seed) {
+            KtRng rng = kt_rng((uint64_t)(5000 + 100 * n + seed));
+            KtProblem t;
+            MeReal x[48];
+            double *A = (double *)malloc(sizeof(double) * (size_t)(n * n)), scale = 1.0;
+            KeaStats st;
+            int i, j;
+            kt_random_problem(&t, &rng, n, 2 + kt_int(&rng, n / 2 + 1), 1e-3, 1e-1);
+            assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusOk);
+            kt_dense_matrix(&t.p, A);
+            for (i = 0; i < n; ++i)
+                scale = fmax(scale, fabs((double)t.rhs[i]) + A[i * n + i] * fabs((double)x[i]));
+            for (i = 0; i < n; ++i) {
+                double w = -(double)t.rhs[i], xi = (double)x[i], lo = (double)t.lo[i], hi = (double)t.hi[i];
+                double tolX = ME_TOL(1e-6, 1e-3) * scale / A[i * n + i], err;
+                for (j = 0; j < n; ++j)
+                    w += A[i * n + j] * (double)x[j];
+                assert_true(xi >= lo - tolX && xi <= hi + tolX);
+                if (!kt_is_inf(t.lo[i]) && xi <= lo + tolX)
+                    err = fmax(0.0, -w); /* at the lower bound: may only push outwards */
+                else if (!kt_is_inf(t.hi[i]) && xi >= hi - tolX)
+                    err = fmax(0.0, w);
+                else
+                    err = fabs(w);
+                worst = fmax(worst, err / scale);
+                assert_near(err / scale, 0.0, ME_TOL(1e-6, 1e-3));
+                ++rows;
+            }
+            free(A);
+            kt_free(&t);
+        }
+    }
+    print_message("direct path, 80 random partitions of 4-48 rows (%d rows): worst complementarity violation "
+                  "%.2e (relative)\n", rows, worst);
+}
+
 /* Started from its own solution, the direct path does not pivot and does not move. */
 static void warm_start_from_solution_needs_no_pivots(void **state)
 {
@@ -201,6 +250,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(random_box_lcps_match_brute_force),
+        cmocka_unit_test(complementarity_checked_independently),
         cmocka_unit_test(warm_start_from_solution_needs_no_pivots),
         cmocka_unit_test(bad_warm_start_same_answer),
         cmocka_unit_test(friction_links_match_brute_force),

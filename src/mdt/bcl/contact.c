@@ -50,7 +50,14 @@ int MdtContactRowCount(const ContactData *d)
     }
 }
 
-static int rowCount(const MdtConstraint *c) { return MdtContactRowCount(MDT_CONSTRAINT_DATA(c, const ContactData)); }
+int MdtContactStepRows(const MdtConstraint *c)
+{
+    const ContactData *d = MDT_CONSTRAINT_DATA(c, const ContactData);
+    int full = MdtContactRowCount(d);
+    return d->lodStamp == c->world->partitionStamp && d->lodRows < full ? d->lodRows : full;
+}
+
+static int rowCount(const MdtConstraint *c) { return MdtContactStepRows(c); }
 
 /* Fills lin/ang of both halves for direction dir: J v = dir·(v1p − v0p). */
 static void directionRow(MdtRow *row, const MeVector3 dir, const MeVector3 r0, const MeVector3 r1)
@@ -84,6 +91,9 @@ void MdtContactAddRows(const MdtConstraint *owner, MdtConstraint *contact, MdtRo
         MeVector3Set(r1, d->position[0] - b1->comTM[3][0], d->position[1] - b1->comTM[3][1],
                      d->position[2] - b1->comTM[3][2]);
     const MeBool movingWorld = !b1 && (p->options & MdtBclContactOptionUseWorldVelocity);
+    const int stepRows = MdtContactStepRows(contact); /* matrix capping may drop friction or all */
+    if (stepRows == 0)
+        return;
 
     /* normal */
     MdtRow row;
@@ -136,7 +146,7 @@ void MdtContactAddRows(const MdtConstraint *owner, MdtConstraint *contact, MdtRo
     if (!w->captured && normalRow >= 0)
         w->x0[w->first + normalRow] = d->impulse[0];
 
-    if (p->type == MdtContactTypeFrictionZero)
+    if (p->type == MdtContactTypeFrictionZero || stepRows < 2)
         return;
 
     /* friction directions */

@@ -49,7 +49,7 @@ static int rowCount(const MdtConstraint *g)
     int rows = 0;
     for (const MdtConstraint *c = MDT_CONSTRAINT_DATA(g, const GroupData)->first; c;
          c = MDT_CONSTRAINT_DATA(c, const ContactData)->next)
-        rows += MdtContactRowCount(MDT_CONSTRAINT_DATA(c, const ContactData));
+        rows += MdtContactStepRows(c);
     return rows;
 }
 
@@ -69,12 +69,16 @@ static void unpack(MdtConstraint *g, const MeReal *impulses, int rows, MeReal h)
     GroupData *d = MDT_CONSTRAINT_DATA(g, GroupData);
     int offset = 0;
     d->normalForce = 0;
-    for (MdtConstraint *c = d->first; c && offset < rows; c = MDT_CONSTRAINT_DATA(c, ContactData)->next) {
-        MdtContactUnpack(c, impulses + offset, c->rowCount, h);
+    /* Every contact, also those capping dropped (rowCount 0): their warm starts go back to 0. */
+    for (MdtConstraint *c = d->first; c; c = MDT_CONSTRAINT_DATA(c, ContactData)->next) {
+        int n = offset + c->rowCount <= rows ? c->rowCount : 0;
+        MdtContactUnpack(c, impulses + offset, n, h);
         d->normalForce += MDT_CONSTRAINT_DATA(c, ContactData)->normalForce;
-        offset += c->rowCount;
+        offset += n;
     }
 }
+
+MdtConstraint *MdtContactGroupFirst(const MdtConstraint *g) { return MDT_CONSTRAINT_DATA(g, const GroupData)->first; }
 
 static void destroy(MdtConstraint *g)
 {
@@ -279,4 +283,47 @@ void *MdtContactGroupGetGenerator(MdtContactGroupID id)
 {
     GROUP_OR_RETURN(g, d, id, NULL);
     return d->generator;
+}
+
+/* ---- a body's contacts (D9) ---------------------------------------------------------------- */
+/* The first contact at or after constraint c in body b's list: a group's first contact or a
+ * stand-alone contact. */
+static MdtConstraint *firstContactFrom(const MdtBody *b, MdtConstraint *c)
+{
+    for (; c; c = c->nextForBody[c->body[0] == b ? 0 : 1]) {
+        if (c->type == MdtBclCONTACT)
+            return c;
+        if (c->type == MdtBclCONTACTGROUP && MDT_CONSTRAINT_DATA(c, GroupData)->first)
+            return MDT_CONSTRAINT_DATA(c, GroupData)->first;
+    }
+    return NULL;
+}
+
+MdtContactID MdtBodyGetFirstContact(MdtBodyID bid)
+{
+    MdtBody *b = MdtBodyFromID(bid, __func__);
+    if (!b)
+        return NULL;
+    MdtConstraint *c = firstContactFrom(b, b->firstConstraint);
+    return c ? (MdtContactID)c->id : NULL;
+}
+
+MdtContactID MdtBodyGetNextContact(MdtBodyID bid, MdtContactID cid)
+{
+    MdtBody *b = MdtBodyFromID(bid, __func__);
+    if (!b)
+        return NULL;
+    MdtConstraint *c = MdtConstraintFromIDOfType(cid, MdtBclCONTACT, __func__);
+    if (!c)
+        return NULL;
+    ContactData *d = MDT_CONSTRAINT_DATA(c, ContactData);
+    MdtConstraint *owner = d->group ? d->group : c;
+    if (owner->body[0] != b && owner->body[1] != b) {
+        ME_REPORT(ME_ERR_BAD_STATE, "the contact does not touch this body");
+        return NULL;
+    }
+    if (d->group && d->next)
+        return (MdtContactID)d->next->id;
+    MdtConstraint *next = firstContactFrom(b, owner->nextForBody[owner->body[0] == b ? 0 : 1]);
+    return next ? (MdtContactID)next->id : NULL;
 }

@@ -19,6 +19,8 @@ typedef struct ContactData {
     MeReal pendingBounce;     /* approach speed of a contact that landed last step and bounces now */
     MdtConstraint *group;     /* owning group, or NULL */
     MdtConstraint *next;      /* next contact of the group */
+    unsigned long lodStamp;   /* matrix capping: lodRows holds for the step with this partition stamp */
+    int lodRows;              /* rows capping left this contact (0: dropped, 1: frictionless) */
 } ContactData;
 MDT_CONSTRAINT_DATA_FITS(ContactData);
 
@@ -26,6 +28,10 @@ extern const MdtConstraintClass MdtContactClass;
 
 /* Rows of the contact's type (1, 2 or 3). */
 int MdtContactRowCount(const ContactData *d);
+/* Rows the contact writes in this step: its type's, or fewer when matrix capping dropped some. */
+int MdtContactStepRows(const MdtConstraint *contact);
+/* First contact of a group (NULL when empty); the others follow through ContactData.next. */
+MdtConstraint *MdtContactGroupFirst(const MdtConstraint *group);
 /* Write one contact's rows for `owner` (the contact itself, or its group): bodies come from owner. */
 void MdtContactAddRows(const MdtConstraint *owner, MdtConstraint *contact, MdtRowWriter *w);
 /* Keep the contact's impulses (warm start) and its normal force. */

@@ -1,4 +1,5 @@
-/* integrate.c -- MdtKeaIntegrate: advance the bodies of the step by one time step.
+/* integrate.c -- MdtKeaIntegrateSystem (MdtIntegrateStage): advance the bodies of the step by one
+ * time step.
  *
  * Karma's integrator is first order, velocities first and then positions ("symplectic Euler"):
  *
@@ -10,9 +11,11 @@
  * rest, integrated to first order: a wheel spinning at 100 rad/s then turns at its true rate, which
  * the first-order update alone would not.
  *
- * After integration each partition's state is checked: a NaN or infinity is reported
- * (ME_ERR_NONFINITE_STATE) and the partition's bodies are put back to their pose at the start of the
- * step, stopped and disabled, so that the error cannot spread to other partitions. */
+ * After integration each partition's state is checked: a NaN or infinity marks the partition failed
+ * (MdtSimErrorState). A partition the solver already marked failed is not integrated at all. Failed
+ * partitions are then reported (ME_ERR_NONFINITE_STATE), passed to the world's sim-error callback,
+ * and their bodies put back to their pose at the start of the step, stopped and disabled, so that
+ * the error cannot spread to other partitions (simerror.c). */
 #include "../../me/check.h"
 #include "../world.h"
 #include "kea_integrate.h"
@@ -62,22 +65,14 @@ static void integrateBody(MdtBody *b, const MeReal *dv, const MeReal *dw, MeReal
     b->enabledTime += h;
 }
 
-static void stopAndDisable(MdtBody *b)
+void MdtIntegrateStage(MdtWorld *w)
 {
-    MeVector4Copy(b->q, b->stepStartQ);
-    MdtBodyUpdateTransforms(b, b->stepStartCom);
-    MeVector3Set(b->vel, 0, 0, 0);
-    MeVector3Set(b->velrot, 0, 0, 0);
-    MeVector3Set(b->accel, 0, 0, 0);
-    MeVector3Set(b->accelrot, 0, 0, 0);
-    MdtBodySetEnabledInternal(b, MEFALSE);
-}
-
-void MdtKeaIntegratePartitions(MdtWorld *w, const MeReal *deltaVelocities)
-{
-    const MdtPartitionOutput *out = &w->partitions;
+    MdtPartitionOutput *out = &w->partitions;
+    const MeReal *deltaVelocities = w->rowsPacked ? (const MeReal *)w->rows.dv : NULL;
     static const MeReal zero[3] = {0, 0, 0};
     for (int p = 0; p < out->partitionCount; p++) {
+        if (out->simError[p])
+            continue; /* the solver failed it: restored below, never integrated */
         int start = out->partitionStart[p], end = out->partitionStart[p + 1];
         MeBool finite = METRUE;
         for (int i = start; i < end; i++) {
@@ -87,13 +82,8 @@ void MdtKeaIntegratePartitions(MdtWorld *w, const MeReal *deltaVelocities)
             integrateBody(b, dv, dw, w->stepSize);
             finite &= stateIsFinite(b);
         }
-        if (finite)
-            continue;
-        ME_REPORT_IN("MdtWorldStep", ME_ERR_NONFINITE_STATE,
-                     "partition %d (%d bodies) produced a NaN or infinite state; its bodies were put back to "
-                     "their pose at the start of the step, stopped and disabled",
-                     p, end - start);
-        for (int i = start; i < end; i++)
-            stopAndDisable(out->bodies[i]);
+        if (!finite)
+            out->simError[p] = MdtSimErrorState;
     }
+    MdtSimErrorHandlePartitions(w);
 }

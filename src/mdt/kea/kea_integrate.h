@@ -8,8 +8,4 @@
  * constraints. Also records the start-of-step pose. For every body of the step's partitions. */
 void MdtKeaPredictVelocities(MdtWorld *w);
 
-/* Advance every body of the step's partitions: v = v* + Δv (Δv: 6 reals per body in step order,
- * linear then angular, or NULL for none), then positions and orientations; checks the result. */
-void MdtKeaIntegratePartitions(MdtWorld *w, const MeReal *deltaVelocities);
-
 #endif

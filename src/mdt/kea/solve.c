@@ -1,21 +1,37 @@
-/* solve.c -- MdtSolve: run Kea on each partition of the step and collect its statistics.
+/* solve.c -- MdtKeaAddConstraintForces (MdtSolveStage): run Kea on each partition of the step and
+ * collect its statistics.
  *
  * Each partition is an independent LCP over its slice of the step's rows. The world's KeaParameters
  * choose the path (exact up to maxDirectRows rows, iterative beyond, or forced), and the workspace
  * comes from the world's Kea chunk, sized once for the largest partition. The result per partition:
  * the row impulses (in place of the warm start) and each body's velocity change, which the
- * integrator adds to the predicted velocities. */
+ * integrator adds to the predicted velocities.
+ *
+ * Simulation check. A partition whose rows are not finite (the solver refuses them as bad input) or,
+ * with MdtWorldSetCheckSim on, whose impulses or velocity changes come out NaN or infinite, is marked
+ * failed (MdtSimErrorSolver): its velocity changes are zeroed and the integrator restores, stops and
+ * disables it instead of integrating it. Other partitions are not touched. */
 #include <string.h>
 
 #include "../../me/check.h"
 #include "../world.h"
 
-void MdtSolve(MdtWorld *w)
+static MeBool allFinite(const MeReal *v, size_t n)
+{
+    MeBool ok = METRUE;
+    for (size_t i = 0; i < n; i++)
+        ok &= ME_IS_FINITE(v[i]) ? METRUE : MEFALSE;
+    return ok;
+}
+
+void MdtSolveStage(MdtWorld *w)
 {
     const MdtPartitionOutput *out = &w->partitions;
     MdtStepRows *r = &w->rows;
     MdtSolverStats *stats = &w->solverStats;
     memset(stats, 0, sizeof *stats);
+    if (!w->rowsPacked)
+        return; /* pack could not lay out its rows: the integrator uses no velocity change */
     for (int i = 0; i < out->bodyCount; i++)
         memset(&r->dv[i], 0, sizeof r->dv[i]);
     if (r->count == 0)
@@ -74,11 +90,21 @@ void MdtSolve(MdtWorld *w)
             stats->unconverged++;
         if (ks.residual > stats->maxResidual)
             stats->maxResidual = ks.residual;
-        if (status == KeaStatusWorkspaceTooSmall || status == KeaStatusBadInput) {
-            ME_REPORT_IN("MdtWorldStep", status == KeaStatusBadInput ? ME_ERR_NONFINITE_STATE : ME_ERR_KEA_WORKSPACE,
-                         "the solver could not solve partition %d (%d rows, status %d); its constraints were "
-                         "ignored this step",
-                         p, rows, (int)status);
+        out->solverStatus[p] = (int)status;
+        MeBool failed = status == KeaStatusBadInput;
+        if (!failed && w->checkSim && status != KeaStatusWorkspaceTooSmall)
+            failed = !allFinite(r->x + row0, (size_t)rows) ||
+                     !allFinite((const MeReal *)(r->dv + body0), 6 * (size_t)bodies);
+        if (failed) {
+            /* Handled (reported, restored, disabled) by the integrator, before it would integrate. */
+            out->simError[p] = MdtSimErrorSolver;
+            memset(r->x + row0, 0, sizeof(MeReal) * (size_t)rows);
+            memset(r->dv + body0, 0, sizeof(KeaBodyVelocity) * (size_t)bodies);
+        } else if (status == KeaStatusWorkspaceTooSmall) {
+            ME_REPORT_IN("MdtWorldStep", ME_ERR_KEA_WORKSPACE,
+                         "the solver could not solve partition %d (%d rows): workspace too small; its constraints "
+                         "were ignored this step",
+                         p, rows);
             memset(r->x + row0, 0, sizeof(MeReal) * (size_t)rows);
             memset(r->dv + body0, 0, sizeof(KeaBodyVelocity) * (size_t)bodies);
         } else if (status != KeaStatusOk) {

@@ -1,0 +1,251 @@
+/* lod.c -- MdtLODPartitions (MdtLODStage): matrix capping, and the LOD settings (MdtLOD.h).
+ *
+ * For each partition with more rows than the world's cap, the contacts (of its contact groups and
+ * its stand-alone contacts) are listed with an importance (the callback's, or the weighted formula of
+ * MdtLOD.h) and sorted, least important first, ties by pool slot. Then:
+ *   phase 1  friction rows are dropped, contact by contact, until the partition fits (the most
+ *            important frictionRatio share of the friction contacts keeps its friction);
+ *   phase 2  whole contacts are dropped, except each group's most important one ("keeper").
+ * Joints are never touched. The result is a per-contact row limit stamped with this step's partition
+ * stamp (ContactData.lodRows), which the contact's row writer honours in the pack stage; the next step
+ * starts from full rows again. The list lives in the world's LOD chunk. */
+#include <stdlib.h>
+
+#include <karma/MdtContact.h>
+
+#include "../me/check.h"
+#include "bcl/contact_internal.h"
+#include "constraint.h"
+#include "world.h"
+
+typedef struct LODEntry {
+    MdtConstraint *contact;
+    const MdtConstraint *owner; /* the group, or the stand-alone contact itself */
+    MeReal importance;
+    int full;                   /* rows of its type */
+    int rows;                   /* rows it keeps */
+    MeBool keeper;              /* the owner's most important contact: never dropped */
+} LODEntry;
+
+static int compareEntries(const void *pa, const void *pb)
+{
+    const LODEntry *a = pa, *b = pb;
+    if (a->importance != b->importance)
+        return a->importance < b->importance ? -1 : 1;
+    return (a->contact->slot > b->contact->slot) - (a->contact->slot < b->contact->slot);
+}
+
+static int constraintRows(const MdtConstraint *c) { return c->cls->rowCount ? c->cls->rowCount(c) : c->cls->maxRows; }
+
+/* Speed at which the two bodies approach each other at the contact (0 when separating). */
+static MeReal approachSpeed(const MdtConstraint *owner, const ContactData *d)
+{
+    MeReal vn = 0;
+    for (int i = 0; i < 2; i++) {
+        const MdtBody *b = owner->body[i];
+        if (!b)
+            continue;
+        MeVector3 r, wxr;
+        MeVector3Set(r, d->position[0] - b->comTM[3][0], d->position[1] - b->comTM[3][1],
+                     d->position[2] - b->comTM[3][2]);
+        MeVector3Cross(wxr, b->velrot, r);
+        MeReal v = MeVector3Dot(d->normal, b->vel) + MeVector3Dot(d->normal, wxr);
+        vn += i == 0 ? -v : v;
+    }
+    return vn < 0 ? -vn : 0;
+}
+
+static MeReal formulaImportance(const MdtWorld *w, const MdtConstraint *owner, const ContactData *d, int ownerRows,
+                                int partitionRows)
+{
+    const MdtLODParams *p = &w->lod;
+    MeReal s = p->penetrationBias * d->penetration / w->lengthScale +
+               p->normVelBias * approachSpeed(owner, d) / w->lengthScale + d->importance;
+    if (!owner->body[1])
+        s += p->toWorldBonus;
+    MeBool woken = (owner->body[0] && owner->body[0]->enabledByPartitioner) ||
+                   (owner->body[1] && owner->body[1]->enabledByPartitioner);
+    if (!woken)
+        s += p->nonAutoBonus;
+    s -= p->rowCountBias * (MeReal)ownerRows / (MeReal)partitionRows;
+    return s;
+}
+
+/* Append the contacts of one constraint (a group's, or a stand-alone contact) to the list. */
+static int listContacts(MdtWorld *w, MdtConstraint *c, LODEntry *list, int n, int partitionRows)
+{
+    MdtConstraint *first = c->type == MdtBclCONTACTGROUP ? MdtContactGroupFirst(c) : c;
+    int ownerRows = constraintRows(c), start = n;
+    for (MdtConstraint *k = first; k; k = k == c ? NULL : MDT_CONSTRAINT_DATA(k, ContactData)->next) {
+        const ContactData *d = MDT_CONSTRAINT_DATA(k, const ContactData);
+        LODEntry *e = &list[n++];
+        e->contact = k;
+        e->owner = c;
+        e->full = e->rows = MdtContactRowCount(d);
+        e->keeper = MEFALSE;
+        e->importance = w->importanceCB ? w->importanceCB((MdtContactID)k->id, w->importanceData)
+                                        : formulaImportance(w, c, d, ownerRows, partitionRows);
+        if (!ME_IS_FINITE(e->importance))
+            e->importance = 0; /* a NaN would make the order depend on the sort */
+    }
+    /* The owner's most important contact (lowest slot among equals) is kept, with its bonus. */
+    int best = -1;
+    for (int i = start; i < n; i++)
+        if (best < 0 || compareEntries(&list[i], &list[best]) > 0)
+            best = i;
+    if (best >= 0) {
+        list[best].keeper = METRUE;
+        if (!w->importanceCB)
+            list[best].importance += w->lod.zeroRowBonus;
+    }
+    return n;
+}
+
+static int countContacts(const MdtConstraint *c)
+{
+    if (c->type == MdtBclCONTACT)
+        return 1;
+    int n = 0;
+    for (const MdtConstraint *k = MdtContactGroupFirst(c); k; k = MDT_CONSTRAINT_DATA(k, const ContactData)->next)
+        n++;
+    return n;
+}
+
+/* Cap partition p; returns the rows dropped. */
+static int capPartition(MdtWorld *w, int p, int rows)
+{
+    MdtPartitionOutput *out = &w->partitions;
+    int cStart = out->constraintStart[p], cEnd = out->constraintStart[p + 1], n = 0;
+    for (int i = cStart; i < cEnd; i++)
+        if (out->constraints[i]->type == MdtBclCONTACTGROUP || out->constraints[i]->type == MdtBclCONTACT)
+            n += countContacts(out->constraints[i]);
+    if (n == 0)
+        return 0;
+    LODEntry *list = MeChunkGetMem(&w->lodChunk, sizeof(LODEntry) * (size_t)n);
+    if (!list)
+        return 0; /* reported by the chunk: this partition is solved uncapped */
+    n = 0;
+    for (int i = cStart; i < cEnd; i++) {
+        MdtConstraint *c = out->constraints[i];
+        if (c->type == MdtBclCONTACTGROUP || c->type == MdtBclCONTACT)
+            n = listContacts(w, c, list, n, rows);
+    }
+    qsort(list, (size_t)n, sizeof *list, compareEntries);
+
+    const int cap = w->maxMatrixSize;
+    int excess = rows - cap;
+    /* Phase 1: friction, least important first; the top frictionRatio share keeps it. */
+    int frictionContacts = 0;
+    for (int i = 0; i < n; i++)
+        frictionContacts += list[i].full > 1;
+    int mayLose = frictionContacts - (int)(w->lod.frictionRatio * (MeReal)frictionContacts);
+    for (int i = 0; i < n && excess > 0 && mayLose > 0; i++) {
+        if (list[i].rows < 2)
+            continue;
+        excess -= list[i].rows - 1;
+        list[i].rows = 1;
+        mayLose--;
+    }
+    /* Phase 2: whole contacts, never a group's keeper. */
+    for (int i = 0; i < n && excess > 0; i++) {
+        if (list[i].keeper)
+            continue;
+        excess -= list[i].rows;
+        list[i].rows = 0;
+    }
+    int dropped = 0;
+    for (int i = 0; i < n; i++) {
+        if (list[i].rows == list[i].full)
+            continue;
+        ContactData *d = MDT_CONSTRAINT_DATA(list[i].contact, ContactData);
+        d->lodRows = list[i].rows;
+        d->lodStamp = w->partitionStamp;
+        dropped += list[i].full - list[i].rows;
+    }
+    MeChunkPutMem(&w->lodChunk, list);
+    return dropped;
+}
+
+void MdtLODStage(MdtWorld *w)
+{
+    if (w->maxMatrixSize == MDT_MATRIX_SIZE_UNCAPPED)
+        return;
+    MdtPartitionOutput *out = &w->partitions;
+    for (int p = 0; p < out->partitionCount; p++) {
+        int rows = 0;
+        for (int i = out->constraintStart[p]; i < out->constraintStart[p + 1]; i++)
+            rows += constraintRows(out->constraints[i]);
+        if (rows <= w->maxMatrixSize)
+            continue;
+        int dropped = capPartition(w, p, rows);
+        out->droppedRows[p] = dropped;
+        w->droppedRows += dropped;
+        w->cappedPartitions += dropped > 0;
+    }
+}
+
+/* ---- API ---------------------------------------------------------------------------------- */
+void MdtLODParamsSetDefaults(MdtLODParams *p)
+{
+    ME_CHECK_NOT_NULL(p, ME_NOTHING);
+    p->frictionRatio = 0;
+    p->zeroRowBonus = 150;
+    p->toWorldBonus = 100;
+    p->rowCountBias = 40;
+    p->penetrationBias = 15;
+    p->normVelBias = ME_R(6.5);
+    p->nonAutoBonus = 40;
+}
+
+void MdtWorldSetMaxMatrixSize(MdtWorldID id, int size)
+{
+    MdtWorld *w = MdtWorldFromID(id, __func__);
+    if (!w)
+        return;
+    if (size < 1) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'size' (%d) must be at least 1 (MDT_MATRIX_SIZE_UNCAPPED: no cap)",
+                  size);
+        return;
+    }
+    w->maxMatrixSize = size;
+}
+
+int MdtWorldGetMaxMatrixSize(MdtWorldID id)
+{
+    MdtWorld *w = MdtWorldFromID(id, __func__);
+    return w ? w->maxMatrixSize : MDT_MATRIX_SIZE_UNCAPPED;
+}
+
+void MdtWorldGetLODParams(MdtWorldID id, MdtLODParams *params)
+{
+    MdtWorld *w = MdtWorldFromID(id, __func__);
+    if (!w)
+        return;
+    ME_CHECK_NOT_NULL(params, ME_NOTHING);
+    *params = w->lod;
+}
+
+void MdtWorldSetLODParams(MdtWorldID id, const MdtLODParams *p)
+{
+    MdtWorld *w = MdtWorldFromID(id, __func__);
+    if (!w)
+        return;
+    ME_CHECK_NOT_NULL(p, ME_NOTHING);
+    ME_CHECK_FINITE(p->frictionRatio, ME_NOTHING);
+    ME_CHECK_FINITE3(p->zeroRowBonus, p->toWorldBonus, p->rowCountBias, ME_NOTHING);
+    ME_CHECK_FINITE3(p->penetrationBias, p->normVelBias, p->nonAutoBonus, ME_NOTHING);
+    if (!(p->frictionRatio >= 0 && p->frictionRatio <= 1)) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "frictionRatio (%g) must lie in [0, 1]; call ignored", (double)p->frictionRatio);
+        return;
+    }
+    w->lod = *p;
+}
+
+void MdtWorldSetContactImportanceCB(MdtWorldID id, MdtContactImportanceCBPtr cb, void *userData)
+{
+    MdtWorld *w = MdtWorldFromID(id, __func__);
+    if (!w)
+        return;
+    w->importanceCB = cb;
+    w->importanceData = userData;
+}

@@ -1,0 +1,252 @@
+/* The public stages of the step (MdtMainLoop.h): an application-written step from the stages gives a
+ * bit-identical simulation to MdtWorldStep; stages out of order are refused; partitions can be
+ * inspected between stages; a body's contacts can be iterated (D9). */
+#include "karma_test.h"
+#include "karma_contacts.h"
+
+#include <string.h>
+
+#include <karma/Mdt.h>
+
+enum { LINKS = 5, COLUMN = 3 };
+
+typedef struct Scene {
+    MdtWorldID world;
+    MdtBodyID link[LINKS], box[COLUMN], lone, sleeper, thrown;
+    MdtContactGroupID group[COLUMN], sleeperGround;
+    MdtBSJointID joint[LINKS];
+    MdtContactParams params;
+} Scene;
+
+static const MeVector3 half = {0.5f, 0.5f, 0.5f}, up = {0, 0, 1};
+
+static MdtBodyID boxAt(MdtWorldID w, MeReal x, MeReal y, MeReal z)
+{
+    MdtBodyID b = MdtBodyCreate(w);
+    MeMatrix3 I;
+    MdtMakeInertiaTensorBox(1, 1, 1, 1, I);
+    MdtBodySetInertiaTensor(b, I);
+    MdtBodySetPosition(b, x, y, z);
+    MdtBodyEnable(b);
+    return b;
+}
+
+/* A swinging chain, a column of boxes, a box that goes to sleep, a free body thrown upwards. */
+static void build(Scene *s)
+{
+    s->world = MdtWorldCreate(32, 64, 1, 1);
+    MdtWorldSetGravity(s->world, 0, 0, -9.81f);
+    karma_contact_params_friction(&s->params, 0.6f);
+    for (int i = 0; i < LINKS; i++) {
+        s->link[i] = MdtBodyCreate(s->world);
+        MdtBodySetPosition(s->link[i], (MeReal)(i + 1), 0, 10);
+        MdtBodyEnable(s->link[i]);
+        s->joint[i] = MdtBSJointCreate(s->world);
+        MdtBSJointSetBodies(s->joint[i], s->link[i], i ? s->link[i - 1] : NULL);
+        MdtBSJointSetPosition(s->joint[i], (MeReal)i, 0, 10);
+        MdtBSJointEnable(s->joint[i]);
+    }
+    for (int i = 0; i < COLUMN; i++) {
+        s->box[i] = boxAt(s->world, 5, 0, 0.5f + (MeReal)i);
+        s->group[i] = MdtContactGroupCreate(s->world);
+        MdtContactGroupSetBodies(s->group[i], s->box[i], i ? s->box[i - 1] : NULL);
+        MdtContactGroupEnable(s->group[i]);
+    }
+    s->sleeper = boxAt(s->world, -5, 0, 0.5f);
+    s->sleeperGround = MdtContactGroupCreate(s->world);
+    MdtContactGroupSetBodies(s->sleeperGround, s->sleeper, NULL);
+    MdtContactGroupEnable(s->sleeperGround);
+    s->thrown = boxAt(s->world, 10, 0, 1);
+    MdtBodySetLinearVelocity(s->thrown, 1, 0, 5);
+    MdtBodySetAngularVelocity(s->thrown, 0.3f, 2, 0);
+}
+
+static void refreshContacts(Scene *s)
+{
+    for (int i = 0; i < COLUMN; i++) {
+        if (i == 0)
+            karma_box_on_plane(s->group[0], s->box[0], half, up, 0, &s->params);
+        else
+            karma_box_on_box(s->group[i], s->box[i], s->box[i - 1], half, &s->params);
+    }
+    karma_box_on_plane(s->sleeperGround, s->sleeper, half, up, 0, &s->params);
+}
+
+/* The step written by an application from the public stages, optional ones included. */
+static void stagedStep(MdtWorldID w, MeReal h)
+{
+    MdtWorldStepBegin(w, h);
+    MdtUpdatePartitions(w);
+    MdtAutoDisablePartitions(w);
+    MdtLODPartitions(w);
+    MdtPackAllPartitions(w);
+    MdtKeaAddConstraintForces(w);
+    MdtKeaIntegrateSystem(w);
+    MdtUnpackForces(w);
+    MdtWorldStepEnd(w);
+}
+
+static uint64_t hashScene(const Scene *s)
+{
+    uint64_t h = KARMA_HASH_INIT;
+    for (MdtBodyID b = MdtBodyGetFirst(s->world); b; b = MdtBodyGetNext(b)) {
+        MeVector3 v;
+        MeVector4 q;
+        MeMatrix4Ptr tm = MdtBodyGetTransformPtr(b);
+        h = karma_hash_bytes(h, tm, sizeof(MeMatrix4));
+        MdtBodyGetQuaternion(b, q);
+        h = karma_hash_bytes(h, q, sizeof q);
+        MdtBodyGetLinearVelocity(b, v);
+        h = karma_hash_bytes(h, v, sizeof v);
+        MdtBodyGetAngularVelocity(b, v);
+        h = karma_hash_bytes(h, v, sizeof v);
+        MeBool e = MdtBodyIsEnabled(b);
+        h = karma_hash_bytes(h, &e, sizeof e);
+    }
+    for (int i = 0; i < LINKS; i++) {
+        MeVector3 f;
+        MdtConstraintGetForce(MdtBSJointQuaConstraint(s->joint[i]), 0, f);
+        h = karma_hash_bytes(h, f, sizeof f);
+    }
+    return h;
+}
+
+static void stages_match_world_step_bit_for_bit(void **state)
+{
+    (void)state;
+    Scene a, b;
+    build(&a);
+    build(&b);
+    const MeReal h = ME_R(1.0) / 60;
+    int sameEvery = 1;
+    for (int step = 0; step < 240; step++) {
+        refreshContacts(&a);
+        refreshContacts(&b);
+        MdtWorldStep(a.world, h);
+        stagedStep(b.world, h);
+        sameEvery &= hashScene(&a) == hashScene(&b);
+    }
+    MdtWorldCounters ca, cb;
+    MdtWorldGetCounters(a.world, &ca);
+    MdtWorldGetCounters(b.world, &cb);
+    MeVector3 pa, pb;
+    MdtBodyGetPosition(a.link[LINKS - 1], pa);
+    MdtBodyGetPosition(b.link[LINKS - 1], pb);
+    print_message("staged vs MdtWorldStep: 240 steps, states %s; chain end at (%.4f, %.4f, %.4f); sleeper %s; "
+                  "%d partitions, %d rows in the last step\n",
+                  sameEvery ? "bit-identical" : "DIFFER", pa[0], pa[1], pa[2],
+                  MdtBodyIsEnabled(b.sleeper) ? "awake" : "asleep", cb.partitions, cb.rows);
+    assert_true(sameEvery);
+    assert_memory_equal(pa, pb, sizeof pa);
+    assert_int_equal(ca.steps, 240);
+    assert_int_equal(cb.steps, 240);
+    assert_int_equal(ca.rows, cb.rows);
+    /* The scene did something: the chain swung down, the sleeper slept, the column stood. */
+    assert_true(pa[2] < 9);
+    assert_false(MdtBodyIsEnabled(b.sleeper));
+    MdtBodyGetPosition(b.box[COLUMN - 1], pb);
+    assert_near(pb[0], 5, 1e-3);
+    /* Each stage was timed once per step, in the same sections as MdtWorldStep's. */
+    const char *sections[] = {"Dynamics", "Partition", "AutoDisable", "LOD", "Pack", "Solve", "Integrate", "Unpack"};
+    for (unsigned i = 0; i < sizeof sections / sizeof sections[0]; i++)
+        assert_int_equal(MeProfileGetSection(MdtWorldGetProfile(b.world), sections[i])->calls, 240);
+    MdtWorldDestroy(a.world);
+    MdtWorldDestroy(b.world);
+}
+
+static void stages_out_of_order_are_refused(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    Scene s;
+    build(&s);
+    refreshContacts(&s);
+    const MeReal h = ME_R(1.0) / 60;
+    assert_reports(ME_ERR_BAD_STATE, MdtPackAllPartitions(s.world)); /* no step begun */
+    assert_reports(ME_ERR_BAD_STATE, MdtWorldStepEnd(s.world));
+    assert_reports(ME_ERR_STEP_SIZE, MdtWorldStepBegin(s.world, -h));
+    MdtWorldStepBegin(s.world, h);
+    assert_reports(ME_ERR_WORLD_LOCKED, MdtWorldStepBegin(s.world, h));
+    assert_reports(ME_ERR_WORLD_LOCKED, MdtWorldStep(s.world, h));
+    assert_reports(ME_ERR_WORLD_LOCKED, MdtBodyCreate(s.world));
+    assert_reports(ME_ERR_BAD_STATE, MdtPackAllPartitions(s.world)); /* before the partitions */
+    MdtUpdatePartitions(s.world);
+    assert_reports(ME_ERR_BAD_STATE, MdtUpdatePartitions(s.world)); /* twice */
+    /* Inspect the partitions: chain, column, sleeper, thrown body, in (sort key, slot) order. */
+    assert_int_equal(MdtWorldGetPartitionCount(s.world), 4);
+    MdtPartitionInfo info;
+    MdtWorldGetPartitionInfo(s.world, 0, &info);
+    assert_int_equal(info.bodies, LINKS);
+    assert_int_equal(info.constraints, LINKS);
+    assert_int_equal(info.rows, 0); /* not packed yet */
+    assert_ptr_equal(MdtWorldGetPartitionBody(s.world, 0, 0), s.link[0]);
+    assert_reports(ME_ERR_ARGUMENT_RANGE, MdtWorldGetPartitionInfo(s.world, 4, &info));
+    assert_reports(ME_ERR_ARGUMENT_RANGE, MdtWorldGetPartitionBody(s.world, 0, LINKS));
+    /* The optional stages may be skipped. */
+    MdtPackAllPartitions(s.world);
+    assert_reports(ME_ERR_BAD_STATE, MdtLODPartitions(s.world)); /* too late */
+    MdtWorldGetPartitionInfo(s.world, 0, &info);
+    assert_int_equal(info.rows, 3 * LINKS);
+    MdtWorldGetPartitionInfo(s.world, 1, &info);
+    assert_int_equal(info.bodies, COLUMN);
+    assert_int_equal(info.rows, COLUMN * 4 * 3);
+    assert_reports(ME_ERR_BAD_STATE, MdtKeaIntegrateSystem(s.world)); /* solve first */
+    MdtKeaAddConstraintForces(s.world);
+    MdtKeaIntegrateSystem(s.world);
+    assert_reports(ME_ERR_BAD_STATE, MdtWorldStepEnd(s.world)); /* unpack first */
+    MdtUnpackForces(s.world);
+    MdtWorldStepEnd(s.world);
+    MdtWorldCounters c;
+    MdtWorldGetCounters(s.world, &c);
+    assert_int_equal(c.steps, 1);
+    assert_non_null(MdtBodyCreate(s.world)); /* unlocked again */
+    MdtWorldDestroy(s.world);
+}
+
+static int countContacts(MdtBodyID b)
+{
+    int n = 0;
+    for (MdtContactID c = MdtBodyGetFirstContact(b); c; c = MdtBodyGetNextContact(b, c)) {
+        MdtContactGroupID g = MdtContactGetContactGroup(c);
+        MdtBodyID b0 = g ? MdtContactGroupGetBody(g, 0) : MdtContactGetBody(c, 0);
+        MdtBodyID b1 = g ? MdtContactGroupGetBody(g, 1) : MdtContactGetBody(c, 1);
+        assert_true(b0 == b || b1 == b);
+        n++;
+    }
+    return n;
+}
+
+static void body_contact_iteration(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    Scene s;
+    build(&s);
+    refreshContacts(&s);
+    /* box[1]: 4 contacts below (its group), 4 above (box[2]'s group); add a stand-alone contact and an
+     * empty group; the joints of the chain are not contacts. */
+    MdtContactID alone = MdtContactCreate(s.world);
+    MdtContactSetBodies(alone, s.box[1], s.lone = boxAt(s.world, 6, 0, 1.5f));
+    MdtContactGroupID empty = MdtContactGroupCreate(s.world);
+    MdtContactGroupSetBodies(empty, s.box[1], s.lone);
+    assert_int_equal(countContacts(s.box[1]), 9);
+    assert_int_equal(countContacts(s.box[0]), 8);
+    assert_int_equal(countContacts(s.lone), 1);
+    assert_int_equal(countContacts(s.link[0]), 0);
+    assert_null(MdtBodyGetFirstContact(s.thrown));
+    /* A contact of another body is refused. */
+    MdtContactID other = MdtContactGroupGetFirstContact(s.sleeperGround);
+    assert_reports(ME_ERR_BAD_STATE, MdtBodyGetNextContact(s.box[1], other));
+    MdtWorldDestroy(s.world);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(stages_match_world_step_bit_for_bit),
+        cmocka_unit_test(stages_out_of_order_are_refused),
+        cmocka_unit_test(body_contact_iteration),
+    };
+    MeSetMessageLevel(ME_LEVEL_WARNING);
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
