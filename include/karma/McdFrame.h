@@ -78,6 +78,16 @@ ME_API int McdFrameworkGetGeometryTypeCount(McdFrameworkID fw);
 /** Name of a type number, or NULL when unknown. */
 ME_API const char *McdFrameworkGetGeometryTypeName(McdFrameworkID fw, int type);
 
+/** A pair test written by the application (for user types): contacts between g1 at tm1 and g2 at
+ *  tm2 (world), normals from g1 to g2, separation < 0 when overlapping, only contacts with
+ *  separation <= tolerance; at most maxContacts written; returns the count. `data` as in the
+ *  geometry protocol (the user's pointer for user types, the shape data for built-in ones). */
+typedef int (*McdUserIntersectFn)(McdGeometryID g1, void *data1, MeMatrix4 tm1, McdGeometryID g2, void *data2,
+                                  MeMatrix4 tm2, MeReal tolerance, McdContact *contacts, int maxContacts);
+/** Register `fn` as the pair test of (type1, type2), taking its models in that order (McdHello
+ *  handles pairs the other way round); NULL removes it. METRUE when both types are registered. */
+ME_API MeBool McdFrameworkSetUserInteraction(McdFrameworkID fw, int type1, int type2, McdUserIntersectFn fn);
+
 /** Karma's registration calls. The built-in types are always registered (these return METRUE);
  *  McdPrimitivesRegisterInteractions adds the pair tests of every pair of primitives. */
 ME_API MeBool McdPrimitivesRegisterTypes(McdFrameworkID fw);

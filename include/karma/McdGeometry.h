@@ -29,7 +29,7 @@ ME_API void McdGeometryGetAABB(McdGeometryID g, MeMatrix4 tm, MeVector3 minCorne
 /** A bounding sphere in the local frame (centre, radius); MEINFINITY for unbounded geometries. */
 ME_API void McdGeometryGetBSphere(McdGeometryID g, MeVector3 centre, MeReal *radius);
 /** Support point: a point of the geometry placed at `tm` (NULL: identity) farthest along the world
- *  direction `dir`. Unbounded geometries clamp to +-MEINFINITY in their unbounded directions. */
+ *  direction `dir`. A plane's support goes 1e15 far (finite) in its unbounded directions. */
 ME_API void McdGeometryMaximumPoint(McdGeometryID g, MeMatrix4 tm, const MeVector3 dir, MeVector3 point);
 /** Unit-density mass properties: `relTM` (may be NULL) receives the centre-of-mass frame in the
  *  local frame (identity for the primitives: their origin is their centre of mass), `inertia` the

@@ -138,16 +138,26 @@ MeReal McdFrameworkGetLengthScale(McdFrameworkID id)
     return fw->lengthScale;
 }
 
+MeBool McdCheckTolerance(MeReal tolerance, const char *function)
+{
+    if (!ME_IS_FINITE(tolerance)) {
+        ME_REPORT_IN(function, ME_ERR_NONFINITE_ARGUMENT, "argument 'tolerance' is %g (not finite); call ignored",
+                     (double)tolerance);
+        return MEFALSE;
+    }
+    if (tolerance < 0) {
+        ME_REPORT_IN(function, ME_ERR_NEGATIVE_VALUE, "argument 'tolerance' is %g; it must be >= 0; call ignored",
+                     (double)tolerance);
+        return MEFALSE;
+    }
+    return METRUE;
+}
+
 void McdFrameworkSetDefaultContactTolerance(McdFrameworkID id, MeReal tolerance)
 {
     FW_OR_RETURN(fw, id, ME_NOTHING);
-    ME_CHECK_FINITE(tolerance, ME_NOTHING);
-    if (tolerance < 0) {
-        ME_REPORT(ME_ERR_NEGATIVE_VALUE, "argument 'tolerance' is %g; it must be >= 0; call ignored",
-                  (double)tolerance);
-        return;
-    }
-    fw->defaultContactTolerance = tolerance;
+    if (McdCheckTolerance(tolerance, __func__))
+        fw->defaultContactTolerance = tolerance;
 }
 
 MeReal McdFrameworkGetDefaultContactTolerance(McdFrameworkID id)
@@ -246,12 +256,33 @@ MeBool McdFrameworkSetInteractionWithCache(McdFramework *fw, int type1, int type
     McdInteraction *e = &fw->interactions[type1 * fw->typeCapacity + type2];
     e->fn = fn;
     e->releaseCache = fn ? releaseCache : NULL;
+    e->userFn = NULL;
     return METRUE;
 }
 
 MeBool McdFrameworkSetInteraction(McdFramework *fw, int type1, int type2, McdNearfieldFn fn)
 {
     return McdFrameworkSetInteractionWithCache(fw, type1, type2, fn, NULL);
+}
+
+/* Calls an application's pair test: the entry is found from the two types, in the table's order. */
+static int userTrampoline(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+                          MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
+{
+    (void)cache;
+    const McdFramework *fw = g1->framework;
+    McdUserIntersectFn fn = fw->interactions[g1->type * fw->typeCapacity + g2->type].userFn;
+    return fn(McdGeometryToID(g1), McdGeometryData(g1), tm1, McdGeometryToID(g2), McdGeometryData(g2), tm2,
+              tolerance, contacts, maxContacts);
+}
+
+MeBool McdFrameworkSetUserInteraction(McdFrameworkID id, int type1, int type2, McdUserIntersectFn fn)
+{
+    FW_OR_RETURN(fw, id, MEFALSE);
+    if (!McdFrameworkSetInteraction(fw, type1, type2, fn ? userTrampoline : NULL))
+        return MEFALSE;
+    fw->interactions[type1 * fw->typeCapacity + type2].userFn = fn;
+    return METRUE;
 }
 
 McdNearfieldFn McdFrameworkGetInteraction(const McdFramework *fw, int type1, int type2)

@@ -29,6 +29,7 @@ typedef struct McdTermAction {
 typedef struct McdInteraction {
     McdNearfieldFn fn;                 /* NULL: none registered this way round */
     void (*releaseCache)(void *cache); /* frees McdModelPair.cache at goodbye (optional) */
+    McdUserIntersectFn userFn;         /* an application's test, called through `fn` */
 } McdInteraction;
 
 typedef struct McdFramework {
@@ -57,6 +58,9 @@ McdModel *McdModelFromID(McdModelID id, const char *function);
 static inline McdGeometryID McdGeometryToID(const McdGeometry *g) { return (McdGeometryID)g->id; }
 static inline McdModelID McdModelToID(const McdModel *m) { return (McdModelID)m->id; }
 static inline McdFrameworkID McdFrameworkToID(const McdFramework *fw) { return (McdFrameworkID)fw->id; }
+
+/** A contact tolerance must be finite and >= 0; reports in `function`'s name. */
+MeBool McdCheckTolerance(MeReal tolerance, const char *function);
 
 /* ---- the interaction table ------------------------------------------------------------------ */
 /** Register `fn` as the test of (type1, type2) in that order (replacing any); NULL removes it.

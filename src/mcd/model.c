@@ -207,13 +207,8 @@ void McdModelGetWorldTransform(McdModelID id, MeMatrix4 tm)
 void McdModelSetContactTolerance(McdModelID id, MeReal tolerance)
 {
     MODEL_OR_RETURN(m, id, ME_NOTHING);
-    ME_CHECK_FINITE(tolerance, ME_NOTHING);
-    if (tolerance < 0) {
-        ME_REPORT(ME_ERR_NEGATIVE_VALUE, "argument 'tolerance' is %g; it must be >= 0; call ignored",
-                  (double)tolerance);
-        return;
-    }
-    m->contactTolerance = tolerance;
+    if (McdCheckTolerance(tolerance, __func__))
+        m->contactTolerance = tolerance;
 }
 
 MeReal McdModelGetContactTolerance(McdModelID id)

@@ -88,8 +88,13 @@ void McdHelloInternal(McdModelPair *pair, McdModel *m1, McdModel *m2, const char
 void McdHello(McdModelPairID pair)
 {
     McdModel *m1, *m2;
-    if (pairModels(pair, &m1, &m2, __func__))
-        McdHelloInternal(pair, m1, m2, __func__);
+    if (!pairModels(pair, &m1, &m2, __func__))
+        return;
+    if (m1->framework != m2->framework) {
+        ME_REPORT(ME_ERR_FOREIGN_HANDLE, "the pair's models belong to different frameworks; call ignored");
+        return;
+    }
+    McdHelloInternal(pair, m1, m2, __func__);
 }
 
 void McdGoodbyeInternal(McdModelPair *pair, McdModel *m1)
@@ -152,6 +157,8 @@ int McdIntersect(McdModelPairID pair, McdIntersectResult *result)
     if (maxCount <= 0)
         return 0;
     McdNearfieldFn fn = fw->interactions[pair->testIndex].fn;
+    if (!fn) /* unregistered since McdHello */
+        return 0;
     MeReal tolerance = m1->contactTolerance + m2->contactTolerance;
     McdContact *c = result->contacts;
     int n = pair->swapped ? fn(m2->geometry, m2->worldTransform, m1->geometry, m1->worldTransform, tolerance, c,

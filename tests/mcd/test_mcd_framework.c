@@ -33,6 +33,35 @@ static void fakeRelease(void *cache)
     releases++;
 }
 
+/* Term actions run newest first, while the framework's objects are still alive. */
+static int termOrder[20], termCount;
+static McdModelID termModel;
+static void termAction(McdFrameworkID fw, void *data)
+{
+    assert_true(McdFrameworkIsValid(fw));
+    assert_true(McdModelIsValid(termModel));
+    termOrder[termCount++] = *(int *)data;
+}
+
+static void term_actions(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    McdFrameworkID fw = McdInit(0, 2, 0, 1);
+    termModel = McdModelCreate(McdSphereCreate(fw, 1));
+    static int tags[17];
+    for (int i = 0; i < 16; i++) {
+        tags[i] = i;
+        assert_true(McdFrameworkRegisterTermAction(fw, termAction, &tags[i]));
+    }
+    assert_reports(ME_ERR_POOL_FULL, assert_false(McdFrameworkRegisterTermAction(fw, termAction, &tags[16])));
+    termCount = 0;
+    McdTerm(fw);
+    assert_int_equal(termCount, 16);
+    for (int i = 0; i < 16; i++)
+        assert_int_equal(termOrder[i], 15 - i);
+}
+
 static void init_defaults_and_term(void **state)
 {
     (void)state;
@@ -104,6 +133,25 @@ static void cubeMass(McdGeometryID g, void *data, MeMatrix4 rel, MeMatrix3 I, Me
     I[0][0] = I[1][1] = I[2][2] = *v * side * side / 6;
 }
 
+/* The application's cube-sphere test: closest point of the cube to the sphere's centre. */
+static int cubeSphere(McdGeometryID g1, void *data1, MeMatrix4 tm1, McdGeometryID g2, void *data2, MeMatrix4 tm2,
+                      MeReal tolerance, McdContact *contacts, int maxContacts)
+{
+    (void)g1, (void)maxContacts;
+    assert_int_equal(McdGeometryGetTypeId(g2), kMcdGeometryTypeSphere);
+    MeReal h = *(MeReal *)data1, r = ((MeReal *)data2)[0]; /* built-in data: McdSphereData (radius) */
+    MeVector3 c, q, w;
+    MeMatrix4TMInverseTransform(c, tm1, tm2[3]);
+    for (int i = 0; i < 3; i++)
+        q[i] = c[i] < -h ? -h : c[i] > h ? h : c[i];
+    MeMatrix4TMTransform(w, tm1, q);
+    MeVector3Subtract(contacts[0].normal, tm2[3], w);
+    MeReal d = MeVector3Normalize(contacts[0].normal);
+    contacts[0].separation = d - r;
+    MeVector3Copy(contacts[0].position, w);
+    return contacts[0].separation <= tolerance;
+}
+
 static void user_geometry_type(void **state)
 {
     (void)state;
@@ -153,6 +201,25 @@ static void user_geometry_type(void **state)
     McdLineSegIntersectResult r;
     MeVector3 a = {-5, 2, 3}, b = {5, 2, 3};
     assert_int_equal(McdLineSegIntersect(m, a, b, &r), 0);
+    /* A pair test of the application's: registered (Cube, Sphere), used for (Sphere, Cube) too. */
+    assert_true(McdFrameworkSetUserInteraction(fw, type, kMcdGeometryTypeSphere, cubeSphere));
+    assert_reports(ME_ERR_ARGUMENT_RANGE, assert_false(McdFrameworkSetUserInteraction(fw, type, type + 1, cubeSphere)));
+    McdModelID ball = McdModelCreate(McdSphereCreate(fw, ME_R(0.25)));
+    MeMatrix4TMSetPosition(McdModelGetTransformPtr(ball), 1, 2, ME_R(3.6)); /* 0.1 above the cube, overlapping 0.15 */
+    McdModelUpdate(ball);
+    McdModelPairID pair = McdModelPairCreate(ball, m);
+    McdHello(pair);
+    assert_int_equal(pair->swapped, 1);
+    McdContact contact;
+    McdIntersectResult result = {0};
+    result.contacts = &contact;
+    result.contactMaxCount = 1;
+    assert_true(McdIntersect(pair, &result));
+    assert_near(contact.separation, -0.15, 1e-5);
+    assert_near(result.normal[2], -1, 1e-6); /* model 1 (ball) -> model 2 (cube): down */
+    McdGoodbye(pair);
+    McdModelPairDestroy(pair);
+    McdModelDestroy(ball);
     /* Refcount: refused while used, then destroyed through the user's destroy. */
     assert_reports(ME_ERR_MCD_IN_USE, McdGeometryDestroy(g));
     assert_true(McdGeometryIsValid(g));
@@ -267,6 +334,13 @@ static void unregistered_pair_warned_once(void **state)
     McdModelPairReset(&pair, n, a);
     McdHello(&pair); /* null geometries touch nothing, silently */
     assert_int_equal(MeMessageGetCount(ME_ERR_MCD_NO_INTERACTION) - before, 1);
+    /* Models of two frameworks never make a pair. */
+    McdFrameworkID other = McdInit(0, 2, 0, 1);
+    McdModelID foreign = placedModel(McdSphereCreate(other, 1), 0, 0, 0);
+    assert_reports(ME_ERR_FOREIGN_HANDLE, assert_null(McdModelPairCreate(a, foreign)));
+    McdModelPairReset(&pair, a, foreign);
+    assert_reports(ME_ERR_FOREIGN_HANDLE, McdHello(&pair));
+    McdTerm(other);
     printf("missing pair tests reported %lu times for 2 type pairs, 5 hellos\n",
            MeMessageGetCount(ME_ERR_MCD_NO_INTERACTION));
     McdTerm(fw);
@@ -309,6 +383,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(init_defaults_and_term),
+        cmocka_unit_test(term_actions),
         cmocka_unit_test(user_geometry_type),
         cmocka_unit_test(interaction_table_one_way_and_swap),
         cmocka_unit_test(unregistered_pair_warned_once),
