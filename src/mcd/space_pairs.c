@@ -7,7 +7,6 @@
  * unfreezing). Any record whose state may have changed is put on the touched list; the report walks
  * the touched list (new pairs) and the live list (pairs reported last time), so its cost is the
  * number of live pairs plus the changes, and it never depends on addresses. */
-#include <stdlib.h>
 #include <string.h>
 
 #include <karma/MeMemory.h>
