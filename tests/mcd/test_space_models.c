@@ -434,6 +434,8 @@ static void misuse_and_full_pools(void **state)
     McdSpaceInsertModel(small, e);
     McdSpaceUpdateAll(small); /* other-d overlap: the one record */
     assert_reports(ME_ERR_POOL_FULL, McdSpaceDisablePair(d, e));
+    assert_int_equal(McdSpaceGetLostPairCount(small), 0); /* a refused disable loses no overlap */
+    assert_true(McdSpacePairIsEnabled(d, e));
     assert_reports(ME_ERR_FOREIGN_HANDLE, McdSpaceDisablePair(a, d)); /* different spaces */
     McdSpaceDestroy(small);
     McdSpaceDestroy(space);
