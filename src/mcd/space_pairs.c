@@ -7,7 +7,6 @@
  * unfreezing). Any record whose state may have changed is put on the touched list; the report walks
  * the touched list (new pairs) and the live list (pairs reported last time), so its cost is the
  * number of live pairs plus the changes, and it never depends on addresses. */
-#include <stdlib.h>
 #include <string.h>
 
 #include <karma/MeMemory.h>
@@ -245,15 +244,9 @@ MeBool McdSpacePairSetDisabled(McdSpace *s, int a, int b, MeBool disabled)
     int p = McdSpacePairFind(s, a, b);
     if (disabled) {
         if (p < 0) {
-            int lost = s->lostNow, total = s->lostTotal;
-            MeBool pending = s->lostPending;
-            p = create(s, a, b);
-            if (p < 0) { /* not an overlap lost: undo the counting done by create() */
-                s->lostNow = lost;
-                s->lostTotal = total;
-                s->lostPending = pending;
+            if (s->freePairCount == 0) /* no overlap is lost: the caller reports the refusal */
                 return MEFALSE;
-            }
+            p = create(s, a, b);
             if (McdSpaceObjectsOverlap(s, a, b) && (s->obj[a].flags & s->obj[b].flags & MCD_OBJ_INLISTS))
                 s->pairs[p].flags |= MCD_PAIR_OVERLAP;
         }

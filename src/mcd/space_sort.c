@@ -9,7 +9,6 @@
  * the pair is recorded if the boxes overlap on every axis; when an end passes a start, the boxes are
  * apart, and the pair is dropped if their boxes of the last sort overlapped (else there is no record).
  * After the passes the records are exactly the overlaps, with few hash look-ups. */
-#include <stdlib.h>
 #include <string.h>
 
 #include <karma/MeMemory.h>
@@ -22,10 +21,24 @@ static MeBool epLess(const McdSpaceEndpoint *x, const McdSpaceEndpoint *y)
     return x->value < y->value || (x->value == y->value && x->tag < y->tag);
 }
 
-static int epCompare(const void *p, const void *q)
+/* Bottom-up merge sort of n end points, tmp holding n more (no allocation: qsort may allocate). */
+static void sortEndpoints(McdSpaceEndpoint *list, int n, McdSpaceEndpoint *tmp)
 {
-    const McdSpaceEndpoint *x = p, *y = q;
-    return epLess(x, y) ? -1 : epLess(y, x) ? 1 : 0;
+    McdSpaceEndpoint *src = list, *dst = tmp;
+    for (int width = 1; width < n; width *= 2) {
+        for (int lo = 0; lo < n; lo += 2 * width) {
+            int mid = lo + width < n ? lo + width : n;
+            int hi = lo + 2 * width < n ? lo + 2 * width : n;
+            int i = lo, j = mid, w = lo;
+            while (i < mid || j < hi)
+                dst[w++] = (j >= hi || (i < mid && !epLess(&src[j], &src[i]))) ? src[i++] : src[j++];
+        }
+        McdSpaceEndpoint *t = src;
+        src = dst;
+        dst = t;
+    }
+    if (src != list)
+        memcpy(list, src, (size_t)n * sizeof *list);
 }
 
 MeBool McdSpaceEngineInit(McdSpace *s, int axes, int maxObjects, int maxPairs)
@@ -305,9 +318,10 @@ static void mergePending(McdSpace *s)
             fresh[2 * j + 1].value = s->box[6 * slot + k + 3];
             fresh[2 * j + 1].tag = MCD_EP_MAX | (MeU32)slot;
         }
-        qsort(fresh, (size_t)k2, sizeof *fresh, epCompare);
-        /* Merge from the back into ep[i] (which has room for every object). */
+        /* ep[i] has room for every object: its free tail is the sort's scratch, then the merge's
+         * destination (merging from the back). */
         McdSpaceEndpoint *ep = s->ep[i];
+        sortEndpoints(fresh, k2, ep + s->epCount);
         int a = s->epCount - 1, b = k2 - 1, w = s->epCount + k2 - 1;
         while (b >= 0) {
             if (a >= 0 && epLess(&fresh[b], &ep[a]))
