@@ -6,6 +6,7 @@
 #   make install   install it (PREFIX=/usr/local by default)
 #   make deps      install missing Debian packages (as root), or print the apt-get line
 #   make clean     remove build/
+#   make bench-scenes  the scene benchmarks against ODE and Bullet (bench/run.sh → bench/RESULTS.md)
 #
 # Benchmarks (make bench) arrive with bench/.
 
@@ -14,7 +15,7 @@ PREFIX  ?= /usr/local
 JOBS    ?= 2
 DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config
 
-.PHONY: all deps build test demo install clean
+.PHONY: all deps build test demo install clean bench-scenes
 
 all: build
 
@@ -55,3 +56,9 @@ install: build
 
 clean:
 	rm -rf build
+
+# Scene benchmarks (issue 5): builds build/bench, runs Karma (when bench/karma/karma_scenes.c exists),
+# ODE and Bullet on every scene and writes bench/RESULTS.md. Installs libode-dev and libbullet-dev
+# when run as root. Not part of `make test`.
+bench-scenes: deps
+	JOBS=$(JOBS) bash bench/run.sh
