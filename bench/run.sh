@@ -10,8 +10,8 @@
 # peer whose Debian package is missing is installed when run as root, otherwise skipped with a message.
 # Each program prints one CSV line per (variant, scene) (see bench/scenes/bench_harness.h).
 #
-# Environment: BUILD (build dir, default build/bench), JOBS (2), BUDGET (seconds of timed steps after
-# which a run stops, default 60), BENCH_ARGS (options passed to every program), RESULTS (default
+# Environment: BUILD (build dir, default build/bench), JOBS (2), BUDGET (seconds of CPU time in timed
+# steps after which a run stops, default 30), BENCH_ARGS (options passed to every program), RESULTS (default
 # bench/RESULTS.md; the hand-written block between the "notes" markers of the old file is kept) and
 # CSV (default results.csv beside RESULTS).
 set -euo pipefail
@@ -19,11 +19,12 @@ cd "$(dirname "$0")/.."
 
 BUILD=${BUILD:-build/bench}
 JOBS=${JOBS:-2}
-BUDGET=${BUDGET:-60}
+BUDGET=${BUDGET:-30}
 BENCH_ARGS=${BENCH_ARGS:-}
 RESULTS=${RESULTS:-bench/RESULTS.md}
 CSV=${CSV:-$(dirname "$RESULTS")/results.csv}
 start=$(date +%s)
+load_start=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')
 
 # ---- 1. packages ------------------------------------------------------------------------------------
 missing=""
@@ -75,6 +76,7 @@ for prog in "${programs[@]}"; do
     fi
 done
 elapsed=$(($(date +%s) - start))
+load_end=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')
 
 # ---- 4. RESULTS.md ----------------------------------------------------------------------------------
 cpu=$(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | sed 's/.*: //' || true)
@@ -85,12 +87,13 @@ cp "$tmp/csv" "$CSV"
 {
     echo "# Scene benchmarks: results"
     echo
-    echo "Written by \`bench/run.sh\` on $(date -u '+%Y-%m-%d %H:%M UTC') in ${elapsed} s (commit $(git rev-parse --short HEAD 2>/dev/null || echo '?'))."
+    echo "Written by \`bench/run.sh\` on $(date -u '+%Y-%m-%d %H:%M UTC') in ${elapsed} s (commit $(git describe --always --dirty 2>/dev/null || echo "?"))."
     echo "Scenes and figures: \`bench/scenes/README.md\`. Raw lines: \`$(basename "$CSV")\`."
     echo
-    echo "Machine: $(nproc) cores, ${cpu:-unknown CPU}, ${mem:-? GiB}; $(uname -sr);"
+    echo "Machine: $(nproc) cores, ${cpu:-unknown CPU}, ${mem:-? GiB}; $(uname -sr); load average $load_start at the"
+    echo "start and $load_end at the end (the machine is shared: a load above $(nproc) slows every engine alike);"
     echo "$(gcc --version | head -1), Release (-O3), ODE $(pkg-config --modversion ode 2>/dev/null || echo -),"
-    echo "Bullet $(pkg-config --modversion bullet 2>/dev/null || echo -). Time budget per run: ${BUDGET} s of timed steps${BENCH_ARGS:+; options: \`$BENCH_ARGS\`}."
+    echo "Bullet $(pkg-config --modversion bullet 2>/dev/null || echo -). Time budget per run: ${BUDGET} s of CPU time in timed steps${BENCH_ARGS:+; options: \`$BENCH_ARGS\`}."
     echo
     echo "$notes"
     echo
@@ -110,15 +113,17 @@ cp "$tmp/csv" "$CSV"
         if (v == "nan") return "NaN"
         return sprintf("%.3g m", v)
     }
+    function ratio(a, b) { return (a != "nan" && b != "" && b != "nan" && b + 0 > 0) ? sprintf("%.2f", a / b) : "-" }
     NR == 1 { next }
     {
-        n++; eng[n] = $1; var[n] = $2; sc[n] = $3; bodies[n] = $4; steps[n] = $5; run[n] = $6
-        med[n] = $7; mean[n] = $8; con[n] = $9; qn[n] = $10; qv[n] = $11; st[n] = $12; pen[n] = $13; note[n] = $14
+        n++; eng[n] = $1; var[n] = $2; sc[n] = $3; steps[n] = $5; run[n] = $6
+        med[n] = $7; mean[n] = $8; cpu[n] = $9; con[n] = $10; qn[n] = $11; qv[n] = $12; st[n] = $13; pen[n] = $14; note[n] = $15
         if (!(sc[n] in seen)) { seen[sc[n]] = 1; scenes[++ns] = sc[n] }
         id = $1 " " $2; if (!(id in vseen)) { vseen[id] = 1; variants[++nv] = id }
         complete = run[n] == steps[n] && med[n] != "nan"
-        if ($1 != "karma" && complete && (!(sc[n] in fastest) || med[n] + 0 < fastest[sc[n]] + 0)) {
-            fastest[sc[n]] = med[n]; fastname[sc[n]] = $1 " " $2
+        if ($1 != "karma" && complete) {
+            if (!(sc[n] in fastest) || med[n] + 0 < fastest[sc[n]] + 0) { fastest[sc[n]] = med[n]; fastname[sc[n]] = id }
+            if (!(sc[n] in fastcpu) || cpu[n] + 0 < fastcpu[sc[n]] + 0) fastcpu[sc[n]] = cpu[n]
         }
         key[sc[n], id] = n
         if ($1 == "karma") haskarma = 1
@@ -126,28 +131,30 @@ cp "$tmp/csv" "$CSV"
     END {
         print "## Per scene"
         print ""
-        print "ms/step is the median over the run of the step call alone (collision included); mean ms/step"
-        print "shows what sleeping bodies hide from the median. \"× fastest\" divides by the fastest peer that"
-        print "completed the scene. A run that stops early (time budget, island too large) has no figure."
+        print "ms/step is the median over the run of the step call alone (collision included), wall clock"
+        print "(CLOCK_MONOTONIC); CPU is the median process CPU time of the same calls, which the load of a"
+        print "shared machine inflates far less; the mean shows what sleeping bodies hide from the median."
+        print "\"× fastest\" divides by the fastest peer that completed the scene (wall, CPU). A run that stops"
+        print "early (time budget, island too large) has no figure and no verdict."
         for (s = 1; s <= ns; s++) {
             name = scenes[s]
             print ""
             f = (name in fastest) ? fastest[name] : ""
+            fc = (name in fastcpu) ? fastcpu[name] : ""
             print "### " name (f != "" ? " (fastest peer: " fastname[name] ")" : "")
             print ""
-            print "| engine | variant | steps run | ms/step | mean ms/step | contacts/step | figure | standing | floor pen. | × fastest | note |"
-            print "|---|---|---|---|---|---|---|---|---|---|---|"
+            print "| engine | variant | steps run | ms/step | CPU ms/step | mean ms/step | contacts/step | figure | standing | floor pen. | × fastest | note |"
+            print "|---|---|---|---|---|---|---|---|---|---|---|---|"
             for (v = 1; v <= nv; v++) {
                 if (!((name, variants[v]) in key)) continue
                 i = key[name, variants[v]]
-                ratio = (f != "" && med[i] != "nan" && f + 0 > 0) ? sprintf("%.2f", med[i] / f) : "-"
-                printf "| %s | %s | %d / %d | %s | %s | %.0f | %s | %s | %s | %s | %s |\n", eng[i], var[i], run[i], steps[i],
-                       fmt_ms(med[i]), fmt_ms(mean[i]), con[i], fmt_q(qn[i], qv[i]), st[i],
-                       pen[i] == "" ? "-" : sprintf("%.1f mm", pen[i] * 1000), ratio, note[i] == "" ? "" : note[i]
+                printf "| %s | %s | %d / %d | %s | %s | %s | %.0f | %s | %s | %s | %s, %s | %s |\n", eng[i], var[i], run[i], steps[i],
+                       fmt_ms(med[i]), fmt_ms(cpu[i]), fmt_ms(mean[i]), con[i], fmt_q(qn[i], qv[i]), st[i],
+                       pen[i] == "" ? "-" : sprintf("%.1f mm", pen[i] * 1000), ratio(med[i], f), ratio(cpu[i], fc), note[i]
             }
         }
         print ""
-        print "## Summary: median ms/step (figure, standing)"
+        print "## Summary: median ms/step, wall / CPU (figure, standing)"
         print ""
         line = "| scene |"; sep = "|---|"
         for (v = 1; v <= nv; v++) { line = line " " variants[v] " |"; sep = sep "---|" }
@@ -157,7 +164,7 @@ cp "$tmp/csv" "$CSV"
             for (v = 1; v <= nv; v++) {
                 if (!((scenes[s], variants[v]) in key)) { line = line " |"; continue }
                 i = key[scenes[s], variants[v]]
-                cell = (run[i] == steps[i]) ? fmt_ms(med[i]) " (" fmt_q(qn[i], qv[i]) (st[i] == "-" ? "" : ", " (st[i] == "yes" ? "standing" : "fallen")) ")" \
+                cell = (run[i] == steps[i]) ? fmt_ms(med[i]) " / " fmt_ms(cpu[i]) " (" fmt_q(qn[i], qv[i]) (st[i] == "-" ? "" : ", " (st[i] == "yes" ? "standing" : "fallen")) ")" \
                                             : "stopped at " run[i] "/" steps[i]
                 line = line " " cell " |"
             }
@@ -171,7 +178,7 @@ cp "$tmp/csv" "$CSV"
             print "It appears here when `bench/karma/karma_scenes.c` exists (a BenchEngine over MstUniverse,"
             print "see `bench/scenes/README.md`): CMake then builds `karma_scenes` and this runner runs it."
         } else {
-            print "Karma's median ms/step divided by each peer's (below 1: Karma is faster)."
+            print "Karma's median ms/step divided by each peer's, wall (CPU); below 1: Karma is faster."
             print ""
             line = "| scene | karma variant |"; sep = "|---|---|"
             for (v = 1; v <= nv; v++) if (variants[v] !~ /^karma /) { line = line " ÷ " variants[v] " |"; sep = sep "---|" }
@@ -184,7 +191,7 @@ cp "$tmp/csv" "$CSV"
                     for (v = 1; v <= nv; v++) {
                         if (variants[v] ~ /^karma /) continue
                         j = (scenes[s], variants[v]) in key ? key[scenes[s], variants[v]] : 0
-                        line = line " " ((j && run[j] == steps[j] && med[j] + 0 > 0 && med[i] != "nan") ? sprintf("%.2f", med[i] / med[j]) : "-") " |"
+                        line = line " " ((j && run[j] == steps[j]) ? ratio(med[i], med[j]) " (" ratio(cpu[i], cpu[j]) ")" : "-") " |"
                     }
                     print line
                 }

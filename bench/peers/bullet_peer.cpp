@@ -2,7 +2,8 @@
  *
  * btDiscreteDynamicsWorld with Bullet's defaults: btDbvtBroadphase, btDefaultCollisionConfiguration,
  * btSequentialImpulseConstraintSolver with 10 iterations (its default), warm starting, split impulse
- * and the default collision margins (0.04 m, inside box extents). Every body and the ground has
+ * and the default collision margins (0.04 m, inside box extents). Mass properties are the scene's
+ * (BenchBodyInertia: uniform solids). Every body and the ground has
  * friction 0.6 and restitution 0; the pair's friction is the smaller of the two (Bullet multiplies
  * them by default, which would make it 0.36). Joints: btPoint2PointConstraint for ball joints,
  * btHingeConstraint built from frames for hinges, with Bullet's default limit softness; jointed
@@ -50,12 +51,10 @@ btTransform body_transform(const BenchBody &b)
     return btTransform(q, to_bt(b.pos));
 }
 
-btRigidBody *add_body(BulletWorld *w, btCollisionShape *shape, double mass, const btTransform &pose,
-                      double friction, bool sleep)
+/* mass 0: static. The inertia is the scene's (uniform solids), not Bullet's own estimate. */
+btRigidBody *add_body(BulletWorld *w, btCollisionShape *shape, double mass, const btVector3 &inertia,
+                      const btTransform &pose, double friction, bool sleep)
 {
-    btVector3 inertia(0, 0, 0);
-    if (mass > 0)
-        shape->calculateLocalInertia(btScalar(mass), inertia);
     btRigidBody::btRigidBodyConstructionInfo info(btScalar(mass), nullptr, shape, inertia);
     info.m_startWorldTransform = pose;
     info.m_friction = btScalar(friction);
@@ -127,12 +126,16 @@ void *bullet_create(const BenchScene *scene, bool sleep)
             shape = new btBoxShape(to_bt(b.size));
             break;
         }
-        add_body(w, shape, b.fixed ? 0.0 : b.mass, body_transform(b), scene->friction, sleep);
+        double inertia[3] = {0, 0, 0};
+        if (!b.fixed)
+            BenchBodyInertia(&b, inertia);
+        add_body(w, shape, b.fixed ? 0.0 : b.mass, to_bt(inertia), body_transform(b), scene->friction, sleep);
     }
     if (scene->hasGround) {
         btTransform identity;
         identity.setIdentity();
-        add_body(w, new btStaticPlaneShape(btVector3(0, 0, 1), 0), 0.0, identity, scene->friction, sleep);
+        add_body(w, new btStaticPlaneShape(btVector3(0, 0, 1), 0), 0.0, btVector3(0, 0, 0), identity,
+                 scene->friction, sleep);
     }
     for (int k = 0; k < scene->jointCount; k++) {
         const BenchJoint &bj = scene->joints[k];

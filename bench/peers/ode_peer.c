@@ -9,7 +9,7 @@
  * best-spread points), pairs of bodies joined by a joint skipped. Each contact joint has
  * surface.mode = dContactApprox1 (the friction pyramid scaled by the normal force, so that mu is a
  * Coulomb coefficient rather than a force in newtons) and mu = 0.6; bounce off, no softness beyond
- * the world's.
+ * the world's. Mass properties are the scene's (BenchBodyInertia: uniform solids).
  *
  * The timed step is what one simulation step costs an ODE user: dSpaceCollide (with contact joint
  * creation), the stepper, and emptying the contact group.
@@ -169,24 +169,16 @@ static void *ode_create(const BenchScene *scene, int quick)
     for (int i = 0; i < scene->bodyCount; i++) {
         const BenchBody *b = &scene->bodies[i];
         dGeomID g;
-        dMass m;
-        dMassSetZero(&m);
         switch (b->shape) {
         case BENCH_SPHERE:
             g = dCreateSphere(w->space, b->size[0]);
-            if (!b->fixed)
-                dMassSetSphereTotal(&m, b->mass, b->size[0]);
             break;
         case BENCH_CAPSULE:
             g = dCreateCapsule(w->space, b->size[0], 2 * b->size[1]);
-            if (!b->fixed)
-                dMassSetCapsuleTotal(&m, b->mass, 3, b->size[0], 2 * b->size[1]);
             break;
         case BENCH_BOX:
         default:
             g = dCreateBox(w->space, 2 * b->size[0], 2 * b->size[1], 2 * b->size[2]);
-            if (!b->fixed)
-                dMassSetBoxTotal(&m, b->mass, 2 * b->size[0], 2 * b->size[1], 2 * b->size[2]);
             break;
         }
         dQuaternion q = {b->quat[0], b->quat[1], b->quat[2], b->quat[3]};
@@ -195,6 +187,10 @@ static void *ode_create(const BenchScene *scene, int quick)
             dGeomSetQuaternion(g, q);
             continue;
         }
+        double inertia[3];
+        dMass m;
+        BenchBodyInertia(b, inertia);
+        dMassSetParameters(&m, b->mass, 0, 0, 0, inertia[0], inertia[1], inertia[2], 0, 0, 0);
         dBodyID body = dBodyCreate(w->world);
         dBodySetMass(body, &m);
         dBodySetPosition(body, b->pos[0], b->pos[1], b->pos[2]);

@@ -3,12 +3,14 @@
  *
  * An engine (Karma, an ODE variant, Bullet) only supplies a BenchEngine: create a world from a
  * BenchScene, step it once, say how many contacts the step used, copy the body poses out, destroy.
- * The harness times the step callback alone (CLOCK_MONOTONIC); reading poses and measuring quality
+ * The harness times the step callback alone (CLOCK_MONOTONIC, and CPU time beside it); reading poses and measuring quality
  * happen outside the timed region.
  *
  * Output (stdout), one line per run, columns:
- *   engine,variant,scene,bodies,steps,steps_run,median_ms,mean_ms,mean_contacts,quality_name,
- *   quality_value,standing,floor_pen_m,note
+ *   engine,variant,scene,bodies,steps,steps_run,median_ms,mean_ms,median_cpu_ms,mean_contacts,
+ *   quality_name,quality_value,standing,floor_pen_m,note
+ * median_ms and mean_ms are wall time (CLOCK_MONOTONIC); median_cpu_ms is the process CPU time of
+ * the step (CLOCK_PROCESS_CPUTIME_ID), which a loaded machine inflates far less.
  * standing is yes / no / - (no verdict); note says why a run stopped early (no commas). Progress goes
  * to stderr. */
 #ifndef KARMA_BENCH_HARNESS_H
@@ -21,8 +23,8 @@ extern "C" {
 #endif
 
 #define BENCH_CSV_HEADER                                                                            \
-    "engine,variant,scene,bodies,steps,steps_run,median_ms,mean_ms,mean_contacts,quality_name,quality_value," \
-    "standing,floor_pen_m,note"
+    "engine,variant,scene,bodies,steps,steps_run,median_ms,mean_ms,median_cpu_ms,mean_contacts,quality_name," \
+    "quality_value,standing,floor_pen_m,note"
 
 typedef struct BenchEngine {
     const char *engine;   /**< "karma", "ode", "bullet" */
@@ -47,7 +49,7 @@ typedef struct BenchEngine {
  *    --scenes=a,b,...   scene names (default BENCH_STANDARD_SCENES)
  *    --variants=x,y     engine variants (default: all that the program has)
  *    --steps=N          override every scene's step count
- *    --budget=S         stop a run once its timed steps add up to S seconds (default 60)
+ *    --budget=S         stop a run once its timed steps add up to S seconds of CPU time (default 60)
  *    --trace=I          print body I's pose every 60 steps to stderr
  *    --header           print the CSV header first
  *    --list             list variants and scenes and exit

@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+static const double kPi = 3.14159265358979323846;
+
 /* ---- quaternions (w, x, y, z) ----------------------------------------------------------------- */
 
 void BenchQuatMultiply(double out[4], const double q[4], const double p[4])
@@ -48,9 +50,38 @@ void BenchQuatFromAxisAngle(double out[4], const double axis[3], double angle)
     out[3] = axis[2] * s;
 }
 
+/* ---- mass properties ---------------------------------------------------------------------------- */
+
+void BenchBodyInertia(const BenchBody *b, double inertia[3])
+{
+    double m = b->mass, r = b->size[0];
+    switch (b->shape) {
+    case BENCH_SPHERE:
+        inertia[0] = inertia[1] = inertia[2] = 0.4 * m * r * r;
+        break;
+    case BENCH_CAPSULE: {
+        /* cylinder of length 2h plus two hemispheres; a hemisphere's centroid is 3r/8 from its flat
+         * face, so the pair contributes ms (2r²/5 + h² + 3hr/4) about a transverse axis */
+        double h = b->size[1];
+        double cyl = kPi * r * r * 2 * h, caps = 4.0 / 3.0 * kPi * r * r * r;
+        double mc = m * cyl / (cyl + caps), ms = m * caps / (cyl + caps);
+        inertia[0] = inertia[1] = mc * (r * r / 4 + h * h / 3) + ms * (0.4 * r * r + h * h + 0.75 * h * r);
+        inertia[2] = mc * r * r / 2 + ms * 0.4 * r * r;
+        break;
+    }
+    case BENCH_BOX:
+    default: {
+        const double *e = b->size; /* half-extents */
+        inertia[0] = m * (e[1] * e[1] + e[2] * e[2]) / 3;
+        inertia[1] = m * (e[0] * e[0] + e[2] * e[2]) / 3;
+        inertia[2] = m * (e[0] * e[0] + e[1] * e[1]) / 3;
+        break;
+    }
+    }
+}
+
 /* ---- building ---------------------------------------------------------------------------------- */
 
-static const double kPi = 3.14159265358979323846;
 static const double kIdentity[4] = {1, 0, 0, 0};
 static const double kAxisX[3] = {1, 0, 0};
 static const double kAxisY[3] = {0, 1, 0};

@@ -126,6 +126,11 @@ void BenchQuatRotateInverse(double out[3], const double q[4], const double v[3])
 /** The unit quaternion turning by `angle` radians about the unit `axis`. */
 void BenchQuatFromAxisAngle(double out[4], const double axis[3], double angle);
 
+/** Principal moments of inertia (kg m², about the centre of mass, along the body's local axes) of the
+ *  body as a uniform solid of its mass: every engine uses these, so all have the same mass properties
+ *  (Bullet's own capsule inertia, for one, approximates the capsule by its bounding box). */
+void BenchBodyInertia(const BenchBody *body, double inertia[3]);
+
 /** The quality tracker: observe after every step, finish at the end. */
 typedef struct BenchQuality {
     double value;     /**< the scene's figure (m or count); NaN when the state became non-finite */

@@ -390,12 +390,60 @@ static void quaternions(void **state)
     assert_near(w1[2], 0, 1e-15);
 }
 
+/* Inertia of the uniform solids against brute-force integration over a grid of cell centres in the
+ * bounding box: a unit box, a sphere, a chain link and a ragdoll thigh (capsules). */
+static void inertia_by_integration(void **state)
+{
+    (void)state;
+    const BenchBody bodies[] = {
+        {BENCH_BOX, {0.5, 0.3, 0.2}, 2.0, {0, 0, 0}, {1, 0, 0, 0}, 0},
+        {BENCH_SPHERE, {0.5, 0, 0}, 1.0, {0, 0, 0}, {1, 0, 0, 0}, 0},
+        {BENCH_CAPSULE, {0.1, 0.4, 0}, 1.0, {0, 0, 0}, {1, 0, 0, 0}, 0},
+        {BENCH_CAPSULE, {0.07, 0.16, 0}, 7.0, {0, 0, 0}, {1, 0, 0, 0}, 0},
+    };
+    const int n = 120;
+    for (size_t k = 0; k < sizeof bodies / sizeof bodies[0]; k++) {
+        const BenchBody *b = &bodies[k];
+        double half[3];
+        if (b->shape == BENCH_BOX)
+            memcpy(half, b->size, sizeof half);
+        else
+            half[0] = half[1] = b->size[0], half[2] = b->size[0] + (b->shape == BENCH_CAPSULE ? b->size[1] : 0);
+        double sum[3] = {0, 0, 0};
+        long inside = 0;
+        for (int i = 0; i < n; i++)
+            for (int j = 0; j < n; j++)
+                for (int l = 0; l < n; l++) {
+                    double p[3] = {(2 * (i + 0.5) / n - 1) * half[0], (2 * (j + 0.5) / n - 1) * half[1],
+                                   (2 * (l + 0.5) / n - 1) * half[2]};
+                    if (b->shape != BENCH_BOX) {
+                        double axial = fmax(fabs(p[2]) - (b->shape == BENCH_CAPSULE ? b->size[1] : 0), 0);
+                        if (p[0] * p[0] + p[1] * p[1] + axial * axial > b->size[0] * b->size[0])
+                            continue;
+                    }
+                    inside++;
+                    sum[0] += p[1] * p[1] + p[2] * p[2];
+                    sum[1] += p[0] * p[0] + p[2] * p[2];
+                    sum[2] += p[0] * p[0] + p[1] * p[1];
+                }
+        double inertia[3];
+        BenchBodyInertia(b, inertia);
+        for (int a = 0; a < 3; a++) {
+            double numeric = b->mass * sum[a] / (double)inside;
+            print_message("shape %d axis %d: inertia %.6f kg m2, grid %.6f (%.2e relative)\n", (int)b->shape, a,
+                          inertia[a], numeric, fabs(inertia[a] - numeric) / numeric);
+            assert_rel(inertia[a], numeric, 5e-3);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(standard_scenes),     cmocka_unit_test(scene_names),
         cmocka_unit_test(joints_agree_at_start), cmocka_unit_test(joint_error_is_a_distance),
         cmocka_unit_test(quality_figures),     cmocka_unit_test(quaternions),
+        cmocka_unit_test(inertia_by_integration),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
