@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # run.sh -- build the scene benchmarks and run every available engine on every scene (issue 5), then
-# write bench/RESULTS.md (tables: scene x engine) and bench/results.csv (the raw lines).
+# write bench/RESULTS.md (tables: scene x engine) and bench/scene_results.csv (the raw lines).
 #
 #   bash bench/run.sh
 #   BENCH_ARGS="--scenes=column,chain --steps=120" RESULTS=/tmp/r.md bash bench/run.sh   # a partial run
+#
+# Only the block between the scene-bench markers of RESULTS is rewritten; the rest of the file (other
+# benchmarks' sections) is kept.
 #
 # Engines: karma_scenes (Karma; built when bench/karma/karma_scenes.c exists), ode_peer (ODE 0.16,
 # variants quickstep20 and step) and bullet_peer (Bullet 3.24, variants si10 and si10-nosleep); a
@@ -13,7 +16,7 @@
 # Environment: BUILD (build dir, default build/bench), JOBS (2), BUDGET (seconds of CPU time in timed
 # steps after which a run stops, default 30), BENCH_ARGS (options passed to every program), RESULTS (default
 # bench/RESULTS.md; the hand-written block between the "notes" markers of the old file is kept) and
-# CSV (default results.csv beside RESULTS).
+# CSV (default scene_results.csv beside RESULTS).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -22,7 +25,7 @@ JOBS=${JOBS:-2}
 BUDGET=${BUDGET:-30}
 BENCH_ARGS=${BENCH_ARGS:-}
 RESULTS=${RESULTS:-bench/RESULTS.md}
-CSV=${CSV:-$(dirname "$RESULTS")/results.csv}
+CSV=${CSV:-$(dirname "$RESULTS")/scene_results.csv}
 start=$(date +%s)
 load_start=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')
 
@@ -85,7 +88,8 @@ notes=$(sed -n '/^<!-- notes -->$/,/^<!-- \/notes -->$/p' "$RESULTS" 2>/dev/null
 [ -n "$notes" ] || notes=$'<!-- notes -->\n<!-- /notes -->'
 cp "$tmp/csv" "$CSV"
 {
-    echo "# Scene benchmarks: results"
+    echo "<!-- scene-bench:begin: written by bench/run.sh, which replaces this block and keeps the rest of the file -->"
+    echo "## Scenes against ODE and Bullet (\`bench/run.sh\`)"
     echo
     echo "Written by \`bench/run.sh\` on $(date -u '+%Y-%m-%d %H:%M UTC') in ${elapsed} s (commit $(git describe --always --dirty 2>/dev/null || echo "?"))."
     echo "Scenes and figures: \`bench/scenes/README.md\`. Raw lines: \`$(basename "$CSV")\`."
@@ -97,11 +101,11 @@ cp "$tmp/csv" "$CSV"
     echo
     echo "$notes"
     echo
-    echo "## Engines"
+    echo "### Engines"
     echo
     sed -n 's/^variant \([^ ]*\) \([^:]*\): \(.*\)/- **\1 \2**: \3/p' "$tmp/settings"
     echo
-    echo "## Scenes"
+    echo "### Scenes"
     echo
     sed -n 's/^scene \([^:]*\): \(.*\)/- **\1**: \2/p' "$tmp/settings" | awk '!seen[$0]++'
     echo
@@ -129,7 +133,7 @@ cp "$tmp/csv" "$CSV"
         if ($1 == "karma") haskarma = 1
     }
     END {
-        print "## Per scene"
+        print "### Per scene"
         print ""
         print "ms/step is the median over the run of the step call alone (collision included), wall clock"
         print "(CLOCK_MONOTONIC); CPU is the median process CPU time of the same calls, which the load of a"
@@ -141,7 +145,7 @@ cp "$tmp/csv" "$CSV"
             print ""
             f = (name in fastest) ? fastest[name] : ""
             fc = (name in fastcpu) ? fastcpu[name] : ""
-            print "### " name (f != "" ? " (fastest peer: " fastname[name] ")" : "")
+            print "#### " name (f != "" ? " (fastest peer: " fastname[name] ")" : "")
             print ""
             print "| engine | variant | steps run | ms/step | CPU ms/step | mean ms/step | contacts/step | figure | standing | floor pen. | × fastest | note |"
             print "|---|---|---|---|---|---|---|---|---|---|---|---|"
@@ -154,7 +158,7 @@ cp "$tmp/csv" "$CSV"
             }
         }
         print ""
-        print "## Summary: median ms/step, wall / CPU (figure, standing)"
+        print "### Summary: median ms/step, wall / CPU (figure, standing)"
         print ""
         line = "| scene |"; sep = "|---|"
         for (v = 1; v <= nv; v++) { line = line " " variants[v] " |"; sep = sep "---|" }
@@ -171,7 +175,7 @@ cp "$tmp/csv" "$CSV"
             print line
         }
         print ""
-        print "## Karma against each peer"
+        print "### Karma against each peer"
         print ""
         if (!haskarma) {
             print "Karma's column is not measured yet: its collision layer and bridge are still being written."
@@ -198,6 +202,18 @@ cp "$tmp/csv" "$CSV"
         }
     }
 AWK
-} >"$RESULTS.tmp"
+    echo "<!-- scene-bench:end -->"
+} >"$tmp/block.md"
+# Replace our block in RESULTS (other benchmarks keep their sections of the file), or add it.
+if [ -f "$RESULTS" ] && grep -q '^<!-- scene-bench:begin' "$RESULTS"; then
+    awk -v block="$tmp/block.md" '
+        /^<!-- scene-bench:begin/ { while ((getline line < block) > 0) print line; skip = 1; next }
+        /^<!-- scene-bench:end -->/ { skip = 0; next }
+        !skip { print }' "$RESULTS" >"$RESULTS.tmp"
+elif [ -f "$RESULTS" ]; then
+    { cat "$RESULTS"; echo; cat "$tmp/block.md"; } >"$RESULTS.tmp"
+else
+    { echo "# Benchmark results"; echo; cat "$tmp/block.md"; } >"$RESULTS.tmp"
+fi
 mv "$RESULTS.tmp" "$RESULTS"
 echo "run.sh: wrote $RESULTS and $CSV in ${elapsed} s"
