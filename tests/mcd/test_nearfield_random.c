@@ -94,7 +94,7 @@ static void run_pair(void **state)
         McdGeometry g1, g2;
         MeMatrix4 tm1, tm2;
         McdContact c[8], cs[8];
-        double nRef[3], dref, deep, deepS, n1[3], n2[3], size, tolD;
+        double nRef[3], dref, deep = 1e300, deepS, n1[3] = {0, 0, 0}, n2[3], size, tolD;
         Stats ps = {0}; /* this pose's errors */
         double poseMtd = 0;
         int n, ns, k;
@@ -195,7 +195,7 @@ static void run_pair(void **state)
         assert_true(st.surfaceErr < tolEps);
         assert_true(st.depthErr < tolEps + biasTol);
         assert_true(st.mtdErr < tolEps + biasTol);
-        assert_true(st.swapErr < tolEps);
+        assert_true(st.swapErr < tolEps + biasTol);
         assert_true(st.satErr < ME_TOL(1e-9, 1e-4));
     } else {
         /* the general path (GJK + EPA on curved cores): see the report, most poses to 1e-3 of the size */

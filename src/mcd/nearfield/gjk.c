@@ -236,6 +236,9 @@ MeBool McdNfGjk(const McdNfShape *s1, const McdNfShape *s2, McdNfSimplex *sx, Mc
         MeVector3Copy(prevP2, out->p2);
     }
     out->distance = MeSqrt(vv);
+    /* So close that rounding in the simplex (|v| against |w|) may hide an overlap: let EPA decide. */
+    if (out->distance <= MCD_NF_TOUCH * scale)
+        return MEFALSE;
     MeVector3MultiplyScalar(out->normal, v, -ME_R(1.0) / out->distance);
     return METRUE;
 }
@@ -314,7 +317,21 @@ void McdNfCoreDistance(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance
 {
     McdNfSimplex sx;
     if (!McdNfGjk(s1, s2, &sx, out)) {
+        MeVector3 sp, m;
+        MeReal F, Fm;
         McdNfEpa(s1, s2, &sx, out);
+        /* Guard against a polytope that rounding turned inside out: the depth must be the overlap
+         * along the normal, and the overlap along the opposite direction must not be smaller. */
+        supportD(s1, s2, out->normal, sp);
+        F = MeVector3Dot(sp, out->normal);
+        MeVector3MultiplyScalar(m, out->normal, -ME_R(1.0));
+        supportD(s1, s2, m, sp);
+        Fm = MeVector3Dot(sp, m);
+        if (Fm < F) {
+            MeVector3Copy(out->normal, m);
+            F = Fm;
+        }
+        out->distance = -F;
         refineNormal(s1, s2, out);
     }
 }

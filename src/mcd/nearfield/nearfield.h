@@ -18,8 +18,10 @@
 /* Relative accuracy of the iterative methods (GJK, EPA), scaled by the pair's size. */
 #if KARMA_DOUBLE
 #  define MCD_NF_REL_EPS ME_R(1e-10)
+#  define MCD_NF_TOUCH ME_R(1e-9)
 #else
 #  define MCD_NF_REL_EPS ME_R(2e-6)
+#  define MCD_NF_TOUCH ME_R(1e-4)
 #endif
 /* A feature (face, edge) counts as facing the normal when it is within ~3 degrees of it. */
 #define MCD_NF_FEATURE_SIN ME_R(0.05)
