@@ -48,8 +48,10 @@ struct DemoScene {
     void (*report)(const DemoInstance *demo, FILE *out);
 };
 
-/** Number of scenes in the registry, and the scene at `index` (NULL when out of range). The first
- *  scene is the default one (`make demo`). Order is fixed: new scenes are appended. */
+/** The scene `make demo` runs. */
+#define DEMO_DEFAULT_SCENE "topple"
+
+/** Number of scenes in the registry, and the scene at `index` (NULL when out of range). Order is fixed: new scenes are appended. */
 int DemoSceneCount(void);
 const DemoScene *DemoSceneAt(int index);
 /** The scene called `name`, or NULL. */

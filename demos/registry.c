@@ -1,7 +1,7 @@
 /* registry.c -- the list of scenes, and the few helpers every scene and runner shares.
  *
- * The order of the list is part of the interface: the first scene is the default demo, and tools
- * and benchmarks may refer to scenes by index. Append new scenes at the end. */
+ * The order of the list is part of the interface: tools and benchmarks may refer to scenes by index.
+ * `make demo` runs DEMO_DEFAULT_SCENE (demo.h). Append new scenes at the end. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -9,13 +9,13 @@
 
 extern const DemoScene DemoSceneFreeBodies, DemoSceneTwoSpheres, DemoSceneBallHitsWall, DemoSceneBounce,
     DemoSceneDrop, DemoSceneCubes, DemoSceneTopple, DemoSceneFriction, DemoSceneManyPendulums, DemoSceneRainbowChain,
-    DemoSceneHinge, DemoScenePrismatic, DemoSceneCradle;
+    DemoSceneHinge, DemoScenePrismatic, DemoSceneCradle, DemoSceneFixedPath;
 
 static const DemoScene *const sceneList[] = {
     &DemoSceneFreeBodies, &DemoSceneTwoSpheres, &DemoSceneBallHitsWall, &DemoSceneBounce,
     &DemoSceneDrop,       &DemoSceneCubes,      &DemoSceneTopple,       &DemoSceneFriction,
     &DemoSceneManyPendulums, &DemoSceneRainbowChain, &DemoSceneHinge,   &DemoScenePrismatic,
-    &DemoSceneCradle,
+    &DemoSceneCradle,       &DemoSceneFixedPath,
 };
 
 int DemoSceneCount(void)

@@ -38,7 +38,7 @@ static void printUsage(FILE *out)
             "  version                   print the library version and precision\n"
             "  help, --help, -h          print this help\n"
             "\n"
-            "The first scene of `karma list` is the default demo (`make demo`).\n");
+            "`make demo` runs `karma run " DEMO_DEFAULT_SCENE "`.\n");
 }
 
 static int usageError(const char *format, const char *argument)
@@ -54,7 +54,7 @@ static int listScenes(void)
     for (int i = 0; i < DemoSceneCount(); i++) {
         const DemoScene *scene = DemoSceneAt(i);
         printf("%-12s %s (%d steps of %.4g s)%s\n", scene->name, scene->description, scene->defaultSteps,
-               (double)scene->defaultStepSize, i == 0 ? " [default]" : "");
+               (double)scene->defaultStepSize, strcmp(scene->name, DEMO_DEFAULT_SCENE) == 0 ? " [make demo]" : "");
     }
     return EXIT_SUCCESS;
 }
