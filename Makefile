@@ -1,11 +1,14 @@
 # Karma: a thin wrapper around CMake for the README's commands.
 #
-#   make demo      build, then run the default scene headless (karma run freebodies)
+#   make demo      build, then run the Topple scene headless (karma run topple)
 #   make test      build and test float (-O2, checks on), double, and ASan + UBSan; prints "N passed, N failed"
 #   make build     build the float configuration (build/float)
 #   make install   install it (PREFIX=/usr/local by default)
 #   make deps      install missing Debian packages (as root), or print the apt-get line
-#   make bench     build Release with -DKARMA_BUILD_BENCH=ON (build/bench) and run the benchmarks
+#   make bench     build Release with -DKARMA_BUILD_BENCH=ON (build/bench) and run the benchmarks:
+#                  dynamics on hand-made contacts, then the scenes against ODE and Bullet (bench/run.sh,
+#                  which writes bench/RESULTS.md; installs libode-dev and libbullet-dev as root)
+#   make bench-scenes  only the scenes against ODE and Bullet
 #   make clean     remove build/
 
 BUILD   ?= build/float
@@ -13,7 +16,7 @@ PREFIX  ?= /usr/local
 JOBS    ?= 2
 DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config
 
-.PHONY: all deps build test demo install bench clean
+.PHONY: all deps build test demo install bench bench-scenes clean
 
 all: build
 
@@ -47,7 +50,7 @@ test: deps
 	@JOBS=$(JOBS) bash tests/run_configs.sh float double asan
 
 demo: build
-	$(BUILD)/tools/karma run freebodies
+	$(BUILD)/tools/karma run topple
 
 install: build
 	cmake --install $(BUILD) --prefix $(PREFIX)
@@ -57,6 +60,13 @@ bench: deps
 	cmake -S . -B build/bench -DCMAKE_BUILD_TYPE=Release -DKARMA_BUILD_BENCH=ON -DKARMA_BUILD_TESTS=OFF -DKARMA_BUILD_TOOLS=OFF
 	cmake --build build/bench -j $(JOBS) --target karma_bench_mdt
 	build/bench/bench/mdt/karma_bench_mdt $(BENCH_ARGS)
+	JOBS=$(JOBS) bash bench/run.sh
 
 clean:
 	rm -rf build
+
+# Scene benchmarks (issue 5): builds build/bench, runs Karma (when bench/karma/karma_scenes.c exists),
+# ODE and Bullet on every scene and writes bench/RESULTS.md. Installs libode-dev and libbullet-dev
+# when run as root. Not part of `make test`.
+bench-scenes: deps
+	JOBS=$(JOBS) bash bench/run.sh

@@ -24,6 +24,7 @@ typedef struct DemoScene DemoScene;
 typedef struct DemoInstance {
     const DemoScene *scene;
     MdtWorldID world;      /**< the dynamics world the scene built */
+    MstUniverseID universe; /**< the universe holding it, for scenes with collision (else NULL) */
     int namedCount;
     MdtBodyID named[DEMO_MAX_NAMED_BODIES];
     const char *names[DEMO_MAX_NAMED_BODIES];
@@ -47,8 +48,10 @@ struct DemoScene {
     void (*report)(const DemoInstance *demo, FILE *out);
 };
 
-/** Number of scenes in the registry, and the scene at `index` (NULL when out of range). The first
- *  scene is the default one (`make demo`). Order is fixed: new scenes are appended. */
+/** The scene `make demo` runs. */
+#define DEMO_DEFAULT_SCENE "topple"
+
+/** Number of scenes in the registry, and the scene at `index` (NULL when out of range). Order is fixed: new scenes are appended. */
 int DemoSceneCount(void);
 const DemoScene *DemoSceneAt(int index);
 /** The scene called `name`, or NULL. */
@@ -56,7 +59,18 @@ const DemoScene *DemoSceneFind(const char *name);
 
 /** Build `scene` into `demo`. Returns MEFALSE (and leaves `demo` empty) when the scene fails. */
 MeBool DemoCreate(const DemoScene *scene, DemoInstance *demo);
-/** One step of `stepSize` seconds: beforeStep hook, MdtWorldStep, afterStep hook. */
+/** Make the scene's universe (and set demo->world to its world) with `sizes`, gravity (0, 0, −g) and,
+ *  when groundFriction ≥ 0, a ground plane z = 0 (frictionless at 0; above 0 the default material pair
+ *  gets 2D friction with that NormalForce coefficient). Returns MEFALSE when the universe cannot be made. */
+MeBool DemoUniverseCreate(DemoInstance *demo, const MstUniverseSizes *sizes, MeReal g, MeReal groundFriction);
+/** A model with an enabled body at (x, y, z) in the demo's universe (density in kg/m³); NULL on failure. */
+McdModelID DemoAddModel(DemoInstance *demo, McdGeometryID geometry, MeReal density, MeReal x, MeReal y, MeReal z);
+
+/** No contacts between models a and b (jointed neighbours), inside or outside a change block. */
+void DemoDisablePair(DemoInstance *demo, McdModelID a, McdModelID b);
+
+/** One step of `stepSize` seconds: beforeStep hook, MstUniverseStep (or MdtWorldStep for scenes
+ *  without collision), afterStep hook. */
 void DemoStep(DemoInstance *demo, MeReal stepSize);
 /** Destroy the world and free the scene data. */
 void DemoDestroy(DemoInstance *demo);

@@ -1,4 +1,4 @@
-/* free_bodies.c -- the default scene: four bodies in free flight under gravity (y is up).
+/* free_bodies.c -- the first scene: four bodies in free flight under gravity (y is up).
  *
  * No constraints and no collision yet, so each body shows one part of the integrator, and the
  * report compares it with the answer from mechanics:

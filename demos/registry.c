@@ -1,16 +1,21 @@
 /* registry.c -- the list of scenes, and the few helpers every scene and runner shares.
  *
- * The order of the list is part of the interface: the first scene is the default demo, and tools
- * and benchmarks may refer to scenes by index. Append new scenes at the end. */
+ * The order of the list is part of the interface: tools and benchmarks may refer to scenes by index.
+ * `make demo` runs DEMO_DEFAULT_SCENE (demo.h). Append new scenes at the end. */
 #include <stdlib.h>
 #include <string.h>
 
 #include "demo.h"
 
-extern const DemoScene DemoSceneFreeBodies;
+extern const DemoScene DemoSceneFreeBodies, DemoSceneTwoSpheres, DemoSceneBallHitsWall, DemoSceneBounce,
+    DemoSceneDrop, DemoSceneCubes, DemoSceneTopple, DemoSceneFriction, DemoSceneManyPendulums, DemoSceneRainbowChain,
+    DemoSceneHinge, DemoScenePrismatic, DemoSceneCradle, DemoSceneFixedPath;
 
 static const DemoScene *const sceneList[] = {
-    &DemoSceneFreeBodies,
+    &DemoSceneFreeBodies, &DemoSceneTwoSpheres, &DemoSceneBallHitsWall, &DemoSceneBounce,
+    &DemoSceneDrop,       &DemoSceneCubes,      &DemoSceneTopple,       &DemoSceneFriction,
+    &DemoSceneManyPendulums, &DemoSceneRainbowChain, &DemoSceneHinge,   &DemoScenePrismatic,
+    &DemoSceneCradle,       &DemoSceneFixedPath,
 };
 
 int DemoSceneCount(void)
@@ -51,7 +56,10 @@ void DemoStep(DemoInstance *demo, MeReal stepSize)
 {
     if (demo->scene->beforeStep)
         demo->scene->beforeStep(demo, stepSize);
-    MdtWorldStep(demo->world, stepSize);
+    if (demo->universe)
+        MstUniverseStep(demo->universe, stepSize);
+    else
+        MdtWorldStep(demo->world, stepSize);
     demo->steps++;
     demo->time += stepSize;
     if (demo->scene->afterStep)
@@ -60,10 +68,55 @@ void DemoStep(DemoInstance *demo, MeReal stepSize)
 
 void DemoDestroy(DemoInstance *demo)
 {
-    if (demo->world)
+    if (demo->universe)
+        MstUniverseDestroy(demo->universe);
+    else if (demo->world)
         MdtWorldDestroy(demo->world);
     free(demo->data);
     memset(demo, 0, sizeof *demo);
+}
+
+/* The plane's transform must outlive its model: one per process is enough (it never changes). */
+static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+
+MeBool DemoUniverseCreate(DemoInstance *demo, const MstUniverseSizes *sizes, MeReal g, MeReal groundFriction)
+{
+    demo->universe = MstUniverseCreate(sizes);
+    if (!demo->universe)
+        return MEFALSE;
+    demo->world = MstUniverseGetWorld(demo->universe);
+    MdtWorldSetGravity(demo->world, 0, 0, -g);
+    if (groundFriction >= 0) { /* a ground plane; friction only when > 0 */
+        McdFrameworkID fw = MstUniverseGetFramework(demo->universe);
+        if (!MstFixedModelCreate(demo->universe, McdPlaneCreate(fw), groundTM))
+            return MEFALSE;
+        MdtContactParamsID p = MstBridgeGetContactParams(MstUniverseGetBridge(demo->universe), 0, 0);
+        if (groundFriction == 0)
+            return METRUE;
+        MdtContactParamsSetType(p, MdtContactTypeFriction2D);
+        MdtContactParamsSetFrictionModel(p, MdtFrictionModelNormalForce);
+        MdtContactParamsSetFrictionCoeffecient(p, groundFriction);
+    }
+    return METRUE;
+}
+
+McdModelID DemoAddModel(DemoInstance *demo, McdGeometryID geometry, MeReal density, MeReal x, MeReal y, MeReal z)
+{
+    McdModelID m = MstModelAndBodyCreate(demo->universe, geometry, density);
+    if (m)
+        MdtBodySetPosition(McdModelGetBody(m), x, y, z);
+    return m;
+}
+
+void DemoDisablePair(DemoInstance *demo, McdModelID a, McdModelID b)
+{
+    McdSpaceID space = MstUniverseGetSpace(demo->universe);
+    MeBool changing = McdSpaceIsChanging(space);
+    if (!changing)
+        McdSpaceBeginChanges(space);
+    McdSpaceDisablePair(a, b);
+    if (!changing)
+        McdSpaceEndChanges(space);
 }
 
 MdtBodyID DemoAddNamedBody(DemoInstance *demo, const char *name)

@@ -38,7 +38,7 @@ static void printUsage(FILE *out)
             "  version                   print the library version and precision\n"
             "  help, --help, -h          print this help\n"
             "\n"
-            "The first scene of `karma list` is the default demo (`make demo`).\n");
+            "`make demo` runs `karma run " DEMO_DEFAULT_SCENE "`.\n");
 }
 
 static int usageError(const char *format, const char *argument)
@@ -54,7 +54,7 @@ static int listScenes(void)
     for (int i = 0; i < DemoSceneCount(); i++) {
         const DemoScene *scene = DemoSceneAt(i);
         printf("%-12s %s (%d steps of %.4g s)%s\n", scene->name, scene->description, scene->defaultSteps,
-               (double)scene->defaultStepSize, i == 0 ? " [default]" : "");
+               (double)scene->defaultStepSize, strcmp(scene->name, DEMO_DEFAULT_SCENE) == 0 ? " [make demo]" : "");
     }
     return EXIT_SUCCESS;
 }
@@ -203,10 +203,22 @@ static int runScene(int argc, char **argv)
     measure(demo.world, &before);
     if (csv)
         writeCsvRows(csv, &demo);
+    double sumPartitions = 0, sumRows = 0, sumPairs = 0, sumContacts = 0;
+    int maxRows = 0;
     for (long i = 0; i < steps; i++) {
         DemoStep(&demo, h);
         if (csv)
             writeCsvRows(csv, &demo);
+        MdtSolverStats stats;
+        MdtWorldGetSolverStats(demo.world, &stats);
+        sumPartitions += stats.partitions;
+        sumRows += stats.rows;
+        if (stats.maxPartitionRows > maxRows)
+            maxRows = stats.maxPartitionRows;
+        if (demo.universe) {
+            sumPairs += McdSpaceGetPairCount(MstUniverseGetSpace(demo.universe));
+            sumContacts += MstBridgeGetLastContactCount(MstUniverseGetBridge(demo.universe));
+        }
     }
     measure(demo.world, &after);
     unsigned long warnings = MeMessageGetTotalCount(ME_LEVEL_WARNING) - warningsBefore;
@@ -217,9 +229,20 @@ static int runScene(int argc, char **argv)
     printf("  bodies: %d, enabled %d at the start and %d at the end; constraints: %d\n", after.bodies,
            before.enabled, after.enabled, MdtWorldGetTotalConstraints(demo.world));
 
+    double perStep = steps > 0 ? 1e6 / (double)steps : 0, mean = steps > 0 ? 1.0 / (double)steps : 0;
+    printf("  per step (mean): partitions %.1f, rows %.1f (largest partition %d rows)", sumPartitions * mean,
+           sumRows * mean, maxRows);
+    if (demo.universe)
+        printf(", pairs %.1f, contacts %.1f", sumPairs * mean, sumContacts * mean);
+    printf("\n");
+    if (demo.universe) {
+        const MeProfile *collision = MstUniverseGetProfile(demo.universe);
+        printf("  collision time per step (µs): Farfield %.3f Nearfield %.3f\n",
+               MeProfileGetSectionTotal(collision, MST_SECTION_FARFIELD) * perStep,
+               MeProfileGetSectionTotal(collision, MST_SECTION_NEARFIELD) * perStep);
+    }
     const MeProfile *profile = MdtWorldGetProfile(demo.world);
-    double perStep = steps > 0 ? 1e6 / (double)steps : 0;
-    printf("  time per step by stage (µs, mean of %ld):", steps);
+    printf("  dynamics time per step by stage (µs, mean of %ld):", steps);
     for (int s = 0; s < STAGE_COUNT; s++)
         printf(" %s %.3f", stageNames[s], MeProfileGetSectionTotal(profile, stageNames[s]) * perStep);
     printf("; whole step %.3f\n", MeProfileGetSectionTotal(profile, "Dynamics") * perStep);
@@ -237,12 +260,15 @@ static int runScene(int argc, char **argv)
     printVector(", after ", after.angularMomentum, "kg·m²/s");
     printf("\n");
 
-    printf("  final positions (m):\n");
-    int index = 0;
+    printf("  final positions (m)%s:\n", after.bodies > 12 ? ", named bodies and the first few" : "");
+    int index = 0, shown = 0;
     for (MdtBodyID b = MdtBodyGetFirst(demo.world); b; b = MdtBodyGetNext(b), index++) {
         MeVector3 x;
         const char *name = DemoBodyName(&demo, b);
         char fallback[32];
+        if (!name && after.bodies > 12 && index >= 8)
+            continue;
+        shown++;
         if (!name) {
             snprintf(fallback, sizeof fallback, "body %d", index);
             name = fallback;
@@ -251,6 +277,8 @@ static int runScene(int argc, char **argv)
         printf("    %-12s (%10.4f, %10.4f, %10.4f)%s\n", name, (double)x[0], (double)x[1], (double)x[2],
                MdtBodyIsEnabled(b) ? "" : "  disabled");
     }
+    if (shown < after.bodies)
+        printf("    ... and %d more\n", after.bodies - shown);
     if (scene->report) {
         printf("  what the scene measured:\n");
         scene->report(&demo, stdout);

@@ -15,6 +15,7 @@
 #include "McdNull.h"
 #include "McdPlane.h"
 #include "McdSphere.h"
+#include "McdSpace.h"
 #include "McdSphyl.h"
 #include "McdTypes.h"
 

@@ -53,9 +53,8 @@ ME_API void McdModelSetSortKey(McdModelID m, int key);
 ME_API int McdModelGetSortKey(McdModelID m);
 ME_API void McdModelSetUserData(McdModelID m, void *data);
 ME_API void *McdModelGetUserData(McdModelID m);
-/** The dynamics body of the model (an MdtBodyID, kept opaque: Mcd never looks inside). */
-ME_API void McdModelSetBody(McdModelID m, void *body);
-ME_API void *McdModelGetBody(McdModelID m);
+/* The model's dynamics body: McdModelSetBody / McdModelGetBody belong to the bridge (MstBridge.h),
+ * since Mcd knows nothing of Mdt. */
 
 /** Compound the relative transform with the transform (the geometry-to-world transform). */
 ME_API void McdModelCompoundTransforms(McdModelID m);

@@ -15,5 +15,6 @@
 #include "MeVersion.h"
 #include "Mdt.h"
 #include "Mcd.h"
+#include "Mst.h"
 
 #endif /* KARMA_H */

@@ -262,18 +262,6 @@ void *McdModelGetUserData(McdModelID id)
     return m->userData;
 }
 
-void McdModelSetBody(McdModelID id, void *body)
-{
-    MODEL_OR_RETURN(m, id, ME_NOTHING);
-    m->body = body;
-}
-
-void *McdModelGetBody(McdModelID id)
-{
-    MODEL_OR_RETURN(m, id, NULL);
-    return m->body;
-}
-
 void McdModelCompoundTransforms(McdModelID id)
 {
     MODEL_OR_RETURN(m, id, ME_NOTHING);

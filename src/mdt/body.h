@@ -43,6 +43,7 @@ typedef struct MdtBody {
     MeBool useFastSpin;
     MeI32 sortKey;
     void *userData;
+    uintptr_t bridgeModel;   /* ID of the collision model the bridge linked to this body (opaque to Mdt), or 0 */
 
     /* accumulators, cleared by each step that simulates the body */
     MeVector3 force, torque;

@@ -19,7 +19,7 @@ static MeU32 generationSeed = 2;
 static const char *kindName(MeHandleKind kind)
 {
     static const char *const names[ME_HANDLE_KIND_COUNT] = {"none",     "world",    "body",  "constraint",
-                                                            "framework", "geometry", "model", "space"};
+                                                            "framework", "geometry", "model", "space", "bridge", "universe"};
     return (kind >= 0 && kind < ME_HANDLE_KIND_COUNT) ? names[kind] : "unknown";
 }
 

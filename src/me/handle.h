@@ -4,7 +4,7 @@
  * integer:
  *
  *     kind | owner | generation | slot index            (64-bit: 4 | 12 | 24 | 24 bits;
- *                                                         32-bit: 3 |  5 |  8 | 16 bits)
+ *                                                         32-bit: 4 |  5 |  7 | 16 bits)
  *
  * `owner` is a slot in a process-wide registry of owners (worlds, collision frameworks, spaces...),
  * each with a generation of its own and a pool per kind of object it holds. Resolving an ID checks
@@ -31,7 +31,9 @@ typedef enum MeHandleKind {
     ME_HANDLE_GEOMETRY = 5,   /* McdGeometry in a framework */
     ME_HANDLE_MODEL = 6,      /* McdModel in a framework */
     ME_HANDLE_SPACE = 7,      /* owner: McdSpace */
-    ME_HANDLE_KIND_COUNT = 8
+    ME_HANDLE_BRIDGE = 8,     /* owner: MstBridge */
+    ME_HANDLE_UNIVERSE = 9,   /* owner: MstUniverse */
+    ME_HANDLE_KIND_COUNT = 10
 } MeHandleKind;
 
 #if UINTPTR_MAX > 0xFFFFFFFFu
@@ -41,9 +43,9 @@ typedef enum MeHandleKind {
 #  define ME_HANDLE_KIND_BITS 4
 #else
 #  define ME_HANDLE_INDEX_BITS 16
-#  define ME_HANDLE_GEN_BITS 8
+#  define ME_HANDLE_GEN_BITS 7
 #  define ME_HANDLE_OWNER_BITS 5
-#  define ME_HANDLE_KIND_BITS 3
+#  define ME_HANDLE_KIND_BITS 4
 #endif
 #define ME_HANDLE_MAX_OWNERS ((1 << ME_HANDLE_OWNER_BITS) - 1)
 #define ME_HANDLE_MAX_INDEX ((1L << ME_HANDLE_INDEX_BITS) - 1)

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include <karma/Mcd.h>
+#include <karma/MstBridge.h>
 
 #include "mcd/framework.h"
 #include "mcd_shapes.h"
@@ -52,12 +53,10 @@ static void defaults_and_settings(void **state)
     McdModelSetSortKey(m, MCD_MODEL_SORT_KEY_MAX);
     int tag;
     McdModelSetUserData(m, &tag);
-    McdModelSetBody(m, &tag);
     McdModelSetContactTolerance(m, ME_R(0.25));
     assert_int_equal(McdModelGetMaterial(m), 3);
     assert_int_equal(McdModelGetSortKey(m), 32767);
     assert_ptr_equal(McdModelGetUserData(m), &tag);
-    assert_ptr_equal(McdModelGetBody(m), &tag);
     assert_near(McdModelGetContactTolerance(m), 0.25, 0);
     assert_reports(ME_ERR_ARGUMENT_RANGE, McdModelSetSortKey(m, 32768));
     assert_reports(ME_ERR_ARGUMENT_RANGE, McdModelSetSortKey(m, -1));

@@ -1,8 +1,12 @@
-/* register.c -- McdPrimitivesRegisterInteractions' list of pair tests.
- *
- * PLACEHOLDER owned by the nearfield work: replace this body with the registration of every pair
- * test (McdFrameworkSetInteraction(fw, typeA, typeB, fn), one way round per pair). Until then no
- * primitive pair has a test, and tests/mcd/test_mcd_framework.c's coverage check is skipped. */
+/* register.c -- McdPrimitivesRegisterInteractions' list of pair tests: every entry of the built-in
+ * pair table (table.c), one way round; the framework swaps the models at hello when needed. */
 #include "../framework.h"
+#include "nearfield.h"
 
-void McdNearfieldRegisterPrimitives(McdFramework *fw) { (void)fw; }
+void McdNearfieldRegisterPrimitives(McdFramework *fw)
+{
+    int count, k;
+    const McdNfPairEntry *table = McdNfPairTable(&count);
+    for (k = 0; k < count; k++)
+        McdFrameworkSetInteraction(fw, table[k].type1, table[k].type2, table[k].fn);
+}

@@ -1,0 +1,220 @@
+/* bench_harness.c -- timing loop, quality measurement and CSV output shared by every bench program. */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime */
+
+#include "bench_harness.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+typedef struct Options {
+    const char *scenes;
+    const char *variants;
+    int steps;       /* 0: the scene's own */
+    double budget;   /* s of CPU time in timed steps per run */
+    int header, list;
+    int trace;       /* >= 0: print this body's pose every 60 steps to stderr */
+} Options;
+
+static double clock_seconds(clockid_t clock)
+{
+    struct timespec ts;
+    clock_gettime(clock, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int compare_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double median(double *v, int n)
+{
+    if (n <= 0)
+        return NAN;
+    qsort(v, (size_t)n, sizeof *v, compare_double);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* Is `name` one of the comma-separated `list` (NULL: everything)? */
+static int in_list(const char *list, const char *name)
+{
+    if (!list)
+        return 1;
+    size_t n = strlen(name);
+    for (const char *p = list; *p;) {
+        const char *end = strchr(p, ',');
+        size_t len = end ? (size_t)(end - p) : strlen(p);
+        if (len == n && strncmp(p, name, n) == 0)
+            return 1;
+        if (!end)
+            break;
+        p = end + 1;
+    }
+    return 0;
+}
+
+static void run_one(const BenchEngine *e, const BenchScene *scene, const Options *opt)
+{
+    int steps = opt->steps > 0 ? opt->steps : scene->steps;
+    int n = scene->bodyCount;
+    double(*pos)[3] = malloc(sizeof *pos * (size_t)n);
+    double(*quat)[4] = malloc(sizeof *quat * (size_t)n);
+    double *times = malloc(sizeof *times * (size_t)steps), *cpuTimes = malloc(sizeof *cpuTimes * (size_t)steps);
+    if (!pos || !quat || !times || !cpuTimes) {
+        fprintf(stderr, "bench: out of memory for %s\n", scene->name);
+        free(pos), free(quat), free(times), free(cpuTimes);
+        return;
+    }
+    for (int i = 0; i < n; i++) {
+        memcpy(pos[i], scene->bodies[i].pos, sizeof pos[i]);
+        memcpy(quat[i], scene->bodies[i].quat, sizeof quat[i]);
+    }
+    const char *note = "";
+    char remarkCopy[160];
+    int done = 0;
+    double contacts = 0, spent = 0, spentCpu = 0;
+    BenchQuality quality;
+    BenchQualityInit(scene, &quality);
+    void *world = e->create(scene);
+    if (!world) {
+        note = "world creation failed";
+    } else {
+        for (; done < steps; ) {
+            const char *why = "stopped by the engine";
+            /* wall time (what the brief asks for) and process CPU time (what a loaded, shared machine
+             * does not inflate) of the step call alone */
+            double c0 = clock_seconds(CLOCK_PROCESS_CPUTIME_ID), t0 = clock_seconds(CLOCK_MONOTONIC);
+            int stop = e->step(world, &why);
+            double dt = clock_seconds(CLOCK_MONOTONIC) - t0;
+            double dc = clock_seconds(CLOCK_PROCESS_CPUTIME_ID) - c0;
+            if (stop) {
+                note = why;
+                break;
+            }
+            cpuTimes[done] = dc;
+            times[done++] = dt;
+            spent += dt;
+            spentCpu += dc;
+            contacts += e->contacts(world);
+            e->read(world, pos, quat);
+            BenchQualityObserve(scene, &quality, (const double(*)[3])pos, (const double(*)[4])quat);
+            if (opt->trace >= 0 && opt->trace < n && done % 60 == 0)
+                fprintf(stderr, "    step %5d body %d pos %9.4f %9.4f %9.4f quat %7.4f %7.4f %7.4f %7.4f\n", done,
+                        opt->trace, pos[opt->trace][0], pos[opt->trace][1], pos[opt->trace][2],
+                        quat[opt->trace][0], quat[opt->trace][1], quat[opt->trace][2], quat[opt->trace][3]);
+            if (spentCpu > opt->budget && done < steps) { /* CPU time: the same runs finish under any load */
+                note = "time budget reached";
+                break;
+            }
+        }
+        const char *remark = e->remark ? e->remark(world) : NULL;
+        if (remark && *remark && !*note) {
+            snprintf(remarkCopy, sizeof remarkCopy, "%s", remark);
+            note = remarkCopy;
+        }
+        e->destroy(world);
+    }
+    BenchQualityFinish(scene, &quality, (const double(*)[3])pos, (const double(*)[4])quat, done == steps);
+    if (quality.nonFinite && !*note)
+        note = "non-finite state";
+    double mean = done ? spent / done * 1e3 : (double)NAN;
+    double med = median(times, done) * 1e3, cpu = median(cpuTimes, done) * 1e3;
+    const char *standing = quality.standing < 0 ? "-" : quality.standing ? "yes" : "no";
+    if (done == steps || quality.nonFinite)
+        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,%.6g,%s,%.4f,%s\n", e->engine, e->variant, scene->name,
+               scene->dynamicCount, steps, done, med, mean, cpu, done ? contacts / done : 0.0, scene->qualityName,
+               quality.value, standing, quality.floorPenetration, note);
+    else /* an incomplete run has no quality figure: it was not measured at the scene's time */
+        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,,-,,%s\n", e->engine, e->variant, scene->name,
+               scene->dynamicCount, steps, done, med, mean, cpu, done ? contacts / done : 0.0, scene->qualityName,
+               note);
+    fflush(stdout);
+    fprintf(stderr, "  %-6s %-14s %-10s %5d steps, %8.3f ms/step (CPU %.3f), %s\n", e->engine, e->variant,
+            scene->name, done, med, cpu, *note ? note : "ok");
+    free(pos), free(quat), free(times), free(cpuTimes);
+}
+
+static int parse_options(int argc, char **argv, Options *opt)
+{
+    memset(opt, 0, sizeof *opt);
+    opt->scenes = BENCH_STANDARD_SCENES;
+    opt->budget = 60;
+    opt->trace = -1;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (strncmp(a, "--scenes=", 9) == 0)
+            opt->scenes = a + 9;
+        else if (strncmp(a, "--variants=", 11) == 0)
+            opt->variants = a + 11;
+        else if (strncmp(a, "--steps=", 8) == 0)
+            opt->steps = atoi(a + 8);
+        else if (strncmp(a, "--budget=", 9) == 0)
+            opt->budget = atof(a + 9);
+        else if (strncmp(a, "--trace=", 8) == 0)
+            opt->trace = atoi(a + 8);
+        else if (strcmp(a, "--header") == 0)
+            opt->header = 1;
+        else if (strcmp(a, "--list") == 0)
+            opt->list = 1;
+        else {
+            fprintf(stderr, "unknown option '%s' (--scenes= --variants= --steps= --budget= --trace= --header --list)\n", a);
+            return 0;
+        }
+    }
+    if (opt->budget <= 0 || opt->steps < 0) {
+        fprintf(stderr, "--budget must be > 0 and --steps >= 0\n");
+        return 0;
+    }
+    return 1;
+}
+
+int BenchMain(int argc, char **argv, const BenchEngine *engines, int engineCount)
+{
+    Options opt;
+    if (!parse_options(argc, argv, &opt))
+        return 2;
+    if (opt.list) {
+        for (int i = 0; i < engineCount; i++)
+            printf("variant %s %s: %s\n", engines[i].engine, engines[i].variant, engines[i].settings);
+        char names[] = BENCH_STANDARD_SCENES;
+        for (char *name = strtok(names, ","); name; name = strtok(NULL, ",")) {
+            BenchScene *scene = BenchSceneCreate(name);
+            if (scene)
+                printf("scene %s: %s; %d dynamic bodies, %d joints, %d steps of %.4f s, figure %s\n", scene->name,
+                       scene->description, scene->dynamicCount, scene->jointCount, scene->steps, scene->step,
+                       scene->qualityName);
+            BenchSceneDestroy(scene);
+        }
+        return 0;
+    }
+    if (opt.header)
+        printf("%s\n", BENCH_CSV_HEADER);
+    /* Scenes in the order given; each one built once and run by every selected variant. */
+    char *list = malloc(strlen(opt.scenes) + 1);
+    if (!list)
+        return 1;
+    strcpy(list, opt.scenes);
+    int status = 0;
+    for (char *name = list; name && *name;) {
+        char *comma = strchr(name, ',');
+        if (comma)
+            *comma = '\0';
+        BenchScene *scene = BenchSceneCreate(name);
+        if (!scene) {
+            fprintf(stderr, "unknown scene '%s'\n", name);
+            status = 2;
+        } else {
+            for (int i = 0; i < engineCount; i++)
+                if (in_list(opt.variants, engines[i].variant))
+                    run_one(&engines[i], scene, &opt);
+            BenchSceneDestroy(scene);
+        }
+        name = comma ? comma + 1 : NULL;
+    }
+    free(list);
+    return status;
+}

@@ -1,0 +1,96 @@
+/* MstBridge.h -- the bridge between Karma Collision (Mcd) and Karma Dynamics (Mdt).
+ *
+ * The bridge owns the material table: for every pair of materials (symmetric) the contact parameters
+ * copied by value into each new dynamics contact, and three optional callbacks. Each step,
+ * MstBridgeUpdateContacts reads the space's pairs in chunks and, for each chunk, handles transitions
+ * (Hello: order the pair and choose its nearfield test; Goodbye: destroy its contact group) and
+ * collisions (nearfield test → McdContacts → MdtContacts in the pair's MdtContactGroup, created when
+ * the models first intersect and destroyed when they stop, or at Goodbye).
+ *
+ * Body order: a group's body 0 is model 1's body and body 1 model 2's; when model 1 has no body (it
+ * is part of the world) the pair is turned round so that the dynamic body is body 0 and body 1 NULL
+ * (the group is marked swapped). Dynamics normals point from body 0 to body 1. */
+#ifndef MST_BRIDGE_H
+#define MST_BRIDGE_H
+
+#include "McdSpace.h"
+#include "McdTypes.h"
+#include "MdtContactGroup.h"
+#include "MdtContactParams.h"
+#include "MdtTypes.h"
+
+ME_EXTERN_C_BEGIN
+
+typedef struct MstBridgeHandle_ *MstBridgeID;
+/** A material: an index into the bridge's table. 0 is the default material. */
+typedef int MstMaterialID;
+
+/** Called once per colliding pair, after the nearfield test and before conversion (edit or cull
+ *  result->contacts / contactCount here). */
+typedef void (*MstIntersectCBPtr)(McdIntersectResult *result);
+/** Called for each converted contact; return 0 to drop it. */
+typedef MeBool (*MstPerContactCBPtr)(McdIntersectResult *result, McdContact *colC, MdtContactID dynC);
+/** Called once per pair after conversion; return 0 to drop all the pair's contacts. */
+typedef MeBool (*MstPerPairCBPtr)(McdIntersectResult *result, MdtContactGroupID contactGroup);
+
+/** A bridge with room for maxMaterials materials (≥ 1; material 0 exists from the start). */
+ME_API MstBridgeID MstBridgeCreate(McdFrameworkID frame, int maxMaterials);
+ME_API void MstBridgeDestroy(MstBridgeID b);
+ME_API MeBool MstBridgeIsValid(MstBridgeID b);
+
+/** The default material (0): every model starts with it. */
+ME_API MstMaterialID MstBridgeGetDefaultMaterial(void);
+/** A new material whose pairs start with the default contact parameters (frictionless), or -1
+ *  when the table is full (reported, naming the size to raise). */
+ME_API MstMaterialID MstBridgeGetNewMaterial(MstBridgeID b);
+ME_API int MstBridgeGetMaterialCount(MstBridgeID b);
+ME_API int MstBridgeGetMaxMaterials(MstBridgeID b);
+
+/** The parameters used for contacts between materials m1 and m2 (same entry as (m2, m1)); edit them
+ *  through the MdtContactParams functions. NULL (reported) for a bad material. */
+ME_API MdtContactParamsID MstBridgeGetContactParams(MstBridgeID b, MstMaterialID m1, MstMaterialID m2);
+
+ME_API void MstBridgeSetIntersectCB(MstBridgeID b, MstMaterialID m1, MstMaterialID m2, MstIntersectCBPtr cb);
+ME_API MstIntersectCBPtr MstBridgeGetIntersectCB(MstBridgeID b, MstMaterialID m1, MstMaterialID m2);
+ME_API void MstBridgeSetPerContactCB(MstBridgeID b, MstMaterialID m1, MstMaterialID m2, MstPerContactCBPtr cb);
+ME_API MstPerContactCBPtr MstBridgeGetPerContactCB(MstBridgeID b, MstMaterialID m1, MstMaterialID m2);
+ME_API void MstBridgeSetPerPairCB(MstBridgeID b, MstMaterialID m1, MstMaterialID m2, MstPerPairCBPtr cb);
+ME_API MstPerPairCBPtr MstBridgeGetPerPairCB(MstBridgeID b, MstMaterialID m1, MstMaterialID m2);
+
+/** Size of the pair container read from the space per chunk (default 128). */
+ME_API void MstBridgeSetModelPairBufferSize(MstBridgeID b, int size);
+ME_API int MstBridgeGetModelPairBufferSize(MstBridgeID b);
+/** Size of the McdContact buffer one pair test may fill (default 32). */
+ME_API void MstBridgeSetContactBufferSize(MstBridgeID b, int size);
+ME_API int MstBridgeGetContactBufferSize(MstBridgeID b);
+
+/** The whole bridge step: ends the space's change block, reads every pair in chunks, handles
+ *  transitions and collisions, and opens a change block again. Call after McdSpaceUpdateAll and
+ *  before MdtWorldStep. */
+ME_API void MstBridgeUpdateContacts(MstBridgeID b, McdSpaceID space, MdtWorldID world);
+/** The Hello and Goodbye pairs of a container: Hello orders the pair and picks its test (McdHello);
+ *  Goodbye destroys its contact group and releases the test (McdGoodbye). */
+ME_API void MstHandleTransitions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorldID world, MstBridgeID b);
+/** Nearfield tests for the Hello and Staying pairs of a container with at least one unfrozen model,
+ *  and conversion of their contacts. */
+ME_API void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorldID world, MstBridgeID b);
+/** Karma's names for the stages (decision D7 keeps them as aliases). */
+#define MstBridgeUpdateTransitions(b, s, w, pairs) MstHandleTransitions((pairs), (s), (w), (b))
+#define MstBridgeUpdateCollisions(b, s, w, pairs) MstHandleCollisions((pairs), (s), (w), (b))
+
+/** Install the world handlers that keep models and bodies in step: a disabled body's models are
+ *  frozen, an enabled body's unfrozen, and a destroyed contact group is unlinked from its pair.
+ *  MstUniverseCreate does this; call it yourself when you build world, space and bridge by hand. */
+ME_API void MstSetWorldHandlers(MdtWorldID world);
+
+/** Link a model to a body (NULL: the model is part of the world). The model's transform pointer
+ *  becomes the body's transform. */
+ME_API void McdModelSetBody(McdModelID model, MdtBodyID body);
+ME_API MdtBodyID McdModelGetBody(McdModelID model);
+/** Link counts of the last MstBridgeUpdateContacts: pairs tested, contacts made. */
+ME_API int MstBridgeGetLastPairCount(MstBridgeID b);
+ME_API int MstBridgeGetLastContactCount(MstBridgeID b);
+
+ME_EXTERN_C_END
+
+#endif /* MST_BRIDGE_H */

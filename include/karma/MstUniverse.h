@@ -1,0 +1,80 @@
+/* MstUniverse.h -- the simplest way to use Karma: one object holding a collision framework, an
+ * axis-sort space, a dynamics world and the bridge, sized once, stepped with one call.
+ *
+ *     MstUniverseSizes sizes = MstUniverseDefaultSizes;
+ *     sizes.dynamicBodiesMaxCount = 200;
+ *     MstUniverseID u = MstUniverseCreate(&sizes);
+ *     ...
+ *     MstUniverseStep(u, 1.0 / 60);   // McdSpaceUpdateAll, MstBridgeUpdateContacts, MdtWorldStep
+ */
+#ifndef MST_UNIVERSE_H
+#define MST_UNIVERSE_H
+
+#include "McdTypes.h"
+#include "MdtTypes.h"
+#include "MeProfile.h"
+#include "MstBridge.h"
+
+ME_EXTERN_C_BEGIN
+
+typedef struct MstUniverseHandle_ *MstUniverseID;
+
+/** Every pool of a universe. Start from MstUniverseDefaultSizes and change what you need. */
+typedef struct MstUniverseSizes {
+    int dynamicBodiesMaxCount;              /**< 100 */
+    int dynamicConstraintsMaxCount;         /**< 500: joints and contacts together */
+    int materialsMaxCount;                  /**< 10 (at least 1: the default material) */
+    int collisionModelsMaxCount;            /**< 100 */
+    int collisionPairsMaxCount;             /**< 500 */
+    int collisionUserGeometryTypesMaxCount; /**< 0 */
+    int collisionGeometryInstancesMaxCount; /**< 100 (decision D5) */
+    MeReal lengthScale;                     /**< 1 */
+    MeReal massScale;                       /**< 1 */
+} MstUniverseSizes;
+
+/** Karma's defaults (KARMA.md §8). */
+ME_API MstUniverseSizes MstUniverseGetDefaultSizes(void);
+/** Karma's spelling: `MstUniverseSizes s = MstUniverseDefaultSizes;` */
+#define MstUniverseDefaultSizes (MstUniverseGetDefaultSizes())
+
+/** Framework (primitive types and their pair tests registered), space on all three axes, world,
+ *  bridge and the world handlers; NULL (reported) when a size is invalid or memory runs out. */
+ME_API MstUniverseID MstUniverseCreate(const MstUniverseSizes *sizes);
+/** Destroys every body, constraint and model of the universe, then the bridge, space, world and
+ *  framework. Geometries belong to the framework and go with it. */
+ME_API void MstUniverseDestroy(MstUniverseID u);
+ME_API MeBool MstUniverseIsValid(MstUniverseID u);
+/** Exactly McdSpaceUpdateAll, MstBridgeUpdateContacts and MdtWorldStep(world, stepSize). */
+ME_API void MstUniverseStep(MstUniverseID u, MeReal stepSize);
+
+/** Profile sections of the collision half of MstUniverseStep (the dynamics half is in the world's
+ *  profile, MdtWorldGetProfile): "Collision" holds "Farfield" (McdSpaceUpdateAll) and "Nearfield"
+ *  (MstBridgeUpdateContacts: pair tests and contact conversion). */
+#define MST_SECTION_COLLISION "Collision"
+#define MST_SECTION_FARFIELD "Farfield"
+#define MST_SECTION_NEARFIELD "Nearfield"
+ME_API const MeProfile *MstUniverseGetProfile(MstUniverseID u);
+
+ME_API MdtWorldID MstUniverseGetWorld(MstUniverseID u);
+ME_API McdSpaceID MstUniverseGetSpace(MstUniverseID u);
+ME_API MstBridgeID MstUniverseGetBridge(MstUniverseID u);
+ME_API McdFrameworkID MstUniverseGetFramework(MstUniverseID u);
+
+/** A model of `geometry` with a new, **enabled** body whose mass and inertia come from the geometry
+ *  at `density` (kg/m³), linked, inserted into the space; NULL (reported) when a pool is full. */
+ME_API McdModelID MstModelAndBodyCreate(MstUniverseID u, McdGeometryID geometry, MeReal density);
+/** Removes the model from its space and destroys it and its body (and the body's constraints). */
+ME_API void MstModelAndBodyDestroy(McdModelID model);
+/** A static model (no body) at the transform `tm`, which must outlive the model: inserted, updated
+ *  once and frozen. */
+ME_API McdModelID MstFixedModelCreate(MstUniverseID u, McdGeometryID geometry, MeMatrix4Ptr tm);
+ME_API void MstFixedModelDestroy(McdModelID model);
+
+/** Mass, inertia tensor and centre-of-mass offset of `body` from `model`'s geometry at `density`. */
+ME_API void MstAutoSetMassProperties(MdtBodyID body, McdModelID model, MeReal density);
+/** The inertia tensor of the model's body from its geometry, keeping the body's mass. */
+ME_API void MstAutoSetInertialTensor(McdModelID model);
+
+ME_EXTERN_C_END
+
+#endif /* MST_UNIVERSE_H */

@@ -1,0 +1,215 @@
+/* box_box.c -- box against box by the separating-axis test (internal).
+ *
+ * Fifteen candidate axes: the three face normals of each box and the nine cross products of their
+ * edges (Gottschalk et al. 1996; Ericson 4.4). Overlapping boxes: the axis of least overlap is the
+ * contact normal (a face axis unless an edge axis is clearly better, which keeps resting contacts
+ * steady); a face contact clips the other box's most anti-parallel face against the reference face
+ * (Sutherland-Hodgman) and keeps up to four points, an edge contact gives the closest points of the two
+ * edges. Boxes apart by less than the tolerance go to the general path (GJK), which measures the true
+ * distance, not only its projection on the fifteen axes. */
+#include "nearfield.h"
+
+/* Prefer a face axis unless an edge axis overlaps less than this fraction of it. */
+#define EDGE_BIAS ME_R(0.999)
+
+typedef struct Box {
+    const MeReal *c;   /* centre */
+    const MeReal *ax[3];
+    const MeReal *h;   /* half extents */
+} Box;
+
+/* Clip polygon `in` (n points) by the plane o.x <= off; returns the count written to `out`. */
+static int clipPlane(MeVector3 *in, int n, MeVector3 *out, const MeVector3 o, MeReal off)
+{
+    int i, m = 0;
+    for (i = 0; i < n; i++) {
+        const MeReal *p = in[i], *q = in[(i + 1) % n];
+        MeReal sp = MeVector3Dot(o, p) - off, sq = MeVector3Dot(o, q) - off;
+        if (sp <= ME_R(0.0))
+            MeVector3Copy(out[m++], p);
+        if ((sp < ME_R(0.0) && sq > ME_R(0.0)) || (sp > ME_R(0.0) && sq < ME_R(0.0)))
+            MeVector3Lerp(out[m++], p, q, sp / (sp - sq));
+    }
+    return m;
+}
+
+/* Face contact: reference box `ref` with face normal nr (unit, pointing towards `inc`) along axis k. */
+static int faceContact(const Box *ref, int k, const MeVector3 nr, const Box *inc, MeBool refIsFirst,
+                       MeReal tol, McdContact *out)
+{
+    MeVector3 poly[2][16], fc, n;
+    int j = 0, i, cnt = 4, cur = 0, count = 0;
+    MeReal best = -ME_R(1.0), sj, off;
+    /* incident face: the face of `inc` whose normal is most anti-parallel to nr */
+    for (i = 0; i < 3; i++) {
+        MeReal d = MeFabs(MeVector3Dot(nr, inc->ax[i]));
+        if (d > best) {
+            best = d;
+            j = i;
+        }
+    }
+    sj = MeVector3Dot(nr, inc->ax[j]) > ME_R(0.0) ? -ME_R(1.0) : ME_R(1.0);
+    {
+        int a = (j + 1) % 3, b = (j + 2) % 3;
+        static const MeReal u[4] = {ME_R(1.0), -ME_R(1.0), -ME_R(1.0), ME_R(1.0)};
+        static const MeReal v[4] = {ME_R(1.0), ME_R(1.0), -ME_R(1.0), -ME_R(1.0)};
+        for (i = 0; i < 4; i++) {
+            MeVector3Copy(poly[0][i], inc->c);
+            MeVector3MultiplyAdd(poly[0][i], sj * inc->h[j], inc->ax[j]);
+            MeVector3MultiplyAdd(poly[0][i], u[i] * inc->h[a], inc->ax[a]);
+            MeVector3MultiplyAdd(poly[0][i], v[i] * inc->h[b], inc->ax[b]);
+        }
+    }
+    /* the four side planes of the reference face */
+    for (i = 1; i < 3 && cnt > 0; i++) {
+        const MeReal *e = ref->ax[(k + i) % 3];
+        MeReal ce = MeVector3Dot(e, ref->c), he = ref->h[(k + i) % 3];
+        MeVector3 me;
+        cnt = clipPlane(poly[cur], cnt, poly[1 - cur], e, ce + he);
+        cur = 1 - cur;
+        MeVector3MultiplyScalar(me, e, -ME_R(1.0));
+        cnt = clipPlane(poly[cur], cnt, poly[1 - cur], me, -ce + he);
+        cur = 1 - cur;
+    }
+    MeVector3ScaleAndAdd(fc, ref->c, ref->h[k], nr);
+    off = MeVector3Dot(fc, nr);
+    if (refIsFirst)
+        MeVector3Copy(n, nr);
+    else
+        MeVector3MultiplyScalar(n, nr, -ME_R(1.0));
+    for (i = 0; i < cnt; i++) {
+        MeReal sep = MeVector3Dot(poly[cur][i], nr) - off;
+        MeVector3 onRef;
+        MeVector3ScaleAndAdd(onRef, poly[cur][i], -sep, nr);
+        if (refIsFirst)
+            count += McdNfAddPair(out, count, 16, onRef, poly[cur][i], n, tol, 2);
+        else
+            count += McdNfAddPair(out, count, 16, poly[cur][i], onRef, n, tol, 2);
+    }
+    return count;
+}
+
+/* The edge of box b parallel to axis i that supports direction d. */
+static void supportEdge(const Box *b, int i, const MeVector3 d, MeVector3 e0, MeVector3 e1)
+{
+    int l;
+    MeVector3Copy(e0, b->c);
+    for (l = 0; l < 3; l++)
+        if (l != i)
+            MeVector3MultiplyAdd(e0, MeVector3Dot(d, b->ax[l]) >= ME_R(0.0) ? b->h[l] : -b->h[l], b->ax[l]);
+    MeVector3Copy(e1, e0);
+    MeVector3MultiplyAdd(e0, -b->h[i], b->ax[i]);
+    MeVector3MultiplyAdd(e1, b->h[i], b->ax[i]);
+}
+
+int McdNfBoxBox(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2, MeReal tolerance,
+                McdContact *contacts, int maxContacts, void **cache)
+{
+    Box A, B;
+    MeReal R[3][3], AR[3][3], ta[3], tb[3], faceBest = MEINFINITY, edgeBest = MEINFINITY;
+    MeReal size;
+    MeVector3 T, edgeAxis = {ME_R(0.0), ME_R(0.0), ME_R(0.0)};
+    int i, j, faceAxis = -1, edgeI = -1, edgeJ = -1;
+    MeBool separated = MEFALSE;
+    if (maxContacts <= 0)
+        return 0;
+    A.c = tm1[3];
+    B.c = tm2[3];
+    A.h = g1->u.box.radii;
+    B.h = g2->u.box.radii;
+    for (i = 0; i < 3; i++) {
+        A.ax[i] = tm1[i];
+        B.ax[i] = tm2[i];
+    }
+    size = MeVector3Magnitude(A.h) + MeVector3Magnitude(B.h);
+    MeVector3Subtract(T, B.c, A.c);
+    for (i = 0; i < 3; i++) {
+        ta[i] = MeVector3Dot(T, A.ax[i]);
+        tb[i] = MeVector3Dot(T, B.ax[i]);
+        for (j = 0; j < 3; j++) {
+            R[i][j] = MeVector3Dot(A.ax[i], B.ax[j]);
+            AR[i][j] = MeFabs(R[i][j]);
+        }
+    }
+    /* face axes of A (0-2) and of B (3-5) */
+    for (i = 0; i < 6; i++) {
+        MeReal o;
+        if (i < 3)
+            o = A.h[i] + B.h[0] * AR[i][0] + B.h[1] * AR[i][1] + B.h[2] * AR[i][2] - MeFabs(ta[i]);
+        else
+            o = A.h[0] * AR[0][i - 3] + A.h[1] * AR[1][i - 3] + A.h[2] * AR[2][i - 3] + B.h[i - 3] - MeFabs(tb[i - 3]);
+        if (o < -tolerance)
+            return 0;
+        if (o < ME_R(0.0))
+            separated = METRUE;
+        if (o < faceBest) {
+            faceBest = o;
+            faceAxis = i;
+        }
+    }
+    /* edge axes A_i x B_j */
+    for (i = 0; i < 3; i++) {
+        int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+        for (j = 0; j < 3; j++) {
+            int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            MeReal len = MeSqrt(MeMAX(ME_R(0.0), ME_R(1.0) - R[i][j] * R[i][j])), ra, rb, dist, o;
+            if (len < ME_R(1e-4)) /* parallel edges: the face axes cover this direction */
+                continue;
+            ra = A.h[i1] * AR[i2][j] + A.h[i2] * AR[i1][j];
+            rb = B.h[j1] * AR[i][j2] + B.h[j2] * AR[i][j1];
+            dist = MeFabs(ta[i2] * R[i1][j] - ta[i1] * R[i2][j]);
+            o = (ra + rb - dist) / len;
+            if (o < -tolerance)
+                return 0;
+            if (o < ME_R(0.0))
+                separated = METRUE;
+            if (o < edgeBest) {
+                edgeBest = o;
+                edgeI = i;
+                edgeJ = j;
+            }
+        }
+    }
+    if (separated) /* within the tolerance but apart: the exact distance and its features */
+        return McdNfConvexConvex(g1, tm1, g2, tm2, tolerance, contacts, maxContacts, cache);
+    if (edgeI >= 0 && edgeBest < EDGE_BIAS * faceBest - MCD_NF_REL_EPS * size) {
+        MeVector3 a0, a1, b0, b1, pa, pb, negAxis, on1, on2;
+        MeReal s, t;
+        MeVector3Cross(edgeAxis, A.ax[edgeI], B.ax[edgeJ]);
+        MeVector3Normalize(edgeAxis);
+        if (MeVector3Dot(edgeAxis, T) < ME_R(0.0))
+            MeVector3Scale(edgeAxis, -ME_R(1.0));
+        MeVector3MultiplyScalar(negAxis, edgeAxis, -ME_R(1.0));
+        supportEdge(&A, edgeI, edgeAxis, a0, a1);
+        supportEdge(&B, edgeJ, negAxis, b0, b1);
+        McdNfSegmentSegment(a0, a1, b0, b1, &s, &t);
+        MeVector3Lerp(pa, a0, a1, s);
+        MeVector3Lerp(pb, b0, b1, t);
+        /* the edges' points lie along the axis to rounding; pair them straight along it */
+        MeVector3Lerp(on1, pa, pb, ME_R(0.5));
+        MeVector3Copy(on2, on1);
+        MeVector3MultiplyAdd(on1, ME_R(0.5) * edgeBest, edgeAxis);
+        MeVector3MultiplyAdd(on2, -ME_R(0.5) * edgeBest, edgeAxis);
+        return McdNfAddPair(contacts, 0, maxContacts, on1, on2, edgeAxis, tolerance, 0);
+    }
+    {
+        McdContact buf[16];
+        MeVector3 nr;
+        int count, k;
+        const Box *ref = faceAxis < 3 ? &A : &B, *inc = faceAxis < 3 ? &B : &A;
+        int axis = faceAxis % 3;
+        MeReal side = faceAxis < 3 ? ta[axis] : -tb[axis];
+        MeVector3Copy(nr, ref->ax[axis]);
+        if (side < ME_R(0.0))
+            MeVector3Scale(nr, -ME_R(1.0));
+        count = faceContact(ref, axis, nr, inc, faceAxis < 3, tolerance, buf);
+        if (count == 0) /* rounding clipped everything away: the general path */
+            return McdNfConvexConvex(g1, tm1, g2, tm2, tolerance, contacts, maxContacts, cache);
+        if (maxContacts > MCD_NF_MAX_CONTACTS)
+            maxContacts = MCD_NF_MAX_CONTACTS;
+        count = McdNfReduce(buf, count, maxContacts);
+        for (k = 0; k < count; k++)
+            contacts[k] = buf[k];
+        return count;
+    }
+}

@@ -1,0 +1,182 @@
+/* contact.c -- writing contacts and reducing a contact set to a few well-spread points (internal). */
+#include "nearfield.h"
+
+void McdNfToWorld(MeVector3 out, MeMatrix4 tm, const MeVector3 local)
+{
+    MeMatrix4TMTransform(out, tm, local);
+}
+
+void McdNfPerpendicular(MeVector3 out, const MeVector3 n)
+{
+    /* Cross with the axis least aligned with n: well conditioned for every n. */
+    MeReal ax = MeFabs(n[0]), ay = MeFabs(n[1]), az = MeFabs(n[2]);
+    MeVector3 e = {ME_R(0.0), ME_R(0.0), ME_R(0.0)};
+    if (ax <= ay && ax <= az)
+        e[0] = ME_R(1.0);
+    else if (ay <= az)
+        e[1] = ME_R(1.0);
+    else
+        e[2] = ME_R(1.0);
+    MeVector3Cross(out, n, e);
+    MeVector3Normalize(out);
+}
+
+int McdNfAddPair(McdContact *contacts, int count, int maxContacts, const MeVector3 on1, const MeVector3 on2,
+                 const MeVector3 normal, MeReal tolerance, int dims)
+{
+    MeVector3 d;
+    McdContact *c;
+    MeReal sep;
+    MeVector3Subtract(d, on2, on1);
+    sep = MeVector3Dot(d, normal);
+    if (!(sep <= tolerance) || count >= maxContacts)
+        return 0;
+    c = &contacts[count];
+    MeVector3Lerp(c->position, on1, on2, ME_R(0.5));
+    MeVector3Copy(c->normal, normal);
+    c->separation = sep;
+    c->dims = (MeI16)dims;
+    c->pad_ = 0;
+    c->element1 = NULL;
+    c->element2 = NULL;
+    return 1;
+}
+
+/* Twice the signed area of triangle (a, b, c) seen along n. */
+static MeReal signedArea(const MeVector3 a, const MeVector3 b, const MeVector3 c, const MeVector3 n)
+{
+    MeVector3 u, v, w;
+    MeVector3Subtract(u, b, a);
+    MeVector3Subtract(v, c, a);
+    MeVector3Cross(w, u, v);
+    return MeVector3Dot(w, n);
+}
+
+int McdNfReduce(McdContact *contacts, int n, int keep)
+{
+    McdContact tmp[64];
+    int chosen[4], used[64] = {0}, k = 0, i, best;
+    MeReal bestValue;
+    const MeReal *nrm = contacts[0].normal;
+    if (n <= keep)
+        return n;
+    if (n > 64)
+        n = 64;
+    if (keep > 4)
+        keep = 4;
+    /* 1: the deepest point (ties: the first, so the result is deterministic). */
+    best = 0;
+    for (i = 1; i < n; i++)
+        if (contacts[i].separation < contacts[best].separation)
+            best = i;
+    chosen[k++] = best;
+    used[best] = 1;
+    /* 2: the farthest from it. */
+    if (k < keep) {
+        best = -1;
+        bestValue = -ME_R(1.0);
+        for (i = 0; i < n; i++) {
+            MeReal d = MeVector3DistanceSqr(contacts[i].position, contacts[chosen[0]].position);
+            if (!used[i] && d > bestValue) {
+                bestValue = d;
+                best = i;
+            }
+        }
+        chosen[k++] = best;
+        used[best] = 1;
+    }
+    /* 3: the largest triangle with those two. */
+    if (k < keep) {
+        best = -1;
+        bestValue = -ME_R(1.0);
+        for (i = 0; i < n; i++) {
+            MeReal a = MeFabs(signedArea(contacts[chosen[0]].position, contacts[chosen[1]].position,
+                                         contacts[i].position, nrm));
+            if (!used[i] && a > bestValue) {
+                bestValue = a;
+                best = i;
+            }
+        }
+        chosen[k++] = best;
+        used[best] = 1;
+    }
+    /* 4: the point that adds the most area outside the triangle. */
+    if (k < keep) {
+        const MeReal *p0 = contacts[chosen[0]].position, *p1 = contacts[chosen[1]].position,
+                     *p2 = contacts[chosen[2]].position;
+        MeReal orient = signedArea(p0, p1, p2, nrm) >= ME_R(0.0) ? ME_R(1.0) : -ME_R(1.0);
+        best = -1;
+        bestValue = ME_R(0.0);
+        for (i = 0; i < n; i++) {
+            MeReal a0, a1, a2, add;
+            if (used[i])
+                continue;
+            a0 = orient * signedArea(p0, p1, contacts[i].position, nrm);
+            a1 = orient * signedArea(p1, p2, contacts[i].position, nrm);
+            a2 = orient * signedArea(p2, p0, contacts[i].position, nrm);
+            add = -MeMIN3(a0, a1, a2);
+            if (add > bestValue) {
+                bestValue = add;
+                best = i;
+            }
+        }
+        if (best >= 0)
+            chosen[k++] = best;
+    }
+    for (i = 0; i < k; i++)
+        tmp[i] = contacts[chosen[i]];
+    for (i = 0; i < k; i++)
+        contacts[i] = tmp[i];
+    return k;
+}
+
+void McdNfSegmentSegment(const MeVector3 p0, const MeVector3 p1, const MeVector3 q0, const MeVector3 q1,
+                         MeReal *s, MeReal *t)
+{
+    /* Closest points of two segments (the clamped normal equations, Ericson 5.1.9). */
+    MeVector3 d1, d2, r;
+    MeReal a, e, f, c, b, denom, ss, tt;
+    MeVector3Subtract(d1, p1, p0);
+    MeVector3Subtract(d2, q1, q0);
+    MeVector3Subtract(r, p0, q0);
+    a = MeVector3Dot(d1, d1);
+    e = MeVector3Dot(d2, d2);
+    f = MeVector3Dot(d2, r);
+    if (a <= ME_MIN_EPSILON && e <= ME_MIN_EPSILON) {
+        *s = *t = ME_R(0.0);
+        return;
+    }
+    if (a <= ME_MIN_EPSILON) {
+        *s = ME_R(0.0);
+        *t = MeCLAMP(f / e, ME_R(0.0), ME_R(1.0));
+        return;
+    }
+    c = MeVector3Dot(d1, r);
+    if (e <= ME_MIN_EPSILON) {
+        *t = ME_R(0.0);
+        *s = MeCLAMP(-c / a, ME_R(0.0), ME_R(1.0));
+        return;
+    }
+    b = MeVector3Dot(d1, d2);
+    denom = a * e - b * b;
+    /* Parallel segments: any s works; take the middle of the overlap for a stable answer. */
+    if (denom > ME_MIN_EPSILON * a * e)
+        ss = MeCLAMP((b * f - c * e) / denom, ME_R(0.0), ME_R(1.0));
+    else {
+        /* project q0 and q1 on segment 1 and take the middle of the common part */
+        MeReal u0 = -c / a, u1 = (b - c) / a;
+        MeReal lo = MeMAX(ME_R(0.0), MeMIN(u0, u1)), hi = MeMIN(ME_R(1.0), MeMAX(u0, u1));
+        ss = lo <= hi ? ME_R(0.5) * (lo + hi) : (u0 + u1 < ME_R(1.0) ? ME_R(0.0) : ME_R(1.0));
+        ss = MeCLAMP(ss, ME_R(0.0), ME_R(1.0));
+    }
+    tt = (b * ss + f) / e;
+    if (tt < ME_R(0.0)) {
+        tt = ME_R(0.0);
+        ss = MeCLAMP(-c / a, ME_R(0.0), ME_R(1.0));
+    } else if (tt > ME_R(1.0)) {
+        tt = ME_R(1.0);
+        ss = MeCLAMP((b - c) / a, ME_R(0.0), ME_R(1.0));
+    }
+    *s = ss;
+    *t = tt;
+}

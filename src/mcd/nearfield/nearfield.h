@@ -1,0 +1,125 @@
+/* nearfield.h -- the pieces shared by Mcd's pair tests (internal).
+ *
+ * A pair test (McdNearfieldFn, mcd_internal.h) reports contacts between two convex geometries. The
+ * primitives are seen here as a *core* (point, segment, box, cylinder, cone) swept by a *radius*
+ * (sphere = point + radius, sphyl = segment + radius, the others radius 0): the general path runs
+ * GJK on the cores, EPA when the cores overlap, and then builds the contact set by clipping the
+ * cores' features that face each other. Closed forms (sphere-sphere, box-box, ...-plane, ...) are in
+ * their own files and share only the contact writer and the reduction to four points.
+ *
+ * Normals point from geometry 1 to geometry 2; separation < 0 means penetration. */
+#ifndef MCD_NEARFIELD_H
+#define MCD_NEARFIELD_H
+
+#include <stddef.h>
+
+#include "../mcd_internal.h"
+
+/* Relative accuracy of the iterative methods (GJK, EPA), scaled by the pair's size. */
+#if KARMA_DOUBLE
+#  define MCD_NF_REL_EPS ME_R(1e-10)
+#  define MCD_NF_TOUCH ME_R(1e-9)
+#else
+#  define MCD_NF_REL_EPS ME_R(2e-6)
+#  define MCD_NF_TOUCH ME_R(1e-4)
+#endif
+/* A feature (face, edge) counts as facing the normal when it is within ~3 degrees of it. */
+#define MCD_NF_FEATURE_SIN ME_R(0.05)
+#define MCD_NF_FEATURE_COS ME_R(0.99875)
+/* Vertices of the polygon that stands for a disc (cylinder and cone caps) when clipping. */
+#define MCD_NF_DISC_SIDES 8
+#define MCD_NF_MAX_FEATURE MCD_NF_DISC_SIDES
+/* Contacts a pair test keeps at most, whatever the request: four well-spread points hold a body. */
+#define MCD_NF_MAX_CONTACTS 4
+
+/** A geometry placed in the world, as the general path sees it. */
+typedef struct McdNfShape {
+    const McdGeometry *g;
+    MeReal (*tm)[4];
+    int type;
+    MeReal radius; /* rounding radius around the core (sphere, sphyl), else 0 */
+    MeReal size;   /* a length of the shape's size, for relative tolerances */
+} McdNfShape;
+
+void McdNfShapeInit(McdNfShape *s, const McdGeometry *g, MeMatrix4 tm);
+/** The core's support point (world) in world direction d (need not be unit). */
+void McdNfCoreSupport(const McdNfShape *s, const MeVector3 d, MeVector3 out);
+/** The core's feature (world points: 1 vertex, 2 segment, >= 3 convex polygon, ordered) facing the
+ *  unit world direction n. `hint` orients disc polygons when n is along the axis. Returns the count. */
+int McdNfCoreFeature(const McdNfShape *s, const MeVector3 n, const MeVector3 hint, MeVector3 *pts);
+
+/** Result of the core distance / penetration query. */
+typedef struct McdNfDistance {
+    MeReal distance;  /* signed distance between the cores (< 0: they overlap by -distance) */
+    MeVector3 normal; /* unit, core 1 -> core 2 */
+    MeVector3 p1, p2; /* witness points on the cores (p2 - p1 = distance * normal, approximately) */
+} McdNfDistance;
+
+/** GJK distance between the cores. Returns MEFALSE when they overlap (or touch so closely that the
+ *  direction is undefined); *out is then only partly meaningful (the simplex is left for EPA). */
+typedef struct McdNfSimplex {
+    int n;
+    MeVector3 w[4], a[4], b[4]; /* w = a - b: support points of core 1 and core 2 */
+} McdNfSimplex;
+MeBool McdNfGjk(const McdNfShape *s1, const McdNfShape *s2, McdNfSimplex *simplex, McdNfDistance *out);
+/** EPA: penetration depth of overlapping cores, seeded by GJK's final simplex. */
+void McdNfEpa(const McdNfShape *s1, const McdNfShape *s2, const McdNfSimplex *simplex, McdNfDistance *out);
+/** GJK then EPA if needed: signed core distance, normal and witnesses. */
+void McdNfCoreDistance(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance *out);
+
+/** Contact set from the cores' facing features along d->normal: clipping, separation per point,
+ *  kept when <= tolerance, reduced to at most maxContacts. Returns the count. */
+int McdNfManifold(const McdNfShape *s1, const McdNfShape *s2, const McdNfDistance *d, MeReal tolerance,
+                  McdContact *contacts, int maxContacts);
+
+/** The general pair test: GJK/EPA on the cores and the clipped contact set. */
+int McdNfConvexConvex(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+                      MeReal tolerance, McdContact *contacts, int maxContacts, void **cache);
+
+/* ---- contact writing (contact.c) ------------------------------------------------------------ */
+
+/** Write one contact from a point on surface 1 and one on surface 2 along the unit normal.
+ *  Returns 1, or 0 when the separation exceeds the tolerance or no room is left. */
+int McdNfAddPair(McdContact *contacts, int count, int maxContacts, const MeVector3 on1, const MeVector3 on2,
+                 const MeVector3 normal, MeReal tolerance, int dims);
+/** Keep the deepest and best spread `keep` contacts of n (n and keep > 0); returns the new count. */
+int McdNfReduce(McdContact *contacts, int n, int keep);
+/** Write a world point from a local one: out = local * tm. */
+void McdNfToWorld(MeVector3 out, MeMatrix4 tm, const MeVector3 local);
+/** A unit vector perpendicular to the unit n. */
+void McdNfPerpendicular(MeVector3 out, const MeVector3 n);
+/** Closest points of segments [p0,p1] and [q0,q1]: parameters s, t in [0,1]. */
+void McdNfSegmentSegment(const MeVector3 p0, const MeVector3 p1, const MeVector3 q0, const MeVector3 q1,
+                         MeReal *s, MeReal *t);
+
+/* ---- the pair tests (one file per family) ------------------------------------------------- */
+int McdNfSphereSphere(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfSphereBox(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfSphereSphyl(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfSphereCylinder(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfSphylSphyl(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfBoxBox(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
+/* geometry 1 is the shape, geometry 2 the plane */
+int McdNfSpherePlane(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfBoxPlane(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfCylinderPlane(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfSphylPlane(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfConePlane(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
+
+/* ---- the table (table.c) ------------------------------------------------------------------ */
+
+/** One entry of the built-in pair table: the test takes (type1, type2) in this order. */
+typedef struct McdNfPairEntry {
+    int type1, type2;
+    McdNearfieldFn fn;
+    const char *name;
+} McdNfPairEntry;
+/** The built-in pair tests (every pair of sphere, box, cylinder, sphyl, cone, and each vs plane). */
+const McdNfPairEntry *McdNfPairTable(int *count);
+/** The test for (type1, type2), or NULL; *swapped says that it takes them as (type2, type1). */
+McdNearfieldFn McdNfFind(int type1, int type2, int *swapped);
+/** Run the built-in test for any order of the two geometries (swapping contacts back if needed). */
+int McdNfCollide(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2, MeReal tolerance,
+                 McdContact *contacts, int maxContacts);
+
+#endif /* MCD_NEARFIELD_H */

@@ -1,0 +1,410 @@
+/* space_sort.c -- end-point lists of the axis-sort space: incremental insertion sort, merge of new
+ * objects, sweeps (see space.h).
+ *
+ * Each sorted axis keeps the start and end values of every object's box in one array ordered by
+ * (value, end?, slot). Between updates objects move a little, so re-sorting by insertion costs about
+ * one pass plus one swap per change of order. A swap of a start with an end is the only event that
+ * can change whether two boxes overlap on that axis, and a pair whose overlap changed must have had
+ * such a swap on some axis. All values are final before the passes, so: when a start passes an end,
+ * the pair is recorded if the boxes overlap on every axis; when an end passes a start, the boxes are
+ * apart, and the pair is dropped if their boxes of the last sort overlapped (else there is no record).
+ * After the passes the records are exactly the overlaps, with few hash look-ups. */
+#include <string.h>
+
+#include <karma/MeMemory.h>
+
+#include "../me/check.h"
+#include "space.h"
+
+static MeBool epLess(const McdSpaceEndpoint *x, const McdSpaceEndpoint *y)
+{
+    return x->value < y->value || (x->value == y->value && x->tag < y->tag);
+}
+
+/* Bottom-up merge sort of n end points, tmp holding n more (no allocation: qsort may allocate). */
+static void sortEndpoints(McdSpaceEndpoint *list, int n, McdSpaceEndpoint *tmp)
+{
+    McdSpaceEndpoint *src = list, *dst = tmp;
+    for (int width = 1; width < n; width *= 2) {
+        for (int lo = 0; lo < n; lo += 2 * width) {
+            int mid = lo + width < n ? lo + width : n;
+            int hi = lo + 2 * width < n ? lo + 2 * width : n;
+            int i = lo, j = mid, w = lo;
+            while (i < mid || j < hi)
+                dst[w++] = (j >= hi || (i < mid && !epLess(&src[j], &src[i]))) ? src[i++] : src[j++];
+        }
+        McdSpaceEndpoint *t = src;
+        src = dst;
+        dst = t;
+    }
+    if (src != list)
+        memcpy(list, src, (size_t)n * sizeof *list);
+}
+
+MeBool McdSpaceEngineInit(McdSpace *s, int axes, int maxObjects, int maxPairs)
+{
+    s->axes = axes;
+    s->axisCount = 0;
+    for (int k = 0; k < 3; k++)
+        if (axes & (1 << k))
+            s->axis[s->axisCount++] = k;
+    s->maxObjects = maxObjects;
+    s->maxPairs = maxPairs;
+    size_t n = (size_t)(maxObjects > 0 ? maxObjects : 1);
+    s->obj = MeMemoryCreateZeroed(n * sizeof *s->obj);
+    s->freeObj = MeMemoryCreate(n * sizeof(int));
+    s->pending = MeMemoryCreate(n * sizeof(int));
+    s->activeAll = MeMemoryCreate(n * sizeof(int));
+    s->activeNew = MeMemoryCreate(n * sizeof(int));
+    s->activePosAll = MeMemoryCreate(n * sizeof(int));
+    s->activePosNew = MeMemoryCreate(n * sizeof(int));
+    s->epTmp = MeMemoryCreate(2 * n * sizeof(McdSpaceEndpoint));
+    s->box = MeMemoryCreateZeroed(6 * n * sizeof(MeReal));
+    s->prevBox = MeMemoryCreateZeroed(6 * n * sizeof(MeReal));
+    MeBool ok = s->obj && s->freeObj && s->pending && s->activeAll && s->activeNew && s->activePosAll &&
+                s->activePosNew && s->epTmp && s->box && s->prevBox;
+    for (int k = 0; k < s->axisCount; k++) {
+        s->ep[k] = MeMemoryCreate(2 * n * sizeof(McdSpaceEndpoint));
+        ok = ok && s->ep[k];
+    }
+    if (!ok)
+        return MEFALSE;
+    /* Free stack with slot 0 on top: slots are handed out in increasing order. */
+    for (int i = 0; i < maxObjects; i++)
+        s->freeObj[i] = maxObjects - 1 - i;
+    s->freeObjCount = maxObjects;
+    return McdSpacePairsInit(s);
+}
+
+void McdSpaceEngineTerm(McdSpace *s)
+{
+    McdSpacePairsTerm(s);
+    MeMemoryDestroy(s->obj);
+    MeMemoryDestroy(s->freeObj);
+    MeMemoryDestroy(s->pending);
+    MeMemoryDestroy(s->activeAll);
+    MeMemoryDestroy(s->activeNew);
+    MeMemoryDestroy(s->activePosAll);
+    MeMemoryDestroy(s->activePosNew);
+    MeMemoryDestroy(s->epTmp);
+    MeMemoryDestroy(s->box);
+    MeMemoryDestroy(s->prevBox);
+    for (int k = 0; k < 3; k++)
+        MeMemoryDestroy(s->ep[k]);
+}
+
+static MeBool boxIsValid(const MeReal lo[3], const MeReal hi[3])
+{
+    /* Infinite bounds are fine (planes); NaN would break the order. */
+    for (int k = 0; k < 3; k++)
+        if (lo[k] != lo[k] || hi[k] != hi[k] || lo[k] > hi[k])
+            return MEFALSE;
+    return METRUE;
+}
+
+int McdSpaceObjectAdd(McdSpace *s, uintptr_t handle, struct McdModel *model, MeI32 key, const MeReal lo[3], const MeReal hi[3])
+{
+    if (s->freeObjCount == 0)
+        return -1;
+    int slot = s->freeObj[--s->freeObjCount];
+    McdSpaceObject *o = &s->obj[slot];
+    memset(o, 0, sizeof *o);
+    o->handle = handle;
+    o->model = model;
+    o->key = key;
+    o->pairHead = -1;
+    o->flags = MCD_OBJ_LIVE | MCD_OBJ_PENDING;
+    if (!McdSpaceObjectSetAABB(s, slot, lo, hi))
+        for (int k = 0; k < 6; k++)
+            s->box[6 * slot + k] = 0;
+    s->pending[s->pendingCount++] = slot;
+    s->objectCount++;
+    return slot;
+}
+
+void McdSpaceObjectRemove(McdSpace *s, int slot)
+{
+    McdSpaceObject *o = &s->obj[slot];
+    McdSpaceObjectSetCulling(s, slot, NULL, 0, 0);
+    McdSpacePairDetachObject(s, slot);
+    if (o->flags & MCD_OBJ_PENDING) {
+        for (int i = 0; i < s->pendingCount; i++)
+            if (s->pending[i] == slot) {
+                memmove(&s->pending[i], &s->pending[i + 1], (size_t)(s->pendingCount - i - 1) * sizeof(int));
+                s->pendingCount--;
+                break;
+            }
+    }
+    if (o->flags & MCD_OBJ_INLISTS)
+        s->listsDirty = METRUE;
+    o->flags = 0;
+    o->model = NULL;
+    o->handle = 0;
+    s->freeObj[s->freeObjCount++] = slot;
+    s->objectCount--;
+}
+
+MeBool McdSpaceObjectSetAABB(McdSpace *s, int slot, const MeReal lo[3], const MeReal hi[3])
+{
+    if (!boxIsValid(lo, hi))
+        return MEFALSE;
+    MeReal *b = &s->box[6 * slot];
+    for (int k = 0; k < 3; k++) {
+        b[k] = lo[k];
+        b[k + 3] = hi[k];
+    }
+    return METRUE;
+}
+
+void McdSpaceObjectSetCulling(McdSpace *s, int slot, McdCullingTable *table, int index, int id)
+{
+    McdSpaceObject *o = &s->obj[slot];
+    if (o->cull) {
+        o->cull->users--;
+        s->cullingObjects--;
+    }
+    o->cull = table;
+    o->cullIndex = index;
+    o->cullId = id;
+    if (table) {
+        table->users++;
+        s->cullingObjects++;
+    }
+}
+
+MeBool McdSpaceObjectsCulled(const McdSpace *s, int a, int b)
+{
+    const McdSpaceObject *p = &s->obj[a], *q = &s->obj[b];
+    if (!p->cull || p->cull != q->cull || p->cullId != q->cullId)
+        return MEFALSE;
+    int bit = p->cullIndex * p->cull->size + q->cullIndex;
+    return (p->cull->bits[bit >> 3] >> (bit & 7)) & 1;
+}
+
+void McdSpaceObjectSetFrozen(McdSpace *s, int slot, MeBool frozen)
+{
+    McdSpaceObject *o = &s->obj[slot];
+    if (frozen) {
+        o->flags |= MCD_OBJ_FROZEN;
+    } else if (o->flags & MCD_OBJ_FROZEN) {
+        o->flags &= ~MCD_OBJ_FROZEN;
+        McdSpacePairTouchObject(s, slot); /* pairs of two frozen models may start now */
+    }
+}
+
+static MeBool boxesOverlap(const McdSpace *s, const MeReal *box, int a, int b)
+{
+    const MeReal *p = &box[6 * a], *q = &box[6 * b];
+    for (int i = 0; i < s->axisCount; i++) {
+        int k = s->axis[i];
+        if (!(p[k] <= q[k + 3] && q[k] <= p[k + 3]))
+            return MEFALSE;
+    }
+    return METRUE;
+}
+
+MeBool McdSpaceObjectsOverlap(const McdSpace *s, int a, int b) { return boxesOverlap(s, s->box, a, b); }
+
+/* ---- list maintenance --------------------------------------------------------------------- */
+
+/* Drops the end points of objects that left the lists. */
+static void compactLists(McdSpace *s)
+{
+    int n = 0;
+    for (int k = 0; k < s->axisCount; k++) {
+        McdSpaceEndpoint *ep = s->ep[k];
+        n = 0;
+        for (int i = 0; i < s->epCount; i++)
+            if (s->obj[MCD_EP_SLOT(ep[i].tag)].flags & MCD_OBJ_INLISTS)
+                ep[n++] = ep[i];
+    }
+    s->epCount = n;
+    s->listsDirty = MEFALSE;
+}
+
+/* Rewrites the lists' values from the objects' boxes (they change between sorts). */
+static void refreshValues(McdSpace *s)
+{
+    for (int i = 0; i < s->axisCount; i++) {
+        int k = s->axis[i];
+        McdSpaceEndpoint *ep = s->ep[i];
+        for (int j = 0; j < s->epCount; j++)
+            ep[j].value = s->box[6 * MCD_EP_SLOT(ep[j].tag) + k + (MCD_EP_IS_MAX(ep[j].tag) ? 3 : 0)];
+    }
+}
+
+/* Insertion sort of one axis; a start/end swap is the only event that can change a pair. */
+static void insertionSort(McdSpace *s, int axisIndex)
+{
+    McdSpaceEndpoint *ep = s->ep[axisIndex];
+    for (int i = 1; i < s->epCount; i++) {
+        McdSpaceEndpoint e = ep[i];
+        if (!epLess(&e, &ep[i - 1]))
+            continue;
+        int j = i - 1;
+        int se = MCD_EP_SLOT(e.tag);
+        MeBool eMax = MCD_EP_IS_MAX(e.tag);
+        do {
+            const McdSpaceEndpoint *o = &ep[j];
+            if (MCD_EP_IS_MAX(o->tag) != eMax) {
+                int so = MCD_EP_SLOT(o->tag);
+                if (!eMax) { /* a start passed an end: they may begin to overlap (test every axis) */
+                    if (McdSpaceObjectsOverlap(s, se, so))
+                        McdSpacePairSetOverlap(s, se, so, METRUE);
+                } else if (boxesOverlap(s, s->prevBox, se, so)) {
+                    /* An end passed a start: apart now; a pair only if they overlapped before. */
+                    McdSpacePairSetOverlap(s, se, so, MEFALSE);
+                }
+            }
+            ep[j + 1] = ep[j];
+            j--;
+        } while (j >= 0 && epLess(&e, &ep[j]));
+        ep[j + 1] = e;
+    }
+}
+
+static void activeAdd(int *list, int *pos, int *count, int slot)
+{
+    pos[slot] = *count;
+    list[(*count)++] = slot;
+}
+
+static void activeRemove(int *list, int *pos, int *count, int slot)
+{
+    int i = pos[slot];
+    int last = list[--(*count)];
+    list[i] = last;
+    pos[last] = i;
+}
+
+/* Sweep along the first sorted axis finding the overlaps that involve at least one object marked
+ * MCD_OBJ_NEW (every pair when all are marked). Objects are tested against those whose interval is
+ * open when theirs starts, so each overlapping pair is found once. */
+static void sweepNew(McdSpace *s)
+{
+    const McdSpaceEndpoint *ep = s->ep[0];
+    int nAll = 0, nNew = 0;
+    for (int i = 0; i < s->epCount; i++) {
+        int slot = MCD_EP_SLOT(ep[i].tag);
+        MeBool isNew = (s->obj[slot].flags & MCD_OBJ_NEW) != 0;
+        if (MCD_EP_IS_MAX(ep[i].tag)) {
+            activeRemove(s->activeAll, s->activePosAll, &nAll, slot);
+            if (isNew)
+                activeRemove(s->activeNew, s->activePosNew, &nNew, slot);
+            continue;
+        }
+        const int *others = isNew ? s->activeAll : s->activeNew;
+        int count = isNew ? nAll : nNew;
+        for (int j = 0; j < count; j++)
+            if (McdSpaceObjectsOverlap(s, slot, others[j]))
+                McdSpacePairSetOverlap(s, slot, others[j], METRUE);
+        activeAdd(s->activeAll, s->activePosAll, &nAll, slot);
+        if (isNew)
+            activeAdd(s->activeNew, s->activePosNew, &nNew, slot);
+    }
+}
+
+/* Merges the pending objects' end points into the lists and finds their pairs. */
+static void mergePending(McdSpace *s)
+{
+    int k2 = 2 * s->pendingCount;
+    for (int i = 0; i < s->axisCount; i++) {
+        int k = s->axis[i];
+        McdSpaceEndpoint *fresh = s->epTmp;
+        for (int j = 0; j < s->pendingCount; j++) {
+            int slot = s->pending[j];
+            fresh[2 * j].value = s->box[6 * slot + k];
+            fresh[2 * j].tag = (MeU32)slot;
+            fresh[2 * j + 1].value = s->box[6 * slot + k + 3];
+            fresh[2 * j + 1].tag = MCD_EP_MAX | (MeU32)slot;
+        }
+        /* ep[i] has room for every object: its free tail is the sort's scratch, then the merge's
+         * destination (merging from the back). */
+        McdSpaceEndpoint *ep = s->ep[i];
+        sortEndpoints(fresh, k2, ep + s->epCount);
+        int a = s->epCount - 1, b = k2 - 1, w = s->epCount + k2 - 1;
+        while (b >= 0) {
+            if (a >= 0 && epLess(&fresh[b], &ep[a]))
+                ep[w--] = ep[a--];
+            else
+                ep[w--] = fresh[b--];
+        }
+    }
+    s->epCount += k2;
+    for (int j = 0; j < s->pendingCount; j++) {
+        McdSpaceObject *o = &s->obj[s->pending[j]];
+        o->flags = (o->flags & ~MCD_OBJ_PENDING) | MCD_OBJ_INLISTS | MCD_OBJ_NEW;
+    }
+    sweepNew(s);
+    for (int j = 0; j < s->pendingCount; j++)
+        s->obj[s->pending[j]].flags &= ~MCD_OBJ_NEW;
+    s->pendingCount = 0;
+}
+
+/* Looks for every overlap again (after pairs were lost to a full pool). */
+static void sweepAll(McdSpace *s)
+{
+    for (int i = 0; i < s->epCount; i++)
+        if (!MCD_EP_IS_MAX(s->ep[0][i].tag))
+            s->obj[MCD_EP_SLOT(s->ep[0][i].tag)].flags |= MCD_OBJ_NEW;
+    sweepNew(s);
+    for (int i = 0; i < s->epCount; i++)
+        s->obj[MCD_EP_SLOT(s->ep[0][i].tag)].flags &= ~MCD_OBJ_NEW;
+}
+
+/* The boxes the records now reflect: an end event needs a look-up only if the two overlapped. */
+static void keepBoxes(McdSpace *s)
+{
+    memcpy(s->prevBox, s->box, 6 * (size_t)s->maxObjects * sizeof(MeReal));
+}
+
+static void reportLost(McdSpace *s, const char *function)
+{
+    if (s->lostNow > 0)
+        ME_REPORT_IN(function, ME_ERR_POOL_FULL,
+                     "the space's pair pool is full (pairCount = %d): %d overlapping pairs were not recorded "
+                     "(%d so far); raise pairCount in McdSpaceAxisSortCreate",
+                     s->maxPairs, s->lostNow, s->lostTotal);
+    s->lostNow = 0;
+}
+
+void McdSpaceSort(McdSpace *s, MeBool sort, const char *function)
+{
+    /* Lost pairs are looked for again at updates only (not at EndChanges: once per step is enough). */
+    MeBool retry = sort && s->lostPending;
+    if (retry)
+        s->lostPending = MEFALSE;
+    if (s->listsDirty)
+        compactLists(s);
+    if (sort) {
+        refreshValues(s);
+        for (int i = 0; i < s->axisCount; i++)
+            insertionSort(s, i);
+    }
+    if (s->pendingCount > 0)
+        mergePending(s);
+    if (retry)
+        sweepAll(s);
+    keepBoxes(s);
+    reportLost(s, function);
+}
+
+void McdSpaceRebuild(McdSpace *s, const char *function)
+{
+    s->lostPending = MEFALSE;
+    /* Every object becomes pending again; the merge then sorts and sweeps them all. */
+    for (int slot = 0; slot < s->maxObjects; slot++) {
+        McdSpaceObject *o = &s->obj[slot];
+        if (o->flags & MCD_OBJ_INLISTS) {
+            o->flags = (o->flags & ~MCD_OBJ_INLISTS) | MCD_OBJ_PENDING;
+            s->pending[s->pendingCount++] = slot;
+        }
+    }
+    s->epCount = 0;
+    s->listsDirty = MEFALSE;
+    McdSpacePairRecheckAll(s);
+    if (s->pendingCount > 0)
+        mergePending(s);
+    keepBoxes(s);
+    reportLost(s, function);
+}

@@ -1,0 +1,385 @@
+/* bridge.c -- MstBridge: creating it, and turning the space's pairs into dynamics contacts.
+ *
+ * A pair's MdtContactGroup hangs on McdModelPair.userData while the models intersect. Its contacts
+ * are refreshed in place each step (the i-th contact of the test reuses the group's i-th contact,
+ * after matching by position, see matchContacts), so the solver's warm start carries over between
+ * steps. The group is destroyed when the models stop intersecting, at Goodbye, or when a per-pair
+ * callback drops the pair. */
+#include <string.h>
+
+#include <karma/McdInteraction.h>
+#include <karma/McdModel.h>
+#include <karma/MeMemory.h>
+#include <karma/MdtBody.h>
+#include <karma/MdtContact.h>
+#include <karma/MdtContactGroup.h>
+#include <karma/MdtWorld.h>
+
+#include "../mcd/mcd_internal.h"
+#include "../mcd/framework.h"
+#include "../mdt/body.h"
+#include "../me/check.h"
+#include "../me/handle.h"
+#include "bridge.h"
+
+#define DEFAULT_PAIR_BUFFER 128
+#define DEFAULT_CONTACT_BUFFER 32
+
+MstBridge *MstBridgeFromID(MstBridgeID id, const char *function)
+{
+    return MeHandleResolveOwner((uintptr_t)id, ME_HANDLE_BRIDGE, function, "b");
+}
+
+MstBridgeID MstBridgeCreate(McdFrameworkID frame, int maxMaterials)
+{
+    if (maxMaterials < 1) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'maxMaterials' (%d) must be at least 1", maxMaterials);
+        return NULL;
+    }
+    MstBridge *b = MeMemoryCreateZeroed(sizeof *b);
+    if (!b)
+        return NULL;
+    b->framework = frame;
+    b->maxMaterials = maxMaterials;
+    b->materialCount = 1; /* the default material */
+    b->table = MeMemoryCreateZeroed(sizeof *b->table * (size_t)maxMaterials * (size_t)maxMaterials);
+    b->pairBufferSize = DEFAULT_PAIR_BUFFER;
+    b->pairs = McdModelPairContainerCreate(b->pairBufferSize);
+    b->contactBufferSize = DEFAULT_CONTACT_BUFFER;
+    b->contacts = MeMemoryCreate(sizeof *b->contacts * (size_t)b->contactBufferSize);
+    b->ownerSlot = (b->table && b->pairs && b->contacts) ? MeHandleRegisterOwner(b, ME_HANDLE_BRIDGE, __func__) : 0;
+    if (!b->ownerSlot) {
+        MeMemoryDestroy(b->table);
+        if (b->pairs)
+            McdModelPairContainerDestroy(b->pairs);
+        MeMemoryDestroy(b->contacts);
+        MeMemoryDestroy(b);
+        return NULL;
+    }
+    b->id = MeHandleOfOwner(b->ownerSlot);
+    for (int i = 0; i < maxMaterials * maxMaterials; i++)
+        MdtContactParamsReset(&b->table[i].params);
+    return (MstBridgeID)b->id;
+}
+
+void MstBridgeDestroy(MstBridgeID id)
+{
+    MstBridge *b = MstBridgeFromID(id, __func__);
+    if (!b)
+        return;
+    MeHandleUnregisterOwner(b->ownerSlot);
+    McdModelPairContainerDestroy(b->pairs);
+    MeMemoryDestroy(b->contacts);
+    MeMemoryDestroy(b->table);
+    MeMemoryDestroy(b);
+}
+
+MeBool MstBridgeIsValid(MstBridgeID id) { return MeHandleIsValid((uintptr_t)id, ME_HANDLE_BRIDGE); }
+
+void MstBridgeSetModelPairBufferSize(MstBridgeID id, int size)
+{
+    MstBridge *b = MstBridgeFromID(id, __func__);
+    if (!b)
+        return;
+    if (size < 1) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'size' (%d) must be at least 1", size);
+        return;
+    }
+    McdModelPairContainer *c = McdModelPairContainerCreate(size);
+    if (!c)
+        return;
+    McdModelPairContainerDestroy(b->pairs);
+    b->pairs = c;
+    b->pairBufferSize = size;
+}
+
+int MstBridgeGetModelPairBufferSize(MstBridgeID id)
+{
+    MstBridge *b = MstBridgeFromID(id, __func__);
+    return b ? b->pairBufferSize : 0;
+}
+
+void MstBridgeSetContactBufferSize(MstBridgeID id, int size)
+{
+    MstBridge *b = MstBridgeFromID(id, __func__);
+    if (!b)
+        return;
+    if (size < 1) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'size' (%d) must be at least 1", size);
+        return;
+    }
+    McdContact *c = MeMemoryCreate(sizeof *c * (size_t)size);
+    if (!c)
+        return;
+    MeMemoryDestroy(b->contacts);
+    b->contacts = c;
+    b->contactBufferSize = size;
+}
+
+int MstBridgeGetContactBufferSize(MstBridgeID id)
+{
+    MstBridge *b = MstBridgeFromID(id, __func__);
+    return b ? b->contactBufferSize : 0;
+}
+
+int MstBridgeGetLastPairCount(MstBridgeID id)
+{
+    MstBridge *b = MstBridgeFromID(id, __func__);
+    return b ? b->lastPairCount : 0;
+}
+
+int MstBridgeGetLastContactCount(MstBridgeID id)
+{
+    MstBridge *b = MstBridgeFromID(id, __func__);
+    return b ? b->lastContactCount : 0;
+}
+
+/* ---- the update --------------------------------------------------------------------------- */
+
+static void destroyGroup(McdModelPair *pair)
+{
+    MdtContactGroupID g = (MdtContactGroupID)pair->userData;
+    pair->userData = NULL;
+    if (g && MdtConstraintIsValid(MdtContactGroupQuaConstraint(g))) {
+        MdtContactGroupSetGenerator(g, NULL); /* the destroy handler must not touch the pair again */
+        MdtContactGroupDestroy(g);
+    }
+}
+
+void MstHandleTransitions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorldID world, MstBridgeID id)
+{
+    (void)space;
+    (void)world;
+    MstBridge *b = MstBridgeFromID(id, __func__);
+    if (!b)
+        return;
+    ME_CHECK_NOT_NULL(pairs, ME_NOTHING);
+    int n;
+    McdModelPairID *goodbye = McdModelPairContainerGetGoodbyeArray(pairs, &n);
+    for (int i = 0; i < n; i++) {
+        destroyGroup(goodbye[i]);
+        McdGoodbye(goodbye[i]);
+    }
+    McdModelPairID *hello = McdModelPairContainerGetHelloArray(pairs, &n);
+    for (int i = 0; i < n; i++) {
+        hello[i]->userData = NULL;
+        McdHello(hello[i]);
+    }
+}
+
+/* The group's existing contacts are reused for the new ones; a new contact takes the old contact
+ * nearest to it (greedy, in the test's order), so that warm-start impulses follow the points. */
+static int matchContacts(MdtContactGroupID g, const McdContact *in, int n, MdtContactID *out)
+{
+    enum { MAX_OLD = 64 };
+    MdtContactID old[MAX_OLD];
+    MeVector3 oldPos[MAX_OLD];
+    int oldCount = 0;
+    for (MdtContactID c = MdtContactGroupGetFirstContact(g); c && oldCount < MAX_OLD;
+         c = MdtContactGroupGetNextContact(g, c)) {
+        old[oldCount] = c;
+        MdtContactGetPosition(c, oldPos[oldCount]);
+        oldCount++;
+    }
+    MeBool used[MAX_OLD] = {0};
+    for (int i = 0; i < n; i++) {
+        int best = -1;
+        MeReal bestD = MEINFINITY;
+        for (int k = 0; k < oldCount; k++) {
+            if (used[k])
+                continue;
+            MeReal d = MeVector3DistanceSqr(oldPos[k], in[i].position);
+            if (d < bestD) {
+                bestD = d;
+                best = k;
+            }
+        }
+        if (best >= 0) {
+            used[best] = METRUE;
+            out[i] = old[best];
+        } else {
+            out[i] = MdtContactGroupCreateContact(g);
+            if (!out[i])
+                return i; /* constraint pool full: reported by Mdt */
+        }
+    }
+    for (int k = 0; k < oldCount; k++)
+        if (!used[k])
+            MdtContactGroupDestroyContact(g, old[k]);
+    return n;
+}
+
+/* Test one pair and convert its contacts; returns the number of dynamics contacts made. */
+static int collidePair(MstBridge *b, McdModelPair *pair, MdtWorldID world)
+{
+    McdModel *m1 = McdModelFromID(pair->model1, __func__);
+    McdModel *m2 = McdModelFromID(pair->model2, __func__);
+    if (!m1 || !m2)
+        return 0;
+    MdtBodyID b1 = (MdtBodyID)m1->body, b2 = (MdtBodyID)m2->body;
+    if (m1->frozen && m2->frozen)
+        return MdtContactGroupGetCount((MdtContactGroupID)pair->userData); /* kept as they were */
+    if (!b1 && !b2)
+        return 0; /* two pieces of the world */
+    McdIntersectResult result;
+    memset(&result, 0, sizeof result);
+    result.contacts = b->contacts;
+    result.contactMaxCount = b->contactBufferSize;
+    McdIntersect(pair, &result);
+    MstMaterialPair *mat = MstBridgeMaterialPair(b, m1->material, m2->material, "MstHandleCollisions");
+    if (!mat)
+        return 0;
+    if (result.contactCount > 0 && mat->intersectCB)
+        mat->intersectCB(&result);
+    if (result.contactCount <= 0) {
+        destroyGroup(pair);
+        return 0;
+    }
+    /* The dynamic body is body 0: a pair whose model 1 is part of the world is turned round. */
+    MeBool swapped = !b1;
+    MeReal sign = swapped ? -1 : 1;
+    MdtContactGroupID g = (MdtContactGroupID)pair->userData;
+    if (!g) {
+        g = MdtContactGroupCreate(world);
+        if (!g)
+            return 0; /* pool full: reported by Mdt */
+        MdtConstraintSetBodies(MdtContactGroupQuaConstraint(g), swapped ? b2 : b1, swapped ? NULL : b2);
+        MdtContactGroupSetSwapped(g, swapped);
+        MdtContactGroupSetGenerator(g, pair);
+        MdtConstraintEnable(MdtContactGroupQuaConstraint(g));
+        pair->userData = g;
+    }
+    int n = result.contactCount;
+    MdtContactID dyn[DEFAULT_CONTACT_BUFFER * 8];
+    if (n > (int)(sizeof dyn / sizeof dyn[0]))
+        n = (int)(sizeof dyn / sizeof dyn[0]);
+    n = matchContacts(g, result.contacts, n, dyn);
+    int kept = 0;
+    for (int i = 0; i < n; i++) {
+        const McdContact *c = &result.contacts[i];
+        MdtContactSetParams(dyn[i], &mat->params);
+        MdtContactSetPosition(dyn[i], c->position[0], c->position[1], c->position[2]);
+        MdtContactSetNormal(dyn[i], sign * c->normal[0], sign * c->normal[1], sign * c->normal[2]);
+        MdtContactSetPenetration(dyn[i], -c->separation);
+        if (mat->perContactCB && !mat->perContactCB(&result, &result.contacts[i], dyn[i]))
+            MdtContactGroupDestroyContact(g, dyn[i]);
+        else
+            kept++;
+    }
+    if (kept == 0 || (mat->perPairCB && !mat->perPairCB(&result, g))) {
+        destroyGroup(pair);
+        return 0;
+    }
+    return kept;
+}
+
+void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorldID world, MstBridgeID id)
+{
+    (void)space;
+    MstBridge *b = MstBridgeFromID(id, __func__);
+    if (!b)
+        return;
+    ME_CHECK_NOT_NULL(pairs, ME_NOTHING);
+    int n;
+    McdModelPairID *hello = McdModelPairContainerGetHelloArray(pairs, &n);
+    for (int i = 0; i < n; i++) {
+        b->lastContactCount += collidePair(b, hello[i], world);
+        b->lastPairCount++;
+    }
+    McdModelPairID *staying = McdModelPairContainerGetStayingArray(pairs, &n);
+    for (int i = 0; i < n; i++) {
+        b->lastContactCount += collidePair(b, staying[i], world);
+        b->lastPairCount++;
+    }
+}
+
+void MstBridgeUpdateContacts(MstBridgeID id, McdSpaceID space, MdtWorldID world)
+{
+    MstBridge *b = MstBridgeFromID(id, __func__);
+    if (!b)
+        return;
+    b->lastPairCount = b->lastContactCount = 0;
+    if (McdSpaceIsChanging(space))
+        McdSpaceEndChanges(space);
+    McdSpacePairIterator it;
+    McdSpacePairIteratorBegin(space, &it);
+    MeBool more;
+    do {
+        McdModelPairContainerReset(b->pairs);
+        more = McdSpaceGetPairs(space, &it, b->pairs);
+        MstHandleTransitions(b->pairs, space, world, id);
+        MstHandleCollisions(b->pairs, space, world, id);
+    } while (more);
+    McdSpaceBeginChanges(space);
+}
+
+/* ---- linking models and bodies -------------------------------------------------------------- */
+
+/* The model the bridge linked to a body, or NULL (quietly: the model may have been destroyed). */
+static McdModel *linkedModel(MdtBodyID body)
+{
+    MdtBody *bd = MdtBodyFromID(body, "MstSetWorldHandlers");
+    if (!bd || !bd->bridgeModel || !MeHandleIsValid(bd->bridgeModel, ME_HANDLE_MODEL))
+        return NULL;
+    return McdModelFromID((McdModelID)bd->bridgeModel, "MstSetWorldHandlers");
+}
+
+static void onBodyEnabled(MdtBodyID body, void *data)
+{
+    (void)data;
+    McdModel *m = linkedModel(body);
+    if (m && m->space && m->frozen)
+        McdSpaceUnfreezeModel((McdModelID)m->id);
+}
+
+static void onBodyDisabled(MdtBodyID body, void *data)
+{
+    (void)data;
+    McdModel *m = linkedModel(body);
+    if (m && m->space && !m->frozen)
+        McdSpaceFreezeModel((McdModelID)m->id);
+}
+
+static void onGroupDestroyed(MdtContactGroupID g, void *data)
+{
+    (void)data;
+    McdModelPair *pair = MdtContactGroupGetGenerator(g);
+    if (pair && pair->userData == (void *)g)
+        pair->userData = NULL;
+}
+
+void MstSetWorldHandlers(MdtWorldID world)
+{
+    MdtWorldSetBodyEnableCallback(world, onBodyEnabled, NULL);
+    MdtWorldSetBodyDisableCallback(world, onBodyDisabled, NULL);
+    MdtWorldSetContactGroupDestroyCallback(world, onGroupDestroyed, NULL);
+}
+
+void McdModelSetBody(McdModelID id, MdtBodyID body)
+{
+    McdModel *m = McdModelFromID(id, __func__);
+    if (!m)
+        return;
+    MdtBody *bd = NULL;
+    if (body) {
+        bd = MdtBodyFromID(body, __func__);
+        if (!bd)
+            return;
+    }
+    if (m->body && MeHandleIsValid((uintptr_t)m->body, ME_HANDLE_BODY)) {
+        MdtBody *old = MdtBodyFromID((MdtBodyID)m->body, __func__);
+        if (old && old->bridgeModel == m->id)
+            old->bridgeModel = 0;
+    }
+    m->body = body;
+    if (bd) {
+        bd->bridgeModel = m->id;
+        McdModelSetTransformPtr(id, MdtBodyGetTransformPtr(body));
+    }
+}
+
+MdtBodyID McdModelGetBody(McdModelID id)
+{
+    McdModel *m = McdModelFromID(id, __func__);
+    return m ? (MdtBodyID)m->body : NULL;
+}

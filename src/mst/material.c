@@ -1,0 +1,75 @@
+/* material.c -- the bridge's material table: contact parameters and callbacks per material pair.
+ *
+ * The table is symmetric: (m1, m2) and (m2, m1) name one entry, stored at (min, max). Parameters are
+ * copied by value into each new dynamics contact, so the application may change a contact's own
+ * copy in a per-contact callback without touching the table. */
+#include <karma/MeMemory.h>
+
+#include "../me/check.h"
+#include "bridge.h"
+
+MstMaterialPair *MstBridgeMaterialPair(MstBridge *b, MstMaterialID m1, MstMaterialID m2, const char *function)
+{
+    if (m1 < 0 || m1 >= b->materialCount || m2 < 0 || m2 >= b->materialCount) {
+        ME_REPORT_IN(function, ME_ERR_MST_MATERIAL,
+                     "material pair (%d, %d) is out of range: the bridge has %d material(s)", m1, m2,
+                     b->materialCount);
+        return NULL;
+    }
+    int lo = m1 < m2 ? m1 : m2, hi = m1 < m2 ? m2 : m1;
+    return &b->table[lo * b->maxMaterials + hi];
+}
+
+MstMaterialID MstBridgeGetDefaultMaterial(void) { return 0; }
+
+MstMaterialID MstBridgeGetNewMaterial(MstBridgeID id)
+{
+    MstBridge *b = MstBridgeFromID(id, __func__);
+    if (!b)
+        return -1;
+    if (b->materialCount >= b->maxMaterials) {
+        ME_REPORT(ME_ERR_POOL_FULL, "the material table is full (%d materials): raise maxMaterials "
+                  "(MstBridgeCreate, or MstUniverseSizes.materialsMaxCount)", b->maxMaterials);
+        return -1;
+    }
+    return b->materialCount++;
+}
+
+int MstBridgeGetMaterialCount(MstBridgeID id)
+{
+    MstBridge *b = MstBridgeFromID(id, __func__);
+    return b ? b->materialCount : 0;
+}
+
+int MstBridgeGetMaxMaterials(MstBridgeID id)
+{
+    MstBridge *b = MstBridgeFromID(id, __func__);
+    return b ? b->maxMaterials : 0;
+}
+
+MdtContactParamsID MstBridgeGetContactParams(MstBridgeID id, MstMaterialID m1, MstMaterialID m2)
+{
+    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstMaterialPair *e = b ? MstBridgeMaterialPair(b, m1, m2, __func__) : NULL;
+    return e ? &e->params : NULL;
+}
+
+/* Setter and getter of one callback field of the table. */
+#define MATERIAL_CALLBACK(Name, Type, field)                                                         \
+    void MstBridgeSet##Name(MstBridgeID id, MstMaterialID m1, MstMaterialID m2, Type cb)             \
+    {                                                                                                \
+        MstBridge *b = MstBridgeFromID(id, __func__);                                                \
+        MstMaterialPair *e = b ? MstBridgeMaterialPair(b, m1, m2, __func__) : NULL;                  \
+        if (e)                                                                                       \
+            e->field = cb;                                                                           \
+    }                                                                                                \
+    Type MstBridgeGet##Name(MstBridgeID id, MstMaterialID m1, MstMaterialID m2)                      \
+    {                                                                                                \
+        MstBridge *b = MstBridgeFromID(id, __func__);                                                \
+        MstMaterialPair *e = b ? MstBridgeMaterialPair(b, m1, m2, __func__) : NULL;                  \
+        return e ? e->field : NULL;                                                                  \
+    }
+
+MATERIAL_CALLBACK(IntersectCB, MstIntersectCBPtr, intersectCB)
+MATERIAL_CALLBACK(PerContactCB, MstPerContactCBPtr, perContactCB)
+MATERIAL_CALLBACK(PerPairCB, MstPerPairCBPtr, perPairCB)

@@ -1,0 +1,449 @@
+/* The benchmark scenes (bench/scenes) checked as data: the sizes issue 5 asks for, no two bodies
+ * overlapping at the start (brute force over every pair), joints whose anchors agree at the initial
+ * pose, and quality figures that measure what they claim on hand-made poses. The engines that run the
+ * scenes (ODE, Bullet, later Karma) are benchmarks, not tests; this is the part every engine shares. */
+#include "karma_test.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench_scenes.h"
+
+/* ---- geometry for the overlap check ------------------------------------------------------------- */
+
+static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* Closest distance between segments p0-p1 and q0-q1 (Ericson, Real-Time Collision Detection, 5.1.9). */
+static double segment_distance(const double p0[3], const double p1[3], const double q0[3], const double q1[3])
+{
+    double d1[3], d2[3], r[3];
+    for (int i = 0; i < 3; i++) {
+        d1[i] = p1[i] - p0[i];
+        d2[i] = q1[i] - q0[i];
+        r[i] = p0[i] - q0[i];
+    }
+    double a = dot3(d1, d1), e = dot3(d2, d2), f = dot3(d2, r), s = 0, t = 0;
+    if (a <= 1e-15 && e <= 1e-15) {
+        s = t = 0;
+    } else if (a <= 1e-15) {
+        t = fmin(fmax(f / e, 0), 1);
+    } else {
+        double c = dot3(d1, r);
+        if (e <= 1e-15) {
+            s = fmin(fmax(-c / a, 0), 1);
+        } else {
+            double b = dot3(d1, d2), denom = a * e - b * b;
+            s = denom > 1e-15 ? fmin(fmax((b * f - c * e) / denom, 0), 1) : 0;
+            t = (b * s + f) / e;
+            if (t < 0) {
+                t = 0;
+                s = fmin(fmax(-c / a, 0), 1);
+            } else if (t > 1) {
+                t = 1;
+                s = fmin(fmax((b - c) / a, 0), 1);
+            }
+        }
+    }
+    double d = 0;
+    for (int i = 0; i < 3; i++) {
+        double x = (p0[i] + d1[i] * s) - (q0[i] + d2[i] * t);
+        d += x * x;
+    }
+    return sqrt(d);
+}
+
+/* A sphere or capsule as its core segment and radius. */
+static void round_core(const BenchBody *b, double p0[3], double p1[3])
+{
+    double half[3] = {0, 0, b->shape == BENCH_CAPSULE ? b->size[1] : 0}, w[3];
+    BenchQuatRotate(w, b->quat, half);
+    for (int i = 0; i < 3; i++) {
+        p0[i] = b->pos[i] - w[i];
+        p1[i] = b->pos[i] + w[i];
+    }
+}
+
+/* World AABB of any body (exact for boxes and capsules). */
+static void body_aabb(const BenchBody *b, double lo[3], double hi[3])
+{
+    double reach[3] = {0, 0, 0};
+    if (b->shape == BENCH_BOX) {
+        const double axes[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+        for (int k = 0; k < 3; k++) {
+            double w[3];
+            BenchQuatRotate(w, b->quat, axes[k]);
+            for (int i = 0; i < 3; i++)
+                reach[i] += fabs(w[i]) * b->size[k];
+        }
+    } else {
+        double p0[3], p1[3];
+        round_core(b, p0, p1);
+        for (int i = 0; i < 3; i++)
+            reach[i] = 0.5 * fabs(p1[i] - p0[i]) + b->size[0];
+    }
+    for (int i = 0; i < 3; i++) {
+        lo[i] = b->pos[i] - reach[i];
+        hi[i] = b->pos[i] + reach[i];
+    }
+}
+
+static int joined(const BenchScene *s, int a, int b)
+{
+    for (int k = 0; k < s->jointCount; k++) {
+        const int *j = s->joints[k].body;
+        if ((j[0] == a && j[1] == b) || (j[0] == b && j[1] == a))
+            return 1;
+    }
+    return 0;
+}
+
+/* Smallest gap between two bodies that no joint joins: exact for round pairs (segment distance), a
+ * separating-AABB gap otherwise (negative = overlap of the boxes, so a pass proves no overlap). */
+static double smallest_gap(const BenchScene *s)
+{
+    double smallest = 1e9;
+    for (int a = 0; a < s->bodyCount; a++)
+        for (int b = a + 1; b < s->bodyCount; b++) {
+            const BenchBody *A = &s->bodies[a], *B = &s->bodies[b];
+            if (A->fixed && B->fixed)
+                continue;
+            /* the AABB gap never exceeds the true gap: pairs it puts past the smallest are skipped */
+            double alo[3], ahi[3], blo[3], bhi[3], gap = -1e9;
+            body_aabb(A, alo, ahi);
+            body_aabb(B, blo, bhi);
+            for (int i = 0; i < 3; i++)
+                gap = fmax(gap, fmax(blo[i] - ahi[i], alo[i] - bhi[i]));
+            if (gap >= smallest)
+                continue;
+            if (A->shape != BENCH_BOX && B->shape != BENCH_BOX) {
+                double a0[3], a1[3], b0[3], b1[3];
+                round_core(A, a0, a1);
+                round_core(B, b0, b1);
+                gap = segment_distance(a0, a1, b0, b1) - A->size[0] - B->size[0];
+            }
+            if (gap < smallest && !joined(s, a, b))
+                smallest = gap;
+        }
+    return smallest;
+}
+
+static double lowest_point(const BenchScene *s)
+{
+    double lowest = 1e9;
+    for (int i = 0; i < s->bodyCount; i++) {
+        double lo[3], hi[3];
+        body_aabb(&s->bodies[i], lo, hi);
+        if (!s->bodies[i].fixed)
+            lowest = fmin(lowest, lo[2]);
+    }
+    return lowest;
+}
+
+static void initial_poses(const BenchScene *s, double (**pos)[3], double (**quat)[4])
+{
+    *pos = malloc(sizeof **pos * (size_t)s->bodyCount);
+    *quat = malloc(sizeof **quat * (size_t)s->bodyCount);
+    assert_non_null(*pos);
+    assert_non_null(*quat);
+    for (int i = 0; i < s->bodyCount; i++) {
+        memcpy((*pos)[i], s->bodies[i].pos, sizeof(*pos)[i]);
+        memcpy((*quat)[i], s->bodies[i].quat, sizeof(*quat)[i]);
+    }
+}
+
+/* ---- tests ---------------------------------------------------------------------------------------- */
+
+/* The six standard scenes: the counts and settings issue 5 names, valid data, nothing overlapping. */
+static void standard_scenes(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *name;
+        int dynamic, fixed, joints, steps, ground;
+    } expect[] = {
+        {"pyramid20", 210, 0, 0, 600, 1}, {"pyramid40", 820, 0, 0, 600, 1}, {"pile", 1000, 4, 0, 600, 1},
+        {"chain", 100, 0, 100, 600, 0},   {"ragdolls", 1100, 0, 1000, 600, 1}, {"column", 20, 0, 0, 1200, 1},
+    };
+    char names[] = BENCH_STANDARD_SCENES;
+    int k = 0;
+    for (char *name = strtok(names, ","); name; name = strtok(NULL, ","), k++) {
+        assert_true(k < 6);
+        BenchScene *s = BenchSceneCreate(name);
+        assert_non_null(s);
+        assert_string_equal(s->name, expect[k].name);
+        assert_int_equal(s->dynamicCount, expect[k].dynamic);
+        assert_int_equal(s->bodyCount - s->dynamicCount, expect[k].fixed);
+        assert_int_equal(s->jointCount, expect[k].joints);
+        assert_int_equal(s->steps, expect[k].steps);
+        assert_int_equal(s->hasGround, expect[k].ground);
+        assert_near(s->step, 1.0 / 60, 1e-15);
+        assert_near(s->friction, 0.6, 0);
+        assert_near(s->gravity[0], 0, 0);
+        assert_near(s->gravity[2], -9.81, 0);
+        for (int i = 0; i < s->bodyCount; i++) {
+            const BenchBody *b = &s->bodies[i];
+            double n = sqrt(b->quat[0] * b->quat[0] + b->quat[1] * b->quat[1] + b->quat[2] * b->quat[2] +
+                            b->quat[3] * b->quat[3]);
+            assert_near(n, 1, 1e-12);
+            assert_true(b->size[0] > 0);
+            if (!b->fixed)
+                assert_true(b->mass >= 1.0 && b->mass <= 15.0); /* within 15x of the 1 kg unit box */
+        }
+        double gap = smallest_gap(s), lowest = lowest_point(s);
+        print_message("%-10s %4d bodies %4d joints: smallest gap between bodies %.4f m, lowest point %.4f m\n",
+                      s->name, s->dynamicCount, s->jointCount, gap, lowest);
+        assert_true(gap >= -1e-12); /* stacks start exactly touching (gap 0), nothing overlaps */
+        if (s->hasGround)
+            assert_true(lowest >= -1e-12);
+        BenchSceneDestroy(s);
+    }
+    assert_int_equal(k, 6);
+}
+
+/* Names with counts build scaled scenes; bad names and counts give NULL. */
+static void scene_names(void **state)
+{
+    (void)state;
+    BenchScene *s = BenchSceneCreate("pyramid3");
+    assert_non_null(s);
+    assert_int_equal(s->dynamicCount, 6);
+    /* rows at z = 0.5, 1.5, 2.5; the top box centred over the base */
+    assert_near(s->bodies[5].pos[2], 2.5, 0);
+    assert_near(s->bodies[5].pos[0], 0, 1e-15);
+    assert_near(s->bodies[1].pos[0] - s->bodies[0].pos[0], 1.05, 1e-12);
+    BenchSceneDestroy(s);
+    s = BenchSceneCreate("column5");
+    assert_non_null(s);
+    assert_int_equal(s->dynamicCount, 5);
+    assert_near(s->bodies[4].pos[2], 4.5, 0);
+    BenchSceneDestroy(s);
+    s = BenchSceneCreate("pile10");
+    assert_non_null(s);
+    assert_int_equal(s->dynamicCount, 20);
+    int spheres = 0;
+    for (int i = 0; i < s->bodyCount; i++)
+        spheres += s->bodies[i].shape == BENCH_SPHERE;
+    assert_int_equal(spheres, 10);
+    BenchSceneDestroy(s);
+    assert_null(BenchSceneCreate("pyramid"));
+    assert_null(BenchSceneCreate("pyramid0"));
+    assert_null(BenchSceneCreate("column-3"));
+    assert_null(BenchSceneCreate("tower"));
+    assert_null(BenchSceneCreate(NULL));
+}
+
+/* Each ragdoll weighs 58 kg; the chain hangs from the origin; every joint's two local anchors name
+ * the same world point at the start (joint error 0), and a hinge axis is a unit vector. */
+static void joints_agree_at_start(void **state)
+{
+    (void)state;
+    const char *names[] = {"chain", "ragdolls"};
+    for (int n = 0; n < 2; n++) {
+        BenchScene *s = BenchSceneCreate(names[n]);
+        assert_non_null(s);
+        double (*pos)[3], (*quat)[4];
+        initial_poses(s, &pos, &quat);
+        double err = BenchJointError(s, (const double(*)[3])pos, (const double(*)[4])quat);
+        print_message("%s: joint error at the initial pose %.3e m\n", s->name, err);
+        assert_true(err < 1e-12);
+        for (int k = 0; k < s->jointCount; k++)
+            if (s->joints[k].type == BENCH_HINGE) {
+                assert_near(sqrt(dot3(s->joints[k].axis, s->joints[k].axis)), 1, 1e-12);
+                assert_true(s->joints[k].limited && s->joints[k].lo <= 0 && s->joints[k].hi >= 0);
+            }
+        if (n == 0) {
+            assert_int_equal(s->joints[0].body[1], -1);
+            assert_near(s->joints[0].anchor[0], 0, 0);
+        } else {
+            double total = 0;
+            for (int i = 0; i < 11; i++)
+                total += s->bodies[i].mass;
+            assert_near(total, 58, 1e-12);
+        }
+        free(pos), free(quat);
+        BenchSceneDestroy(s);
+    }
+}
+
+/* Joint error measures what it says: moving a chain link by d opens its two joints by |d|; turning
+ * the first link about its fixed anchor opens nothing at the anchor and the link's far joint by the
+ * chord 2 L sin(θ/2). */
+static void joint_error_is_a_distance(void **state)
+{
+    (void)state;
+    BenchScene *s = BenchSceneCreate("chain3");
+    assert_non_null(s);
+    double (*pos)[3], (*quat)[4];
+    initial_poses(s, &pos, &quat);
+    pos[1][1] += 0.03;
+    pos[1][2] -= 0.04;
+    assert_near(BenchJointError(s, (const double(*)[3])pos, (const double(*)[4])quat), 0.05, 1e-12);
+    memcpy(pos[1], s->bodies[1].pos, sizeof pos[1]);
+    /* turn link 0 by θ about world y through its anchor at the origin */
+    const double y[3] = {0, 1, 0}, theta = 0.4;
+    double r[4], c[3];
+    BenchQuatFromAxisAngle(r, y, theta);
+    BenchQuatMultiply(quat[0], r, s->bodies[0].quat);
+    BenchQuatRotate(c, r, s->bodies[0].pos);
+    memcpy(pos[0], c, sizeof c);
+    double err = BenchJointError(s, (const double(*)[3])pos, (const double(*)[4])quat);
+    assert_near(err, 2 * 1.0 * sin(theta / 2), 1e-12);
+    print_message("chain3: link turned by %.2f rad about its anchor opens its far joint by %.6f m (chord %.6f)\n",
+                  theta, err, 2 * sin(theta / 2));
+    free(pos), free(quat);
+    BenchSceneDestroy(s);
+}
+
+static void finish(const BenchScene *s, BenchQuality *q, double (*pos)[3], double (*quat)[4], int complete)
+{
+    BenchQualityFinish(s, q, (const double(*)[3])pos, (const double(*)[4])quat, complete);
+}
+
+/* A scene and its quality tracker at the initial poses. */
+static BenchScene *start(const char *name, BenchQuality *q, double (**pos)[3], double (**quat)[4])
+{
+    BenchScene *s = BenchSceneCreate(name);
+    assert_non_null(s);
+    initial_poses(s, pos, quat);
+    BenchQualityInit(s, q);
+    return s;
+}
+
+/* Quality figures on hand-made end poses: drift, top displacement, the fall verdict at half an
+ * edge, escapes from the pile's container, floor penetration of a tilted box, NaN. */
+static void quality_figures(void **state)
+{
+    (void)state;
+    double (*pos)[3], (*quat)[4];
+    BenchQuality q;
+    BenchScene *s = start("pyramid3", &q, &pos, &quat);
+    pos[2][0] += 0.3;
+    pos[2][1] += 0.4; /* 0.5 m: just fallen */
+    pos[4][2] -= 0.2;
+    BenchQualityObserve(s, &q, (const double(*)[3])pos, (const double(*)[4])quat);
+    finish(s, &q, pos, quat, 1);
+    assert_near(q.value, 0.5, 1e-12);
+    assert_int_equal(q.standing, 0);
+    pos[2][1] -= 0.4; /* now 0.3 and 0.2 apart from their starts: standing */
+    finish(s, &q, pos, quat, 1);
+    assert_near(q.value, 0.3, 1e-12);
+    assert_int_equal(q.standing, 1);
+    finish(s, &q, pos, quat, 0);
+    assert_int_equal(q.standing, -1); /* no verdict on an incomplete run */
+    /* box 0 turned 45° about x: its lowest edge sits 0.5 (√2 - 1) m below the ground */
+    const double x[3] = {1, 0, 0};
+    BenchQuatFromAxisAngle(quat[0], x, 0.25 * 3.14159265358979323846);
+    finish(s, &q, pos, quat, 1);
+    assert_near(q.floorPenetration, 0.5 * (sqrt(2.0) - 1), 1e-12);
+    pos[3][0] = NAN;
+    finish(s, &q, pos, quat, 1);
+    assert_true(isnan(q.value));
+    assert_int_equal(q.standing, 0);
+    free(pos), free(quat);
+    BenchSceneDestroy(s);
+
+    s = start("column4", &q, &pos, &quat);
+    pos[3][0] += 0.06;
+    pos[3][2] -= 0.08;
+    finish(s, &q, pos, quat, 1);
+    assert_near(q.value, 0.1, 1e-12);
+    assert_int_equal(q.standing, 1);
+    free(pos), free(quat);
+    BenchSceneDestroy(s);
+
+    s = start("pile10", &q, &pos, &quat);
+    finish(s, &q, pos, quat, 1);
+    assert_near(q.value, 0, 0);
+    assert_int_equal(q.standing, -1);
+    pos[5][0] = 8.2;  /* through a wall */
+    pos[6][1] = -9;   /* through another */
+    pos[7][2] = -0.1; /* through the floor */
+    pos[0][0] = 8.2;  /* a wall itself: fixed bodies are not counted */
+    finish(s, &q, pos, quat, 1);
+    assert_near(q.value, 3, 0);
+    free(pos), free(quat);
+    BenchSceneDestroy(s);
+}
+
+/* The quaternion helpers against each other: (q ⊗ p) v = q (p v), and q* undoes q. */
+static void quaternions(void **state)
+{
+    (void)state;
+    const double a[3] = {0.48, -0.6, 0.64}, b[3] = {0, 0.6, 0.8}, v[3] = {0.3, -1.2, 2.5};
+    double q[4], p[4], qp[4], w1[3], w2[3], back[3];
+    BenchQuatFromAxisAngle(q, a, 1.1);
+    BenchQuatFromAxisAngle(p, b, -2.3);
+    BenchQuatMultiply(qp, q, p);
+    BenchQuatRotate(w1, qp, v);
+    BenchQuatRotate(w2, p, v);
+    BenchQuatRotate(w2, q, w2);
+    BenchQuatRotateInverse(back, qp, w1);
+    for (int i = 0; i < 3; i++) {
+        assert_near(w1[i], w2[i], 1e-14);
+        assert_near(back[i], v[i], 1e-14);
+    }
+    /* +90° about y takes local z to world x: the chain's capsule axis */
+    const double y[3] = {0, 1, 0}, z[3] = {0, 0, 1};
+    BenchQuatFromAxisAngle(q, y, 0.5 * 3.14159265358979323846);
+    BenchQuatRotate(w1, q, z);
+    assert_near(w1[0], 1, 1e-15);
+    assert_near(w1[2], 0, 1e-15);
+}
+
+/* Inertia of the uniform solids against brute-force integration over a grid of cell centres in the
+ * bounding box: a unit box, a sphere, a chain link and a ragdoll thigh (capsules). */
+static void inertia_by_integration(void **state)
+{
+    (void)state;
+    const BenchBody bodies[] = {
+        {BENCH_BOX, {0.5, 0.3, 0.2}, 2.0, {0, 0, 0}, {1, 0, 0, 0}, 0},
+        {BENCH_SPHERE, {0.5, 0, 0}, 1.0, {0, 0, 0}, {1, 0, 0, 0}, 0},
+        {BENCH_CAPSULE, {0.1, 0.4, 0}, 1.0, {0, 0, 0}, {1, 0, 0, 0}, 0},
+        {BENCH_CAPSULE, {0.07, 0.16, 0}, 7.0, {0, 0, 0}, {1, 0, 0, 0}, 0},
+    };
+    const int n = 120;
+    for (size_t k = 0; k < sizeof bodies / sizeof bodies[0]; k++) {
+        const BenchBody *b = &bodies[k];
+        double half[3];
+        if (b->shape == BENCH_BOX)
+            memcpy(half, b->size, sizeof half);
+        else
+            half[0] = half[1] = b->size[0], half[2] = b->size[0] + (b->shape == BENCH_CAPSULE ? b->size[1] : 0);
+        double sum[3] = {0, 0, 0};
+        long inside = 0;
+        for (int i = 0; i < n; i++)
+            for (int j = 0; j < n; j++)
+                for (int l = 0; l < n; l++) {
+                    double p[3] = {(2 * (i + 0.5) / n - 1) * half[0], (2 * (j + 0.5) / n - 1) * half[1],
+                                   (2 * (l + 0.5) / n - 1) * half[2]};
+                    if (b->shape != BENCH_BOX) {
+                        double axial = fmax(fabs(p[2]) - (b->shape == BENCH_CAPSULE ? b->size[1] : 0), 0);
+                        if (p[0] * p[0] + p[1] * p[1] + axial * axial > b->size[0] * b->size[0])
+                            continue;
+                    }
+                    inside++;
+                    sum[0] += p[1] * p[1] + p[2] * p[2];
+                    sum[1] += p[0] * p[0] + p[2] * p[2];
+                    sum[2] += p[0] * p[0] + p[1] * p[1];
+                }
+        double inertia[3];
+        BenchBodyInertia(b, inertia);
+        for (int a = 0; a < 3; a++) {
+            double numeric = b->mass * sum[a] / (double)inside;
+            print_message("shape %d axis %d: inertia %.6f kg m2, grid %.6f (%.2e relative)\n", (int)b->shape, a,
+                          inertia[a], numeric, fabs(inertia[a] - numeric) / numeric);
+            assert_rel(inertia[a], numeric, 5e-3);
+        }
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(standard_scenes),     cmocka_unit_test(scene_names),
+        cmocka_unit_test(joints_agree_at_start), cmocka_unit_test(joint_error_is_a_distance),
+        cmocka_unit_test(quality_figures),     cmocka_unit_test(quaternions),
+        cmocka_unit_test(inertia_by_integration),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

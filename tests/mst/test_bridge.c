@@ -1,0 +1,268 @@
+/* The bridge's mechanics: material table, contact groups following the pairs' lives, body order with
+ * world models, callbacks, freeze/unfreeze linkage, universe sizes and bad input. */
+#include "karma_test.h"
+
+#include <string.h>
+
+#include <karma/karma.h>
+
+/* A universe with gravity along −z and a ground plane at z = 0. */
+typedef struct Scene {
+    MstUniverseID u;
+    MdtWorldID w;
+    MstBridgeID b;
+    McdFrameworkID fw;
+    MeMatrix4 groundTM;
+    McdModelID ground;
+} Scene;
+
+static void sceneInit(Scene *s)
+{
+    MstUniverseSizes sizes = MstUniverseDefaultSizes;
+    sizes.massScale = 500; /* the bodies here are of a few hundred kilograms: ε scales with 1/massScale */
+    s->u = MstUniverseCreate(&sizes);
+    assert_non_null(s->u);
+    s->w = MstUniverseGetWorld(s->u);
+    s->b = MstUniverseGetBridge(s->u);
+    s->fw = MstUniverseGetFramework(s->u);
+    MdtWorldSetGravity(s->w, 0, 0, -9.81f);
+    MeMatrix4TMMakeIdentity(s->groundTM);
+    s->ground = MstFixedModelCreate(s->u, McdPlaneCreate(s->fw), s->groundTM);
+    assert_non_null(s->ground);
+}
+
+static McdModelID sphereAt(Scene *s, MeReal r, MeReal x, MeReal y, MeReal z)
+{
+    McdModelID m = MstModelAndBodyCreate(s->u, McdSphereCreate(s->fw, r), 1000);
+    assert_non_null(m);
+    MdtBodySetPosition(McdModelGetBody(m), x, y, z);
+    return m;
+}
+
+static void universe_defaults(void **state)
+{
+    (void)state;
+    MstUniverseSizes d = MstUniverseDefaultSizes;
+    assert_int_equal(d.dynamicBodiesMaxCount, 100);
+    assert_int_equal(d.dynamicConstraintsMaxCount, 500);
+    assert_int_equal(d.materialsMaxCount, 10);
+    assert_int_equal(d.collisionModelsMaxCount, 100);
+    assert_int_equal(d.collisionPairsMaxCount, 500);
+    assert_int_equal(d.collisionUserGeometryTypesMaxCount, 0);
+    assert_int_equal(d.collisionGeometryInstancesMaxCount, 100);
+    assert_true(d.lengthScale == 1 && d.massScale == 1);
+    karma_capture_messages();
+    d.materialsMaxCount = 0;
+    assert_reports(ME_ERR_ARGUMENT_RANGE, assert_null(MstUniverseCreate(&d)));
+    d = MstUniverseDefaultSizes;
+    d.lengthScale = -1;
+    assert_reports(ME_ERR_SCALE_NOT_POSITIVE, assert_null(MstUniverseCreate(&d)));
+}
+
+static void material_table_is_symmetric(void **state)
+{
+    (void)state;
+    Scene s;
+    sceneInit(&s);
+    assert_int_equal(MstBridgeGetDefaultMaterial(), 0);
+    assert_int_equal(MstBridgeGetMaterialCount(s.b), 1);
+    MstMaterialID a = MstBridgeGetNewMaterial(s.b), c = MstBridgeGetNewMaterial(s.b);
+    assert_int_equal(a, 1);
+    assert_int_equal(c, 2);
+    MdtContactParamsID p = MstBridgeGetContactParams(s.b, a, c);
+    assert_ptr_equal(p, MstBridgeGetContactParams(s.b, c, a));
+    assert_ptr_not_equal(p, MstBridgeGetContactParams(s.b, a, a));
+    /* Karma's default pair: frictionless. */
+    assert_int_equal(MdtContactParamsGetType(p), MdtContactTypeFrictionZero);
+    karma_capture_messages();
+    assert_reports(ME_ERR_MST_MATERIAL, assert_null(MstBridgeGetContactParams(s.b, 0, 3)));
+    assert_reports(ME_ERR_MST_MATERIAL, assert_null(MstBridgeGetContactParams(s.b, -1, 0)));
+    for (int i = 3; i < 10; i++)
+        assert_int_equal(MstBridgeGetNewMaterial(s.b), i);
+    assert_reports(ME_ERR_POOL_FULL, assert_int_equal(MstBridgeGetNewMaterial(s.b), -1));
+    MstUniverseDestroy(s.u);
+    assert_reports(ME_ERR_INVALID_HANDLE, MstUniverseStep(s.u, 0.01f));
+}
+
+static MdtContactGroupID groupOf(MdtBodyID body)
+{
+    for (MdtConstraintID c = MdtBodyGetFirstConstraint(body); c; c = MdtBodyGetNextConstraint(body, c)) {
+        MdtContactGroupID g = MdtConstraintDCastContactGroup(c);
+        if (g)
+            return g;
+    }
+    return NULL;
+}
+
+/* A ball resting on the ground: the world model is model 1 of the pair (lower sort key) but the group
+ * has the ball as body 0, the world as body 1, and its normal points from the ball into the ground. */
+static void group_lives_with_the_intersection(void **state)
+{
+    (void)state;
+    Scene s;
+    sceneInit(&s);
+    McdModelSetSortKey(s.ground, 0);
+    McdModelID ball = sphereAt(&s, 0.5f, 0, 0, 0.495f);
+    McdModelSetSortKey(ball, 1);
+    MdtBodyID body = McdModelGetBody(ball);
+    MstUniverseStep(s.u, 1.0f / 60);
+    MdtContactGroupID g = groupOf(body);
+    assert_non_null(g);
+    assert_ptr_equal(MdtConstraintGetBody(MdtContactGroupQuaConstraint(g), 0), body);
+    assert_null(MdtConstraintGetBody(MdtContactGroupQuaConstraint(g), 1));
+    assert_int_equal(MdtContactGroupGetCount(g), 1);
+    MeVector3 n;
+    MdtContactGetNormal(MdtContactGroupGetFirstContact(g), n);
+    printf("ball on plane: normal (%.3f %.3f %.3f), penetration %.4f\n", (double)n[0], (double)n[1], (double)n[2],
+           (double)MdtContactGetPenetration(MdtContactGroupGetFirstContact(g)));
+    assert_near(n[2], -1, 1e-5);
+    /* Lift the ball clear: the group goes when the models stop intersecting... */
+    MdtBodySetPosition(body, 0, 0, 0.6f);
+    MdtBodySetLinearVelocity(body, 0, 0, 0);
+    MstUniverseStep(s.u, 1.0f / 60);
+    assert_null(groupOf(body));
+    /* ...and comes back when they touch again; moving far away (Goodbye) removes it too. */
+    MdtBodySetPosition(body, 0, 0, 0.49f);
+    MstUniverseStep(s.u, 1.0f / 60);
+    assert_non_null(groupOf(body));
+    MdtBodySetPosition(body, 0, 0, 50);
+    MstUniverseStep(s.u, 1.0f / 60);
+    assert_null(groupOf(body));
+    assert_int_equal(MdtWorldGetTotalConstraints(s.w), 0);
+    MstUniverseDestroy(s.u);
+}
+
+static int perContactCalls, perPairCalls, intersectCalls;
+static void countIntersect(McdIntersectResult *r)
+{
+    (void)r;
+    intersectCalls++;
+}
+static MeBool dropContacts(McdIntersectResult *r, McdContact *c, MdtContactID d)
+{
+    (void)r;
+    (void)c;
+    (void)d;
+    perContactCalls++;
+    return MEFALSE;
+}
+static MeBool keepPair(McdIntersectResult *r, MdtContactGroupID g)
+{
+    (void)r;
+    (void)g;
+    perPairCalls++;
+    return METRUE;
+}
+
+/* Callbacks run per material pair; a per-contact callback that drops everything makes the ball fall
+ * through the floor; parameters are copied into each contact. */
+static void callbacks_and_parameters(void **state)
+{
+    (void)state;
+    Scene s;
+    sceneInit(&s);
+    MstMaterialID rubber = MstBridgeGetNewMaterial(s.b);
+    MdtContactParamsID p = MstBridgeGetContactParams(s.b, 0, rubber);
+    MdtContactParamsSetType(p, MdtContactTypeFriction2D);
+    MdtContactParamsSetFriction(p, 7);
+    McdModelID ball = sphereAt(&s, 0.5f, 0, 0, 0.49f);
+    McdModelSetMaterial(ball, rubber);
+    MstBridgeSetIntersectCB(s.b, rubber, 0, countIntersect);
+    MstBridgeSetPerPairCB(s.b, rubber, 0, keepPair);
+    assert_ptr_equal(MstBridgeGetPerPairCB(s.b, 0, rubber), keepPair);
+    MstUniverseStep(s.u, 1.0f / 60);
+    MdtContactGroupID g = groupOf(McdModelGetBody(ball));
+    assert_non_null(g);
+    MdtContactParamsID cp = MdtContactGetParams(MdtContactGroupGetFirstContact(g));
+    assert_int_equal(MdtContactParamsGetType(cp), MdtContactTypeFriction2D);
+    assert_near(MdtContactParamsGetPrimaryFriction(cp), 7, 0);
+    assert_int_equal(intersectCalls, 1);
+    assert_int_equal(perPairCalls, 1);
+    MstBridgeSetPerContactCB(s.b, 0, rubber, dropContacts);
+    for (int i = 0; i < 60; i++)
+        MstUniverseStep(s.u, 1.0f / 60);
+    MeVector3 pos;
+    MdtBodyGetPosition(McdModelGetBody(ball), pos);
+    printf("contacts dropped by callback: %d calls, ball at z = %.3f after 1 s\n", perContactCalls, (double)pos[2]);
+    assert_true(perContactCalls >= 1);
+    assert_true(pos[2] < -1);
+    MstUniverseStep(s.u, 1.0f / 60);
+    MstUniverseDestroy(s.u);
+}
+
+/* A ball that comes to rest is disabled and its model frozen; a push wakes both. */
+static void freeze_follows_disable(void **state)
+{
+    (void)state;
+    Scene s;
+    sceneInit(&s);
+    MdtContactParamsID p = MstBridgeGetContactParams(s.b, 0, 0);
+    MdtContactParamsSetType(p, MdtContactTypeFriction2D);
+    MdtContactParamsSetFrictionModel(p, MdtFrictionModelNormalForce);
+    MdtContactParamsSetFrictionCoeffecient(p, 0.6f);
+    McdModelID ball = sphereAt(&s, 0.5f, 0, 0, 0.6f);
+    MdtBodyID body = McdModelGetBody(ball);
+    int steps = 0;
+    while (MdtBodyIsEnabled(body) && steps < 600) {
+        MstUniverseStep(s.u, 1.0f / 60);
+        steps++;
+    }
+    printf("ball came to rest and was disabled after %d steps\n", steps);
+    assert_false(MdtBodyIsEnabled(body));
+    assert_true(McdSpaceModelIsFrozen(ball));
+    MeVector3 pos;
+    MdtBodyGetPosition(body, pos);
+    assert_near(pos[2], 0.5, 0.01);
+    MdtBodyEnable(body);
+    assert_false(McdSpaceModelIsFrozen(ball));
+    MdtBodyAddImpulse(body, 1000, 0, 0); /* 1.9 m/s for the 523 kg ball */
+    for (int i = 0; i < 30; i++)
+        MstUniverseStep(s.u, 1.0f / 60);
+    MdtBodyGetPosition(body, pos);
+    assert_true(pos[0] > 0.5);
+    assert_near(pos[2], 0.5, 0.01);
+    MstUniverseDestroy(s.u);
+}
+
+static void model_and_body_helpers(void **state)
+{
+    (void)state;
+    Scene s;
+    sceneInit(&s);
+    McdModelID box = MstModelAndBodyCreate(s.u, McdBoxCreate(s.fw, 1, 2, 3), 500);
+    assert_non_null(box);
+    MdtBodyID body = McdModelGetBody(box);
+    assert_true(MdtBodyIsEnabled(body));
+    assert_near(MdtBodyGetMass(body), 500 * 6, 1e-3);
+    MeMatrix3 I;
+    MdtBodyGetInertiaTensor(body, I);
+    const double m = 3000;
+    printf("box 1x2x3 at 500 kg/m^3: mass %.1f, Ixx %.2f (expected %.2f)\n", (double)MdtBodyGetMass(body),
+           (double)I[0][0], m * (4 + 9) / 12);
+    assert_rel(I[0][0], m * (4 + 9) / 12, 1e-5);
+    assert_rel(I[1][1], m * (1 + 9) / 12, 1e-5);
+    assert_rel(I[2][2], m * (1 + 4) / 12, 1e-5);
+    assert_ptr_equal(McdModelGetTransformPtr(box), MdtBodyGetTransformPtr(body));
+    karma_capture_messages();
+    assert_reports(ME_ERR_MASS_NOT_POSITIVE, assert_null(MstModelAndBodyCreate(s.u, McdSphereCreate(s.fw, 1), 0)));
+    assert_reports(ME_ERR_MCD_DEGENERATE_GEOMETRY,
+                   assert_null(MstModelAndBodyCreate(s.u, McdPlaneCreate(s.fw), 1)));
+    int bodies = MdtWorldGetTotalBodies(s.w);
+    MstModelAndBodyDestroy(box);
+    assert_int_equal(MdtWorldGetTotalBodies(s.w), bodies - 1);
+    assert_false(McdModelIsValid(box));
+    MstUniverseDestroy(s.u);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(universe_defaults),
+        cmocka_unit_test(material_table_is_symmetric),
+        cmocka_unit_test(group_lives_with_the_intersection),
+        cmocka_unit_test(callbacks_and_parameters),
+        cmocka_unit_test(freeze_follows_disable),
+        cmocka_unit_test(model_and_body_helpers),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
