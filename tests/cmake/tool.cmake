@@ -4,13 +4,17 @@ if(NOT TARGET karma)
   return()
 endif()
 add_test(NAME tool_list COMMAND karma list)
-set_tests_properties(tool_list PROPERTIES PASS_REGULAR_EXPRESSION "freebodies .*\\[default\\]")
+set_tests_properties(tool_list PROPERTIES PASS_REGULAR_EXPRESSION "freebodies .*topple .*\\[make demo\\].*fixedpath")
 add_test(NAME tool_help COMMAND karma --help)
 set_tests_properties(tool_help PROPERTIES PASS_REGULAR_EXPRESSION "usage: karma <command>")
-# The default demo, as `make demo` runs it: every stage timed, invariants reported, no warning.
+# The free-bodies scene: every stage timed, invariants reported, no warning.
 add_test(NAME tool_run_freebodies COMMAND karma run freebodies --csv ${CMAKE_CURRENT_BINARY_DIR}/freebodies.csv)
 set_tests_properties(tool_run_freebodies PROPERTIES PASS_REGULAR_EXPRESSION
   "bodies: 4, enabled 4.*Partition [0-9.]+ AutoDisable [0-9.]+ Pack [0-9.]+ Solve [0-9.]+ Integrate [0-9.]+ Unpack [0-9.]+.*energy.*before.*after.*final positions.*projectile.*tumbler: [1-9][0-9]* flips.*wheel: spins at 100\\.000 rad/s, turned 1\\.666[67] rad.*warnings during the run: 0")
+# The scene `make demo` runs, through the whole pipeline: collision stages, counts, the scene's report.
+add_test(NAME tool_run_topple COMMAND karma run topple)
+set_tests_properties(tool_run_topple PROPERTIES PASS_REGULAR_EXPRESSION
+  "pairs [0-9.]+, contacts [0-9.]+.*Farfield [0-9.]+ Nearfield [0-9.]+.*Partition [0-9.]+ .*Solve [0-9.]+ .*balls shot: 4.*warnings during the run: 0")
 foreach(bad "run;nosuchscene" "run;freebodies;--steps;ten" "run;freebodies;--dt;-1" "run;freebodies;--dt"
             "run;freebodies;--frobnicate" "frobnicate" "run")
   string(REPLACE ";" "_" name "${bad}")
