@@ -114,10 +114,46 @@ static void ball_wakes_only_the_pile_it_hits(void **state)
     MstUniverseDestroy(s.u);
 }
 
+/* A body disabled by the application right after being placed is frozen where it is, not where its
+ * model was inserted (at the origin): a ball dropped on it lands on it and wakes it. */
+static void body_disabled_before_first_step_is_frozen_in_place(void **state)
+{
+    (void)state;
+    MstUniverseSizes sizes = MstUniverseDefaultSizes;
+    sizes.massScale = 125;
+    MstUniverseID u = MstUniverseCreate(&sizes);
+    assert_non_null(u);
+    MdtWorldSetGravity(MstUniverseGetWorld(u), 0, 0, ME_R(-9.81));
+    McdFrameworkID fw = MstUniverseGetFramework(u);
+    McdModelID box = MstModelAndBodyCreate(u, McdBoxCreate(fw, EDGE, EDGE, EDGE), 1000);
+    assert_non_null(box);
+    MdtBodySetPosition(McdModelGetBody(box), 5, 0, 0);
+    MdtBodyDisable(McdModelGetBody(box));
+    assert_true(McdSpaceModelIsFrozen(box));
+    McdModelID ball = MstModelAndBodyCreate(u, McdSphereCreate(fw, ME_R(0.2)), 1000);
+    assert_non_null(ball);
+    MdtBodySetPosition(McdModelGetBody(ball), 5, 0, 1);
+    int touched = -1;
+    for (int i = 0; i < 60 && touched < 0; i++) {
+        MstUniverseStep(u, ME_R(1.0) / 60);
+        if (MstBridgeGetLastContactCount(MstUniverseGetBridge(u)) > 0)
+            touched = i;
+    }
+    MeVector3 x;
+    MdtBodyGetPosition(McdModelGetBody(ball), x);
+    printf("ball dropped on a box disabled before the first step: contact at step %d, ball at z = %.3f, box %s\n",
+           touched, (double)x[2], MdtBodyIsEnabled(McdModelGetBody(box)) ? "woken" : "asleep");
+    /* Free fall of 1 - 0.25 - 0.2 = 0.55 m takes 0.33 s: about 20 steps. */
+    assert_true(touched >= 15 && touched <= 25);
+    assert_true(x[2] > ME_R(0.4));
+    MstUniverseDestroy(u);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(ball_wakes_only_the_pile_it_hits),
+        cmocka_unit_test(body_disabled_before_first_step_is_frozen_in_place),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
