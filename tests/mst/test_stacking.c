@@ -109,9 +109,22 @@ static void column_of_ten_stands(void **state)
     for (int i = 0; i < 10; i++)
         pileAdd(&s, box, 0, 0, EDGE / 2 + (MeReal)i * EDGE);
     MeReal worst = pileRun(&s, 20, "column of 10");
-    printf("column of 10 boxes, 20 s: max drift %.3e m = %.3f %% of the edge (bound 1 %%)\n", (double)worst,
-           (double)(100 * worst / EDGE));
+    /* At rest each contact row holds ε λ = γ φ / h: a contact with k boxes above it carries
+     * λ = k m g h / 4 on each of its 4 points and sinks by φ_k = ε k m g h² / (4 γ). The top box sinks
+     * by the sum over k = 1..10 (55 ε m g h² / (4 γ) = 1.87 mm here): the column's compliance. */
+    MdtWorldID w = MstUniverseGetWorld(s.u);
+    const double h = 1.0 / 60, m = MdtBodyGetMass(s.bodies[0]);
+    const double sag = 55 * (double)MdtWorldGetEpsilon(w) * m * 9.81 * h * h / (4 * (double)MdtWorldGetGamma(w));
+    MeVector3 top;
+    MdtBodyGetPosition(s.bodies[9], top);
+    double sunk = (double)s.start[9][2] - top[2];
+    printf("column of 10 boxes, 20 s: max drift %.3e m = %.3f %% of the edge (bound 1 %%); top box sank %.4e m, "
+           "compliance predicts %.4e m (%.2f %% off); sideways %.2e m\n",
+           (double)worst, (double)(100 * worst / EDGE), sunk, sag, 100 * fabs(sunk / sag - 1),
+           hypot((double)top[0], (double)top[1]));
     assert_true(worst < 0.01 * EDGE);
+    assert_rel(sunk, sag, 0.02);
+    assert_true(hypot((double)top[0], (double)top[1]) < 1e-4);
     pileFree(&s);
 }
 
