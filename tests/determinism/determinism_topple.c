@@ -27,28 +27,6 @@
 #  define GOLDEN_HASH 0x01ae3dd89d8510e3ull
 #endif
 
-static uint64_t hashState(uint64_t hash, MdtWorldID world, int *bodies, int *enabled)
-{
-    *bodies = *enabled = 0;
-    for (MdtBodyID b = MdtBodyGetFirst(world); b; b = MdtBodyGetNext(b)) {
-        MeVector3 x, v, w;
-        MeVector4 q;
-        MeBool on = MdtBodyIsEnabled(b);
-        MdtBodyGetPosition(b, x);
-        MdtBodyGetQuaternion(b, q);
-        MdtBodyGetLinearVelocity(b, v);
-        MdtBodyGetAngularVelocity(b, w);
-        hash = karma_hash_bytes(hash, x, sizeof x);
-        hash = karma_hash_bytes(hash, q, sizeof q);
-        hash = karma_hash_bytes(hash, v, sizeof v);
-        hash = karma_hash_bytes(hash, w, sizeof w);
-        hash = karma_hash_bytes(hash, &on, sizeof on);
-        (*bodies)++;
-        *enabled += on ? 1 : 0;
-    }
-    return hash;
-}
-
 static uint64_t runTopple(MeBool trace, int *contactsSeen)
 {
     const DemoScene *scene = DemoSceneFind("topple");
@@ -56,17 +34,16 @@ static uint64_t runTopple(MeBool trace, int *contactsSeen)
     DemoInstance demo;
     assert_true(DemoCreate(scene, &demo));
     uint64_t hash = KARMA_HASH_INIT;
-    int bodies = 0, enabled = 0;
     *contactsSeen = 0;
     for (int step = 0; step < STEPS; step++) {
         DemoStep(&demo, scene->defaultStepSize);
-        hash = hashState(hash, demo.world, &bodies, &enabled);
+        hash = karma_hash_world(hash, demo.world);
         int contacts = MstBridgeGetLastContactCount(MstUniverseGetBridge(demo.universe));
         if (contacts > *contactsSeen)
             *contactsSeen = contacts;
         if (trace)
-            printf("step %3d hash 0x%016llx enabled %d contacts %d\n", step, (unsigned long long)hash, enabled,
-                   contacts);
+            printf("step %3d hash 0x%016llx enabled bodies %d contacts %d\n", step, (unsigned long long)hash,
+                   MdtWorldGetEnabledBodies(demo.world), contacts);
     }
     DemoDestroy(&demo);
     return hash;

@@ -31,8 +31,9 @@ static McdModelID bodyModel(MstUniverseID u, McdGeometryID geo, MeReal density, 
 
 /* ---- two spheres ------------------------------------------------------------------------------ */
 
-/* Linear momentum and angular momentum about the origin (spheres: spherical inertia, centred mass). */
-static void momenta(MdtBodyID b[2], double p[3], double L[3])
+/* Linear momentum and angular momentum about the origin (spheres: spherical inertia, centred mass),
+ * and each body's velocity. */
+static void momenta(MdtBodyID b[2], double p[3], double L[3], double vel[2][3])
 {
     for (int k = 0; k < 3; k++)
         p[k] = L[k] = 0;
@@ -44,8 +45,10 @@ static void momenta(MdtBodyID b[2], double p[3], double L[3])
         MdtBodyGetAngularVelocity(b[i], w);
         MdtBodyGetInertiaTensor(b[i], I);
         double m = MdtBodyGetMass(b[i]);
-        for (int k = 0; k < 3; k++)
+        for (int k = 0; k < 3; k++) {
             p[k] += m * v[k];
+            vel[i][k] = v[k];
+        }
         L[0] += m * ((double)x[1] * v[2] - (double)x[2] * v[1]) + (double)I[0][0] * w[0];
         L[1] += m * ((double)x[2] * v[0] - (double)x[0] * v[2]) + (double)I[1][1] * w[1];
         L[2] += m * ((double)x[0] * v[1] - (double)x[1] * v[0]) + (double)I[2][2] * w[2];
@@ -76,13 +79,7 @@ static void collideSpheres(double offset, MeBool friction, const char *label)
     MdtBodySetLinearVelocity(b[1], ME_R(-1.5), 0, 0);
     MdtWorldSetAutoDisable(MstUniverseGetWorld(u), MEFALSE);
     double p0[3], L0[3], v0[2][3];
-    momenta(b, p0, L0);
-    for (int i = 0; i < 2; i++) {
-        MeVector3 v;
-        MdtBodyGetLinearVelocity(b[i], v);
-        for (int k = 0; k < 3; k++)
-            v0[i][k] = v[k];
-    }
+    momenta(b, p0, L0, v0);
     /* The normal of the first contact: the line of centres when the bridge first made contacts. */
     double n[3] = {0, 0, 0};
     int contactSteps = 0;
@@ -104,13 +101,7 @@ static void collideSpheres(double offset, MeBool friction, const char *label)
     }
     assert_true(contactSteps > 0);
     double p1[3], L1[3], v1[2][3];
-    momenta(b, p1, L1);
-    for (int i = 0; i < 2; i++) {
-        MeVector3 v;
-        MdtBodyGetLinearVelocity(b[i], v);
-        for (int k = 0; k < 3; k++)
-            v1[i][k] = v[k];
-    }
+    momenta(b, p1, L1, v1);
     /* Scales for relative errors: the sum of the bodies' momentum magnitudes, and of |r × m v|. */
     double pScale = 0, LScale = 0;
     for (int i = 0; i < 2; i++) {
