@@ -94,7 +94,7 @@ static void run_pair(void **state)
         McdGeometry g1, g2;
         MeMatrix4 tm1, tm2;
         McdContact c[8], cs[8];
-        double nRef[3], dref, deep, deepS, n1[3], n2[3], size, tolD;
+        double nRef[3], dref, deep = 0, deepS, n1[3], n2[3], size, tolD;
         Stats ps = {0}; /* this pose's errors */
         double poseMtd = 0;
         int n, ns, k;
