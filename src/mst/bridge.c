@@ -9,6 +9,7 @@
 
 #include <karma/McdInteraction.h>
 #include <karma/McdModel.h>
+#include <karma/McdSpace.h>
 #include <karma/MeMemory.h>
 #include <karma/MdtBody.h>
 #include <karma/MdtContact.h>
@@ -336,8 +337,14 @@ static void onBodyDisabled(MdtBodyID body, void *data)
 {
     (void)data;
     McdModel *m = linkedModel(body);
-    if (m && m->space && !m->frozen)
+    if (m && m->space && !m->frozen) {
+        /* A frozen model's box is not updated again: take the body's pose now, for a body placed and
+         * disabled by the application before the space saw it move (auto-disable, inside the step,
+         * finds the box already up to date). */
+        if (McdSpaceIsChanging(McdModelGetSpace((McdModelID)m->id)))
+            McdSpaceUpdateModel((McdModelID)m->id);
         McdSpaceFreezeModel((McdModelID)m->id);
+    }
 }
 
 static void onGroupDestroyed(MdtContactGroupID g, void *data)

@@ -2,6 +2,9 @@
 # core library, one compiled at -O0 and one at -O2, with the same flags otherwise (-ffp-contract=off,
 # no fast-math, from KarmaFlags.cmake). Both programs must reproduce the same golden hash, so an
 # optimisation that changes floating-point results is caught.
+# A second program per level, tests/determinism/determinism_topple.c, runs the demos' Topple scene (the
+# whole pipeline: space, nearfield, bridge, contacts, solver) with the demo sources compiled into it.
+file(GLOB KARMA_DETERMINISM_DEMO_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/demos/*.c)
 foreach(level O0 O2)
   set(lib karma_determinism_${level})
   add_library(${lib} STATIC ${KARMA_CORE_SOURCES})
@@ -28,4 +31,14 @@ foreach(level O0 O2)
     target_compile_options(${exe} PRIVATE -Wno-double-promotion)
     add_test(NAME ${exe} COMMAND ${exe})
   endforeach()
+
+  set(exe test_determinism_topple_${level})
+  add_executable(${exe} ${CMAKE_CURRENT_SOURCE_DIR}/determinism/determinism_topple.c ${KARMA_TEST_SUPPORT}
+                 ${KARMA_DETERMINISM_DEMO_SOURCES})
+  target_include_directories(${exe} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/support ${CMOCKA_INCLUDE_DIR}
+                             ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR}/demos)
+  target_link_libraries(${exe} PRIVATE ${lib} ${CMOCKA_LIBRARY} m)
+  karma_apply_warnings(${exe})
+  target_compile_options(${exe} PRIVATE -Wno-double-promotion)
+  add_test(NAME ${exe} COMMAND ${exe})
 endforeach()

@@ -107,25 +107,6 @@ static void scriptStep(const Scene *s, int step)
         MdtBodyAddForceAtPosition(s->wheel, ME_R(3.0), 0, 0, ME_R(2.0), ME_R(0.3), 0);
 }
 
-static uint64_t hashState(uint64_t hash, MdtWorldID world)
-{
-    for (MdtBodyID b = MdtBodyGetFirst(world); b; b = MdtBodyGetNext(b)) {
-        MeVector3 x, v, w;
-        MeVector4 q;
-        MeBool enabled = MdtBodyIsEnabled(b);
-        MdtBodyGetPosition(b, x);
-        MdtBodyGetQuaternion(b, q);
-        MdtBodyGetLinearVelocity(b, v);
-        MdtBodyGetAngularVelocity(b, w);
-        hash = karma_hash_bytes(hash, x, sizeof x);
-        hash = karma_hash_bytes(hash, q, sizeof q);
-        hash = karma_hash_bytes(hash, v, sizeof v);
-        hash = karma_hash_bytes(hash, w, sizeof w);
-        hash = karma_hash_bytes(hash, &enabled, sizeof enabled);
-    }
-    return hash;
-}
-
 /* Run the scene; returns the hash chained over every step's state. */
 static uint64_t runScene(MeBool *dampedSlept, MeBool trace)
 {
@@ -135,7 +116,7 @@ static uint64_t runScene(MeBool *dampedSlept, MeBool trace)
     for (int step = 0; step < STEPS; step++) {
         scriptStep(&s, step);
         MdtWorldStep(s.world, STEP_SIZE);
-        hash = hashState(hash, s.world);
+        hash = karma_hash_world(hash, s.world);
         if (trace)
             printf("step %3d hash 0x%016llx\n", step, (unsigned long long)hash);
     }

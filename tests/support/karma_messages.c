@@ -3,6 +3,8 @@
 
 #include "karma_test.h"
 
+#include <karma/MdtBody.h>
+
 static MeErrorCode lastCode = ME_ERR_NONE;
 static char lastText[512];
 static char lastFunction[128];
@@ -41,6 +43,25 @@ uint64_t karma_hash_bytes(uint64_t hash, const void *data, size_t size)
     for (size_t i = 0; i < size; i++) {
         hash ^= p[i];
         hash *= 1099511628211ull;
+    }
+    return hash;
+}
+
+uint64_t karma_hash_world(uint64_t hash, MdtWorldID world)
+{
+    for (MdtBodyID b = MdtBodyGetFirst(world); b; b = MdtBodyGetNext(b)) {
+        MeVector3 x, v, w;
+        MeVector4 q;
+        MeBool enabled = MdtBodyIsEnabled(b);
+        MdtBodyGetPosition(b, x);
+        MdtBodyGetQuaternion(b, q);
+        MdtBodyGetLinearVelocity(b, v);
+        MdtBodyGetAngularVelocity(b, w);
+        hash = karma_hash_bytes(hash, x, sizeof x);
+        hash = karma_hash_bytes(hash, q, sizeof q);
+        hash = karma_hash_bytes(hash, v, sizeof v);
+        hash = karma_hash_bytes(hash, w, sizeof w);
+        hash = karma_hash_bytes(hash, &enabled, sizeof enabled);
     }
     return hash;
 }

@@ -31,6 +31,7 @@ void karma_assert_rel(double a, double b, double tol, const char *sa, const char
 
 #endif
 
+#include <karma/MdtTypes.h>
 #include <karma/MeMessage.h>
 
 /** Route Karma's messages to a quiet recorder (nothing printed below fatal) and clear the counts.
@@ -58,3 +59,6 @@ unsigned long karma_warning_count(void);
 /** FNV-1a hash of raw bytes, for state hashes. */
 uint64_t karma_hash_bytes(uint64_t hash, const void *data, size_t size);
 #define KARMA_HASH_INIT 1469598103934665603ull
+/** karma_hash_bytes over every body of `world` in pool order: position, quaternion, linear and angular
+ *  velocity, enabled flag (the state the golden-hash tests compare). */
+uint64_t karma_hash_world(uint64_t hash, MdtWorldID world);
