@@ -191,18 +191,20 @@ static int singlePoint(const Side *f1, const Side *f2, const McdNfDistance *d, M
         MeVector3ScaleAndAdd(on2, f2->pts[0], -f2->s->radius, n);
         MeVector3ScaleAndAdd(on1, on2, -sep, n);
     } else if (f1->n == 2 && f2->n == 2) {
+        /* The witnesses are where the segments cross seen along n (not their closest points in
+         * space, which for deep overlaps lie along the segments' common perpendicular instead). */
         MeReal s, t;
-        MeVector3 p, q;
-        McdNfSegmentSegment(f1->pts[0], f1->pts[1], f2->pts[0], f2->pts[1], &s, &t);
+        MeVector3 p, q, e[4];
+        int k;
+        for (k = 0; k < 4; k++) {
+            const MeReal *x = k < 2 ? f1->pts[k] : f2->pts[k - 2];
+            MeVector3ScaleAndAdd(e[k], x, -MeVector3Dot(x, n), n);
+        }
+        McdNfSegmentSegment(e[0], e[1], e[2], e[3], &s, &t);
         MeVector3Lerp(p, f1->pts[0], f1->pts[1], s);
         MeVector3Lerp(q, f2->pts[0], f2->pts[1], t);
         MeVector3ScaleAndAdd(on1, p, f1->s->radius, n);
         MeVector3ScaleAndAdd(on2, q, -f2->s->radius, n);
-        /* keep the measured depth (the points may not be exactly across each other) */
-        if (McdNfAddPair(c, 0, 1, on1, on2, n, tol, 0) == 0)
-            return 0;
-        MeVector3Lerp(c[0].position, on1, on2, ME_R(0.5));
-        return 1;
     } else {
         MeVector3ScaleAndAdd(on1, d->p1, f1->s->radius, n);
         MeVector3ScaleAndAdd(on2, d->p2, -f2->s->radius, n);
