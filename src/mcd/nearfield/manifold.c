@@ -66,9 +66,20 @@ static int clipFaces(const Side *ref, const Side *inc, const MeVector3 n, MeBool
     MeVector3MultiplyScalar(nm, n, orient);
     if (MeVector3Dot(m, ref->facing) < ME_R(0.0))
         MeVector3Scale(m, -ME_R(1.0));
+    /* A rounded incident segment (sphyl): its surface points facing the reference lie across the axis,
+     * along the facing direction made perpendicular to the segment. They are clipped themselves (not
+     * the axis), so that every clipped point stays over the reference feature. */
+    MeVector3Copy(across, inc->facing);
+    if (incRadius > ME_R(0.0) && inc->n == 2) {
+        MeVector3 ax;
+        MeVector3Subtract(ax, inc->pts[1], inc->pts[0]);
+        MeVector3Normalize(ax);
+        MeVector3MultiplyAdd(across, -MeVector3Dot(across, ax), ax);
+        MeVector3Normalize(across);
+    }
     cnt = inc->n;
     for (i = 0; i < cnt; i++)
-        MeVector3Copy(buf[0][i], inc->pts[i]);
+        MeVector3ScaleAndAdd(buf[0][i], inc->pts[i], incRadius, across);
     for (e = 0; e < ref->n && cnt > 0; e++) {
         const MeReal *q = ref->pts[e], *q1 = ref->pts[(e + 1) % ref->n];
         MeVector3 edge, o;
@@ -95,21 +106,8 @@ static int clipFaces(const Side *ref, const Side *inc, const MeVector3 n, MeBool
         cur = nxt;
     }
     dims = cnt >= 3 ? 2 : (cnt == 2 ? 1 : 0);
-    /* A rounded incident segment (sphyl): its surface points facing the reference lie across the axis,
-     * along the facing direction made perpendicular to the segment. */
-    MeVector3Copy(across, inc->facing);
-    if (incRadius > ME_R(0.0) && inc->n == 2) {
-        MeVector3 ax;
-        MeVector3Subtract(ax, inc->pts[1], inc->pts[0]);
-        MeVector3Normalize(ax);
-        MeVector3MultiplyAdd(across, -MeVector3Dot(across, ax), ax);
-        MeVector3Normalize(across);
-    }
-    for (i = 0; i < cnt; i++) {
-        MeVector3 p;
-        MeVector3ScaleAndAdd(p, buf[cur][i], incRadius, across);
-        count += emit(c, count, CLIP_MAX, ref, ref->pts[0], m, p, n, refIsFirst, tol, dims);
-    }
+    for (i = 0; i < cnt; i++)
+        count += emit(c, count, CLIP_MAX, ref, ref->pts[0], m, buf[cur][i], n, refIsFirst, tol, dims);
     (void)maxc;
     return count;
 }
