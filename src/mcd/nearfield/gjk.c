@@ -224,6 +224,10 @@ MeBool McdNfGjk(const McdNfShape *s1, const McdNfShape *s2, McdNfSimplex *sx, Mc
         if (vv <= absEps * absEps)
             return MEFALSE; /* touching cores: the direction is not defined, let EPA decide */
         if (vv >= prev) { /* rounding stalled the descent: keep the previous, closer simplex */
+            /* the last support point lay beyond the origin (a sliver tetrahedron round it): no
+             * separating plane was found, so the cores may overlap: let EPA decide */
+            if (vw <= ME_R(0.0))
+                return MEFALSE;
             *sx = prevSimplex;
             vv = prev;
             MeVector3Copy(v, prevV);
