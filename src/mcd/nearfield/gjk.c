@@ -445,3 +445,12 @@ void McdNfCoreDistance(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance
         refineNormal(s1, s2, out);
     }
 }
+
+void McdNfRefineSeparated(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance *d)
+{
+    /* GJK's closest points are accurate in distance but, on curved cores, its direction only to about
+     * the square root of that accuracy; the distance is -min_n h_D(n) as well, so the same refinement
+     * applies (from the lower bound along GJK's direction). */
+    d->distance = -overlapAlong(s1, s2, d->normal);
+    refineNormal(s1, s2, d);
+}

@@ -266,5 +266,7 @@ int McdNfConvexConvex(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g
     McdNfCoreDistance(&s1, &s2, &d);
     if (d.distance - s1.radius - s2.radius > tolerance)
         return 0;
+    if (d.distance > ME_R(0.0)) /* apart cores, but within the tolerance: contacts need the exact normal */
+        McdNfRefineSeparated(&s1, &s2, &d);
     return McdNfManifold(&s1, &s2, &d, tolerance, contacts, maxContacts);
 }
