@@ -311,7 +311,7 @@ static void newtonNormal(const McdNfShape *s1, const McdNfShape *s2, McdNfDistan
         MeVector3 n;
         MeVector3ScaleAndAdd(n, d->normal, -MeVector3Dot(d->normal, axis), axis);
         if (!MeVector3NormalizeSafe(n) || !tryNormal(s1, s2, d, n))
-            return;
+            axis = NULL; /* not on that kink: smooth there */
     }
     for (it = 0; it < 6; it++) {
         MeVector3 u, v, n0, nNew, tmp;
@@ -370,6 +370,50 @@ static void featureNormal(MeVector3 *p, MeVector3 m)
     MeVector3Normalize(m);
 }
 
+/* The normal is a face's: if the other core's support point is not over the face (seen along the
+ * normal), search across the face edge it lies beyond. */
+static void acrossFaceEdge(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance *d, MeVector3 *poly, int n,
+                           const McdNfShape *other)
+{
+    MeVector3 q, m, e, best = {ME_R(0.0), ME_R(0.0), ME_R(0.0)}, away = {ME_R(0.0), ME_R(0.0), ME_R(0.0)};
+    MeReal worst = MCD_NF_REL_EPS * (s1->size + s2->size), orient;
+    int i;
+    if (other == s2)
+        MeVector3MultiplyScalar(m, d->normal, -ME_R(1.0));
+    else
+        MeVector3Copy(m, d->normal);
+    McdNfCoreSupport(other, m, q);
+    featureNormal(poly, m);
+    orient = MeVector3Dot(m, d->normal) >= ME_R(0.0) ? ME_R(1.0) : -ME_R(1.0);
+    for (i = 0; i < n; i++) {
+        MeVector3 x, dq;
+        MeReal out;
+        MeVector3Subtract(e, poly[(i + 1) % n], poly[i]);
+        MeVector3Subtract(dq, q, poly[i]);
+        MeVector3Cross(x, e, dq);
+        out = -orient * MeVector3Dot(x, d->normal) / MeMAX(MeVector3Magnitude(e), ME_MIN_EPSILON);
+        if (out > worst) {
+            worst = out;
+            MeVector3Copy(best, e);
+            MeVector3Copy(away, dq);
+        }
+    }
+    if (worst > MCD_NF_REL_EPS * (s1->size + s2->size)) {
+        /* start tilted slightly beyond the edge, where the face's support is that edge (smooth) */
+        McdNfDistance d0 = *d;
+        MeVector3Normalize(best);
+        MeVector3MultiplyAdd(away, -MeVector3Dot(away, best), best);
+        MeVector3MultiplyAdd(away, -MeVector3Dot(away, d->normal), d->normal);
+        MeVector3Normalize(away);
+        MeVector3MultiplyAdd(d->normal, ME_R(2.0) * ME_TOL_NF_STEP, away);
+        MeVector3Normalize(d->normal);
+        d->distance = -overlapAlong(s1, s2, d->normal);
+        newtonNormal(s1, s2, d, n == 4 ? best : NULL); /* a box face's edge is a kink, a disc's rim not */
+        if (d->distance < d0.distance)
+            *d = d0;
+    }
+}
+
 /* The minimum of h_D over directions lies on the kinks of the cores' supports: where a core's facing
  * feature is a face, the normal is the face's; where both are segments, it is across both; where one
  * is a segment, it is perpendicular to it (then a one-dimensional search); else h_D is smooth there. */
@@ -383,9 +427,9 @@ static void refineNormal(const McdNfShape *s1, const McdNfShape *s2, McdNfDistan
     n1 = McdNfCoreFeature(s1, d->normal, h1, p1);
     n2 = McdNfCoreFeature(s2, m, h2, p2);
     if (n1 >= 3 || n2 >= 3) {
-        MeVector3 best;
+        MeVector3 best = {ME_R(0.0), ME_R(0.0), ME_R(1.0)};
         MeReal bestF = MEINFINITY;
-        int k;
+        int k, bestK = 0;
         for (k = 0; k < 2; k++) {
             MeReal F;
             if ((k == 0 ? n1 : n2) < 3)
@@ -396,11 +440,23 @@ static void refineNormal(const McdNfShape *s1, const McdNfShape *s2, McdNfDistan
             F = overlapAlong(s1, s2, m);
             if (F < bestF) {
                 bestF = F;
+                bestK = k;
                 MeVector3Copy(best, m);
             }
         }
-        tryNormal(s1, s2, d, best);
-        return;
+        {
+            /* The other core's support point must lie over the face; else the minimum is on the kink
+             * of the face's nearest edge (the normal tilts across that edge). */
+            McdNfDistance d0 = *d;
+            MeVector3Copy(d->normal, best);
+            d->distance = -bestF;
+            acrossFaceEdge(s1, s2, d, bestK == 0 ? p1 : p2, bestK == 0 ? n1 : n2, bestK == 0 ? s2 : s1);
+            if (d->distance >= d0.distance - MCD_NF_REL_EPS * (s1->size + s2->size))
+                return;
+            *d = d0;
+        }
+        n1 = n1 >= 3 ? 0 : n1; /* not a face contact: search as if smooth there */
+        n2 = n2 >= 3 ? 0 : n2;
     }
     if (n1 == 2) {
         MeVector3Subtract(e1, p1[1], p1[0]);
@@ -417,6 +473,16 @@ static void refineNormal(const McdNfShape *s1, const McdNfShape *s2, McdNfDistan
             if (MeVector3Dot(x, d->normal) < ME_R(0.0))
                 MeVector3Scale(x, -ME_R(1.0));
             tryNormal(s1, s2, d, x);
+        }
+        {
+            /* across both, or (when the crossing is beyond a segment's end) on one of the kinks */
+            McdNfDistance d1 = *d, d2 = *d;
+            newtonNormal(s1, s2, &d1, e1);
+            newtonNormal(s1, s2, &d2, e2);
+            if (d1.distance > d->distance)
+                *d = d1;
+            if (d2.distance > d->distance)
+                *d = d2;
             return;
         }
     }
