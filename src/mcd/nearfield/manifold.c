@@ -108,6 +108,37 @@ static int clipFaces(const Side *ref, const Side *inc, const MeVector3 n, MeBool
     dims = cnt >= 3 ? 2 : (cnt == 2 ? 1 : 0);
     for (i = 0; i < cnt; i++)
         count += emit(c, count, CLIP_MAX, ref, ref->pts[0], m, buf[cur][i], n, refIsFirst, tol, dims);
+    /* The incident shape's deepest point (its support along the facing direction, e.g. a sphyl's end
+     * cap) is the minimum-translation witness; the clipped points of a rounded or tilted feature may
+     * all be shallower: add it when it lies over the reference feature and is deeper. */
+    if (count > 0 && count < CLIP_MAX) {
+        MeVector3 p;
+        MeReal deepest = c[0].separation;
+        MeBool inside = METRUE;
+        McdNfCoreSupport(inc->s, inc->facing, p);
+        MeVector3ScaleAndAdd(p, p, incRadius, inc->facing);
+        for (i = 1; i < count; i++)
+            deepest = MeMIN(deepest, c[i].separation);
+        for (e = 0; e < ref->n && inside; e++) {
+            MeVector3 edge, o, dp;
+            MeVector3Subtract(edge, ref->pts[(e + 1) % ref->n], ref->pts[e]);
+            MeVector3Cross(o, edge, nm);
+            MeVector3Subtract(dp, p, ref->pts[e]);
+            inside = MeVector3Dot(o, dp) <= ME_R(0.0);
+        }
+        if (inside && emit(c, count, CLIP_MAX, ref, ref->pts[0], m, p, n, refIsFirst, tol, dims)) {
+            if (c[count].separation < deepest - MCD_NF_REL_EPS * (ref->s->size + inc->s->size)) {
+                if (cnt == 2) { /* a line contact stays two points: the nearer end gives way */
+                    int near = MeVector3DistanceSqr(c[0].position, c[count].position) <=
+                                       MeVector3DistanceSqr(c[count - 1].position, c[count].position)
+                                   ? 0
+                                   : count - 1;
+                    c[near] = c[count];
+                } else
+                    count++;
+            }
+        }
+    }
     (void)maxc;
     return count;
 }
