@@ -198,8 +198,10 @@ static void run_pair(void **state)
         assert_true(st.swapErr < tolEps + biasTol);
         assert_true(st.satErr < ME_TOL(1e-9, 1e-4));
     } else {
-        /* the general path (GJK + EPA on curved cores): see the report, most poses to 1e-3 of the size */
-        assert_true(st.bad <= st.touching / 20);
+        /* the general path (GJK + EPA on the cores, the normal refined on the supports): in double every
+         * pose to 1e-3 of the size; in float at most one pose in 500 (the supports of curved rims,
+         * resolved to ~1e-7, leave the normal to ~3e-4 where the overlap is nearly flat in it) */
+        assert_true(st.bad <= ME_TOL(0, st.touching / 500));
     }
     assert_int_equal(st.missed, 0);
     assert_int_equal(st.spurious, 0);

@@ -224,6 +224,10 @@ MeBool McdNfGjk(const McdNfShape *s1, const McdNfShape *s2, McdNfSimplex *sx, Mc
         if (vv <= absEps * absEps)
             return MEFALSE; /* touching cores: the direction is not defined, let EPA decide */
         if (vv >= prev) { /* rounding stalled the descent: keep the previous, closer simplex */
+            /* the last support point lay beyond the origin (a sliver tetrahedron round it): no
+             * separating plane was found, so the cores may overlap: let EPA decide */
+            if (vw <= ME_R(0.0))
+                return MEFALSE;
             *sx = prevSimplex;
             vv = prev;
             MeVector3Copy(v, prevV);
@@ -273,33 +277,76 @@ static MeReal overlapAt(const McdNfShape *s1, const McdNfShape *s2, const MeVect
     return MeVector3Dot(sp, m);
 }
 
+/* The overlap h_D(n) along the unit n. */
+static MeReal overlapAlong(const McdNfShape *s1, const McdNfShape *s2, const MeVector3 n)
+{
+    MeVector3 sp;
+    supportD(s1, s2, n, sp);
+    return MeVector3Dot(sp, n);
+}
+
+/* Take the unit n as the normal when the overlap along it is not above the current one (to the
+ * accuracy of the method). */
+static MeBool tryNormal(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance *d, const MeVector3 n)
+{
+    MeReal F = overlapAlong(s1, s2, n);
+    if (!(F <= -d->distance + MCD_NF_REL_EPS * (s1->size + s2->size)))
+        return MEFALSE;
+    MeVector3Copy(d->normal, n);
+    d->distance = -F;
+    return METRUE;
+}
+
 /* EPA stops when its polytope is within the accuracy of the depth, but on curved cores the depth is
  * flat in the direction (it varies with the square of the angle), so the normal may still be off by
- * ~1e-3. A few Newton steps on the overlap h_D(n) over directions (gradient from the support point,
- * Hessian by differences) sharpen it; a step is kept only when the overlap goes down. */
-static void refineNormal(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance *d)
+ * ~1e-3 (in float, by ~sqrt(2e-6)). Newton steps on the overlap h_D(n) over directions (gradient from
+ * the support point, Hessian by differences) sharpen it; a step is kept only when the overlap goes
+ * down. With `axis` (unit), n stays perpendicular to it: a one-dimensional search along the kink of a
+ * core whose facing feature is a segment along axis (h_D is not smooth across it). */
+static void newtonNormal(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance *d, const MeReal *axis)
 {
     const MeReal h = ME_TOL_NF_STEP;
     int it;
-    for (it = 0; it < 4; it++) {
+    if (axis) {
+        MeVector3 n;
+        MeVector3ScaleAndAdd(n, d->normal, -MeVector3Dot(d->normal, axis), axis);
+        if (!MeVector3NormalizeSafe(n) || !tryNormal(s1, s2, d, n))
+            axis = NULL; /* not on that kink: smooth there */
+    }
+    for (it = 0; it < 6; it++) {
         MeVector3 u, v, n0, nNew, tmp;
         MeReal g[2], gx[2], gy[2], F, Fnew, a, b, c, det, dx, dy, step;
         MeVector3Copy(n0, d->normal);
-        McdNfPerpendicular(u, n0);
-        MeVector3Cross(v, n0, u);
+        if (axis) {
+            MeVector3Copy(u, axis);
+            MeVector3Cross(v, n0, u);
+            MeVector3Normalize(v);
+        } else {
+            McdNfPerpendicular(u, n0);
+            MeVector3Cross(v, n0, u);
+        }
         F = overlapAt(s1, s2, n0, u, v, ME_R(0.0), ME_R(0.0), g, tmp);
-        if (MeFabs(g[0]) + MeFabs(g[1]) <= MCD_NF_REL_EPS * (s1->size + s2->size))
+        if (axis)
+            g[0] = ME_R(0.0);
+        if (MeFabs(g[0]) + MeFabs(g[1]) <= ME_R(1e-3) * MCD_NF_REL_EPS * (s1->size + s2->size))
             break;
-        overlapAt(s1, s2, n0, u, v, h, ME_R(0.0), gx, tmp);
         overlapAt(s1, s2, n0, u, v, ME_R(0.0), h, gy, tmp);
-        a = (gx[0] - g[0]) / h;
         c = (gy[1] - g[1]) / h;
-        b = ME_R(0.5) * ((gx[1] - g[1]) / h + (gy[0] - g[0]) / h);
-        det = a * c - b * b;
-        if (!(a > ME_R(0.0) && det > ME_R(0.0)))
-            break; /* not locally convex (a kink or a flat face): nothing to gain */
-        dx = -(c * g[0] - b * g[1]) / det;
-        dy = -(a * g[1] - b * g[0]) / det;
+        if (axis) {
+            if (!(c > ME_R(0.0)))
+                break;
+            dx = ME_R(0.0);
+            dy = -g[1] / c;
+        } else {
+            overlapAt(s1, s2, n0, u, v, h, ME_R(0.0), gx, tmp);
+            a = (gx[0] - g[0]) / h;
+            b = ME_R(0.5) * ((gx[1] - g[1]) / h + (gy[0] - g[0]) / h);
+            det = a * c - b * b;
+            if (!(a > ME_R(0.0) && det > ME_R(0.0)))
+                break; /* not locally convex (a kink or a flat face): nothing to gain */
+            dx = -(c * g[0] - b * g[1]) / det;
+            dy = -(a * g[1] - b * g[0]) / det;
+        }
         step = MeSqrt(dx * dx + dy * dy);
         if (step > ME_R(0.05)) {
             dx *= ME_R(0.05) / step;
@@ -311,6 +358,135 @@ static void refineNormal(const McdNfShape *s1, const McdNfShape *s2, McdNfDistan
         MeVector3Copy(d->normal, nNew);
         d->distance = -Fnew;
     }
+}
+
+/* Unit normal of a feature polygon (sign not fixed). */
+static void featureNormal(MeVector3 *p, MeVector3 m)
+{
+    MeVector3 u, v;
+    MeVector3Subtract(u, p[1], p[0]);
+    MeVector3Subtract(v, p[2], p[0]);
+    MeVector3Cross(m, u, v);
+    MeVector3Normalize(m);
+}
+
+/* The normal is a face's: if the other core's support point is not over the face (seen along the
+ * normal), search across the face edge it lies beyond. */
+static void acrossFaceEdge(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance *d, MeVector3 *poly, int n,
+                           const McdNfShape *other)
+{
+    MeVector3 q, m, e, best = {ME_R(0.0), ME_R(0.0), ME_R(0.0)}, away = {ME_R(0.0), ME_R(0.0), ME_R(0.0)};
+    MeReal worst = MCD_NF_REL_EPS * (s1->size + s2->size), orient;
+    int i;
+    if (other == s2)
+        MeVector3MultiplyScalar(m, d->normal, -ME_R(1.0));
+    else
+        MeVector3Copy(m, d->normal);
+    McdNfCoreSupport(other, m, q);
+    featureNormal(poly, m);
+    orient = MeVector3Dot(m, d->normal) >= ME_R(0.0) ? ME_R(1.0) : -ME_R(1.0);
+    for (i = 0; i < n; i++) {
+        MeVector3 x, dq;
+        MeReal out;
+        MeVector3Subtract(e, poly[(i + 1) % n], poly[i]);
+        MeVector3Subtract(dq, q, poly[i]);
+        MeVector3Cross(x, e, dq);
+        out = -orient * MeVector3Dot(x, d->normal) / MeMAX(MeVector3Magnitude(e), ME_MIN_EPSILON);
+        if (out > worst) {
+            worst = out;
+            MeVector3Copy(best, e);
+            MeVector3Copy(away, dq);
+        }
+    }
+    if (worst > MCD_NF_REL_EPS * (s1->size + s2->size)) {
+        /* start tilted slightly beyond the edge, where the face's support is that edge (smooth) */
+        McdNfDistance d0 = *d;
+        MeVector3Normalize(best);
+        MeVector3MultiplyAdd(away, -MeVector3Dot(away, best), best);
+        MeVector3MultiplyAdd(away, -MeVector3Dot(away, d->normal), d->normal);
+        MeVector3Normalize(away);
+        MeVector3MultiplyAdd(d->normal, ME_R(2.0) * ME_TOL_NF_STEP, away);
+        MeVector3Normalize(d->normal);
+        d->distance = -overlapAlong(s1, s2, d->normal);
+        newtonNormal(s1, s2, d, n == 4 ? best : NULL); /* a box face's edge is a kink, a disc's rim not */
+        if (d->distance < d0.distance)
+            *d = d0;
+    }
+}
+
+/* The minimum of h_D over directions lies on the kinks of the cores' supports: where a core's facing
+ * feature is a face, the normal is the face's; where both are segments, it is across both; where one
+ * is a segment, it is perpendicular to it (then a one-dimensional search); else h_D is smooth there. */
+static void refineNormal(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance *d)
+{
+    MeVector3 p1[MCD_NF_MAX_FEATURE], p2[MCD_NF_MAX_FEATURE], h1, h2, m, e1, e2, x;
+    int n1, n2;
+    MeVector3Subtract(h1, s2->tm[3], s1->tm[3]);
+    MeVector3MultiplyScalar(h2, h1, -ME_R(1.0));
+    MeVector3MultiplyScalar(m, d->normal, -ME_R(1.0));
+    n1 = McdNfCoreFeature(s1, d->normal, h1, p1);
+    n2 = McdNfCoreFeature(s2, m, h2, p2);
+    if (n1 >= 3 || n2 >= 3) {
+        MeVector3 best = {ME_R(0.0), ME_R(0.0), ME_R(1.0)};
+        MeReal bestF = MEINFINITY;
+        int k, bestK = 0;
+        for (k = 0; k < 2; k++) {
+            MeReal F;
+            if ((k == 0 ? n1 : n2) < 3)
+                continue;
+            featureNormal(k == 0 ? p1 : p2, m);
+            if (MeVector3Dot(m, d->normal) < ME_R(0.0))
+                MeVector3Scale(m, -ME_R(1.0));
+            F = overlapAlong(s1, s2, m);
+            if (F < bestF) {
+                bestF = F;
+                bestK = k;
+                MeVector3Copy(best, m);
+            }
+        }
+        {
+            /* The other core's support point must lie over the face; else the minimum is on the kink
+             * of the face's nearest edge (the normal tilts across that edge). */
+            McdNfDistance d0 = *d;
+            MeVector3Copy(d->normal, best);
+            d->distance = -bestF;
+            acrossFaceEdge(s1, s2, d, bestK == 0 ? p1 : p2, bestK == 0 ? n1 : n2, bestK == 0 ? s2 : s1);
+            if (d->distance >= d0.distance - MCD_NF_REL_EPS * (s1->size + s2->size))
+                return;
+            *d = d0;
+        }
+        n1 = n1 >= 3 ? 0 : n1; /* not a face contact: search as if smooth there */
+        n2 = n2 >= 3 ? 0 : n2;
+    }
+    if (n1 == 2) {
+        MeVector3Subtract(e1, p1[1], p1[0]);
+        MeVector3Normalize(e1);
+    }
+    if (n2 == 2) {
+        MeVector3Subtract(e2, p2[1], p2[0]);
+        MeVector3Normalize(e2);
+    }
+    if (n1 == 2 && n2 == 2) {
+        MeVector3Cross(x, e1, e2);
+        if (MeVector3Magnitude(x) > MCD_NF_FEATURE_SIN) {
+            MeVector3Normalize(x);
+            if (MeVector3Dot(x, d->normal) < ME_R(0.0))
+                MeVector3Scale(x, -ME_R(1.0));
+            tryNormal(s1, s2, d, x);
+        }
+        {
+            /* across both, or (when the crossing is beyond a segment's end) on one of the kinks */
+            McdNfDistance d1 = *d, d2 = *d;
+            newtonNormal(s1, s2, &d1, e1);
+            newtonNormal(s1, s2, &d2, e2);
+            if (d1.distance > d->distance)
+                *d = d1;
+            if (d2.distance > d->distance)
+                *d = d2;
+            return;
+        }
+    }
+    newtonNormal(s1, s2, d, n1 == 2 ? e1 : (n2 == 2 ? e2 : NULL));
 }
 
 void McdNfCoreDistance(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance *out)
@@ -334,4 +510,13 @@ void McdNfCoreDistance(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance
         out->distance = -F;
         refineNormal(s1, s2, out);
     }
+}
+
+void McdNfRefineSeparated(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance *d)
+{
+    /* GJK's closest points are accurate in distance but, on curved cores, its direction only to about
+     * the square root of that accuracy; the distance is -min_n h_D(n) as well, so the same refinement
+     * applies (from the lower bound along GJK's direction). */
+    d->distance = -overlapAlong(s1, s2, d->normal);
+    refineNormal(s1, s2, d);
 }

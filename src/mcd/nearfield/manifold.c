@@ -66,9 +66,20 @@ static int clipFaces(const Side *ref, const Side *inc, const MeVector3 n, MeBool
     MeVector3MultiplyScalar(nm, n, orient);
     if (MeVector3Dot(m, ref->facing) < ME_R(0.0))
         MeVector3Scale(m, -ME_R(1.0));
+    /* A rounded incident segment (sphyl): its surface points facing the reference lie across the axis,
+     * along the facing direction made perpendicular to the segment. They are clipped themselves (not
+     * the axis), so that every clipped point stays over the reference feature. */
+    MeVector3Copy(across, inc->facing);
+    if (incRadius > ME_R(0.0) && inc->n == 2) {
+        MeVector3 ax;
+        MeVector3Subtract(ax, inc->pts[1], inc->pts[0]);
+        MeVector3Normalize(ax);
+        MeVector3MultiplyAdd(across, -MeVector3Dot(across, ax), ax);
+        MeVector3Normalize(across);
+    }
     cnt = inc->n;
     for (i = 0; i < cnt; i++)
-        MeVector3Copy(buf[0][i], inc->pts[i]);
+        MeVector3ScaleAndAdd(buf[0][i], inc->pts[i], incRadius, across);
     for (e = 0; e < ref->n && cnt > 0; e++) {
         const MeReal *q = ref->pts[e], *q1 = ref->pts[(e + 1) % ref->n];
         MeVector3 edge, o;
@@ -95,20 +106,38 @@ static int clipFaces(const Side *ref, const Side *inc, const MeVector3 n, MeBool
         cur = nxt;
     }
     dims = cnt >= 3 ? 2 : (cnt == 2 ? 1 : 0);
-    /* A rounded incident segment (sphyl): its surface points facing the reference lie across the axis,
-     * along the facing direction made perpendicular to the segment. */
-    MeVector3Copy(across, inc->facing);
-    if (incRadius > ME_R(0.0) && inc->n == 2) {
-        MeVector3 ax;
-        MeVector3Subtract(ax, inc->pts[1], inc->pts[0]);
-        MeVector3Normalize(ax);
-        MeVector3MultiplyAdd(across, -MeVector3Dot(across, ax), ax);
-        MeVector3Normalize(across);
-    }
-    for (i = 0; i < cnt; i++) {
+    for (i = 0; i < cnt; i++)
+        count += emit(c, count, CLIP_MAX, ref, ref->pts[0], m, buf[cur][i], n, refIsFirst, tol, dims);
+    /* The incident shape's deepest point (its support along the facing direction, e.g. a sphyl's end
+     * cap) is the minimum-translation witness; the clipped points of a rounded or tilted feature may
+     * all be shallower: add it when it lies over the reference feature and is deeper. */
+    if (count > 0 && count < CLIP_MAX) {
         MeVector3 p;
-        MeVector3ScaleAndAdd(p, buf[cur][i], incRadius, across);
-        count += emit(c, count, CLIP_MAX, ref, ref->pts[0], m, p, n, refIsFirst, tol, dims);
+        MeReal deepest = c[0].separation;
+        MeBool inside = METRUE;
+        McdNfCoreSupport(inc->s, inc->facing, p);
+        MeVector3ScaleAndAdd(p, p, incRadius, inc->facing);
+        for (i = 1; i < count; i++)
+            deepest = MeMIN(deepest, c[i].separation);
+        for (e = 0; e < ref->n && inside; e++) {
+            MeVector3 edge, o, dp;
+            MeVector3Subtract(edge, ref->pts[(e + 1) % ref->n], ref->pts[e]);
+            MeVector3Cross(o, edge, nm);
+            MeVector3Subtract(dp, p, ref->pts[e]);
+            inside = MeVector3Dot(o, dp) <= ME_R(0.0);
+        }
+        if (inside && emit(c, count, CLIP_MAX, ref, ref->pts[0], m, p, n, refIsFirst, tol, dims)) {
+            if (c[count].separation < deepest - MCD_NF_REL_EPS * (ref->s->size + inc->s->size)) {
+                if (cnt == 2) { /* a line contact stays two points: the nearer end gives way */
+                    int near = MeVector3DistanceSqr(c[0].position, c[count].position) <=
+                                       MeVector3DistanceSqr(c[count - 1].position, c[count].position)
+                                   ? 0
+                                   : count - 1;
+                    c[near] = c[count];
+                } else
+                    count++;
+            }
+        }
     }
     (void)maxc;
     return count;
@@ -191,18 +220,20 @@ static int singlePoint(const Side *f1, const Side *f2, const McdNfDistance *d, M
         MeVector3ScaleAndAdd(on2, f2->pts[0], -f2->s->radius, n);
         MeVector3ScaleAndAdd(on1, on2, -sep, n);
     } else if (f1->n == 2 && f2->n == 2) {
+        /* The witnesses are where the segments cross seen along n (not their closest points in
+         * space, which for deep overlaps lie along the segments' common perpendicular instead). */
         MeReal s, t;
-        MeVector3 p, q;
-        McdNfSegmentSegment(f1->pts[0], f1->pts[1], f2->pts[0], f2->pts[1], &s, &t);
+        MeVector3 p, q, e[4];
+        int k;
+        for (k = 0; k < 4; k++) {
+            const MeReal *x = k < 2 ? f1->pts[k] : f2->pts[k - 2];
+            MeVector3ScaleAndAdd(e[k], x, -MeVector3Dot(x, n), n);
+        }
+        McdNfSegmentSegment(e[0], e[1], e[2], e[3], &s, &t);
         MeVector3Lerp(p, f1->pts[0], f1->pts[1], s);
         MeVector3Lerp(q, f2->pts[0], f2->pts[1], t);
         MeVector3ScaleAndAdd(on1, p, f1->s->radius, n);
         MeVector3ScaleAndAdd(on2, q, -f2->s->radius, n);
-        /* keep the measured depth (the points may not be exactly across each other) */
-        if (McdNfAddPair(c, 0, 1, on1, on2, n, tol, 0) == 0)
-            return 0;
-        MeVector3Lerp(c[0].position, on1, on2, ME_R(0.5));
-        return 1;
     } else {
         MeVector3ScaleAndAdd(on1, d->p1, f1->s->radius, n);
         MeVector3ScaleAndAdd(on2, d->p2, -f2->s->radius, n);
@@ -266,5 +297,7 @@ int McdNfConvexConvex(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g
     McdNfCoreDistance(&s1, &s2, &d);
     if (d.distance - s1.radius - s2.radius > tolerance)
         return 0;
+    if (d.distance > ME_R(0.0)) /* apart cores, but within the tolerance: contacts need the exact normal */
+        McdNfRefineSeparated(&s1, &s2, &d);
     return McdNfManifold(&s1, &s2, &d, tolerance, contacts, maxContacts);
 }

@@ -66,6 +66,9 @@ MeBool McdNfGjk(const McdNfShape *s1, const McdNfShape *s2, McdNfSimplex *simple
 void McdNfEpa(const McdNfShape *s1, const McdNfShape *s2, const McdNfSimplex *simplex, McdNfDistance *out);
 /** GJK then EPA if needed: signed core distance, normal and witnesses. */
 void McdNfCoreDistance(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance *out);
+/** Sharpen the normal of separated cores (GJK's result): distance and normal then come from the
+ *  supports along the normal (the witnesses are left as they are). */
+void McdNfRefineSeparated(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance *d);
 
 /** Contact set from the cores' facing features along d->normal: clipping, separation per point,
  *  kept when <= tolerance, reduced to at most maxContacts. Returns the count. */
