@@ -102,6 +102,41 @@ static void carwheel_suspension_period(void **state)
     MdtWorldDestroy(c.w);
 }
 
+/* Damping Kd: successive peaks of the suspension height shrink by exp(−2π ζ / sqrt(1 − ζ²)), ζ = Kd /
+ * (2 sqrt(Kp μ)); the spring's rest height is the reference. */
+static void carwheel_suspension_damping_and_reference(void **state)
+{
+    (void)state;
+    const double k = 100, d = 1, mu = 4.0 * 1.0 / 5.0, zeta = d / (2 * sqrt(k * mu));
+    const double expected = exp(-2 * PI * zeta / sqrt(1 - zeta * zeta));
+    Car c = makeCar();
+    MdtCarWheelSetSuspension(c.j, (MeReal)k, (MeReal)d, 0, -1, 1, 0);
+    MdtBodySetLinearVelocity(c.wheel, 0, 0, -0.2f);
+    MdtBodySetLinearVelocity(c.chassis, 0, 0, 0.05f);
+    double prev2 = 0, prev = 0, peaks[2];
+    int n = 0;
+    for (int i = 0; i < 2400 && n < 2; i++) {
+        MdtWorldStep(c.w, 1.0f / 240);
+        double x = MdtCarWheelGetSuspensionHeight(c.j);
+        if (i > 1 && prev > prev2 && prev >= x && prev > 0)
+            peaks[n++] = prev;
+        prev2 = prev;
+        prev = x;
+    }
+    assert_int_equal(n, 2);
+    print_message("car wheel suspension Kp %.0f Kd %.0f (zeta %.3f): peak ratio %.5f vs %.5f (%.2f %%)\n", k, d, zeta,
+                  peaks[1] / peaks[0], expected, 100 * fabs(peaks[1] / peaks[0] - expected) / expected);
+    assert_rel(peaks[1] / peaks[0], expected, 0.02);
+    MdtWorldDestroy(c.w);
+
+    c = makeCar();
+    MdtCarWheelSetSuspension(c.j, (MeReal)k, 10, 0, -1, 1, 0.1f);
+    step(c.w, 600);
+    print_message("car wheel suspension with reference 0.1 m: settles at %.6f m\n", MdtCarWheelGetSuspensionHeight(c.j));
+    assert_near(MdtCarWheelGetSuspensionHeight(c.j), 0.1, 1e-4);
+    MdtWorldDestroy(c.w);
+}
+
 static void carwheel_suspension_stops(void **state)
 {
     (void)state;
@@ -170,6 +205,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(carwheel_defaults_and_readings),
         cmocka_unit_test(carwheel_suspension_period),
+        cmocka_unit_test(carwheel_suspension_damping_and_reference),
         cmocka_unit_test(carwheel_suspension_stops),
         cmocka_unit_test(carwheel_motors_and_lock),
     };
