@@ -3,8 +3,9 @@
  * Direct path: the chain hangs with every joint's separation below 1e-3 of a link length, and the
  * separation is the one the softness predicts. At rest the rows satisfy J v + ε x = −γ φ / h with
  * v = 0 and x = F h (F: the weight below the joint), so each joint stretches by |φ| = ε F h² / γ.
- * Iterative path: as MdtWorldSetMaxLCPIterations rises, the solver's reported residual and the
- * joint separation fall (table printed). */
+ * Iterative path: as MdtWorldSetMaxLCPIterations rises, the solver's reported residual (on the first
+ * step, the same LCP for every cap) and the joint separation fall (table printed). Auto path: the
+ * world picks direct or iterative by the partition's size. */
 #include "karma_test.h"
 
 #include <karma/Mdt.h>
@@ -129,15 +130,19 @@ static void hanging_chain_iterative(void **state)
         for (int step = 0; step < 120; step++) {
             MdtWorldStep(c.world, (MeReal)H);
             sep[k] = fmax(sep[k], maxSeparation(&c));
+            if (step == 0) {
+                /* The residual of the first step: the same LCP for every cap (later steps solve
+                 * different problems, as the trajectories part). */
+                MdtSolverStats stats;
+                MdtWorldGetSolverStats(c.world, &stats);
+                assert_int_equal(stats.iterativePartitions, 1);
+                residual[k] = stats.maxResidual;
+            }
         }
-        MdtSolverStats stats;
-        MdtWorldGetSolverStats(c.world, &stats);
-        assert_int_equal(stats.iterativePartitions, 1);
-        residual[k] = stats.maxResidual;
         MdtWorldDestroy(c.world);
     }
-    print_message("50-link chain, iterative path, 2 s: %10s %14s %16s\n", "iterations", "residual m/s",
-                  "max separation m");
+    print_message("50-link chain, iterative path: %10s %21s %22s\n", "iterations", "first-step residual m/s",
+                  "max separation in 2 s m");
     for (int k = 0; k < NCAPS; k++)
         print_message("%48d %14.3e %16.3e\n", caps[k], residual[k], sep[k]);
     for (int k = 1; k < NCAPS; k++) {
@@ -147,12 +152,40 @@ static void hanging_chain_iterative(void **state)
     assert_true(sep[NCAPS - 1] < 0.1 * sep[0]);
 }
 
+/* MdtLCPSolverAuto (the default) picks by size: the chain's 150 rows are solved exactly when the
+ * world's direct limit allows 150 rows, iteratively below that (default limit 128). */
+static void world_picks_the_path_by_size(void **state)
+{
+    (void)state;
+    static const int limits[3] = {0, 150, 149};
+    for (int k = 0; k < 3; k++) {
+        Chain c;
+        build(&c, 0, 1e-5);
+        assert_int_equal(MdtWorldGetLCPSolver(c.world), MdtLCPSolverAuto);
+        if (limits[k])
+            MdtWorldSetMaxDirectRows(c.world, limits[k]);
+        else
+            assert_int_equal(MdtWorldGetMaxDirectRows(c.world), 128);
+        MdtWorldStep(c.world, (MeReal)H);
+        MdtSolverStats stats;
+        MdtWorldGetSolverStats(c.world, &stats);
+        print_message("auto path, direct limit %d rows: 150-row partition solved %s (%d iterations, %d pivots)\n",
+                      MdtWorldGetMaxDirectRows(c.world), stats.directPartitions ? "directly" : "iteratively",
+                      stats.iterations, stats.pivots);
+        assert_int_equal(stats.maxPartitionRows, 3 * LINKS);
+        assert_int_equal(stats.directPartitions, limits[k] == 150 ? 1 : 0);
+        assert_int_equal(stats.iterativePartitions, limits[k] == 150 ? 0 : 1);
+        MdtWorldDestroy(c.world);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(hanging_chain_direct),
         cmocka_unit_test(swinging_chain_direct),
         cmocka_unit_test(hanging_chain_iterative),
+        cmocka_unit_test(world_picks_the_path_by_size),
     };
     MeSetMessageLevel(ME_LEVEL_WARNING);
     return cmocka_run_group_tests(tests, NULL, NULL);
