@@ -320,12 +320,54 @@ static void limit_lock_offset_and_overshoot(void **state)
     MdtWorldDestroy(r.w);
 }
 
+/* ---- Angular2 mode ---- */
+/* An Angular3 joint to the world with rotation enabled about its primary axis z (Angular2): a spin about
+ * z is free (kept, 2 rows), one about x is stopped; a torque about z turns the body at T / I. */
+static void angular2_frees_the_primary_axis(void **state)
+{
+    (void)state;
+    MdtWorldID w = MdtWorldCreate(2, 2, 1, 1);
+    MdtWorldSetAutoDisable(w, MEFALSE);
+    MdtBodyID b = MdtBodyCreate(w);
+    MdtBodySetSphericalInertiaTensor(b, 0.5f);
+    MdtBodySetAngularVelocity(b, 2, 0, 3);
+    MdtBodyEnable(b);
+    MdtAngular3ID j = MdtAngular3Create(w);
+    MdtAngular3SetBodies(j, b, NULL);
+    MdtAngular3SetAxis(j, 0, 0, 1);
+    MdtAngular3EnableRotation(j, METRUE);
+    assert_true(MdtAngular3RotationIsEnabled(j));
+    MdtAngular3Enable(j);
+    for (int i = 0; i < 60; i++)
+        MdtWorldStep(w, (MeReal)H);
+    MeVector3 om;
+    MdtBodyGetAngularVelocity(b, om);
+    MeMatrix3 R;
+    MdtBodyGetOrientation(b, R); /* row 2: the body's z axis, which must stay the world's */
+    print_message("Angular2 about z: after 1 s spin (%.1e, %.1e, %.5f) rad/s (0, 0, 3), z axis tilt %.1e, rows %d\n",
+                  om[0], om[1], om[2], sqrt(R[2][0] * R[2][0] + R[2][1] * R[2][1]), MdtAngular3GetRowCount(j));
+    assert_int_equal(MdtAngular3GetRowCount(j), 2);
+    assert_near(om[0], 0, 1e-4);
+    assert_near(om[1], 0, 1e-4);
+    assert_near(om[2], 3, ME_TOL(1e-9, 1e-5));
+    assert_true(sqrt(R[2][0] * R[2][0] + R[2][1] * R[2][1]) < 1e-3);
+    for (int i = 0; i < 60; i++) {
+        MdtBodyAddTorque(b, 0, 0, 1);
+        MdtWorldStep(w, (MeReal)H);
+    }
+    MdtBodyGetAngularVelocity(b, om);
+    print_message("Angular2 under 1 N m about z for 1 s: spin %.5f rad/s (3 + T t / I = 5)\n", om[2]);
+    assert_near(om[2], 5, ME_TOL(1e-9, 1e-4));
+    MdtWorldDestroy(w);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(common_accessors_and_iteration),
         cmocka_unit_test(moving_world_attachments),
         cmocka_unit_test(limit_lock_offset_and_overshoot),
+        cmocka_unit_test(angular2_frees_the_primary_axis),
     };
     MeSetMessageLevel(ME_LEVEL_WARNING);
     return cmocka_run_group_tests(tests, NULL, NULL);
