@@ -361,6 +361,51 @@ static void angular2_frees_the_primary_axis(void **state)
     MdtWorldDestroy(w);
 }
 
+/* ---- contact group destroy callback ---- */
+typedef struct Destroyed {
+    int calls;
+    MdtContactGroupID last;
+} Destroyed;
+
+static void onGroupDestroyed(MdtContactGroupID g, void *data)
+{
+    Destroyed *d = (Destroyed *)data;
+    d->calls++;
+    d->last = g;
+    assert_true(MdtConstraintIsValid(MdtContactGroupQuaConstraint(g))); /* still readable in the callback */
+}
+
+static void contact_group_destroy_callback(void **state)
+{
+    (void)state;
+    MdtWorldID w = MdtWorldCreate(4, 16, 1, 1);
+    Destroyed seen = {0, NULL};
+    MdtWorldSetContactGroupDestroyCallback(w, onGroupDestroyed, &seen);
+    MdtBodyID a = MdtBodyCreate(w), b = MdtBodyCreate(w);
+    MdtContactGroupID g1 = MdtContactGroupCreate(w), g2 = MdtContactGroupCreate(w), g3 = MdtContactGroupCreate(w);
+    MdtContactGroupSetBodies(g1, a, NULL);
+    MdtContactGroupSetBodies(g2, a, b);
+    MdtContactGroupSetBodies(g3, b, NULL);
+    MdtContactGroupCreateContact(g2);
+    MdtBSJointID j = MdtBSJointCreate(w);
+    MdtBSJointSetBodies(j, a, b);
+    /* By the application. */
+    MdtContactGroupDestroy(g1);
+    assert_int_equal(seen.calls, 1);
+    assert_ptr_equal(seen.last, g1);
+    /* With a body's contacts (not its joints). */
+    MdtBodyDestroyContacts(a);
+    assert_int_equal(seen.calls, 2);
+    assert_ptr_equal(seen.last, g2);
+    assert_true(MdtConstraintIsValid(MdtBSJointQuaConstraint(j)));
+    /* With the body: its remaining group goes too. */
+    MdtBodyDestroy(b);
+    assert_int_equal(seen.calls, 3);
+    assert_ptr_equal(seen.last, g3);
+    print_message("contact group destroy callback: %d calls (destroy, body contacts, body)\n", seen.calls);
+    MdtWorldDestroy(w);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -368,6 +413,7 @@ int main(void)
         cmocka_unit_test(moving_world_attachments),
         cmocka_unit_test(limit_lock_offset_and_overshoot),
         cmocka_unit_test(angular2_frees_the_primary_axis),
+        cmocka_unit_test(contact_group_destroy_callback),
     };
     MeSetMessageLevel(ME_LEVEL_WARNING);
     return cmocka_run_group_tests(tests, NULL, NULL);
