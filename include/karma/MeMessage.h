@@ -56,7 +56,8 @@ ME_API MeMessageHandler MeSetMessageHandler(MeMessageHandler handler, void *user
 /** The default handler, for handlers that want to chain to it. */
 ME_API void MeDefaultMessageHandler(const MeMessageInfo *info, void *user);
 
-/** Messages below this level are dropped before reaching the handler (default ME_LEVEL_INFO). */
+/** Messages below this level are dropped before reaching the handler, but still counted
+ *  (default ME_LEVEL_WARNING: information such as chunk growth is shown only when asked for). */
 ME_API void MeSetMessageLevel(MeMessageLevel minimum);
 ME_API MeMessageLevel MeGetMessageLevel(void);
 

@@ -23,7 +23,8 @@ enum { ERROR_TABLE_SIZE = sizeof errorTable / sizeof errorTable[0] };
 
 static MeMessageHandler currentHandler = MeDefaultMessageHandler;
 static void *currentUser = NULL;
-static MeMessageLevel minimumLevel = ME_LEVEL_INFO;
+/* Information (a chunk grew) is counted but not shown unless asked for: a quiet default run. */
+static MeMessageLevel minimumLevel = ME_LEVEL_WARNING;
 static unsigned long counts[ME_ERR_CODE_LIMIT_];
 static unsigned long levelCounts[ME_LEVEL_FATAL + 1];
 static MeErrorCode lastCode = ME_ERR_NONE;
