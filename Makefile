@@ -6,8 +6,9 @@
 #   make install   install it (PREFIX=/usr/local by default)
 #   make deps      install missing Debian packages (as root), or print the apt-get line
 #   make bench     build Release with -DKARMA_BUILD_BENCH=ON (build/bench) and run the benchmarks:
-#                  dynamics on hand-made contacts, then the scenes against ODE and Bullet (bench/run.sh,
-#                  which writes bench/RESULTS.md; installs libode-dev and libbullet-dev as root)
+#                  dynamics on hand-made contacts, the collision space and the pair tests (bench/mcd),
+#                  then the scenes against ODE and Bullet (bench/run.sh, which writes bench/RESULTS.md;
+#                  installs libode-dev and libbullet-dev as root)
 #   make bench-scenes  only the scenes against ODE and Bullet
 #   make clean     remove build/
 
@@ -58,8 +59,10 @@ install: build
 # BENCH_ARGS is passed to the runner, e.g. make bench BENCH_ARGS="--scenes=chain --steps=100".
 bench: deps
 	cmake -S . -B build/bench -DCMAKE_BUILD_TYPE=Release -DKARMA_BUILD_BENCH=ON -DKARMA_BUILD_TESTS=OFF -DKARMA_BUILD_TOOLS=OFF
-	cmake --build build/bench -j $(JOBS) --target karma_bench_mdt
+	cmake --build build/bench -j $(JOBS) --target karma_bench_mdt mcd_space_bench mcd_nearfield_bench
 	build/bench/bench/mdt/karma_bench_mdt $(BENCH_ARGS)
+	build/bench/bench/mcd/mcd_space_bench
+	build/bench/bench/mcd/mcd_nearfield_bench
 	JOBS=$(JOBS) bash bench/run.sh
 
 clean:

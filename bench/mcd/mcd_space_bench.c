@@ -1,9 +1,12 @@
 /* mcd_space_bench.c -- cost of the farfield: McdSpaceUpdateAll + reading every pair, per step, for
- * spheres moving coherently in a box (about two neighbours each), 1,000 and 10,000 models.
+ * spheres moving coherently in a box (about two neighbours each), 1,000 and 10,000 models, every
+ * model moving every step.
  *
- * Usage: mcd_space_bench [steps]   (default 300). Prints one line per (models, axes): mean and best
- * milliseconds per step over the timed steps (best = the cost without interference from other
- * processes), pairs per step, hellos and goodbyes per step. */
+ * Usage: mcd_space_bench [steps]   (default 300). Prints one Markdown table row per (models, axes):
+ * median wall-clock and processor-time milliseconds per step over the timed steps (the processor
+ * time of this process is less inflated when other jobs share the machine), the best wall-clock
+ * step, pairs reported per step (Hello + Staying), Hellos and Goodbyes per step, and the pairs lost
+ * to a full pool (0 = the pool held them all). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,6 +21,12 @@ static double nowMs(void)
     struct timespec ts;
     timespec_get(&ts, TIME_UTC);
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+static int cmpDouble(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
 }
 
 static unsigned rng = 2463534242u;
@@ -51,7 +60,7 @@ static void run(int n, int axes, int steps)
     McdSpaceBuild(space);
     McdModelPairContainer *c = McdModelPairContainerCreate(1024);
     McdSpacePairIterator it;
-    double total = 0, best = 1e30;
+    double *wall = malloc((size_t)steps * sizeof *wall), *cpu = malloc((size_t)steps * sizeof *cpu);
     long pairs = 0, hellos = 0, goodbyes = 0;
     int timed = 0;
     for (int step = 0; step < steps; step++) {
@@ -64,6 +73,7 @@ static void run(int n, int axes, int steps)
             }
         }
         double t0 = nowMs();
+        clock_t c0 = clock();
         McdSpaceUpdateAll(space);
         McdSpaceEndChanges(space);
         McdSpacePairIteratorBegin(space, &it);
@@ -76,21 +86,24 @@ static void run(int n, int axes, int steps)
             p += McdModelPairContainerGetHelloCount(c) + McdModelPairContainerGetStayingCount(c);
         } while (more);
         McdSpaceBeginChanges(space);
-        double dt = nowMs() - t0;
+        double dt = nowMs() - t0, dc = 1e3 * (double)(clock() - c0) / CLOCKS_PER_SEC;
         if (step >= 10) { /* after the first steps (first sort, caches) */
-            total += dt;
-            if (dt < best)
-                best = dt;
+            wall[timed] = dt;
+            cpu[timed] = dc;
             pairs += p;
             hellos += h;
             goodbyes += g;
             timed++;
         }
     }
-    printf("models %6d  axes %-3s  %8.3f ms/step mean  %8.3f best   pairs %8.1f  hello %7.1f  goodbye %7.1f  "
-           "(lost %d)\n",
-           n, axes == McdAllAxes ? "xyz" : axes == McdXAxis ? "x" : "?", total / timed, best, (double)pairs / timed,
-           (double)hellos / timed, (double)goodbyes / timed, McdSpaceGetLostPairCount(space));
+    qsort(wall, (size_t)timed, sizeof *wall, cmpDouble);
+    qsort(cpu, (size_t)timed, sizeof *cpu, cmpDouble);
+    printf("| %d | %s | %.3f | %.3f | %.3f | %.1f | %.1f | %.1f | %d |\n", n,
+           axes == McdAllAxes ? "xyz" : axes == McdXAxis ? "x" : "?", wall[timed / 2], cpu[timed / 2], wall[0],
+           (double)pairs / timed, (double)hellos / timed, (double)goodbyes / timed, McdSpaceGetLostPairCount(space));
+    fflush(stdout);
+    free(wall);
+    free(cpu);
     McdModelPairContainerDestroy(c);
     McdSpaceDestroy(space);
     McdTerm(fw);
@@ -103,8 +116,11 @@ int main(int argc, char **argv)
     int steps = argc > 1 ? atoi(argv[1]) : 300;
     if (steps < 20)
         steps = 20;
-    printf("McdSpace axis sort: UpdateAll + EndChanges + GetPairs (container 1024) + BeginChanges, %d steps (%s)\n",
+    printf("McdSpace axis sort: UpdateAll + EndChanges + GetPairs (container 1024) + BeginChanges, %d steps "
+           "(first 10 untimed), %s\n\n",
            steps, MeIsDoublePrecision() ? "double" : "float");
+    printf("| models | axes | median ms/step (wall) | median ms/step (CPU) | best ms/step (wall) | pairs/step | "
+           "Hello/step | Goodbye/step | lost |\n|---|---|---|---|---|---|---|---|---|\n");
     run(1000, McdAllAxes, steps);
     run(10000, McdAllAxes, steps);
     run(1000, McdXAxis, steps); /* one axis: many more pairs (10,000 models would hold ~6 million) */

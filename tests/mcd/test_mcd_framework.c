@@ -133,6 +133,39 @@ static void cubeMass(McdGeometryID g, void *data, MeMatrix4 rel, MeMatrix3 I, Me
     I[0][0] = I[1][1] = I[2][2] = *v * side * side / 6;
 }
 
+/* Slab test of the local segment against the cube [-h, h]^3: entry parameter and face normal. */
+static int cubeLineSeg(McdGeometryID g, void *data, const MeVector3 p0, const MeVector3 p1, MeReal *t, MeVector3 normal)
+{
+    (void)g;
+    MeReal h = *(MeReal *)data, t0 = 0, t1 = 1;
+    int axis = -1;
+    MeReal sign = 0;
+    for (int i = 0; i < 3; i++) {
+        MeReal d = p1[i] - p0[i];
+        if (d == 0) {
+            if (p0[i] < -h || p0[i] > h)
+                return 0;
+            continue;
+        }
+        MeReal a = (-h - p0[i]) / d, b = (h - p0[i]) / d, s = -1;
+        if (a > b) {
+            MeReal x = a;
+            a = b, b = x, s = 1;
+        }
+        if (a > t0)
+            t0 = a, axis = i, sign = s;
+        if (b < t1)
+            t1 = b;
+        if (t0 > t1)
+            return 0;
+    }
+    *t = t0;
+    MeVector3Set(normal, 0, 0, 0);
+    if (axis >= 0)
+        normal[axis] = sign;
+    return 1;
+}
+
 /* The application's cube-sphere test: closest point of the cube to the sphere's centre. */
 static int cubeSphere(McdGeometryID g1, void *data1, MeMatrix4 tm1, McdGeometryID g2, void *data2, MeMatrix4 tm2,
                       MeReal tolerance, McdContact *contacts, int maxContacts)
@@ -156,12 +189,18 @@ static void user_geometry_type(void **state)
 {
     (void)state;
     karma_capture_messages();
-    McdFrameworkID fw = McdInit(1, 4, 0, 1);
+    McdFrameworkID fw = McdInit(2, 5, 0, 1);
     McdGeometryTypeDesc desc = {"Cube", cubeDestroy, cubeAABB, cubeBSphere, cubeSupport, cubeMass, NULL, NULL};
     int type = McdFrameworkRegisterGeometryType(fw, &desc);
     assert_int_equal(type, kMcdGeometryBuiltInTypes);
     assert_string_equal(McdFrameworkGetGeometryTypeName(fw, type), "Cube");
-    /* Room for one user type only. */
+    /* The same cube with the protocol's line-segment test. */
+    McdGeometryTypeDesc segDesc = desc;
+    segDesc.typeName = "SegCube";
+    segDesc.lineSegIntersect = cubeLineSeg;
+    int segType = McdFrameworkRegisterGeometryType(fw, &segDesc);
+    assert_int_equal(segType, kMcdGeometryBuiltInTypes + 1);
+    /* Room for two user types only. */
     assert_reports(ME_ERR_POOL_FULL, assert_int_equal(McdFrameworkRegisterGeometryType(fw, &desc), -1));
     McdGeometryTypeDesc bad = desc;
     bad.maximumPoint = NULL;
@@ -201,9 +240,33 @@ static void user_geometry_type(void **state)
     McdLineSegIntersectResult r;
     MeVector3 a = {-5, 2, 3}, b = {5, 2, 3};
     assert_int_equal(McdLineSegIntersect(m, a, b, &r), 0);
+    /* With the protocol's segment test: the hit in the world through the model's transform, turned
+     * 90 deg about z at (1, 2, 3). A segment along world -y from y = 5 enters the cube's face at
+     * y = 2.5 (local +x after the turn), 2.5 along a 10-long segment: t 0.25, distance 2.5. */
+    MeReal segHalf = ME_R(0.5);
+    McdModelID sm = McdModelCreate(McdUserGeometryCreate(fw, segType, &segHalf));
+    McdModelSetContactTolerance(sm, 0);
+    MeMatrix4TMFromEulerAnglesAndPosition(McdModelGetTransformPtr(sm), 0, 0, ME_PI_2, 1, 2, 3);
+    McdModelUpdate(sm);
+    MeVector3 s0 = {ME_R(1.1), 5, ME_R(3.2)}, s1 = {ME_R(1.1), -5, ME_R(3.2)};
+    assert_int_equal(McdLineSegIntersect(sm, s0, s1, &r), 1);
+    assert_ptr_equal(r.model, sm);
+    assert_near(r.position[0], 1.1, 1e-5);
+    assert_near(r.position[1], 2.5, 1e-5);
+    assert_near(r.position[2], 3.2, 1e-5);
+    assert_near(r.normal[0], 0, 1e-5);
+    assert_near(r.normal[1], 1, 1e-5);
+    assert_near(r.normal[2], 0, 1e-5);
+    assert_near(r.distance, 2.5, 1e-5);
+    printf("user type %d: line segment hit at (%.4f, %.4f, %.4f), normal (%.3f, %.3f, %.3f), distance %.5f\n", segType,
+           (double)r.position[0], (double)r.position[1], (double)r.position[2], (double)r.normal[0],
+           (double)r.normal[1], (double)r.normal[2], (double)r.distance);
+    MeVector3 s2 = {ME_R(1.6), 5, 3}, s3 = {ME_R(1.6), -5, 3}; /* passes beside it */
+    assert_int_equal(McdLineSegIntersect(sm, s2, s3, &r), 0);
+    McdModelDestroy(sm);
     /* A pair test of the application's: registered (Cube, Sphere), used for (Sphere, Cube) too. */
     assert_true(McdFrameworkSetUserInteraction(fw, type, kMcdGeometryTypeSphere, cubeSphere));
-    assert_reports(ME_ERR_ARGUMENT_RANGE, assert_false(McdFrameworkSetUserInteraction(fw, type, type + 1, cubeSphere)));
+    assert_reports(ME_ERR_ARGUMENT_RANGE, assert_false(McdFrameworkSetUserInteraction(fw, type, type + 2, cubeSphere)));
     McdModelID ball = McdModelCreate(McdSphereCreate(fw, ME_R(0.25)));
     MeMatrix4TMSetPosition(McdModelGetTransformPtr(ball), 1, 2, ME_R(3.6)); /* 0.1 above the cube, overlapping 0.15 */
     McdModelUpdate(ball);
@@ -232,9 +295,9 @@ static void user_geometry_type(void **state)
     /* McdTerm destroys what is left, through the protocol too. */
     half = ME_R(0.5);
     McdUserGeometryCreate(fw, type, &half);
-    assert_reports(ME_ERR_ARGUMENT_RANGE, assert_null(McdUserGeometryCreate(fw, type + 1, &half)));
+    assert_reports(ME_ERR_ARGUMENT_RANGE, assert_null(McdUserGeometryCreate(fw, type + 2, &half)));
     McdTerm(fw);
-    assert_int_equal(userDestroyed, 2);
+    assert_int_equal(userDestroyed, 3); /* the two cubes left, and SegCube's */
     printf("user type %d registered, dispatched and destroyed through its protocol\n", type);
 }
 
@@ -379,6 +442,92 @@ static void every_primitive_pair_has_a_test(void **state)
     assert_int_equal(bothWays, 0);
 }
 
+/* Every built-in pair through the public path: models, McdModelPairCreate, McdHello, McdIntersect,
+ * McdGoodbye, both orders of the models. Shape 2 stands on shape 1 on the common z axis (a shape
+ * stands on the plane), so the separation is the gap exactly, the normal +z from the lower model to
+ * the upper one. The contact tolerance is the sum of the models' (0.01 + 0.02): a gap of 0.025 gives
+ * contacts, 0.035 none; a gap of -0.02 is a penetration of 0.02. */
+static McdGeometryID axisGeometry(McdFrameworkID fw, int type, double *top, double *bottom)
+{
+    switch (type) {
+    case kMcdGeometryTypeSphere: *top = *bottom = 0.5; return McdSphereCreate(fw, ME_R(0.5));
+    case kMcdGeometryTypeBox: *top = *bottom = 0.3; return McdBoxCreate(fw, 1, ME_R(0.8), ME_R(0.6));
+    case kMcdGeometryTypeCylinder: *top = *bottom = 0.5; return McdCylinderCreate(fw, ME_R(0.4), 1);
+    case kMcdGeometryTypeSphyl: *top = *bottom = 0.7; return McdSphylCreate(fw, ME_R(0.3), ME_R(0.8));
+    case kMcdGeometryTypeCone: *top = 0.75, *bottom = 0.25; return McdConeCreate(fw, 1, ME_R(0.5)); /* base at -L/4 */
+    default: *top = *bottom = 0; return McdPlaneCreate(fw);
+    }
+}
+
+static void every_pair_through_models(void **state)
+{
+    (void)state;
+    static const int types[] = {kMcdGeometryTypeSphere, kMcdGeometryTypeBox, kMcdGeometryTypeCylinder,
+                                kMcdGeometryTypeSphyl, kMcdGeometryTypeCone, kMcdGeometryTypePlane};
+    static const double gaps[] = {0.025, 0.035, -0.02};
+    McdFrameworkID fw = McdInit(0, 4, 4, 1);
+    assert_true(McdPrimitivesRegisterInteractions(fw));
+    int pairs = 0, runs = 0;
+    for (int a = 0; a < 6; a++)
+        for (int b = a; b < 6; b++) {
+            if (types[a] == kMcdGeometryTypePlane && types[b] == kMcdGeometryTypePlane)
+                continue;
+            /* lower: the plane if there is one, else a; upper: the other */
+            int lowerType = types[b] == kMcdGeometryTypePlane ? types[b] : types[a];
+            int upperType = types[b] == kMcdGeometryTypePlane ? types[a] : types[b];
+            double lowTop, lowBottom, upTop, upBottom;
+            McdGeometryID gl = axisGeometry(fw, lowerType, &lowTop, &lowBottom);
+            McdGeometryID gu = axisGeometry(fw, upperType, &upTop, &upBottom);
+            McdModelID lower = McdModelCreate(gl), upper = McdModelCreate(gu);
+            McdModelSetContactTolerance(lower, ME_R(0.01));
+            McdModelSetContactTolerance(upper, ME_R(0.02));
+            McdModelUpdate(lower);
+            for (int k = 0; k < 3; k++) {
+                MeMatrix4TMSetPosition(McdModelGetTransformPtr(upper), 0, 0, (MeReal)(lowTop + upBottom + gaps[k]));
+                McdModelUpdate(upper);
+                for (int order = 0; order < 2; order++) {
+                    McdModelPairID pair = order ? McdModelPairCreate(upper, lower) : McdModelPairCreate(lower, upper);
+                    McdContact contacts[4];
+                    McdIntersectResult result = {0};
+                    result.contacts = contacts;
+                    result.contactMaxCount = 4;
+                    McdHello(pair);
+                    assert_true(pair->testIndex >= 0);
+                    McdIntersect(pair, &result);
+                    double sign = order ? -1 : 1, deepest = 1e30;
+                    if (gaps[k] > 0.03) {
+                        assert_int_equal(result.contactCount, 0);
+                        assert_false(result.touch);
+                    } else {
+                        assert_true(result.contactCount >= 1 && result.contactCount <= 4);
+                        assert_true(result.touch);
+                        assert_near(result.normal[2], sign, 1e-5);
+                        for (int i = 0; i < result.contactCount; i++) {
+                            assert_near(contacts[i].normal[0], 0, 1e-4);
+                            assert_near(contacts[i].normal[1], 0, 1e-4);
+                            assert_near(contacts[i].normal[2], sign, 1e-5);
+                            deepest = fmin(deepest, contacts[i].separation);
+                        }
+                        assert_near(deepest, gaps[k], ME_TOL(1e-7, 2e-5));
+                    }
+                    McdGoodbye(pair);
+                    McdModelPairDestroy(pair);
+                    runs++;
+                }
+            }
+            printf("%s on %s: gaps 0.025 / 0.035 / -0.02 through McdIntersect, both orders\n",
+                   McdGeometryGetTypeName(gu), McdGeometryGetTypeName(gl));
+            McdModelDestroy(lower);
+            McdModelDestroy(upper);
+            McdGeometryDestroy(gl);
+            McdGeometryDestroy(gu);
+            pairs++;
+        }
+    assert_int_equal(pairs, 20);
+    printf("%d type pairs, %d McdIntersect calls\n", pairs, runs);
+    McdTerm(fw);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -388,6 +537,7 @@ int main(void)
         cmocka_unit_test(interaction_table_one_way_and_swap),
         cmocka_unit_test(unregistered_pair_warned_once),
         cmocka_unit_test(every_primitive_pair_has_a_test),
+        cmocka_unit_test(every_pair_through_models),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -135,6 +135,21 @@ static void mass_properties_closed_forms(void **state)
     assert_rel(v, V, ME_TOL(1e-12, 1e-6));
     assert_rel(I[0][0], 0.4 * V * 0.49, ME_TOL(1e-12, 1e-6));
 
+    /* A sphyl (capsule) r 0.3, cylinder part L 1.2: cylinder plus two hemispheres, each hemisphere's
+     * inertia about the centre 2/5 m r^2 + m (L^2/4 + 3 L r / 8) across the axis. */
+    McdGeometryID capsule = McdSphylCreate(fw, ME_R(0.3), ME_R(1.2));
+    McdGeometryGetMassProperties(capsule, NULL, I, &v);
+    {
+        double rc = 0.3, L = 1.2, mc = TEST_PI * rc * rc * L, ms = 4.0 / 3 * TEST_PI * rc * rc * rc;
+        assert_rel(v, mc + ms, ME_TOL(1e-12, 1e-6));
+        assert_rel(I[2][2], mc * rc * rc / 2 + 0.4 * ms * rc * rc, ME_TOL(1e-12, 1e-6));
+        assert_rel(I[0][0], mc * (L * L / 12 + rc * rc / 4) + ms * (0.4 * rc * rc + L * L / 4 + 3 * L * rc / 8),
+                   ME_TOL(1e-12, 1e-6));
+        assert_rel(I[1][1], I[0][0], ME_TOL(1e-12, 1e-6));
+        printf("sphyl 0.3, 1.2      V %.6f  Ixx %.6f  Izz %.6f (closed forms)\n", (double)v, (double)I[0][0],
+               (double)I[2][2]);
+    }
+
     /* Independent integration over discs. */
     double rs = McdSphereGetRadius(sphere);
     double b1[] = {-rs, rs};

@@ -4,6 +4,8 @@
  * (geometry 1 -> 2) and the deepest separation; the pair is also run swapped (normal negated, same
  * depth). */
 #include "karma_test.h"
+
+#include <string.h>
 #include "karma_mcd_reference.h"
 
 #include "mcd/nearfield/nearfield.h"
@@ -272,6 +274,191 @@ static void plane_cases(void **state)
     expect(&c, "cone-plane on its apex", 1, 1, 0, 0, -1, -0.01, e), run(&c);
 }
 
+/* ---- every pair, systematically -------------------------------------------------------------- */
+typedef struct AxisShape {
+    const char *name;
+    McdGeometry g;
+    double top, bottom;      /* extent above and below the origin along z */
+    int flatTop, flatBottom; /* a face there (box, cylinder cap, cone base, plane) */
+    double e[3];             /* half extents along x, y, z (symmetric shapes) */
+} AxisShape;
+
+/* Sphere r 0.5; box 1 x 0.8 x 0.6; cylinder r 0.4, height 1; sphyl r 0.3, cylinder part 0.8;
+ * pointed cone, base radius 0.5, height 1 (base 0.25 below the centroid, apex 0.75 above); plane. */
+static void axisShapes(AxisShape *sh)
+{
+    memset(sh, 0, 6 * sizeof *sh);
+    sh[0].name = "sphere", ref_make_sphere(&sh[0].g, 0.5), sh[0].top = sh[0].bottom = 0.5;
+    sh[0].e[0] = sh[0].e[1] = sh[0].e[2] = 0.5;
+    sh[1].name = "box", ref_make_box(&sh[1].g, 1, 0.8, 0.6), sh[1].top = sh[1].bottom = 0.3;
+    sh[1].flatTop = sh[1].flatBottom = 1, sh[1].e[0] = 0.5, sh[1].e[1] = 0.4, sh[1].e[2] = 0.3;
+    sh[2].name = "cylinder", ref_make_cylinder(&sh[2].g, 0.4, 1), sh[2].top = sh[2].bottom = 0.5;
+    sh[2].flatTop = sh[2].flatBottom = 1, sh[2].e[0] = sh[2].e[1] = 0.4, sh[2].e[2] = 0.5;
+    sh[3].name = "sphyl", ref_make_sphyl(&sh[3].g, 0.3, 0.8), sh[3].top = sh[3].bottom = 0.7;
+    sh[3].e[0] = sh[3].e[1] = 0.3, sh[3].e[2] = 0.7;
+    sh[4].name = "cone", ref_make_cone(&sh[4].g, 0.5, 0, 1), sh[4].top = 0.75, sh[4].bottom = 0.25;
+    sh[4].flatBottom = 1;
+    sh[5].name = "plane", ref_make_plane(&sh[5].g), sh[5].top = 0, sh[5].flatTop = 1;
+}
+
+/* Shape B above shape A on the common z axis (plane only below), every combination both ways round
+ * (run() also swaps): gaps 0.05 (beyond the tolerance 0.02: no contact), 0.01 (within it), 0
+ * (touching), -0.01 and -0.1 (penetrating). On the axis the closest features are the axial extremes,
+ * so the separation is the gap exactly and the normal is +z; flat against flat gives three or four
+ * contacts, anything against a point (sphere, sphyl end, apex) exactly one. */
+static void every_pair_stacked_on_axis(void **state)
+{
+    static const double gaps[] = {0.05, 0.01, 0.0, -0.01, -0.1};
+    const double e = ME_TOL(1e-7, 2e-5);
+    AxisShape sh[6];
+    Case c;
+    char name[96];
+    int a, b, k, cases = 0;
+    (void)state;
+    axisShapes(sh);
+    for (a = 0; a < 6; a++)
+        for (b = 0; b < 5; b++)
+            for (k = 0; k < 5; k++) {
+                double gap = gaps[k];
+                int flat = sh[a].flatTop && sh[b].flatBottom;
+                c.g1 = sh[a].g;
+                c.g2 = sh[b].g;
+                identity(c.tm1, 0, 0, 0);
+                identity(c.tm2, 0, 0, sh[a].top + sh[b].bottom + gap);
+                snprintf(name, sizeof name, "%s below %s, gap %+.2f", sh[a].name, sh[b].name, gap);
+                if (gap > TOL)
+                    expect(&c, name, 0, 0, 0, 0, 1, 0, e);
+                else
+                    expect(&c, name, flat ? 3 : 1, flat ? 4 : 1, 0, 0, 1, gap, e);
+                run(&c);
+                cases++;
+            }
+    printf("%d stacked cases\n", cases);
+}
+
+/* Deepest contact of g1 at the origin and g2 at the origin (turned by tm2's rotation only). */
+static void coincident(const char *name, const McdGeometry *g1, const McdGeometry *g2, double depth, int axis)
+{
+    Case c;
+    const double e = ME_TOL(1e-7, 2e-5);
+    c.g1 = *g1;
+    c.g2 = *g2;
+    identity(c.tm1, 0, 0, 0);
+    identity(c.tm2, 0, 0, 0);
+    if (g2->type == kMcdGeometryTypePlane) {
+        expect(&c, name, 1, 4, 0, 0, -1, -depth, e); /* out through the plane: -z, from the shape */
+    } else {
+        expect(&c, name, 1, 4, axis == 0, axis == 1, axis == 2, -depth, e);
+        c.anyNormal = 1; /* the sign (and for ties the direction) is a choice: checked below */
+    }
+    run(&c);
+    if (g2->type != kMcdGeometryTypePlane) {
+        /* the normal given is a minimum-translation direction: the overlap along it is the depth */
+        McdContact k[4];
+        int n = McdNfCollide(g1, c.tm1, g2, c.tm2, (MeReal)TOL, k, 4), i, deepest = 0;
+        double nn[3];
+        for (i = 1; i < n; i++)
+            if (k[i].separation < k[deepest].separation)
+                deepest = i;
+        for (i = 0; i < 3; i++)
+            nn[i] = k[deepest].normal[i];
+        printf("    overlap along the normal given %.7f (depth %.7f)\n", ref_overlap(g1, c.tm1, g2, c.tm2, nn), depth);
+        assert_near(ref_overlap(g1, c.tm1, g2, c.tm2, nn), depth, ME_TOL(1e-6, 1e-4));
+        if (axis >= 0)
+            assert_near(fabs(nn[axis]), 1, ME_TOL(1e-6, 1e-4));
+    }
+}
+
+/* Coincident centres. For the symmetric shapes (sphere, box, cylinder, sphyl), aligned, the overlap
+ * h1(n) + h2(-n) is a sum of terms a|n_x|, b|n_y|, c|n_z|, r |(n_x, n_y)| and constants, whose minimum
+ * over unit n is on an axis: the depth is the least over the axes of the summed half extents. Against
+ * the cone (centroid at the origin): +z, lifting the cone by the other's half extent plus the 0.25 from
+ * the centroid to the base, except the sphyl (sideways: 0.3 + the base radius 0.5, see below). Against
+ * the plane: the shape's extent below its centre. */
+static void every_pair_coincident_centres(void **state)
+{
+    AxisShape sh[6];
+    char name[96];
+    int a, b, k;
+    (void)state;
+    axisShapes(sh);
+    for (a = 0; a < 4; a++)
+        for (b = a; b < 4; b++) {
+            double best = 1e300;
+            int axis = -1, ties = 0;
+            for (k = 0; k < 3; k++) {
+                double d = sh[a].e[k] + sh[b].e[k];
+                if (d < best - 1e-12)
+                    best = d, axis = k, ties = 0;
+                else if (d < best + 1e-12)
+                    ties++;
+            }
+            snprintf(name, sizeof name, "%s-%s coincident centres", sh[a].name, sh[b].name);
+            coincident(name, &sh[a].g, &sh[b].g, best, ties ? -1 : axis);
+        }
+    /* the cone: sphere 0.5 + 0.25, box 0.3 + 0.25, cylinder 0.5 + 0.25 (tilting costs more: the sum is
+     * at least 0.9 s + 0.25 c + e_z c for the normal at angle (c, s) from +z); sphyl: sideways 0.3 + 0.5
+     * = 0.8 < 0.95 upwards, any azimuth */
+    coincident("sphere-cone coincident centres", &sh[0].g, &sh[4].g, 0.75, 2);
+    coincident("box-cone coincident centres", &sh[1].g, &sh[4].g, 0.55, 2);
+    coincident("cylinder-cone coincident centres", &sh[2].g, &sh[4].g, 0.75, 2);
+    coincident("sphyl-cone coincident centres", &sh[3].g, &sh[4].g, 0.8, -1);
+    for (a = 0; a < 5; a++) {
+        snprintf(name, sizeof name, "%s centred on the plane", sh[a].name);
+        coincident(name, &sh[a].g, &sh[5].g, sh[a].bottom, 2);
+    }
+}
+
+/* Four contacts on a face are its corners (well spread), not four points bunched together. */
+static void face_contacts_are_the_corners(void **state)
+{
+    McdGeometry box, plane, base;
+    MeMatrix4 tb, tp, t0;
+    McdContact k[4];
+    int n, i, j, corner;
+    (void)state;
+    ref_make_box(&box, 1, 0.8, 0.6);
+    ref_make_plane(&plane);
+    identity(tp, 0, 0, 0);
+    place(tb, 0, 0, 1, 0.3, 0.2, -0.1, 0.29); /* turned 0.3 rad about z, 0.01 into the plane */
+    n = McdNfCollide(&box, tb, &plane, tp, (MeReal)TOL, k, 4);
+    assert_int_equal(n, 4);
+    for (corner = 0; corner < 4; corner++) {
+        double lx = corner & 1 ? 0.5 : -0.5, ly = corner & 2 ? 0.4 : -0.4, best = 1e300;
+        double wx = lx * tb[0][0] + ly * tb[1][0] + tb[3][0], wy = lx * tb[0][1] + ly * tb[1][1] + tb[3][1];
+        for (i = 0; i < n; i++)
+            best = fmin(best, hypot(k[i].position[0] - wx, k[i].position[1] - wy));
+        printf("box-plane: corner %d nearest contact %.2e away\n", corner, best);
+        assert_true(best < ME_TOL(1e-9, 1e-5));
+    }
+    /* box 1 x 0.8 on a larger box, offset: the four corners of the overlap rectangle */
+    ref_make_box(&base, 2, 2, 1);
+    identity(t0, 0, 0, 0);
+    identity(tb, 0.3, -0.2, 0.5 + 0.3 - 0.01);
+    n = McdNfCollide(&base, t0, &box, tb, (MeReal)TOL, k, 4);
+    assert_int_equal(n, 4);
+    for (corner = 0; corner < 4; corner++) {
+        double wx = 0.3 + (corner & 1 ? 0.5 : -0.5), wy = -0.2 + (corner & 2 ? 0.4 : -0.4), best = 1e300;
+        for (i = 0; i < n; i++)
+            best = fmin(best, hypot(k[i].position[0] - wx, k[i].position[1] - wy));
+        assert_true(best < ME_TOL(1e-9, 1e-5));
+    }
+    /* a cylinder standing on the box: four points on the rim, spread round it (pairwise >= r sqrt 2 * 0.9) */
+    ref_make_cylinder(&base, 0.4, 1);
+    identity(tb, 0.1, 0.1, 0.3 + 0.5 - 0.01);
+    identity(t0, 0, 0, 0);
+    n = McdNfCollide(&box, t0, &base, tb, (MeReal)TOL, k, 4);
+    assert_true(n >= 3);
+    for (i = 0; i < n; i++) {
+        double r = hypot(k[i].position[0] - 0.1, k[i].position[1] - 0.1);
+        assert_near(r, 0.4, 0.02); /* on the rim (the rim is an octagon in the clipping) */
+        for (j = i + 1; j < n; j++)
+            assert_true(hypot(k[i].position[0] - k[j].position[0], k[i].position[1] - k[j].position[1]) >
+                        0.4 * sqrt(2.0) * 0.9);
+    }
+    printf("cylinder on box: %d contacts on the rim, pairwise at least 0.9 r sqrt2 apart\n", n);
+}
+
 /* maxContacts is respected, and zero room gives zero contacts. */
 static void max_contacts(void **state)
 {
@@ -295,7 +482,9 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(sphere_cases), cmocka_unit_test(box_cases), cmocka_unit_test(rest_on_box),
-        cmocka_unit_test(plane_cases), cmocka_unit_test(max_contacts),
+        cmocka_unit_test(plane_cases), cmocka_unit_test(every_pair_stacked_on_axis),
+        cmocka_unit_test(every_pair_coincident_centres), cmocka_unit_test(face_contacts_are_the_corners),
+        cmocka_unit_test(max_contacts),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
