@@ -1,0 +1,362 @@
+/* karma_scenes.c -- the benchmark scenes in Karma (this library, through MstUniverse).
+ *
+ * Two variants on the same scenes:
+ *   default  Karma's defaults: Kea with MdtLCPSolverAuto (exact up to 128 rows per partition,
+ *            iterative with 10 sweeps above), ε = 0.01 / massScale, γ = 0.2, auto-disable on with
+ *            Karma's thresholds (bodies at rest go to sleep, their models are frozen)
+ *   nosleep  the same with auto-disable off (compare with bullet si10-nosleep)
+ *
+ * What a Karma user writes: one MstUniverse sized from the scene, a plane for the ground and static
+ * models (MstFixedModelCreate) for fixed bodies, one model with a body per dynamic body
+ * (MstModelAndBodyCreate), ball joints (MdtBSJoint) and hinges (MdtHinge) from the world anchor and
+ * axis, the pairs of jointed bodies disabled in the space, and one material-table entry (the default
+ * pair) for every contact: 2-D friction, NormalForce model (Coulomb: bound = μ × normal force) with
+ * μ = 0.6, restitution 0 (the default). The timed step is MstUniverseStep: McdSpaceUpdateAll (farfield),
+ * MstBridgeUpdateContacts (nearfield and contact conversion) and MdtWorldStep.
+ *
+ * Mass properties: the scene's masses and principal moments (BenchBodyInertia, uniform solids), set
+ * as a diagonal tensor with non-spherical inertia enabled (MdtBody uses the mean of the diagonal
+ * otherwise, and MstModelAndBodyCreate does not enable it). The gyroscopic term stays off, Karma's
+ * default (MdtBodyEnableCoriolisForce).
+ *
+ * massScale: the world's ε is 0.01 / massScale, and Karma asks the application to set massScale to a
+ * typical mass of the scene (docs/decisions.md M5; every demo does), or heavy bodies sink into soft
+ * contacts. We pass the mean mass of the scene's dynamic bodies: 1 kg for the boxes, spheres and
+ * chain links, 58/11 = 5.3 kg for the ragdolls. lengthScale is 1 (metre-sized bodies).
+ *
+ * Hinge limits: Karma's hinge angle is that of body 0 relative to body 1 (MdtHinge.h), the opposite of
+ * the scene's (body[1] relative to body[0]), so the stops swap and change sign, as for ODE. Karma's
+ * stops bounce with restitution 1 by default (MdtLimit.h); the scenes ask for restitution 0 (and ODE's
+ * and Bullet's stops do not bounce), so the stops get restitution 0.
+ *
+ * Warnings: a message handler counts Karma's messages at warning level and above (pool full,
+ * non-finite state...) instead of printing them, and the remark column gives their count and the
+ * first one's code.
+ *
+ * Profile: with KARMA_BENCH_PROFILE=1 in the environment, each run prints to stderr the time per step
+ * of every profile section (MstUniverseGetProfile: Collision = Farfield + Nearfield;
+ * MdtWorldGetProfile: Dynamics = Partition, AutoDisable, LOD, Pack, Solve, Integrate, Unpack), mean
+ * solver statistics and the pools' high-water marks. The sections are timed in process CPU time then
+ * (the profiles' clock is replaced), which the load of a shared machine inflates far less than wall
+ * time; the harness's own timing is unaffected apart from the clock calls (~20 per step). */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime */
+#include <karma/karma.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "bench_harness.h"
+
+typedef struct KarmaWorld {
+    const BenchScene *scene;
+    MstUniverseID universe;
+    MdtWorldID world;
+    MdtBodyID *bodies;   /* NULL for fixed bodies */
+    MeMatrix4 *fixedTM;  /* transforms of the fixed models (they must outlive the models) */
+    MeMatrix4 groundTM;
+    int steps;
+    int profile;         /* KARMA_BENCH_PROFILE set: gather and print the profile */
+    /* solver statistics summed over the steps (profile only) */
+    double partitions, iterativePartitions, iterations, rows;
+    int maxPartitionRows, maxPairs, unconverged;
+    char remark[160];
+} KarmaWorld;
+
+/* Karma's warnings, counted instead of printed. The harness runs one world at a time, so a
+ * process-wide count reset at creation is the current world's. */
+static unsigned long karmaWarnings;
+static char karmaFirstWarning[96];
+
+static void count_message(const MeMessageInfo *info, void *user)
+{
+    (void)user;
+    if (info->level < ME_LEVEL_WARNING)
+        return;
+    if (info->level >= ME_LEVEL_FATAL)
+        MeDefaultMessageHandler(info, NULL); /* an internal inconsistency: print it and abort */
+    if (karmaWarnings++ == 0)
+        snprintf(karmaFirstWarning, sizeof karmaFirstWarning, "%s in %s", MeErrorCodeName(info->code),
+                 info->function ? info->function : "?");
+}
+
+/* The profiles' clock in profile mode: process CPU time (seconds). */
+static double cpu_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static double mean_dynamic_mass(const BenchScene *s)
+{
+    double sum = 0;
+    int n = 0;
+    for (int i = 0; i < s->bodyCount; i++)
+        if (!s->bodies[i].fixed) {
+            sum += s->bodies[i].mass;
+            n++;
+        }
+    return n ? sum / n : 1.0;
+}
+
+static McdGeometryID make_geometry(McdFrameworkID fw, const BenchBody *b)
+{
+    switch (b->shape) {
+    case BENCH_SPHERE:
+        return McdSphereCreate(fw, (MeReal)b->size[0]);
+    case BENCH_CAPSULE: /* Karma's height is the cylinder part: twice the scene's half-length */
+        return McdSphylCreate(fw, (MeReal)b->size[0], (MeReal)(2 * b->size[1]));
+    case BENCH_BOX:
+    default: /* full edge lengths */
+        return McdBoxCreate(fw, (MeReal)(2 * b->size[0]), (MeReal)(2 * b->size[1]), (MeReal)(2 * b->size[2]));
+    }
+}
+
+static void karma_destroy(void *world)
+{
+    KarmaWorld *w = world;
+    if (!w)
+        return;
+    if (w->profile && w->steps > 0) {
+        const MeProfile *p[2] = {MstUniverseGetProfile(w->universe), MdtWorldGetProfile(w->world)};
+        fprintf(stderr, "  karma profile, %s, ms per step over %d steps (CPU):", w->scene->name, w->steps);
+        for (int k = 0; k < 2; k++)
+            for (int i = 0; i < MeProfileGetSectionCount(p[k]); i++) {
+                const MeProfileSection *s = MeProfileGetSectionByIndex(p[k], i);
+                fprintf(stderr, " %s %.3f", s->name, s->totalTime / w->steps * 1e3);
+            }
+        MdtWorldCounters c;
+        MdtWorldGetCounters(w->world, &c);
+        McdSpaceID space = MstUniverseGetSpace(w->universe);
+        fprintf(stderr,
+                "\n  karma solver, mean per step: %.1f partitions (%.2f iterative), %.1f rows, %.1f sweeps; largest "
+                "partition %d rows; %d unconverged partition-steps; pools: bodies %d/%d constraints %d/%d pairs "
+                "%d/%d (lost %d)\n",
+                w->partitions / w->steps, w->iterativePartitions / w->steps, w->rows / w->steps,
+                w->iterations / w->steps, w->maxPartitionRows, w->unconverged, c.bodyPoolHighWater,
+                MdtWorldGetMaxBodies(w->world), c.constraintPoolHighWater, MdtWorldGetMaxConstraints(w->world),
+                w->maxPairs, McdSpaceGetPairCapacity(space), McdSpaceGetLostPairCount(space));
+    }
+    if (w->universe)
+        MstUniverseDestroy(w->universe);
+    free(w->bodies);
+    free(w->fixedTM);
+    free(w);
+}
+
+static void *karma_create(const BenchScene *scene, MeBool autoDisable)
+{
+    KarmaWorld *w = calloc(1, sizeof *w);
+    if (!w)
+        return NULL;
+    w->scene = scene;
+    const char *prof = getenv("KARMA_BENCH_PROFILE");
+    w->profile = prof && *prof && strcmp(prof, "0") != 0;
+    w->bodies = calloc((size_t)scene->bodyCount, sizeof *w->bodies);
+    w->fixedTM = calloc((size_t)scene->bodyCount, sizeof *w->fixedTM);
+    if (!w->bodies || !w->fixedTM) {
+        karma_destroy(w);
+        return NULL;
+    }
+    karmaWarnings = 0;
+    karmaFirstWarning[0] = '\0';
+
+    /* Pools. Models: every body and the ground. Pairs (overlapping boxes, the ground's with every
+     * body among them, and one entry per disabled pair): the pile's bottom layers and the pyramids
+     * have up to ~8 neighbours per body. Constraints: joints, one contact group per touching pair and
+     * up to 4 contacts per group (the framework's default contactMaxCount). */
+    int models = scene->bodyCount + 1;
+    int pairs = 10 * scene->bodyCount + scene->jointCount + 256;
+    MstUniverseSizes sizes = MstUniverseDefaultSizes;
+    sizes.dynamicBodiesMaxCount = scene->dynamicCount > 0 ? scene->dynamicCount : 1;
+    sizes.collisionModelsMaxCount = models;
+    sizes.collisionPairsMaxCount = pairs;
+    sizes.dynamicConstraintsMaxCount = scene->jointCount + 6 * 5 * scene->bodyCount + 256;
+    sizes.lengthScale = 1;
+    sizes.massScale = (MeReal)mean_dynamic_mass(scene);
+    w->universe = MstUniverseCreate(&sizes);
+    if (!w->universe) {
+        karma_destroy(w);
+        return NULL;
+    }
+    w->world = MstUniverseGetWorld(w->universe);
+    if (w->profile) {
+        /* The universe hands out its profile read-only; setting its clock is all we change. */
+        MeProfileSetTimer((MeProfile *)MstUniverseGetProfile(w->universe), cpu_seconds);
+        MeProfileSetTimer(MdtWorldGetProfilePtr(w->world), cpu_seconds);
+    }
+    MdtWorldSetGravity(w->world, (MeReal)scene->gravity[0], (MeReal)scene->gravity[1], (MeReal)scene->gravity[2]);
+    MdtWorldSetAutoDisable(w->world, autoDisable);
+
+    MdtContactParamsID params = MstBridgeGetContactParams(MstUniverseGetBridge(w->universe), 0, 0);
+    MdtContactParamsSetType(params, MdtContactTypeFriction2D);
+    MdtContactParamsSetFrictionModel(params, MdtFrictionModelNormalForce);
+    MdtContactParamsSetFrictionCoeffecient(params, (MeReal)scene->friction);
+    MdtContactParamsSetRestitution(params, 0);
+
+    McdFrameworkID fw = MstUniverseGetFramework(w->universe);
+    if (scene->hasGround) {
+        MeMatrix4TMMakeIdentity(w->groundTM);
+        if (!MstFixedModelCreate(w->universe, McdPlaneCreate(fw), w->groundTM)) {
+            karma_destroy(w);
+            return NULL;
+        }
+    }
+    McdModelID *model = calloc((size_t)scene->bodyCount, sizeof *model);
+    if (!model) {
+        karma_destroy(w);
+        return NULL;
+    }
+    for (int i = 0; i < scene->bodyCount; i++) {
+        const BenchBody *b = &scene->bodies[i];
+        McdGeometryID g = make_geometry(fw, b);
+        if (!g)
+            goto fail;
+        if (b->fixed) {
+            MeVector4 q = {(MeReal)b->quat[0], (MeReal)b->quat[1], (MeReal)b->quat[2], (MeReal)b->quat[3]};
+            MeMatrix4TMMakeIdentity(w->fixedTM[i]);
+            MeMatrix4TMSetRotationFromQuaternion(w->fixedTM[i], q);
+            for (int k = 0; k < 3; k++)
+                w->fixedTM[i][3][k] = (MeReal)b->pos[k];
+            model[i] = MstFixedModelCreate(w->universe, g, w->fixedTM[i]);
+            if (!model[i])
+                goto fail;
+            continue;
+        }
+        /* the density only seeds the mass properties, replaced just below by the scene's */
+        model[i] = MstModelAndBodyCreate(w->universe, g, 1);
+        if (!model[i])
+            goto fail;
+        MdtBodyID body = McdModelGetBody(model[i]);
+        double inertia[3];
+        BenchBodyInertia(b, inertia);
+        MeMatrix3 I = {{(MeReal)inertia[0], 0, 0}, {0, (MeReal)inertia[1], 0}, {0, 0, (MeReal)inertia[2]}};
+        MeVector3 origin = {0, 0, 0};
+        MdtBodySetMass(body, (MeReal)b->mass);
+        MdtBodySetInertiaTensor(body, I);
+        MdtBodyEnableNonSphericalInertia(body);
+        MdtBodySetCenterOfMassRelativePosition(body, origin);
+        MdtBodySetPosition(body, (MeReal)b->pos[0], (MeReal)b->pos[1], (MeReal)b->pos[2]);
+        MdtBodySetQuaternion(body, (MeReal)b->quat[0], (MeReal)b->quat[1], (MeReal)b->quat[2], (MeReal)b->quat[3]);
+        w->bodies[i] = body;
+    }
+
+    McdSpaceID space = MstUniverseGetSpace(w->universe);
+    MeBool changing = McdSpaceIsChanging(space);
+    if (!changing)
+        McdSpaceBeginChanges(space);
+    for (int k = 0; k < scene->jointCount; k++) {
+        const BenchJoint *bj = &scene->joints[k];
+        MdtBodyID b0 = w->bodies[bj->body[0]], b1 = bj->body[1] >= 0 ? w->bodies[bj->body[1]] : NULL;
+        MdtConstraintID c;
+        if (bj->type == BENCH_BALL) {
+            MdtBSJointID j = MdtBSJointCreate(w->world);
+            if (!j)
+                goto fail;
+            MdtBSJointSetBodies(j, b0, b1);
+            MdtBSJointSetPosition(j, (MeReal)bj->anchor[0], (MeReal)bj->anchor[1], (MeReal)bj->anchor[2]);
+            c = MdtBSJointQuaConstraint(j);
+        } else {
+            MdtHingeID j = MdtHingeCreate(w->world);
+            if (!j)
+                goto fail;
+            MdtHingeSetBodies(j, b0, b1);
+            MdtHingeSetPosition(j, (MeReal)bj->anchor[0], (MeReal)bj->anchor[1], (MeReal)bj->anchor[2]);
+            MdtHingeSetAxis(j, (MeReal)bj->axis[0], (MeReal)bj->axis[1], (MeReal)bj->axis[2]);
+            if (bj->limited) {
+                /* Karma measures body 0 relative to body 1: the opposite sign of the scene's angle */
+                MdtLimitID l = MdtHingeGetLimit(j);
+                MdtSingleLimitSetStop(MdtLimitGetLowerLimit(l), (MeReal)-bj->hi);
+                MdtSingleLimitSetStop(MdtLimitGetUpperLimit(l), (MeReal)-bj->lo);
+                MdtSingleLimitSetRestitution(MdtLimitGetLowerLimit(l), 0);
+                MdtSingleLimitSetRestitution(MdtLimitGetUpperLimit(l), 0);
+                MdtLimitActivateLimits(l, METRUE);
+            }
+            c = MdtHingeQuaConstraint(j);
+        }
+        MdtConstraintEnable(c);
+        if (bj->body[1] >= 0) /* jointed bodies do not collide */
+            McdSpaceDisablePair(model[bj->body[0]], model[bj->body[1]]);
+    }
+    if (!changing)
+        McdSpaceEndChanges(space);
+    free(model);
+    return w;
+fail:
+    free(model);
+    karma_destroy(w);
+    return NULL;
+}
+
+static void *karma_create_default(const BenchScene *scene) { return karma_create(scene, METRUE); }
+static void *karma_create_nosleep(const BenchScene *scene) { return karma_create(scene, MEFALSE); }
+
+static int karma_step(void *world, const char **why)
+{
+    (void)why;
+    KarmaWorld *w = world;
+    MstUniverseStep(w->universe, (MeReal)w->scene->step);
+    w->steps++;
+    if (w->profile) {
+        MdtSolverStats s;
+        MdtWorldGetSolverStats(w->world, &s);
+        w->partitions += s.partitions;
+        w->iterativePartitions += s.iterativePartitions;
+        w->iterations += s.iterations;
+        w->rows += s.rows;
+        w->unconverged += s.unconverged;
+        if (s.maxPartitionRows > w->maxPartitionRows)
+            w->maxPartitionRows = s.maxPartitionRows;
+        int pairs = McdSpaceGetPairCount(MstUniverseGetSpace(w->universe));
+        if (pairs > w->maxPairs)
+            w->maxPairs = pairs;
+    }
+    return 0;
+}
+
+static int karma_contacts(void *world)
+{
+    return MstBridgeGetLastContactCount(MstUniverseGetBridge(((KarmaWorld *)world)->universe));
+}
+
+static void karma_read(void *world, double (*pos)[3], double (*quat)[4])
+{
+    KarmaWorld *w = world;
+    for (int i = 0; i < w->scene->bodyCount; i++) {
+        if (!w->bodies[i])
+            continue;
+        MeVector3 p;
+        MeVector4 q;
+        MdtBodyGetPosition(w->bodies[i], p);
+        MdtBodyGetQuaternion(w->bodies[i], q);
+        for (int k = 0; k < 3; k++)
+            pos[i][k] = p[k];
+        for (int k = 0; k < 4; k++)
+            quat[i][k] = q[k];
+    }
+}
+
+static const char *karma_remark(void *world)
+{
+    KarmaWorld *w = world;
+    if (karmaWarnings == 0)
+        return NULL;
+    snprintf(w->remark, sizeof w->remark, "%lu Karma warnings; first: %s", karmaWarnings, karmaFirstWarning);
+    return w->remark;
+}
+
+int main(int argc, char **argv)
+{
+    static const BenchEngine engines[] = {
+        {"karma", "default",
+         "MstUniverseStep; Kea auto (exact up to 128 rows; else 10 iterations); eps 0.01/massScale (massScale = "
+         "mean body mass); gamma 0.2; auto-disable on; 2D friction NormalForce mu 0.6",
+         karma_create_default, karma_step, karma_contacts, karma_read, karma_destroy, karma_remark},
+        {"karma", "nosleep", "as default with auto-disable off", karma_create_nosleep, karma_step, karma_contacts,
+         karma_read, karma_destroy, karma_remark},
+    };
+    MeSetMessageHandler(count_message, NULL, NULL);
+    return BenchMain(argc, argv, engines, (int)(sizeof engines / sizeof engines[0]));
+}
