@@ -59,7 +59,7 @@ typedef struct KarmaWorld {
     int steps;
     int profile;         /* KARMA_BENCH_PROFILE set: gather and print the profile */
     /* solver statistics summed over the steps (profile only) */
-    double partitions, iterativePartitions, iterations, rows;
+    double partitions, iterativePartitions, iterations, pivots, rows;
     int maxPartitionRows, maxPairs, unconverged;
     char remark[160];
 } KarmaWorld;
@@ -131,11 +131,11 @@ static void karma_destroy(void *world)
         MdtWorldGetCounters(w->world, &c);
         McdSpaceID space = MstUniverseGetSpace(w->universe);
         fprintf(stderr,
-                "\n  karma solver, mean per step: %.1f partitions (%.2f iterative), %.1f rows, %.1f sweeps; largest "
+                "\n  karma solver, mean per step: %.1f partitions (%.2f iterative), %.1f rows, %.1f sweeps, %.1f pivots; largest "
                 "partition %d rows; %d unconverged partition-steps; pools: bodies %d/%d constraints %d/%d pairs "
                 "%d/%d (lost %d)\n",
                 w->partitions / w->steps, w->iterativePartitions / w->steps, w->rows / w->steps,
-                w->iterations / w->steps, w->maxPartitionRows, w->unconverged, c.bodyPoolHighWater,
+                w->iterations / w->steps, w->pivots / w->steps, w->maxPartitionRows, w->unconverged, c.bodyPoolHighWater,
                 MdtWorldGetMaxBodies(w->world), c.constraintPoolHighWater, MdtWorldGetMaxConstraints(w->world),
                 w->maxPairs, McdSpaceGetPairCapacity(space), McdSpaceGetLostPairCount(space));
     }
@@ -305,6 +305,7 @@ static int karma_step(void *world, const char **why)
         w->partitions += s.partitions;
         w->iterativePartitions += s.iterativePartitions;
         w->iterations += s.iterations;
+        w->pivots += s.pivots;
         w->rows += s.rows;
         w->unconverged += s.unconverged;
         if (s.maxPartitionRows > w->maxPartitionRows)

@@ -17,9 +17,9 @@
 #define STEP_SIZE (ME_R(1.0) / 60)
 
 #if KARMA_DOUBLE
-#  define GOLDEN_HASH 0x25cd03fe865fa6ceull
+#  define GOLDEN_HASH 0xd4a0d7dadc99814aull
 #else
-#  define GOLDEN_HASH 0x105d8f5257a44a0eull
+#  define GOLDEN_HASH 0xbb55fac54a8ac411ull
 #endif
 
 typedef struct Scene {

@@ -22,9 +22,9 @@
 #define STEPS 600 /* 10 s: the stacks settle, then the four balls are shot at 2, 3, 4 and 5 s */
 
 #if KARMA_DOUBLE
-#  define GOLDEN_HASH 0x04215e19b168689aull
+#  define GOLDEN_HASH 0xfe12b1d5a4c9ed40ull
 #else
-#  define GOLDEN_HASH 0xe6f4ece4d11409b5ull
+#  define GOLDEN_HASH 0x6ae9d4915b41a7d5ull
 #endif
 
 static uint64_t runTopple(MeBool trace, int *contactsSeen)

@@ -72,15 +72,12 @@ void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int lda, int i)
     const MeReal *Ai = A + (size_t)i * (size_t)lda;
     MeReal *lk = KeaRow(c, k);
     MeReal d = Ai[i], floor = KEA_PIVOT_FLOOR * KeaMax(Ai[i], ME_R(0.0));
-    int j, m;
+    int j;
 
     /* Forward substitution L l = A_F,i, written straight into row k. */
     for (j = 0; j < k; ++j) {
         const MeReal *lj = KeaRow(c, j);
-        MeReal s = Ai[c->F[j]];
-        for (m = 0; m < j; ++m)
-            s -= lj[m] * lk[m];
-        lk[j] = s / lj[j];
+        lk[j] = (Ai[c->F[j]] - KeaDotN4(lj, lk, j)) / lj[j];
         d -= lk[j] * lk[j];
     }
     if (!(d > floor)) {
@@ -133,10 +130,7 @@ void KeaCholeskySolve(const KeaCholesky *c, MeReal *b)
     int i, j;
     for (i = 0; i < k; ++i) { /* L y = b */
         const MeReal *li = KeaRow(c, i);
-        MeReal s = b[i];
-        for (j = 0; j < i; ++j)
-            s -= li[j] * b[j];
-        b[i] = s / li[i];
+        b[i] = (b[i] - KeaDotN4(li, b, i)) / li[i];
     }
     for (i = k - 1; i >= 0; --i) { /* L^T x = y, column-oriented so that L is read by rows */
         const MeReal *li = KeaRow(c, i);

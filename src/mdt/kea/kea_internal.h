@@ -68,6 +68,24 @@ static inline void *KeaArenaAlloc(KeaArena *arena, size_t bytes)
 
 static inline MeReal KeaDot3(const MeReal *a, const MeReal *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
+/** a . b over n entries with four running sums: the dense factor's inner products are otherwise
+ *  one long chain of dependent additions, bound by the adder's latency. The order of the sums is
+ *  fixed, so the result is the same on every run and at every optimisation level. */
+static inline MeReal KeaDotN4(const MeReal *a, const MeReal *b, int n)
+{
+    MeReal s0 = ME_R(0.0), s1 = ME_R(0.0), s2 = ME_R(0.0), s3 = ME_R(0.0);
+    int m = 0;
+    for (; m + 4 <= n; m += 4) {
+        s0 += a[m] * b[m];
+        s1 += a[m + 1] * b[m + 1];
+        s2 += a[m + 2] * b[m + 2];
+        s3 += a[m + 3] * b[m + 3];
+    }
+    for (; m < n; ++m)
+        s0 += a[m] * b[m];
+    return (s0 + s1) + (s2 + s3);
+}
+
 /** J_i . (dv of body b0, dv of body b1): the constraint velocity of row i under dv. */
 static inline MeReal KeaRowVelocity(const KeaJacobianRow *J, const int b[2], const KeaBodyVelocity *dv)
 {

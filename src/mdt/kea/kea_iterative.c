@@ -112,29 +112,48 @@ size_t KeaIterativeWorkspaceBytes(int nRows, int nBodies)
     return counter.used;
 }
 
-/* inv = (L L^T)^-1, column by column (symmetric; m^3, once per block and step). */
+/* inv = (L L^T)^-1, column by column (symmetric; about m^3 multiply-adds, once per block and step):
+ * forward substitution of the unit vector e_c (zero above row c), then back substitution, with the
+ * reciprocals of L's diagonal taken once. */
 static void KeaBlockInvert(int m, const MeReal *L, MeReal *inv)
 {
-    MeReal column[KEA_MAX_BLOCK_ROWS];
-    int r, c;
+    MeReal column[KEA_MAX_BLOCK_ROWS], invDiag[KEA_MAX_BLOCK_ROWS];
+    int r, c, j;
+    for (r = 0; r < m; ++r)
+        invDiag[r] = ME_R(1.0) / L[r * m + r];
     for (c = 0; c < m; ++c) {
-        for (r = 0; r < m; ++r)
-            column[r] = r == c ? ME_R(1.0) : ME_R(0.0);
-        KeaCholeskyDenseSolve(m, L, column);
+        for (r = 0; r < c; ++r)
+            column[r] = ME_R(0.0);
+        for (r = c; r < m; ++r) {
+            MeReal v = r == c ? ME_R(1.0) : ME_R(0.0);
+            for (j = c; j < r; ++j)
+                v -= L[r * m + j] * column[j];
+            column[r] = v * invDiag[r];
+        }
+        for (r = m - 1; r >= 0; --r) {
+            const MeReal v = column[r] * invDiag[r];
+            column[r] = v;
+            for (j = 0; j < r; ++j)
+                column[j] -= L[r * m + j] * v;
+        }
         for (r = 0; r < m; ++r)
             inv[r * m + c] = column[r];
     }
 }
 
-/* out = inv in, for an m x m block inverse (out and in distinct). */
-static void KeaBlockInverseApply(int m, const MeReal *inv, const MeReal *in, MeReal *out)
+/* out = M in for a symmetric m x m block M (out and in distinct). Summed column by column (column c
+ * of M is its row c): every out[r] is its own running sum, so the inner loop vectorises without
+ * reassociating any sum. */
+static void KeaBlockSymmetricApply(int m, const MeReal *M, const MeReal *in, MeReal *out)
 {
     int r, c;
-    for (r = 0; r < m; ++r) {
-        MeReal s = ME_R(0.0);
-        for (c = 0; c < m; ++c)
-            s += inv[r * m + c] * in[c];
-        out[r] = s;
+    for (r = 0; r < m; ++r)
+        out[r] = ME_R(0.0);
+    for (c = 0; c < m; ++c) {
+        const MeReal v = in[c];
+        const MeReal *column = M + c * m;
+        for (r = 0; r < m; ++r)
+            out[r] += column[r] * v;
     }
 }
 
@@ -197,7 +216,7 @@ static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int b
     int r;
     if (!w->blockFactored[block])
         return 0;
-    KeaBlockInverseApply(m, w->blockInv + w->blockMatrix[block], w->localW, w->localX);
+    KeaBlockSymmetricApply(m, w->blockInv + w->blockMatrix[block], w->localW, w->localX);
     for (r = 0; r < m; ++r)
         w->localX[r] = x[s + r] - w->localX[r];
     for (r = 0; r < m; ++r) {
@@ -228,17 +247,14 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
     KeaDenseLcp lcp;
     KeaStats local;
     MeReal worst = ME_R(0.0);
-    int r, c;
+    int r;
     for (r = 0; r < m; ++r) {
         const int i = s + r;
         const MeReal wi = KeaRowW(problem, i, x, dv);
-        MeReal lo, hi, ax = ME_R(0.0);
+        MeReal lo, hi;
         KeaRowBounds(problem, x, i, &lo, &hi);
         if (w->invDiag[i] != ME_R(0.0))
             worst = KeaMax(worst, w->diag[i] * KeaFabs(x[i] - KeaClamp(x[i] - wi * w->invDiag[i], lo, hi)));
-        for (c = 0; c < m; ++c)
-            ax += A[r * m + c] * x[s + c];
-        w->localR[r] = ax - wi;
         w->localW[r] = wi;
         w->localLink[r] = -1;
         if (problem->link && problem->link[i] >= s && problem->link[i] < s + m) {
@@ -252,8 +268,11 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
     }
     if (KeaBlockAllFree(problem, w, block, x, dv))
         return worst;
-    for (r = 0; r < m; ++r)
+    KeaBlockSymmetricApply(m, A, x + s, w->localR); /* r_loc = A_bb x_b - w_b */
+    for (r = 0; r < m; ++r) {
+        w->localR[r] -= w->localW[r];
         w->localX[r] = x[s + r];
+    }
     lcp.n = m;
     lcp.A = A;
     lcp.r = w->localR;
@@ -346,7 +365,7 @@ static void KeaPrecondition(const KeaIterativeWork *w, int nFree, const MeReal *
         z[p] = res[p] * w->invDiag[w->freeRows[p]];
     for (k = 0; k < w->nSegments; ++k) {
         const int b = w->segmentBlock[k], m = w->blockStart[b + 1] - w->blockStart[b];
-        KeaBlockInverseApply(m, w->blockInv + w->blockMatrix[b], res + w->segmentPos[k], z + w->segmentPos[k]);
+        KeaBlockSymmetricApply(m, w->blockInv + w->blockMatrix[b], res + w->segmentPos[k], z + w->segmentPos[k]);
     }
 }
 
