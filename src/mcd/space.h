@@ -37,6 +37,8 @@ struct McdFramework;
 typedef struct McdSpaceEndpoint {
     MeReal value;
     MeU32 tag; /* (isMax << 30) | slot: at equal values starts sort before ends, so touching boxes overlap */
+    MeReal lo, hi; /* an end's object's interval on the list's filter axis (McdSpace.filterAxis); a
+                    * start holds the empty interval (+inf, -inf), which no interval overlaps */
 } McdSpaceEndpoint;
 
 #define MCD_EP_MAX (1u << 30)
@@ -99,8 +101,11 @@ typedef struct McdSpace {
      * sort touch little memory */
     MeReal *box;
 
-    /* end points: ep[k] holds 2 * (objects in the lists) entries for axis[k] */
+    /* end points: ep[k] holds 2 * (objects in the lists) entries for axis[k]; each carries its
+     * object's interval on filterAxis[k] (another sorted axis when there is one), so that most
+     * start-passes-end events are settled without reading the other object's box */
     McdSpaceEndpoint *ep[3];
+    int filterAxis[3];
     McdSpaceEndpoint *epTmp;
     int epCount;
     int *activeAll, *activeNew, *activePosAll, *activePosNew; /* sweep scratch */

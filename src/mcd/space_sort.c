@@ -11,6 +11,7 @@
  * are about one per object, while such events grow with the number of objects a box's projection
  * crosses (several per object and axis when many move). The records are then exactly the overlaps,
  * with few hash look-ups. */
+#include <math.h>
 #include <string.h>
 
 #include <karma/MeMemory.h>
@@ -52,6 +53,8 @@ MeBool McdSpaceEngineInit(McdSpace *s, int axes, int maxObjects, int maxPairs)
     for (int k = 0; k < 3; k++)
         if (axes & (1 << k))
             s->axis[s->axisCount++] = k;
+    for (int i = 0; i < s->axisCount; i++)
+        s->filterAxis[i] = s->axis[(i + 1) % s->axisCount];
     s->maxObjects = maxObjects;
     s->maxPairs = maxPairs;
     size_t n = (size_t)(maxObjects > 0 ? maxObjects : 1);
@@ -227,14 +230,29 @@ static void compactLists(McdSpace *s)
     s->listsDirty = MEFALSE;
 }
 
+/* Sets an end point's value and filter interval (empty for a start) from its object's box. */
+static void setEndpoint(const McdSpace *s, int axisIndex, McdSpaceEndpoint *e)
+{
+    const MeReal *b = &s->box[6 * MCD_EP_SLOT(e->tag)];
+    int f = s->filterAxis[axisIndex];
+    if (MCD_EP_IS_MAX(e->tag)) {
+        e->value = b[s->axis[axisIndex] + 3];
+        e->lo = b[f];
+        e->hi = b[f + 3];
+    } else {
+        e->value = b[s->axis[axisIndex]];
+        e->lo = (MeReal)INFINITY;
+        e->hi = -(MeReal)INFINITY;
+    }
+}
+
 /* Rewrites the lists' values from the objects' boxes (they change between sorts). */
 static void refreshValues(McdSpace *s)
 {
     for (int i = 0; i < s->axisCount; i++) {
-        int k = s->axis[i];
         McdSpaceEndpoint *ep = s->ep[i];
         for (int j = 0; j < s->epCount; j++)
-            ep[j].value = s->box[6 * MCD_EP_SLOT(ep[j].tag) + k + (MCD_EP_IS_MAX(ep[j].tag) ? 3 : 0)];
+            setEndpoint(s, i, &ep[j]);
     }
 }
 
@@ -246,7 +264,7 @@ static void insertionSort(McdSpace *s, int axisIndex)
 {
     McdSpaceEndpoint *ep = s->ep[axisIndex];
     const MeReal *box = s->box;
-    const int n = s->epCount, axisCount = s->axisCount;
+    const int n = s->epCount, axisCount = s->axisCount, filter = s->filterAxis[axisIndex];
     int axis[3] = {s->axis[0], s->axis[1], s->axis[2]};
     for (int i = 1; i < n; i++) {
         McdSpaceEndpoint e = ep[i];
@@ -263,21 +281,24 @@ static void insertionSort(McdSpace *s, int axisIndex)
         }
         int se = MCD_EP_SLOT(e.tag);
         const MeReal *pe = &box[6 * se];
+        const MeReal elo = pe[filter], ehi = pe[filter + 3];
         do {
             McdSpaceEndpoint o = ep[j];
-            /* A start passed an end (o is an end): they may begin to overlap. Whether o is an end is
-             * a coin toss, so it is folded into the test, not branched on: a start is tested against
-             * our own box (in cache) and the result discarded. */
-            int so = MCD_EP_SLOT(o.tag);
-            unsigned isEnd = (o.tag & MCD_EP_MAX) != 0;
-            const MeReal *po = &box[6 * (isEnd ? so : se)];
-            unsigned overlap = isEnd;
-            for (int a = 0; a < axisCount; a++) {
-                int k = axis[a];
-                overlap &= (unsigned)(pe[k] <= po[k + 3]) & (unsigned)(po[k] <= pe[k + 3]);
+            /* A start passed an end (o is an end): they may begin to overlap. Ends carry their
+             * interval on the filter axis and starts an empty one, so one comparison, with no
+             * branch on whether o is an end (a coin toss), leaves the few pairs that read the boxes. */
+            MeReal lo = o.lo > elo ? o.lo : elo, hi = o.hi < ehi ? o.hi : ehi;
+            if (lo <= hi) {
+                int so = MCD_EP_SLOT(o.tag);
+                const MeReal *po = &box[6 * so];
+                MeBool overlap = METRUE;
+                for (int a = 0; a < axisCount && overlap; a++) {
+                    int k = axis[a];
+                    overlap = pe[k] <= po[k + 3] && po[k] <= pe[k + 3];
+                }
+                if (overlap)
+                    McdSpacePairSetOverlap(s, se, so, METRUE);
             }
-            if (overlap)
-                McdSpacePairSetOverlap(s, se, so, METRUE);
             ep[j + 1] = o;
             j--;
         } while (j >= 0 && epLess(&e, &ep[j]));
@@ -331,14 +352,13 @@ static void mergePending(McdSpace *s)
 {
     int k2 = 2 * s->pendingCount;
     for (int i = 0; i < s->axisCount; i++) {
-        int k = s->axis[i];
         McdSpaceEndpoint *fresh = s->epTmp;
         for (int j = 0; j < s->pendingCount; j++) {
             int slot = s->pending[j];
-            fresh[2 * j].value = s->box[6 * slot + k];
             fresh[2 * j].tag = (MeU32)slot;
-            fresh[2 * j + 1].value = s->box[6 * slot + k + 3];
+            setEndpoint(s, i, &fresh[2 * j]);
             fresh[2 * j + 1].tag = MCD_EP_MAX | (MeU32)slot;
+            setEndpoint(s, i, &fresh[2 * j + 1]);
         }
         /* ep[i] has room for every object: its free tail is the sort's scratch, then the merge's
          * destination (merging from the back). */
