@@ -230,20 +230,19 @@ static void compactLists(McdSpace *s)
     s->listsDirty = MEFALSE;
 }
 
-/* Sets an end point's value and filter interval (empty for a start) from its object's box. */
+/* The filter interval of a start: empty on every axis (lo, lo, lo, hi, hi, hi as in a box). */
+static const MeReal emptyBox[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+
+/* Sets an end point's value and filter interval (empty for a start) from its object's box. Starts
+ * and ends alternate at random in a list: selects, not branches. */
 static void setEndpoint(const McdSpace *s, int axisIndex, McdSpaceEndpoint *e)
 {
     const MeReal *b = &s->box[6 * MCD_EP_SLOT(e->tag)];
-    int f = s->filterAxis[axisIndex];
-    if (MCD_EP_IS_MAX(e->tag)) {
-        e->value = b[s->axis[axisIndex] + 3];
-        e->lo = b[f];
-        e->hi = b[f + 3];
-    } else {
-        e->value = b[s->axis[axisIndex]];
-        e->lo = (MeReal)INFINITY;
-        e->hi = -(MeReal)INFINITY;
-    }
+    unsigned isMax = MCD_EP_IS_MAX(e->tag) ? 1u : 0u;
+    const MeReal *f = (isMax ? b : emptyBox) + s->filterAxis[axisIndex];
+    e->value = b[s->axis[axisIndex] + 3 * (int)isMax];
+    e->lo = f[0];
+    e->hi = f[3];
 }
 
 /* Rewrites the lists' values from the objects' boxes (they change between sorts). */
