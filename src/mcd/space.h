@@ -37,6 +37,8 @@ struct McdFramework;
 typedef struct McdSpaceEndpoint {
     MeReal value;
     MeU32 tag; /* (isMax << 30) | slot: at equal values starts sort before ends, so touching boxes overlap */
+    MeReal lo, hi; /* an end's object's interval on the list's filter axis (McdSpace.filterAxis); a
+                    * start holds the empty interval (+inf, -inf), which no interval overlaps */
 } McdSpaceEndpoint;
 
 #define MCD_EP_MAX (1u << 30)
@@ -65,10 +67,17 @@ typedef struct McdSpacePair {
     int a, b;           /* object slots, a < b (hash key); -1 once detached */
     int next[2], prev[2]; /* links in the lists of object a ([0]) and object b ([1]) */
     int touched;        /* index in the touched list, or -1 */
+    int overlapIndex;   /* index in the overlap list while MCD_PAIR_OVERLAP is set, else -1 */
     MeI32 order[4];     /* key1, slot1, key2, slot2: the report order, fixed at Hello */
     unsigned flags;
     int state;          /* McdSpacePairState at the last report */
 } McdSpacePair;
+
+/* An entry of the overlap list: the record and its two slots, so that the check after a sort reads
+ * this array and the boxes, not the records. */
+typedef struct McdSpaceOverlap {
+    int pair, a, b;
+} McdSpaceOverlap;
 
 typedef struct McdSpace {
     uintptr_t id;
@@ -84,15 +93,19 @@ typedef struct McdSpace {
     int *freeObj, freeObjCount, objectCount;
     int *pending, pendingCount; /* slots inserted since the last merge */
     int cullingObjects;         /* objects with a culling table: the report re-examines every pair */
+    int frozenObjects;          /* objects with MCD_OBJ_FROZEN: under two, no pair is both frozen */
     MeBool listsDirty;          /* some object left the lists: compact them */
     MeBool keysChanged;         /* a sort key changed: re-sort the live list at the next report */
 
     /* boxes, 6 reals per slot (lo x y z, hi x y z), apart from the objects so that the events of the
-     * sort touch little memory; prevBox holds the boxes of the last sort */
-    MeReal *box, *prevBox;
+     * sort touch little memory */
+    MeReal *box;
 
-    /* end points: ep[k] holds 2 * (objects in the lists) entries for axis[k] */
+    /* end points: ep[k] holds 2 * (objects in the lists) entries for axis[k]; each carries its
+     * object's interval on filterAxis[k] (another sorted axis when there is one), so that most
+     * start-passes-end events are settled without reading the other object's box */
     McdSpaceEndpoint *ep[3];
+    int filterAxis[3];
     McdSpaceEndpoint *epTmp;
     int epCount;
     int *activeAll, *activeNew, *activePosAll, *activePosNew; /* sweep scratch */
@@ -103,6 +116,8 @@ typedef struct McdSpace {
     int *hash;
     MeU32 hashMask;
     int *touched, touchedCount;
+    McdSpaceOverlap *overlap;   /* records with MCD_PAIR_OVERLAP (any order) */
+    int overlapCount;
     int *live, *liveTmp, liveCount; /* live pairs in report order */
     int *scratch;
     int *report, goodbyeCount, helloCount, stayingCount;
@@ -162,6 +177,8 @@ MeBool McdSpacePairSetDisabled(McdSpace *s, int a, int b, MeBool disabled);
 void McdSpacePairDetachObject(McdSpace *s, int slot);
 /* Marks an object's pairs for re-examination at the next report (unfreeze). */
 void McdSpacePairTouchObject(McdSpace *s, int slot);
+/* Clears the overlap of every overlapping record whose boxes no longer overlap (after a sort). */
+void McdSpacePairDropApart(McdSpace *s);
 /* Clears the overlap of every recorded pair whose boxes no longer overlap (McdSpaceRebuild). */
 void McdSpacePairRecheckAll(McdSpace *s);
 /* End of a change block: decides Hello/Staying/Goodbye and fills s->report. */

@@ -24,11 +24,12 @@ MeBool McdSpacePairsInit(McdSpace *s)
     s->freePair = MeMemoryCreate(n * sizeof(int));
     s->hash = MeMemoryCreate(cap * sizeof(int));
     s->touched = MeMemoryCreate(n * sizeof(int));
+    s->overlap = MeMemoryCreate(n * sizeof *s->overlap);
     s->live = MeMemoryCreate(n * sizeof(int));
     s->liveTmp = MeMemoryCreate(n * sizeof(int));
     s->scratch = MeMemoryCreate(n * sizeof(int));
     s->report = MeMemoryCreate(n * sizeof(int));
-    if (!s->pairs || !s->freePair || !s->hash || !s->touched || !s->live || !s->liveTmp || !s->scratch || !s->report)
+    if (!s->pairs || !s->freePair || !s->hash || !s->touched || !s->overlap || !s->live || !s->liveTmp || !s->scratch || !s->report)
         return MEFALSE;
     for (MeU32 i = 0; i < cap; i++)
         s->hash[i] = -1;
@@ -36,6 +37,7 @@ MeBool McdSpacePairsInit(McdSpace *s)
         s->freePair[i] = s->maxPairs - 1 - i;
         s->pairs[i].a = s->pairs[i].b = -1;
         s->pairs[i].touched = -1;
+        s->pairs[i].overlapIndex = -1;
     }
     s->freePairCount = s->maxPairs;
     return METRUE;
@@ -47,6 +49,7 @@ void McdSpacePairsTerm(McdSpace *s)
     MeMemoryDestroy(s->freePair);
     MeMemoryDestroy(s->hash);
     MeMemoryDestroy(s->touched);
+    MeMemoryDestroy(s->overlap);
     MeMemoryDestroy(s->live);
     MeMemoryDestroy(s->liveTmp);
     MeMemoryDestroy(s->scratch);
@@ -155,6 +158,29 @@ static void untouch(McdSpace *s, int p)
     s->pairs[p].touched = -1;
 }
 
+/* Sets or clears MCD_PAIR_OVERLAP, keeping the overlap list. */
+static void setOverlapFlag(McdSpace *s, int p, MeBool on)
+{
+    McdSpacePair *r = &s->pairs[p];
+    if (on) {
+        if (!(r->flags & MCD_PAIR_OVERLAP)) {
+            r->flags |= MCD_PAIR_OVERLAP;
+            r->overlapIndex = s->overlapCount;
+            McdSpaceOverlap *o = &s->overlap[s->overlapCount++];
+            o->pair = p;
+            o->a = r->a;
+            o->b = r->b;
+        }
+    } else if (r->flags & MCD_PAIR_OVERLAP) {
+        r->flags &= ~MCD_PAIR_OVERLAP;
+        int i = r->overlapIndex;
+        McdSpaceOverlap last = s->overlap[--s->overlapCount];
+        s->overlap[i] = last;
+        s->pairs[last.pair].overlapIndex = i;
+        r->overlapIndex = -1;
+    }
+}
+
 /* Takes a record out of the hash table and both objects' lists; it keeps a and b for the report. */
 static void detach(McdSpace *s, int p)
 {
@@ -164,7 +190,8 @@ static void detach(McdSpace *s, int p)
     hashDelete(s, p);
     unlinkFrom(s, p, r->a);
     unlinkFrom(s, p, r->b);
-    r->flags &= ~(MCD_PAIR_INMAP | MCD_PAIR_OVERLAP | MCD_PAIR_DISABLED);
+    setOverlapFlag(s, p, MEFALSE);
+    r->flags &= ~(MCD_PAIR_INMAP | MCD_PAIR_DISABLED);
 }
 
 static void freeRecord(McdSpace *s, int p)
@@ -202,6 +229,7 @@ static int create(McdSpace *s, int a, int b)
     r->a = a;
     r->b = b;
     r->touched = -1;
+    r->overlapIndex = -1;
     r->flags = MCD_PAIR_INMAP;
     r->state = kMcdPairInactive;
     r->pair.id = (MeU32)p;
@@ -224,13 +252,27 @@ void McdSpacePairSetOverlap(McdSpace *s, int a, int b, MeBool on)
         if (p < 0 && (p = create(s, a, b)) < 0)
             return;
         if (!(s->pairs[p].flags & MCD_PAIR_OVERLAP)) {
-            s->pairs[p].flags |= MCD_PAIR_OVERLAP;
+            setOverlapFlag(s, p, METRUE);
             touch(s, p);
         }
     } else if (p >= 0 && (s->pairs[p].flags & MCD_PAIR_OVERLAP)) {
-        s->pairs[p].flags &= ~MCD_PAIR_OVERLAP;
+        setOverlapFlag(s, p, MEFALSE);
         touch(s, p);
         release(s, p);
+    }
+}
+
+void McdSpacePairDropApart(McdSpace *s)
+{
+    /* Backwards: removing entry i moves the last entry (already looked at) into its place. */
+    for (int i = s->overlapCount - 1; i >= 0; i--) {
+        const McdSpaceOverlap *o = &s->overlap[i];
+        if (!McdSpaceObjectsOverlap(s, o->a, o->b)) {
+            int p = o->pair;
+            setOverlapFlag(s, p, MEFALSE);
+            touch(s, p);
+            release(s, p);
+        }
     }
 }
 
@@ -248,7 +290,7 @@ MeBool McdSpacePairSetDisabled(McdSpace *s, int a, int b, MeBool disabled)
                 return MEFALSE;
             p = create(s, a, b);
             if (McdSpaceObjectsOverlap(s, a, b) && (s->obj[a].flags & s->obj[b].flags & MCD_OBJ_INLISTS))
-                s->pairs[p].flags |= MCD_PAIR_OVERLAP;
+                setOverlapFlag(s, p, METRUE);
         }
         if (!(s->pairs[p].flags & MCD_PAIR_DISABLED)) {
             s->pairs[p].flags |= MCD_PAIR_DISABLED;
@@ -302,7 +344,7 @@ static MeBool exists(const McdSpace *s, int p)
 static MeBool bothFrozen(const McdSpace *s, int p)
 {
     const McdSpacePair *r = &s->pairs[p];
-    return r->a >= 0 && (s->obj[r->a].flags & s->obj[r->b].flags & MCD_OBJ_FROZEN);
+    return s->frozenObjects >= 2 && r->a >= 0 && (s->obj[r->a].flags & s->obj[r->b].flags & MCD_OBJ_FROZEN);
 }
 
 /* The report order of a pair: (sort key, slot) of its lower model, then of its higher one. */

@@ -4,11 +4,14 @@
  * Each sorted axis keeps the start and end values of every object's box in one array ordered by
  * (value, end?, slot). Between updates objects move a little, so re-sorting by insertion costs about
  * one pass plus one swap per change of order. A swap of a start with an end is the only event that
- * can change whether two boxes overlap on that axis, and a pair whose overlap changed must have had
- * such a swap on some axis. All values are final before the passes, so: when a start passes an end,
- * the pair is recorded if the boxes overlap on every axis; when an end passes a start, the boxes are
- * apart, and the pair is dropped if their boxes of the last sort overlapped (else there is no record).
- * After the passes the records are exactly the overlaps, with few hash look-ups. */
+ * can change whether two boxes overlap on that axis, and a pair that began to overlap must have had a
+ * start pass an end on some axis. All values are final before the passes, so when a start passes an
+ * end the pair is recorded if the boxes overlap on every axis. An end passing a start (the boxes come
+ * apart) is not looked at: after the passes McdSpacePairDropApart tests the recorded overlaps, which
+ * are about one per object, while such events grow with the number of objects a box's projection
+ * crosses (several per object and axis when many move). The records are then exactly the overlaps,
+ * with few hash look-ups. */
+#include <math.h>
 #include <string.h>
 
 #include <karma/MeMemory.h>
@@ -16,9 +19,11 @@
 #include "../me/check.h"
 #include "space.h"
 
+/* (value, tag) order. Values are never NaN (boxIsValid); bitwise operators, so that the compiler
+ * makes one branch of it, not three (the sort's branches are hard to predict). */
 static MeBool epLess(const McdSpaceEndpoint *x, const McdSpaceEndpoint *y)
 {
-    return x->value < y->value || (x->value == y->value && x->tag < y->tag);
+    return (x->value < y->value) | ((x->value == y->value) & (x->tag < y->tag));
 }
 
 /* Bottom-up merge sort of n end points, tmp holding n more (no allocation: qsort may allocate). */
@@ -48,6 +53,8 @@ MeBool McdSpaceEngineInit(McdSpace *s, int axes, int maxObjects, int maxPairs)
     for (int k = 0; k < 3; k++)
         if (axes & (1 << k))
             s->axis[s->axisCount++] = k;
+    for (int i = 0; i < s->axisCount; i++)
+        s->filterAxis[i] = s->axis[(i + 1) % s->axisCount];
     s->maxObjects = maxObjects;
     s->maxPairs = maxPairs;
     size_t n = (size_t)(maxObjects > 0 ? maxObjects : 1);
@@ -60,9 +67,8 @@ MeBool McdSpaceEngineInit(McdSpace *s, int axes, int maxObjects, int maxPairs)
     s->activePosNew = MeMemoryCreate(n * sizeof(int));
     s->epTmp = MeMemoryCreate(2 * n * sizeof(McdSpaceEndpoint));
     s->box = MeMemoryCreateZeroed(6 * n * sizeof(MeReal));
-    s->prevBox = MeMemoryCreateZeroed(6 * n * sizeof(MeReal));
     MeBool ok = s->obj && s->freeObj && s->pending && s->activeAll && s->activeNew && s->activePosAll &&
-                s->activePosNew && s->epTmp && s->box && s->prevBox;
+                s->activePosNew && s->epTmp && s->box;
     for (int k = 0; k < s->axisCount; k++) {
         s->ep[k] = MeMemoryCreate(2 * n * sizeof(McdSpaceEndpoint));
         ok = ok && s->ep[k];
@@ -88,7 +94,6 @@ void McdSpaceEngineTerm(McdSpace *s)
     MeMemoryDestroy(s->activePosNew);
     MeMemoryDestroy(s->epTmp);
     MeMemoryDestroy(s->box);
-    MeMemoryDestroy(s->prevBox);
     for (int k = 0; k < 3; k++)
         MeMemoryDestroy(s->ep[k]);
 }
@@ -137,6 +142,8 @@ void McdSpaceObjectRemove(McdSpace *s, int slot)
     }
     if (o->flags & MCD_OBJ_INLISTS)
         s->listsDirty = METRUE;
+    if (o->flags & MCD_OBJ_FROZEN)
+        s->frozenObjects--;
     o->flags = 0;
     o->model = NULL;
     o->handle = 0;
@@ -185,16 +192,19 @@ void McdSpaceObjectSetFrozen(McdSpace *s, int slot, MeBool frozen)
 {
     McdSpaceObject *o = &s->obj[slot];
     if (frozen) {
+        if (!(o->flags & MCD_OBJ_FROZEN))
+            s->frozenObjects++;
         o->flags |= MCD_OBJ_FROZEN;
     } else if (o->flags & MCD_OBJ_FROZEN) {
         o->flags &= ~MCD_OBJ_FROZEN;
+        s->frozenObjects--;
         McdSpacePairTouchObject(s, slot); /* pairs of two frozen models may start now */
     }
 }
 
-static MeBool boxesOverlap(const McdSpace *s, const MeReal *box, int a, int b)
+MeBool McdSpaceObjectsOverlap(const McdSpace *s, int a, int b)
 {
-    const MeReal *p = &box[6 * a], *q = &box[6 * b];
+    const MeReal *p = &s->box[6 * a], *q = &s->box[6 * b];
     for (int i = 0; i < s->axisCount; i++) {
         int k = s->axis[i];
         if (!(p[k] <= q[k + 3] && q[k] <= p[k + 3]))
@@ -202,8 +212,6 @@ static MeBool boxesOverlap(const McdSpace *s, const MeReal *box, int a, int b)
     }
     return METRUE;
 }
-
-MeBool McdSpaceObjectsOverlap(const McdSpace *s, int a, int b) { return boxesOverlap(s, s->box, a, b); }
 
 /* ---- list maintenance --------------------------------------------------------------------- */
 
@@ -222,41 +230,75 @@ static void compactLists(McdSpace *s)
     s->listsDirty = MEFALSE;
 }
 
+/* The filter interval of a start: empty on every axis (lo, lo, lo, hi, hi, hi as in a box). */
+static const MeReal emptyBox[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+
+/* Sets an end point's value and filter interval (empty for a start) from its object's box. Starts
+ * and ends alternate at random in a list: selects, not branches. */
+static void setEndpoint(const McdSpace *s, int axisIndex, McdSpaceEndpoint *e)
+{
+    const MeReal *b = &s->box[6 * MCD_EP_SLOT(e->tag)];
+    unsigned isMax = MCD_EP_IS_MAX(e->tag) ? 1u : 0u;
+    const MeReal *f = (isMax ? b : emptyBox) + s->filterAxis[axisIndex];
+    e->value = b[s->axis[axisIndex] + 3 * (int)isMax];
+    e->lo = f[0];
+    e->hi = f[3];
+}
+
 /* Rewrites the lists' values from the objects' boxes (they change between sorts). */
 static void refreshValues(McdSpace *s)
 {
     for (int i = 0; i < s->axisCount; i++) {
-        int k = s->axis[i];
         McdSpaceEndpoint *ep = s->ep[i];
         for (int j = 0; j < s->epCount; j++)
-            ep[j].value = s->box[6 * MCD_EP_SLOT(ep[j].tag) + k + (MCD_EP_IS_MAX(ep[j].tag) ? 3 : 0)];
+            setEndpoint(s, i, &ep[j]);
     }
 }
 
-/* Insertion sort of one axis; a start/end swap is the only event that can change a pair. */
+/* Insertion sort of one axis. Only a start passing an end to its left can make two boxes overlap:
+ * those events test every axis and record the new overlaps. An end passing a start is ignored here:
+ * McdSpacePairDropApart then looks at the recorded overlaps (about one per object, against two or
+ * more such events per object and axis when many objects move). */
 static void insertionSort(McdSpace *s, int axisIndex)
 {
     McdSpaceEndpoint *ep = s->ep[axisIndex];
-    for (int i = 1; i < s->epCount; i++) {
+    const MeReal *box = s->box;
+    const int n = s->epCount, axisCount = s->axisCount, filter = s->filterAxis[axisIndex];
+    int axis[3] = {s->axis[0], s->axis[1], s->axis[2]};
+    for (int i = 1; i < n; i++) {
         McdSpaceEndpoint e = ep[i];
         if (!epLess(&e, &ep[i - 1]))
             continue;
         int j = i - 1;
+        if (MCD_EP_IS_MAX(e.tag)) { /* an end moving down: no event */
+            do {
+                ep[j + 1] = ep[j];
+                j--;
+            } while (j >= 0 && epLess(&e, &ep[j]));
+            ep[j + 1] = e;
+            continue;
+        }
         int se = MCD_EP_SLOT(e.tag);
-        MeBool eMax = MCD_EP_IS_MAX(e.tag);
+        const MeReal *pe = &box[6 * se];
+        const MeReal elo = pe[filter], ehi = pe[filter + 3];
         do {
-            const McdSpaceEndpoint *o = &ep[j];
-            if (MCD_EP_IS_MAX(o->tag) != eMax) {
-                int so = MCD_EP_SLOT(o->tag);
-                if (!eMax) { /* a start passed an end: they may begin to overlap (test every axis) */
-                    if (McdSpaceObjectsOverlap(s, se, so))
-                        McdSpacePairSetOverlap(s, se, so, METRUE);
-                } else if (boxesOverlap(s, s->prevBox, se, so)) {
-                    /* An end passed a start: apart now; a pair only if they overlapped before. */
-                    McdSpacePairSetOverlap(s, se, so, MEFALSE);
+            McdSpaceEndpoint o = ep[j];
+            /* A start passed an end (o is an end): they may begin to overlap. Ends carry their
+             * interval on the filter axis and starts an empty one, so one comparison, with no
+             * branch on whether o is an end (a coin toss), leaves the few pairs that read the boxes. */
+            MeReal lo = o.lo > elo ? o.lo : elo, hi = o.hi < ehi ? o.hi : ehi;
+            if (lo <= hi) {
+                int so = MCD_EP_SLOT(o.tag);
+                const MeReal *po = &box[6 * so];
+                MeBool overlap = METRUE;
+                for (int a = 0; a < axisCount && overlap; a++) {
+                    int k = axis[a];
+                    overlap = pe[k] <= po[k + 3] && po[k] <= pe[k + 3];
                 }
+                if (overlap)
+                    McdSpacePairSetOverlap(s, se, so, METRUE);
             }
-            ep[j + 1] = ep[j];
+            ep[j + 1] = o;
             j--;
         } while (j >= 0 && epLess(&e, &ep[j]));
         ep[j + 1] = e;
@@ -309,14 +351,13 @@ static void mergePending(McdSpace *s)
 {
     int k2 = 2 * s->pendingCount;
     for (int i = 0; i < s->axisCount; i++) {
-        int k = s->axis[i];
         McdSpaceEndpoint *fresh = s->epTmp;
         for (int j = 0; j < s->pendingCount; j++) {
             int slot = s->pending[j];
-            fresh[2 * j].value = s->box[6 * slot + k];
             fresh[2 * j].tag = (MeU32)slot;
-            fresh[2 * j + 1].value = s->box[6 * slot + k + 3];
+            setEndpoint(s, i, &fresh[2 * j]);
             fresh[2 * j + 1].tag = MCD_EP_MAX | (MeU32)slot;
+            setEndpoint(s, i, &fresh[2 * j + 1]);
         }
         /* ep[i] has room for every object: its free tail is the sort's scratch, then the merge's
          * destination (merging from the back). */
@@ -352,12 +393,6 @@ static void sweepAll(McdSpace *s)
         s->obj[MCD_EP_SLOT(s->ep[0][i].tag)].flags &= ~MCD_OBJ_NEW;
 }
 
-/* The boxes the records now reflect: an end event needs a look-up only if the two overlapped. */
-static void keepBoxes(McdSpace *s)
-{
-    memcpy(s->prevBox, s->box, 6 * (size_t)s->maxObjects * sizeof(MeReal));
-}
-
 static void reportLost(McdSpace *s, const char *function)
 {
     if (s->lostNow > 0)
@@ -380,12 +415,12 @@ void McdSpaceSort(McdSpace *s, MeBool sort, const char *function)
         refreshValues(s);
         for (int i = 0; i < s->axisCount; i++)
             insertionSort(s, i);
+        McdSpacePairDropApart(s);
     }
     if (s->pendingCount > 0)
         mergePending(s);
     if (retry)
         sweepAll(s);
-    keepBoxes(s);
     reportLost(s, function);
 }
 
@@ -405,6 +440,5 @@ void McdSpaceRebuild(McdSpace *s, const char *function)
     McdSpacePairRecheckAll(s);
     if (s->pendingCount > 0)
         mergePending(s);
-    keepBoxes(s);
     reportLost(s, function);
 }
