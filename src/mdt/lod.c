@@ -9,11 +9,11 @@
  * Joints are never touched. The result is a per-contact row limit stamped with this step's partition
  * stamp (ContactData.lodRows), which the contact's row writer honours in the pack stage; the next step
  * starts from full rows again. The list lives in the world's LOD chunk. */
-#include <stdlib.h>
 
 #include <karma/MdtContact.h>
 
 #include "../me/check.h"
+#include "../me/sort.h"
 #include "bcl/contact_internal.h"
 #include "constraint.h"
 #include "world.h"
@@ -130,7 +130,7 @@ static int capPartition(MdtWorld *w, int p, int rows)
         if (c->type == MdtBclCONTACTGROUP || c->type == MdtBclCONTACT)
             n = listContacts(w, c, list, n, rows);
     }
-    qsort(list, (size_t)n, sizeof *list, compareEntries);
+    MeSortInPlace(list, (size_t)n, sizeof *list, compareEntries);
 
     const int cap = w->maxMatrixSize;
     int excess = rows - cap;

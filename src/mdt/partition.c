@@ -12,9 +12,9 @@
  * which the application created or destroyed things.
  *
  * Output (world->partitions) lives in the world's partition chunk until the next step. */
-#include <stdlib.h>
 
 #include "../me/check.h"
+#include "../me/sort.h"
 #include "constraint.h"
 #include "world.h"
 
@@ -82,7 +82,7 @@ void MdtPartitionStage(MdtWorld *w)
         if (b->enabled)
             seeds[seedCount++] = b;
     }
-    qsort(seeds, (size_t)seedCount, sizeof(MdtBody *), compareBodies);
+    MeSortInPlace(seeds, (size_t)seedCount, sizeof(MdtBody *), compareBodies);
 
     for (int s = 0; s < seedCount; s++) {
         MdtBody *seed = seeds[s];
@@ -112,8 +112,8 @@ void MdtPartitionStage(MdtWorld *w)
                 }
             }
         }
-        qsort(out->bodies + bodyStart, (size_t)(out->bodyCount - bodyStart), sizeof(MdtBody *), compareBodies);
-        qsort(out->constraints + constraintStart, (size_t)(out->constraintCount - constraintStart),
+        MeSortInPlace(out->bodies + bodyStart, (size_t)(out->bodyCount - bodyStart), sizeof(MdtBody *), compareBodies);
+        MeSortInPlace(out->constraints + constraintStart, (size_t)(out->constraintCount - constraintStart),
               sizeof(MdtConstraint *), compareConstraints);
         out->partitionStart[out->partitionCount] = bodyStart;
         out->constraintStart[out->partitionCount] = constraintStart;
