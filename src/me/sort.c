@@ -34,6 +34,17 @@ void MeSortInPlace(void *base, size_t count, size_t size, int (*compare)(const v
     size_t i;
     if (count < 2 || size == 0 || size > ME_SORT_MAX_ELEMENT)
         return;
+    /* Already in order (bodies gathered in pool order with equal sort keys, say): one pass. */
+    for (i = 1; i < count && compare(bytes + (i - 1) * size, bytes + i * size) <= 0; ++i)
+        continue;
+    if (i == count)
+        return;
+    if (count <= 16) { /* short lists: insertion sort from the first element out of order */
+        for (; i < count; ++i)
+            for (size_t j = i; j > 0 && compare(bytes + (j - 1) * size, bytes + j * size) > 0; --j)
+                swapElements(bytes + (j - 1) * size, bytes + j * size, size);
+        return;
+    }
     for (i = count / 2; i-- > 0;)
         siftDown(bytes, i, count, size, compare);
     for (i = count - 1; i > 0; --i) {
