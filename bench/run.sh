@@ -48,6 +48,8 @@ if [ -n "$missing" ]; then
 fi
 
 # ---- 2. build ---------------------------------------------------------------------------------------
+# The commit measured, read before this script writes its own outputs (which would make it "-dirty").
+commit=$(git describe --always --dirty 2>/dev/null || echo "?")
 mkdir -p "$BUILD"
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DKARMA_BUILD_BENCH=ON -DKARMA_BUILD_TESTS=OFF \
       -DKARMA_BUILD_TOOLS=OFF >"$BUILD/configure.log" 2>&1 || { cat "$BUILD/configure.log"; exit 1; }
@@ -91,7 +93,7 @@ cp "$tmp/csv" "$CSV"
     echo "<!-- scene-bench:begin: written by bench/run.sh, which replaces this block and keeps the rest of the file -->"
     echo "## Scenes against ODE and Bullet (\`bench/run.sh\`)"
     echo
-    echo "Written by \`bench/run.sh\` on $(date -u '+%Y-%m-%d %H:%M UTC') in ${elapsed} s (commit $(git describe --always --dirty 2>/dev/null || echo "?"))."
+    echo "Written by \`bench/run.sh\` on $(date -u '+%Y-%m-%d %H:%M UTC') in ${elapsed} s (commit ${commit})."
     echo "Scenes and figures: \`bench/scenes/README.md\`. Raw lines: \`$(basename "$CSV")\`."
     echo
     echo "Machine: $(nproc) cores, ${cpu:-unknown CPU}, ${mem:-? GiB}; $(uname -sr); load average $load_start at the"
