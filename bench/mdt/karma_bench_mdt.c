@@ -7,7 +7,7 @@
  * Markdown table row: partitions and rows of the largest partition, median milliseconds per step
  * (wall clock, and processor time of this process, which a busy shared machine inflates less),
  * the solver's worst residual, iterations, and the scene's quality figure. Auto-disable is off so
- * that every step does the same work. A run that exceeds its time budget (default 60 s) stops early
+ * that every step does the same work. A run that exceeds its time budget (default 20 s) stops early
  * and says after how many steps. Nothing here is part of the library. */
 #include <math.h>
 #include <stdio.h>
@@ -196,7 +196,7 @@ int main(int argc, char **argv)
 {
     const char *scenes = BENCH_MDT_SCENES, *paths = "direct,iterative";
     int steps = 0;
-    double budget = 60;
+    double budget = 20;
     for (int i = 1; i < argc; i++) {
         if (!strncmp(argv[i], "--scenes=", 9))
             scenes = argv[i] + 9;
