@@ -61,7 +61,7 @@ ME_API void MdtBodyGetVelocityAtPoint(MdtBodyID b, const MeVector3 p, MeVector3 
 /** Linear/angular acceleration over the last step (read only). */
 ME_API void MdtBodyGetLinearAcceleration(MdtBodyID b, MeVector3 a);
 ME_API void MdtBodyGetAngularAcceleration(MdtBodyID b, MeVector3 a);
-/** Fast-spin axis in the body frame (default (0,1,0)). */
+/** Fast-spin axis, world frame (default (0,1,0)). */
 ME_API void MdtBodyGetFastSpinAxis(MdtBodyID b, MeVector3 v);
 ME_API MeBool MdtBodyFastSpinAxisIsEnabled(MdtBodyID b);
 ME_API MeReal MdtBodyGetLinearVelocityDamping(MdtBodyID b);
@@ -104,7 +104,8 @@ ME_API void MdtBodySetAngularVelocity(MdtBodyID b, MeReal wx, MeReal wy, MeReal 
 ME_API void MdtBodySetLinearVelocityDamping(MdtBodyID b, MeReal d);
 /** Angular drag coefficient c ≥ 0 (N·m·s): torque −c·ω, integrated implicitly. Default 0. */
 ME_API void MdtBodySetAngularVelocityDamping(MdtBodyID b, MeReal d);
-/** Integrate the rotation about this body-frame axis exactly (wheels); re-set it each step. */
+/** Integrate the rotation about this world-frame axis exactly (wheels). As in Karma, set it again
+ *  before every step (from the wheel's current axis): the world-frame axis then follows the body. */
 ME_API void MdtBodySetFastSpinAxis(MdtBodyID b, MeReal x, MeReal y, MeReal z);
 ME_API void MdtBodySetNoFastSpinAxis(MdtBodyID b);
 ME_API void MdtBodyEnableNonSphericalInertia(MdtBodyID b);
