@@ -167,8 +167,6 @@ void MdtBclAddPointRows(MdtRowWriter *w, const MdtConstraint *c);
 void MdtBclAddPerpendicularRow(MdtRowWriter *w, const MdtConstraint *c, const MeVector3 d1, const MeVector3 d2);
 /** Two rows keeping body 0's primary axis parallel to body 1's (hinge). */
 void MdtBclAddParallelAxisRows(MdtRowWriter *w, const MdtConstraint *c);
-/** Three rows locking the relative orientation (fixed angle) of the two frames. */
-void MdtBclAddOrientationRows(MdtRowWriter *w, const MdtConstraint *c);
 /** Lever arm of the attachment point from body `index`'s COM, world frame (zero for the world). */
 void MdtBclLeverArm(const MdtConstraint *c, int index, MeVector3 r);
 /** Angular Jacobian of θ = atan2(d·v, d·u), with d fixed in body `dBody` and u, v in the other

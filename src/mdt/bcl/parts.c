@@ -69,33 +69,6 @@ void MdtBclAddParallelAxisRows(MdtRowWriter *w, const MdtConstraint *c)
     MdtBclAddPerpendicularRow(w, c, n0, a1);
 }
 
-/* The frames' relative rotation, as a small rotation vector δ = ½ Σ_i f1_i × f0_i (f: the frame
- * axes in the world), held at zero along the three world axes: dδ/dt ≈ ω0 − ω1. */
-void MdtBclAddOrientationRows(MdtRowWriter *w, const MdtConstraint *c)
-{
-    MeVector3 f0[3], f1[3], delta = {0, 0, 0};
-    MdtConstraintWorldPrimary(c, 0, f0[0]);
-    MdtConstraintWorldOrthogonal(c, 0, f0[1]);
-    MeVector3Cross(f0[2], f0[0], f0[1]);
-    MdtConstraintWorldPrimary(c, 1, f1[0]);
-    MdtConstraintWorldOrthogonal(c, 1, f1[1]);
-    MeVector3Cross(f1[2], f1[0], f1[1]);
-    for (int i = 0; i < 3; i++) {
-        MeVector3 t;
-        MeVector3Cross(t, f1[i], f0[i]);
-        MeVector3Add(delta, delta, t);
-    }
-    MeVector3Scale(delta, ME_R(0.5));
-    for (int k = 0; k < 3; k++) {
-        MdtRow row;
-        MdtRowInit(&row);
-        row.ang0[k] = 1;
-        row.ang1[k] = -1;
-        row.error = delta[k];
-        MdtRowWriterAdd(w, &row);
-    }
-}
-
 /* θ = atan2(d·v, d·u): the angle of direction d (fixed in body `dBody`) in the plane of u and v
  * (fixed in the other body). With x = d·u, y = d·v and d/dt(a·b) = (ω_a − ω_b)·(a × b) for a and b
  * fixed in bodies a and b, dθ/dt = (x ẏ − y ẋ)/(x² + y²) exactly, at any pose. */
