@@ -61,8 +61,9 @@ ME_API void MdtConstraintGetWorldAngularVelocity(MdtConstraintID c, MeVector3 av
 #define MdtConstraintBodyGetBothAxes(c, b, p, o) MdtConstraintBodyGetAxes((c), (b), (p), (o))
 
 /* ---- mutators ----------------------------------------------------------------------------- */
-/** Attach to bodies b1 (body 0, required) and b2 (body 1; NULL = the world). Resets positions and
- *  axes to the type's defaults in the new bodies' frames. Disable the constraint before changing
+/** Attach to bodies b1 (body 0, required) and b2 (body 1; NULL = the world). Positions and axes
+ *  keep the values they hold in each body's frame, so set them after attaching (the world-frame
+ *  setters convert with the new bodies' current poses). Disable the constraint before changing
  *  the bodies of an enabled one. */
 ME_API void MdtConstraintSetBodies(MdtConstraintID c, MdtBodyID b1, MdtBodyID b2);
 ME_API void MdtConstraintSetUserData(MdtConstraintID c, void *d);
