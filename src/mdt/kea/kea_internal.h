@@ -132,6 +132,17 @@ static inline void KeaFrictionBounds(MeReal lo, MeReal hi, MeReal mu, MeReal xLi
 /** Effective bounds of row i when its linked normal row has the impulse xLink. */
 void KeaLinkBounds(const KeaProblem *problem, int i, MeReal xLink, MeReal *lo, MeReal *hi);
 
+/** KeaRowBounds, inline: the iterative path asks for a row's bounds several times per sweep. */
+static inline void KeaRowBoundsInline(const KeaProblem *problem, const MeReal *x, int i, MeReal *lo, MeReal *hi)
+{
+    if (problem->link && problem->link[i] >= 0) {
+        KeaFrictionBounds(problem->lo[i], problem->hi[i], problem->mu[i], x[problem->link[i]], lo, hi);
+    } else {
+        *lo = problem->lo[i];
+        *hi = problem->hi[i];
+    }
+}
+
 /* ---- dense matrix and updatable Cholesky factor (kea_dense.c) -------------------------------- */
 
 /** A = J M^-1 J^T + diag(eps), dense n x n row-major, using B (M^-1 J^T rows) and a body -> rows

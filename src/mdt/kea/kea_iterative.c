@@ -143,18 +143,31 @@ static void KeaBlockInvert(int m, const MeReal *L, MeReal *inv)
 
 /* out = M in for a symmetric m x m block M (out and in distinct). Summed column by column (column c
  * of M is its row c): every out[r] is its own running sum, so the inner loop vectorises without
- * reassociating any sum. */
-static void KeaBlockSymmetricApply(int m, const MeReal *M, const MeReal *in, MeReal *out)
+ * reassociating any sum. The sums run in a local array (no aliasing with M or in), and the common
+ * size (a box-box contact group: 4 points x 3 rows) gets its own instance with a constant trip
+ * count, which the compiler unrolls and vectorises; both instances give the same bits. */
+static inline void KeaBlockApplySized(const int m, const MeReal *M, const MeReal *in, MeReal *out)
 {
+    MeReal acc[KEA_MAX_BLOCK_ROWS];
     int r, c;
     for (r = 0; r < m; ++r)
-        out[r] = ME_R(0.0);
+        acc[r] = ME_R(0.0);
     for (c = 0; c < m; ++c) {
         const MeReal v = in[c];
         const MeReal *column = M + c * m;
         for (r = 0; r < m; ++r)
-            out[r] += column[r] * v;
+            acc[r] += column[r] * v;
     }
+    for (r = 0; r < m; ++r)
+        out[r] = acc[r];
+}
+
+static void KeaBlockSymmetricApply(int m, const MeReal *M, const MeReal *in, MeReal *out)
+{
+    if (m == 12)
+        KeaBlockApplySized(12, M, in, out);
+    else
+        KeaBlockApplySized(m, M, in, out);
 }
 
 /* Split the rows into blocks (runs on the same body pair, at most cap rows) and form each block's
@@ -252,7 +265,7 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
         const int i = s + r;
         const MeReal wi = KeaRowW(problem, i, x, dv);
         MeReal lo, hi;
-        KeaRowBounds(problem, x, i, &lo, &hi);
+        KeaRowBoundsInline(problem, x, i, &lo, &hi);
         if (w->invDiag[i] != ME_R(0.0))
             worst = KeaMax(worst, w->diag[i] * KeaFabs(x[i] - KeaClamp(x[i] - wi * w->invDiag[i], lo, hi)));
         w->localW[r] = wi;
@@ -312,7 +325,7 @@ static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const Kea
         }
         if (w->invDiag[i] == ME_R(0.0))
             continue;
-        KeaRowBounds(problem, x, i, &lo, &hi);
+        KeaRowBoundsInline(problem, x, i, &lo, &hi);
         wi = KeaRowW(problem, i, x, dv);
         r = w->diag[i] * KeaFabs(x[i] - KeaClamp(x[i] - wi * w->invDiag[i], lo, hi));
         worst = KeaMax(worst, r);
@@ -360,13 +373,16 @@ static void KeaFindSegments(KeaIterativeWork *w, int nFree)
 /* z = P^-1 res (block-Jacobi preconditioner of the free rows). */
 static void KeaPrecondition(const KeaIterativeWork *w, int nFree, const MeReal *res, MeReal *z)
 {
-    int p, k;
-    for (p = 0; p < nFree; ++p)
-        z[p] = res[p] * w->invDiag[w->freeRows[p]];
-    for (k = 0; k < w->nSegments; ++k) {
-        const int b = w->segmentBlock[k], m = w->blockStart[b + 1] - w->blockStart[b];
-        KeaBlockSymmetricApply(m, w->blockInv + w->blockMatrix[b], res + w->segmentPos[k], z + w->segmentPos[k]);
+    int p = 0, k;
+    for (k = 0; k < w->nSegments; ++k) { /* Jacobi up to the segment, then the segment's block */
+        const int b = w->segmentBlock[k], m = w->blockStart[b + 1] - w->blockStart[b], start = w->segmentPos[k];
+        for (; p < start; ++p)
+            z[p] = res[p] * w->invDiag[w->freeRows[p]];
+        KeaBlockSymmetricApply(m, w->blockInv + w->blockMatrix[b], res + start, z + start);
+        p = start + m;
     }
+    for (; p < nFree; ++p)
+        z[p] = res[p] * w->invDiag[w->freeRows[p]];
 }
 
 static MeReal KeaDotN(const MeReal *a, const MeReal *b, int n)
@@ -387,7 +403,7 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
     int i, p, nFree = 0, steps = 0, tries;
 
     for (i = 0; i < n; ++i) {
-        KeaRowBounds(problem, x, i, &w->lo[i], &w->hi[i]);
+        KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
         if (w->invDiag[i] != ME_R(0.0) && w->lo[i] < x[i] && x[i] < w->hi[i])
             w->freeRows[nFree++] = i;
     }
@@ -483,7 +499,7 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
     KeaSetUpBlocks(problem, &w, KeaBlockCap(n, params->maxBlockRows));
     /* Warm start: clamp (bounds read from the unclamped x, as the direct path does), then dv. */
     for (i = 0; i < n; ++i)
-        KeaRowBounds(problem, x, i, &w.lo[i], &w.hi[i]);
+        KeaRowBoundsInline(problem, x, i, &w.lo[i], &w.hi[i]);
     for (i = 0; i < n; ++i)
         x[i] = KeaClamp(x[i], w.lo[i], w.hi[i]);
     KeaBodyVelocityFromImpulses(problem, x, dv);

@@ -43,12 +43,7 @@ void KeaLinkBounds(const KeaProblem *problem, int i, MeReal xLink, MeReal *lo, M
 
 void KeaRowBounds(const KeaProblem *problem, const MeReal *x, int i, MeReal *lo, MeReal *hi)
 {
-    if (problem->link && problem->link[i] >= 0) {
-        KeaLinkBounds(problem, i, x[problem->link[i]], lo, hi);
-    } else {
-        *lo = problem->lo[i];
-        *hi = problem->hi[i];
-    }
+    KeaRowBoundsInline(problem, x, i, lo, hi);
 }
 
 void KeaBodyVelocityFromImpulses(const KeaProblem *problem, const MeReal *x, KeaBodyVelocity *dv)
