@@ -117,6 +117,13 @@ static inline void KeaRowApply(const KeaJacobianRow *B, const int b[2], MeReal s
     }
 }
 
+/** out = M in for the m x nc column-major M (column c at M + c m; m <= KEA_MAX_BLOCK_ROWS; out
+ *  distinct from M and in): every out[r] is its own running sum over the columns in order, so the
+ *  loop over r vectorises without reassociating any sum. The iterative path's block kernels (a
+ *  block's inverse, its J_b from the transpose) use it; it lives in kea_rows.c, out of line, so
+ *  that the compiler vectorises the one copy the same way for every caller. */
+void KeaColumnsApply(int m, int nc, const MeReal *M, const MeReal *in, MeReal *out);
+
 /** B = M^-1 J_i^T of row i (zero halves for the world); returns the row's diagonal J_i B + eps_i. */
 MeReal KeaRowInvMassJT(const KeaProblem *problem, int i, KeaJacobianRow *B);
 

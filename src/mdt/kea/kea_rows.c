@@ -36,6 +36,33 @@ MeReal KeaRowInvMassJT(const KeaProblem *problem, int i, KeaJacobianRow *B)
     return diag;
 }
 
+/* The sums run in a local array (no aliasing with M or in for the compiler); the common size (a
+ * box-box contact group: 4 points x 3 rows, 12 velocity components) has its own instance with
+ * constant trip counts, which the compiler unrolls and vectorises; both give the same bits. */
+static inline void KeaColumnsSized(const int m, const int nc, const MeReal *M, const MeReal *in, MeReal *out)
+{
+    MeReal acc[KEA_MAX_BLOCK_ROWS];
+    int r, c;
+    for (r = 0; r < m; ++r)
+        acc[r] = ME_R(0.0);
+    for (c = 0; c < nc; ++c) {
+        const MeReal v = in[c];
+        const MeReal *column = M + c * m;
+        for (r = 0; r < m; ++r)
+            acc[r] += column[r] * v;
+    }
+    for (r = 0; r < m; ++r)
+        out[r] = acc[r];
+}
+
+void KeaColumnsApply(int m, int nc, const MeReal *M, const MeReal *in, MeReal *out)
+{
+    if (m == 12 && nc == 12)
+        KeaColumnsSized(12, 12, M, in, out);
+    else
+        KeaColumnsSized(m, nc, M, in, out);
+}
+
 void KeaLinkBounds(const KeaProblem *problem, int i, MeReal xLink, MeReal *lo, MeReal *hi)
 {
     KeaFrictionBounds(problem->lo[i], problem->hi[i], problem->mu[i], xLink, lo, hi);
