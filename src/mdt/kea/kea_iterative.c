@@ -99,6 +99,7 @@ typedef struct KeaIterativeWork {
     int *freeRows;         /**< rows strictly inside their bounds */
     MeReal *lo, *hi;       /**< bounds frozen for the SM step (by row) */
     MeReal *grad;          /**< w on the free rows (by position) */
+    MeReal *epsFree;       /**< eps of the free rows (by position) */
     MeReal *step;          /**< CG solution delta */
     MeReal *res, *z, *dir, *q; /**< CG vectors */
     /* Row kernels on padded data: J_i . dv and dv += B_i s as four-wide operations with no branch
@@ -148,6 +149,7 @@ static void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows,
     w->lo = KEA_ALLOC(arena, MeReal, n);
     w->hi = KEA_ALLOC(arena, MeReal, n);
     w->grad = KEA_ALLOC(arena, MeReal, n);
+    w->epsFree = KEA_ALLOC(arena, MeReal, n);
     w->step = KEA_ALLOC(arena, MeReal, n);
     w->res = KEA_ALLOC(arena, MeReal, n);
     w->z = KEA_ALLOC(arena, MeReal, n);
@@ -206,19 +208,38 @@ static void KeaBlockSymmetricApply(int m, const MeReal *M, const MeReal *in, MeR
     KeaColumnsApply(m, m, M, in, out);
 }
 
-/* out = J_b (v0, v1) for a block of m rows on the same two bodies, from its transpose JT (12 x m):
- * column by column, each out[r] its own running sum over the 12 components in order. v: 12 reals
- * of scratch for the components. */
-static void KeaBlockGather(int m, const MeReal *JT, const KeaVel4 *v0, const KeaVel4 *v1, MeReal *v, MeReal *out)
+/* out = J_b (v0, v1) for the block of m rows from s (all on the same two bodies): a block of more
+ * than 4 rows from its transpose JT (12 x m), column by column, each out[r] its own running sum
+ * over the 12 components in order; a smaller one row by row. */
+static void KeaBlockGatherSmall(const KeaIterativeWork *w, int s, int m, const KeaVel4 *v0, const KeaVel4 *v1,
+                                MeReal *out)
 {
+    /* written out: a loop over so few rows is "vectorised" across them, at a high price */
+    out[0] = KeaRowVel4(&w->J[s], v0, v1);
+    if (m > 1)
+        out[1] = KeaRowVel4(&w->J[s + 1], v0, v1);
+    if (m > 2)
+        out[2] = KeaRowVel4(&w->J[s + 2], v0, v1);
+    if (m > 3)
+        out[3] = KeaRowVel4(&w->J[s + 3], v0, v1);
+}
+
+static inline void KeaBlockGather(const KeaIterativeWork *w, int s, int m, const KeaVel4 *v0, const KeaVel4 *v1,
+                                  MeReal *out)
+{
+    MeReal *v = w->localV;
     int c;
+    if (m <= 4) { /* a ball joint, a one-point contact: row by row */
+        KeaBlockGatherSmall(w, s, m, v0, v1, out);
+        return;
+    }
     for (c = 0; c < 3; ++c) {
         v[c] = v0->lin[c];
         v[3 + c] = v0->ang[c];
         v[6 + c] = v1->lin[c];
         v[9 + c] = v1->ang[c];
     }
-    KeaColumnsApply(m, 12, JT, v, out);
+    KeaColumnsApply(m, 12, w->JT + 12 * s, v, out);
 }
 
 /* (v0, v1) += sum_r B_r d_r over a block's m rows (rows with d_r = 0 skipped), in row order: the
@@ -291,7 +312,7 @@ static void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int c
                     v1.lin[h] = Bc->lin1[h];
                     v1.ang[h] = Bc->ang1[h];
                 }
-                KeaBlockGather(m, w->JT + 12 * i, &v0, &v1, w->localV, column);
+                KeaBlockGather(w, i, m, &v0, &v1, column);
                 for (r = 0; r < m; ++r)
                     A[r * m + c] = column[r];
                 if (problem->epsilon)
@@ -381,7 +402,7 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
     KeaStats local;
     MeReal worst = ME_R(0.0);
     int r;
-    KeaBlockGather(m, w->JT + 12 * s, &w->dv[w->body[s][0]], &w->dv[w->body[s][1]], w->localV, w->localW);
+    KeaBlockGather(w, s, m, &w->dv[w->body[s][0]], &w->dv[w->body[s][1]], w->localW);
     for (r = 0; r < m; ++r) {
         const int i = s + r;
         const MeReal wi = w->localW[r] + w->eps[i] * x[i] - problem->rhs[i];
@@ -486,7 +507,7 @@ static void KeaGather(const KeaIterativeWork *w, int nFree, const KeaVel4 *dv, M
         }
         if (k < w->nSegments) {
             const int b = w->segmentBlock[k], s = w->blockStart[b], m = w->blockStart[b + 1] - s;
-            KeaBlockGather(m, w->JT + 12 * s, &dv[w->body[s][0]], &dv[w->body[s][1]], w->localV, out + p);
+            KeaBlockGather(w, s, m, &dv[w->body[s][0]], &dv[w->body[s][1]], out + p);
             p += m;
         }
     }
@@ -527,15 +548,6 @@ static void KeaPrecondition(const KeaIterativeWork *w, int nFree, const MeReal *
         z[p] = res[p] * w->invDiag[w->freeRows[p]];
 }
 
-static MeReal KeaDotN(const MeReal *a, const MeReal *b, int n)
-{
-    MeReal s = ME_R(0.0);
-    int p;
-    for (p = 0; p < n; ++p)
-        s += a[p] * b[p];
-    return s;
-}
-
 /* Subspace minimisation on the rows strictly inside their bounds; returns the CG steps taken. */
 static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x)
 {
@@ -556,6 +568,7 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
     KeaGather(w, nFree, w->dv, w->grad);
     for (p = 0; p < nFree; ++p) {
         i = w->freeRows[p];
+        w->epsFree[p] = w->eps[i];
         w->grad[p] = w->grad[p] + w->eps[i] * x[i] - problem->rhs[i];
         w->step[p] = ME_R(0.0);
         w->res[p] = -w->grad[p];
@@ -563,7 +576,7 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
     KeaPrecondition(w, nFree, w->res, w->z);
     for (p = 0; p < nFree; ++p)
         w->dir[p] = w->z[p];
-    rz = rz0 = KeaDotN(w->res, w->z, nFree);
+    rz = rz0 = KeaDotN4(w->res, w->z, nFree);
     if (!(rz0 > ME_R(0.0)))
         return 0;
     while (steps < maxSteps) {
@@ -571,8 +584,8 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
         KeaScatter(problem, w, nFree, w->dir);
         KeaGather(w, nFree, w->dvTmp, w->q);
         for (p = 0; p < nFree; ++p)
-            w->q[p] = w->q[p] + w->eps[w->freeRows[p]] * w->dir[p];
-        pq = KeaDotN(w->dir, w->q, nFree);
+            w->q[p] = w->q[p] + w->epsFree[p] * w->dir[p];
+        pq = KeaDotN4(w->dir, w->q, nFree);
         if (!(pq > ME_R(0.0)))
             break;
         a = rz / pq;
@@ -582,7 +595,7 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
         }
         KeaPrecondition(w, nFree, w->res, w->z);
         ++steps;
-        rzNew = KeaDotN(w->res, w->z, nFree);
+        rzNew = KeaDotN4(w->res, w->z, nFree);
         if (!(rzNew > ME_SMALL_EPSILON * ME_SMALL_EPSILON * rz0))
             break;
         beta = rzNew / rz;
@@ -603,8 +616,7 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
         KeaScatter(problem, w, nFree, w->z);
         KeaGather(w, nFree, w->dvTmp, w->q); /* q is free after CG */
         for (p = 0; p < nFree; ++p) {
-            i = w->freeRows[p];
-            const MeReal As = w->q[p] + w->eps[i] * w->z[p];
+            const MeReal As = w->q[p] + w->epsFree[p] * w->z[p];
             df += w->z[p] * (w->grad[p] + ME_R(0.5) * As);
         }
         if (df < ME_R(0.0)) {
