@@ -3,7 +3,8 @@
  * - scalar helpers (MeMath's wrappers under short names; clamp, finite-bound test),
  * - the workspace arena: a bump allocator over the caller's buffer that can also run in "counting"
  *   mode, so that KeaMemoryRequired and the solve lay the workspace out with the same code,
- * - row kernels: J_i . (dv_b0, dv_b1) and dv += B_i s, with B_i = M^-1 J_i^T stored as a row,
+ * - row kernels: J_i . (dv_b0, dv_b1), with B_i = M^-1 J_i^T stored as a row, and the column
+ *   kernel of the iterative path's blocks,
  * - the updatable Cholesky factor of the direct path,
  * - the entry points of the two paths. */
 #ifndef KEA_INTERNAL_H
@@ -95,26 +96,6 @@ static inline MeReal KeaRowVelocity(const KeaJacobianRow *J, const int b[2], con
     if (b[1] >= 0)
         s += KeaDot3(J->lin1, dv[b[1]].lin) + KeaDot3(J->ang1, dv[b[1]].ang);
     return s;
-}
-
-/** dv += B s over the row's bodies (B = M^-1 J^T of the row). */
-static inline void KeaRowApply(const KeaJacobianRow *B, const int b[2], MeReal s, KeaBodyVelocity *dv)
-{
-    int k;
-    if (b[0] >= 0) {
-        KeaBodyVelocity *v = &dv[b[0]];
-        for (k = 0; k < 3; ++k) {
-            v->lin[k] += B->lin0[k] * s;
-            v->ang[k] += B->ang0[k] * s;
-        }
-    }
-    if (b[1] >= 0) {
-        KeaBodyVelocity *v = &dv[b[1]];
-        for (k = 0; k < 3; ++k) {
-            v->lin[k] += B->lin1[k] * s;
-            v->ang[k] += B->ang1[k] * s;
-        }
-    }
 }
 
 /** out = M in for the m x nc column-major M (column c at M + c m; m <= KEA_MAX_BLOCK_ROWS; out

@@ -30,7 +30,15 @@
  * SM never makes the QP worse; the next sweep re-applies the friction links and the active set.
  * Each CG step costs about one sweep; KeaStats.subspaceSteps counts them.
  *
- * Warm start: x0 is clamped to its bounds and dv computed from it before the first sweep. */
+ * Warm start: x0 is clamped to its bounds and dv computed from it before the first sweep.
+ *
+ * Data layout (for the cost per row; the arithmetic is the above): dv lives in a padded per-body
+ * copy (KeaVel4, 3-vectors padded to 4, plus an all-zero body standing for the world), rows read it
+ * through a copy of J with zero pads and zero world halves, so a row kernel has no branch per body
+ * half. A block of m > 4 rows (a box-box contact group: 12) computes its w_b = J_b dv from a 12 x m
+ * transpose of its J (KeaColumnsApply, one vectorised column kernel for all block products: w_b,
+ * A_bb^-1 w_b, the preconditioner, forming A_bb) and applies its deltas to local copies of its two
+ * bodies; SM's matrix-free products go a free block (segment) at a time the same way. */
 #include <string.h>
 
 #include "kea_internal.h"
