@@ -3,7 +3,8 @@
  * - scalar helpers (MeMath's wrappers under short names; clamp, finite-bound test),
  * - the workspace arena: a bump allocator over the caller's buffer that can also run in "counting"
  *   mode, so that KeaMemoryRequired and the solve lay the workspace out with the same code,
- * - row kernels: J_i . (dv_b0, dv_b1) and dv += B_i s, with B_i = M^-1 J_i^T stored as a row,
+ * - row kernels: J_i . (dv_b0, dv_b1), with B_i = M^-1 J_i^T stored as a row, and the column
+ *   kernel of the iterative path's blocks,
  * - the updatable Cholesky factor of the direct path,
  * - the entry points of the two paths. */
 #ifndef KEA_INTERNAL_H
@@ -97,25 +98,12 @@ static inline MeReal KeaRowVelocity(const KeaJacobianRow *J, const int b[2], con
     return s;
 }
 
-/** dv += B s over the row's bodies (B = M^-1 J^T of the row). */
-static inline void KeaRowApply(const KeaJacobianRow *B, const int b[2], MeReal s, KeaBodyVelocity *dv)
-{
-    int k;
-    if (b[0] >= 0) {
-        KeaBodyVelocity *v = &dv[b[0]];
-        for (k = 0; k < 3; ++k) {
-            v->lin[k] += B->lin0[k] * s;
-            v->ang[k] += B->ang0[k] * s;
-        }
-    }
-    if (b[1] >= 0) {
-        KeaBodyVelocity *v = &dv[b[1]];
-        for (k = 0; k < 3; ++k) {
-            v->lin[k] += B->lin1[k] * s;
-            v->ang[k] += B->ang1[k] * s;
-        }
-    }
-}
+/** out = M in for the m x nc column-major M (column c at M + c m; m <= KEA_MAX_BLOCK_ROWS; out
+ *  distinct from M and in): every out[r] is its own running sum over the columns in order, so the
+ *  loop over r vectorises without reassociating any sum. The iterative path's block kernels (a
+ *  block's inverse, its J_b from the transpose) use it; it lives in kea_rows.c, out of line, so
+ *  that the compiler vectorises the one copy the same way for every caller. */
+void KeaColumnsApply(int m, int nc, const MeReal *M, const MeReal *in, MeReal *out);
 
 /** B = M^-1 J_i^T of row i (zero halves for the world); returns the row's diagonal J_i B + eps_i. */
 MeReal KeaRowInvMassJT(const KeaProblem *problem, int i, KeaJacobianRow *B);
@@ -131,6 +119,17 @@ static inline void KeaFrictionBounds(MeReal lo, MeReal hi, MeReal mu, MeReal xLi
 
 /** Effective bounds of row i when its linked normal row has the impulse xLink. */
 void KeaLinkBounds(const KeaProblem *problem, int i, MeReal xLink, MeReal *lo, MeReal *hi);
+
+/** KeaRowBounds, inline: the iterative path asks for a row's bounds several times per sweep. */
+static inline void KeaRowBoundsInline(const KeaProblem *problem, const MeReal *x, int i, MeReal *lo, MeReal *hi)
+{
+    if (problem->link && problem->link[i] >= 0) {
+        KeaFrictionBounds(problem->lo[i], problem->hi[i], problem->mu[i], x[problem->link[i]], lo, hi);
+    } else {
+        *lo = problem->lo[i];
+        *hi = problem->hi[i];
+    }
+}
 
 /* ---- dense matrix and updatable Cholesky factor (kea_dense.c) -------------------------------- */
 

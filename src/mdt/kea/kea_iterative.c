@@ -30,10 +30,58 @@
  * SM never makes the QP worse; the next sweep re-applies the friction links and the active set.
  * Each CG step costs about one sweep; KeaStats.subspaceSteps counts them.
  *
- * Warm start: x0 is clamped to its bounds and dv computed from it before the first sweep. */
+ * Warm start: x0 is clamped to its bounds and dv computed from it before the first sweep.
+ *
+ * Data layout (for the cost per row; the arithmetic is the above): dv lives in a padded per-body
+ * copy (KeaVel4, 3-vectors padded to 4, plus an all-zero body standing for the world), rows read it
+ * through a copy of J with zero pads and zero world halves, so a row kernel has no branch per body
+ * half. A block of m > 4 rows (a box-box contact group: 12) computes its w_b = J_b dv from a 12 x m
+ * transpose of its J (KeaColumnsApply, one vectorised column kernel for all block products: w_b,
+ * A_bb^-1 w_b, the preconditioner, forming A_bb) and applies its deltas to local copies of its two
+ * bodies; SM's matrix-free products go a free block (segment) at a time the same way. */
 #include <string.h>
 
 #include "kea_internal.h"
+
+/** A body's velocity change with each 3-vector padded to 4 (pad 0). */
+typedef struct KeaVel4 {
+    MeReal lin[4];
+    MeReal ang[4];
+} KeaVel4;
+
+/** J . (v0, v1) on padded rows: term k sums component k of the four parts, then the three terms
+ *  are added in a fixed order (the same at every optimisation level). No branch per body half. */
+static inline MeReal KeaRowVel4(const KeaJacobianRow *J, const KeaVel4 *v0, const KeaVel4 *v1)
+{
+    MeReal s[3];
+    int k;
+    for (k = 0; k < 3; ++k)
+        s[k] = (J->lin0[k] * v0->lin[k] + J->ang0[k] * v0->ang[k]) + (J->lin1[k] * v1->lin[k] + J->ang1[k] * v1->ang[k]);
+    return (s[0] + s[1]) + s[2];
+}
+
+/** v += B s for one body half (padded; the pads stay 0). Everything is loaded before anything is
+ *  stored, so that the compiler may do it four wide whatever B and v point to. */
+static inline void KeaHalfApply4(const MeReal *lin, const MeReal *ang, MeReal s, KeaVel4 *v)
+{
+    MeReal l[4], a[4];
+    int k;
+    for (k = 0; k < 4; ++k) {
+        l[k] = v->lin[k] + lin[k] * s;
+        a[k] = v->ang[k] + ang[k] * s;
+    }
+    for (k = 0; k < 4; ++k) {
+        v->lin[k] = l[k];
+        v->ang[k] = a[k];
+    }
+}
+
+/** (v0, v1) += B s (v0 first, then v1, so that v0 == v1 is handled as two updates). */
+static inline void KeaRowApply4(const KeaJacobianRow *B, MeReal s, KeaVel4 *v0, KeaVel4 *v1)
+{
+    KeaHalfApply4(B->lin0, B->ang0, s, v0);
+    KeaHalfApply4(B->lin1, B->ang1, s, v1);
+}
 
 typedef struct KeaIterativeWork {
     KeaJacobianRow *B;     /**< M^-1 J^T per row */
@@ -59,9 +107,22 @@ typedef struct KeaIterativeWork {
     int *freeRows;         /**< rows strictly inside their bounds */
     MeReal *lo, *hi;       /**< bounds frozen for the SM step (by row) */
     MeReal *grad;          /**< w on the free rows (by position) */
+    MeReal *epsFree;       /**< eps of the free rows (by position) */
     MeReal *step;          /**< CG solution delta */
     MeReal *res, *z, *dir, *q; /**< CG vectors */
-    KeaBodyVelocity *dvTmp; /**< per-body scratch for A_FF p and for the trial step */
+    /* Row kernels on padded data: J_i . dv and dv += B_i s as four-wide operations with no branch
+     * per body half. Bodies are KeaVel4 (4-padded 3-vectors, pads 0) with one extra all-zero body
+     * at index nb that stands for the world; the rows' copies of J have zero pads and zero halves
+     * on the world, so that the extra body contributes exact zeros. */
+    KeaJacobianRow *J;     /**< J_i with pads and world halves zeroed */
+    MeReal *JT;            /**< per block of m rows from s, its 12 x m transpose J_b^T (pads
+                                dropped) at JT + 12 s: J_b v is then a sum of 12 columns */
+    MeReal *localD;        /**< a block's impulse changes */
+    MeReal *localV;        /**< the 12 velocity components of a block's two bodies */
+    int (*body)[2];        /**< row halves' bodies, KEA_WORLD mapped to nb */
+    MeReal *eps;           /**< eps_i (0 when the problem has none) */
+    KeaVel4 *dv;           /**< the solve's dv (nb + 1), copied out at the end */
+    KeaVel4 *dvTmp;        /**< per-body scratch for A_FF p and for the trial step (nb + 1) */
 } KeaIterativeWork;
 
 static int KeaBlockCap(int n, int maxBlockRows)
@@ -96,12 +157,20 @@ static void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows,
     w->lo = KEA_ALLOC(arena, MeReal, n);
     w->hi = KEA_ALLOC(arena, MeReal, n);
     w->grad = KEA_ALLOC(arena, MeReal, n);
+    w->epsFree = KEA_ALLOC(arena, MeReal, n);
     w->step = KEA_ALLOC(arena, MeReal, n);
     w->res = KEA_ALLOC(arena, MeReal, n);
     w->z = KEA_ALLOC(arena, MeReal, n);
     w->dir = KEA_ALLOC(arena, MeReal, n);
     w->q = KEA_ALLOC(arena, MeReal, n);
-    w->dvTmp = KEA_ALLOC(arena, KeaBodyVelocity, nb);
+    w->J = KEA_ALLOC(arena, KeaJacobianRow, n);
+    w->JT = KEA_ALLOC(arena, MeReal, (size_t)n * 12);
+    w->localD = KEA_ALLOC(arena, MeReal, cap);
+    w->localV = KEA_ALLOC(arena, MeReal, 12);
+    w->body = (int(*)[2])KeaArenaAlloc(arena, sizeof(int[2]) * (size_t)n);
+    w->eps = KEA_ALLOC(arena, MeReal, n);
+    w->dv = KEA_ALLOC(arena, KeaVel4, nb + 1);
+    w->dvTmp = KEA_ALLOC(arena, KeaVel4, nb + 1);
 }
 
 size_t KeaIterativeWorkspaceBytes(int nRows, int nBodies)
@@ -141,19 +210,78 @@ static void KeaBlockInvert(int m, const MeReal *L, MeReal *inv)
     }
 }
 
-/* out = M in for a symmetric m x m block M (out and in distinct). Summed column by column (column c
- * of M is its row c): every out[r] is its own running sum, so the inner loop vectorises without
- * reassociating any sum. */
+/* out = M in for a symmetric m x m block M (out and in distinct): KeaColumnsApply (kea_rows.c). */
 static void KeaBlockSymmetricApply(int m, const MeReal *M, const MeReal *in, MeReal *out)
 {
-    int r, c;
-    for (r = 0; r < m; ++r)
-        out[r] = ME_R(0.0);
-    for (c = 0; c < m; ++c) {
-        const MeReal v = in[c];
-        const MeReal *column = M + c * m;
+    KeaColumnsApply(m, m, M, in, out);
+}
+
+/* out = J_b (v0, v1) for the block of m rows from s (all on the same two bodies): a block of more
+ * than 4 rows from its transpose JT (12 x m), column by column, each out[r] its own running sum
+ * over the 12 components in order; a smaller one row by row. */
+static void KeaBlockGatherSmall(const KeaIterativeWork *w, int s, int m, const KeaVel4 *v0, const KeaVel4 *v1,
+                                MeReal *out)
+{
+    /* written out: a loop over so few rows is "vectorised" across them, at a high price */
+    out[0] = KeaRowVel4(&w->J[s], v0, v1);
+    if (m > 1)
+        out[1] = KeaRowVel4(&w->J[s + 1], v0, v1);
+    if (m > 2)
+        out[2] = KeaRowVel4(&w->J[s + 2], v0, v1);
+    if (m > 3)
+        out[3] = KeaRowVel4(&w->J[s + 3], v0, v1);
+}
+
+static inline void KeaBlockGather(const KeaIterativeWork *w, int s, int m, const KeaVel4 *v0, const KeaVel4 *v1,
+                                  MeReal *out)
+{
+    MeReal *v = w->localV;
+    int c;
+    if (m <= 4) { /* a ball joint, a one-point contact: row by row */
+        KeaBlockGatherSmall(w, s, m, v0, v1, out);
+        return;
+    }
+    for (c = 0; c < 3; ++c) {
+        v[c] = v0->lin[c];
+        v[3 + c] = v0->ang[c];
+        v[6 + c] = v1->lin[c];
+        v[9 + c] = v1->ang[c];
+    }
+    KeaColumnsApply(m, 12, w->JT + 12 * s, v, out);
+}
+
+/* (v0, v1) += sum_r B_r d_r over a block's m rows (rows with d_r = 0 skipped), in row order: the
+ * same operations as row-by-row updates, on local copies of the two bodies (v0 != v1). */
+static inline void KeaBlockScatterSized(const int m, const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
+{
+    KeaVel4 a = *v0, b = *v1;
+    int r, k;
+    for (r = 0; r < m; ++r) {
+        const MeReal dr = d[r];
+        if (dr == ME_R(0.0))
+            continue;
+        for (k = 0; k < 4; ++k) {
+            a.lin[k] += B[r].lin0[k] * dr;
+            a.ang[k] += B[r].ang0[k] * dr;
+            b.lin[k] += B[r].lin1[k] * dr;
+            b.ang[k] += B[r].ang1[k] * dr;
+        }
+    }
+    *v0 = a;
+    *v1 = b;
+}
+
+static void KeaBlockScatter(int m, const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
+{
+    int r;
+    if (v0 == v1) { /* a block whose halves are the same body: one update after the other */
         for (r = 0; r < m; ++r)
-            out[r] += column[r] * v;
+            if (d[r] != ME_R(0.0))
+                KeaRowApply4(&B[r], d[r], v0, v1);
+    } else if (m == 12) {
+        KeaBlockScatterSized(12, B, d, v0, v1);
+    } else {
+        KeaBlockScatterSized(m, B, d, v0, v1);
     }
 }
 
@@ -171,9 +299,34 @@ static void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int c
             ++m;
         w->blockStart[w->nBlocks] = i;
         w->blockMatrix[w->nBlocks] = offset;
-        for (r = 0; r < m; ++r)
+        for (r = 0; r < m; ++r) {
+            MeReal *JT = w->JT + 12 * i + r;
             w->rowBlock[i + r] = w->nBlocks;
-        if (m > 1) {
+            for (c = 0; c < 3; ++c) {
+                JT[c * m] = w->J[i + r].lin0[c];
+                JT[(3 + c) * m] = w->J[i + r].ang0[c];
+                JT[(6 + c) * m] = w->J[i + r].lin1[c];
+                JT[(9 + c) * m] = w->J[i + r].ang1[c];
+            }
+        }
+        if (m > 1 && b[0] != b[1]) { /* column c of A_bb = J_b B_c, from the transpose */
+            MeReal *A = w->blockA + offset, column[KEA_MAX_BLOCK_ROWS];
+            for (c = 0; c < m; ++c) {
+                const KeaJacobianRow *Bc = &w->B[i + c];
+                KeaVel4 v0, v1;
+                for (h = 0; h < 4; ++h) {
+                    v0.lin[h] = Bc->lin0[h];
+                    v0.ang[h] = Bc->ang0[h];
+                    v1.lin[h] = Bc->lin1[h];
+                    v1.ang[h] = Bc->ang1[h];
+                }
+                KeaBlockGather(w, i, m, &v0, &v1, column);
+                for (r = 0; r < m; ++r)
+                    A[r * m + c] = column[r];
+                if (problem->epsilon)
+                    A[c * m + c] += problem->epsilon[i + c];
+            }
+        } else if (m > 1) { /* both halves on one body: the cross terms count too */
             MeReal *A = w->blockA + offset;
             for (r = 0; r < m; ++r)
                 for (c = 0; c < m; ++c) {
@@ -190,7 +343,9 @@ static void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int c
                         v += problem->epsilon[i + r];
                     A[r * m + c] = v;
                 }
-            w->blockFactored[w->nBlocks] = (unsigned char)KeaCholeskyDense(m, A, w->blockL + offset);
+        }
+        if (m > 1) {
+            w->blockFactored[w->nBlocks] = (unsigned char)KeaCholeskyDense(m, w->blockA + offset, w->blockL + offset);
             if (w->blockFactored[w->nBlocks])
                 KeaBlockInvert(m, w->blockL + offset, w->blockInv + offset);
             offset += m * m;
@@ -201,16 +356,29 @@ static void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int c
     w->blockStart[w->nBlocks] = n;
 }
 
-static MeReal KeaRowW(const KeaProblem *problem, int i, const MeReal *x, const KeaBodyVelocity *dv)
+static MeReal KeaRowW(const KeaProblem *problem, const KeaIterativeWork *w, int i, const MeReal *x,
+                      const KeaVel4 *v0, const KeaVel4 *v1)
 {
-    const MeReal eps = problem->epsilon ? problem->epsilon[i] : ME_R(0.0);
-    return KeaRowVelocity(&problem->J[i], problem->rowBodies[i], dv) + eps * x[i] - problem->rhs[i];
+    return KeaRowVel4(&w->J[i], v0, v1) + w->eps[i] * x[i] - problem->rhs[i];
+}
+
+/* Apply the deltas localX - x of the block's m rows from s (all on the same two bodies) to dv and
+ * x, in row order. */
+static void KeaBlockApplyDeltas(KeaIterativeWork *w, int s, int m, MeReal *x)
+{
+    int r;
+    for (r = 0; r < m; ++r)
+        w->localD[r] = w->localX[r] - x[s + r];
+    KeaBlockScatter(m, &w->B[s], w->localD, &w->dv[w->body[s][0]], &w->dv[w->body[s][1]]);
+    for (r = 0; r < m; ++r)
+        if (w->localD[r] != ME_R(0.0))
+            x[s + r] = w->localX[r];
 }
 
 /* The common case of a block at rest: all its rows free. Try x_b - A_bb^-1 w_b with the block's
  * precomputed factor; if it lies within every row's bounds (friction links inside the block read
  * the new normal values), w_b = 0 there and it is the block's exact solution. Returns 1 if taken. */
-static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int block, MeReal *x, KeaBodyVelocity *dv)
+static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int block, MeReal *x)
 {
     const int s = w->blockStart[block], m = w->blockStart[block + 1] - s;
     int r;
@@ -226,13 +394,7 @@ static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int b
         if (!(w->localX[r] >= lo && w->localX[r] <= hi))
             return 0;
     }
-    for (r = 0; r < m; ++r) {
-        const MeReal delta = w->localX[r] - x[s + r];
-        if (delta != ME_R(0.0)) {
-            KeaRowApply(&w->B[s + r], problem->rowBodies[s + r], delta, dv);
-            x[s + r] = w->localX[r];
-        }
-    }
+    KeaBlockApplyDeltas(w, s, m, x);
     return 1;
 }
 
@@ -240,7 +402,7 @@ static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int b
  * A_bb and r_loc = A_bb x_b - w_b, so that its w is the true w of these rows. A friction link to a
  * row outside the block becomes a fixed bound. Returns the block's largest row residual before. */
 static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, int maxPasses,
-                           MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
+                           MeReal *x, KeaStats *stats)
 {
     const int s = w->blockStart[block], m = w->blockStart[block + 1] - s;
     const MeReal *A = w->blockA + w->blockMatrix[block];
@@ -248,11 +410,12 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
     KeaStats local;
     MeReal worst = ME_R(0.0);
     int r;
+    KeaBlockGather(w, s, m, &w->dv[w->body[s][0]], &w->dv[w->body[s][1]], w->localW);
     for (r = 0; r < m; ++r) {
         const int i = s + r;
-        const MeReal wi = KeaRowW(problem, i, x, dv);
+        const MeReal wi = w->localW[r] + w->eps[i] * x[i] - problem->rhs[i];
         MeReal lo, hi;
-        KeaRowBounds(problem, x, i, &lo, &hi);
+        KeaRowBoundsInline(problem, x, i, &lo, &hi);
         if (w->invDiag[i] != ME_R(0.0))
             worst = KeaMax(worst, w->diag[i] * KeaFabs(x[i] - KeaClamp(x[i] - wi * w->invDiag[i], lo, hi)));
         w->localW[r] = wi;
@@ -266,7 +429,7 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
             w->localHi[r] = hi;
         }
     }
-    if (KeaBlockAllFree(problem, w, block, x, dv))
+    if (KeaBlockAllFree(problem, w, block, x))
         return worst;
     KeaBlockSymmetricApply(m, A, x + s, w->localR); /* r_loc = A_bb x_b - w_b */
     for (r = 0; r < m; ++r) {
@@ -286,19 +449,13 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
     (void)KeaDenseLcpSolve(&lcp, 0, maxPasses, w->dense, w->localX, &local);
     stats->pivots += local.pivots;
     stats->regularised += local.regularised;
-    for (r = 0; r < m; ++r) {
-        const MeReal delta = w->localX[r] - x[s + r];
-        if (delta != ME_R(0.0)) {
-            KeaRowApply(&w->B[s + r], problem->rowBodies[s + r], delta, dv);
-            x[s + r] = w->localX[r];
-        }
-    }
+    KeaBlockApplyDeltas(w, s, m, x);
     return worst;
 }
 
 /* One PGS sweep over the blocks, forwards or backwards; returns the largest residual met. */
 static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
-                       MeReal omega, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats, int backward)
+                       MeReal omega, MeReal *x, KeaStats *stats, int backward)
 {
     MeReal worst = ME_R(0.0);
     int k;
@@ -307,34 +464,61 @@ static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const Kea
         const int i = w->blockStart[block];
         MeReal lo, hi, wi, xNew, r;
         if (w->blockStart[block + 1] - i > 1) {
-            worst = KeaMax(worst, KeaBlockStep(problem, w, block, params->maxFrictionPasses, x, dv, stats));
+            worst = KeaMax(worst, KeaBlockStep(problem, w, block, params->maxFrictionPasses, x, stats));
             continue;
         }
         if (w->invDiag[i] == ME_R(0.0))
             continue;
-        KeaRowBounds(problem, x, i, &lo, &hi);
-        wi = KeaRowW(problem, i, x, dv);
+        KeaRowBoundsInline(problem, x, i, &lo, &hi);
+        wi = KeaRowW(problem, w, i, x, &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
         r = w->diag[i] * KeaFabs(x[i] - KeaClamp(x[i] - wi * w->invDiag[i], lo, hi));
         worst = KeaMax(worst, r);
         xNew = KeaClamp(x[i] - omega * wi * w->invDiag[i], lo, hi);
         if (xNew != x[i]) {
-            KeaRowApply(&w->B[i], problem->rowBodies[i], xNew - x[i], dv);
+            KeaRowApply4(&w->B[i], xNew - x[i], &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
             x[i] = xNew;
         }
     }
     return worst;
 }
 
-/* dvTmp = M^-1 J_F^T v (v by position in the free list). */
+/* dvTmp = M^-1 J_F^T v (v by position in the free list); the segments (KeaFindSegments) a block at
+ * a time, in free-list order. */
 static void KeaScatter(const KeaProblem *problem, const KeaIterativeWork *w, int nFree, const MeReal *v)
 {
-    int b, k, p;
-    for (b = 0; b < problem->nBodies; ++b)
-        for (k = 0; k < 3; ++k)
-            w->dvTmp[b].lin[k] = w->dvTmp[b].ang[k] = ME_R(0.0);
-    for (p = 0; p < nFree; ++p)
-        if (v[p] != ME_R(0.0))
-            KeaRowApply(&w->B[w->freeRows[p]], problem->rowBodies[w->freeRows[p]], v[p], w->dvTmp);
+    int p = 0, k;
+    memset(w->dvTmp, 0, sizeof(KeaVel4) * (size_t)(problem->nBodies + 1));
+    for (k = 0; k <= w->nSegments; ++k) {
+        const int end = k < w->nSegments ? w->segmentPos[k] : nFree;
+        for (; p < end; ++p)
+            if (v[p] != ME_R(0.0)) {
+                const int i = w->freeRows[p];
+                KeaRowApply4(&w->B[i], v[p], &w->dvTmp[w->body[i][0]], &w->dvTmp[w->body[i][1]]);
+            }
+        if (k < w->nSegments) {
+            const int b = w->segmentBlock[k], s = w->blockStart[b], m = w->blockStart[b + 1] - s;
+            KeaBlockScatter(m, &w->B[s], v + p, &w->dvTmp[w->body[s][0]], &w->dvTmp[w->body[s][1]]);
+            p += m;
+        }
+    }
+}
+
+/* out[p] = J_i . dv of the free rows (segments a block at a time). */
+static void KeaGather(const KeaIterativeWork *w, int nFree, const KeaVel4 *dv, MeReal *out)
+{
+    int p = 0, k;
+    for (k = 0; k <= w->nSegments; ++k) {
+        const int end = k < w->nSegments ? w->segmentPos[k] : nFree;
+        for (; p < end; ++p) {
+            const int i = w->freeRows[p];
+            out[p] = KeaRowVel4(&w->J[i], &dv[w->body[i][0]], &dv[w->body[i][1]]);
+        }
+        if (k < w->nSegments) {
+            const int b = w->segmentBlock[k], s = w->blockStart[b], m = w->blockStart[b + 1] - s;
+            KeaBlockGather(w, s, m, &dv[w->body[s][0]], &dv[w->body[s][1]], out + p);
+            p += m;
+        }
+    }
 }
 
 /* The blocks whose rows are all free (and whose factor exists) become segments of the free list,
@@ -360,34 +544,27 @@ static void KeaFindSegments(KeaIterativeWork *w, int nFree)
 /* z = P^-1 res (block-Jacobi preconditioner of the free rows). */
 static void KeaPrecondition(const KeaIterativeWork *w, int nFree, const MeReal *res, MeReal *z)
 {
-    int p, k;
-    for (p = 0; p < nFree; ++p)
-        z[p] = res[p] * w->invDiag[w->freeRows[p]];
-    for (k = 0; k < w->nSegments; ++k) {
-        const int b = w->segmentBlock[k], m = w->blockStart[b + 1] - w->blockStart[b];
-        KeaBlockSymmetricApply(m, w->blockInv + w->blockMatrix[b], res + w->segmentPos[k], z + w->segmentPos[k]);
+    int p = 0, k;
+    for (k = 0; k < w->nSegments; ++k) { /* Jacobi up to the segment, then the segment's block */
+        const int b = w->segmentBlock[k], m = w->blockStart[b + 1] - w->blockStart[b], start = w->segmentPos[k];
+        for (; p < start; ++p)
+            z[p] = res[p] * w->invDiag[w->freeRows[p]];
+        KeaBlockSymmetricApply(m, w->blockInv + w->blockMatrix[b], res + start, z + start);
+        p = start + m;
     }
-}
-
-static MeReal KeaDotN(const MeReal *a, const MeReal *b, int n)
-{
-    MeReal s = ME_R(0.0);
-    int p;
-    for (p = 0; p < n; ++p)
-        s += a[p] * b[p];
-    return s;
+    for (; p < nFree; ++p)
+        z[p] = res[p] * w->invDiag[w->freeRows[p]];
 }
 
 /* Subspace minimisation on the rows strictly inside their bounds; returns the CG steps taken. */
-static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x,
-                               KeaBodyVelocity *dv)
+static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x)
 {
     const int n = problem->nRows;
     MeReal rz, rz0, scale;
     int i, p, nFree = 0, steps = 0, tries;
 
     for (i = 0; i < n; ++i) {
-        KeaRowBounds(problem, x, i, &w->lo[i], &w->hi[i]);
+        KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
         if (w->invDiag[i] != ME_R(0.0) && w->lo[i] < x[i] && x[i] < w->hi[i])
             w->freeRows[nFree++] = i;
     }
@@ -396,27 +573,27 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
 
     /* Preconditioned CG on A_FF step = -w_F from step = 0. */
     KeaFindSegments(w, nFree);
+    KeaGather(w, nFree, w->dv, w->grad);
     for (p = 0; p < nFree; ++p) {
         i = w->freeRows[p];
-        w->grad[p] = KeaRowW(problem, i, x, dv);
+        w->epsFree[p] = w->eps[i];
+        w->grad[p] = w->grad[p] + w->eps[i] * x[i] - problem->rhs[i];
         w->step[p] = ME_R(0.0);
         w->res[p] = -w->grad[p];
     }
     KeaPrecondition(w, nFree, w->res, w->z);
     for (p = 0; p < nFree; ++p)
         w->dir[p] = w->z[p];
-    rz = rz0 = KeaDotN(w->res, w->z, nFree);
+    rz = rz0 = KeaDotN4(w->res, w->z, nFree);
     if (!(rz0 > ME_R(0.0)))
         return 0;
     while (steps < maxSteps) {
         MeReal pq, a, rzNew, beta;
         KeaScatter(problem, w, nFree, w->dir);
-        for (p = 0; p < nFree; ++p) {
-            i = w->freeRows[p];
-            w->q[p] = KeaRowVelocity(&problem->J[i], problem->rowBodies[i], w->dvTmp) +
-                      (problem->epsilon ? problem->epsilon[i] : ME_R(0.0)) * w->dir[p];
-        }
-        pq = KeaDotN(w->dir, w->q, nFree);
+        KeaGather(w, nFree, w->dvTmp, w->q);
+        for (p = 0; p < nFree; ++p)
+            w->q[p] = w->q[p] + w->epsFree[p] * w->dir[p];
+        pq = KeaDotN4(w->dir, w->q, nFree);
         if (!(pq > ME_R(0.0)))
             break;
         a = rz / pq;
@@ -426,7 +603,7 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
         }
         KeaPrecondition(w, nFree, w->res, w->z);
         ++steps;
-        rzNew = KeaDotN(w->res, w->z, nFree);
+        rzNew = KeaDotN4(w->res, w->z, nFree);
         if (!(rzNew > ME_SMALL_EPSILON * ME_SMALL_EPSILON * rz0))
             break;
         beta = rzNew / rz;
@@ -445,10 +622,9 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
             w->z[p] = KeaClamp(x[i] + scale * w->step[p], w->lo[i], w->hi[i]) - x[i];
         }
         KeaScatter(problem, w, nFree, w->z);
+        KeaGather(w, nFree, w->dvTmp, w->q); /* q is free after CG */
         for (p = 0; p < nFree; ++p) {
-            i = w->freeRows[p];
-            const MeReal eps = problem->epsilon ? problem->epsilon[i] : ME_R(0.0);
-            const MeReal As = KeaRowVelocity(&problem->J[i], problem->rowBodies[i], w->dvTmp) + eps * w->z[p];
+            const MeReal As = w->q[p] + w->epsFree[p] * w->z[p];
             df += w->z[p] * (w->grad[p] + ME_R(0.5) * As);
         }
         if (df < ME_R(0.0)) {
@@ -456,9 +632,9 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
             for (p = 0; p < nFree; ++p)
                 x[w->freeRows[p]] += w->z[p];
             for (b = 0; b < problem->nBodies; ++b)
-                for (k = 0; k < 3; ++k) {
-                    dv[b].lin[k] += w->dvTmp[b].lin[k];
-                    dv[b].ang[k] += w->dvTmp[b].ang[k];
+                for (k = 0; k < 4; ++k) {
+                    w->dv[b].lin[k] += w->dvTmp[b].lin[k];
+                    w->dv[b].ang[k] += w->dvTmp[b].ang[k];
                 }
             break;
         }
@@ -473,30 +649,58 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
     const MeReal omega = params->sor > ME_R(0.0) && params->sor < ME_R(2.0) ? params->sor : ME_R(1.0);
     KeaIterativeWork w;
     KeaStatus status = KeaStatusMaxIterations;
-    int i, it;
+    const int nb = problem->nBodies;
+    int i, it, b, k;
 
-    KeaIterativeLayout(arena, n, problem->nBodies, KEA_MAX_BLOCK_ROWS, &w);
+    KeaIterativeLayout(arena, n, nb, KEA_MAX_BLOCK_ROWS, &w);
     for (i = 0; i < n; ++i) {
+        const int *rb = problem->rowBodies[i];
+        const KeaJacobianRow *J = &problem->J[i];
         w.diag[i] = KeaRowInvMassJT(problem, i, &w.B[i]);
         w.invDiag[i] = w.diag[i] > ME_R(0.0) ? ME_R(1.0) / w.diag[i] : ME_R(0.0);
+        w.eps[i] = problem->epsilon ? problem->epsilon[i] : ME_R(0.0);
+        memset(&w.J[i], 0, sizeof w.J[i]);
+        for (k = 0; k < 3; ++k) {
+            if (rb[0] >= 0) {
+                w.J[i].lin0[k] = J->lin0[k];
+                w.J[i].ang0[k] = J->ang0[k];
+            }
+            if (rb[1] >= 0) {
+                w.J[i].lin1[k] = J->lin1[k];
+                w.J[i].ang1[k] = J->ang1[k];
+            }
+        }
+        w.body[i][0] = rb[0] >= 0 ? rb[0] : nb;
+        w.body[i][1] = rb[1] >= 0 ? rb[1] : nb;
     }
     KeaSetUpBlocks(problem, &w, KeaBlockCap(n, params->maxBlockRows));
     /* Warm start: clamp (bounds read from the unclamped x, as the direct path does), then dv. */
     for (i = 0; i < n; ++i)
-        KeaRowBounds(problem, x, i, &w.lo[i], &w.hi[i]);
+        KeaRowBoundsInline(problem, x, i, &w.lo[i], &w.hi[i]);
     for (i = 0; i < n; ++i)
         x[i] = KeaClamp(x[i], w.lo[i], w.hi[i]);
     KeaBodyVelocityFromImpulses(problem, x, dv);
+    memset(w.dv, 0, sizeof(KeaVel4) * (size_t)(nb + 1));
+    for (b = 0; b < nb; ++b)
+        for (k = 0; k < 3; ++k) {
+            w.dv[b].lin[k] = dv[b].lin[k];
+            w.dv[b].ang[k] = dv[b].ang[k];
+        }
 
     for (it = 1; it <= params->maxIterations; ++it) {
-        const MeReal sweepResidual = KeaSweep(problem, &w, params, omega, x, dv, stats, (it & 1) == 0);
+        const MeReal sweepResidual = KeaSweep(problem, &w, params, omega, x, stats, (it & 1) == 0);
         stats->iterations = it;
         if (sweepResidual <= params->tolerance) {
             status = KeaStatusOk;
             break;
         }
         if (params->subspaceIterations > 0 && it < params->maxIterations)
-            stats->subspaceSteps += KeaSubspaceMinimise(problem, &w, params->subspaceIterations, x, dv);
+            stats->subspaceSteps += KeaSubspaceMinimise(problem, &w, params->subspaceIterations, x);
     }
+    for (b = 0; b < nb; ++b)
+        for (k = 0; k < 3; ++k) {
+            dv[b].lin[k] = w.dv[b].lin[k];
+            dv[b].ang[k] = w.dv[b].ang[k];
+        }
     return status;
 }

@@ -36,6 +36,47 @@ MeReal KeaRowInvMassJT(const KeaProblem *problem, int i, KeaJacobianRow *B)
     return diag;
 }
 
+/* The sums run in a local array (no aliasing with M or in for the compiler); the common row counts
+ * (contact groups of 1-4 points x 3 rows, joints) have their own instances with a constant trip
+ * count, which the compiler unrolls and vectorises (a box-box group: 12 x 12 both ways); every
+ * instance gives the same bits. */
+static inline void KeaColumnsSized(const int m, const int nc, const MeReal *M, const MeReal *in, MeReal *out)
+{
+    MeReal acc[KEA_MAX_BLOCK_ROWS];
+    int r, c;
+    for (r = 0; r < m; ++r)
+        acc[r] = ME_R(0.0);
+    for (c = 0; c < nc; ++c) {
+        const MeReal v = in[c];
+        const MeReal *column = M + c * m;
+        for (r = 0; r < m; ++r)
+            acc[r] += column[r] * v;
+    }
+    for (r = 0; r < m; ++r)
+        out[r] = acc[r];
+}
+
+void KeaColumnsApply(int m, int nc, const MeReal *M, const MeReal *in, MeReal *out)
+{
+    switch (m) { /* the sizes of contact groups and joints, each with a constant row count */
+    case 1: KeaColumnsSized(1, nc, M, in, out); break;
+    case 2: KeaColumnsSized(2, nc, M, in, out); break;
+    case 3: KeaColumnsSized(3, nc, M, in, out); break;
+    case 4: KeaColumnsSized(4, nc, M, in, out); break;
+    case 5: KeaColumnsSized(5, nc, M, in, out); break;
+    case 6: KeaColumnsSized(6, nc, M, in, out); break;
+    case 8: KeaColumnsSized(8, nc, M, in, out); break;
+    case 9: KeaColumnsSized(9, nc, M, in, out); break;
+    case 12:
+        if (nc == 12)
+            KeaColumnsSized(12, 12, M, in, out);
+        else
+            KeaColumnsSized(12, nc, M, in, out);
+        break;
+    default: KeaColumnsSized(m, nc, M, in, out); break;
+    }
+}
+
 void KeaLinkBounds(const KeaProblem *problem, int i, MeReal xLink, MeReal *lo, MeReal *hi)
 {
     KeaFrictionBounds(problem->lo[i], problem->hi[i], problem->mu[i], xLink, lo, hi);
@@ -43,12 +84,7 @@ void KeaLinkBounds(const KeaProblem *problem, int i, MeReal xLink, MeReal *lo, M
 
 void KeaRowBounds(const KeaProblem *problem, const MeReal *x, int i, MeReal *lo, MeReal *hi)
 {
-    if (problem->link && problem->link[i] >= 0) {
-        KeaLinkBounds(problem, i, x[problem->link[i]], lo, hi);
-    } else {
-        *lo = problem->lo[i];
-        *hi = problem->hi[i];
-    }
+    KeaRowBoundsInline(problem, x, i, lo, hi);
 }
 
 void KeaBodyVelocityFromImpulses(const KeaProblem *problem, const MeReal *x, KeaBodyVelocity *dv)
