@@ -181,32 +181,40 @@ size_t KeaIterativeWorkspaceBytes(int nRows, int nBodies)
     return counter.used;
 }
 
-/* inv = (L L^T)^-1, column by column (symmetric; about m^3 multiply-adds, once per block and step):
- * forward substitution of the unit vector e_c (zero above row c), then back substitution, with the
- * reciprocals of L's diagonal taken once. */
+/* inv = (L L^T)^-1 = L^-T L^-1 (about m^3 / 3 multiply-adds, once per block and step): first
+ * R = L^-1 (lower triangular) row by row, row r = -(sum_{j<r} L_rj R_j) / L_rr over its columns
+ * c < r, then the upper triangle of R^T R, inv_rc = sum_{k>=c} R_kr R_kc, mirrored. Every sum runs
+ * over its index in increasing order; the inner loops are contiguous rows of R. */
 static void KeaBlockInvert(int m, const MeReal *L, MeReal *inv)
 {
-    MeReal column[KEA_MAX_BLOCK_ROWS], invDiag[KEA_MAX_BLOCK_ROWS];
-    int r, c, j;
-    for (r = 0; r < m; ++r)
-        invDiag[r] = ME_R(1.0) / L[r * m + r];
-    for (c = 0; c < m; ++c) {
-        for (r = 0; r < c; ++r)
-            column[r] = ME_R(0.0);
-        for (r = c; r < m; ++r) {
-            MeReal v = r == c ? ME_R(1.0) : ME_R(0.0);
-            for (j = c; j < r; ++j)
-                v -= L[r * m + j] * column[j];
-            column[r] = v * invDiag[r];
+    MeReal R[KEA_MAX_BLOCK_ROWS * KEA_MAX_BLOCK_ROWS], acc[KEA_MAX_BLOCK_ROWS];
+    int r, c, j, k;
+    for (r = 0; r < m; ++r) {
+        const MeReal invDiag = ME_R(1.0) / L[r * m + r];
+        MeReal *Rr = R + r * m;
+        for (c = 0; c < r; ++c)
+            acc[c] = ME_R(0.0);
+        for (j = 0; j < r; ++j) { /* R_jc = 0 for c > j */
+            const MeReal l = L[r * m + j];
+            const MeReal *Rj = R + j * m;
+            for (c = 0; c <= j; ++c)
+                acc[c] += l * Rj[c];
         }
-        for (r = m - 1; r >= 0; --r) {
-            const MeReal v = column[r] * invDiag[r];
-            column[r] = v;
-            for (j = 0; j < r; ++j)
-                column[j] -= L[r * m + j] * v;
+        for (c = 0; c < r; ++c)
+            Rr[c] = -acc[c] * invDiag;
+        Rr[r] = invDiag;
+    }
+    for (r = 0; r < m; ++r) {
+        for (c = r; c < m; ++c)
+            acc[c] = ME_R(0.0);
+        for (k = r; k < m; ++k) { /* R_kc = 0 for c > k */
+            const MeReal a = R[k * m + r];
+            const MeReal *Rk = R + k * m;
+            for (c = r; c <= k; ++c)
+                acc[c] += a * Rk[c];
         }
-        for (r = 0; r < m; ++r)
-            inv[r * m + c] = column[r];
+        for (c = r; c < m; ++c)
+            inv[r * m + c] = inv[c * m + r] = acc[c];
     }
 }
 
