@@ -105,6 +105,11 @@ static inline MeReal KeaRowVelocity(const KeaJacobianRow *J, const int b[2], con
  *  that the compiler vectorises the one copy the same way for every caller. */
 void KeaColumnsApply(int m, int nc, const MeReal *M, const MeReal *in, MeReal *out);
 
+/** out = M (lin0, ang0, lin1, ang1) for the m x 12 column-major M (the 3-vectors read in place);
+ *  the same bits as KeaColumnsApply(m, 12, ...) on the 12 components in that order. */
+void KeaColumnsApplyPair(int m, const MeReal *M, const MeReal *lin0, const MeReal *ang0, const MeReal *lin1,
+                         const MeReal *ang1, MeReal *out);
+
 /** B = M^-1 J_i^T of row i (zero halves for the world); returns the row's diagonal J_i B + eps_i. */
 MeReal KeaRowInvMassJT(const KeaProblem *problem, int i, KeaJacobianRow *B);
 

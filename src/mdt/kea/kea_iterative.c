@@ -36,7 +36,8 @@
  * copy (KeaVel4, 3-vectors padded to 4, plus an all-zero body standing for the world), rows read it
  * through a copy of J with zero pads and zero world halves, so a row kernel has no branch per body
  * half. A block of m > 4 rows (a box-box contact group: 12) computes its w_b = J_b dv from a 12 x m
- * transpose of its J (KeaColumnsApply, one vectorised column kernel for all block products: w_b,
+ * transpose of its J (KeaColumnsApply, one vectorised column kernel for all block products: w_b
+ * through KeaColumnsApplyPair, which reads the two bodies in place,
  * A_bb^-1 w_b, the preconditioner, forming A_bb) and applies its deltas to local copies of its two
  * bodies; SM's matrix-free products go a free block (segment) at a time the same way. */
 #include <string.h>
@@ -118,7 +119,6 @@ typedef struct KeaIterativeWork {
     MeReal *JT;            /**< per block of m rows from s, its 12 x m transpose J_b^T (pads
                                 dropped) at JT + 12 s: J_b v is then a sum of 12 columns */
     MeReal *localD;        /**< a block's impulse changes */
-    MeReal *localV;        /**< the 12 velocity components of a block's two bodies */
     int (*body)[2];        /**< row halves' bodies, KEA_WORLD mapped to nb */
     MeReal *eps;           /**< eps_i (0 when the problem has none) */
     KeaVel4 *dv;           /**< the solve's dv (nb + 1), copied out at the end */
@@ -166,7 +166,6 @@ static void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows,
     w->J = KEA_ALLOC(arena, KeaJacobianRow, n);
     w->JT = KEA_ALLOC(arena, MeReal, (size_t)n * 12);
     w->localD = KEA_ALLOC(arena, MeReal, cap);
-    w->localV = KEA_ALLOC(arena, MeReal, 12);
     w->body = (int(*)[2])KeaArenaAlloc(arena, sizeof(int[2]) * (size_t)n);
     w->eps = KEA_ALLOC(arena, MeReal, n);
     w->dv = KEA_ALLOC(arena, KeaVel4, nb + 1);
@@ -243,19 +242,11 @@ static void KeaBlockGatherSmall(const KeaIterativeWork *w, int s, int m, const K
 static inline void KeaBlockGather(const KeaIterativeWork *w, int s, int m, const KeaVel4 *v0, const KeaVel4 *v1,
                                   MeReal *out)
 {
-    MeReal *v = w->localV;
-    int c;
     if (m <= 4) { /* a ball joint, a one-point contact: row by row */
         KeaBlockGatherSmall(w, s, m, v0, v1, out);
         return;
     }
-    for (c = 0; c < 3; ++c) {
-        v[c] = v0->lin[c];
-        v[3 + c] = v0->ang[c];
-        v[6 + c] = v1->lin[c];
-        v[9 + c] = v1->ang[c];
-    }
-    KeaColumnsApply(m, 12, w->JT + 12 * s, v, out);
+    KeaColumnsApplyPair(m, w->JT + 12 * s, v0->lin, v0->ang, v1->lin, v1->ang, out);
 }
 
 /* (v0, v1) += sum_r B_r d_r over a block's m rows (rows with d_r = 0 skipped), in row order: the

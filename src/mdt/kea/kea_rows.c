@@ -56,7 +56,7 @@ static inline void KeaColumnsSized(const int m, const int nc, const MeReal *M, c
         out[r] = acc[r];
 }
 
-void KeaColumnsApply(int m, int nc, const MeReal *M, const MeReal *in, MeReal *out)
+static inline void KeaColumnsDispatch(int m, int nc, const MeReal *M, const MeReal *in, MeReal *out)
 {
     switch (m) { /* the sizes of contact groups and joints, each with a constant row count */
     case 1: KeaColumnsSized(1, nc, M, in, out); break;
@@ -75,6 +75,28 @@ void KeaColumnsApply(int m, int nc, const MeReal *M, const MeReal *in, MeReal *o
         break;
     default: KeaColumnsSized(m, nc, M, in, out); break;
     }
+}
+
+void KeaColumnsApply(int m, int nc, const MeReal *M, const MeReal *in, MeReal *out)
+{
+    KeaColumnsDispatch(m, nc, M, in, out);
+}
+
+/* out = M (v0, v1) for the m x 12 column-major M of a block's J_b^T: the 12 components
+ * (lin0, ang0, lin1, ang1) gathered here, next to the column kernel; the same sums, in the same
+ * order, as KeaColumnsApply on them. */
+void KeaColumnsApplyPair(int m, const MeReal *M, const MeReal *lin0, const MeReal *ang0, const MeReal *lin1,
+                         const MeReal *ang1, MeReal *out)
+{
+    MeReal in[12];
+    int c;
+    for (c = 0; c < 3; ++c) {
+        in[c] = lin0[c];
+        in[3 + c] = ang0[c];
+        in[6 + c] = lin1[c];
+        in[9 + c] = ang1[c];
+    }
+    KeaColumnsDispatch(m, 12, M, in, out);
 }
 
 void KeaLinkBounds(const KeaProblem *problem, int i, MeReal xLink, MeReal *lo, MeReal *hi)
