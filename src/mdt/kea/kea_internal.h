@@ -204,7 +204,8 @@ size_t KeaDirectWorkspaceBytes(int nRows, int nBodies);
 size_t KeaIterativeWorkspaceBytes(int nRows, int nBodies);
 
 /* Both take a validated problem, an arena of at least their WorkspaceBytes, write x (nRows) and
- * dv (nBodies, never NULL here) and fill the path-specific fields of stats. */
+ * dv (nBodies, never NULL here) and fill the path-specific fields of stats; the iterative path also
+ * fills stats->residual (KeaResidual's measure, from the diagonal and padded rows it already has). */
 KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
                          MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
 KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,

@@ -641,6 +641,27 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
     return steps;
 }
 
+/* KeaResidual (kea_rows.c) of the final x and dv from the work's diagonal and padded rows (no
+ * M^-1 J^T recomputed per row): the same measure, J_i dv summed in the padded kernel's order. */
+static MeReal KeaIterativeResidual(const KeaProblem *problem, const KeaIterativeWork *w, const MeReal *x)
+{
+    MeReal worst = ME_R(0.0);
+    int i;
+    for (i = 0; i < problem->nRows; ++i) {
+        const MeReal d = w->diag[i];
+        const MeReal wi = KeaRowW(problem, w, i, x, &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
+        MeReal lo, hi, r;
+        KeaRowBoundsInline(problem, x, i, &lo, &hi);
+        if (d > ME_R(0.0))
+            r = d * KeaFabs(x[i] - KeaClamp(x[i] - wi / d, lo, hi));
+        else /* a row that touches nothing: only its feasibility counts */
+            r = KeaFabs(x[i] - KeaClamp(x[i], lo, hi));
+        if (r > worst || r != r)
+            worst = r;
+    }
+    return worst;
+}
+
 KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
                             MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
 {
@@ -701,5 +722,6 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
             dv[b].lin[k] = w.dv[b].lin[k];
             dv[b].ang[k] = w.dv[b].ang[k];
         }
+    stats->residual = KeaIterativeResidual(problem, &w, x);
     return status;
 }

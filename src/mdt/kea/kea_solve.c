@@ -151,10 +151,11 @@ KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void 
             x[i] = ME_R(0.0);
     }
 
-    if (path == KeaPathDirect)
+    if (path == KeaPathDirect) {
         stats->status = KeaSolveDirect(problem, params, &arena, x, velocity, stats);
-    else
+        stats->residual = KeaResidual(problem, x, velocity);
+    } else { /* fills stats->residual itself */
         stats->status = KeaSolveIterative(problem, params, &arena, x, velocity, stats);
-    stats->residual = KeaResidual(problem, x, velocity);
+    }
     return stats->status;
 }
