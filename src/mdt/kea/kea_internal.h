@@ -98,6 +98,15 @@ static inline MeReal KeaRowVelocity(const KeaJacobianRow *J, const int b[2], con
     return s;
 }
 
+/** The natural-map residual of one row (KeaResidual's measure): d |x - mid(lo, x - w / d, hi)| for a
+ *  row with d > 0, else its infeasibility |x - mid(lo, x, hi)|. */
+static inline MeReal KeaRowResidual(MeReal d, MeReal x, MeReal w, MeReal lo, MeReal hi)
+{
+    if (d > ME_R(0.0))
+        return d * KeaFabs(x - KeaClamp(x - w / d, lo, hi));
+    return KeaFabs(x - KeaClamp(x, lo, hi)); /* a row that touches nothing: only its feasibility counts */
+}
+
 /** out = M in for the m x nc column-major M (column c at M + c m; m <= KEA_MAX_BLOCK_ROWS; out
  *  distinct from M and in): every out[r] is its own running sum over the columns in order, so the
  *  loop over r vectorises without reassociating any sum. The iterative path's block kernels (a

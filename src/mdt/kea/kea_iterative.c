@@ -652,10 +652,7 @@ static MeReal KeaIterativeResidual(const KeaProblem *problem, const KeaIterative
         const MeReal wi = KeaRowW(problem, w, i, x, &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
         MeReal lo, hi, r;
         KeaRowBoundsInline(problem, x, i, &lo, &hi);
-        if (d > ME_R(0.0))
-            r = d * KeaFabs(x[i] - KeaClamp(x[i] - wi / d, lo, hi));
-        else /* a row that touches nothing: only its feasibility counts */
-            r = KeaFabs(x[i] - KeaClamp(x[i], lo, hi));
+        r = KeaRowResidual(d, x[i], wi, lo, hi);
         if (r > worst || r != r)
             worst = r;
     }

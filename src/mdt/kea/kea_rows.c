@@ -155,10 +155,7 @@ MeReal KeaResidual(const KeaProblem *problem, const MeReal *x, const KeaBodyVelo
         MeReal w = KeaRowVelocity(&problem->J[i], problem->rowBodies[i], dv) + eps * x[i] - problem->rhs[i];
         MeReal lo, hi, r;
         KeaRowBounds(problem, x, i, &lo, &hi);
-        if (d > ME_R(0.0))
-            r = d * KeaFabs(x[i] - KeaClamp(x[i] - w / d, lo, hi));
-        else /* a row that touches nothing: only its feasibility counts */
-            r = KeaFabs(x[i] - KeaClamp(x[i], lo, hi));
+        r = KeaRowResidual(d, x[i], w, lo, hi);
         if (r > worst || r != r)
             worst = r;
     }
