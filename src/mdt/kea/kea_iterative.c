@@ -555,6 +555,30 @@ static void KeaPrecondition(const KeaIterativeWork *w, int nFree, const MeReal *
         z[p] = res[p] * w->invDiag[w->freeRows[p]];
 }
 
+/* q += eps p, returning p . q (the new q) in one pass: the sums of KeaDotN4, in its order. */
+static MeReal KeaAddEpsDot(MeReal *q, const MeReal *eps, const MeReal *p, int n)
+{
+    MeReal s0 = ME_R(0.0), s1 = ME_R(0.0), s2 = ME_R(0.0), s3 = ME_R(0.0);
+    int m = 0;
+    for (; m + 4 <= n; m += 4) {
+        const MeReal q0 = q[m] + eps[m] * p[m], q1 = q[m + 1] + eps[m + 1] * p[m + 1];
+        const MeReal q2 = q[m + 2] + eps[m + 2] * p[m + 2], q3 = q[m + 3] + eps[m + 3] * p[m + 3];
+        q[m] = q0;
+        q[m + 1] = q1;
+        q[m + 2] = q2;
+        q[m + 3] = q3;
+        s0 += p[m] * q0;
+        s1 += p[m + 1] * q1;
+        s2 += p[m + 2] * q2;
+        s3 += p[m + 3] * q3;
+    }
+    for (; m < n; ++m) {
+        q[m] = q[m] + eps[m] * p[m];
+        s0 += p[m] * q[m];
+    }
+    return (s0 + s1) + (s2 + s3);
+}
+
 /* Subspace minimisation on the rows strictly inside their bounds; returns the CG steps taken. */
 static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x)
 {
@@ -590,9 +614,7 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
         MeReal pq, a, rzNew, beta;
         KeaScatter(problem, w, nFree, w->dir);
         KeaGather(w, nFree, w->dvTmp, w->q);
-        for (p = 0; p < nFree; ++p)
-            w->q[p] = w->q[p] + w->epsFree[p] * w->dir[p];
-        pq = KeaDotN4(w->dir, w->q, nFree);
+        pq = KeaAddEpsDot(w->q, w->epsFree, w->dir, nFree);
         if (!(pq > ME_R(0.0)))
             break;
         a = rz / pq;
