@@ -210,20 +210,3 @@ int KeaCholeskyDense(int m, const MeReal *A, MeReal *L)
     }
     return 1;
 }
-
-void KeaCholeskyDenseSolve(int m, const MeReal *L, MeReal *b)
-{
-    int i, j;
-    for (i = 0; i < m; ++i) {
-        MeReal s = b[i];
-        for (j = 0; j < i; ++j)
-            s -= L[i * m + j] * b[j];
-        b[i] = s / L[i * m + i];
-    }
-    for (i = m - 1; i >= 0; --i) {
-        const MeReal xi = b[i] / L[i * m + i];
-        b[i] = xi;
-        for (j = 0; j < i; ++j)
-            b[j] -= L[i * m + j] * xi;
-    }
-}

@@ -170,8 +170,6 @@ void KeaCholeskyRemove(KeaCholesky *c, int p);
 /** Plain Cholesky A = L L^T of a small dense m x m matrix (row-major). Returns 0, leaving L
  *  unusable, if a pivot falls below the floor (A not safely positive definite). */
 int KeaCholeskyDense(int m, const MeReal *A, MeReal *L);
-/** Solve L L^T y = b in place with the factor from KeaCholeskyDense. */
-void KeaCholeskyDenseSolve(int m, const MeReal *L, MeReal *b);
 
 /** LU factorisation with partial pivoting of the general m x m matrix G, in place (row swaps in
  *  perm). Returns 0 when G is numerically singular. */

@@ -93,7 +93,7 @@ typedef struct KeaIterativeWork {
     int *blockStart;       /**< nBlocks + 1 row offsets */
     int *blockMatrix;      /**< offset of each block's m x m matrix in blockA */
     MeReal *blockA;        /**< the blocks' A_bb, at most n * maxBlockRows reals */
-    MeReal *blockL;        /**< their Cholesky factors (same offsets) */
+    MeReal *blockL;        /**< scratch: one block's Cholesky factor, read only to form its inverse */
     MeReal *blockInv;      /**< their inverses A_bb^-1 (same offsets): a block solve in a sweep or
                                 a preconditioner step is then one small matrix-vector product,
                                 no divisions (each block is solved ~50 times a step, factored once) */
@@ -140,7 +140,7 @@ static void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows,
     w->blockStart = KEA_ALLOC(arena, int, n + 1);
     w->blockMatrix = KEA_ALLOC(arena, int, n);
     w->blockA = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)cap);
-    w->blockL = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)cap);
+    w->blockL = KEA_ALLOC(arena, MeReal, (size_t)cap * (size_t)cap);
     w->blockInv = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)cap);
     w->blockFactored = KEA_ALLOC(arena, unsigned char, n);
     w->localW = KEA_ALLOC(arena, MeReal, cap);
@@ -344,9 +344,9 @@ static void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int c
                 }
         }
         if (m > 1) {
-            w->blockFactored[w->nBlocks] = (unsigned char)KeaCholeskyDense(m, w->blockA + offset, w->blockL + offset);
+            w->blockFactored[w->nBlocks] = (unsigned char)KeaCholeskyDense(m, w->blockA + offset, w->blockL);
             if (w->blockFactored[w->nBlocks])
-                KeaBlockInvert(m, w->blockL + offset, w->blockInv + offset);
+                KeaBlockInvert(m, w->blockL, w->blockInv + offset);
             offset += m * m;
         }
         ++w->nBlocks;
