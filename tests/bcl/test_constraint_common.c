@@ -7,6 +7,8 @@
 
 #include <karma/Mdt.h>
 
+#include "karma_rotor.h"
+
 #define PI 3.14159265358979323846
 static const double G = 9.81, H = 1.0 / 60;
 
@@ -220,37 +222,12 @@ static void moving_world_attachments(void **state)
     assert_rel(alag, 2 * H / gamma, 0.02);
 }
 
-/* ---- limit lock, offset, overshoot ---- */
-typedef struct Rotor {
-    MdtWorldID w;
-    MdtBodyID b;
-    MdtHingeID j;
-    MdtLimitID l;
-} Rotor;
-
-/* A rotor (inertia 0.5) hinged to the world about z at the origin. */
-static Rotor makeRotor(void)
-{
-    Rotor r;
-    r.w = MdtWorldCreate(2, 2, 1, 1);
-    MdtWorldSetAutoDisable(r.w, MEFALSE);
-    r.b = MdtBodyCreate(r.w);
-    MdtBodySetSphericalInertiaTensor(r.b, 0.5f);
-    MdtBodyEnable(r.b);
-    r.j = MdtHingeCreate(r.w);
-    MdtHingeSetBodies(r.j, r.b, NULL);
-    MdtHingeSetPosition(r.j, 0, 0, 0);
-    MdtHingeSetAxis(r.j, 0, 0, 1);
-    MdtHingeEnable(r.j);
-    r.l = MdtHingeGetLimit(r.j);
-    return r;
-}
-
+/* ---- limit lock, offset, overshoot (on the rotor of karma_rotor.h, inertia 0.5) ---- */
 static void limit_lock_offset_and_overshoot(void **state)
 {
     (void)state;
     /* A rigid lock at 0.5 rad pulls the rotor there and holds it against 2 N m. */
-    Rotor r = makeRotor();
+    KarmaRotor r = karma_rotor_make(0.5);
     MdtLimitSetLock(r.l, 0.5f, MEINFINITY);
     MdtLimitActivateLock(r.l, METRUE);
     assert_true(MdtLimitIsLocked(r.l));
@@ -280,7 +257,7 @@ static void limit_lock_offset_and_overshoot(void **state)
     MdtWorldDestroy(r.w);
 
     /* The offset shifts the reported coordinate only; stops are in the reported coordinate. */
-    r = makeRotor();
+    r = karma_rotor_make(0.5);
     assert_false(MdtLimitPositionIsCalculated(r.l)); /* Karma's flag; the coordinate is tracked anyway */
     MdtLimitCalculatePosition(r.l, METRUE);
     assert_true(MdtLimitPositionIsCalculated(r.l));

@@ -4,37 +4,14 @@
 
 #include <karma/Mdt.h>
 
+#include "karma_rotor.h"
+
 #define PI 3.14159265358979323846
 
-/* A rotor: body 0 at the origin with inertia I about every axis, hinged to the world about z. */
-typedef struct Rotor {
-    MdtWorldID w;
-    MdtBodyID b;
-    MdtHingeID j;
-    MdtLimitID l;
-} Rotor;
+static double angle(const KarmaRotor *r) { return MdtLimitGetPosition(r->l); }
+static double rate(const KarmaRotor *r) { return MdtLimitGetVelocity(r->l); }
 
-static Rotor makeRotor(double I)
-{
-    Rotor r;
-    r.w = MdtWorldCreate(4, 4, 1, 1);
-    MdtWorldSetAutoDisable(r.w, MEFALSE);
-    r.b = MdtBodyCreate(r.w);
-    MdtBodySetSphericalInertiaTensor(r.b, (MeReal)I);
-    MdtBodyEnable(r.b);
-    r.j = MdtHingeCreate(r.w);
-    MdtHingeSetBodies(r.j, r.b, NULL);
-    MdtHingeSetPosition(r.j, 0, 0, 0);
-    MdtHingeSetAxis(r.j, 0, 0, 1);
-    MdtHingeEnable(r.j);
-    r.l = MdtHingeGetLimit(r.j);
-    return r;
-}
-
-static double angle(const Rotor *r) { return MdtLimitGetPosition(r->l); }
-static double rate(const Rotor *r) { return MdtLimitGetVelocity(r->l); }
-
-static void spin(const Rotor *r, double w) { MdtBodySetAngularVelocity(r->b, 0, 0, (MeReal)w); }
+static void spin(const KarmaRotor *r, double w) { MdtBodySetAngularVelocity(r->b, 0, 0, (MeReal)w); }
 
 /* ---- pendulum ---- */
 static double pendulumPeriod(double h, double L, double theta0, double *axisDrift)
@@ -91,7 +68,7 @@ static void hinge_pendulum_period(void **state)
 static void hinge_motor_reaches_target_speed(void **state)
 {
     (void)state;
-    Rotor r = makeRotor(0.5);
+    KarmaRotor r = karma_rotor_make(0.5);
     MdtLimitSetLimitedForceMotor(r.l, 3, 100);
     assert_true(MdtLimitIsMotorized(r.l));
     for (int i = 0; i < 30; i++)
@@ -127,7 +104,7 @@ static void hinge_motor_stalls_at_its_cap(void **state)
 {
     (void)state;
     const double I = 0.5, cap = 2, load = 5, h = 1.0 / 60;
-    Rotor r = makeRotor(I);
+    KarmaRotor r = karma_rotor_make(I);
     spin(&r, 3);
     MdtLimitSetLimitedForceMotor(r.l, 3, (MeReal)cap);
     double w0 = 0;
@@ -200,7 +177,7 @@ static void hinge_hard_stops_hold(void **state)
     MdtWorldDestroy(w);
 
     /* Multi-turn: a motor winds the rotor up to a stop at 3π. */
-    Rotor r = makeRotor(0.5);
+    KarmaRotor r = karma_rotor_make(0.5);
     setStops(r.l, -1, 3 * PI, 0);
     MdtLimitSetLimitedForceMotor(r.l, 4, 10);
     for (int i = 0; i < 600; i++)
@@ -216,7 +193,7 @@ static void hinge_hard_stop_restitution(void **state)
     (void)state;
     const double es[3] = {0.25, 0.5, 1};
     for (int k = 0; k < 3; k++) {
-        Rotor r = makeRotor(0.5);
+        KarmaRotor r = karma_rotor_make(0.5);
         setStops(r.l, -10, 0.5, es[k]);
         spin(&r, 2);
         double after = 0;
@@ -238,7 +215,7 @@ static void hinge_soft_stops_are_springs(void **state)
     const double I = 0.5, k = 20, h = 1.0 / 60;
     const double expected = 2 * PI * sqrt(I / k);
     /* Two soft stops at 0: a torsion spring. */
-    Rotor r = makeRotor(I);
+    KarmaRotor r = karma_rotor_make(I);
     MdtLimitActivateLimits(r.l, METRUE);
     MdtSingleLimitSetStiffness(MdtLimitGetLowerLimit(r.l), (MeReal)k);
     MdtSingleLimitSetStiffness(MdtLimitGetUpperLimit(r.l), (MeReal)k);
@@ -261,7 +238,7 @@ static void hinge_soft_stops_are_springs(void **state)
     MdtWorldDestroy(r.w);
 
     /* One soft stop at 0.2 rad: the rotor spends half a period past it and leaves as fast as it came. */
-    r = makeRotor(I);
+    r = karma_rotor_make(I);
     setStops(r.l, -10, 0.2, 1);
     MdtSingleLimitSetStiffness(MdtLimitGetUpperLimit(r.l), (MeReal)k);
     spin(&r, 1);
@@ -289,7 +266,7 @@ static void hinge_soft_stops_are_springs(void **state)
 static void hinge_limit_controller(void **state)
 {
     (void)state;
-    Rotor r = makeRotor(0.5);
+    KarmaRotor r = karma_rotor_make(0.5);
     double err = 0;
     for (int i = 0; i < 240; i++) {
         MdtLimitController(r.l, 1.2f, 0.5f, 2, 50);
