@@ -77,7 +77,9 @@ ME_API void MdtWorldGetCounters(MdtWorldID w, MdtWorldCounters *counters);
 
 /** Which LCP method solves a partition. */
 typedef enum MdtLCPSolver {
-    MdtLCPSolverAuto = 0,      /**< exact (direct) up to MdtWorldSetMaxDirectRows rows, else iterative */
+    MdtLCPSolverAuto = 0,      /**< exact (direct) up to MdtWorldSetMaxDirectRows rows, and up to four times
+                                    that when the partition's factor is sparse (chains, trees:
+                                    docs/decisions.md K26); else iterative */
     MdtLCPSolverDirect = 1,    /**< always the exact pivoting solver */
     MdtLCPSolverIterative = 2  /**< always the iterative solver (MdtWorldSetMaxLCPIterations sweeps) */
 } MdtLCPSolver;
@@ -128,7 +130,9 @@ ME_API void MdtWorldSetAutoDisableAliveTime(MdtWorldID w, MeReal aw);
 ME_API void MdtWorldSetMaxLCPIterations(MdtWorldID w, int mi);
 /** Choose the LCP method (default MdtLCPSolverAuto). */
 ME_API void MdtWorldSetLCPSolver(MdtWorldID w, MdtLCPSolver solver);
-/** Largest partition (in rows) that MdtLCPSolverAuto solves exactly. Default 128. */
+/** Largest partition (in rows) that MdtLCPSolverAuto solves exactly whatever its structure; up to
+ *  four times this many rows it also does when the ordered factor costs no more than a dense one of
+ *  this size (decision K26). 0: always iterative. Default 128. */
 ME_API void MdtWorldSetMaxDirectRows(MdtWorldID w, int rows);
 /** The iterative solver stops early once its residual is below this (m/s, > 0). Default 1e-6. */
 ME_API void MdtWorldSetLCPTolerance(MdtWorldID w, MeReal tolerance);

@@ -17,9 +17,9 @@
 #define STEP_SIZE (ME_R(1.0) / 60)
 
 #if KARMA_DOUBLE
-#  define GOLDEN_HASH 0xd4a0d7dadc99814aull
+#  define GOLDEN_HASH 0x393cf2e5c417b879ull
 #else
-#  define GOLDEN_HASH 0xbb55fac54a8ac411ull
+#  define GOLDEN_HASH 0x0de2030e30a4a635ull
 #endif
 
 typedef struct Scene {

@@ -47,10 +47,39 @@ static void random_box_lcps_match_brute_force(void **state)
                   "mean pivots %.2f\n", solved, worst, worstRes, (double)pivots / solved);
 }
 
-/* Complementarity checked outside Kea, with the dense matrix in double: for every row, x inside its
- * bounds, and w = A x - r zero for a free row, >= 0 at the lower bound, <= 0 at the upper one, on
- * random partitions up to 48 rows (too large for brute force). Tolerance: 1e-6 (double) relative to
- * the problem's scale. */
+/* Worst complementarity violation of x, checked outside Kea with the dense matrix in double: for
+ * every row, x inside its bounds, and w = A x - r zero for a free row, >= 0 at the lower bound,
+ * <= 0 at the upper one; relative to the problem's scale. Asserts each row within tol. Friction
+ * links are not looked at (problems here have none). */
+static double worst_complementarity(const KtProblem *t, const MeReal *x, double tol)
+{
+    const int n = t->p.nRows;
+    double *A = (double *)malloc(sizeof(double) * (size_t)n * (size_t)n), scale = 1.0, worst = 0.0;
+    int i, j;
+    kt_dense_matrix(&t->p, A);
+    for (i = 0; i < n; ++i)
+        scale = fmax(scale, fabs((double)t->rhs[i]) + A[(size_t)i * n + i] * fabs((double)x[i]));
+    for (i = 0; i < n; ++i) {
+        double w = -(double)t->rhs[i], xi = (double)x[i], lo = (double)t->lo[i], hi = (double)t->hi[i];
+        double tolX = tol * scale / A[(size_t)i * n + i], err;
+        for (j = 0; j < n; ++j)
+            w += A[(size_t)i * n + j] * (double)x[j];
+        assert_true(xi >= lo - tolX && xi <= hi + tolX);
+        if (!kt_is_inf(t->lo[i]) && xi <= lo + tolX)
+            err = fmax(0.0, -w); /* at the lower bound: may only push outwards */
+        else if (!kt_is_inf(t->hi[i]) && xi >= hi - tolX)
+            err = fmax(0.0, w);
+        else
+            err = fabs(w);
+        worst = fmax(worst, err / scale);
+        assert_near(err / scale, 0.0, tol);
+    }
+    free(A);
+    return worst;
+}
+
+/* Complementarity checked independently on random partitions up to 48 rows (too large for brute
+ * force). Tolerance: 1e-6 (double) relative to the problem's scale. */
 static void complementarity_checked_independently(void **state)
 {
     static const int sizes[] = {4, 12, 24, 48};
@@ -64,36 +93,106 @@ static void complementarity_checked_independently(void **state)
             KtRng rng = kt_rng((uint64_t)(5000 + 100 * n + seed));
             KtProblem t;
             MeReal x[48];
-            double *A = (double *)malloc(sizeof(double) * (size_t)(n * n)), scale = 1.0;
             KeaStats st;
-            int i, j;
             kt_random_problem(&t, &rng, n, 2 + kt_int(&rng, n / 2 + 1), 1e-3, 1e-1);
             assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusOk);
-            kt_dense_matrix(&t.p, A);
-            for (i = 0; i < n; ++i)
-                scale = fmax(scale, fabs((double)t.rhs[i]) + A[i * n + i] * fabs((double)x[i]));
-            for (i = 0; i < n; ++i) {
-                double w = -(double)t.rhs[i], xi = (double)x[i], lo = (double)t.lo[i], hi = (double)t.hi[i];
-                double tolX = ME_TOL(1e-6, 1e-3) * scale / A[i * n + i], err;
-                for (j = 0; j < n; ++j)
-                    w += A[i * n + j] * (double)x[j];
-                assert_true(xi >= lo - tolX && xi <= hi + tolX);
-                if (!kt_is_inf(t.lo[i]) && xi <= lo + tolX)
-                    err = fmax(0.0, -w); /* at the lower bound: may only push outwards */
-                else if (!kt_is_inf(t.hi[i]) && xi >= hi - tolX)
-                    err = fmax(0.0, w);
-                else
-                    err = fabs(w);
-                worst = fmax(worst, err / scale);
-                assert_near(err / scale, 0.0, ME_TOL(1e-6, 1e-3));
-                ++rows;
-            }
-            free(A);
+            worst = fmax(worst, worst_complementarity(&t, x, ME_TOL(1e-6, 1e-3)));
+            rows += n;
             kt_free(&t);
         }
     }
     print_message("direct path, 80 random partitions of 4-48 rows (%d rows): worst complementarity violation "
                   "%.2e (relative)\n", rows, worst);
+}
+
+/* A random tree of nb bodies (each body's parent a random earlier one, body 0 on the world), 3-6
+ * rows from each body to its parent or the world, of the four kinds kt_random_problem makes: the
+ * shape of a ragdoll or a chain, whose factor the direct path keeps sparse (kea_order.c). */
+static void random_tree_problem(KtProblem *t, KtRng *r, int nb, int chain)
+{
+    KtProblem rows;
+    int b, i, n = 0, count[64];
+    for (b = 0; b < nb; ++b)
+        n += count[b] = 3 + kt_int(r, 4);
+    kt_random_problem(&rows, r, n, nb, 1e-3, 1e-1); /* random Jacobians, softness, rhs, bounds */
+    kt_alloc(t, n, nb, 0);
+    memcpy(t->bodies, rows.bodies, sizeof(KeaBody) * (size_t)nb);
+    memcpy(t->J, rows.J, sizeof(KeaJacobianRow) * (size_t)n);
+    memcpy(t->eps, rows.eps, sizeof(MeReal) * (size_t)n);
+    memcpy(t->rhs, rows.rhs, sizeof(MeReal) * (size_t)n);
+    memcpy(t->lo, rows.lo, sizeof(MeReal) * (size_t)n);
+    memcpy(t->hi, rows.hi, sizeof(MeReal) * (size_t)n);
+    for (b = 0, i = 0; b < nb; ++b) {
+        const int parent = b == 0 ? KEA_WORLD : (chain ? b - 1 : kt_int(r, b));
+        int k;
+        for (k = 0; k < count[b]; ++k, ++i) {
+            t->rowBodies[i][0] = b;
+            t->rowBodies[i][1] = parent;
+            if (parent < 0) {
+                int c;
+                for (c = 0; c < 3; ++c)
+                    t->J[i].lin1[c] = t->J[i].ang1[c] = ME_R(0.0);
+            }
+        }
+    }
+    kt_free(&rows);
+}
+
+/* Trees and chains of up to 64 bodies (up to ~380 rows): the direct path, with its ordered sparse
+ * factor, solves them to the same complementarity as the small dense cases, and Auto takes the
+ * direct path for them although they exceed the 128-row dense limit. */
+static void sparse_trees_complementary(void **state)
+{
+    KeaParameters prm = kt_params(KeaPathAuto);
+    double worst = 0.0;
+    int seed, rows = 0, direct = 0, pivots = 0;
+    (void)state;
+    for (seed = 0; seed < 24; ++seed) {
+        KtRng rng = kt_rng((uint64_t)(9100 + seed));
+        KtProblem t;
+        MeReal *x;
+        KeaStats st;
+        random_tree_problem(&t, &rng, 16 + kt_int(&rng, 49), seed % 3 == 0);
+        x = (MeReal *)malloc(sizeof(MeReal) * (size_t)t.p.nRows);
+        assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusOk);
+        direct += st.path == KeaPathDirect;
+        if (t.p.nRows > prm.maxDirectRows && t.p.nRows <= 4 * prm.maxDirectRows)
+            assert_int_equal(st.path, KeaPathDirect);
+        worst = fmax(worst, worst_complementarity(&t, x, ME_TOL(1e-6, 1e-3)));
+        rows += t.p.nRows;
+        pivots += st.pivots;
+        free(x);
+        kt_free(&t);
+    }
+    print_message("direct path, 24 random trees and chains of 16-64 bodies (%d rows, %d solved directly, %d pivots):"
+                  " worst complementarity violation %.2e (relative)\n", rows, direct, pivots, worst);
+}
+
+/* Auto between the dense limit and four times it: a partition whose rows all share one pair of
+ * bodies (every row coupled to every other) would cost more than a dense factor of the limit, so it
+ * goes to the iterative path; the 240-row column of 20 boxes (each interface coupled only to its
+ * neighbours) is solved directly. */
+static void auto_path_follows_structure(void **state)
+{
+    KeaParameters prm = kt_params(KeaPathAuto);
+    KtRng rng = kt_rng(4242);
+    KtProblem dense, column;
+    MeReal x[240];
+    KeaStats st;
+    const double v[6 * 20] = {0}, g[3] = {0, 0, -9.81};
+    (void)state;
+    kt_random_problem(&dense, &rng, 200, 2, 1e-3, 1e-1);
+    (void)kt_solve(&dense.p, &prm, x, NULL, &st);
+    assert_int_equal(st.path, KeaPathIterative);
+    kt_column(&column, 20, 1.0, 0.6, 1e-3);
+    kt_set_rhs_from_velocities(&column, v, 1.0 / 60.0, g);
+    assert_int_equal(kt_solve(&column.p, &prm, x, NULL, &st), KeaStatusOk);
+    assert_int_equal(st.path, KeaPathDirect);
+    assert_near(st.residual, 0.0, ME_TOL(1e-9, 1e-4));
+    print_message("auto: 200 rows on one body pair -> iterative; column of 20 boxes (240 rows) -> direct, "
+                  "residual %.2e m/s, %d pivots\n", (double)st.residual, st.pivots);
+    kt_free(&dense);
+    kt_free(&column);
 }
 
 /* Started from its own solution, the direct path does not pivot and does not move. */
@@ -251,6 +350,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(random_box_lcps_match_brute_force),
         cmocka_unit_test(complementarity_checked_independently),
+        cmocka_unit_test(sparse_trees_complementary),
+        cmocka_unit_test(auto_path_follows_structure),
         cmocka_unit_test(warm_start_from_solution_needs_no_pivots),
         cmocka_unit_test(bad_warm_start_same_answer),
         cmocka_unit_test(friction_links_match_brute_force),

@@ -88,7 +88,10 @@ static void path_selection(void **state)
     assert_int_equal(prm.path, KeaPathAuto);
     assert_int_equal(prm.maxIterations, 10);
     assert_int_equal(KeaSelectPath(prm.maxDirectRows, &prm), KeaPathDirect);
-    assert_int_equal(KeaSelectPath(prm.maxDirectRows + 1, &prm), KeaPathIterative);
+    /* Between maxDirectRows and 4 maxDirectRows rows the structure decides (KeaSolve): Auto. */
+    assert_int_equal(KeaSelectPath(prm.maxDirectRows + 1, &prm), KeaPathAuto);
+    assert_int_equal(KeaSelectPath(4 * prm.maxDirectRows, &prm), KeaPathAuto);
+    assert_int_equal(KeaSelectPath(4 * prm.maxDirectRows + 1, &prm), KeaPathIterative);
     assert_int_equal(KeaSelectPath(0, &prm), KeaPathDirect);
     prm.path = KeaPathIterative;
     assert_int_equal(KeaSelectPath(1, &prm), KeaPathIterative);

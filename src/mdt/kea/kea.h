@@ -83,8 +83,10 @@ typedef struct KeaProblem {
 
 /** Which method solves a partition. */
 typedef enum KeaPath {
-    KeaPathAuto = 0,      /**< direct when nRows <= maxDirectRows, else iterative */
-    KeaPathDirect = 1,    /**< exact: dense Cholesky-based active-set (pivoting) method */
+    KeaPathAuto = 0,      /**< direct when nRows <= maxDirectRows, or nRows <= 4 maxDirectRows and the
+                               ordered factor has at most maxDirectRows (maxDirectRows + 1) / 2
+                               entries (kea_direct.c); else iterative */
+    KeaPathDirect = 1,    /**< exact: Cholesky-based active-set (pivoting) method, sparse factor */
     KeaPathIterative = 2  /**< projected Gauss-Seidel (+ subspace minimisation) on the sparse rows */
 } KeaPath;
 
@@ -101,7 +103,8 @@ typedef enum KeaStatus {
 /** Solver settings; fill with KeaParametersDefault, then change what you need. */
 typedef struct KeaParameters {
     KeaPath path;           /**< method; default KeaPathAuto */
-    int maxDirectRows;      /**< Auto chooses direct up to this many rows; default 128 */
+    int maxDirectRows;      /**< Auto chooses direct up to this many rows (and beyond, up to 4x, for a
+                                 sparse factor: KeaPathAuto); default 128 */
     int maxIterations;      /**< iterative: Gauss-Seidel sweeps; default 10 (Karma's) */
     MeReal tolerance;       /**< iterative: stop when a sweep's residual (velocity units, see top
                                  comment, measured during the sweep) is <= this; default 1e-6 m/s */
@@ -133,7 +136,8 @@ typedef struct KeaStats {
 /** Default settings (see the field comments). */
 void KeaParametersDefault(KeaParameters *params);
 
-/** The path KeaSolve will use for a partition of nRows rows under params. */
+/** The path KeaSolve will use for a partition of nRows rows under params; KeaPathAuto when it
+ *  depends on the partition's structure (decided by KeaSolve; size the workspace for either). */
 KeaPath KeaSelectPath(int nRows, const KeaParameters *params);
 
 /** Bytes of workspace KeaSolve needs for nRows rows and nBodies bodies on the given path

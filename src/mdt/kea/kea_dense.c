@@ -10,6 +10,11 @@
  *  - remove the row at position p: the rows below lose column p; their trailing block L33 must then
  *    satisfy L33' L33'^T = L33 L33^T + v v^T with v the removed column, a rank-one update done with
  *    Givens-like rotations (Golub & Van Loan, "Matrix Computations", sec. on updating Cholesky): O(|F|^2).
+ *  Sparsity: the factor keeps each row's envelope (its first non-zero column). A row of A_FF that
+ *  couples to no earlier free row before column f has L zero before f too (Cholesky fills only
+ *  inside the envelope), so appends, solves and removals work on envelopes only. With rows ordered
+ *  so that rows sharing bodies are near each other (kea_order.c), a chain or a tree of joints
+ *  factors in time about linear in its rows instead of cubic.
  *  A pivot d below KEA_PIVOT_FLOOR * A_ii (a row dependent on the free ones, possible only when
  *  eps = 0) is raised to that floor and counted. */
 #include <string.h>
@@ -20,11 +25,10 @@
 static const MeReal *KeaHalfLin(const KeaJacobianRow *row, int half) { return half ? row->lin1 : row->lin0; }
 static const MeReal *KeaHalfAng(const KeaJacobianRow *row, int half) { return half ? row->ang1 : row->ang0; }
 
-void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeReal *A, int *incidence,
-                        int *start)
+void KeaBodyIncidence(const KeaProblem *problem, int *incidence, int *start)
 {
     const int n = problem->nRows, nb = problem->nBodies;
-    int i, b, h, p1, p2;
+    int i, b, h;
 
     /* Body -> (row, half) incidence in CSR form, rows in ascending order within each body. */
     for (b = 0; b <= nb; ++b)
@@ -44,8 +48,21 @@ void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeRe
     for (b = nb; b > 0; --b) /* the fill advanced each start to the next body's: shift back */
         start[b] = start[b - 1];
     start[0] = 0;
+}
 
-    memset(A, 0, sizeof(MeReal) * (size_t)n * (size_t)n);
+void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeReal *A, const int *incidence,
+                        const int *start, const int *patternStart, const int *pattern)
+{
+    const int n = problem->nRows, nb = problem->nBodies;
+    int i, b, p1, p2;
+
+    if (patternStart) { /* only the pattern is read later: clear just that */
+        for (i = 0; i < n; ++i)
+            for (p1 = patternStart[i]; p1 < patternStart[i + 1]; ++p1)
+                A[(size_t)i * (size_t)n + (size_t)pattern[p1]] = ME_R(0.0);
+    } else {
+        memset(A, 0, sizeof(MeReal) * (size_t)n * (size_t)n);
+    }
     for (b = 0; b < nb; ++b) {
         for (p1 = start[b]; p1 < start[b + 1]; ++p1) {
             const int e1 = incidence[p1], r1 = e1 >> 1, h1 = e1 & 1;
@@ -72,12 +89,41 @@ void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int lda, int i)
     const MeReal *Ai = A + (size_t)i * (size_t)lda;
     MeReal *lk = KeaRow(c, k);
     MeReal d = Ai[i], floor = KEA_PIVOT_FLOOR * KeaMax(Ai[i], ME_R(0.0));
-    int j;
+    int j, f = k;
 
-    /* Forward substitution L l = A_F,i, written straight into row k. */
-    for (j = 0; j < k; ++j) {
+    /* The row's envelope starts at its first coupling to a row already in the factor; before it,
+     * L is zero (fill stays inside the envelope), and nothing there is written or read. */
+    if (c->patternStart) {
+        for (j = c->patternStart[i]; j < c->patternStart[i + 1]; ++j) {
+            const int p = c->pos[c->pattern[j]];
+            if (p >= 0 && p < f)
+                f = p;
+        }
+    } else {
+        for (j = 0; j < k; ++j)
+            if (Ai[c->F[j]] != ME_R(0.0)) {
+                f = j;
+                break;
+            }
+    }
+    /* A_F,i into row k (with a pattern, only A's structural non-zeros are read: the rest of A may
+     * be stale), then forward substitution L l = A_F,i in place, over the two envelopes. */
+    if (c->patternStart) {
+        for (j = f; j < k; ++j)
+            lk[j] = ME_R(0.0);
+        for (j = c->patternStart[i]; j < c->patternStart[i + 1]; ++j) {
+            const int p = c->pos[c->pattern[j]];
+            if (p >= 0)
+                lk[p] = Ai[c->pattern[j]];
+        }
+    } else {
+        for (j = f; j < k; ++j)
+            lk[j] = Ai[c->F[j]];
+    }
+    for (j = f; j < k; ++j) {
         const MeReal *lj = KeaRow(c, j);
-        lk[j] = (Ai[c->F[j]] - KeaDotN4(lj, lk, j)) / lj[j];
+        const int m0 = f > c->first[j] ? f : c->first[j];
+        lk[j] = (lk[j] - KeaDotN4(lj + m0, lk + m0, j - m0)) / lj[j];
         d -= lk[j] * lk[j];
     }
     if (!(d > floor)) {
@@ -85,6 +131,7 @@ void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int lda, int i)
         ++c->regularised;
     }
     lk[k] = KeaSqrt(d);
+    c->first[k] = f;
     c->F[k] = i;
     c->pos[i] = k;
     c->size = k + 1;
@@ -96,16 +143,27 @@ void KeaCholeskyRemove(KeaCholesky *c, int p)
     int i, j, m;
 
     /* Rank-one update of the trailing block with the removed column v (kept in column p as it is
-     * consumed: v_i lives in L[i][p]). */
+     * consumed: v_i lives in L[i][p]). A row whose envelope starts after p has v_i = 0 until the
+     * rotations reach its envelope; a column with v_j = 0 is an identity rotation, skipped. */
+    for (i = p + 1; i < k; ++i)
+        if (c->first[i] > p)
+            KeaRow(c, i)[p] = ME_R(0.0);
     for (j = p + 1; j < k; ++j) {
         MeReal *lj = KeaRow(c, j);
         const MeReal ljj = lj[j], vj = lj[p];
-        const MeReal r = KeaSqrt(ljj * ljj + vj * vj);
-        const MeReal cs = r / ljj, sn = vj / ljj;
+        MeReal r, cs, sn;
+        if (vj == ME_R(0.0))
+            continue;
+        r = KeaSqrt(ljj * ljj + vj * vj);
+        cs = r / ljj;
+        sn = vj / ljj;
         lj[j] = r;
         for (i = j + 1; i < k; ++i) {
             MeReal *li = KeaRow(c, i);
-            const MeReal lij = (li[j] + sn * li[p]) / cs;
+            MeReal lij;
+            if (c->first[i] > j)
+                continue; /* li[j] = 0 and li[p] = 0: the rotation leaves both zero */
+            lij = (li[j] + sn * li[p]) / cs;
             li[p] = cs * li[p] - sn * lij;
             li[j] = lij;
         }
@@ -114,10 +172,10 @@ void KeaCholeskyRemove(KeaCholesky *c, int p)
     c->pos[c->F[p]] = -1;
     for (i = p + 1; i < k; ++i) {
         MeReal *src = KeaRow(c, i), *dst = KeaRow(c, i - 1);
-        for (m = 0; m < p; ++m)
-            dst[m] = src[m];
-        for (m = p; m < i; ++m)
-            dst[m] = src[m + 1];
+        const int f = c->first[i] > p ? c->first[i] - 1 : c->first[i];
+        for (m = f; m < i; ++m)
+            dst[m] = src[m < p ? m : m + 1];
+        c->first[i - 1] = f;
         c->F[i - 1] = c->F[i];
         c->pos[c->F[i - 1]] = i - 1;
     }
@@ -130,13 +188,14 @@ void KeaCholeskySolve(const KeaCholesky *c, MeReal *b)
     int i, j;
     for (i = 0; i < k; ++i) { /* L y = b */
         const MeReal *li = KeaRow(c, i);
-        b[i] = (b[i] - KeaDotN4(li, b, i)) / li[i];
+        const int f = c->first[i];
+        b[i] = (b[i] - KeaDotN4(li + f, b + f, i - f)) / li[i];
     }
     for (i = k - 1; i >= 0; --i) { /* L^T x = y, column-oriented so that L is read by rows */
         const MeReal *li = KeaRow(c, i);
         const MeReal xi = b[i] / li[i];
         b[i] = xi;
-        for (j = 0; j < i; ++j)
+        for (j = c->first[i]; j < i; ++j)
             b[j] -= li[j] * xi;
     }
 }

@@ -44,7 +44,8 @@ struct KeaDenseWork {
     KeaCholesky chol;    /**< factor of the free block */
     MeReal *lo, *hi;     /**< bounds of the current pass */
     MeReal *y;           /**< Newton point (by position in F) */
-    int *nonzero;        /**< rows with x != 0 (scratch list) */
+    int *nonzero;        /**< rows with x != 0 (scratch list; dense LCPs without a pattern) */
+    MeReal *xFixed;      /**< x on the fixed rows, 0 on the free ones (scratch) */
     signed char *state;  /**< KEA_FREE, KEA_AT_LO, KEA_AT_HI */
     unsigned char *locked; /**< freed-and-refixed without progress: not freed again for now */
     /* Friction polish (coupled solve), at most n/2 normal rows carry sliding friction rows: */
@@ -66,10 +67,12 @@ KeaDenseWork *KeaDenseWorkCreate(KeaArena *arena, int n)
     w->chol.L = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)n);
     w->chol.F = KEA_ALLOC(arena, int, n);
     w->chol.pos = KEA_ALLOC(arena, int, n);
+    w->chol.first = KEA_ALLOC(arena, int, n);
     w->lo = KEA_ALLOC(arena, MeReal, n);
     w->hi = KEA_ALLOC(arena, MeReal, n);
     w->y = KEA_ALLOC(arena, MeReal, n);
     w->nonzero = KEA_ALLOC(arena, int, n);
+    w->xFixed = KEA_ALLOC(arena, MeReal, n);
     w->state = KEA_ALLOC(arena, signed char, n);
     w->locked = KEA_ALLOC(arena, unsigned char, n);
     w->U = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)half);
@@ -108,17 +111,47 @@ static void KeaDenseBounds(const KeaDenseLcp *lcp, const MeReal *x, int i, MeRea
     }
 }
 
-/* Free every row that is free by state, in index order (a fresh factorisation). */
+/* The rows that may be non-zero in v: the LCP's pattern makes them unnecessary (list unused). */
+static int KeaDenseNonzeros(const KeaDenseLcp *lcp, const MeReal *v, int *list)
+{
+    int j, nz = 0;
+    if (lcp->patternStart)
+        return 0;
+    for (j = 0; j < lcp->n; ++j)
+        if (v[j] != ME_R(0.0))
+            list[nz++] = j;
+    return nz;
+}
+
+/* (A v)_i: over row i's pattern when the LCP has one, else over the nz listed non-zeros of v. */
+static MeReal KeaDenseRowDot(const KeaDenseLcp *lcp, int i, const MeReal *v, const int *list, int nz)
+{
+    const MeReal *Ai = lcp->A + (size_t)i * (size_t)lcp->n;
+    MeReal s = ME_R(0.0);
+    int k;
+    if (lcp->patternStart) {
+        for (k = lcp->patternStart[i]; k < lcp->patternStart[i + 1]; ++k)
+            s += Ai[lcp->pattern[k]] * v[lcp->pattern[k]];
+    } else {
+        for (k = 0; k < nz; ++k)
+            s += Ai[list[k]] * v[list[k]];
+    }
+    return s;
+}
+
+/* Free every row that is free by state, in the LCP's order (a fresh factorisation). */
 static void KeaDenseFactorFree(const KeaDenseLcp *lcp, KeaDenseWork *w, KeaStats *stats)
 {
     const int n = lcp->n;
-    int i;
+    int i, k;
     w->chol.size = 0;
     for (i = 0; i < n; ++i)
         w->chol.pos[i] = -1;
-    for (i = 0; i < n; ++i)
+    for (k = 0; k < n; ++k) {
+        i = lcp->order ? lcp->order[k] : k;
         if (w->state[i] == KEA_FREE)
             KeaCholeskyAppend(&w->chol, lcp->A, n, i);
+    }
     ++stats->factorizations;
 }
 
@@ -142,19 +175,14 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
 
     for (;;) {
         MeReal alpha = ME_R(1.0);
-        int block = -1, blockSide = KEA_FREE, nz = 0;
+        int block = -1, blockSide = KEA_FREE, nz;
 
         /* 1. Newton point on the face: A_FF y = r_F - A_FB x_B. */
         for (j = 0; j < n; ++j)
-            if (c->pos[j] < 0 && x[j] != ME_R(0.0))
-                w->nonzero[nz++] = j;
-        for (p = 0; p < c->size; ++p) {
-            const MeReal *Ai = lcp->A + (size_t)c->F[p] * (size_t)n;
-            MeReal s = r[c->F[p]];
-            for (j = 0; j < nz; ++j)
-                s -= Ai[w->nonzero[j]] * x[w->nonzero[j]];
-            w->y[p] = s;
-        }
+            w->xFixed[j] = c->pos[j] < 0 ? x[j] : ME_R(0.0);
+        nz = KeaDenseNonzeros(lcp, w->xFixed, w->nonzero);
+        for (p = 0; p < c->size; ++p)
+            w->y[p] = r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], w->xFixed, w->nonzero, nz);
         KeaCholeskySolve(c, w->y);
 
         /* 2. Ratio test along y - x_F (ties go to the first row in F: deterministic). */
@@ -209,26 +237,18 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
         {
             MeReal xScale = ME_R(0.0), tolW, bestScore = ME_R(0.0);
             int best = -1;
-            nz = 0;
-            for (j = 0; j < n; ++j) {
+            for (j = 0; j < n; ++j)
                 xScale = KeaMax(xScale, KeaFabs(x[j]));
-                if (x[j] != ME_R(0.0))
-                    w->nonzero[nz++] = j;
-            }
+            nz = KeaDenseNonzeros(lcp, x, w->nonzero);
             tolW = KEA_DIRECT_TOL * (rScale + diagMax * xScale);
             for (j = 0; j < n; ++j) {
-                const MeReal *Aj;
                 MeReal wj, score;
-                int k;
                 if (w->state[j] == KEA_FREE || w->locked[j] || !(w->lo[j] < w->hi[j]))
                     continue;
-                Aj = lcp->A + (size_t)j * (size_t)n;
-                wj = -r[j];
-                for (k = 0; k < nz; ++k)
-                    wj += Aj[w->nonzero[k]] * x[w->nonzero[k]];
+                wj = KeaDenseRowDot(lcp, j, x, w->nonzero, nz) - r[j];
                 if (w->state[j] == KEA_AT_LO ? wj >= -tolW : wj <= tolW)
                     continue;
-                score = wj * wj / KeaMax(Aj[j], ME_MIN_EPSILON);
+                score = wj * wj / KeaMax(lcp->A[(size_t)j * (size_t)n + (size_t)j], ME_MIN_EPSILON);
                 if (score > bestScore) {
                     bestScore = score;
                     best = j;
@@ -378,19 +398,11 @@ static void KeaPolishCandidate(const KeaDenseLcp *lcp, KeaDenseWork *w)
 /* y[p] = (r - A cand)_F[p]: the residual of the free rows' equations at cand. */
 static void KeaPolishResidual(const KeaDenseLcp *lcp, KeaDenseWork *w)
 {
-    const int n = lcp->n;
     const KeaCholesky *c = &w->chol;
-    int j, p, nz = 0;
-    for (j = 0; j < n; ++j)
-        if (w->cand[j] != ME_R(0.0))
-            w->nonzero[nz++] = j;
-    for (p = 0; p < c->size; ++p) {
-        const MeReal *Ai = lcp->A + (size_t)c->F[p] * (size_t)n;
-        MeReal s = lcp->r[c->F[p]];
-        for (j = 0; j < nz; ++j)
-            s -= Ai[w->nonzero[j]] * w->cand[w->nonzero[j]];
-        w->y[p] = s;
-    }
+    const int nz = KeaDenseNonzeros(lcp, w->cand, w->nonzero);
+    int p;
+    for (p = 0; p < c->size; ++p)
+        w->y[p] = lcp->r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], w->cand, w->nonzero, nz);
 }
 
 static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
@@ -421,8 +433,14 @@ static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
             continue;
         coef = (w->state[i] == KEA_AT_HI ? ME_R(1.0) : ME_R(-1.0)) * lcp->mu[i];
         u = w->U + (size_t)w->slot[lcp->link[i]] * (size_t)k;
-        for (p = 0; p < k; ++p)
-            u[p] += coef * lcp->A[(size_t)c->F[p] * (size_t)n + (size_t)i];
+        if (lcp->patternStart) { /* A is symmetric, so is its pattern: column i = row i */
+            for (j = lcp->patternStart[i]; j < lcp->patternStart[i + 1]; ++j)
+                if (c->pos[lcp->pattern[j]] >= 0)
+                    u[c->pos[lcp->pattern[j]]] += coef * lcp->A[(size_t)i * (size_t)n + (size_t)lcp->pattern[j]];
+        } else {
+            for (p = 0; p < k; ++p)
+                u[p] += coef * lcp->A[(size_t)c->F[p] * (size_t)n + (size_t)i];
+        }
     }
     for (a = 0; a < m; ++a)
         KeaCholeskySolve(c, w->U + (size_t)a * (size_t)k);
@@ -454,18 +472,15 @@ static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
     }
     tolW = ME_R(10.0) * KEA_DIRECT_TOL * (rScale + diagMax * xScale);
     tolX = ME_R(100.0) * KEA_DIRECT_TOL * xScale;
-    for (j = 0; j < n; ++j)
-        if (w->cand[j] != ME_R(0.0))
-            w->nonzero[nz++] = j;
+    nz = KeaDenseNonzeros(lcp, w->cand, w->nonzero);
     for (i = 0; i < n; ++i) { /* natural-map test at the candidate's own bounds, every row alike */
-        const MeReal *Ai = lcp->A + (size_t)i * (size_t)n;
-        const MeReal d = Ai[i] > ME_R(0.0) ? Ai[i] : ME_R(1.0);
-        MeReal lo, hi, wi = -lcp->r[i];
+        const MeReal Aii = lcp->A[(size_t)i * (size_t)n + (size_t)i];
+        const MeReal d = Aii > ME_R(0.0) ? Aii : ME_R(1.0);
+        MeReal lo, hi, wi;
         KeaDenseBounds(lcp, w->cand, i, &lo, &hi);
         if (w->cand[i] < lo - tolX || w->cand[i] > hi + tolX)
             return 0;
-        for (j = 0; j < nz; ++j)
-            wi += Ai[w->nonzero[j]] * w->cand[w->nonzero[j]];
+        wi = KeaDenseRowDot(lcp, i, w->cand, w->nonzero, nz) - lcp->r[i];
         if (d * KeaFabs(KeaClamp(w->cand[i], lo, hi) - KeaClamp(w->cand[i] - wi / d, lo, hi)) > tolW)
             return 0;
     }
@@ -479,21 +494,13 @@ static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
 /* One step of iterative refinement on the free block: x_F += A_FF^-1 (r - A x)_F. */
 static void KeaDenseRefine(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
 {
-    const int n = lcp->n;
     KeaCholesky *c = &w->chol;
-    int p, j, nz = 0;
+    int p, nz;
     if (c->size == 0)
         return;
-    for (j = 0; j < n; ++j)
-        if (x[j] != ME_R(0.0))
-            w->nonzero[nz++] = j;
-    for (p = 0; p < c->size; ++p) {
-        const MeReal *Ai = lcp->A + (size_t)c->F[p] * (size_t)n;
-        MeReal s = lcp->r[c->F[p]];
-        for (j = 0; j < nz; ++j)
-            s -= Ai[w->nonzero[j]] * x[w->nonzero[j]];
-        w->y[p] = s;
-    }
+    nz = KeaDenseNonzeros(lcp, x, w->nonzero);
+    for (p = 0; p < c->size; ++p)
+        w->y[p] = lcp->r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], x, w->nonzero, nz);
     KeaCholeskySolve(c, w->y);
     for (p = 0; p < c->size; ++p) {
         const int i = c->F[p];
@@ -510,6 +517,8 @@ KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses,
     int i, polished = 0, passes = 1;
 
     w->chol.regularised = 0;
+    w->chol.patternStart = lcp->patternStart;
+    w->chol.pattern = lcp->pattern;
     /* Warm start: bounds from x as given (links read the unclamped normal impulses), then clamp. */
     for (i = 0; i < n; ++i)
         KeaDenseBounds(lcp, x, i, &w->lo[i], &w->hi[i]);

@@ -1,13 +1,21 @@
 /* kea_direct.c -- Kea's direct path: one partition solved exactly.
  *
- * Forms the dense A = J M^-1 J^T + diag(eps) (kea_dense.c; each row touches at most two bodies, so
- * only rows sharing a body interact) and hands it with the rows' rhs, bounds and friction links to
- * the dense box-LCP solver (kea_dense_lcp.c: primal active set with an updatable Cholesky factor,
+ * Forms A = J M^-1 J^T + diag(eps) (kea_dense.c; each row touches at most two bodies, so only rows
+ * sharing a body interact: that is A's pattern), orders the rows so that the Cholesky factor stays
+ * sparse (kea_order.c), and hands A with the rows' rhs, bounds, friction links, order and pattern to
+ * the box-LCP solver (kea_dense_lcp.c: primal active set with an updatable Cholesky factor,
  * friction passes and a Woodbury polish of the coupled friction). Then Delta v = M^-1 J^T x.
  *
- * Cost: forming A is O(n^2) to clear plus O(sum over bodies of degree^2) dot products; the solve is
- * about one Cholesky factorisation, O(n^3 / 3), plus O(n^2) per pivot; memory is about 2.75 n^2 reals
- * (A, the factor, the polish's Woodbury columns). */
+ * Cost: the factor works on envelopes (kea_dense.c): about linear in the rows for a chain or a tree
+ * of bodies, O(n^3 / 6) at worst (every row coupled to every other); products with A follow its
+ * pattern. Storage is still dense, about 3.75 n^2 reals and ints (A, the factor, the polish's
+ * Woodbury columns, the pattern), which is why KeaPathAuto takes this path only up to
+ * 4 maxDirectRows rows.
+ *
+ * Auto's choice above maxDirectRows rows (mayDecline): after ordering, the factor's envelope is
+ * counted; if it exceeds maxDirectRows (maxDirectRows + 1) / 2 entries, a dense factor of
+ * maxDirectRows rows, the path declines (KeaStatusDeclined) before forming A and the iterative
+ * path solves the partition instead. */
 #include "kea_internal.h"
 
 typedef struct KeaDirectWork {
@@ -15,6 +23,11 @@ typedef struct KeaDirectWork {
     MeReal *A;          /**< n x n */
     int *incidence;     /**< 2n: body -> row incidence for forming A */
     int *start;         /**< nb + 1 */
+    int *order;         /**< n: factoring order (kea_order.c) */
+    int *patternStart;  /**< n + 1: A's structural non-zeros by row (rows sharing a body) */
+    int *pattern;       /**< at most n^2 */
+    int *mark;          /**< n: scratch for building the pattern */
+    int *orderScratch;  /**< KeaEliminationOrderScratch ints */
     KeaDenseWork *lcp;  /**< the dense solver's workspace */
 } KeaDirectWork;
 
@@ -24,7 +37,39 @@ static void KeaDirectLayout(KeaArena *arena, int n, int nb, KeaDirectWork *w)
     w->A = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)n);
     w->incidence = KEA_ALLOC(arena, int, 2 * n);
     w->start = KEA_ALLOC(arena, int, nb + 1);
+    w->order = KEA_ALLOC(arena, int, n);
+    w->patternStart = KEA_ALLOC(arena, int, n + 1);
+    w->pattern = KEA_ALLOC(arena, int, (size_t)n * (size_t)n);
+    w->mark = KEA_ALLOC(arena, int, n);
+    w->orderScratch = KEA_ALLOC(arena, int, KeaEliminationOrderScratch(n, nb));
     w->lcp = KeaDenseWorkCreate(arena, n);
+}
+
+/* Row i's structural non-zeros: every row on one of its bodies (itself included), once each. */
+static void KeaDirectPattern(const KeaProblem *problem, const int *incidence, const int *start, KeaDirectWork *w)
+{
+    const int n = problem->nRows;
+    int i, h, p, count = 0;
+    for (i = 0; i < n; ++i)
+        w->mark[i] = -1;
+    for (i = 0; i < n; ++i) {
+        w->patternStart[i] = count;
+        for (h = 0; h < 2; ++h) {
+            const int b = problem->rowBodies[i][h];
+            if (b < 0)
+                continue;
+            for (p = start[b]; p < start[b + 1]; ++p) {
+                const int col = incidence[p] >> 1;
+                if (w->mark[col] != i) {
+                    w->mark[col] = i;
+                    w->pattern[count++] = col;
+                }
+            }
+        }
+        if (w->mark[i] != i) /* a row on no body still has its diagonal */
+            w->pattern[count++] = i;
+    }
+    w->patternStart[n] = count;
 }
 
 size_t KeaDirectWorkspaceBytes(int nRows, int nBodies)
@@ -35,8 +80,27 @@ size_t KeaDirectWorkspaceBytes(int nRows, int nBodies)
     return counter.used;
 }
 
+/* Entries of the factor's envelope, sum over k of (k - first_k), if every row were free: an upper
+ * bound of the factor's and a solve's work in the rows' factoring order. */
+static long long KeaDirectEnvelope(int n, const KeaDirectWork *w)
+{
+    long long envelope = 0;
+    int k, j;
+    for (k = 0; k < n; ++k) /* position of each row in the order (mark is free scratch again) */
+        w->mark[w->order[k]] = k;
+    for (k = 0; k < n; ++k) {
+        const int i = w->order[k];
+        int first = k;
+        for (j = w->patternStart[i]; j < w->patternStart[i + 1]; ++j)
+            if (w->mark[w->pattern[j]] < first)
+                first = w->mark[w->pattern[j]];
+        envelope += k - first;
+    }
+    return envelope;
+}
+
 KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
-                         MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
+                         int mayDecline, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
 {
     const int n = problem->nRows;
     KeaDirectWork w;
@@ -45,9 +109,17 @@ KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params,
     int i;
 
     KeaDirectLayout(arena, n, problem->nBodies, &w);
+    KeaBodyIncidence(problem, w.incidence, w.start);
+    KeaEliminationOrder(problem, w.incidence, w.start, w.orderScratch, w.order);
+    KeaDirectPattern(problem, w.incidence, w.start, &w);
+    if (mayDecline) {
+        const long long budget = (long long)params->maxDirectRows * ((long long)params->maxDirectRows + 1) / 2;
+        if (KeaDirectEnvelope(n, &w) > budget)
+            return KeaStatusDeclined;
+    }
     for (i = 0; i < n; ++i)
         (void)KeaRowInvMassJT(problem, i, &w.B[i]);
-    KeaFormDenseMatrix(problem, w.B, w.A, w.incidence, w.start);
+    KeaFormDenseMatrix(problem, w.B, w.A, w.incidence, w.start, w.patternStart, w.pattern);
 
     lcp.n = n;
     lcp.A = w.A;
@@ -56,6 +128,9 @@ KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params,
     lcp.hi = problem->hi;
     lcp.link = problem->link;
     lcp.mu = problem->mu;
+    lcp.order = w.order;
+    lcp.patternStart = w.patternStart;
+    lcp.pattern = w.pattern;
     status = KeaDenseLcpSolve(&lcp, params->maxPivots, params->maxFrictionPasses, w.lcp, x, stats);
     KeaBodyVelocityFromImpulses(problem, x, dv);
     return status;

@@ -147,10 +147,14 @@ static inline void KeaRowBoundsInline(const KeaProblem *problem, const MeReal *x
 
 /* ---- dense matrix and updatable Cholesky factor (kea_dense.c) -------------------------------- */
 
-/** A = J M^-1 J^T + diag(eps), dense n x n row-major, using B (M^-1 J^T rows) and a body -> rows
- *  incidence list built in `incidence` (2n ints) and `start` (nb + 1 ints). */
-void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeReal *A, int *incidence,
-                        int *start);
+/** The body -> (row, half) incidence: body b's entries are incidence[start[b] .. start[b+1] - 1],
+ *  each 2 * row + half, rows ascending (incidence: 2n ints, start: nb + 1 ints). */
+void KeaBodyIncidence(const KeaProblem *problem, int *incidence, int *start);
+/** A = J M^-1 J^T + diag(eps), dense n x n row-major, using B (M^-1 J^T rows) and the incidence.
+ *  With a pattern (rows sharing a body, as the direct path builds it; may be NULL) only the pattern's
+ *  entries are written, and the rest of A is left as it was. */
+void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeReal *A, const int *incidence,
+                        const int *start, const int *patternStart, const int *pattern);
 
 /** Cholesky factor L (row-major, leading dimension ld) of A restricted to an ordered list of rows
  *  F[0..size-1]: A_FF = L L^T. */
@@ -160,6 +164,8 @@ typedef struct KeaCholesky {
     int size;   /**< rows in the factor */
     int *F;     /**< F[k] = problem row at position k */
     int *pos;   /**< pos[i] = position of problem row i in F, or -1 */
+    int *first; /**< first[k] = first column of row k's envelope (L[k][j] = 0 for j < first[k]) */
+    const int *patternStart, *pattern; /**< the LCP's pattern (KeaDenseLcp), or NULL: A is scanned */
     int regularised; /**< pivots raised to the floor so far */
 } KeaCholesky;
 
@@ -190,6 +196,10 @@ typedef struct KeaDenseLcp {
     const MeReal *hi;    /**< own upper bounds */
     const int *link;     /**< normal row of a friction row, or -1 (NULL: no links) */
     const MeReal *mu;    /**< friction coefficients of linked rows */
+    const int *order;    /**< order in which free rows enter a fresh factor (NULL: index order) */
+    const int *patternStart; /**< n + 1: row i's structural non-zeros are pattern[patternStart[i] ..
+                                  patternStart[i+1] - 1] (NULL: A treated as full) */
+    const int *pattern;
 } KeaDenseLcp;
 
 /** Workspace of the dense solver, for LCPs of up to `capacity` rows. */
@@ -205,6 +215,15 @@ size_t KeaDenseWorkspaceBytes(int n);
 KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses, KeaDenseWork *w,
                            MeReal *x, KeaStats *stats);
 
+/* ---- the direct path's row order (kea_order.c) ---------------------------------------------- */
+
+/** ints of scratch KeaEliminationOrder needs. */
+size_t KeaEliminationOrderScratch(int nRows, int nBodies);
+/** A factoring order of the problem's rows (order[k] = row factored k-th) that keeps the Cholesky
+ *  factor's fill and envelopes small, from the body -> (row, half) incidence (KeaBodyIncidence). */
+void KeaEliminationOrder(const KeaProblem *problem, const int *incidence, const int *start, int *scratch,
+                         int *order);
+
 /* ---- the two paths -------------------------------------------------------------------------- */
 
 size_t KeaDirectWorkspaceBytes(int nRows, int nBodies);
@@ -214,7 +233,14 @@ size_t KeaIterativeWorkspaceBytes(int nRows, int nBodies);
  * dv (nBodies, never NULL here) and fill the path-specific fields of stats; the iterative path also
  * fills stats->residual (KeaResidual's measure, from the diagonal and padded rows it already has). */
 KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
-                         MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
+                         int mayDecline, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
+
+/** KeaSolveDirect's answer when mayDecline is set and the factor would cost more than a dense one of
+ *  maxDirectRows rows: nothing solved, x untouched. Never returned by KeaSolve. */
+#define KeaStatusDeclined ((KeaStatus)-1)
+
+/** Auto takes the direct path up to this many times maxDirectRows rows when the factor is sparse. */
+#define KEA_SPARSE_DIRECT_FACTOR 4
 KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
                             MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
 

@@ -442,6 +442,8 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
     lcp.hi = w->localHi;
     lcp.link = w->localLink;
     lcp.mu = problem->mu ? problem->mu + s : NULL;
+    lcp.order = NULL;
+    lcp.patternStart = lcp.pattern = NULL;
     if (!lcp.mu)
         lcp.link = NULL;
     memset(&local, 0, sizeof local);

@@ -26,7 +26,11 @@ KeaPath KeaSelectPath(int nRows, const KeaParameters *params)
 {
     if (params->path == KeaPathDirect || params->path == KeaPathIterative)
         return params->path;
-    return nRows <= params->maxDirectRows ? KeaPathDirect : KeaPathIterative;
+    if (nRows <= params->maxDirectRows)
+        return KeaPathDirect;
+    if ((long long)nRows <= KEA_SPARSE_DIRECT_FACTOR * (long long)params->maxDirectRows)
+        return KeaPathAuto; /* direct if the factor is sparse enough: decided by KeaSolve */
+    return KeaPathIterative;
 }
 
 static size_t KeaVelocityBytes(int nBodies)
@@ -151,10 +155,18 @@ KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void 
             x[i] = ME_R(0.0);
     }
 
-    if (path == KeaPathDirect) {
-        stats->status = KeaSolveDirect(problem, params, &arena, x, velocity, stats);
+    if (path == KeaPathAuto) { /* between maxDirectRows and the sparse limit: try the direct path */
+        KeaArena tryArena = arena;
+        stats->status = KeaSolveDirect(problem, params, &tryArena, 1, x, velocity, stats);
+        path = stats->status == KeaStatusDeclined ? KeaPathIterative : KeaPathDirect;
+        stats->path = path;
+        if (path == KeaPathDirect)
+            stats->residual = KeaResidual(problem, x, velocity);
+    } else if (path == KeaPathDirect) {
+        stats->status = KeaSolveDirect(problem, params, &arena, 0, x, velocity, stats);
         stats->residual = KeaResidual(problem, x, velocity);
-    } else { /* fills stats->residual itself */
+    }
+    if (path == KeaPathIterative) { /* fills stats->residual itself */
         stats->status = KeaSolveIterative(problem, params, &arena, x, velocity, stats);
     }
     return stats->status;
