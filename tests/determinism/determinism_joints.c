@@ -17,9 +17,9 @@
 #define STEP_SIZE (ME_R(1.0) / 60)
 
 #if KARMA_DOUBLE
-#  define GOLDEN_HASH 0x393cf2e5c417b879ull
+#  define GOLDEN_HASH 0x3fad7f955d45ef1aull
 #else
-#  define GOLDEN_HASH 0x0de2030e30a4a635ull
+#  define GOLDEN_HASH 0x69cf10c4fe37862aull
 #endif
 
 typedef struct Scene {

@@ -111,31 +111,34 @@ static void KeaDenseBounds(const KeaDenseLcp *lcp, const MeReal *x, int i, MeRea
     }
 }
 
-/* The rows that may be non-zero in v: the LCP's pattern makes them unnecessary (list unused). */
-static int KeaDenseNonzeros(const KeaDenseLcp *lcp, const MeReal *v, int *list)
+/* Get ready for products (A v)_i with this v: with the LCP's rows, the bodies' velocity changes
+ * M^-1 J^T v (O(n)), so that each product costs one row (A v = J M^-1 J^T v + eps v); else the list
+ * of v's non-zeros (returns their count). */
+static int KeaDensePrepare(const KeaDenseLcp *lcp, const MeReal *v, int *list)
 {
     int j, nz = 0;
-    if (lcp->patternStart)
+    if (lcp->rows) {
+        KeaBodyVelocityFromImpulses(lcp->rows, v, lcp->velocity);
         return 0;
+    }
     for (j = 0; j < lcp->n; ++j)
         if (v[j] != ME_R(0.0))
             list[nz++] = j;
     return nz;
 }
 
-/* (A v)_i: over row i's pattern when the LCP has one, else over the nz listed non-zeros of v. */
+/* (A v)_i, after KeaDensePrepare(lcp, v, list) returned nz. */
 static MeReal KeaDenseRowDot(const KeaDenseLcp *lcp, int i, const MeReal *v, const int *list, int nz)
 {
     const MeReal *Ai = lcp->A + (size_t)i * (size_t)lcp->n;
     MeReal s = ME_R(0.0);
     int k;
-    if (lcp->patternStart) {
-        for (k = lcp->patternStart[i]; k < lcp->patternStart[i + 1]; ++k)
-            s += Ai[lcp->pattern[k]] * v[lcp->pattern[k]];
-    } else {
-        for (k = 0; k < nz; ++k)
-            s += Ai[list[k]] * v[list[k]];
+    if (lcp->rows) {
+        const KeaProblem *p = lcp->rows;
+        return KeaRowVelocity(&p->J[i], p->rowBodies[i], lcp->velocity) + (p->epsilon ? p->epsilon[i] * v[i] : ME_R(0.0));
     }
+    for (k = 0; k < nz; ++k)
+        s += Ai[list[k]] * v[list[k]];
     return s;
 }
 
@@ -180,7 +183,7 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
         /* 1. Newton point on the face: A_FF y = r_F - A_FB x_B. */
         for (j = 0; j < n; ++j)
             w->xFixed[j] = c->pos[j] < 0 ? x[j] : ME_R(0.0);
-        nz = KeaDenseNonzeros(lcp, w->xFixed, w->nonzero);
+        nz = KeaDensePrepare(lcp, w->xFixed, w->nonzero);
         for (p = 0; p < c->size; ++p)
             w->y[p] = r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], w->xFixed, w->nonzero, nz);
         KeaCholeskySolve(c, w->y);
@@ -239,7 +242,7 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
             int best = -1;
             for (j = 0; j < n; ++j)
                 xScale = KeaMax(xScale, KeaFabs(x[j]));
-            nz = KeaDenseNonzeros(lcp, x, w->nonzero);
+            nz = KeaDensePrepare(lcp, x, w->nonzero);
             tolW = KEA_DIRECT_TOL * (rScale + diagMax * xScale);
             for (j = 0; j < n; ++j) {
                 MeReal wj, score;
@@ -399,7 +402,7 @@ static void KeaPolishCandidate(const KeaDenseLcp *lcp, KeaDenseWork *w)
 static void KeaPolishResidual(const KeaDenseLcp *lcp, KeaDenseWork *w)
 {
     const KeaCholesky *c = &w->chol;
-    const int nz = KeaDenseNonzeros(lcp, w->cand, w->nonzero);
+    const int nz = KeaDensePrepare(lcp, w->cand, w->nonzero);
     int p;
     for (p = 0; p < c->size; ++p)
         w->y[p] = lcp->r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], w->cand, w->nonzero, nz);
@@ -472,7 +475,7 @@ static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
     }
     tolW = ME_R(10.0) * KEA_DIRECT_TOL * (rScale + diagMax * xScale);
     tolX = ME_R(100.0) * KEA_DIRECT_TOL * xScale;
-    nz = KeaDenseNonzeros(lcp, w->cand, w->nonzero);
+    nz = KeaDensePrepare(lcp, w->cand, w->nonzero);
     for (i = 0; i < n; ++i) { /* natural-map test at the candidate's own bounds, every row alike */
         const MeReal Aii = lcp->A[(size_t)i * (size_t)n + (size_t)i];
         const MeReal d = Aii > ME_R(0.0) ? Aii : ME_R(1.0);
@@ -498,7 +501,7 @@ static void KeaDenseRefine(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
     int p, nz;
     if (c->size == 0)
         return;
-    nz = KeaDenseNonzeros(lcp, x, w->nonzero);
+    nz = KeaDensePrepare(lcp, x, w->nonzero);
     for (p = 0; p < c->size; ++p)
         w->y[p] = lcp->r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], x, w->nonzero, nz);
     KeaCholeskySolve(c, w->y);

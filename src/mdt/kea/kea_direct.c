@@ -131,6 +131,8 @@ KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params,
     lcp.order = w.order;
     lcp.patternStart = w.patternStart;
     lcp.pattern = w.pattern;
+    lcp.rows = problem;
+    lcp.velocity = dv; /* scratch until the final velocity change below */
     status = KeaDenseLcpSolve(&lcp, params->maxPivots, params->maxFrictionPasses, w.lcp, x, stats);
     KeaBodyVelocityFromImpulses(problem, x, dv);
     return status;

@@ -198,8 +198,12 @@ typedef struct KeaDenseLcp {
     const MeReal *mu;    /**< friction coefficients of linked rows */
     const int *order;    /**< order in which free rows enter a fresh factor (NULL: index order) */
     const int *patternStart; /**< n + 1: row i's structural non-zeros are pattern[patternStart[i] ..
-                                  patternStart[i+1] - 1] (NULL: A treated as full) */
+                                  patternStart[i+1] - 1] (NULL: A treated as full); with a pattern,
+                                  only A's entries in it are read, and rows must be given */
     const int *pattern;
+    const KeaProblem *rows;  /**< the rows A comes from (A = J M^-1 J^T + diag(eps)), for products
+                                  with A in O(n) (NULL: products read A) */
+    KeaBodyVelocity *velocity; /**< nBodies: scratch for those products */
 } KeaDenseLcp;
 
 /** Workspace of the dense solver, for LCPs of up to `capacity` rows. */

@@ -444,6 +444,8 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
     lcp.mu = problem->mu ? problem->mu + s : NULL;
     lcp.order = NULL;
     lcp.patternStart = lcp.pattern = NULL;
+    lcp.rows = NULL;
+    lcp.velocity = NULL;
     if (!lcp.mu)
         lcp.link = NULL;
     memset(&local, 0, sizeof local);
