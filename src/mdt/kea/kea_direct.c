@@ -135,5 +135,6 @@ KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params,
     lcp.velocity = dv; /* scratch until the final velocity change below */
     status = KeaDenseLcpSolve(&lcp, params->maxPivots, params->maxFrictionPasses, w.lcp, x, stats);
     KeaBodyVelocityFromImpulses(problem, x, dv);
+    stats->residual = KeaResidualWithDiagonal(problem, x, dv, w.A, (size_t)n + 1);
     return status;
 }

@@ -219,6 +219,10 @@ size_t KeaDenseWorkspaceBytes(int n);
 KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses, KeaDenseWork *w,
                            MeReal *x, KeaStats *stats);
 
+/** KeaResidual with the diagonal d_i = A_ii given (diag[i * stride]), e.g. from a formed A. */
+MeReal KeaResidualWithDiagonal(const KeaProblem *problem, const MeReal *x, const KeaBodyVelocity *dv,
+                               const MeReal *diag, size_t stride);
+
 /* ---- the direct path's row order (kea_order.c) ---------------------------------------------- */
 
 /** ints of scratch KeaEliminationOrder needs. */
@@ -234,8 +238,8 @@ size_t KeaDirectWorkspaceBytes(int nRows, int nBodies);
 size_t KeaIterativeWorkspaceBytes(int nRows, int nBodies);
 
 /* Both take a validated problem, an arena of at least their WorkspaceBytes, write x (nRows) and
- * dv (nBodies, never NULL here) and fill the path-specific fields of stats; the iterative path also
- * fills stats->residual (KeaResidual's measure, from the diagonal and padded rows it already has). */
+ * dv (nBodies, never NULL here) and fill the path-specific fields of stats and stats->residual
+ * (KeaResidual's measure, from the diagonal each path already has). */
 KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
                          int mayDecline, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
 

@@ -144,18 +144,37 @@ void KeaBodyVelocityFromImpulses(const KeaProblem *problem, const MeReal *x, Kea
     }
 }
 
+/* Row i's residual at x, with d_i given (NaN propagates: r != r counts as the worst). */
+static MeReal KeaResidualOfRow(const KeaProblem *problem, const MeReal *x, const KeaBodyVelocity *dv, int i,
+                               MeReal d)
+{
+    const MeReal eps = problem->epsilon ? problem->epsilon[i] : ME_R(0.0);
+    const MeReal w = KeaRowVelocity(&problem->J[i], problem->rowBodies[i], dv) + eps * x[i] - problem->rhs[i];
+    MeReal lo, hi;
+    KeaRowBounds(problem, x, i, &lo, &hi);
+    return KeaRowResidual(d, x[i], w, lo, hi);
+}
+
 MeReal KeaResidual(const KeaProblem *problem, const MeReal *x, const KeaBodyVelocity *dv)
 {
     MeReal worst = ME_R(0.0);
     int i;
     for (i = 0; i < problem->nRows; ++i) {
         KeaJacobianRow B;
-        MeReal d = KeaRowInvMassJT(problem, i, &B);
-        MeReal eps = problem->epsilon ? problem->epsilon[i] : ME_R(0.0);
-        MeReal w = KeaRowVelocity(&problem->J[i], problem->rowBodies[i], dv) + eps * x[i] - problem->rhs[i];
-        MeReal lo, hi, r;
-        KeaRowBounds(problem, x, i, &lo, &hi);
-        r = KeaRowResidual(d, x[i], w, lo, hi);
+        const MeReal r = KeaResidualOfRow(problem, x, dv, i, KeaRowInvMassJT(problem, i, &B));
+        if (r > worst || r != r)
+            worst = r;
+    }
+    return worst;
+}
+
+MeReal KeaResidualWithDiagonal(const KeaProblem *problem, const MeReal *x, const KeaBodyVelocity *dv,
+                               const MeReal *diag, size_t stride)
+{
+    MeReal worst = ME_R(0.0);
+    int i;
+    for (i = 0; i < problem->nRows; ++i) {
+        const MeReal r = KeaResidualOfRow(problem, x, dv, i, diag[(size_t)i * stride]);
         if (r > worst || r != r)
             worst = r;
     }

@@ -160,14 +160,10 @@ KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void 
         stats->status = KeaSolveDirect(problem, params, &tryArena, 1, x, velocity, stats);
         path = stats->status == KeaStatusDeclined ? KeaPathIterative : KeaPathDirect;
         stats->path = path;
-        if (path == KeaPathDirect)
-            stats->residual = KeaResidual(problem, x, velocity);
     } else if (path == KeaPathDirect) {
         stats->status = KeaSolveDirect(problem, params, &arena, 0, x, velocity, stats);
-        stats->residual = KeaResidual(problem, x, velocity);
     }
-    if (path == KeaPathIterative) { /* fills stats->residual itself */
+    if (path == KeaPathIterative)
         stats->status = KeaSolveIterative(problem, params, &arena, x, velocity, stats);
-    }
     return stats->status;
 }
