@@ -17,9 +17,9 @@
 #define STEP_SIZE (ME_R(1.0) / 60)
 
 #if KARMA_DOUBLE
-#  define GOLDEN_HASH 0x6fe30012f6c95b29ull
+#  define GOLDEN_HASH 0x3fad7f955d45ef1aull
 #else
-#  define GOLDEN_HASH 0xa0eef859bb69103cull
+#  define GOLDEN_HASH 0x69cf10c4fe37862aull
 #endif
 
 typedef struct Scene {

@@ -185,12 +185,10 @@ void KeaCholeskyRemove(KeaCholesky *c, int p)
 void KeaCholeskySolve(const KeaCholesky *c, MeReal *b)
 {
     const int k = c->size;
-    int i, j, i0 = 0;
-    while (i0 < k && b[i0] == ME_R(0.0)) /* leading zeros of b stay zero in y */
-        ++i0;
-    for (i = i0; i < k; ++i) { /* L y = b */
+    int i, j;
+    for (i = 0; i < k; ++i) { /* L y = b */
         const MeReal *li = KeaRow(c, i);
-        const int f = c->first[i] > i0 ? c->first[i] : i0;
+        const int f = c->first[i];
         b[i] = (b[i] - KeaDotN4(li + f, b + f, i - f)) / li[i];
     }
     for (i = k - 1; i >= 0; --i) { /* L^T x = y, column-oriented so that L is read by rows */
