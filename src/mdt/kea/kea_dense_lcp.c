@@ -34,7 +34,13 @@
  * are freed), until the bounds stop moving or maxFrictionPasses. The fixed point of this outer loop
  * is the solution of the friction-coupled LCP.
  *
- * A final step of iterative refinement on the free block removes the drift left by the updates. */
+ * A final step of iterative refinement on the free block removes the drift left by the updates.
+ *
+ * Sparse partitions (the direct path): the LCP may come with a factoring order, A's pattern and the
+ * rows A is made of (KeaDenseLcp). Then the factor works on envelopes (kea_dense.c), only A's
+ * pattern is read, and every product with A goes through the bodies (A v = J M^-1 J^T v + eps v,
+ * O(n)), so the costs above become those of the sparse factor: about linear in n for chains and
+ * trees of bodies. The blocks of the iterative path use the plain dense form. */
 #include "kea_internal.h"
 
 enum { KEA_FREE = 0, KEA_AT_LO = 1, KEA_AT_HI = 2 };
@@ -44,7 +50,7 @@ struct KeaDenseWork {
     KeaCholesky chol;    /**< factor of the free block */
     MeReal *lo, *hi;     /**< bounds of the current pass */
     MeReal *y;           /**< Newton point (by position in F) */
-    int *nonzero;        /**< rows with x != 0 (scratch list; dense LCPs without a pattern) */
+    int *nonzero;        /**< rows with x != 0 (scratch list; LCPs given without their rows) */
     MeReal *xFixed;      /**< x on the fixed rows, 0 on the free ones (scratch) */
     signed char *state;  /**< KEA_FREE, KEA_AT_LO, KEA_AT_HI */
     unsigned char *locked; /**< freed-and-refixed without progress: not freed again for now */

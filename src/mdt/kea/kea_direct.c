@@ -2,13 +2,14 @@
  *
  * Forms A = J M^-1 J^T + diag(eps) (kea_dense.c; each row touches at most two bodies, so only rows
  * sharing a body interact: that is A's pattern), orders the rows so that the Cholesky factor stays
- * sparse (kea_order.c), and hands A with the rows' rhs, bounds, friction links, order and pattern to
- * the box-LCP solver (kea_dense_lcp.c: primal active set with an updatable Cholesky factor,
- * friction passes and a Woodbury polish of the coupled friction). Then Delta v = M^-1 J^T x.
+ * sparse (kea_order.c), and hands A with the rows' rhs, bounds, friction links, order, pattern and
+ * the rows themselves to the box-LCP solver (kea_dense_lcp.c: primal active set with an updatable
+ * Cholesky factor, friction passes and a Woodbury polish of the coupled friction). Then
+ * Delta v = M^-1 J^T x.
  *
  * Cost: the factor works on envelopes (kea_dense.c): about linear in the rows for a chain or a tree
- * of bodies, O(n^3 / 6) at worst (every row coupled to every other); products with A follow its
- * pattern. Storage is still dense, about 3.75 n^2 reals and ints (A, the factor, the polish's
+ * of bodies, O(n^3 / 6) at worst (every row coupled to every other); a product with A goes through
+ * the bodies, O(n). Storage is still dense, about 3.75 n^2 reals and ints (A, the factor, the polish's
  * Woodbury columns, the pattern), which is why KeaPathAuto takes this path only up to
  * 4 maxDirectRows rows.
  *
