@@ -68,17 +68,26 @@ bin=$BUILD/bench
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 : >"$tmp/settings"
-first=1
 for prog in "${programs[@]}"; do
-    echo "==== $prog"
     "$bin/$prog" --list >>"$tmp/settings"
-    # shellcheck disable=SC2086 # BENCH_ARGS is a list of options
-    if [ $first = 1 ]; then
-        "$bin/$prog" --header --budget="$BUDGET" $BENCH_ARGS >"$tmp/csv"
-        first=0
-    else
-        "$bin/$prog" --budget="$BUDGET" $BENCH_ARGS >>"$tmp/csv"
-    fi
+done
+# Scene by scene, every engine in turn: the engines compared on a scene run minutes apart at most, so
+# that the load of a shared machine, which drifts, weighs on them alike. A --scenes= option in
+# BENCH_ARGS runs as given, in one pass per engine.
+scene_args=("")
+case " $BENCH_ARGS " in
+*" --scenes="*) ;;
+*) mapfile -t scene_args < <(sed -n 's/^scene \([^:]*\):.*/--scenes=\1/p' "$tmp/settings" | awk '!seen[$0]++') ;;
+esac
+header=--header
+: >"$tmp/csv"
+for scene_arg in "${scene_args[@]}"; do
+    for prog in "${programs[@]}"; do
+        echo "==== $prog ${scene_arg#--scenes=}"
+        # shellcheck disable=SC2086 # BENCH_ARGS is a list of options; scene_arg may be empty
+        "$bin/$prog" $header --budget="$BUDGET" $BENCH_ARGS $scene_arg >>"$tmp/csv"
+        header=
+    done
 done
 elapsed=$(($(date +%s) - start))
 load_end=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')
