@@ -128,11 +128,13 @@ cp "$tmp/csv" "$CSV"
         if (v == "nan") return "NaN"
         return sprintf("%.3g m", v)
     }
+    # the figure, and for scenes with joints the mean of each step's largest gap after it
+    function fmt_fig(i) { return fmt_q(qn[i], qv[i]) (jm[i] != "" && jm[i] != "nan" ? sprintf(", mean %.3g m", jm[i]) : "") }
     function ratio(a, b) { return (a != "nan" && b != "" && b != "nan" && b + 0 > 0) ? sprintf("%.2f", a / b) : "-" }
     NR == 1 { next }
     {
         n++; eng[n] = $1; var[n] = $2; sc[n] = $3; steps[n] = $5; run[n] = $6
-        med[n] = $7; mean[n] = $8; cpu[n] = $9; con[n] = $10; qn[n] = $11; qv[n] = $12; st[n] = $13; pen[n] = $14; note[n] = $15
+        med[n] = $7; mean[n] = $8; cpu[n] = $9; con[n] = $10; qn[n] = $11; qv[n] = $12; st[n] = $13; pen[n] = $14; jm[n] = $15; note[n] = $16
         if (!(sc[n] in seen)) { seen[sc[n]] = 1; scenes[++ns] = sc[n] }
         id = $1 " " $2; if (!(id in vseen)) { vseen[id] = 1; variants[++nv] = id }
         complete = run[n] == steps[n] && med[n] != "nan"
@@ -164,7 +166,7 @@ cp "$tmp/csv" "$CSV"
                 if (!((name, variants[v]) in key)) continue
                 i = key[name, variants[v]]
                 printf "| %s | %s | %d / %d | %s | %s | %s | %.0f | %s | %s | %s | %s, %s | %s |\n", eng[i], var[i], run[i], steps[i],
-                       fmt_ms(med[i]), fmt_ms(cpu[i]), fmt_ms(mean[i]), con[i], fmt_q(qn[i], qv[i]), st[i],
+                       fmt_ms(med[i]), fmt_ms(cpu[i]), fmt_ms(mean[i]), con[i], fmt_fig(i), st[i],
                        pen[i] == "" ? "-" : sprintf("%.1f mm", pen[i] * 1000), ratio(med[i], f), ratio(cpu[i], fc), note[i]
             }
         }
@@ -179,7 +181,7 @@ cp "$tmp/csv" "$CSV"
             for (v = 1; v <= nv; v++) {
                 if (!((scenes[s], variants[v]) in key)) { line = line " |"; continue }
                 i = key[scenes[s], variants[v]]
-                cell = (run[i] == steps[i]) ? fmt_ms(med[i]) " / " fmt_ms(cpu[i]) " (" fmt_q(qn[i], qv[i]) (st[i] == "-" ? "" : ", " (st[i] == "yes" ? "standing" : "fallen")) ")" \
+                cell = (run[i] == steps[i]) ? fmt_ms(med[i]) " / " fmt_ms(cpu[i]) " (" fmt_fig(i) (st[i] == "-" ? "" : ", " (st[i] == "yes" ? "standing" : "fallen")) ")" \
                                             : "stopped at " run[i] "/" steps[i]
                 line = line " " cell " |"
             }

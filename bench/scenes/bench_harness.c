@@ -125,11 +125,11 @@ static void run_one(const BenchEngine *e, const BenchScene *scene, const Options
     double med = median(times, done) * 1e3, cpu = median(cpuTimes, done) * 1e3;
     const char *standing = quality.standing < 0 ? "-" : quality.standing ? "yes" : "no";
     if (done == steps || quality.nonFinite)
-        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,%.6g,%s,%.4f,%s\n", e->engine, e->variant, scene->name,
+        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,%.6g,%s,%.4f,%.6g,%s\n", e->engine, e->variant, scene->name,
                scene->dynamicCount, steps, done, med, mean, cpu, done ? contacts / done : 0.0, scene->qualityName,
-               quality.value, standing, quality.floorPenetration, note);
+               quality.value, standing, quality.floorPenetration, quality.meanJointError, note);
     else /* an incomplete run has no quality figure: it was not measured at the scene's time */
-        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,,-,,%s\n", e->engine, e->variant, scene->name,
+        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,,-,,,%s\n", e->engine, e->variant, scene->name,
                scene->dynamicCount, steps, done, med, mean, cpu, done ? contacts / done : 0.0, scene->qualityName,
                note);
     fflush(stdout);

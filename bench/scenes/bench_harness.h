@@ -24,7 +24,7 @@ extern "C" {
 
 #define BENCH_CSV_HEADER                                                                            \
     "engine,variant,scene,bodies,steps,steps_run,median_ms,mean_ms,median_cpu_ms,mean_contacts,quality_name," \
-    "quality_value,standing,floor_pen_m,note"
+    "quality_value,standing,floor_pen_m,mean_joint_err_m,note"
 
 typedef struct BenchEngine {
     const char *engine;   /**< "karma", "ode", "bullet" */

@@ -535,6 +535,7 @@ void BenchQualityObserve(const BenchScene *scene, BenchQuality *quality, const d
     }
     if (scene->jointCount > 0) {
         double e = BenchJointError(scene, pos, quat);
+        quality->sumJointError += e;
         if (e > quality->maxJointError)
             quality->maxJointError = e;
     }
@@ -545,6 +546,9 @@ void BenchQualityFinish(const BenchScene *scene, BenchQuality *quality, const do
 {
     if (!poses_finite(scene, pos, quat))
         quality->nonFinite = 1;
+    quality->meanJointError = scene->jointCount > 0 && quality->observed > 0
+                                  ? quality->sumJointError / quality->observed
+                                  : (double)NAN;
     quality->standing = -1;
     if (quality->nonFinite) {
         quality->value = NAN;

@@ -136,7 +136,9 @@ typedef struct BenchQuality {
     double value;     /**< the scene's figure (m or count); NaN when the state became non-finite */
     int standing;     /**< 1 standing, 0 fallen, -1 no verdict (scene has none, or run incomplete) */
     double maxDisplacement; /**< largest displacement of a dynamic body at the end (m) */
-    double maxJointError;
+    double maxJointError;    /**< largest joint gap seen in any observed step (m) */
+    double meanJointError;   /**< mean over the observed steps of that step's largest gap (m) */
+    double sumJointError;    /**< running sum for meanJointError */
     double floorPenetration; /**< deepest point of any dynamic body below z = 0 at the end (m, >= 0) */
     int nonFinite;    /**< 1 when some observed pose was NaN or infinite */
     int observed;     /**< steps observed */
