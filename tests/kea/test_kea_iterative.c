@@ -103,6 +103,26 @@ static void error_does_not_grow_with_iteration_cap(void **state)
     assert_true(table[2][2] < 0.1 * table[0][2]);
 }
 
+/* Solve t with the direct path (friction passes to convergence) into xd and with the iterative
+ * path at `iterations` sweeps and no tolerance into xi (its stats in st); returns the largest
+ * difference relative to max(1, |xd|). */
+static double iterative_vs_direct(const KtProblem *t, int iterations, MeReal *xd, MeReal *xi, KeaStats *st)
+{
+    KeaParameters direct = kt_params(KeaPathDirect), iter = kt_params(KeaPathIterative);
+    double err = 0.0, scale = 1.0;
+    int i;
+    direct.maxFrictionPasses = 50;
+    assert_int_equal(kt_solve(&t->p, &direct, xd, NULL, st), KeaStatusOk);
+    iter.maxIterations = iterations;
+    iter.tolerance = ME_R(0.0);
+    kt_solve(&t->p, &iter, xi, NULL, st);
+    for (i = 0; i < t->p.nRows; ++i)
+        scale = fmax(scale, fabs((double)xd[i]));
+    for (i = 0; i < t->p.nRows; ++i)
+        err = fmax(err, fabs((double)xi[i] - (double)xd[i]) / scale);
+    return err;
+}
+
 /* With friction links the iterative path converges to the direct path's coupled solution. */
 static void friction_links_converge_to_direct(void **state)
 {
@@ -113,26 +133,48 @@ static void friction_links_converge_to_direct(void **state)
         KtRng rng = kt_rng((uint64_t)(700 + seed));
         KtProblem t;
         MeReal xd[40], xi[40];
-        KeaParameters direct = kt_params(KeaPathDirect), iter = kt_params(KeaPathIterative);
         KeaStats st;
-        double err = 0.0, scale = 1.0;
-        int i;
+        double err;
         kt_random_contacts(&t, &rng, 10, 6, 6, 0.2, 1e-2);
-        direct.maxFrictionPasses = 50;
-        assert_int_equal(kt_solve(&t.p, &direct, xd, NULL, &st), KeaStatusOk);
-        iter.maxIterations = 2000;
-        iter.tolerance = ME_R(0.0);
-        kt_solve(&t.p, &iter, xi, NULL, &st);
-        for (i = 0; i < t.p.nRows; ++i)
-            scale = fmax(scale, fabs((double)xd[i]));
-        for (i = 0; i < t.p.nRows; ++i)
-            err = fmax(err, fabs((double)xi[i] - (double)xd[i]) / scale);
+        err = iterative_vs_direct(&t, 2000, xd, xi, &st);
         worst = fmax(worst, err);
         assert_near(err, 0.0, ME_TOL(1e-7, 2e-3));
         assert_near(st.residual, 0.0, ME_TOL(1e-7, 1e-3));
         kt_free(&t);
     }
     print_message("friction links: iterative (2000 iterations) vs direct, max relative error %.3g\n", worst);
+}
+
+/* A partition that is one contact (a normal row and two friction rows linked to it, on the same
+ * bodies) is one block: a single sweep of the iterative path solves it exactly (the block's all-free
+ * shortcut, its few-active-set contact solve, or the general block solver), so it must agree with
+ * the direct path's coupled solution, sticking, sliding or opening. */
+static void one_contact_block_is_exact_in_one_sweep(void **state)
+{
+    static const double mus[3] = {0.2, 0.6, 1.0};
+    double worst = 0.0;
+    int seed, opened = 0, sliding = 0;
+    (void)state;
+    for (seed = 0; seed < 300; ++seed) {
+        KtRng rng = kt_rng((uint64_t)(3100 + seed));
+        KtProblem t;
+        MeReal xd[3], xi[3];
+        KeaStats st;
+        double err;
+        kt_random_contacts(&t, &rng, 1, 0, 1 + seed % 2, mus[seed % 3], 1e-2);
+        if (seed % 4 == 0)
+            t.rhs[0] = (MeReal)-kt_range(&rng, 0.1, 1.0); /* some contacts pull apart */
+        err = iterative_vs_direct(&t, 1, xd, xi, &st);
+        worst = fmax(worst, err);
+        opened += xd[0] == ME_R(0.0);
+        sliding += xd[0] > ME_R(0.0) && (fabs((double)xd[1]) >= (double)(t.mu[1] * xd[0]) * (1 - 1e-5) ||
+                                         fabs((double)xd[2]) >= (double)(t.mu[2] * xd[0]) * (1 - 1e-5));
+        assert_near(err, 0.0, ME_TOL(1e-9, 1e-4));
+        kt_free(&t);
+    }
+    print_message("one contact, one sweep vs direct: 300 contacts (%d opening, %d sliding), max relative error %.3g\n",
+                  opened, sliding, worst);
+    assert_true(opened > 10 && sliding > 10);
 }
 
 /* Over-relaxation changes the path, not the limit. */
@@ -205,6 +247,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(error_does_not_grow_with_iteration_cap),
         cmocka_unit_test(friction_links_converge_to_direct),
+        cmocka_unit_test(one_contact_block_is_exact_in_one_sweep),
         cmocka_unit_test(sor_converges_to_the_same_solution),
         cmocka_unit_test(tolerance_stops_early),
         cmocka_unit_test(warm_start_at_solution_stays),

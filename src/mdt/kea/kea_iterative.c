@@ -30,6 +30,12 @@
  * SM never makes the QP worse; the next sweep re-applies the friction links and the active set.
  * Each CG step costs about one sweep; KeaStats.subspaceSteps counts them.
  *
+ * Block solves: a block of m rows (a contact group, a joint) is solved exactly with the rest of x
+ * fixed. Most blocks at rest have every row strictly inside its bounds: one product with the
+ * block's inverse (KeaBlockAllFree). A block that is one contact with friction (3 rows) otherwise
+ * tries its few active sets (opening, or one or both friction rows sliding: KeaContactBlockSolve);
+ * anything else goes to the dense box-LCP solver (kea_dense_lcp.c).
+ *
  * Warm start: x0 is clamped to its bounds and dv computed from it before the first sweep.
  *
  * Data layout (for the cost per row; the arithmetic is the above): dv lives in a padded per-body
@@ -397,6 +403,80 @@ static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int b
     return 1;
 }
 
+/* One contact with friction (a normal row with bounds [0, inf) and two rows linked to it with no
+ * bounds of their own), solved exactly by trying its few active sets, x = (n, f1, f2):
+ *   n = 0 (the contact opens; the friction rows are pinned at 0): valid if w_n >= 0;
+ *   n > 0 with each friction row free or sliding at +-mu n: the rows that are free (and the normal)
+ *   have w = 0, a 1x1 or 2x2 system in n and the free friction impulse; valid if n > 0, a free
+ *   friction row stays within +-mu n, and a sliding one's w pushes against its bound.
+ * The all-free case is KeaBlockAllFree's. The first valid set in that fixed order is taken (with
+ * mu small enough the solution is unique). Exact comparisons: a set valid only within rounding is
+ * left to the general solver. Returns 1 if solved (localX holds the solution). */
+static int KeaContactBlockSolve(const KeaProblem *problem, KeaIterativeWork *w, int s, const MeReal *A)
+{
+    const MeReal *r = w->localR;
+    MeReal mu[3];
+    int sig[3], k, combo;
+    if (w->localLink[0] >= 0 || w->localLo[0] != ME_R(0.0) || KeaIsFinite(w->localHi[0]) || !problem->mu)
+        return 0;
+    for (k = 1; k < 3; ++k)
+        if (w->localLink[k] != 0 || KeaIsFinite(w->localLo[k]) || KeaIsFinite(w->localHi[k]))
+            return 0;
+    mu[1] = problem->mu[s + 1];
+    mu[2] = problem->mu[s + 2];
+    if (-r[0] >= ME_R(0.0)) { /* n = 0: w = A 0 - r */
+        w->localX[0] = w->localX[1] = w->localX[2] = ME_R(0.0);
+        return 1;
+    }
+    for (combo = 1; combo < 9; ++combo) { /* sig = (combo / 3, combo % 3) - 1 ... mapped to {0, +1, -1} */
+        static const int map[3] = {0, 1, -1};
+        MeReal an[3], x[3], wv;
+        int free = -1;
+        sig[1] = map[combo / 3];
+        sig[2] = map[combo % 3];
+        if (sig[1] == 0 && sig[2] == 0)
+            continue;
+        for (k = 0; k < 3; ++k) /* the column of n with the sliding rows substituted */
+            an[k] = A[k * 3 + 0] + (MeReal)sig[1] * mu[1] * A[k * 3 + 1] + (MeReal)sig[2] * mu[2] * A[k * 3 + 2];
+        if (sig[1] == 0)
+            free = 1;
+        else if (sig[2] == 0)
+            free = 2;
+        if (free < 0) {
+            if (!(an[0] > ME_R(0.0)))
+                continue;
+            x[0] = r[0] / an[0];
+        } else {
+            const MeReal det = an[0] * A[free * 3 + free] - A[0 * 3 + free] * an[free];
+            if (!(det > ME_R(0.0)))
+                continue;
+            x[0] = (r[0] * A[free * 3 + free] - A[0 * 3 + free] * r[free]) / det;
+            x[free] = (an[0] * r[free] - an[free] * r[0]) / det;
+            if (!(KeaFabs(x[free]) <= mu[free] * x[0]))
+                continue;
+        }
+        if (!(x[0] > ME_R(0.0)))
+            continue;
+        for (k = 1; k < 3; ++k)
+            if (sig[k] != 0)
+                x[k] = (MeReal)sig[k] * mu[k] * x[0];
+        for (k = 1; k < 3; ++k) {
+            if (sig[k] == 0)
+                continue;
+            wv = A[k * 3 + 0] * x[0] + A[k * 3 + 1] * x[1] + A[k * 3 + 2] * x[2] - r[k];
+            if (sig[k] > 0 ? wv > ME_R(0.0) : wv < ME_R(0.0))
+                break; /* the row would rather slide less */
+        }
+        if (k < 3)
+            continue;
+        w->localX[0] = x[0];
+        w->localX[1] = x[1];
+        w->localX[2] = x[2];
+        return 1;
+    }
+    return 0;
+}
+
 /* Solve the block of m rows from s exactly with the rest of x fixed: its local LCP has the matrix
  * A_bb and r_loc = A_bb x_b - w_b, so that its w is the true w of these rows. A friction link to a
  * row outside the block becomes a fixed bound. Returns the block's largest row residual before. */
@@ -434,6 +514,10 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
     for (r = 0; r < m; ++r) {
         w->localR[r] -= w->localW[r];
         w->localX[r] = x[s + r];
+    }
+    if (m == 3 && KeaContactBlockSolve(problem, w, s, A)) {
+        KeaBlockApplyDeltas(w, s, m, x);
+        return worst;
     }
     lcp.n = m;
     lcp.A = A;
