@@ -17,9 +17,9 @@
 #define STEP_SIZE (ME_R(1.0) / 60)
 
 #if KARMA_DOUBLE
-#  define GOLDEN_HASH 0x3fad7f955d45ef1aull
+#  define GOLDEN_HASH 0xca478afc6c553391ull
 #else
-#  define GOLDEN_HASH 0x69cf10c4fe37862aull
+#  define GOLDEN_HASH 0x68761a82c94ef197ull
 #endif
 
 typedef struct Scene {

@@ -21,11 +21,12 @@
  * locked (not freed again) until a step of positive length is taken, and maxPivots caps the total,
  * returning the current (feasible, best so far) iterate with KeaStatusMaxPivots.
  *
- * Warm start: x0 clamped to the bounds gives the first x; rows strictly inside are free, and the
- * first factor is built from them. With last step's impulses the active set is usually right and
- * the solve is one factorisation plus a handful of pivots. Cold (x0 = 0), each unilateral row that
- * ends up free costs one append, which together amount to one factorisation: O(n^3/3) plus
- * O(n^2) per pivot for solves and multipliers.
+ * Warm start: x0 clamped to the bounds gives the first x; rows strictly inside are free, and so are
+ * rows at a bound whose multiplier at x0 has the wrong sign (they would be freed by the first pivots
+ * anyway: a new contact's pressed normal row); the first factor is built from them. With last step's
+ * impulses the active set is usually right and the solve is one factorisation plus a handful of
+ * pivots. Each pivot costs O(n^2) on a dense problem (O(n) plus the factor's envelope on a sparse
+ * one, below).
  *
  * Friction links (bounds +-mu x_link): each pass solves the box QP with the bounds fixed from the
  * current x; then the bounds are recomputed from the solution. If they moved by more than a small
@@ -533,6 +534,19 @@ KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses,
         KeaDenseBounds(lcp, x, i, &w->lo[i], &w->hi[i]);
     for (i = 0; i < n; ++i)
         w->state[i] = KeaStateFromValue(&x[i], w->lo[i], w->hi[i]);
+    { /* A row at a bound whose multiplier already says it would move inside starts free: the
+       * Newton step and its ratio test sort it out, where freeing such rows one per pivot costs a
+       * pivot each (a new contact arrives at x = 0 with its normal row pressed). */
+        const int nz = KeaDensePrepare(lcp, x, w->nonzero);
+        for (i = 0; i < n; ++i) {
+            MeReal wi;
+            if (w->state[i] == KEA_FREE || !(w->lo[i] < w->hi[i]))
+                continue;
+            wi = KeaDenseRowDot(lcp, i, x, w->nonzero, nz) - lcp->r[i];
+            if (w->state[i] == KEA_AT_LO ? wi < ME_R(0.0) : wi > ME_R(0.0))
+                w->state[i] = KEA_FREE;
+        }
+    }
     KeaDenseFactorFree(lcp, w, stats);
 
     for (;;) {
