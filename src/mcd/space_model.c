@@ -152,6 +152,14 @@ void McdSpaceUpdateModel(McdModelID model)
     if (!s)
         return;
     McdModelUpdateInternal(m);
+    /* A box that has not moved changes no pair: skip the pass over every axis (O(models)). Auto-
+     * disable freezes whole partitions at once, and their boxes are already up to date. */
+    const MeReal *box = &s->box[6 * m->spaceIndex];
+    MeBool same = s->obj[m->spaceIndex].key == m->sortKey && !s->listsDirty && s->pendingCount == 0;
+    for (int k = 0; k < 3 && same; k++)
+        same = box[k] == m->aabbMin[k] && box[k + 3] == m->aabbMax[k];
+    if (same)
+        return;
     takeModel(s, m->spaceIndex, m, __func__);
     McdSpaceSort(s, METRUE, __func__); /* one pass per axis: the other boxes have not moved */
 }
