@@ -188,11 +188,19 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
         int block = -1, blockSide = KEA_FREE, nz;
 
         /* 1. Newton point on the face: A_FF y = r_F - A_FB x_B. */
-        for (j = 0; j < n; ++j)
+        nz = 0; /* fixed rows with x != 0 (often none: contacts at 0) */
+        for (j = 0; j < n; ++j) {
             w->xFixed[j] = c->pos[j] < 0 ? x[j] : ME_R(0.0);
-        nz = KeaDensePrepare(lcp, w->xFixed, w->nonzero);
-        for (p = 0; p < c->size; ++p)
-            w->y[p] = r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], w->xFixed, w->nonzero, nz);
+            nz += w->xFixed[j] != ME_R(0.0);
+        }
+        if (nz > 0) {
+            nz = KeaDensePrepare(lcp, w->xFixed, w->nonzero);
+            for (p = 0; p < c->size; ++p)
+                w->y[p] = r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], w->xFixed, w->nonzero, nz);
+        } else {
+            for (p = 0; p < c->size; ++p)
+                w->y[p] = r[c->F[p]];
+        }
         KeaCholeskySolve(c, w->y);
 
         /* 2. Ratio test along y - x_F (ties go to the first row in F: deterministic). */
