@@ -17,7 +17,6 @@
  *  factors in time about linear in its rows instead of cubic.
  *  A pivot d below KEA_PIVOT_FLOOR * A_ii (a row dependent on the free ones, possible only when
  *  eps = 0) is raised to that floor and counted. */
-#include <string.h>
 
 #include "kea_internal.h"
 
@@ -56,13 +55,9 @@ void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeRe
     const int n = problem->nRows, nb = problem->nBodies;
     int i, b, p1, p2;
 
-    if (patternStart) { /* only the pattern is read later: clear just that */
-        for (i = 0; i < n; ++i)
-            for (p1 = patternStart[i]; p1 < patternStart[i + 1]; ++p1)
-                A[(size_t)i * (size_t)n + (size_t)pattern[p1]] = ME_R(0.0);
-    } else {
-        memset(A, 0, sizeof(MeReal) * (size_t)n * (size_t)n);
-    }
+    for (i = 0; i < n; ++i) /* only the pattern is read later: clear just that */
+        for (p1 = patternStart[i]; p1 < patternStart[i + 1]; ++p1)
+            A[(size_t)i * (size_t)n + (size_t)pattern[p1]] = ME_R(0.0);
     for (b = 0; b < nb; ++b) {
         for (p1 = start[b]; p1 < start[b + 1]; ++p1) {
             const int e1 = incidence[p1], r1 = e1 >> 1, h1 = e1 & 1;

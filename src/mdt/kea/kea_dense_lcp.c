@@ -137,13 +137,14 @@ static int KeaDensePrepare(const KeaDenseLcp *lcp, const MeReal *v, int *list)
 /* (A v)_i, after KeaDensePrepare(lcp, v, list) returned nz. */
 static MeReal KeaDenseRowDot(const KeaDenseLcp *lcp, int i, const MeReal *v, const int *list, int nz)
 {
-    const MeReal *Ai = lcp->A + (size_t)i * (size_t)lcp->n;
+    const MeReal *Ai;
     MeReal s = ME_R(0.0);
     int k;
     if (lcp->rows) {
         const KeaProblem *p = lcp->rows;
         return KeaRowVelocity(&p->J[i], p->rowBodies[i], lcp->velocity) + (p->epsilon ? p->epsilon[i] * v[i] : ME_R(0.0));
     }
+    Ai = lcp->A + (size_t)i * (size_t)lcp->n;
     for (k = 0; k < nz; ++k)
         s += Ai[list[k]] * v[list[k]];
     return s;

@@ -151,8 +151,8 @@ static inline void KeaRowBoundsInline(const KeaProblem *problem, const MeReal *x
  *  each 2 * row + half, rows ascending (incidence: 2n ints, start: nb + 1 ints). */
 void KeaBodyIncidence(const KeaProblem *problem, int *incidence, int *start);
 /** A = J M^-1 J^T + diag(eps), dense n x n row-major, using B (M^-1 J^T rows) and the incidence.
- *  With a pattern (rows sharing a body, as the direct path builds it; may be NULL) only the pattern's
- *  entries are written, and the rest of A is left as it was. */
+ *  Only the entries in A's pattern (rows sharing a body, as the direct path builds it) are written;
+ *  the rest of A is left as it was and must not be read. */
 void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeReal *A, const int *incidence,
                         const int *start, const int *patternStart, const int *pattern);
 

@@ -428,7 +428,7 @@ static int KeaContactBlockSolve(const KeaProblem *problem, KeaIterativeWork *w, 
         w->localX[0] = w->localX[1] = w->localX[2] = ME_R(0.0);
         return 1;
     }
-    for (combo = 1; combo < 9; ++combo) { /* sig = (combo / 3, combo % 3) - 1 ... mapped to {0, +1, -1} */
+    for (combo = 1; combo < 9; ++combo) { /* each friction row free (0) or sliding (+1, -1), not both free */
         static const int map[3] = {0, 1, -1};
         MeReal an[3], x[3], wv;
         int free = -1;
