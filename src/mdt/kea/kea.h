@@ -111,9 +111,10 @@ typedef struct KeaParameters {
     MeReal sor;             /**< iterative: over-relaxation factor in (0, 2); default 1 */
     int subspaceIterations; /**< iterative: conjugate-gradient steps on the free rows between two
                                  sweeps (subspace minimisation); 0 = plain PGS; default 4 */
-    int maxBlockRows;       /**< iterative: consecutive rows on the same two bodies (a constraint,
-                                 a contact group) up to this many are solved together exactly in
-                                 each sweep; 1 = scalar PGS; at most KEA_MAX_BLOCK_ROWS; default 12 */
+    int maxBlockRows;       /**< iterative: consecutive rows on the same two bodies (a constraint)
+                                 up to this many are solved together exactly in each sweep, a
+                                 contact's normal and friction rows as a block of their own;
+                                 1 = scalar PGS; at most KEA_MAX_BLOCK_ROWS; default 12 */
     int maxPivots;          /**< direct: cap on active-set changes; 0 = automatic (8 n + 64) */
     int maxFrictionPasses;  /**< direct: box-QP passes for friction links; default 8 */
 } KeaParameters;

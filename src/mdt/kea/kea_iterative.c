@@ -32,9 +32,10 @@
  *
  * Block solves: a block of m rows (a contact group, a joint) is solved exactly with the rest of x
  * fixed. Most blocks at rest have every row strictly inside its bounds: one product with the
- * block's inverse (KeaBlockAllFree). A block that is one contact with friction (3 rows) otherwise
- * tries its few active sets (opening, or one or both friction rows sliding: KeaContactBlockSolve);
- * anything else goes to the dense box-LCP solver (kea_dense_lcp.c).
+ * block's inverse (KeaBlockAllFree). A block made of whole contacts with friction (a box on a face:
+ * 4 x 3 rows) otherwise takes one Gauss-Seidel pass over its contacts, each solved in closed form by
+ * trying its few active sets (KeaContactSolve); anything else goes to the dense box-LCP solver
+ * (kea_dense_lcp.c).
  *
  * Warm start: x0 is clamped to its bounds and dv computed from it before the first sweep.
  *
@@ -223,10 +224,17 @@ static void KeaBlockInvert(int m, const MeReal *L, MeReal *inv)
     }
 }
 
-/* out = M in for a symmetric m x m block M (out and in distinct): KeaColumnsApply (kea_rows.c). */
-static void KeaBlockSymmetricApply(int m, const MeReal *M, const MeReal *in, MeReal *out)
+/* out = M in for a symmetric m x m block M (out and in distinct): KeaColumnsApply (kea_rows.c); a
+ * contact's 3 x 3, the most common block, inline with the same sums. */
+static inline void KeaBlockSymmetricApply(int m, const MeReal *M, const MeReal *in, MeReal *out)
 {
-    KeaColumnsApply(m, m, M, in, out);
+    int r;
+    if (m != 3) {
+        KeaColumnsApply(m, m, M, in, out);
+        return;
+    }
+    for (r = 0; r < 3; ++r)
+        out[r] = (M[r] * in[0] + M[3 + r] * in[1]) + M[6 + r] * in[2];
 }
 
 /* out = J_b (v0, v1) for the block of m rows from s (all on the same two bodies): a block of more
@@ -290,8 +298,15 @@ static void KeaBlockScatter(int m, const KeaJacobianRow *B, const MeReal *d, Kea
     }
 }
 
-/* Split the rows into blocks (runs on the same body pair, at most cap rows) and form each block's
- * matrix A_bb = J_b M^-1 J_b^T + diag(eps) from the rows' B = M^-1 J^T. */
+/* Row i begins a contact with friction: it has no link and the next row is linked to it. */
+static int KeaContactStart(const KeaProblem *problem, int i)
+{
+    return problem->link && problem->link[i] < 0 && i + 1 < problem->nRows && problem->link[i + 1] == i;
+}
+
+/* Split the rows into blocks and form each block's matrix A_bb = J_b M^-1 J_b^T + diag(eps) from the
+ * rows' B = M^-1 J^T. A block is a run of rows on the same body pair, at most cap rows, except that a
+ * contact with friction (its normal row and the rows linked to it) is a block of its own. */
 static void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
 {
     const int n = problem->nRows;
@@ -299,9 +314,14 @@ static void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int c
     w->nBlocks = 0;
     while (i < n) {
         const int *b = problem->rowBodies[i];
+        const int contact = KeaContactStart(problem, i);
         int m = 1, r, c, h, g;
-        while (i + m < n && m < cap && problem->rowBodies[i + m][0] == b[0] && problem->rowBodies[i + m][1] == b[1])
+        while (i + m < n && m < cap && problem->rowBodies[i + m][0] == b[0] && problem->rowBodies[i + m][1] == b[1]) {
+            if (contact ? problem->link[i + m] != i
+                        : KeaContactStart(problem, i + m) || (problem->link && problem->link[i + m] >= 0))
+                break; /* a contact is a block of its own */
             ++m;
+        }
         w->blockStart[w->nBlocks] = i;
         w->blockMatrix[w->nBlocks] = offset;
         for (r = 0; r < m; ++r) {
@@ -406,27 +426,46 @@ static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int b
 /* One contact with friction (a normal row with bounds [0, inf) and two rows linked to it with no
  * bounds of their own), solved exactly by trying its few active sets, x = (n, f1, f2):
  *   n = 0 (the contact opens; the friction rows are pinned at 0): valid if w_n >= 0;
- *   n > 0 with each friction row free or sliding at +-mu n: the rows that are free (and the normal)
- *   have w = 0, a 1x1 or 2x2 system in n and the free friction impulse; valid if n > 0, a free
- *   friction row stays within +-mu n, and a sliding one's w pushes against its bound.
- * The all-free case is KeaBlockAllFree's. The first valid set in that fixed order is taken (with
- * mu small enough the solution is unique). Exact comparisons: a set valid only within rounding is
- * left to the general solver. Returns 1 if solved (localX holds the solution). */
-static int KeaContactBlockSolve(const KeaProblem *problem, KeaIterativeWork *w, int s, const MeReal *A)
+ *   n > 0 and both friction rows free (tryAllFree; a block of its own has tried that already with
+ *   its precomputed inverse): A x = r, valid if n > 0 and |f_k| <= mu_k n;
+ *   n > 0 with each friction row free or sliding at +-mu n, not both free: the rows that are free
+ *   (and the normal) have w = 0, a 1x1 or 2x2 system in n and the free friction impulse; valid if
+ *   n > 0, a free friction row stays within +-mu n, and a sliding one's w pushes against its bound.
+ * A is the contact's 3 x 3 matrix (row stride lda), r its r_loc = A x - w, lo/hi/link the rows'
+ * own bounds and links (link[1] == link[2] == self, the normal's index in the caller's numbering).
+ * The first valid set in that fixed order is taken (with mu small enough the solution is unique).
+ * Exact comparisons: a set valid only within rounding is left to the general solver. Returns 1 if
+ * solved (out holds the solution). */
+static int KeaContactSolve(const MeReal *A, int lda, const MeReal *r, const MeReal *lo, const MeReal *hi,
+                           const int *link, int self, const MeReal *mu, int tryAllFree, MeReal *out)
 {
-    const MeReal *r = w->localR;
-    MeReal mu[3];
     int sig[3], k, combo;
-    if (w->localLink[0] >= 0 || w->localLo[0] != ME_R(0.0) || KeaIsFinite(w->localHi[0]) || !problem->mu)
+    if (link[0] >= 0 || lo[0] != ME_R(0.0) || KeaIsFinite(hi[0]))
         return 0;
     for (k = 1; k < 3; ++k)
-        if (w->localLink[k] != 0 || KeaIsFinite(w->localLo[k]) || KeaIsFinite(w->localHi[k]))
+        if (link[k] != self || KeaIsFinite(lo[k]) || KeaIsFinite(hi[k]))
             return 0;
-    mu[1] = problem->mu[s + 1];
-    mu[2] = problem->mu[s + 2];
     if (-r[0] >= ME_R(0.0)) { /* n = 0: w = A 0 - r */
-        w->localX[0] = w->localX[1] = w->localX[2] = ME_R(0.0);
+        out[0] = out[1] = out[2] = ME_R(0.0);
         return 1;
+    }
+    if (tryAllFree) { /* A x = r by cofactors (A symmetric) */
+        const MeReal a00 = A[0], a01 = A[1], a02 = A[2], a11 = A[lda + 1], a12 = A[lda + 2], a22 = A[2 * lda + 2];
+        const MeReal c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
+        const MeReal c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
+        const MeReal det = a00 * c00 + a01 * c01 + a02 * c02;
+        if (det > ME_R(0.0)) {
+            const MeReal inv = ME_R(1.0) / det;
+            const MeReal n = (c00 * r[0] + c01 * r[1] + c02 * r[2]) * inv;
+            const MeReal f1 = (c01 * r[0] + c11 * r[1] + c12 * r[2]) * inv;
+            const MeReal f2 = (c02 * r[0] + c12 * r[1] + c22 * r[2]) * inv;
+            if (n > ME_R(0.0) && KeaFabs(f1) <= mu[1] * n && KeaFabs(f2) <= mu[2] * n) {
+                out[0] = n;
+                out[1] = f1;
+                out[2] = f2;
+                return 1;
+            }
+        }
     }
     for (combo = 1; combo < 9; ++combo) { /* each friction row free (0) or sliding (+1, -1), not both free */
         static const int map[3] = {0, 1, -1};
@@ -437,7 +476,7 @@ static int KeaContactBlockSolve(const KeaProblem *problem, KeaIterativeWork *w, 
         if (sig[1] == 0 && sig[2] == 0)
             continue;
         for (k = 0; k < 3; ++k) /* the column of n with the sliding rows substituted */
-            an[k] = A[k * 3 + 0] + (MeReal)sig[1] * mu[1] * A[k * 3 + 1] + (MeReal)sig[2] * mu[2] * A[k * 3 + 2];
+            an[k] = A[k * lda + 0] + (MeReal)sig[1] * mu[1] * A[k * lda + 1] + (MeReal)sig[2] * mu[2] * A[k * lda + 2];
         if (sig[1] == 0)
             free = 1;
         else if (sig[2] == 0)
@@ -447,10 +486,10 @@ static int KeaContactBlockSolve(const KeaProblem *problem, KeaIterativeWork *w, 
                 continue;
             x[0] = r[0] / an[0];
         } else {
-            const MeReal det = an[0] * A[free * 3 + free] - A[0 * 3 + free] * an[free];
+            const MeReal det = an[0] * A[free * lda + free] - A[0 * lda + free] * an[free];
             if (!(det > ME_R(0.0)))
                 continue;
-            x[0] = (r[0] * A[free * 3 + free] - A[0 * 3 + free] * r[free]) / det;
+            x[0] = (r[0] * A[free * lda + free] - A[0 * lda + free] * r[free]) / det;
             x[free] = (an[0] * r[free] - an[free] * r[0]) / det;
             if (!(KeaFabs(x[free]) <= mu[free] * x[0]))
                 continue;
@@ -463,18 +502,43 @@ static int KeaContactBlockSolve(const KeaProblem *problem, KeaIterativeWork *w, 
         for (k = 1; k < 3; ++k) {
             if (sig[k] == 0)
                 continue;
-            wv = A[k * 3 + 0] * x[0] + A[k * 3 + 1] * x[1] + A[k * 3 + 2] * x[2] - r[k];
+            wv = A[k * lda + 0] * x[0] + A[k * lda + 1] * x[1] + A[k * lda + 2] * x[2] - r[k];
             if (sig[k] > 0 ? wv > ME_R(0.0) : wv < ME_R(0.0))
                 break; /* the row would rather slide less */
         }
         if (k < 3)
             continue;
-        w->localX[0] = x[0];
-        w->localX[1] = x[1];
-        w->localX[2] = x[2];
+        out[0] = x[0];
+        out[1] = x[1];
+        out[2] = x[2];
         return 1;
     }
     return 0;
+}
+
+/* The box-LCP of n rows (matrix A, r, own bounds lo/hi, links local to these rows or -1) with the
+ * dense solver; x is the warm start on entry and the solution on return. */
+static void KeaSmallLcp(const KeaProblem *problem, KeaIterativeWork *w, int n, const MeReal *A, const MeReal *r,
+                        const MeReal *lo, const MeReal *hi, const int *link, const MeReal *mu, int maxPasses,
+                        MeReal *x, KeaStats *stats)
+{
+    KeaDenseLcp lcp;
+    KeaStats local;
+    lcp.n = n;
+    lcp.A = A;
+    lcp.r = r;
+    lcp.lo = lo;
+    lcp.hi = hi;
+    lcp.link = problem->mu ? link : NULL;
+    lcp.mu = problem->mu ? mu : NULL;
+    lcp.order = NULL;
+    lcp.patternStart = lcp.pattern = NULL;
+    lcp.rows = NULL;
+    lcp.velocity = NULL;
+    memset(&local, 0, sizeof local);
+    (void)KeaDenseLcpSolve(&lcp, 0, maxPasses, w->dense, x, &local);
+    stats->pivots += local.pivots;
+    stats->regularised += local.regularised;
 }
 
 /* Solve the block of m rows from s exactly with the rest of x fixed: its local LCP has the matrix
@@ -485,8 +549,6 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
 {
     const int s = w->blockStart[block], m = w->blockStart[block + 1] - s;
     const MeReal *A = w->blockA + w->blockMatrix[block];
-    KeaDenseLcp lcp;
-    KeaStats local;
     MeReal worst = ME_R(0.0);
     int r;
     KeaBlockGather(w, s, m, &w->dv[w->body[s][0]], &w->dv[w->body[s][1]], w->localW);
@@ -515,27 +577,13 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
         w->localR[r] -= w->localW[r];
         w->localX[r] = x[s + r];
     }
-    if (m == 3 && KeaContactBlockSolve(problem, w, s, A)) {
+    if (m == 3 && problem->mu &&
+        KeaContactSolve(A, 3, w->localR, w->localLo, w->localHi, w->localLink, 0, problem->mu + s, 0, w->localX)) {
         KeaBlockApplyDeltas(w, s, m, x);
         return worst;
     }
-    lcp.n = m;
-    lcp.A = A;
-    lcp.r = w->localR;
-    lcp.lo = w->localLo;
-    lcp.hi = w->localHi;
-    lcp.link = w->localLink;
-    lcp.mu = problem->mu ? problem->mu + s : NULL;
-    lcp.order = NULL;
-    lcp.patternStart = lcp.pattern = NULL;
-    lcp.rows = NULL;
-    lcp.velocity = NULL;
-    if (!lcp.mu)
-        lcp.link = NULL;
-    memset(&local, 0, sizeof local);
-    (void)KeaDenseLcpSolve(&lcp, 0, maxPasses, w->dense, w->localX, &local);
-    stats->pivots += local.pivots;
-    stats->regularised += local.regularised;
+    KeaSmallLcp(problem, w, m, A, w->localR, w->localLo, w->localHi, w->localLink, problem->mu ? problem->mu + s : NULL,
+                maxPasses, w->localX, stats);
     KeaBlockApplyDeltas(w, s, m, x);
     return worst;
 }
@@ -670,9 +718,9 @@ static MeReal KeaAddEpsDot(MeReal *q, const MeReal *eps, const MeReal *p, int n)
 /* Subspace minimisation on the rows strictly inside their bounds; returns the CG steps taken. */
 static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x)
 {
-    const int n = problem->nRows;
+    const int n = problem->nRows, nb = problem->nBodies;
     MeReal rz, rz0, scale;
-    int i, p, nFree = 0, steps = 0, tries;
+    int i, p, b, k, nFree = 0, steps = 0, tries;
 
     for (i = 0; i < n; ++i) {
         KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
@@ -737,10 +785,9 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
             df += w->z[p] * (w->grad[p] + ME_R(0.5) * As);
         }
         if (df < ME_R(0.0)) {
-            int b, k;
             for (p = 0; p < nFree; ++p)
                 x[w->freeRows[p]] += w->z[p];
-            for (b = 0; b < problem->nBodies; ++b)
+            for (b = 0; b < nb; ++b)
                 for (k = 0; k < 4; ++k) {
                     w->dv[b].lin[k] += w->dvTmp[b].lin[k];
                     w->dv[b].ang[k] += w->dvTmp[b].ang[k];
