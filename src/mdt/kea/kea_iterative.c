@@ -32,17 +32,17 @@
  *
  * Block solves: a block of m rows (a contact group, a joint) is solved exactly with the rest of x
  * fixed. Most blocks at rest have every row strictly inside its bounds: one product with the
- * block's inverse (KeaBlockAllFree). A block made of whole contacts with friction (a box on a face:
- * 4 x 3 rows) otherwise takes one Gauss-Seidel pass over its contacts, each solved in closed form by
- * trying its few active sets (KeaContactSolve); anything else goes to the dense box-LCP solver
- * (kea_dense_lcp.c).
+ * block's inverse (KeaBlockAllFree). Each contact point with its friction rows is a block of its
+ * own (not its whole contact group: docs/kea.md), which otherwise tries its few active sets in
+ * closed form (opening, or one or both friction rows sliding: KeaContactSolve); anything else (a
+ * constraint's rows at a limit) goes to the dense box-LCP solver (kea_dense_lcp.c).
  *
  * Warm start: x0 is clamped to its bounds and dv computed from it before the first sweep.
  *
  * Data layout (for the cost per row; the arithmetic is the above): dv lives in a padded per-body
  * copy (KeaVel4, 3-vectors padded to 4, plus an all-zero body standing for the world), rows read it
  * through a copy of J with zero pads and zero world halves, so a row kernel has no branch per body
- * half. A block of m > 4 rows (a box-box contact group: 12) computes its w_b = J_b dv from a 12 x m
+ * half. A block of m > 4 rows (a joint's: a fixed joint has 6) computes its w_b = J_b dv from a 12 x m
  * transpose of its J (KeaColumnsApply, one vectorised column kernel for all block products: w_b
  * through KeaColumnsApplyPair, which reads the two bodies in place,
  * A_bb^-1 w_b, the preconditioner, forming A_bb) and applies its deltas to local copies of its two
@@ -426,46 +426,27 @@ static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int b
 /* One contact with friction (a normal row with bounds [0, inf) and two rows linked to it with no
  * bounds of their own), solved exactly by trying its few active sets, x = (n, f1, f2):
  *   n = 0 (the contact opens; the friction rows are pinned at 0): valid if w_n >= 0;
- *   n > 0 and both friction rows free (tryAllFree; a block of its own has tried that already with
- *   its precomputed inverse): A x = r, valid if n > 0 and |f_k| <= mu_k n;
  *   n > 0 with each friction row free or sliding at +-mu n, not both free: the rows that are free
  *   (and the normal) have w = 0, a 1x1 or 2x2 system in n and the free friction impulse; valid if
  *   n > 0, a free friction row stays within +-mu n, and a sliding one's w pushes against its bound.
- * A is the contact's 3 x 3 matrix (row stride lda), r its r_loc = A x - w, lo/hi/link the rows'
- * own bounds and links (link[1] == link[2] == self, the normal's index in the caller's numbering).
+ * A is the contact's 3 x 3 matrix, r its r_loc = A x - w, lo/hi/link the rows' own bounds and
+ * links (link[1] == link[2] == 0).
+ * The all-free case is KeaBlockAllFree's (with the block's precomputed inverse).
  * The first valid set in that fixed order is taken (with mu small enough the solution is unique).
  * Exact comparisons: a set valid only within rounding is left to the general solver. Returns 1 if
  * solved (out holds the solution). */
-static int KeaContactSolve(const MeReal *A, int lda, const MeReal *r, const MeReal *lo, const MeReal *hi,
-                           const int *link, int self, const MeReal *mu, int tryAllFree, MeReal *out)
+static int KeaContactSolve(const MeReal *A, const MeReal *r, const MeReal *lo, const MeReal *hi, const int *link,
+                           const MeReal *mu, MeReal *out)
 {
     int sig[3], k, combo;
     if (link[0] >= 0 || lo[0] != ME_R(0.0) || KeaIsFinite(hi[0]))
         return 0;
     for (k = 1; k < 3; ++k)
-        if (link[k] != self || KeaIsFinite(lo[k]) || KeaIsFinite(hi[k]))
+        if (link[k] != 0 || KeaIsFinite(lo[k]) || KeaIsFinite(hi[k]))
             return 0;
     if (-r[0] >= ME_R(0.0)) { /* n = 0: w = A 0 - r */
         out[0] = out[1] = out[2] = ME_R(0.0);
         return 1;
-    }
-    if (tryAllFree) { /* A x = r by cofactors (A symmetric) */
-        const MeReal a00 = A[0], a01 = A[1], a02 = A[2], a11 = A[lda + 1], a12 = A[lda + 2], a22 = A[2 * lda + 2];
-        const MeReal c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
-        const MeReal c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
-        const MeReal det = a00 * c00 + a01 * c01 + a02 * c02;
-        if (det > ME_R(0.0)) {
-            const MeReal inv = ME_R(1.0) / det;
-            const MeReal n = (c00 * r[0] + c01 * r[1] + c02 * r[2]) * inv;
-            const MeReal f1 = (c01 * r[0] + c11 * r[1] + c12 * r[2]) * inv;
-            const MeReal f2 = (c02 * r[0] + c12 * r[1] + c22 * r[2]) * inv;
-            if (n > ME_R(0.0) && KeaFabs(f1) <= mu[1] * n && KeaFabs(f2) <= mu[2] * n) {
-                out[0] = n;
-                out[1] = f1;
-                out[2] = f2;
-                return 1;
-            }
-        }
     }
     for (combo = 1; combo < 9; ++combo) { /* each friction row free (0) or sliding (+1, -1), not both free */
         static const int map[3] = {0, 1, -1};
@@ -476,7 +457,7 @@ static int KeaContactSolve(const MeReal *A, int lda, const MeReal *r, const MeRe
         if (sig[1] == 0 && sig[2] == 0)
             continue;
         for (k = 0; k < 3; ++k) /* the column of n with the sliding rows substituted */
-            an[k] = A[k * lda + 0] + (MeReal)sig[1] * mu[1] * A[k * lda + 1] + (MeReal)sig[2] * mu[2] * A[k * lda + 2];
+            an[k] = A[k * 3 + 0] + (MeReal)sig[1] * mu[1] * A[k * 3 + 1] + (MeReal)sig[2] * mu[2] * A[k * 3 + 2];
         if (sig[1] == 0)
             free = 1;
         else if (sig[2] == 0)
@@ -486,10 +467,10 @@ static int KeaContactSolve(const MeReal *A, int lda, const MeReal *r, const MeRe
                 continue;
             x[0] = r[0] / an[0];
         } else {
-            const MeReal det = an[0] * A[free * lda + free] - A[0 * lda + free] * an[free];
+            const MeReal det = an[0] * A[free * 3 + free] - A[0 * 3 + free] * an[free];
             if (!(det > ME_R(0.0)))
                 continue;
-            x[0] = (r[0] * A[free * lda + free] - A[0 * lda + free] * r[free]) / det;
+            x[0] = (r[0] * A[free * 3 + free] - A[0 * 3 + free] * r[free]) / det;
             x[free] = (an[0] * r[free] - an[free] * r[0]) / det;
             if (!(KeaFabs(x[free]) <= mu[free] * x[0]))
                 continue;
@@ -502,7 +483,7 @@ static int KeaContactSolve(const MeReal *A, int lda, const MeReal *r, const MeRe
         for (k = 1; k < 3; ++k) {
             if (sig[k] == 0)
                 continue;
-            wv = A[k * lda + 0] * x[0] + A[k * lda + 1] * x[1] + A[k * lda + 2] * x[2] - r[k];
+            wv = A[k * 3 + 0] * x[0] + A[k * 3 + 1] * x[1] + A[k * 3 + 2] * x[2] - r[k];
             if (sig[k] > 0 ? wv > ME_R(0.0) : wv < ME_R(0.0))
                 break; /* the row would rather slide less */
         }
@@ -578,7 +559,7 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
         w->localX[r] = x[s + r];
     }
     if (m == 3 && problem->mu &&
-        KeaContactSolve(A, 3, w->localR, w->localLo, w->localHi, w->localLink, 0, problem->mu + s, 0, w->localX)) {
+        KeaContactSolve(A, w->localR, w->localLo, w->localHi, w->localLink, problem->mu + s, w->localX)) {
         KeaBlockApplyDeltas(w, s, m, x);
         return worst;
     }
