@@ -18,6 +18,7 @@
 
 #include "../mcd/mcd_internal.h"
 #include "../mcd/framework.h"
+#include "../mdt/bcl/contact_batch.h"
 #include "../mdt/body.h"
 #include "../me/check.h"
 #include "../me/handle.h"
@@ -175,13 +176,7 @@ static int matchContacts(MdtContactGroupID g, const McdContact *in, int n, MdtCo
     enum { MAX_OLD = 64 };
     MdtContactID old[MAX_OLD];
     MeVector3 oldPos[MAX_OLD];
-    int oldCount = 0;
-    for (MdtContactID c = MdtContactGroupGetFirstContact(g); c && oldCount < MAX_OLD;
-         c = MdtContactGroupGetNextContact(g, c)) {
-        old[oldCount] = c;
-        MdtContactGetPosition(c, oldPos[oldCount]);
-        oldCount++;
-    }
+    const int oldCount = MdtContactGroupGetContactsAndPositions(g, old, oldPos, MAX_OLD);
     MeBool used[MAX_OLD] = {0};
     for (int i = 0; i < n; i++) {
         int best = -1;
@@ -258,10 +253,7 @@ static int collidePair(MstBridge *b, McdModelPair *pair, MdtWorldID world)
     int kept = 0;
     for (int i = 0; i < n; i++) {
         const McdContact *c = &result.contacts[i];
-        MdtContactSetParams(dyn[i], &mat->params);
-        MdtContactSetPosition(dyn[i], c->position[0], c->position[1], c->position[2]);
-        MdtContactSetNormal(dyn[i], sign * c->normal[0], sign * c->normal[1], sign * c->normal[2]);
-        MdtContactSetPenetration(dyn[i], -c->separation);
+        MdtContactSetFromCollision(dyn[i], &mat->params, c->position, c->normal, sign, -c->separation);
         if (mat->perContactCB && !mat->perContactCB(&result, &result.contacts[i], dyn[i]))
             MdtContactGroupDestroyContact(g, dyn[i]);
         else

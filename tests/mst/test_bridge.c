@@ -132,6 +132,49 @@ static void group_lives_with_the_intersection(void **state)
     MstUniverseDestroy(s.u);
 }
 
+/* The conversion carries each McdContact's position, normal (body 0 towards body 1) and penetration
+ * (the negated separation) into the group's MdtContact, and the material's parameters; a pair that
+ * stays reuses its contact and refreshes all of it. */
+static void conversion_carries_the_geometry(void **state)
+{
+    (void)state;
+    Scene s;
+    sceneInit(&s);
+    MstMaterialID rubber = MstBridgeGetNewMaterial(s.b);
+    MdtContactParamsSetFriction(MstBridgeGetContactParams(s.b, 0, rubber), 0.75f);
+    McdModelID ball = sphereAt(&s, 0.5f, 0.3f, -0.2f, 0.49f);
+    McdModelSetMaterial(ball, rubber);
+    MdtBodyID body = McdModelGetBody(ball);
+    McdSpaceID space = MstUniverseGetSpace(s.u);
+    const MeReal heights[2] = {0.49f, 0.47f};
+    MdtContactID first = NULL;
+    for (int k = 0; k < 2; k++) {
+        MdtBodySetPosition(body, 0.3f, -0.2f, heights[k]);
+        McdSpaceUpdateAll(space);
+        MstBridgeUpdateContacts(s.b, space, s.w);
+        MdtContactGroupID g = groupOf(body);
+        assert_non_null(g);
+        assert_int_equal(MdtContactGroupGetCount(g), 1);
+        MdtContactID c = MdtContactGroupGetFirstContact(g);
+        if (k == 0)
+            first = c;
+        else
+            assert_ptr_equal(c, first); /* reused: warm start follows the point */
+        MeVector3 p, n;
+        MdtContactGetPosition(c, p);
+        MdtContactGetNormal(c, n);
+        assert_near(p[0], 0.3, 1e-5);
+        assert_near(p[1], -0.2, 1e-5);
+        assert_true(p[2] > -0.05 && p[2] < 0.05);
+        assert_near(n[0], 0, 1e-6);
+        assert_near(n[1], 0, 1e-6);
+        assert_near(n[2], -1, 1e-6);
+        assert_near(MdtContactGetPenetration(c), 0.5 - heights[k], 1e-5);
+        assert_near(MdtContactParamsGetPrimaryFriction(MdtContactGetParams(c)), 0.75, 0);
+    }
+    MstUniverseDestroy(s.u);
+}
+
 static int perContactCalls, perPairCalls, intersectCalls;
 static void countIntersect(McdIntersectResult *r)
 {
@@ -260,6 +303,7 @@ int main(void)
         cmocka_unit_test(universe_defaults),
         cmocka_unit_test(material_table_is_symmetric),
         cmocka_unit_test(group_lives_with_the_intersection),
+        cmocka_unit_test(conversion_carries_the_geometry),
         cmocka_unit_test(callbacks_and_parameters),
         cmocka_unit_test(freeze_follows_disable),
         cmocka_unit_test(model_and_body_helpers),

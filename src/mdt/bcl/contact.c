@@ -19,6 +19,7 @@
 
 #include "../../me/check.h"
 #include "../world.h"
+#include "contact_batch.h"
 #include "contact_internal.h"
 
 static void resetData(ContactData *d)
@@ -255,17 +256,24 @@ void MdtContactGetPosition(MdtContactID id, MeVector3 p)
     MeVector3Copy(p, d->position);
 }
 
+/* The contact's normal from a finite vector; reports (in `function`) and returns 0 if its length is 0. */
+static int setNormal(ContactData *d, MeReal x, MeReal y, MeReal z, const char *function)
+{
+    MeVector3 n = {x, y, z};
+    if (!MeVector3NormalizeSafe(n)) {
+        ME_REPORT_IN(function, ME_ERR_ZERO_AXIS, "the normal (%g, %g, %g) has zero length; call ignored", (double)x,
+                     (double)y, (double)z);
+        return 0;
+    }
+    MeVector3Copy(d->normal, n);
+    return 1;
+}
+
 void MdtContactSetNormal(MdtContactID id, MeReal x, MeReal y, MeReal z)
 {
     CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
     ME_CHECK_FINITE3(x, y, z, ME_NOTHING);
-    MeVector3 n = {x, y, z};
-    if (!MeVector3NormalizeSafe(n)) {
-        ME_REPORT(ME_ERR_ZERO_AXIS, "the normal (%g, %g, %g) has zero length; call ignored", (double)x, (double)y,
-                  (double)z);
-        return;
-    }
-    MeVector3Copy(d->normal, n);
+    (void)setNormal(d, x, y, z, __func__);
 }
 
 void MdtContactGetNormal(MdtContactID id, MeVector3 n)
@@ -330,14 +338,34 @@ MdtContactParamsID MdtContactGetParams(MdtContactID id)
     return &d->params;
 }
 
-void MdtContactSetParams(MdtContactID id, const MdtContactParams *p)
+static void setParams(ContactData *d, const MdtContactParams *p)
 {
-    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
-    ME_CHECK_NOT_NULL(p, ME_NOTHING);
     /* Keep the option bits this contact set itself (its own direction and world velocity). */
     MeU32 own = d->params.options & (MdtBclContactOptionUseDirection | MdtBclContactOptionUseWorldVelocity);
     d->params = *p;
     d->params.options |= own;
+}
+
+void MdtContactSetParams(MdtContactID id, const MdtContactParams *p)
+{
+    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(p, ME_NOTHING);
+    setParams(d, p);
+}
+
+void MdtContactSetFromCollision(MdtContactID id, const MdtContactParams *params, const MeReal position[3],
+                                const MeReal normal[3], MeReal sign, MeReal penetration)
+{
+    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(params, ME_NOTHING);
+    const MeReal nx = sign * normal[0], ny = sign * normal[1], nz = sign * normal[2];
+    ME_CHECK_FINITE3(position[0], position[1], position[2], ME_NOTHING);
+    ME_CHECK_FINITE3(nx, ny, nz, ME_NOTHING);
+    ME_CHECK_FINITE(penetration, ME_NOTHING);
+    setParams(d, params);
+    MeVector3Set(d->position, position[0], position[1], position[2]);
+    (void)setNormal(d, nx, ny, nz, __func__);
+    d->penetration = penetration;
 }
 
 void MdtContactGetRelativeVelocity(MdtContactID id, MeVector3 v)

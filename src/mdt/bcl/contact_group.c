@@ -8,6 +8,7 @@
 
 #include "../../me/check.h"
 #include "../world.h"
+#include "contact_batch.h"
 #include "contact_internal.h"
 
 typedef struct GroupData {
@@ -126,6 +127,18 @@ MdtContactID MdtContactGroupGetFirstContact(MdtContactGroupID id)
 {
     GROUP_OR_RETURN(g, d, id, NULL);
     return d->first ? (MdtContactID)d->first->id : NULL;
+}
+
+int MdtContactGroupGetContactsAndPositions(MdtContactGroupID id, MdtContactID *contacts, MeVector3 *positions,
+                                           int max)
+{
+    GROUP_OR_RETURN(g, d, id, 0);
+    int n = 0;
+    for (MdtConstraint *c = d->first; c && n < max; c = MDT_CONSTRAINT_DATA(c, ContactData)->next, ++n) {
+        contacts[n] = (MdtContactID)c->id;
+        MeVector3Copy(positions[n], MDT_CONSTRAINT_DATA(c, ContactData)->position);
+    }
+    return n;
 }
 
 MdtContactID MdtContactGroupGetNextContact(MdtContactGroupID id, MdtContactID cid)
