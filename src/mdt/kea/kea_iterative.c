@@ -61,9 +61,9 @@ typedef struct KeaVel4 {
  *  are added in a fixed order (the same at every optimisation level). No branch per body half. */
 static inline MeReal KeaRowVel4(const KeaJacobianRow *J, const KeaVel4 *v0, const KeaVel4 *v1)
 {
-    MeReal s[3];
+    MeReal s[4];
     int k;
-    for (k = 0; k < 3; ++k)
+    for (k = 0; k < 4; ++k) /* four wide: the pads (0) make s[3] = 0, which is not summed */
         s[k] = (J->lin0[k] * v0->lin[k] + J->ang0[k] * v0->ang[k]) + (J->lin1[k] * v1->lin[k] + J->ang1[k] * v1->ang[k]);
     return (s[0] + s[1]) + s[2];
 }
