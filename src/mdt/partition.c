@@ -34,6 +34,46 @@ static int compareConstraints(const void *pa, const void *pb)
     return (a->slot > b->slot) - (a->slot < b->slot);
 }
 
+/* Each partition's bodies and constraints in (sort key, slot) order. Without a body woken this step,
+ * a partition's bodies are seeds, already in that order: placing the seeds partition by partition
+ * orders them; without sort keys on the constraints, the constraint pool's slot order does the same
+ * for them. Otherwise (rare) each partition is sorted. O(bodies + constraint slots) against
+ * O(n log n) comparisons through a function pointer. The cursors borrow the droppedRows array,
+ * which is cleared afterwards. */
+static void sortPartitions(MdtWorld *w, MdtBody *const *seeds, int seedCount, MeBool woke, MeBool keyed)
+{
+    MdtPartitionOutput *out = &w->partitions;
+    int *cursor = out->droppedRows;
+    if (woke) {
+        for (int p = 0; p < out->partitionCount; p++)
+            MeSortInPlace(out->bodies + out->partitionStart[p],
+                          (size_t)(out->partitionStart[p + 1] - out->partitionStart[p]), sizeof(MdtBody *),
+                          compareBodies);
+    } else {
+        for (int p = 0; p < out->partitionCount; p++)
+            cursor[p] = out->partitionStart[p];
+        for (int s = 0; s < seedCount; s++)
+            out->bodies[cursor[seeds[s]->partition]++] = seeds[s];
+    }
+    if (keyed) {
+        for (int p = 0; p < out->partitionCount; p++)
+            MeSortInPlace(out->constraints + out->constraintStart[p],
+                          (size_t)(out->constraintStart[p + 1] - out->constraintStart[p]), sizeof(MdtConstraint *),
+                          compareConstraints);
+    } else if (out->constraintCount > 0) {
+        const unsigned long stamp = w->partitionStamp;
+        for (int p = 0; p < out->partitionCount; p++)
+            cursor[p] = out->constraintStart[p];
+        for (int i = 0; i < w->constraintPool.capacity; i++) {
+            if (!MePoolSlotIsLive(&w->constraintPool, i))
+                continue;
+            MdtConstraint *c = MePoolSlot(&w->constraintPool, i);
+            if (c->visitStamp == stamp && c->enabled)
+                out->constraints[cursor[c->partition]++] = c;
+        }
+    }
+}
+
 /* Carve the output arrays out of the partition chunk. */
 static MeBool allocateOutput(MdtWorld *w, MdtBody ***seeds, int maxBodies, int maxConstraints)
 {
@@ -84,12 +124,14 @@ void MdtPartitionStage(MdtWorld *w)
     }
     MeSortInPlace(seeds, (size_t)seedCount, sizeof(MdtBody *), compareBodies);
 
+    MeBool woke = MEFALSE, keyed = MEFALSE; /* the orders below hold without a sort unless these */
     for (int s = 0; s < seedCount; s++) {
         MdtBody *seed = seeds[s];
         if (seed->visitStamp == stamp)
             continue;
         int bodyStart = out->bodyCount, constraintStart = out->constraintCount;
         seed->visitStamp = stamp;
+        seed->partition = out->partitionCount;
         out->bodies[out->bodyCount++] = seed;
         /* Breadth-first: the body array itself is the queue. */
         for (int head = bodyStart; head < out->bodyCount; head++) {
@@ -98,29 +140,31 @@ void MdtPartitionStage(MdtWorld *w)
                 if (!c->enabled || c->visitStamp == stamp)
                     continue;
                 c->visitStamp = stamp;
+                c->partition = out->partitionCount;
+                keyed |= c->sortKey != 0;
                 out->constraints[out->constraintCount++] = c;
                 for (int k = 0; k < 2; k++) {
                     MdtBody *other = c->body[k];
                     if (!other || other->visitStamp == stamp)
                         continue;
                     other->visitStamp = stamp;
+                    other->partition = out->partitionCount;
                     if (!other->enabled) {
                         MdtBodySetEnabledInternal(other, METRUE);
                         other->enabledByPartitioner = METRUE;
+                        woke = METRUE;
                     }
                     out->bodies[out->bodyCount++] = other;
                 }
             }
         }
-        MeSortInPlace(out->bodies + bodyStart, (size_t)(out->bodyCount - bodyStart), sizeof(MdtBody *), compareBodies);
-        MeSortInPlace(out->constraints + constraintStart, (size_t)(out->constraintCount - constraintStart),
-              sizeof(MdtConstraint *), compareConstraints);
         out->partitionStart[out->partitionCount] = bodyStart;
         out->constraintStart[out->partitionCount] = constraintStart;
         out->partitionCount++;
     }
     out->partitionStart[out->partitionCount] = out->bodyCount;
     out->constraintStart[out->partitionCount] = out->constraintCount;
+    sortPartitions(w, seeds, seedCount, woke, keyed);
 
     for (int p = 0; p < out->partitionCount; p++) {
         for (int i = out->partitionStart[p]; i < out->partitionStart[p + 1]; i++) {

@@ -203,6 +203,51 @@ static void stages_out_of_order_are_refused(void **state)
     MdtWorldDestroy(s.world);
 }
 
+/* A partition lists its bodies in (sort key, slot) order whatever order the search met them in: five
+ * bodies joined b4-b3, b3-b0, b0-b2, b2-b1 are met as b0 b3 b2 b4 b1; then with sort keys; then with
+ * one of them asleep (woken by the partitioner) and a constraint with a sort key. */
+static void partitions_list_bodies_in_sort_key_then_slot_order(void **state)
+{
+    (void)state;
+    MdtWorldID w = MdtWorldCreate(8, 8, 1, 1);
+    MdtBodyID b[5];
+    static const int pairs[4][2] = {{4, 3}, {3, 0}, {0, 2}, {2, 1}};
+    MdtBSJointID j[4];
+    for (int i = 0; i < 5; i++) {
+        b[i] = boxAt(w, (MeReal)i, 0, 0);
+        MdtBodySetSortKey(b[i], 1);
+    }
+    for (int i = 0; i < 4; i++) {
+        j[i] = MdtBSJointCreate(w);
+        MdtBSJointSetBodies(j[i], b[pairs[i][0]], b[pairs[i][1]]);
+        MdtBSJointSetPosition(j[i], 0, 0, 0);
+        MdtBSJointEnable(j[i]);
+    }
+    static const int orders[3][5] = {{0, 1, 2, 3, 4}, {4, 0, 2, 3, 1}, {4, 0, 2, 3, 1}};
+    for (int round = 0; round < 3; round++) {
+        if (round == 1) {
+            MdtBodySetSortKey(b[4], 0);
+            MdtBodySetSortKey(b[1], 5);
+        }
+        if (round == 2) {
+            MdtBodyDisable(b[3]);
+            MdtConstraintSetSortKey(MdtBSJointQuaConstraint(j[2]), 7);
+        }
+        MdtWorldStepBegin(w, ME_R(1.0) / 60);
+        MdtUpdatePartitions(w);
+        assert_int_equal(MdtWorldGetPartitionCount(w), 1);
+        for (int i = 0; i < 5; i++)
+            assert_ptr_equal(MdtWorldGetPartitionBody(w, 0, i), b[orders[round][i]]);
+        MdtPackAllPartitions(w);
+        MdtKeaAddConstraintForces(w);
+        MdtKeaIntegrateSystem(w);
+        MdtUnpackForces(w);
+        MdtWorldStepEnd(w);
+        assert_true(MdtBodyIsEnabled(b[3]));
+    }
+    MdtWorldDestroy(w);
+}
+
 static int countContacts(MdtBodyID b)
 {
     int n = 0;
@@ -246,6 +291,7 @@ int main(void)
         cmocka_unit_test(stages_match_world_step_bit_for_bit),
         cmocka_unit_test(stages_out_of_order_are_refused),
         cmocka_unit_test(body_contact_iteration),
+        cmocka_unit_test(partitions_list_bodies_in_sort_key_then_slot_order),
     };
     MeSetMessageLevel(ME_LEVEL_WARNING);
     return cmocka_run_group_tests(tests, NULL, NULL);
