@@ -242,6 +242,43 @@ static void warm_start_at_solution_stays(void **state)
     kt_free(&t);
 }
 
+/* Subspace minimisation waits for the active set: a column of 20 boxes started cold (every normal
+ * row at its bound, most of them freed by the first sweeps) skips some SM steps, never two in a
+ * row; the same column warm-started at its solution skips none, and both reach the same x. */
+static void subspace_steps_wait_for_the_active_set(void **state)
+{
+    enum { BOXES = 20, N = 12 * BOXES };
+    static const double gravity[3] = {0, 0, -9.81};
+    const double v[6 * BOXES] = {0};
+    KtProblem t;
+    MeReal xd[N], xi[N];
+    KeaParameters direct = kt_params(KeaPathDirect), iter = kt_params(KeaPathIterative);
+    KeaStats st;
+    int i;
+    (void)state;
+    kt_column(&t, BOXES, 1.0, 0.6, 1e-2);
+    kt_set_rhs_from_velocities(&t, v, 1.0 / 60, gravity);
+    assert_int_equal(kt_solve(&t.p, &direct, xd, NULL, &st), KeaStatusOk);
+    iter.maxIterations = 3000;
+    iter.tolerance = ME_TOL(1e-9, 1e-5);
+    kt_solve(&t.p, &iter, xi, NULL, &st); /* cold: x0 = 0 */
+    print_message("column of %d, cold start: %d sweeps, %d SM steps, %d skipped\n", BOXES, st.iterations,
+                  st.subspaceSteps, st.subspaceSkipped);
+    assert_true(st.subspaceSkipped >= 1);
+    assert_true(st.subspaceSkipped <= (st.iterations + 1) / 2); /* never twice in a row */
+    for (i = 0; i < N; ++i)
+        assert_near(xi[i], xd[i], ME_TOL(1e-5, 2e-2) * (1.0 + fabs((double)xd[i])));
+    for (i = 0; i < N; ++i)
+        t.x0[i] = xd[i];
+    t.p.x0 = t.x0;
+    iter.maxIterations = 10;
+    kt_solve(&t.p, &iter, xi, NULL, &st);
+    print_message("column of %d, warm start at the solution: %d sweeps, %d skipped\n", BOXES, st.iterations,
+                  st.subspaceSkipped);
+    assert_int_equal(st.subspaceSkipped, 0);
+    kt_free(&t);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -251,6 +288,7 @@ int main(void)
         cmocka_unit_test(sor_converges_to_the_same_solution),
         cmocka_unit_test(tolerance_stops_early),
         cmocka_unit_test(warm_start_at_solution_stays),
+        cmocka_unit_test(subspace_steps_wait_for_the_active_set),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

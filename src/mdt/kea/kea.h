@@ -127,6 +127,7 @@ typedef struct KeaStats {
     int bodies;         /**< nBodies */
     int iterations;     /**< iterative: Gauss-Seidel sweeps done */
     int subspaceSteps;  /**< iterative: conjugate-gradient steps done (all sweeps) */
+    int subspaceSkipped; /**< iterative: subspace minimisations skipped, the active set still moving */
     int pivots;         /**< direct: active-set changes (a row freed or fixed at a bound) */
     int frictionPasses; /**< direct: box-QP passes (1 without links) */
     int factorizations; /**< direct: full Cholesky factorisations */
