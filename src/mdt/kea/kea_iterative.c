@@ -40,8 +40,8 @@
  * keeps its SM steps; skipping at any change without the "never twice" rule let the pyramids
  * fall). KeaStats.subspaceSkipped counts the skips.
  *
- * Block solves: a block of m rows (a contact group, a joint) is solved exactly with the rest of x
- * fixed. Most blocks at rest have every row strictly inside its bounds: one product with the
+ * Block solves: a block of m rows (a constraint's rows on one body pair, or one contact point with
+ * its friction rows) is solved exactly with the rest of x fixed. Most blocks at rest have every row strictly inside its bounds: one product with the
  * block's inverse (KeaBlockAllFree). Each contact point with its friction rows is a block of its
  * own (not its whole contact group: docs/kea.md), which otherwise tries its few active sets in
  * closed form (opening, or one or both friction rows sliding: KeaContactSolve); anything else (a
