@@ -8,7 +8,7 @@
  *  - the space: McdModelFromID / McdGeometryFromID resolve IDs, McdModelUpdateInternal refreshes a
  *    model's transform and AABB, McdModelSetSpaceInternal records the space a model is in,
  *    McdModelLineSegIntersectInternal is the per-model segment query, McdHelloInternal /
- *    McdGoodbyeInternal work on pairs without re-resolving. */
+ *    McdGoodbyeInternal / McdIntersectModels work on pairs without re-resolving. */
 #ifndef MCD_FRAMEWORK_H
 #define MCD_FRAMEWORK_H
 
@@ -103,5 +103,7 @@ int McdModelLineSegIntersectInternal(const McdModel *m, const MeVector3 p0, cons
 /** McdHello / McdGoodbye on resolved models (the space calls these for its pairs). */
 void McdHelloInternal(McdModelPair *pair, McdModel *m1, McdModel *m2, const char *function);
 void McdGoodbyeInternal(McdModelPair *pair, McdModel *m1);
+/** McdIntersect on the pair's resolved models (the bridge has them already); result not NULL. */
+int McdIntersectModels(McdModelPair *pair, McdModel *m1, McdModel *m2, McdIntersectResult *result);
 
 #endif /* MCD_FRAMEWORK_H */

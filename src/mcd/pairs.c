@@ -131,17 +131,28 @@ static void representativeNormal(const McdContact *c, int count, MeVector3 norma
         MeVector3Copy(normal, c[deepest].normal);
 }
 
-int McdIntersect(McdModelPairID pair, McdIntersectResult *result)
+static void clearResult(McdModelPair *pair, McdIntersectResult *result)
 {
-    ME_CHECK_NOT_NULL(result, 0);
     result->pair = pair;
     result->contactCount = 0;
     result->touch = 0;
     result->data = NULL;
     MeVector3Set(result->normal, 0, 0, 0);
+}
+
+int McdIntersect(McdModelPairID pair, McdIntersectResult *result)
+{
+    ME_CHECK_NOT_NULL(result, 0);
+    clearResult(pair, result);
     McdModel *m1, *m2;
     if (!pairModels(pair, &m1, &m2, __func__))
         return 0;
+    return McdIntersectModels(pair, m1, m2, result);
+}
+
+int McdIntersectModels(McdModelPair *pair, McdModel *m1, McdModel *m2, McdIntersectResult *result)
+{
+    clearResult(pair, result);
     if (result->contactMaxCount > 0 && !result->contacts) {
         ME_REPORT(ME_ERR_NULL_ARGUMENT, "result->contacts is NULL but result->contactMaxCount is %d; call ignored",
                   result->contactMaxCount);

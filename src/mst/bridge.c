@@ -221,7 +221,7 @@ static int collidePair(MstBridge *b, McdModelPair *pair, MdtWorldID world)
     memset(&result, 0, sizeof result);
     result.contacts = b->contacts;
     result.contactMaxCount = b->contactBufferSize;
-    McdIntersect(pair, &result);
+    McdIntersectModels(pair, m1, m2, &result);
     MstMaterialPair *mat = MstBridgeMaterialPair(b, m1->material, m2->material, "MstHandleCollisions");
     if (!mat)
         return 0;
