@@ -304,6 +304,8 @@ static void KeaBlockScatter(int m, const KeaJacobianRow *B, const MeReal *d, Kea
         for (r = 0; r < m; ++r)
             if (d[r] != ME_R(0.0))
                 KeaRowApply4(&B[r], d[r], v0, v1);
+    } else if (m == 3) { /* a contact */
+        KeaBlockScatterSized(3, B, d, v0, v1);
     } else if (m == 12) {
         KeaBlockScatterSized(12, B, d, v0, v1);
     } else {
