@@ -64,12 +64,15 @@ static void sortPartitions(MdtWorld *w, MdtBody *const *seeds, int seedCount, Me
         const unsigned long stamp = w->partitionStamp;
         for (int p = 0; p < out->partitionCount; p++)
             cursor[p] = out->constraintStart[p];
-        for (int i = 0; i < w->constraintPool.capacity; i++) {
+        int placed = 0; /* the walk stops at the last placed constraint, not at the pool's end */
+        for (int i = 0; i < w->constraintPool.capacity && placed < out->constraintCount; i++) {
             if (!MePoolSlotIsLive(&w->constraintPool, i))
                 continue;
             MdtConstraint *c = MePoolSlot(&w->constraintPool, i);
-            if (c->visitStamp == stamp && c->enabled)
+            if (c->visitStamp == stamp && c->enabled) {
                 out->constraints[cursor[c->partition]++] = c;
+                placed++;
+            }
         }
     }
 }
