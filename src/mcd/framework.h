@@ -103,7 +103,9 @@ int McdModelLineSegIntersectInternal(const McdModel *m, const MeVector3 p0, cons
 /** McdHello / McdGoodbye on resolved models (the space calls these for its pairs). */
 void McdHelloInternal(McdModelPair *pair, McdModel *m1, McdModel *m2, const char *function);
 void McdGoodbyeInternal(McdModelPair *pair, McdModel *m1);
-/** McdIntersect on the pair's resolved models (the bridge has them already); result not NULL. */
-int McdIntersectModels(McdModelPair *pair, McdModel *m1, McdModel *m2, McdIntersectResult *result);
+/** McdIntersect on the pair's resolved models (the bridge has them already); result not NULL;
+ *  reports in `function`, the caller's public entry point. */
+int McdIntersectModels(McdModelPair *pair, McdModel *m1, McdModel *m2, McdIntersectResult *result,
+                       const char *function);
 
 #endif /* MCD_FRAMEWORK_H */

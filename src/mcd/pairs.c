@@ -147,14 +147,16 @@ int McdIntersect(McdModelPairID pair, McdIntersectResult *result)
     McdModel *m1, *m2;
     if (!pairModels(pair, &m1, &m2, __func__))
         return 0;
-    return McdIntersectModels(pair, m1, m2, result);
+    return McdIntersectModels(pair, m1, m2, result, __func__);
 }
 
-int McdIntersectModels(McdModelPair *pair, McdModel *m1, McdModel *m2, McdIntersectResult *result)
+int McdIntersectModels(McdModelPair *pair, McdModel *m1, McdModel *m2, McdIntersectResult *result,
+                       const char *function)
 {
     clearResult(pair, result);
     if (result->contactMaxCount > 0 && !result->contacts) {
-        ME_REPORT(ME_ERR_NULL_ARGUMENT, "result->contacts is NULL but result->contactMaxCount is %d; call ignored",
+        ME_REPORT_IN(function, ME_ERR_NULL_ARGUMENT,
+                     "result->contacts is NULL but result->contactMaxCount is %d; call ignored",
                   result->contactMaxCount);
         return 0;
     }
@@ -177,7 +179,7 @@ int McdIntersectModels(McdModelPair *pair, McdModel *m1, McdModel *m2, McdInters
                           : fn(m1->geometry, m1->worldTransform, m2->geometry, m2->worldTransform, tolerance, c,
                                maxCount, &pair->cache);
     if (n < 0 || n > maxCount) {
-        ME_REPORT(ME_ERR_INTERNAL, "a pair test returned %d contacts for room for %d", n, maxCount);
+        ME_REPORT_IN(function, ME_ERR_INTERNAL, "a pair test returned %d contacts for room for %d", n, maxCount);
         n = n < 0 ? 0 : maxCount;
     }
     if (pair->swapped)

@@ -176,7 +176,7 @@ static int matchContacts(MdtContactGroupID g, const McdContact *in, int n, MdtCo
     enum { MAX_OLD = 64 };
     MdtContactID old[MAX_OLD];
     MeVector3 oldPos[MAX_OLD];
-    const int oldCount = MdtContactGroupGetContactsAndPositions(g, old, oldPos, MAX_OLD);
+    const int oldCount = MdtContactGroupGetContactsAndPositions(g, old, oldPos, MAX_OLD, "MstHandleCollisions");
     MeBool used[MAX_OLD] = {0};
     for (int i = 0; i < n; i++) {
         int best = -1;
@@ -221,7 +221,7 @@ static int collidePair(MstBridge *b, McdModelPair *pair, MdtWorldID world)
     memset(&result, 0, sizeof result);
     result.contacts = b->contacts;
     result.contactMaxCount = b->contactBufferSize;
-    McdIntersectModels(pair, m1, m2, &result);
+    McdIntersectModels(pair, m1, m2, &result, "MstHandleCollisions");
     MstMaterialPair *mat = MstBridgeMaterialPair(b, m1->material, m2->material, "MstHandleCollisions");
     if (!mat)
         return 0;

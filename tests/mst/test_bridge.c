@@ -6,6 +6,8 @@
 
 #include <karma/karma.h>
 
+#include "mdt/bcl/contact_batch.h" /* the bridge's batch setter, checked against the setters it stands for */
+
 /* A universe with gravity along −z and a ground plane at z = 0. */
 typedef struct Scene {
     MstUniverseID u;
@@ -175,6 +177,45 @@ static void conversion_carries_the_geometry(void **state)
     MstUniverseDestroy(s.u);
 }
 
+/* The bridge's one-call contact update (MdtContactSetFromCollision) checks each field as its own
+ * setter does: a non-finite or zero field is reported and skipped, the others are set. */
+static void collision_update_skips_bad_fields_one_by_one(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    MdtWorldID w = MdtWorldCreate(4, 8, 1, 1);
+    MdtBodyID b = MdtBodyCreate(w);
+    MdtContactID c = MdtContactCreate(w);
+    MdtContactSetBodies(c, b, NULL);
+    MdtContactParams params;
+    MdtContactParamsReset(&params);
+    MdtContactParamsSetFriction(&params, 0.25f);
+    const MeReal pos[3] = {1, 2, 3}, normal[3] = {0, 0, 2}, nanPos[3] = {1, NAN, 3}, zero[3] = {0, 0, 0};
+    MeVector3 p, n;
+    MdtContactSetFromCollision(c, &params, pos, normal, -1, 0.01f); /* all good; normal scaled, unit */
+    MdtContactGetPosition(c, p);
+    MdtContactGetNormal(c, n);
+    assert_true(p[0] == 1 && p[1] == 2 && p[2] == 3);
+    assert_true(n[0] == 0 && n[1] == 0 && n[2] == -1);
+    assert_near(MdtContactGetPenetration(c), 0.01, 1e-7);
+    assert_near(MdtContactParamsGetPrimaryFriction(MdtContactGetParams(c)), 0.25, 0);
+    /* a NaN position: reported as MdtContactSetPosition would, the rest still set */
+    assert_reports(ME_ERR_NONFINITE_ARGUMENT, MdtContactSetFromCollision(c, &params, nanPos, normal, 1, 0.02f));
+    MdtContactGetPosition(c, p);
+    MdtContactGetNormal(c, n);
+    assert_true(p[1] == 2 && n[2] == 1);
+    assert_near(MdtContactGetPenetration(c), 0.02, 1e-7);
+    /* a zero normal and a NaN penetration: both reported, position set */
+    assert_reports(ME_ERR_ZERO_AXIS, MdtContactSetFromCollision(c, &params, normal, zero, 1, 0.03f));
+    MdtContactGetPosition(c, p);
+    assert_true(p[2] == 2);
+    assert_reports(ME_ERR_NONFINITE_ARGUMENT, MdtContactSetFromCollision(c, &params, pos, normal, 1, NAN));
+    assert_near(MdtContactGetPenetration(c), 0.03, 1e-7);
+    assert_reports(ME_ERR_NULL_ARGUMENT, MdtContactSetFromCollision(c, NULL, pos, normal, 1, 0.04f));
+    assert_near(MdtContactGetPenetration(c), 0.04, 1e-7);
+    MdtWorldDestroy(w);
+}
+
 static int perContactCalls, perPairCalls, intersectCalls;
 static void countIntersect(McdIntersectResult *r)
 {
@@ -304,6 +345,7 @@ int main(void)
         cmocka_unit_test(material_table_is_symmetric),
         cmocka_unit_test(group_lives_with_the_intersection),
         cmocka_unit_test(conversion_carries_the_geometry),
+        cmocka_unit_test(collision_update_skips_bad_fields_one_by_one),
         cmocka_unit_test(callbacks_and_parameters),
         cmocka_unit_test(freeze_follows_disable),
         cmocka_unit_test(model_and_body_helpers),

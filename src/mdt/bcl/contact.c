@@ -353,19 +353,43 @@ void MdtContactSetParams(MdtContactID id, const MdtContactParams *p)
     setParams(d, p);
 }
 
+/* A finite 3-vector, or a report in `function` as ME_CHECK_FINITE3 makes it in that function. */
+static int finite3In(const char *function, MeReal x, MeReal y, MeReal z)
+{
+    const MeReal v[3] = {x, y, z};
+    static const char *const names[3] = {"x", "y", "z"};
+    for (int k = 0; k < 3; k++)
+        if (!ME_IS_FINITE(v[k])) {
+            ME_REPORT_IN(function, ME_ERR_NONFINITE_ARGUMENT, "argument '%s' is %g (not finite); call ignored",
+                         names[k], (double)v[k]);
+            return 0;
+        }
+    return 1;
+}
+
 void MdtContactSetFromCollision(MdtContactID id, const MdtContactParams *params, const MeReal position[3],
                                 const MeReal normal[3], MeReal sign, MeReal penetration)
 {
-    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
-    ME_CHECK_NOT_NULL(params, ME_NOTHING);
+    /* One handle check; each field then checked and set as its own setter would, a bad one skipped
+     * and reported in that setter's name. */
+    MdtConstraint *c = contactFromID(id, "MdtContactSetParams");
+    if (!c)
+        return;
+    ContactData *d = MDT_CONSTRAINT_DATA(c, ContactData);
+    if (params)
+        setParams(d, params);
+    else
+        ME_REPORT_IN("MdtContactSetParams", ME_ERR_NULL_ARGUMENT, "argument 'p' is NULL; call ignored");
+    if (finite3In("MdtContactSetPosition", position[0], position[1], position[2]))
+        MeVector3Set(d->position, position[0], position[1], position[2]);
     const MeReal nx = sign * normal[0], ny = sign * normal[1], nz = sign * normal[2];
-    ME_CHECK_FINITE3(position[0], position[1], position[2], ME_NOTHING);
-    ME_CHECK_FINITE3(nx, ny, nz, ME_NOTHING);
-    ME_CHECK_FINITE(penetration, ME_NOTHING);
-    setParams(d, params);
-    MeVector3Set(d->position, position[0], position[1], position[2]);
-    (void)setNormal(d, nx, ny, nz, __func__);
-    d->penetration = penetration;
+    if (finite3In("MdtContactSetNormal", nx, ny, nz))
+        (void)setNormal(d, nx, ny, nz, "MdtContactSetNormal");
+    if (ME_IS_FINITE(penetration))
+        d->penetration = penetration;
+    else
+        ME_REPORT_IN("MdtContactSetPenetration", ME_ERR_NONFINITE_ARGUMENT,
+                     "argument 'p' is %g (not finite); call ignored", (double)penetration);
 }
 
 void MdtContactGetRelativeVelocity(MdtContactID id, MeVector3 v)

@@ -8,13 +8,13 @@
 #include <karma/MdtContactParams.h>
 
 /* The group's contacts in order (at most max) and their positions; returns how many (0 for an
- * invalid group, reported as MdtContactGroupGetFirstContact reports it). */
+ * invalid group, reported in `function`, the caller's public entry point). */
 int MdtContactGroupGetContactsAndPositions(MdtContactGroupID group, MdtContactID *contacts, MeVector3 *positions,
-                                           int max);
+                                           int max, const char *function);
 
 /* MdtContactSetParams, MdtContactSetPosition, MdtContactSetNormal (normal scaled by sign first) and
- * MdtContactSetPenetration on one contact; a NULL or non-finite argument is reported and leaves the
- * contact as it was. */
+ * MdtContactSetPenetration on one contact, in that order: a NULL or non-finite field is skipped and
+ * reported in the name of its setter, the others are set. */
 void MdtContactSetFromCollision(MdtContactID contact, const MdtContactParams *params, const MeReal position[3],
                                 const MeReal normal[3], MeReal sign, MeReal penetration);
 

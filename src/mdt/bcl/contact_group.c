@@ -130,9 +130,12 @@ MdtContactID MdtContactGroupGetFirstContact(MdtContactGroupID id)
 }
 
 int MdtContactGroupGetContactsAndPositions(MdtContactGroupID id, MdtContactID *contacts, MeVector3 *positions,
-                                           int max)
+                                           int max, const char *function)
 {
-    GROUP_OR_RETURN(g, d, id, 0);
+    MdtConstraint *g = MdtConstraintFromIDOfType(id, MdtBclCONTACTGROUP, function);
+    if (!g)
+        return 0;
+    const GroupData *d = MDT_CONSTRAINT_DATA(g, GroupData);
     int n = 0;
     for (MdtConstraint *c = d->first; c && n < max; c = MDT_CONSTRAINT_DATA(c, ContactData)->next, ++n) {
         contacts[n] = (MdtContactID)c->id;
