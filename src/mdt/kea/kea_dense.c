@@ -87,23 +87,15 @@ void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int lda, int i)
     int j, f = k;
 
     /* The row's envelope starts at its first coupling to a row already in the factor; before it,
-     * L is zero (fill stays inside the envelope), and nothing there is written or read. */
+     * L is zero (fill stays inside the envelope), and nothing there is written or read. A_F,i goes
+     * into row k from f on (with a pattern, only A's structural non-zeros are read: the rest of A
+     * may be stale), then forward substitution L l = A_F,i in place, over the two envelopes. */
     if (c->patternStart) {
         for (j = c->patternStart[i]; j < c->patternStart[i + 1]; ++j) {
             const int p = c->pos[c->pattern[j]];
             if (p >= 0 && p < f)
                 f = p;
         }
-    } else {
-        for (j = 0; j < k; ++j)
-            if (Ai[c->F[j]] != ME_R(0.0)) {
-                f = j;
-                break;
-            }
-    }
-    /* A_F,i into row k (with a pattern, only A's structural non-zeros are read: the rest of A may
-     * be stale), then forward substitution L l = A_F,i in place, over the two envelopes. */
-    if (c->patternStart) {
         for (j = f; j < k; ++j)
             lk[j] = ME_R(0.0);
         for (j = c->patternStart[i]; j < c->patternStart[i + 1]; ++j) {
@@ -112,6 +104,11 @@ void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int lda, int i)
                 lk[p] = Ai[c->pattern[j]];
         }
     } else {
+        for (j = 0; j < k; ++j)
+            if (Ai[c->F[j]] != ME_R(0.0)) {
+                f = j;
+                break;
+            }
         for (j = f; j < k; ++j)
             lk[j] = Ai[c->F[j]];
     }

@@ -150,6 +150,17 @@ static MeReal KeaDenseRowDot(const KeaDenseLcp *lcp, int i, const MeReal *v, con
     return s;
 }
 
+/* y[p] = (r - A v)_F[p]: the free rows' right-hand side at v (the Newton point's, the refinement's
+ * and the polish's residual). */
+static void KeaFreeRowsResidual(const KeaDenseLcp *lcp, KeaDenseWork *w, const MeReal *v)
+{
+    const KeaCholesky *c = &w->chol;
+    const int nz = KeaDensePrepare(lcp, v, w->nonzero);
+    int p;
+    for (p = 0; p < c->size; ++p)
+        w->y[p] = lcp->r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], v, w->nonzero, nz);
+}
+
 /* Free every row that is free by state, in the LCP's order (a fresh factorisation). */
 static void KeaDenseFactorFree(const KeaDenseLcp *lcp, KeaDenseWork *w, KeaStats *stats)
 {
@@ -195,9 +206,7 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
             nz += w->xFixed[j] != ME_R(0.0);
         }
         if (nz > 0) {
-            nz = KeaDensePrepare(lcp, w->xFixed, w->nonzero);
-            for (p = 0; p < c->size; ++p)
-                w->y[p] = r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], w->xFixed, w->nonzero, nz);
+            KeaFreeRowsResidual(lcp, w, w->xFixed);
         } else {
             for (p = 0; p < c->size; ++p)
                 w->y[p] = r[c->F[p]];
@@ -414,16 +423,6 @@ static void KeaPolishCandidate(const KeaDenseLcp *lcp, KeaDenseWork *w)
                          w->cand[lcp->link[i]];
 }
 
-/* y[p] = (r - A cand)_F[p]: the residual of the free rows' equations at cand. */
-static void KeaPolishResidual(const KeaDenseLcp *lcp, KeaDenseWork *w)
-{
-    const KeaCholesky *c = &w->chol;
-    const int nz = KeaDensePrepare(lcp, w->cand, w->nonzero);
-    int p;
-    for (p = 0; p < c->size; ++p)
-        w->y[p] = lcp->r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], w->cand, w->nonzero, nz);
-}
-
 static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
 {
     const int n = lcp->n;
@@ -474,10 +473,10 @@ static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
     /* Solve from cand = x with the free and sliding rows zeroed, then one refinement step. */
     for (i = 0; i < n; ++i)
         w->cand[i] = (w->state[i] == KEA_FREE || KeaIsSliding(lcp, w, i)) ? ME_R(0.0) : x[i];
-    KeaPolishResidual(lcp, w);
+    KeaFreeRowsResidual(lcp, w, w->cand);
     KeaWoodburySolve(w, m, w->y);
     KeaPolishCandidate(lcp, w);
-    KeaPolishResidual(lcp, w);
+    KeaFreeRowsResidual(lcp, w, w->cand);
     KeaWoodburySolve(w, m, w->y);
     for (p = 0; p < k; ++p)
         w->y[p] += w->cand[c->F[p]];
@@ -514,12 +513,10 @@ static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
 static void KeaDenseRefine(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
 {
     KeaCholesky *c = &w->chol;
-    int p, nz;
+    int p;
     if (c->size == 0)
         return;
-    nz = KeaDensePrepare(lcp, x, w->nonzero);
-    for (p = 0; p < c->size; ++p)
-        w->y[p] = lcp->r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], x, w->nonzero, nz);
+    KeaFreeRowsResidual(lcp, w, x);
     KeaCholeskySolve(c, w->y);
     for (p = 0; p < c->size; ++p) {
         const int i = c->F[p];
