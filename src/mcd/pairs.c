@@ -143,11 +143,12 @@ static void clearResult(McdModelPair *pair, McdIntersectResult *result)
 int McdIntersect(McdModelPairID pair, McdIntersectResult *result)
 {
     ME_CHECK_NOT_NULL(result, 0);
-    clearResult(pair, result);
     McdModel *m1, *m2;
-    if (!pairModels(pair, &m1, &m2, __func__))
+    if (!pairModels(pair, &m1, &m2, __func__)) {
+        clearResult(pair, result);
         return 0;
-    return McdIntersectModels(pair, m1, m2, result, __func__);
+    }
+    return McdIntersectModels(pair, m1, m2, result, __func__); /* which clears the result first */
 }
 
 int McdIntersectModels(McdModelPair *pair, McdModel *m1, McdModel *m2, McdIntersectResult *result,
