@@ -76,6 +76,15 @@ void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeRe
             A[(size_t)i * (size_t)n + (size_t)i] += problem->epsilon[i];
 }
 
+/* y -= a x over n entries; y and x never overlap (restrict lets the compiler vectorise; each entry
+ * is one multiply and one subtract either way, so the bits do not depend on it). */
+static void KeaSubtractScaled(MeReal *restrict y, const MeReal *restrict x, MeReal a, int n)
+{
+    int m;
+    for (m = 0; m < n; ++m)
+        y[m] -= x[m] * a;
+}
+
 static MeReal *KeaRow(const KeaCholesky *c, int k) { return c->L + (size_t)k * (size_t)c->ld; }
 
 void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int lda, int i)
@@ -87,21 +96,19 @@ void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int lda, int i)
     int j, f = k;
 
     /* The row's envelope starts at its first coupling to a row already in the factor; before it,
-     * L is zero (fill stays inside the envelope), and nothing there is written or read. A_F,i goes
+     * L is zero (fill stays inside the envelope) and is never read. A_F,i goes
      * into row k from f on (with a pattern, only A's structural non-zeros are read: the rest of A
      * may be stale), then forward substitution L l = A_F,i in place, over the two envelopes. */
-    if (c->patternStart) {
-        for (j = c->patternStart[i]; j < c->patternStart[i + 1]; ++j) {
-            const int p = c->pos[c->pattern[j]];
-            if (p >= 0 && p < f)
-                f = p;
-        }
-        for (j = f; j < k; ++j)
+    if (c->patternStart) { /* one pass: clear the whole row (cheaper than a second pass over the
+                            * pattern), then place A's entries and find the first */
+        for (j = 0; j < k; ++j)
             lk[j] = ME_R(0.0);
         for (j = c->patternStart[i]; j < c->patternStart[i + 1]; ++j) {
             const int p = c->pos[c->pattern[j]];
-            if (p >= 0)
+            if (p >= 0) {
                 lk[p] = Ai[c->pattern[j]];
+                f = p < f ? p : f;
+            }
         }
     } else {
         for (j = 0; j < k; ++j)
@@ -177,7 +184,7 @@ void KeaCholeskyRemove(KeaCholesky *c, int p)
 void KeaCholeskySolve(const KeaCholesky *c, MeReal *b)
 {
     const int k = c->size;
-    int i, j;
+    int i;
     for (i = 0; i < k; ++i) { /* L y = b */
         const MeReal *li = KeaRow(c, i);
         const int f = c->first[i];
@@ -187,8 +194,7 @@ void KeaCholeskySolve(const KeaCholesky *c, MeReal *b)
         const MeReal *li = KeaRow(c, i);
         const MeReal xi = b[i] / li[i];
         b[i] = xi;
-        for (j = c->first[i]; j < i; ++j)
-            b[j] -= li[j] * xi;
+        KeaSubtractScaled(b + c->first[i], li + c->first[i], xi, i - c->first[i]);
     }
 }
 
