@@ -127,7 +127,8 @@ typedef struct KeaStats {
     int bodies;         /**< nBodies */
     int iterations;     /**< iterative: Gauss-Seidel sweeps done */
     int subspaceSteps;  /**< iterative: conjugate-gradient steps done (all sweeps) */
-    int subspaceSkipped; /**< iterative: subspace minimisations skipped, the active set still moving */
+    int subspaceSkipped; /**< iterative: subspace minimisations skipped (the active set still moving,
+                              or the last one did not pay) */
     int pivots;         /**< direct: active-set changes (a row freed or fixed at a bound) */
     int frictionPasses; /**< direct: box-QP passes (1 without links) */
     int factorizations; /**< direct: full Cholesky factorisations */
