@@ -63,6 +63,9 @@ struct KeaDenseWork {
     int *slot;           /**< n: column of a normal row in U, or -1 */
     int *normals;        /**< n/2: normal rows with sliding friction rows */
     int *perm;           /**< n/2: row swaps of the capacitance matrix's LU */
+    int velocityCurrent; /**< the last solve ended on an accepted polish whose products left
+                              M^-1 J^T x in lcp->velocity, and its rows' residuals in residual */
+    MeReal residual;     /**< then: KeaResidualWithDiagonal of the returned x (same sums) */
 };
 
 KeaDenseWork *KeaDenseWorkCreate(KeaArena *arena, int n)
@@ -428,8 +431,8 @@ static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
     const int n = lcp->n;
     const KeaCholesky *c = &w->chol;
     const int k = c->size;
-    MeReal rScale = ME_R(0.0), diagMax = ME_R(0.0), xScale = ME_R(0.0), tolW, tolX;
-    int i, j, p, a, m = 0, nz = 0;
+    MeReal rScale = ME_R(0.0), diagMax = ME_R(0.0), xScale = ME_R(0.0), tolW, tolX, worst = ME_R(0.0);
+    int i, j, p, a, m = 0, nz = 0, unchanged = 1, positive = 1;
 
     for (i = 0; i < n; ++i)
         w->slot[i] = -1;
@@ -494,18 +497,27 @@ static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
     for (i = 0; i < n; ++i) { /* natural-map test at the candidate's own bounds, every row alike */
         const MeReal Aii = lcp->A[(size_t)i * (size_t)n + (size_t)i];
         const MeReal d = Aii > ME_R(0.0) ? Aii : ME_R(1.0);
-        MeReal lo, hi, wi;
+        MeReal lo, hi, wi, ri;
         KeaDenseBounds(lcp, w->cand, i, &lo, &hi);
         if (w->cand[i] < lo - tolX || w->cand[i] > hi + tolX)
             return 0;
         wi = KeaDenseRowDot(lcp, i, w->cand, w->nonzero, nz) - lcp->r[i];
-        if (d * KeaFabs(KeaClamp(w->cand[i], lo, hi) - KeaClamp(w->cand[i] - wi / d, lo, hi)) > tolW)
+        ri = d * KeaFabs(KeaClamp(w->cand[i], lo, hi) - KeaClamp(w->cand[i] - wi / d, lo, hi));
+        if (ri > tolW)
             return 0;
+        if (ri > worst || ri != ri)
+            worst = ri;
+        positive &= Aii > ME_R(0.0);
     }
     for (i = 0; i < n; ++i) {
         KeaDenseBounds(lcp, w->cand, i, &w->lo[i], &w->hi[i]);
         x[i] = KeaClamp(w->cand[i], w->lo[i], w->hi[i]);
+        unchanged &= x[i] == w->cand[i];
     }
+    /* x is the candidate itself (no row clamped): the velocity and the residuals just computed for
+     * it are those of the result, and KeaResidualWithDiagonal's sums (d = A_ii > 0 on every row) */
+    w->velocityCurrent = lcp->rows && unchanged && positive;
+    w->residual = worst;
     return 1;
 }
 
@@ -524,6 +536,14 @@ static void KeaDenseRefine(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
     }
 }
 
+int KeaDenseLcpFinalVelocity(const KeaDenseWork *w, MeReal *residual)
+{
+    if (!w->velocityCurrent)
+        return 0;
+    *residual = w->residual;
+    return 1;
+}
+
 KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses, KeaDenseWork *w,
                            MeReal *x, KeaStats *stats)
 {
@@ -533,6 +553,7 @@ KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses,
     int i, polished = 0, passes = 1;
 
     w->chol.regularised = 0;
+    w->velocityCurrent = 0;
     w->chol.patternStart = lcp->patternStart;
     w->chol.pattern = lcp->pattern;
     /* Warm start: bounds from x as given (links read the unclamped normal impulses), then clamp. */

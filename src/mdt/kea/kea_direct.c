@@ -5,7 +5,8 @@
  * sparse (kea_order.c), and hands A with the rows' rhs, bounds, friction links, order, pattern and
  * the rows themselves to the box-LCP solver (kea_dense_lcp.c: primal active set with an updatable
  * Cholesky factor, friction passes and a Woodbury polish of the coupled friction). Then
- * Delta v = M^-1 J^T x.
+ * Delta v = M^-1 J^T x and the residual, unless the polish's acceptance test has just computed both
+ * for the very x it returns (KeaDenseLcpFinalVelocity).
  *
  * Cost: the factor works on envelopes (kea_dense.c): about linear in the rows for a chain or a tree
  * of bodies, O(n^3 / 6) at worst (every row coupled to every other); a product with A goes through
@@ -17,6 +18,8 @@
  * counted; if it exceeds maxDirectRows (maxDirectRows + 1) / 2 entries, a dense factor of
  * maxDirectRows rows, the path declines (KeaStatusDeclined) before forming A and the iterative
  * path solves the partition instead. */
+#include <string.h>
+
 #include "kea_internal.h"
 
 typedef struct KeaDirectWork {
@@ -55,6 +58,15 @@ static void KeaDirectPattern(const KeaProblem *problem, const int *incidence, co
         w->mark[i] = -1;
     for (i = 0; i < n; ++i) {
         w->patternStart[i] = count;
+        if (i > 0 && (problem->rowBodies[i][0] >= 0 || problem->rowBodies[i][1] >= 0) &&
+            problem->rowBodies[i][0] == problem->rowBodies[i - 1][0] &&
+            problem->rowBodies[i][1] == problem->rowBodies[i - 1][1]) {
+            /* the next row of the same constraint (same bodies): the same rows, in the same order */
+            const int prev = w->patternStart[i - 1], len = count - prev;
+            memcpy(w->pattern + count, w->pattern + prev, sizeof(int) * (size_t)len);
+            count += len;
+            continue;
+        }
         for (h = 0; h < 2; ++h) {
             const int b = problem->rowBodies[i][h];
             if (b < 0)
@@ -135,7 +147,9 @@ KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params,
     lcp.rows = problem;
     lcp.velocity = dv; /* scratch until the final velocity change below */
     status = KeaDenseLcpSolve(&lcp, params->maxPivots, params->maxFrictionPasses, w.lcp, x, stats);
-    KeaBodyVelocityFromImpulses(problem, x, dv);
-    stats->residual = KeaResidualWithDiagonal(problem, x, dv, w.A, (size_t)n + 1);
+    if (!KeaDenseLcpFinalVelocity(w.lcp, &stats->residual)) { /* else dv and the residual are x's */
+        KeaBodyVelocityFromImpulses(problem, x, dv);
+        stats->residual = KeaResidualWithDiagonal(problem, x, dv, w.A, (size_t)n + 1);
+    }
     return status;
 }

@@ -218,6 +218,9 @@ size_t KeaDenseWorkspaceBytes(int n);
  *  (8 n + 64). */
 KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses, KeaDenseWork *w,
                            MeReal *x, KeaStats *stats);
+/** After KeaDenseLcpSolve on an LCP given with its rows: 1 if lcp->velocity already holds
+ *  M^-1 J^T x for the returned x, with *residual its KeaResidualWithDiagonal (d = A_ii); else 0. */
+int KeaDenseLcpFinalVelocity(const KeaDenseWork *w, MeReal *residual);
 
 /** KeaResidual with the diagonal d_i = A_ii given (diag[i * stride]), e.g. from a formed A. */
 MeReal KeaResidualWithDiagonal(const KeaProblem *problem, const MeReal *x, const KeaBodyVelocity *dv,
