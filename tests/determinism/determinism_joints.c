@@ -17,9 +17,9 @@
 #define STEP_SIZE (ME_R(1.0) / 60)
 
 #if KARMA_DOUBLE
-#  define GOLDEN_HASH 0xca478afc6c553391ull
+#  define GOLDEN_HASH 0x6617416eec7443e9ull
 #else
-#  define GOLDEN_HASH 0x68761a82c94ef197ull
+#  define GOLDEN_HASH 0x4ad65e45e3b55c1eull
 #endif
 
 typedef struct Scene {

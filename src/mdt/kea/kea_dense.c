@@ -122,7 +122,7 @@ void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int lda, int i)
     for (j = f; j < k; ++j) {
         const MeReal *lj = KeaRow(c, j);
         const int m0 = f > c->first[j] ? f : c->first[j];
-        lk[j] = (lk[j] - KeaDotN4(lj + m0, lk + m0, j - m0)) / lj[j];
+        lk[j] = (lk[j] - KeaDotN4(lj + m0, lk + m0, j - m0)) * c->inv[j];
         d -= lk[j] * lk[j];
     }
     if (!(d > floor)) {
@@ -130,6 +130,7 @@ void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int lda, int i)
         ++c->regularised;
     }
     lk[k] = KeaSqrt(d);
+    c->inv[k] = ME_R(1.0) / lk[k];
     c->first[k] = f;
     c->F[k] = i;
     c->pos[i] = k;
@@ -175,6 +176,7 @@ void KeaCholeskyRemove(KeaCholesky *c, int p)
         for (m = f; m < i; ++m)
             dst[m] = src[m < p ? m : m + 1];
         c->first[i - 1] = f;
+        c->inv[i - 1] = ME_R(1.0) / dst[i - 1];
         c->F[i - 1] = c->F[i];
         c->pos[c->F[i - 1]] = i - 1;
     }
@@ -188,11 +190,11 @@ void KeaCholeskySolve(const KeaCholesky *c, MeReal *b)
     for (i = 0; i < k; ++i) { /* L y = b */
         const MeReal *li = KeaRow(c, i);
         const int f = c->first[i];
-        b[i] = (b[i] - KeaDotN4(li + f, b + f, i - f)) / li[i];
+        b[i] = (b[i] - KeaDotN4(li + f, b + f, i - f)) * c->inv[i];
     }
     for (i = k - 1; i >= 0; --i) { /* L^T x = y, column-oriented so that L is read by rows */
         const MeReal *li = KeaRow(c, i);
-        const MeReal xi = b[i] / li[i];
+        const MeReal xi = b[i] * c->inv[i];
         b[i] = xi;
         KeaSubtractScaled(b + c->first[i], li + c->first[i], xi, i - c->first[i]);
     }

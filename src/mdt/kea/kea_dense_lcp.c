@@ -78,6 +78,7 @@ KeaDenseWork *KeaDenseWorkCreate(KeaArena *arena, int n)
     w->chol.F = KEA_ALLOC(arena, int, n);
     w->chol.pos = KEA_ALLOC(arena, int, n);
     w->chol.first = KEA_ALLOC(arena, int, n);
+    w->chol.inv = KEA_ALLOC(arena, MeReal, n);
     w->lo = KEA_ALLOC(arena, MeReal, n);
     w->hi = KEA_ALLOC(arena, MeReal, n);
     w->y = KEA_ALLOC(arena, MeReal, n);

@@ -165,6 +165,8 @@ typedef struct KeaCholesky {
     int *F;     /**< F[k] = problem row at position k */
     int *pos;   /**< pos[i] = position of problem row i in F, or -1 */
     int *first; /**< first[k] = first column of row k's envelope (L[k][j] = 0 for j < first[k]) */
+    MeReal *inv; /**< inv[k] = 1 / L[k][k]: the substitutions multiply (a division's latency would
+                      sit on their chain of dependent steps) */
     const int *patternStart, *pattern; /**< the LCP's pattern (KeaDenseLcp), or NULL: A is scanned */
     int regularised; /**< pivots raised to the floor so far */
 } KeaCholesky;
