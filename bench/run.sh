@@ -13,11 +13,11 @@
 # peer whose Debian package is missing is installed when run as root, otherwise skipped with a message.
 # Each program prints one CSV line per (variant, scene) (see bench/scenes/bench_harness.h).
 #
-# Rounds: the timing of a shared VM drifts by tens of per cent over minutes, so each engine runs every
-# scene ROUNDS times (default 3), the rounds interleaved across the engines, and the tables keep, per
-# engine, variant and scene, the run with the lowest median CPU time (the figures of the rounds are
-# the same: every engine is deterministic). ODE's dWorldStep, whose runs mostly stop at the time
-# budget, runs once.
+# Rounds: the timing of a shared VM drifts by tens of per cent, sometimes 2x, for minutes at a time,
+# so the whole set (every scene, every engine in turn) runs ROUNDS times (default 3), each round
+# minutes after the last, and the tables keep, per engine, variant and scene, the run with the lowest
+# median CPU time (the figures of the rounds are the same: every engine is deterministic). ODE's
+# dWorldStep, whose runs mostly stop at the time budget, runs in the first round only.
 #
 # Environment: BUILD (build dir, default build/bench), JOBS (2), BUDGET (seconds of CPU time in timed
 # steps after which a run stops, default 30), ROUNDS (3), BENCH_ARGS (options passed to every program), RESULTS (default
@@ -88,8 +88,8 @@ case " $BENCH_ARGS " in
 esac
 header=--header
 : >"$tmp/raw"
-for scene_arg in "${scene_args[@]}"; do
-    for ((round = 1; round <= ROUNDS; round++)); do
+for ((round = 1; round <= ROUNDS; round++)); do
+    for scene_arg in "${scene_args[@]}"; do
         for prog in "${programs[@]}"; do
             only=
             case "$prog $BENCH_ARGS" in
@@ -130,8 +130,8 @@ cp "$tmp/csv" "$CSV"
     echo "start and $load_end at the end (the machine is shared: a load above $(nproc) slows every engine alike);"
     echo "$(gcc --version | head -1), Release (-O3), ODE $(pkg-config --modversion ode 2>/dev/null || echo -),"
     echo "Bullet $(pkg-config --modversion bullet 2>/dev/null || echo -). Time budget per run: ${BUDGET} s of CPU time in timed steps${BENCH_ARGS:+; options: \`$BENCH_ARGS\`}."
-    echo "Each engine ran every scene ${ROUNDS} times, the rounds interleaved across the engines; each row is the"
-    echo "round with the lowest median CPU time (ODE's dWorldStep: one round)."
+    echo "The whole set ran ${ROUNDS} times (rounds minutes apart, every engine in turn on each scene); each row is"
+    echo "the round with the lowest median CPU time (ODE's dWorldStep: the first round only)."
     echo
     echo "$notes"
     echo
