@@ -140,11 +140,7 @@ MeReal McdFrameworkGetLengthScale(McdFrameworkID id)
 
 MeBool McdCheckTolerance(MeReal tolerance, const char *function)
 {
-    if (!ME_IS_FINITE(tolerance)) {
-        ME_REPORT_IN(function, ME_ERR_NONFINITE_ARGUMENT, "argument 'tolerance' is %g (not finite); call ignored",
-                     (double)tolerance);
-        return MEFALSE;
-    }
+    ME_CHECK_FINITE_IN(function, tolerance, MEFALSE);
     if (tolerance < 0) {
         ME_REPORT_IN(function, ME_ERR_NEGATIVE_VALUE, "argument 'tolerance' is %g; it must be >= 0; call ignored",
                      (double)tolerance);

@@ -639,10 +639,7 @@ void MdtBodySetAngularVelocity(MdtBodyID id, MeReal wx, MeReal wy, MeReal wz)
 
 static MeBool checkDamping(MeReal d, const char *function)
 {
-    if (!ME_IS_FINITE(d)) {
-        ME_REPORT_IN(function, ME_ERR_NONFINITE_ARGUMENT, "argument 'd' is %g (not finite); call ignored", (double)d);
-        return MEFALSE;
-    }
+    ME_CHECK_FINITE_IN(function, d, MEFALSE);
     if (d < 0) {
         ME_REPORT_IN(function, ME_ERR_NEGATIVE_DAMPING, "argument 'd' (%g) must not be negative; call ignored",
                      (double)d);

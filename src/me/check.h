@@ -25,31 +25,37 @@
 /** MeReal is finite (not NaN, not infinite). */
 #define ME_IS_FINITE(x) (isfinite(x))
 
-/** Reject a non-finite argument: report and return `ret` (use ME_NOTHING for void functions). */
+/** Reject a non-finite argument: report and return `ret` (use ME_NOTHING for void functions). The
+ *  _IN forms report in `function` (a helper doing a public function's checks). */
 #define ME_NOTHING
-#define ME_CHECK_FINITE(x, ret)                                                                      \
+#define ME_CHECK_FINITE_IN(function, x, ret)                                                         \
     do {                                                                                             \
         if (!ME_IS_FINITE(x)) {                                                                      \
-            ME_REPORT(ME_ERR_NONFINITE_ARGUMENT, "argument '%s' is %g (not finite); call ignored", #x, \
-                      (double)(x));                                                                  \
+            ME_REPORT_IN((function), ME_ERR_NONFINITE_ARGUMENT,                                      \
+                         "argument '%s' is %g (not finite); call ignored", #x, (double)(x));         \
             return ret;                                                                              \
         }                                                                                            \
     } while (0)
 
-#define ME_CHECK_FINITE3(x, y, z, ret)                                                               \
+#define ME_CHECK_FINITE3_IN(function, x, y, z, ret)                                                  \
     do {                                                                                             \
-        ME_CHECK_FINITE(x, ret);                                                                     \
-        ME_CHECK_FINITE(y, ret);                                                                     \
-        ME_CHECK_FINITE(z, ret);                                                                     \
+        ME_CHECK_FINITE_IN(function, x, ret);                                                        \
+        ME_CHECK_FINITE_IN(function, y, ret);                                                        \
+        ME_CHECK_FINITE_IN(function, z, ret);                                                        \
     } while (0)
 
-#define ME_CHECK_NOT_NULL(p, ret)                                                                    \
+#define ME_CHECK_FINITE(x, ret) ME_CHECK_FINITE_IN(__func__, x, ret)
+#define ME_CHECK_FINITE3(x, y, z, ret) ME_CHECK_FINITE3_IN(__func__, x, y, z, ret)
+
+#define ME_CHECK_NOT_NULL_IN(function, p, ret)                                                       \
     do {                                                                                             \
         if (!(p)) {                                                                                  \
-            ME_REPORT(ME_ERR_NULL_ARGUMENT, "argument '%s' is NULL; call ignored", #p);              \
+            ME_REPORT_IN((function), ME_ERR_NULL_ARGUMENT, "argument '%s' is NULL; call ignored", #p); \
             return ret;                                                                              \
         }                                                                                            \
     } while (0)
+
+#define ME_CHECK_NOT_NULL(p, ret) ME_CHECK_NOT_NULL_IN(__func__, p, ret)
 
 #if !defined(NDEBUG)
 #  define ME_ASSERT_INTERNAL(cond)                                                                   \

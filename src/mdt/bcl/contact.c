@@ -242,11 +242,18 @@ MdtContactID MdtConstraintDCastContact(MdtConstraintID c)
     return MdtConstraintGetType(c) == MdtBclCONTACT ? (MdtContactID)c : NULL;
 }
 
+/* The field setters' checks and effects, reporting in `function` (the public setter's name), shared
+ * by the setters and MdtContactSetFromCollision. */
+static void setPosition(ContactData *d, MeReal x, MeReal y, MeReal z, const char *function)
+{
+    ME_CHECK_FINITE3_IN(function, x, y, z, ME_NOTHING);
+    MeVector3Set(d->position, x, y, z);
+}
+
 void MdtContactSetPosition(MdtContactID id, MeReal x, MeReal y, MeReal z)
 {
     CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
-    ME_CHECK_FINITE3(x, y, z, ME_NOTHING);
-    MeVector3Set(d->position, x, y, z);
+    setPosition(d, x, y, z, __func__);
 }
 
 void MdtContactGetPosition(MdtContactID id, MeVector3 p)
@@ -256,24 +263,22 @@ void MdtContactGetPosition(MdtContactID id, MeVector3 p)
     MeVector3Copy(p, d->position);
 }
 
-/* The contact's normal from a finite vector; reports (in `function`) and returns 0 if its length is 0. */
-static int setNormal(ContactData *d, MeReal x, MeReal y, MeReal z, const char *function)
+static void setNormal(ContactData *d, MeReal x, MeReal y, MeReal z, const char *function)
 {
+    ME_CHECK_FINITE3_IN(function, x, y, z, ME_NOTHING);
     MeVector3 n = {x, y, z};
     if (!MeVector3NormalizeSafe(n)) {
         ME_REPORT_IN(function, ME_ERR_ZERO_AXIS, "the normal (%g, %g, %g) has zero length; call ignored", (double)x,
                      (double)y, (double)z);
-        return 0;
+        return;
     }
     MeVector3Copy(d->normal, n);
-    return 1;
 }
 
 void MdtContactSetNormal(MdtContactID id, MeReal x, MeReal y, MeReal z)
 {
     CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
-    ME_CHECK_FINITE3(x, y, z, ME_NOTHING);
-    (void)setNormal(d, x, y, z, __func__);
+    setNormal(d, x, y, z, __func__);
 }
 
 void MdtContactGetNormal(MdtContactID id, MeVector3 n)
@@ -283,11 +288,16 @@ void MdtContactGetNormal(MdtContactID id, MeVector3 n)
     MeVector3Copy(n, d->normal);
 }
 
+static void setPenetration(ContactData *d, MeReal p, const char *function)
+{
+    ME_CHECK_FINITE_IN(function, p, ME_NOTHING);
+    d->penetration = p;
+}
+
 void MdtContactSetPenetration(MdtContactID id, MeReal p)
 {
     CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
-    ME_CHECK_FINITE(p, ME_NOTHING);
-    d->penetration = p;
+    setPenetration(d, p, __func__);
 }
 
 MeReal MdtContactGetPenetration(MdtContactID id)
@@ -338,8 +348,9 @@ MdtContactParamsID MdtContactGetParams(MdtContactID id)
     return &d->params;
 }
 
-static void setParams(ContactData *d, const MdtContactParams *p)
+static void setParams(ContactData *d, const MdtContactParams *p, const char *function)
 {
+    ME_CHECK_NOT_NULL_IN(function, p, ME_NOTHING);
     /* Keep the option bits this contact set itself (its own direction and world velocity). */
     MeU32 own = d->params.options & (MdtBclContactOptionUseDirection | MdtBclContactOptionUseWorldVelocity);
     d->params = *p;
@@ -349,22 +360,7 @@ static void setParams(ContactData *d, const MdtContactParams *p)
 void MdtContactSetParams(MdtContactID id, const MdtContactParams *p)
 {
     CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
-    ME_CHECK_NOT_NULL(p, ME_NOTHING);
-    setParams(d, p);
-}
-
-/* A finite 3-vector, or a report in `function` as ME_CHECK_FINITE3 makes it in that function. */
-static int finite3In(const char *function, MeReal x, MeReal y, MeReal z)
-{
-    const MeReal v[3] = {x, y, z};
-    static const char *const names[3] = {"x", "y", "z"};
-    for (int k = 0; k < 3; k++)
-        if (!ME_IS_FINITE(v[k])) {
-            ME_REPORT_IN(function, ME_ERR_NONFINITE_ARGUMENT, "argument '%s' is %g (not finite); call ignored",
-                         names[k], (double)v[k]);
-            return 0;
-        }
-    return 1;
+    setParams(d, p, __func__);
 }
 
 void MdtContactSetFromCollision(MdtContactID id, const MdtContactParams *params, const MeReal position[3],
@@ -376,20 +372,10 @@ void MdtContactSetFromCollision(MdtContactID id, const MdtContactParams *params,
     if (!c)
         return;
     ContactData *d = MDT_CONSTRAINT_DATA(c, ContactData);
-    if (params)
-        setParams(d, params);
-    else
-        ME_REPORT_IN("MdtContactSetParams", ME_ERR_NULL_ARGUMENT, "argument 'p' is NULL; call ignored");
-    if (finite3In("MdtContactSetPosition", position[0], position[1], position[2]))
-        MeVector3Set(d->position, position[0], position[1], position[2]);
-    const MeReal nx = sign * normal[0], ny = sign * normal[1], nz = sign * normal[2];
-    if (finite3In("MdtContactSetNormal", nx, ny, nz))
-        (void)setNormal(d, nx, ny, nz, "MdtContactSetNormal");
-    if (ME_IS_FINITE(penetration))
-        d->penetration = penetration;
-    else
-        ME_REPORT_IN("MdtContactSetPenetration", ME_ERR_NONFINITE_ARGUMENT,
-                     "argument 'p' is %g (not finite); call ignored", (double)penetration);
+    setParams(d, params, "MdtContactSetParams");
+    setPosition(d, position[0], position[1], position[2], "MdtContactSetPosition");
+    setNormal(d, sign * normal[0], sign * normal[1], sign * normal[2], "MdtContactSetNormal");
+    setPenetration(d, penetration, "MdtContactSetPenetration");
 }
 
 void MdtContactGetRelativeVelocity(MdtContactID id, MeVector3 v)
