@@ -49,11 +49,12 @@
  * again, so a solve run to convergence keeps it. KeaStats.subspaceSkipped counts the skips.
  *
  * Block solves: a block of m rows (a constraint's rows on one body pair, or one contact point with
- * its friction rows) is solved exactly with the rest of x fixed. Most blocks at rest have every row strictly inside its bounds: one product with the
- * block's inverse (KeaBlockAllFree). Each contact point with its friction rows is a block of its
- * own (not its whole contact group: docs/kea.md), which otherwise tries its few active sets in
- * closed form (opening, or one or both friction rows sliding: KeaContactSolve); anything else (a
- * constraint's rows at a limit) goes to the dense box-LCP solver (kea_dense_lcp.c).
+ * its friction rows) is solved exactly with the rest of x fixed. Most blocks at rest have every row
+ * strictly inside its bounds: one product with the block's inverse (KeaBlockAllFree). Each contact
+ * point with its friction rows is a block of its own (not its whole contact group: docs/kea.md),
+ * which otherwise tries its few active sets in closed form (opening, or one or both friction rows
+ * sliding: KeaContactSolve); anything else (a constraint's rows at a limit) goes to the dense
+ * box-LCP solver (kea_dense_lcp.c).
  *
  * Warm start: x0 is clamped to its bounds and dv computed from it before the first sweep.
  *
