@@ -248,24 +248,4 @@ void KeaDenseSolveFactored(int m, const MeReal *G, const int *perm, MeReal *b)
     }
 }
 
-int KeaCholeskyDense(int m, const MeReal *A, MeReal *L)
-{
-    int i, j, k;
-    for (i = 0; i < m; ++i) {
-        for (j = 0; j <= i; ++j) {
-            MeReal s = A[i * m + j];
-            for (k = 0; k < j; ++k)
-                s -= L[i * m + k] * L[j * m + k];
-            if (j < i) {
-                L[i * m + j] = s / L[j * m + j];
-            } else {
-                if (!(s > KEA_PIVOT_FLOOR * A[i * m + i]))
-                    return 0;
-                L[i * m + i] = KeaSqrt(s);
-            }
-        }
-        for (j = i + 1; j < m; ++j)
-            L[i * m + j] = ME_R(0.0);
-    }
-    return 1;
-}
+int KeaCholeskyDense(int m, const MeReal *A, MeReal *L) { return KeaCholeskyDenseInline(m, A, L); }

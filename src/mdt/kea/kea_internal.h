@@ -178,6 +178,28 @@ void KeaCholeskyRemove(KeaCholesky *c, int p);
 /** Plain Cholesky A = L L^T of a small dense m x m matrix (row-major). Returns 0, leaving L
  *  unusable, if a pivot falls below the floor (A not safely positive definite). */
 int KeaCholeskyDense(int m, const MeReal *A, MeReal *L);
+/** KeaCholeskyDense inline, for a caller that knows m (a contact's 3 x 3, unrolled). */
+static inline int KeaCholeskyDenseInline(int m, const MeReal *A, MeReal *L)
+{
+    int i, j, k;
+    for (i = 0; i < m; ++i) {
+        for (j = 0; j <= i; ++j) {
+            MeReal s = A[i * m + j];
+            for (k = 0; k < j; ++k)
+                s -= L[i * m + k] * L[j * m + k];
+            if (j < i) {
+                L[i * m + j] = s / L[j * m + j];
+            } else {
+                if (!(s > KEA_PIVOT_FLOOR * A[i * m + i]))
+                    return 0;
+                L[i * m + i] = KeaSqrt(s);
+            }
+        }
+        for (j = i + 1; j < m; ++j)
+            L[i * m + j] = ME_R(0.0);
+    }
+    return 1;
+}
 
 /** LU factorisation with partial pivoting of the general m x m matrix G, in place (row swaps in
  *  perm). Returns 0 when G is numerically singular. */

@@ -54,7 +54,10 @@
  * point with its friction rows is a block of its own (not its whole contact group: docs/kea.md),
  * which otherwise tries its few active sets in closed form (opening, or one or both friction rows
  * sliding: KeaContactSolve); anything else (a constraint's rows at a limit) goes to the dense
- * box-LCP solver (kea_dense_lcp.c).
+ * box-LCP solver (kea_dense_lcp.c). A plain contact block (a normal row and its two friction rows,
+ * the pile's every block) has its own step with the same arithmetic and its rows in locals, and on
+ * the world it skips the world's half (exact zeros): pile 15.3e9 -> 13.3e9 instructions over 300
+ * steps, the same trajectories.
  *
  * Warm start: x0 is clamped to its bounds and dv computed from it before the first sweep.
  *
@@ -124,6 +127,7 @@ typedef struct KeaIterativeWork {
                                 a preconditioner step is then one small matrix-vector product,
                                 no divisions (each block is solved ~50 times a step, factored once) */
     unsigned char *blockFactored; /**< the factor exists (A_bb safely positive definite) */
+    unsigned char *blockContact;  /**< KEA_CONTACT_* kind of a plain contact block (KeaIsPlainContact), else 0 */
     unsigned char *wasFree;       /**< SM: the row was free at the last SM step (or the warm start) */
     int skippedLast;              /**< SM: the last SM step was skipped */
     MeReal sweepDecrease;         /**< estimated decrease of the QP objective by the current sweep */
@@ -175,6 +179,7 @@ static void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows,
     w->blockL = KEA_ALLOC(arena, MeReal, (size_t)cap * (size_t)cap);
     w->blockInv = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)cap);
     w->blockFactored = KEA_ALLOC(arena, unsigned char, n);
+    w->blockContact = KEA_ALLOC(arena, unsigned char, n);
     w->wasFree = KEA_ALLOC(arena, unsigned char, n);
     w->localW = KEA_ALLOC(arena, MeReal, cap);
     w->rowBlock = KEA_ALLOC(arena, int, n);
@@ -217,7 +222,7 @@ size_t KeaIterativeWorkspaceBytes(int nRows, int nBodies)
  * R = L^-1 (lower triangular) row by row, row r = -(sum_{j<r} L_rj R_j) / L_rr over its columns
  * c < r, then the upper triangle of R^T R, inv_rc = sum_{k>=c} R_kr R_kc, mirrored. Every sum runs
  * over its index in increasing order; the inner loops are contiguous rows of R. */
-static void KeaBlockInvert(int m, const MeReal *L, MeReal *inv)
+static inline void KeaBlockInvert(int m, const MeReal *L, MeReal *inv)
 {
     MeReal R[KEA_MAX_BLOCK_ROWS * KEA_MAX_BLOCK_ROWS], acc[KEA_MAX_BLOCK_ROWS];
     int r, c, j, k;
@@ -290,10 +295,11 @@ static inline void KeaBlockGather(const KeaIterativeWork *w, int s, int m, const
 }
 
 /* (v0, v1) += sum_r B_r d_r over a block's m rows (rows with d_r = 0 skipped), in row order: the
- * same operations as row-by-row updates, on local copies of the two bodies (v0 != v1). */
+ * same operations as row-by-row updates, on local copies of the two bodies (v0 != v1). v1 NULL: the
+ * second half is the world's (all zero: nothing to add). */
 static inline void KeaBlockScatterSized(const int m, const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
 {
-    KeaVel4 a = *v0, b = *v1;
+    KeaVel4 a = *v0, b = v1 ? *v1 : *v0;
     int r, k;
     for (r = 0; r < m; ++r) {
         const MeReal dr = d[r];
@@ -302,12 +308,15 @@ static inline void KeaBlockScatterSized(const int m, const KeaJacobianRow *B, co
         for (k = 0; k < 4; ++k) {
             a.lin[k] += B[r].lin0[k] * dr;
             a.ang[k] += B[r].ang0[k] * dr;
-            b.lin[k] += B[r].lin1[k] * dr;
-            b.ang[k] += B[r].ang1[k] * dr;
+            if (v1) {
+                b.lin[k] += B[r].lin1[k] * dr;
+                b.ang[k] += B[r].ang1[k] * dr;
+            }
         }
     }
     *v0 = a;
-    *v1 = b;
+    if (v1)
+        *v1 = b;
 }
 
 static void KeaBlockScatter(int m, const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
@@ -330,6 +339,30 @@ static void KeaBlockScatter(int m, const KeaJacobianRow *B, const MeReal *d, Kea
 static int KeaContactStart(const KeaProblem *problem, int i)
 {
     return problem->link && problem->link[i] < 0 && i + 1 < problem->nRows && problem->link[i + 1] == i;
+}
+
+/* A plain contact block, the pile's every block: three rows on two different bodies (the second
+ * may be the world), a normal row with bounds [0, inf) and no link, two friction rows linked to it
+ * with no bounds of their own (KeaContactSolve's case), each touching something, and the block's
+ * inverse exists. The sweep solves it with that layout known (KeaContactBlockStep). Returns its
+ * KEA_CONTACT_* kind, or 0. */
+enum { KEA_CONTACT_BODIES = 1, KEA_CONTACT_WORLD = 2 }; /* a plain contact between two bodies, or on the world */
+
+static unsigned char KeaIsPlainContact(const KeaProblem *problem, const KeaIterativeWork *w, int s, int m)
+{
+    const int block = w->rowBlock[s];
+    int k;
+    if (m != 3 || !problem->mu || !w->blockFactored[block] || w->body[s][0] == w->body[s][1] ||
+        !KeaContactStart(problem, s) || problem->link[s + 2] != s)
+        return 0;
+    if (problem->lo[s] != ME_R(0.0) || KeaIsFinite(problem->hi[s]))
+        return 0;
+    for (k = 0; k < 3; ++k)
+        if (w->invDiag[s + k] == ME_R(0.0) || (k > 0 && (KeaIsFinite(problem->lo[s + k]) || KeaIsFinite(problem->hi[s + k]))))
+            return 0;
+    if (w->body[s][0] == problem->nBodies)
+        return 0;
+    return w->body[s][1] == problem->nBodies ? KEA_CONTACT_WORLD : KEA_CONTACT_BODIES;
 }
 
 /* Split the rows into blocks and form each block's matrix A_bb = J_b M^-1 J_b^T + diag(eps) from the
@@ -397,12 +430,19 @@ static void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int c
                     A[r * m + c] = v;
                 }
         }
-        if (m > 1) {
+        w->blockFactored[w->nBlocks] = 0;
+        if (m == 3) { /* a contact: the same arithmetic, unrolled */
+            w->blockFactored[w->nBlocks] = (unsigned char)KeaCholeskyDenseInline(3, w->blockA + offset, w->blockL);
+            if (w->blockFactored[w->nBlocks])
+                KeaBlockInvert(3, w->blockL, w->blockInv + offset);
+            offset += 9;
+        } else if (m > 1) {
             w->blockFactored[w->nBlocks] = (unsigned char)KeaCholeskyDense(m, w->blockA + offset, w->blockL);
             if (w->blockFactored[w->nBlocks])
                 KeaBlockInvert(m, w->blockL, w->blockInv + offset);
             offset += m * m;
         }
+        w->blockContact[w->nBlocks] = KeaIsPlainContact(problem, w, i, m);
         ++w->nBlocks;
         i += m;
     }
@@ -459,21 +499,14 @@ static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int b
  *   n > 0 with each friction row free or sliding at +-mu n, not both free: the rows that are free
  *   (and the normal) have w = 0, a 1x1 or 2x2 system in n and the free friction impulse; valid if
  *   n > 0, a free friction row stays within +-mu n, and a sliding one's w pushes against its bound.
- * A is the contact's 3 x 3 matrix, r its r_loc = A x - w, lo/hi/link the rows' own bounds and
- * links (link[1] == link[2] == 0).
+ * A is the contact's 3 x 3 matrix, r its r_loc = A x - w, mu its rows' friction coefficients.
  * The all-free case is KeaBlockAllFree's (with the block's precomputed inverse).
  * The first valid set in that fixed order is taken (with mu small enough the solution is unique).
  * Exact comparisons: a set valid only within rounding is left to the general solver. Returns 1 if
  * solved (out holds the solution). */
-static int KeaContactSolve(const MeReal *A, const MeReal *r, const MeReal *lo, const MeReal *hi, const int *link,
-                           const MeReal *mu, MeReal *out)
+static int KeaContactActiveSets(const MeReal *A, const MeReal *r, const MeReal *mu, MeReal *out)
 {
     int sig[3], k, combo;
-    if (link[0] >= 0 || lo[0] != ME_R(0.0) || KeaIsFinite(hi[0]))
-        return 0;
-    for (k = 1; k < 3; ++k)
-        if (link[k] != 0 || KeaIsFinite(lo[k]) || KeaIsFinite(hi[k]))
-            return 0;
     if (-r[0] >= ME_R(0.0)) { /* n = 0: w = A 0 - r */
         out[0] = out[1] = out[2] = ME_R(0.0);
         return 1;
@@ -525,6 +558,20 @@ static int KeaContactSolve(const MeReal *A, const MeReal *r, const MeReal *lo, c
         return 1;
     }
     return 0;
+}
+
+/* KeaContactActiveSets for a block given by its local bounds and links: 0 unless it is a contact
+ * (normal row with bounds [0, inf) and no link, two rows linked to it with no bounds of their own). */
+static int KeaContactSolve(const MeReal *A, const MeReal *r, const MeReal *lo, const MeReal *hi, const int *link,
+                           const MeReal *mu, MeReal *out)
+{
+    int k;
+    if (link[0] >= 0 || lo[0] != ME_R(0.0) || KeaIsFinite(hi[0]))
+        return 0;
+    for (k = 1; k < 3; ++k)
+        if (link[k] != 0 || KeaIsFinite(lo[k]) || KeaIsFinite(hi[k]))
+            return 0;
+    return KeaContactActiveSets(A, r, mu, out);
 }
 
 /* The box-LCP of n rows (matrix A, r, own bounds lo/hi, links local to these rows or -1) with the
@@ -599,6 +646,78 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
     return worst;
 }
 
+/* J . (v0, world) on padded rows: KeaRowVel4 without the world's half, which adds exact zeros. */
+static inline MeReal KeaRowVel4World(const KeaJacobianRow *J, const KeaVel4 *v0)
+{
+    MeReal s[4];
+    int k;
+    for (k = 0; k < 4; ++k)
+        s[k] = J->lin0[k] * v0->lin[k] + J->ang0[k] * v0->ang[k];
+    return (s[0] + s[1]) + s[2];
+}
+
+/* KeaBlockStep for a plain contact block (KeaIsPlainContact), with the same arithmetic in the same
+ * order (so the same values; on the world the exact zeros of its half are not computed), its three
+ * rows held in locals: the normal row's bounds are [0, inf), the friction rows' [-mu n, mu n] for
+ * the normal impulse n. onWorld is a constant at each call, so each kind gets its own code. */
+static inline MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, int maxPasses,
+                                         MeReal *x, KeaStats *stats, const int onWorld)
+{
+    const int s = w->blockStart[block];
+    KeaVel4 *v0 = &w->dv[w->body[s][0]], *v1 = &w->dv[w->body[s][1]];
+    const MeReal *mu = problem->mu + s, *inv = w->blockInv + w->blockMatrix[block];
+    MeReal wb[3], xb[3], xn[3], d[3], t[3], bound, bound2, worst;
+    int r;
+    for (r = 0; r < 3; ++r)
+        wb[r] = onWorld ? KeaRowVel4World(&w->J[s + r], v0) : KeaRowVel4(&w->J[s + r], v0, v1);
+    for (r = 0; r < 3; ++r) {
+        xb[r] = x[s + r];
+        wb[r] = wb[r] + w->eps[s + r] * xb[r] - problem->rhs[s + r];
+    }
+    /* the residual before the step: normal row in [0, inf), friction rows in [-mu n, mu n] */
+    worst = KeaMax(ME_R(0.0), w->diag[s] * KeaFabs(xb[0] - KeaClamp(xb[0] - wb[0] * w->invDiag[s], ME_R(0.0),
+                                                                        problem->hi[s])));
+    for (r = 1; r < 3; ++r) {
+        bound = mu[r] * KeaMax(xb[0], ME_R(0.0));
+        worst = KeaMax(worst, w->diag[s + r] * KeaFabs(xb[r] - KeaClamp(xb[r] - wb[r] * w->invDiag[s + r], -bound, bound)));
+    }
+    /* every row free: x_b - A_bb^-1 w_b, if it keeps within the bounds its own normal gives */
+    for (r = 0; r < 3; ++r)
+        t[r] = (inv[r] * wb[0] + inv[3 + r] * wb[1]) + inv[6 + r] * wb[2];
+    for (r = 0; r < 3; ++r)
+        xn[r] = xb[r] - t[r];
+    bound = mu[1] * KeaMax(xn[0], ME_R(0.0));
+    bound2 = mu[2] * KeaMax(xn[0], ME_R(0.0));
+    if (!(xn[0] >= ME_R(0.0) && xn[0] <= problem->hi[s] && xn[1] >= -bound && xn[1] <= bound && xn[2] >= -bound2 &&
+          xn[2] <= bound2)) {
+        const MeReal *A = w->blockA + w->blockMatrix[block];
+        MeReal rl[3];
+        for (r = 0; r < 3; ++r) /* r_loc = A_bb x_b - w_b */
+            rl[r] = ((A[r] * xb[0] + A[3 + r] * xb[1]) + A[6 + r] * xb[2]) - wb[r];
+        if (!KeaContactActiveSets(A, rl, mu, xn)) { /* within rounding: the general solver */
+            for (r = 0; r < 3; ++r) {
+                w->localW[r] = wb[r];
+                w->localX[r] = xb[r];
+                w->localLo[r] = problem->lo[s + r];
+                w->localHi[r] = problem->hi[s + r];
+                w->localLink[r] = r == 0 ? -1 : 0;
+            }
+            KeaSmallLcp(problem, w, 3, A, rl, w->localLo, w->localHi, w->localLink, mu, maxPasses, w->localX, stats);
+            KeaBlockApplyDeltas(w, s, 3, x);
+            return worst;
+        }
+    }
+    for (r = 0; r < 3; ++r) {
+        d[r] = xn[r] - xb[r];
+        w->sweepDecrease -= ME_R(0.5) * d[r] * wb[r];
+    }
+    KeaBlockScatterSized(3, &w->B[s], d, v0, onWorld ? NULL : v1);
+    for (r = 0; r < 3; ++r)
+        if (d[r] != ME_R(0.0))
+            x[s + r] = xn[r];
+    return worst;
+}
+
 /* One PGS sweep over the blocks, forwards or backwards; returns the largest residual met. */
 static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
                        MeReal omega, MeReal *x, KeaStats *stats, int backward)
@@ -610,6 +729,14 @@ static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const Kea
         const int block = backward ? w->nBlocks - 1 - k : k;
         const int i = w->blockStart[block];
         MeReal lo, hi, wi, xNew, r;
+        if (w->blockContact[block] == KEA_CONTACT_BODIES) {
+            worst = KeaMax(worst, KeaContactBlockStep(problem, w, block, params->maxFrictionPasses, x, stats, 0));
+            continue;
+        }
+        if (w->blockContact[block] == KEA_CONTACT_WORLD) {
+            worst = KeaMax(worst, KeaContactBlockStep(problem, w, block, params->maxFrictionPasses, x, stats, 1));
+            continue;
+        }
         if (w->blockStart[block + 1] - i > 1) {
             worst = KeaMax(worst, KeaBlockStep(problem, w, block, params->maxFrictionPasses, x, stats));
             continue;
