@@ -72,6 +72,7 @@
 #include <string.h>
 
 #include "kea_internal.h"
+#include "kea_lanes.h"
 
 /** A body's velocity change with each 3-vector padded to 4 (pad 0). */
 typedef struct KeaVel4 {
@@ -79,31 +80,21 @@ typedef struct KeaVel4 {
     MeReal ang[4];
 } KeaVel4;
 
-/** J . (v0, v1) on padded rows: term k sums component k of the four parts, then the three terms
- *  are added in a fixed order (the same at every optimisation level). No branch per body half. */
+/** J . (v0, v1) on padded rows: lane k sums component k of the four parts, then the three lanes
+ *  are added in a fixed order (kea_lanes.h: the same bits with or without SSE). No branch per body
+ *  half. */
 static inline MeReal KeaRowVel4(const KeaJacobianRow *J, const KeaVel4 *v0, const KeaVel4 *v1)
 {
-    MeReal s[4];
-    int k;
-    for (k = 0; k < 4; ++k) /* four wide: the pads (0) make s[3] = 0, which is not summed */
-        s[k] = (J->lin0[k] * v0->lin[k] + J->ang0[k] * v0->ang[k]) + (J->lin1[k] * v1->lin[k] + J->ang1[k] * v1->ang[k]);
-    return (s[0] + s[1]) + s[2];
+    return KeaLanesSum3(KeaLanesAdd(KeaLanesDot2(J->lin0, v0->lin, J->ang0, v0->ang),
+                                    KeaLanesDot2(J->lin1, v1->lin, J->ang1, v1->ang)));
 }
 
-/** v += B s for one body half (padded; the pads stay 0). Everything is loaded before anything is
- *  stored, so that the compiler may do it four wide whatever B and v point to. */
+/** v += B s for one body half (padded; the pads stay 0). */
 static inline void KeaHalfApply4(const MeReal *lin, const MeReal *ang, MeReal s, KeaVel4 *v)
 {
-    MeReal l[4], a[4];
-    int k;
-    for (k = 0; k < 4; ++k) {
-        l[k] = v->lin[k] + lin[k] * s;
-        a[k] = v->ang[k] + ang[k] * s;
-    }
-    for (k = 0; k < 4; ++k) {
-        v->lin[k] = l[k];
-        v->ang[k] = a[k];
-    }
+    const KeaLanes scale = KeaLanesSplat(s);
+    KeaLanesAddScaled(v->lin, lin, scale);
+    KeaLanesAddScaled(v->ang, ang, scale);
 }
 
 /** (v0, v1) += B s (v0 first, then v1, so that v0 == v1 is handled as two updates). */
@@ -299,24 +290,27 @@ static inline void KeaBlockGather(const KeaIterativeWork *w, int s, int m, const
  * second half is the world's (all zero: nothing to add). */
 static inline void KeaBlockScatterSized(const int m, const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
 {
-    KeaVel4 a = *v0, b = v1 ? *v1 : *v0;
-    int r, k;
+    KeaLanes aLin = KeaLanesLoad(v0->lin), aAng = KeaLanesLoad(v0->ang);
+    KeaLanes bLin = KeaLanesLoad(v1 ? v1->lin : v0->lin), bAng = KeaLanesLoad(v1 ? v1->ang : v0->ang);
+    int r;
     for (r = 0; r < m; ++r) {
-        const MeReal dr = d[r];
-        if (dr == ME_R(0.0))
+        KeaLanes dr;
+        if (d[r] == ME_R(0.0))
             continue;
-        for (k = 0; k < 4; ++k) {
-            a.lin[k] += B[r].lin0[k] * dr;
-            a.ang[k] += B[r].ang0[k] * dr;
-            if (v1) {
-                b.lin[k] += B[r].lin1[k] * dr;
-                b.ang[k] += B[r].ang1[k] * dr;
-            }
+        dr = KeaLanesSplat(d[r]);
+        aLin = KeaLanesAdd(aLin, KeaLanesMul(KeaLanesLoad(B[r].lin0), dr));
+        aAng = KeaLanesAdd(aAng, KeaLanesMul(KeaLanesLoad(B[r].ang0), dr));
+        if (v1) {
+            bLin = KeaLanesAdd(bLin, KeaLanesMul(KeaLanesLoad(B[r].lin1), dr));
+            bAng = KeaLanesAdd(bAng, KeaLanesMul(KeaLanesLoad(B[r].ang1), dr));
         }
     }
-    *v0 = a;
-    if (v1)
-        *v1 = b;
+    KeaLanesStore(v0->lin, aLin);
+    KeaLanesStore(v0->ang, aAng);
+    if (v1) {
+        KeaLanesStore(v1->lin, bLin);
+        KeaLanesStore(v1->ang, bAng);
+    }
 }
 
 static void KeaBlockScatter(int m, const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
@@ -649,19 +643,15 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
 /* J . (v0, world) on padded rows: KeaRowVel4 without the world's half, which adds exact zeros. */
 static inline MeReal KeaRowVel4World(const KeaJacobianRow *J, const KeaVel4 *v0)
 {
-    MeReal s[4];
-    int k;
-    for (k = 0; k < 4; ++k)
-        s[k] = J->lin0[k] * v0->lin[k] + J->ang0[k] * v0->ang[k];
-    return (s[0] + s[1]) + s[2];
+    return KeaLanesSum3(KeaLanesDot2(J->lin0, v0->lin, J->ang0, v0->ang));
 }
 
 /* KeaBlockStep for a plain contact block (KeaIsPlainContact), with the same arithmetic in the same
  * order (so the same values; on the world the exact zeros of its half are not computed), its three
  * rows held in locals: the normal row's bounds are [0, inf), the friction rows' [-mu n, mu n] for
- * the normal impulse n. onWorld is a constant at each call, so each kind gets its own code. */
-static inline MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, int maxPasses,
-                                         MeReal *x, KeaStats *stats, const int onWorld)
+ * the normal impulse n. */
+static MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, int maxPasses, MeReal *x,
+                                  KeaStats *stats, int onWorld)
 {
     const int s = w->blockStart[block];
     KeaVel4 *v0 = &w->dv[w->body[s][0]], *v1 = &w->dv[w->body[s][1]];
