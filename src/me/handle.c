@@ -2,6 +2,7 @@
 #include "handle.h"
 
 #include "check.h"
+#include "pool_slot.h"
 
 #define INDEX_SHIFT 0
 #define GEN_SHIFT (ME_HANDLE_INDEX_BITS)
@@ -77,7 +78,7 @@ uintptr_t MeHandleOfOwner(int ownerSlot)
 uintptr_t MeHandleOfSlot(int ownerSlot, MeHandleKind kind, int index)
 {
     const MePool *pool = registry[ownerSlot].pools[kind];
-    return encode(kind, ownerSlot, MePoolSlotGeneration(pool, index), index);
+    return encode(kind, ownerSlot, MePoolSlotGenerationInline(pool, index), index);
 }
 
 void *MeHandleOwnerObject(int ownerSlot) { return registry[ownerSlot].object; }
@@ -101,8 +102,8 @@ static MeErrorCode check(uintptr_t id, MeHandleKind kind, int *ownerOut, int *in
             return ME_ERR_INVALID_HANDLE;
     } else {
         const MePool *pool = o->pools[kind];
-        if (!pool || !MePoolSlotIsLive(pool, index) ||
-            (MePoolSlotGeneration(pool, index) & (MeU32)FIELD_MASK(ME_HANDLE_GEN_BITS)) != gen)
+        if (!pool || !MePoolSlotIsLiveInline(pool, index) ||
+            (MePoolSlotGenerationInline(pool, index) & (MeU32)FIELD_MASK(ME_HANDLE_GEN_BITS)) != gen)
             return ME_ERR_INVALID_HANDLE;
     }
     *ownerOut = owner;
@@ -145,7 +146,7 @@ void *MeHandleResolve(uintptr_t id, MeHandleKind kind, const char *function, con
     }
     if (ownerSlot)
         *ownerSlot = owner;
-    return MePoolSlot(registry[owner].pools[kind], index);
+    return MePoolSlotInline(registry[owner].pools[kind], index);
 }
 
 void *MeHandleResolveOptional(uintptr_t id, MeHandleKind kind, const char *function, const char *argument,

@@ -4,6 +4,8 @@
 #include <karma/MeMemory.h>
 #include <karma/MePool.h>
 
+#include "pool_slot.h"
+
 MeBool MePoolInit(MePool *pool, int poolSize, size_t structSize, size_t alignment, const char *sizeName,
                   MeU32 firstGeneration)
 {
@@ -89,19 +91,8 @@ int MePoolGetUsed(const MePool *pool) { return pool->used; }
 int MePoolGetUnused(const MePool *pool) { return pool->capacity - pool->used; }
 int MePoolGetHighWater(const MePool *pool) { return pool->highWater; }
 
-void *MePoolSlot(const MePool *pool, int index)
-{
-    if (index < 0 || index >= pool->capacity)
-        return NULL;
-    return pool->memory + (size_t)index * pool->stride;
-}
+void *MePoolSlot(const MePool *pool, int index) { return MePoolSlotInline(pool, index); }
 
-MeBool MePoolSlotIsLive(const MePool *pool, int index)
-{
-    return index >= 0 && index < pool->capacity && (pool->generation[index] & 1u);
-}
+MeBool MePoolSlotIsLive(const MePool *pool, int index) { return MePoolSlotIsLiveInline(pool, index); }
 
-MeU32 MePoolSlotGeneration(const MePool *pool, int index)
-{
-    return (index >= 0 && index < pool->capacity) ? pool->generation[index] : 0;
-}
+MeU32 MePoolSlotGeneration(const MePool *pool, int index) { return MePoolSlotGenerationInline(pool, index); }

@@ -382,7 +382,7 @@ static void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int c
         for (r = 0; r < m; ++r) {
             MeReal *JT = w->JT + 12 * i + r;
             w->rowBlock[i + r] = w->nBlocks;
-            for (c = 0; c < 3; ++c) {
+            for (c = 0; c < 3 && m > 4; ++c) { /* only KeaBlockGather's large blocks read JT */
                 JT[c * m] = w->J[i + r].lin0[c];
                 JT[(3 + c) * m] = w->J[i + r].ang0[c];
                 JT[(6 + c) * m] = w->J[i + r].lin1[c];
@@ -851,6 +851,40 @@ static unsigned char KeaRowIsFree(const KeaIterativeWork *w, int i, MeReal xi, M
     return (unsigned char)(w->invDiag[i] != ME_R(0.0) && lo < xi && xi < hi);
 }
 
+/* Set wasFree to which rows are free now (KeaRowIsFree), a plain contact's three rows at once (its
+ * normal row's bounds [0, hi), its friction rows' +-mu n); returns how many rows changed. Every
+ * chance of an SM step does this, skipped or not, so it is kept cheaper than the bounds and the
+ * free list, which only a step that runs needs. */
+static int KeaUpdateFreeRows(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x)
+{
+    unsigned char *was = w->wasFree;
+    int b, i, changed = 0;
+    for (b = 0; b < w->nBlocks; ++b) {
+        const int s = w->blockStart[b];
+        if (w->blockContact[b]) {
+            const MeReal n = x[s], bound1 = problem->mu[s + 1] * KeaMax(n, ME_R(0.0)),
+                         bound2 = problem->mu[s + 2] * KeaMax(n, ME_R(0.0));
+            const unsigned char f0 = (unsigned char)(ME_R(0.0) < n && n < problem->hi[s]);
+            const unsigned char f1 = (unsigned char)(-bound1 < x[s + 1] && x[s + 1] < bound1);
+            const unsigned char f2 = (unsigned char)(-bound2 < x[s + 2] && x[s + 2] < bound2);
+            changed += (f0 != was[s]) + (f1 != was[s + 1]) + (f2 != was[s + 2]);
+            was[s] = f0;
+            was[s + 1] = f1;
+            was[s + 2] = f2;
+            continue;
+        }
+        for (i = s; i < w->blockStart[b + 1]; ++i) {
+            MeReal lo, hi;
+            unsigned char isFree;
+            KeaRowBoundsInline(problem, x, i, &lo, &hi);
+            isFree = KeaRowIsFree(w, i, x[i], lo, hi);
+            changed += isFree != was[i];
+            was[i] = isFree;
+        }
+    }
+    return changed;
+}
+
 /* Subspace minimisation on the rows strictly inside their bounds; returns the CG steps taken, -1 if
  * skipped because the active set is still moving (top comment). */
 static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x)
@@ -859,15 +893,7 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
     MeReal rz, rz0, scale;
     int i, p, b, k, nFree = 0, changed = 0, steps = 0, tries;
 
-    for (i = 0; i < n; ++i) {
-        unsigned char isFree;
-        KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
-        isFree = KeaRowIsFree(w, i, x[i], w->lo[i], w->hi[i]);
-        if (isFree)
-            w->freeRows[nFree++] = i;
-        changed += isFree != w->wasFree[i];
-        w->wasFree[i] = isFree;
-    }
+    changed = KeaUpdateFreeRows(problem, w, x);
     if (changed > 16 && (long)changed * 20 > (long)n && !w->skippedLast) {
         w->skippedLast = 1;
         return -1;
@@ -875,6 +901,11 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
     w->skippedLast = 0;
     if (w->smUnpaid && changed > 16 && (long)changed * 100 > (long)n)
         return -1; /* it did not pay: wait until the active set has settled */
+    for (i = 0; i < n; ++i) { /* the step runs: freeze the bounds, list the free rows */
+        KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
+        if (w->wasFree[i])
+            w->freeRows[nFree++] = i;
+    }
     if (nFree == 0)
         return 0;
 
