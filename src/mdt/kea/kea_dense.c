@@ -76,12 +76,15 @@ void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeRe
             A[(size_t)i * (size_t)n + (size_t)i] += problem->epsilon[i];
 }
 
-/* y -= a x over n entries; y and x never overlap (restrict lets the compiler vectorise; each entry
- * is one multiply and one subtract either way, so the bits do not depend on it). */
+/* y -= a x over n entries; y and x never overlap (four lanes at a time: each entry is one multiply
+ * and one subtract either way, so the bits do not depend on it). */
 static void KeaSubtractScaled(MeReal *restrict y, const MeReal *restrict x, MeReal a, int n)
 {
-    int m;
-    for (m = 0; m < n; ++m)
+    const KeaLanes scale = KeaLanesSplat(a);
+    int m = 0;
+    for (; m + 4 <= n; m += 4)
+        KeaLanesStore(y + m, KeaLanesSub(KeaLanesLoad(y + m), KeaLanesMul(KeaLanesLoad(x + m), scale)));
+    for (; m < n; ++m)
         y[m] -= x[m] * a;
 }
 

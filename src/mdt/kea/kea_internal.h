@@ -16,6 +16,7 @@
 #include <karma/MeMath.h>
 
 #include "kea.h"
+#include "kea_lanes.h"
 
 /* ---- scalars -------------------------------------------------------------------------------- */
 
@@ -74,17 +75,22 @@ static inline MeReal KeaDot3(const MeReal *a, const MeReal *b) { return a[0] * b
  *  fixed, so the result is the same on every run and at every optimisation level. */
 static inline MeReal KeaDotN4(const MeReal *a, const MeReal *b, int n)
 {
-    MeReal s0 = ME_R(0.0), s1 = ME_R(0.0), s2 = ME_R(0.0), s3 = ME_R(0.0);
+    KeaLanes lanes;
+    MeReal s[4];
     int m = 0;
-    for (; m + 4 <= n; m += 4) {
-        s0 += a[m] * b[m];
-        s1 += a[m + 1] * b[m + 1];
-        s2 += a[m + 2] * b[m + 2];
-        s3 += a[m + 3] * b[m + 3];
+    if (n < 4) { /* the other three sums stay 0 */
+        MeReal s0 = ME_R(0.0);
+        for (; m < n; ++m)
+            s0 += a[m] * b[m];
+        return s0 + ME_R(0.0);
     }
+    lanes = KeaLanesSplat(ME_R(0.0)); /* sum k runs over entries k, k + 4, ... (kea_lanes.h) */
+    for (; m + 4 <= n; m += 4)
+        lanes = KeaLanesAdd(lanes, KeaLanesMul(KeaLanesLoad(a + m), KeaLanesLoad(b + m)));
+    KeaLanesStore(s, lanes);
     for (; m < n; ++m)
-        s0 += a[m] * b[m];
-    return (s0 + s1) + (s2 + s3);
+        s[0] += a[m] * b[m];
+    return (s[0] + s[1]) + (s[2] + s[3]);
 }
 
 /** J_i . (dv of body b0, dv of body b1): the constraint velocity of row i under dv. */

@@ -20,6 +20,7 @@ typedef __m128 KeaLanes;
 static inline KeaLanes KeaLanesLoad(const MeReal *p) { return _mm_loadu_ps(p); }
 static inline void KeaLanesStore(MeReal *p, KeaLanes a) { _mm_storeu_ps(p, a); }
 static inline KeaLanes KeaLanesAdd(KeaLanes a, KeaLanes b) { return _mm_add_ps(a, b); }
+static inline KeaLanes KeaLanesSub(KeaLanes a, KeaLanes b) { return _mm_sub_ps(a, b); }
 static inline KeaLanes KeaLanesMul(KeaLanes a, KeaLanes b) { return _mm_mul_ps(a, b); }
 static inline KeaLanes KeaLanesSplat(MeReal s) { return _mm_set1_ps(s); }
 /** (a0 + a1) + a2: the sum of a padded 3-vector's components, in that order. */
@@ -54,6 +55,13 @@ static inline KeaLanes KeaLanesAdd(KeaLanes a, KeaLanes b)
     int k;
     for (k = 0; k < 4; ++k)
         a.v[k] += b.v[k];
+    return a;
+}
+static inline KeaLanes KeaLanesSub(KeaLanes a, KeaLanes b)
+{
+    int k;
+    for (k = 0; k < 4; ++k)
+        a.v[k] -= b.v[k];
     return a;
 }
 static inline KeaLanes KeaLanesMul(KeaLanes a, KeaLanes b)
