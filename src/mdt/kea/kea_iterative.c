@@ -719,12 +719,9 @@ static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const Kea
         const int block = backward ? w->nBlocks - 1 - k : k;
         const int i = w->blockStart[block];
         MeReal lo, hi, wi, xNew, r;
-        if (w->blockContact[block] == KEA_CONTACT_BODIES) {
-            worst = KeaMax(worst, KeaContactBlockStep(problem, w, block, params->maxFrictionPasses, x, stats, 0));
-            continue;
-        }
-        if (w->blockContact[block] == KEA_CONTACT_WORLD) {
-            worst = KeaMax(worst, KeaContactBlockStep(problem, w, block, params->maxFrictionPasses, x, stats, 1));
+        if (w->blockContact[block]) { /* one call site: the step is inlined into the sweep */
+            worst = KeaMax(worst, KeaContactBlockStep(problem, w, block, params->maxFrictionPasses, x, stats,
+                                                      w->blockContact[block] == KEA_CONTACT_WORLD));
             continue;
         }
         if (w->blockStart[block + 1] - i > 1) {
