@@ -26,7 +26,14 @@ static inline MeReal KeaMax(MeReal a, MeReal b) { return a > b ? a : b; }
 static inline MeReal KeaMin(MeReal a, MeReal b) { return a < b ? a : b; }
 
 /** mid(lo, v, hi) for lo <= hi. */
-static inline MeReal KeaClamp(MeReal v, MeReal lo, MeReal hi) { return v < lo ? lo : (v > hi ? hi : v); }
+/** mid(lo, v, hi) for lo <= hi (every caller's bounds are): v < lo gives lo, v > hi gives hi, else v
+ *  (NaN stays NaN). Written as min then max so that it compiles to minss / maxss, not to branches
+ *  (a clamp's outcome is data: mispredicted about one time in five in the sweeps). */
+static inline MeReal KeaClamp(MeReal v, MeReal lo, MeReal hi)
+{
+    const MeReal t = hi < v ? hi : v; /* minss */
+    return lo > t ? lo : t;           /* maxss */
+}
 
 /** A bound at or beyond +-MEINFINITY means "no bound". */
 static inline int KeaIsFinite(MeReal bound) { return bound > -MEINFINITY && bound < MEINFINITY; }

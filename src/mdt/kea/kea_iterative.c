@@ -498,60 +498,60 @@ static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int b
  * The first valid set in that fixed order is taken (with mu small enough the solution is unique).
  * Exact comparisons: a set valid only within rounding is left to the general solver. Returns 1 if
  * solved (out holds the solution). */
+/* One active set of KeaContactActiveSets: friction row k free (sigk 0) or sliding at sigk mu_k n.
+ * Returns 1, with the solution in out, if it is valid. */
+static inline int KeaContactTry(const MeReal *A, const MeReal *r, const MeReal *mu, const int sig1, const int sig2,
+                                MeReal *out)
+{
+    const int sig[3] = {0, sig1, sig2};
+    const int free = sig1 == 0 ? 1 : (sig2 == 0 ? 2 : -1);
+    MeReal an[3], x[3], wv;
+    int k;
+    for (k = 0; k < 3; ++k) /* the column of n with the sliding rows substituted */
+        an[k] = A[k * 3 + 0] + (MeReal)sig[1] * mu[1] * A[k * 3 + 1] + (MeReal)sig[2] * mu[2] * A[k * 3 + 2];
+    if (free < 0) {
+        if (!(an[0] > ME_R(0.0)))
+            return 0;
+        x[0] = r[0] / an[0];
+    } else {
+        const MeReal det = an[0] * A[free * 3 + free] - A[0 * 3 + free] * an[free];
+        if (!(det > ME_R(0.0)))
+            return 0;
+        x[0] = (r[0] * A[free * 3 + free] - A[0 * 3 + free] * r[free]) / det;
+        x[free] = (an[0] * r[free] - an[free] * r[0]) / det;
+        if (!(KeaFabs(x[free]) <= mu[free] * x[0]))
+            return 0;
+    }
+    if (!(x[0] > ME_R(0.0)))
+        return 0;
+    for (k = 1; k < 3; ++k)
+        if (sig[k] != 0)
+            x[k] = (MeReal)sig[k] * mu[k] * x[0];
+    for (k = 1; k < 3; ++k) {
+        if (sig[k] == 0)
+            continue;
+        wv = A[k * 3 + 0] * x[0] + A[k * 3 + 1] * x[1] + A[k * 3 + 2] * x[2] - r[k];
+        if (sig[k] > 0 ? wv > ME_R(0.0) : wv < ME_R(0.0))
+            return 0; /* the row would rather slide less */
+    }
+    out[0] = x[0];
+    out[1] = x[1];
+    out[2] = x[2];
+    return 1;
+}
+
 static int KeaContactActiveSets(const MeReal *A, const MeReal *r, const MeReal *mu, MeReal *out)
 {
-    int sig[3], k, combo;
     if (-r[0] >= ME_R(0.0)) { /* n = 0: w = A 0 - r */
         out[0] = out[1] = out[2] = ME_R(0.0);
         return 1;
     }
-    for (combo = 1; combo < 9; ++combo) { /* each friction row free (0) or sliding (+1, -1), not both free */
-        static const int map[3] = {0, 1, -1};
-        MeReal an[3], x[3], wv;
-        int free = -1;
-        sig[1] = map[combo / 3];
-        sig[2] = map[combo % 3];
-        if (sig[1] == 0 && sig[2] == 0)
-            continue;
-        for (k = 0; k < 3; ++k) /* the column of n with the sliding rows substituted */
-            an[k] = A[k * 3 + 0] + (MeReal)sig[1] * mu[1] * A[k * 3 + 1] + (MeReal)sig[2] * mu[2] * A[k * 3 + 2];
-        if (sig[1] == 0)
-            free = 1;
-        else if (sig[2] == 0)
-            free = 2;
-        if (free < 0) {
-            if (!(an[0] > ME_R(0.0)))
-                continue;
-            x[0] = r[0] / an[0];
-        } else {
-            const MeReal det = an[0] * A[free * 3 + free] - A[0 * 3 + free] * an[free];
-            if (!(det > ME_R(0.0)))
-                continue;
-            x[0] = (r[0] * A[free * 3 + free] - A[0 * 3 + free] * r[free]) / det;
-            x[free] = (an[0] * r[free] - an[free] * r[0]) / det;
-            if (!(KeaFabs(x[free]) <= mu[free] * x[0]))
-                continue;
-        }
-        if (!(x[0] > ME_R(0.0)))
-            continue;
-        for (k = 1; k < 3; ++k)
-            if (sig[k] != 0)
-                x[k] = (MeReal)sig[k] * mu[k] * x[0];
-        for (k = 1; k < 3; ++k) {
-            if (sig[k] == 0)
-                continue;
-            wv = A[k * 3 + 0] * x[0] + A[k * 3 + 1] * x[1] + A[k * 3 + 2] * x[2] - r[k];
-            if (sig[k] > 0 ? wv > ME_R(0.0) : wv < ME_R(0.0))
-                break; /* the row would rather slide less */
-        }
-        if (k < 3)
-            continue;
-        out[0] = x[0];
-        out[1] = x[1];
-        out[2] = x[2];
-        return 1;
-    }
-    return 0;
+    /* Each friction row free (0) or sliding (+1, -1), not both free, in this order; one call per set
+     * (constants: each test its own branch, which predicts better than one loop's). */
+    return KeaContactTry(A, r, mu, 0, 1, out) || KeaContactTry(A, r, mu, 0, -1, out) ||
+           KeaContactTry(A, r, mu, 1, 0, out) || KeaContactTry(A, r, mu, 1, 1, out) ||
+           KeaContactTry(A, r, mu, 1, -1, out) || KeaContactTry(A, r, mu, -1, 0, out) ||
+           KeaContactTry(A, r, mu, -1, 1, out) || KeaContactTry(A, r, mu, -1, -1, out);
 }
 
 /* KeaContactActiveSets for a block given by its local bounds and links: 0 unless it is a contact
