@@ -153,8 +153,12 @@ typedef struct MdtRowWriter {
 /** Append a row for the current constraint; returns its index relative to the constraint's first
  *  row, or -1 when the capacity (the class's row count) is exhausted. */
 int MdtRowWriterAdd(MdtRowWriter *w, const MdtRow *row);
-/** An empty row with the defaults (gamma −1: the world's, link −1, unbounded). */
-void MdtRowInit(MdtRow *row);
+/** An empty row with the defaults (gamma −1: the world's, link −1, unbounded). Inline: every row of
+ *  every step starts here. */
+static inline void MdtRowInit(MdtRow *row)
+{
+    *row = (MdtRow){.gamma = -1, .lo = -MEINFINITY, .hi = MEINFINITY, .link = -1};
+}
 /** The rows constraint `c` would write now, as MdtRows (at most `max`); for tests and tools (e.g.
  *  Jacobians against finite differences of the errors). `h` is the step the rows are written for. */
 int MdtConstraintCaptureRows(MdtConstraint *c, MdtRow *rows, int max, MeReal h);

@@ -13,15 +13,6 @@
 #include "kea/kea_integrate.h"
 #include "world.h"
 
-void MdtRowInit(MdtRow *row)
-{
-    memset(row, 0, sizeof *row);
-    row->gamma = -1;
-    row->lo = -MEINFINITY;
-    row->hi = MEINFINITY;
-    row->link = -1;
-}
-
 static MeReal dot3(const MeReal *a, const MeReal *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 /* Force bound → impulse bound over the step, keeping "infinite" infinite. */
