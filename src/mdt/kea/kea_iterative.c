@@ -651,7 +651,7 @@ static inline MeReal KeaRowVel4World(const KeaJacobianRow *J, const KeaVel4 *v0)
  * rows held in locals: the normal row's bounds are [0, inf), the friction rows' [-mu n, mu n] for
  * the normal impulse n. */
 static MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, int maxPasses, MeReal *x,
-                                  KeaStats *stats, int onWorld)
+                                  KeaStats *stats, int onWorld, MeReal *decrease)
 {
     const int s = w->blockStart[block];
     KeaVel4 *v0 = &w->dv[w->body[s][0]], *v1 = &w->dv[w->body[s][1]];
@@ -693,13 +693,15 @@ static MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w
                 w->localLink[r] = r == 0 ? -1 : 0;
             }
             KeaSmallLcp(problem, w, 3, A, rl, w->localLo, w->localHi, w->localLink, mu, maxPasses, w->localX, stats);
+            w->sweepDecrease = *decrease;
             KeaBlockApplyDeltas(w, s, 3, x);
+            *decrease = w->sweepDecrease;
             return worst;
         }
     }
     for (r = 0; r < 3; ++r) {
         d[r] = xn[r] - xb[r];
-        w->sweepDecrease -= ME_R(0.5) * d[r] * wb[r];
+        *decrease -= ME_R(0.5) * d[r] * wb[r];
     }
     KeaBlockScatterSized(3, &w->B[s], d, v0, onWorld ? NULL : v1);
     for (r = 0; r < 3; ++r)
@@ -712,20 +714,23 @@ static MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w
 static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
                        MeReal omega, MeReal *x, KeaStats *stats, int backward)
 {
-    MeReal worst = ME_R(0.0);
+    /* decrease: the sweep's running sweepDecrease, in a local so that it can live in a register (in w
+     * it chained every block to the last one through a store and a load) */
+    MeReal worst = ME_R(0.0), decrease = ME_R(0.0);
     int k;
-    w->sweepDecrease = ME_R(0.0);
     for (k = 0; k < w->nBlocks; ++k) {
         const int block = backward ? w->nBlocks - 1 - k : k;
         const int i = w->blockStart[block];
         MeReal lo, hi, wi, xNew, r;
         if (w->blockContact[block]) { /* one call site: the step is inlined into the sweep */
             worst = KeaMax(worst, KeaContactBlockStep(problem, w, block, params->maxFrictionPasses, x, stats,
-                                                      w->blockContact[block] == KEA_CONTACT_WORLD));
+                                                      w->blockContact[block] == KEA_CONTACT_WORLD, &decrease));
             continue;
         }
         if (w->blockStart[block + 1] - i > 1) {
+            w->sweepDecrease = decrease;
             worst = KeaMax(worst, KeaBlockStep(problem, w, block, params->maxFrictionPasses, x, stats));
+            decrease = w->sweepDecrease;
             continue;
         }
         if (w->invDiag[i] == ME_R(0.0))
@@ -736,11 +741,12 @@ static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const Kea
         worst = KeaMax(worst, r);
         xNew = KeaClamp(x[i] - omega * wi * w->invDiag[i], lo, hi);
         if (xNew != x[i]) {
-            w->sweepDecrease -= ME_R(0.5) * (xNew - x[i]) * wi;
+            decrease -= ME_R(0.5) * (xNew - x[i]) * wi;
             KeaRowApply4(&w->B[i], xNew - x[i], &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
             x[i] = xNew;
         }
     }
+    w->sweepDecrease = decrease;
     return worst;
 }
 
