@@ -1,0 +1,136 @@
+/* test_kea_lanes.c -- the four-lane kernels (kea_lanes.h) and the scalar helpers the solver's
+ * results rest on compute exactly what their comments say, bit for bit: each lane the scalar IEEE
+ * operations in the stated order, whatever the lanes are made of (SSE in a single-precision x86
+ * build, an array elsewhere). The solver's "same trajectory" claims for these kernels depend on it. */
+#include "karma_test.h"
+
+#include <string.h>
+
+#include "kea_test_problems.h"
+#include "mdt/kea/kea_internal.h"
+
+/* Random values of mixed sign and magnitude (including exact zeros), as solver data has. */
+static MeReal random_value(KtRng *r)
+{
+    const double u = kt_uniform(r);
+    if (u < 0.05)
+        return ME_R(0.0);
+    return (MeReal)(kt_range(r, -1.0, 1.0) * (u < 0.5 ? 1.0 : 1e3 * kt_uniform(r)));
+}
+
+static int same_bits(MeReal a, MeReal b) { return memcmp(&a, &b, sizeof a) == 0; }
+
+static void lanes_do_the_scalar_operations(void **state)
+{
+    KtRng rng = {12345};
+    int trial, k;
+    (void)state;
+    for (trial = 0; trial < 2000; ++trial) {
+        MeReal a[4], b[4], c[4], d[4], v[4], out[4], s = random_value(&rng);
+        for (k = 0; k < 4; ++k) {
+            a[k] = k < 3 ? random_value(&rng) : ME_R(0.0); /* padded 3-vectors: pad 0 */
+            b[k] = k < 3 ? random_value(&rng) : ME_R(0.0);
+            c[k] = k < 3 ? random_value(&rng) : ME_R(0.0);
+            d[k] = k < 3 ? random_value(&rng) : ME_R(0.0);
+            v[k] = k < 3 ? random_value(&rng) : ME_R(0.0);
+        }
+        { /* a.b + c.d over three components: lane k is a_k b_k + c_k d_k, then (l0 + l1) + l2 */
+            MeReal lane[3], expect;
+            for (k = 0; k < 3; ++k)
+                lane[k] = a[k] * b[k] + c[k] * d[k];
+            expect = (lane[0] + lane[1]) + lane[2];
+            assert_true(same_bits(KeaLanesSum3(KeaLanesDot2(a, b, c, d)), expect));
+        }
+        { /* v += u s */
+            MeReal w[4];
+            memcpy(w, v, sizeof w);
+            KeaLanesAddScaled(w, a, KeaLanesSplat(s));
+            for (k = 0; k < 4; ++k)
+                assert_true(same_bits(w[k], v[k] + a[k] * s));
+        }
+        { /* (a - b) * c + d, lane by lane */
+            KeaLanesStore(out, KeaLanesAdd(KeaLanesMul(KeaLanesSub(KeaLanesLoad(a), KeaLanesLoad(b)), KeaLanesLoad(c)),
+                                           KeaLanesLoad(d)));
+            for (k = 0; k < 4; ++k)
+                assert_true(same_bits(out[k], (a[k] - b[k]) * c[k] + d[k]));
+        }
+    }
+}
+
+/* KeaDotN4: four running sums over entries k, k + 4, ..., the tail added to the first, then
+ * (s0 + s1) + (s2 + s3) -- the order the direct path's factor has always used. */
+static MeReal dot_reference(const MeReal *a, const MeReal *b, int n)
+{
+    MeReal s[4] = {ME_R(0.0), ME_R(0.0), ME_R(0.0), ME_R(0.0)};
+    int m = 0, k;
+    for (; m + 4 <= n; m += 4)
+        for (k = 0; k < 4; ++k)
+            s[k] += a[m + k] * b[m + k];
+    for (; m < n; ++m)
+        s[0] += a[m] * b[m];
+    return (s[0] + s[1]) + (s[2] + s[3]);
+}
+
+static void dot_keeps_its_four_sums(void **state)
+{
+    KtRng rng = {777};
+    MeReal a[40], b[40];
+    int trial, n, k;
+    (void)state;
+    for (trial = 0; trial < 200; ++trial) {
+        for (k = 0; k < 40; ++k) {
+            a[k] = random_value(&rng);
+            b[k] = random_value(&rng);
+        }
+        for (n = 0; n <= 37; ++n) {
+            const int offset = trial % 3; /* any alignment */
+            assert_true(same_bits(KeaDotN4(a + offset, b + offset, n), dot_reference(a + offset, b + offset, n)));
+        }
+    }
+}
+
+/* KeaClamp(v, lo, hi) for lo <= hi: lo below, hi above, v between, NaN stays NaN; the same value as
+ * v < lo ? lo : (v > hi ? hi : v), signed zeros included. */
+static void clamp_is_the_middle_value(void **state)
+{
+    KtRng rng = {4242};
+    const MeReal special[] = {ME_R(0.0), -ME_R(0.0), ME_R(1.0), -ME_R(1.0), MEINFINITY, -MEINFINITY, ME_R(1e-30)};
+    const int ns = (int)(sizeof special / sizeof special[0]);
+    int i, j, k, trial;
+    (void)state;
+    for (i = 0; i < ns; ++i) /* every ordered pair of bounds from the special values, every v */
+        for (j = 0; j < ns; ++j)
+            for (k = 0; k < ns; ++k) {
+                const MeReal lo = special[i], hi = special[j], v = special[k];
+                if (!(lo <= hi))
+                    continue;
+                assert_true(same_bits(KeaClamp(v, lo, hi), v < lo ? lo : (v > hi ? hi : v)));
+            }
+    for (trial = 0; trial < 10000; ++trial) {
+        MeReal lo = random_value(&rng), hi = random_value(&rng), v = random_value(&rng), t;
+        if (hi < lo) {
+            t = lo;
+            lo = hi;
+            hi = t;
+        }
+        t = KeaClamp(v, lo, hi);
+        assert_true(same_bits(t, v < lo ? lo : (v > hi ? hi : v)));
+        assert_true(t >= lo && t <= hi);
+    }
+    {
+        volatile MeReal zero = ME_R(0.0);
+        const MeReal nan = zero / zero;
+        const MeReal t = KeaClamp(nan, -ME_R(1.0), ME_R(1.0));
+        assert_true(t != t);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(lanes_do_the_scalar_operations),
+        cmocka_unit_test(dot_keeps_its_four_sums),
+        cmocka_unit_test(clamp_is_the_middle_value),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
