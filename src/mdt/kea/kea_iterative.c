@@ -56,8 +56,8 @@
  * sliding: KeaContactSolve); anything else (a constraint's rows at a limit) goes to the dense
  * box-LCP solver (kea_dense_lcp.c). A plain contact block (a normal row and its two friction rows,
  * the pile's every block) has its own step with the same arithmetic and its rows in locals, and on
- * the world it skips the world's half (exact zeros): pile 15.3e9 -> 13.3e9 instructions over 300
- * steps, the same trajectories.
+ * the world it skips the world's half (exact zeros): the same trajectories, a quarter fewer
+ * instructions on the pile with the four-lane kernels (docs/kea.md).
  *
  * Warm start: x0 is clamped to its bounds and dv computed from it before the first sweep.
  *
@@ -290,9 +290,12 @@ static inline void KeaBlockGather(const KeaIterativeWork *w, int s, int m, const
  * second half is the world's (all zero: nothing to add). */
 static inline void KeaBlockScatterSized(const int m, const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
 {
-    KeaLanes aLin = KeaLanesLoad(v0->lin), aAng = KeaLanesLoad(v0->ang);
-    KeaLanes bLin = KeaLanesLoad(v1 ? v1->lin : v0->lin), bAng = KeaLanesLoad(v1 ? v1->ang : v0->ang);
+    KeaLanes aLin = KeaLanesLoad(v0->lin), aAng = KeaLanesLoad(v0->ang), bLin = aLin, bAng = aAng;
     int r;
+    if (v1) {
+        bLin = KeaLanesLoad(v1->lin);
+        bAng = KeaLanesLoad(v1->ang);
+    }
     for (r = 0; r < m; ++r) {
         KeaLanes dr;
         if (d[r] == ME_R(0.0))
@@ -335,13 +338,13 @@ static int KeaContactStart(const KeaProblem *problem, int i)
     return problem->link && problem->link[i] < 0 && i + 1 < problem->nRows && problem->link[i + 1] == i;
 }
 
+enum { KEA_CONTACT_BODIES = 1, KEA_CONTACT_WORLD = 2 }; /* a plain contact between two bodies, or on the world */
+
 /* A plain contact block, the pile's every block: three rows on two different bodies (the second
  * may be the world), a normal row with bounds [0, inf) and no link, two friction rows linked to it
  * with no bounds of their own (KeaContactSolve's case), each touching something, and the block's
  * inverse exists. The sweep solves it with that layout known (KeaContactBlockStep). Returns its
  * KEA_CONTACT_* kind, or 0. */
-enum { KEA_CONTACT_BODIES = 1, KEA_CONTACT_WORLD = 2 }; /* a plain contact between two bodies, or on the world */
-
 static unsigned char KeaIsPlainContact(const KeaProblem *problem, const KeaIterativeWork *w, int s, int m)
 {
     const int block = w->rowBlock[s];
@@ -425,7 +428,7 @@ static void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int c
                 }
         }
         w->blockFactored[w->nBlocks] = 0;
-        if (m == 3) { /* a contact: the same arithmetic, unrolled */
+        if (m == 3) { /* a contact or a ball joint: the same arithmetic, unrolled */
             w->blockFactored[w->nBlocks] = (unsigned char)KeaCholeskyDenseInline(3, w->blockA + offset, w->blockL);
             if (w->blockFactored[w->nBlocks])
                 KeaBlockInvert(3, w->blockL, w->blockInv + offset);
@@ -487,19 +490,8 @@ static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int b
     return 1;
 }
 
-/* One contact with friction (a normal row with bounds [0, inf) and two rows linked to it with no
- * bounds of their own), solved exactly by trying its few active sets, x = (n, f1, f2):
- *   n = 0 (the contact opens; the friction rows are pinned at 0): valid if w_n >= 0;
- *   n > 0 with each friction row free or sliding at +-mu n, not both free: the rows that are free
- *   (and the normal) have w = 0, a 1x1 or 2x2 system in n and the free friction impulse; valid if
- *   n > 0, a free friction row stays within +-mu n, and a sliding one's w pushes against its bound.
- * A is the contact's 3 x 3 matrix, r its r_loc = A x - w, mu its rows' friction coefficients.
- * The all-free case is KeaBlockAllFree's (with the block's precomputed inverse).
- * The first valid set in that fixed order is taken (with mu small enough the solution is unique).
- * Exact comparisons: a set valid only within rounding is left to the general solver. Returns 1 if
- * solved (out holds the solution). */
-/* One active set of KeaContactActiveSets: friction row k free (sigk 0) or sliding at sigk mu_k n.
- * Returns 1, with the solution in out, if it is valid. */
+/* One active set of KeaContactActiveSets (below): friction row k free (sigk 0) or sliding at
+ * sigk mu_k n. Returns 1, with the solution in out, if it is valid. */
 static inline int KeaContactTry(const MeReal *A, const MeReal *r, const MeReal *mu, const int sig1, const int sig2,
                                 MeReal *out)
 {
@@ -540,6 +532,17 @@ static inline int KeaContactTry(const MeReal *A, const MeReal *r, const MeReal *
     return 1;
 }
 
+/* One contact with friction (a normal row with bounds [0, inf) and two rows linked to it with no
+ * bounds of their own), solved exactly by trying its few active sets, x = (n, f1, f2):
+ *   n = 0 (the contact opens; the friction rows are pinned at 0): valid if w_n >= 0;
+ *   n > 0 with each friction row free or sliding at +-mu n, not both free: the rows that are free
+ *   (and the normal) have w = 0, a 1x1 or 2x2 system in n and the free friction impulse; valid if
+ *   n > 0, a free friction row stays within +-mu n, and a sliding one's w pushes against its bound.
+ * A is the contact's 3 x 3 matrix, r its r_loc = A x - w, mu its rows' friction coefficients.
+ * The all-free case is KeaBlockAllFree's (with the block's precomputed inverse).
+ * The first valid set in that fixed order is taken (with mu small enough the solution is unique).
+ * Exact comparisons: a set valid only within rounding is left to the general solver. Returns 1 if
+ * solved (out holds the solution). */
 static int KeaContactActiveSets(const MeReal *A, const MeReal *r, const MeReal *mu, MeReal *out)
 {
     if (-r[0] >= ME_R(0.0)) { /* n = 0: w = A 0 - r */
