@@ -28,7 +28,8 @@
  *   f(x) = 1/2 x^T A x - r^T x;   f(x + s) - f(x) = s . (w + 1/2 (J M^-1 J^T s + eps s))
  * (computed from the step alone, free of cancellation). A rejected step leaves x as PGS made it, so
  * SM never makes the QP worse; the next sweep re-applies the friction links and the active set.
- * Each CG step costs about one sweep; KeaStats.subspaceSteps counts them.
+ * Each CG step costs about half a sweep (an SM step of 4, with its line search, about two: measured
+ * on the pile, 2026-11-27); KeaStats.subspaceSteps counts them.
  *
  * SM pays when the sweeps have (nearly) settled which rows sit at a bound: CG on a free set that
  * the next sweep changes again is mostly thrown away. So the SM step after a sweep is skipped when
@@ -38,7 +39,7 @@
  * motion (measured on bench/ scenes: the 1,000-body pile, whose contacts keep opening, closing
  * and slipping, saves 17 % of its instructions at the same penetration; every pyramid at rest
  * keeps its SM steps; skipping at any change without the "never twice" rule let the pyramids
- * fall). And SM must pay for itself: a step costs about one sweep, so when the sweep after an SM
+ * fall). And SM must pay for itself: a step costs about two sweeps, so when the sweep after an SM
  * step lowers the QP objective more than that step did (the sweep's decrease estimated as
  * 1/2 delta . w per updated row, exact for an unclamped block step, low for a clamped one, so the
  * estimate favours SM), the next SM step waits until at most 1/100 of the rows (or 16) changed
