@@ -25,7 +25,6 @@ static inline MeReal KeaFabs(MeReal a) { return MeFabs(a); }
 static inline MeReal KeaMax(MeReal a, MeReal b) { return a > b ? a : b; }
 static inline MeReal KeaMin(MeReal a, MeReal b) { return a < b ? a : b; }
 
-/** mid(lo, v, hi) for lo <= hi. */
 /** mid(lo, v, hi) for lo <= hi (every caller's bounds are): v < lo gives lo, v > hi gives hi, else v
  *  (NaN stays NaN). Written as min then max so that it compiles to minss / maxss, not to branches
  *  (a clamp's outcome is data: mispredicted about one time in five in the sweeps). */
@@ -135,11 +134,14 @@ void KeaColumnsApplyPair(int m, const MeReal *M, const MeReal *lin0, const MeRea
 /** B = M^-1 J_i^T of row i (zero halves for the world); returns the row's diagonal J_i B + eps_i. */
 MeReal KeaRowInvMassJT(const KeaProblem *problem, int i, KeaJacobianRow *B);
 
+/** A friction row's bound mu max(xLink, 0) for its normal row's impulse xLink. */
+static inline MeReal KeaFrictionBound(MeReal mu, MeReal xLink) { return mu * KeaMax(xLink, ME_R(0.0)); }
+
 /** The friction rule: own bounds [lo, hi] widened to contain 0, intersected with
- *  [-mu max(xLink, 0), mu max(xLink, 0)]. */
+ *  [-KeaFrictionBound, KeaFrictionBound]. */
 static inline void KeaFrictionBounds(MeReal lo, MeReal hi, MeReal mu, MeReal xLink, MeReal *effLo, MeReal *effHi)
 {
-    const MeReal bound = mu * KeaMax(xLink, ME_R(0.0));
+    const MeReal bound = KeaFrictionBound(mu, xLink);
     *effLo = KeaMax(KeaMin(lo, ME_R(0.0)), -bound);
     *effHi = KeaMin(KeaMax(hi, ME_R(0.0)), bound);
 }

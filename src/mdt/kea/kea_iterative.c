@@ -672,7 +672,7 @@ static MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w
     worst = KeaMax(ME_R(0.0), w->diag[s] * KeaFabs(xb[0] - KeaClamp(xb[0] - wb[0] * w->invDiag[s], ME_R(0.0),
                                                                         problem->hi[s])));
     for (r = 1; r < 3; ++r) {
-        bound = mu[r] * KeaMax(xb[0], ME_R(0.0));
+        bound = KeaFrictionBound(mu[r], xb[0]);
         worst = KeaMax(worst, w->diag[s + r] * KeaFabs(xb[r] - KeaClamp(xb[r] - wb[r] * w->invDiag[s + r], -bound, bound)));
     }
     /* every row free: x_b - A_bb^-1 w_b, if it keeps within the bounds its own normal gives */
@@ -680,8 +680,8 @@ static MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w
         t[r] = (inv[r] * wb[0] + inv[3 + r] * wb[1]) + inv[6 + r] * wb[2];
     for (r = 0; r < 3; ++r)
         xn[r] = xb[r] - t[r];
-    bound = mu[1] * KeaMax(xn[0], ME_R(0.0));
-    bound2 = mu[2] * KeaMax(xn[0], ME_R(0.0));
+    bound = KeaFrictionBound(mu[1], xn[0]);
+    bound2 = KeaFrictionBound(mu[2], xn[0]);
     if (!(xn[0] >= ME_R(0.0) && xn[0] <= problem->hi[s] && xn[1] >= -bound && xn[1] <= bound && xn[2] >= -bound2 &&
           xn[2] <= bound2)) {
         const MeReal *A = w->blockA + w->blockMatrix[block];
@@ -869,8 +869,8 @@ static int KeaUpdateFreeRows(const KeaProblem *problem, KeaIterativeWork *w, con
     for (b = 0; b < w->nBlocks; ++b) {
         const int s = w->blockStart[b];
         if (w->blockContact[b]) {
-            const MeReal n = x[s], bound1 = problem->mu[s + 1] * KeaMax(n, ME_R(0.0)),
-                         bound2 = problem->mu[s + 2] * KeaMax(n, ME_R(0.0));
+            const MeReal n = x[s], bound1 = KeaFrictionBound(problem->mu[s + 1], n),
+                         bound2 = KeaFrictionBound(problem->mu[s + 2], n);
             const unsigned char f0 = (unsigned char)(ME_R(0.0) < n && n < problem->hi[s]);
             const unsigned char f1 = (unsigned char)(-bound1 < x[s + 1] && x[s + 1] < bound1);
             const unsigned char f2 = (unsigned char)(-bound2 < x[s + 2] && x[s + 2] < bound2);
