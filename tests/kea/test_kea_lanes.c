@@ -1,5 +1,5 @@
-/* test_kea_lanes.c -- the four-lane kernels (kea_lanes.h) and the scalar helpers the solver's
- * results rest on compute exactly what their comments say, bit for bit: each lane the scalar IEEE
+/* test_kea_lanes.c -- the four-lane kernels (kea_lanes.h, and M^-1 J^T of a row from them) and the
+ * scalar helpers the solver's results rest on compute exactly what their comments say, bit for bit: each lane the scalar IEEE
  * operations in the stated order, whatever the lanes are made of (SSE in a single-precision x86
  * build, an array elsewhere). The solver's "same trajectory" claims for these kernels depend on it. */
 #include "karma_test.h"
@@ -125,12 +125,61 @@ static void clamp_is_the_middle_value(void **state)
     }
 }
 
+/* KeaRowInvMassJT4 (from the bodies' padded inertia columns) gives KeaRowInvMassJT's B and diagonal
+ * bit for bit: rows on two bodies, on one and the world (either half), with eps or without; inverse
+ * inertias not exactly symmetric (a world-frame product R I R^T in floating point is not), and J's
+ * pads holding junk (the KeaProblem does not promise zero pads; B's pads must come out 0). */
+static void inverse_mass_rows_match_the_scalar_ones(void **state)
+{
+    enum { NB = 4, NR = 64 };
+    KtRng rng = {2026};
+    KeaBody bodies[NB];
+    KeaBodyColumns columns[NB];
+    KeaJacobianRow J[NR];
+    int rowBodies[NR][2], trial, i, b, j, k;
+    MeReal eps[NR];
+    (void)state;
+    for (trial = 0; trial < 50; ++trial) {
+        KeaProblem problem;
+        memset(&problem, 0, sizeof problem);
+        for (b = 0; b < NB; ++b) {
+            bodies[b].invMass = b == NB - 1 ? ME_R(0.0) : (MeReal)kt_range(&rng, 0.01, 10.0);
+            for (j = 0; j < 3; ++j)
+                for (k = 0; k < 3; ++k)
+                    bodies[b].invInertia[j][k] = random_value(&rng);
+        }
+        for (i = 0; i < NR; ++i) {
+            MeReal *halves[4] = {J[i].lin0, J[i].ang0, J[i].lin1, J[i].ang1};
+            for (j = 0; j < 4; ++j)
+                for (k = 0; k < 4; ++k)
+                    halves[j][k] = k < 3 ? random_value(&rng) : (MeReal)kt_range(&rng, -1e6, 1e6);
+            rowBodies[i][0] = i % 5 == 0 ? -1 : (int)(kt_uniform(&rng) * NB) % NB;
+            rowBodies[i][1] = i % 3 == 0 ? -1 : (rowBodies[i][0] + 1 + i % (NB - 1)) % NB;
+            eps[i] = random_value(&rng);
+        }
+        problem.nRows = NR;
+        problem.nBodies = NB;
+        problem.bodies = bodies;
+        problem.J = J;
+        problem.rowBodies = (const int(*)[2])rowBodies;
+        problem.epsilon = trial % 2 ? eps : NULL;
+        KeaBodyColumnsFill(&problem, columns);
+        for (i = 0; i < NR; ++i) {
+            KeaJacobianRow expect, got;
+            const MeReal d0 = KeaRowInvMassJT(&problem, i, &expect), d1 = KeaRowInvMassJT4(&problem, columns, i, &got);
+            assert_true(same_bits(d0, d1));
+            assert_memory_equal(&expect, &got, sizeof expect);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(lanes_do_the_scalar_operations),
         cmocka_unit_test(dot_keeps_its_four_sums),
         cmocka_unit_test(clamp_is_the_middle_value),
+        cmocka_unit_test(inverse_mass_rows_match_the_scalar_ones),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -24,6 +24,7 @@
 
 typedef struct KeaDirectWork {
     KeaJacobianRow *B;  /**< M^-1 J^T per row */
+    KeaBodyColumns *bodyColumns; /**< nb: inverse masses and inertia columns, for B */
     MeReal *A;          /**< n x n */
     int *incidence;     /**< 2n: body -> row incidence for forming A */
     int *start;         /**< nb + 1 */
@@ -47,6 +48,7 @@ static void KeaDirectLayout(KeaArena *arena, int n, int nb, KeaDirectWork *w)
     w->mark = KEA_ALLOC(arena, int, n);
     w->orderScratch = KEA_ALLOC(arena, int, KeaEliminationOrderScratch(n, nb));
     w->lcp = KeaDenseWorkCreate(arena, n);
+    w->bodyColumns = KEA_ALLOC(arena, KeaBodyColumns, nb);
 }
 
 /* Row i's structural non-zeros: every row on one of its bodies (itself included), once each. */
@@ -130,8 +132,9 @@ KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params,
         if (KeaDirectEnvelope(n, &w) > budget)
             return KeaStatusDeclined;
     }
+    KeaBodyColumnsFill(problem, w.bodyColumns);
     for (i = 0; i < n; ++i)
-        (void)KeaRowInvMassJT(problem, i, &w.B[i]);
+        (void)KeaRowInvMassJT4(problem, w.bodyColumns, i, &w.B[i]);
     KeaFormDenseMatrix(problem, w.B, w.A, w.incidence, w.start, w.patternStart, w.pattern);
 
     lcp.n = n;

@@ -106,6 +106,7 @@ static inline void KeaRowApply4(const KeaJacobianRow *B, MeReal s, KeaVel4 *v0, 
 }
 
 typedef struct KeaIterativeWork {
+    KeaBodyColumns *bodyColumns; /**< nb: inverse masses and inertia columns, for B */
     KeaJacobianRow *B;     /**< M^-1 J^T per row */
     MeReal *invDiag;       /**< 1 / d_i (0 for a row that touches nothing and has eps 0) */
     MeReal *diag;          /**< d_i */
@@ -200,6 +201,7 @@ static void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows,
     w->eps = KEA_ALLOC(arena, MeReal, n);
     w->dv = KEA_ALLOC(arena, KeaVel4, nb + 1);
     w->dvTmp = KEA_ALLOC(arena, KeaVel4, nb + 1);
+    w->bodyColumns = KEA_ALLOC(arena, KeaBodyColumns, nb);
 }
 
 size_t KeaIterativeWorkspaceBytes(int nRows, int nBodies)
@@ -1027,10 +1029,11 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
     int i, it, b, k;
 
     KeaIterativeLayout(arena, n, nb, KEA_MAX_BLOCK_ROWS, &w);
+    KeaBodyColumnsFill(problem, w.bodyColumns);
     for (i = 0; i < n; ++i) {
         const int *rb = problem->rowBodies[i];
         const KeaJacobianRow *J = &problem->J[i];
-        w.diag[i] = KeaRowInvMassJT(problem, i, &w.B[i]);
+        w.diag[i] = KeaRowInvMassJT4(problem, w.bodyColumns, i, &w.B[i]);
         w.invDiag[i] = w.diag[i] > ME_R(0.0) ? ME_R(1.0) / w.diag[i] : ME_R(0.0);
         w.eps[i] = problem->epsilon ? problem->epsilon[i] : ME_R(0.0);
         memset(&w.J[i], 0, sizeof w.J[i]);

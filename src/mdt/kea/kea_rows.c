@@ -10,6 +10,20 @@ static void KeaInvInertiaTimes(const KeaBody *body, const MeReal *v, MeReal *out
         out[k] = KeaDot3(body->invInertia[k], v);
 }
 
+void KeaBodyColumnsFill(const KeaProblem *problem, KeaBodyColumns *out)
+{
+    int b, j, k;
+    for (b = 0; b < problem->nBodies; ++b) {
+        const KeaBody *body = &problem->bodies[b];
+        for (j = 0; j < 3; ++j) {
+            for (k = 0; k < 3; ++k)
+                out[b].col[j][k] = body->invInertia[k][j];
+            out[b].col[j][3] = ME_R(0.0);
+        }
+        out[b].invMass = body->invMass;
+    }
+}
+
 MeReal KeaRowInvMassJT(const KeaProblem *problem, int i, KeaJacobianRow *B)
 {
     const KeaJacobianRow *J = &problem->J[i];
