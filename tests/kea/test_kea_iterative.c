@@ -283,9 +283,7 @@ static void subspace_steps_wait_for_the_active_set(void **state)
  * whose active set keeps changing, an SM step that lowers the objective less than the sweep after
  * it makes the next ones wait for the active set to settle, so that at the default 10 sweeps more
  * than half of the chances are skipped (the "active set still moving" rule alone skips at most
- * every other one), and an SM step forced by "never twice" takes 2 CG steps instead of 4 (here 6,
- * 2 and 6 CG steps in 2, 1 and 2 SM steps; 8, 4 and 16 with 4 each); given 1000 sweeps, the active
- * set settles, SM runs again and the residual
+ * every other one); given 1000 sweeps, the active set settles, SM runs again and the residual
  * falls to about the default tolerance, as it did without the rule (seed 3 of this generator stays
  * far from it after 1000 sweeps with or without the rule and is left out). */
 static void subspace_steps_that_do_not_pay_wait(void **state)
@@ -306,9 +304,6 @@ static void subspace_steps_that_do_not_pay_wait(void **state)
         print_message("random contacts, seed %d, 10 sweeps: %d SM steps, %d of %d chances skipped\n", seeds[k],
                       st.subspaceSteps, st.subspaceSkipped, st.iterations - 1);
         assert_true(2 * st.subspaceSkipped > st.iterations - 1);
-        /* an SM step run only because the chance before was skipped, the active set still moving,
-         * takes half the CG steps: fewer than 4 per SM step in all */
-        assert_true(st.subspaceSteps < iter.subspaceIterations * (st.iterations - 1 - st.subspaceSkipped));
         iter.maxIterations = 1000;
         kt_solve(&t.p, &iter, xi, NULL, &st);
         print_message("  to convergence: %d sweeps, %d SM steps, residual %.2g\n", st.iterations,

@@ -48,12 +48,6 @@
  * them from the second on, while 2-8 % of the rows keep changing per sweep (pile: 17.8e9 ->
  * 15.4e9 instructions over 300 steps, same penetration). Once the active set settles, SM runs
  * again, so a solve run to convergence keeps it. KeaStats.subspaceSkipped counts the skips.
- * An SM step that runs only because of the "never twice" rule, the active set still moving, takes
- * half the CG steps (2 of 4): in the pile nearly every solve's second SM step is of that kind and
- * does not pay (a solve's chances go: skip, SM that pays, skip, forced SM that does not, then wait),
- * while a settling pyramid's forced steps need only their first two CG steps to stand (with 1 the
- * 820-box pyramid stays awake; with 2 it sleeps, drift 1.7 cm). Pile: 43.0M -> 41.0M instructions a
- * step in its settled regime (steps 301-600).
  *
  * Block solves: a block of m rows (a constraint's rows on one body pair, or one contact point with
  * its friction rows) is solved exactly with the rest of x fixed. Most blocks at rest have every row
@@ -920,12 +914,9 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
     int i, p, b, k, nFree = 0, changed = 0, steps = 0, tries;
 
     changed = KeaUpdateFreeRows(problem, w, x);
-    if (changed > 16 && (long)changed * 20 > (long)n) {
-        if (!w->skippedLast) {
-            w->skippedLast = 1;
-            return -1;
-        }
-        maxSteps = (maxSteps + 1) / 2; /* forced by "never twice" on a moving active set */
+    if (changed > 16 && (long)changed * 20 > (long)n && !w->skippedLast) {
+        w->skippedLast = 1;
+        return -1;
     }
     w->skippedLast = 0;
     if (w->smUnpaid && changed > 16 && (long)changed * 100 > (long)n)
