@@ -125,10 +125,25 @@ static void clamp_is_the_middle_value(void **state)
     }
 }
 
-/* KeaRowInvMassJT4 (from the bodies' padded inertia columns) gives KeaRowInvMassJT's B and diagonal
- * bit for bit: rows on two bodies, on one and the world (either half), with eps or without; inverse
- * inertias not exactly symmetric (a world-frame product R I R^T in floating point is not), and J's
- * pads holding junk (the KeaProblem does not promise zero pads; B's pads must come out 0). */
+/* M^-1 J^T of one half, scalar, in the order the solver's results rest on: B_lin = m^-1 J_lin,
+ * B_ang[k] = (I[k][0] a0 + I[k][1] a1) + I[k][2] a2, and J.B = ((l.b)) + ((a.c)), each dot
+ * (x0 y0 + x1 y1) + x2 y2; pads 0. */
+static MeReal half_reference(const KeaBody *body, const MeReal *jl, const MeReal *ja, MeReal *bl, MeReal *ba)
+{
+    int k;
+    for (k = 0; k < 3; ++k) {
+        bl[k] = body->invMass * jl[k];
+        ba[k] = (body->invInertia[k][0] * ja[0] + body->invInertia[k][1] * ja[1]) + body->invInertia[k][2] * ja[2];
+    }
+    bl[3] = ba[3] = ME_R(0.0);
+    return ((jl[0] * bl[0] + jl[1] * bl[1]) + jl[2] * bl[2]) + ((ja[0] * ba[0] + ja[1] * ba[1]) + ja[2] * ba[2]);
+}
+
+/* A row's M^-1 J^T from the lanes, with the bodies' columns made once (KeaRowInvMassJT4) or per row
+ * (KeaRowInvMassJT), gives the scalar reference's B and diagonal bit for bit: rows on two bodies,
+ * on one and the world (either half), with eps or without; inverse inertias not exactly symmetric
+ * (a world-frame product R I R^T in floating point is not), and J's pads holding junk (the
+ * KeaProblem does not promise zero pads; B's pads must come out 0). */
 static void inverse_mass_rows_match_the_scalar_ones(void **state)
 {
     enum { NB = 4, NR = 64 };
@@ -165,10 +180,19 @@ static void inverse_mass_rows_match_the_scalar_ones(void **state)
         problem.epsilon = trial % 2 ? eps : NULL;
         KeaBodyColumnsFill(&problem, columns);
         for (i = 0; i < NR; ++i) {
-            KeaJacobianRow expect, got;
-            const MeReal d0 = KeaRowInvMassJT(&problem, i, &expect), d1 = KeaRowInvMassJT4(&problem, columns, i, &got);
-            assert_true(same_bits(d0, d1));
+            KeaJacobianRow expect, got, alone;
+            MeReal d = problem.epsilon ? eps[i] : ME_R(0.0), d4, d1;
+            memset(&expect, 0, sizeof expect);
+            if (rowBodies[i][0] >= 0)
+                d += half_reference(&bodies[rowBodies[i][0]], J[i].lin0, J[i].ang0, expect.lin0, expect.ang0);
+            if (rowBodies[i][1] >= 0)
+                d += half_reference(&bodies[rowBodies[i][1]], J[i].lin1, J[i].ang1, expect.lin1, expect.ang1);
+            d4 = KeaRowInvMassJT4(&problem, columns, i, &got);
+            d1 = KeaRowInvMassJT(&problem, i, &alone);
+            assert_true(same_bits(d4, d));
+            assert_true(same_bits(d1, d));
             assert_memory_equal(&expect, &got, sizeof expect);
+            assert_memory_equal(&expect, &alone, sizeof expect);
         }
     }
 }

@@ -131,26 +131,36 @@ void KeaColumnsApply(int m, int nc, const MeReal *M, const MeReal *in, MeReal *o
 void KeaColumnsApplyPair(int m, const MeReal *M, const MeReal *lin0, const MeReal *ang0, const MeReal *lin1,
                          const MeReal *ang1, MeReal *out);
 
-/** B = M^-1 J_i^T of row i (zero halves for the world); returns the row's diagonal J_i B + eps_i. */
-MeReal KeaRowInvMassJT(const KeaProblem *problem, int i, KeaJacobianRow *B);
-
 /** A body's inverse mass and the columns of its world inverse inertia, padded for the lanes:
- *  col[j] = (I^-1[0][j], I^-1[1][j], I^-1[2][j], 0). Filled once per solve (KeaBodyColumnsFill),
- *  so that a row's M^-1 J^T takes a few lane operations (KeaRowInvMassJT4). */
+ *  col[j] = (I^-1[0][j], I^-1[1][j], I^-1[2][j], 0), so that a row's M^-1 J^T takes a few lane
+ *  operations (KeaRowInvMassJTOf). */
 typedef struct KeaBodyColumns {
     MeReal col[3][4];
     MeReal invMass;
 } KeaBodyColumns;
 
+/** out = the columns of `body` (KeaBodyColumns). */
+static inline void KeaBodyColumnsOf(const KeaBody *body, KeaBodyColumns *out)
+{
+    int j, k;
+    for (j = 0; j < 3; ++j) {
+        for (k = 0; k < 3; ++k)
+            out->col[j][k] = body->invInertia[k][j];
+        out->col[j][3] = ME_R(0.0);
+    }
+    out->invMass = body->invMass;
+}
+
+/** Every body's columns, once per solve (the paths' workspaces hold them). */
 void KeaBodyColumnsFill(const KeaProblem *problem, KeaBodyColumns *out);
 
-/* One half of KeaRowInvMassJT4: B's half from J's half (pads 0), returning J . B over the half. */
+/* One half of a row's M^-1 J^T: B's half from J's half (pads 0), returning J . B over the half. */
 static inline MeReal KeaHalfInvMassJT4(const KeaBodyColumns *body, const MeReal *jLin, const MeReal *jAng,
                                        MeReal *bLin, MeReal *bAng)
 {
     const KeaLanes l = KeaLanesLoad(jLin), a = KeaLanesLoad(jAng);
     const KeaLanes bl = KeaLanesMul(KeaLanesSplat(body->invMass), l);
-    /* lane k: (I[k][0] a0 + I[k][1] a1) + I[k][2] a2, KeaDot3's order */
+    /* lane k: (I[k][0] a0 + I[k][1] a1) + I[k][2] a2 */
     const KeaLanes ba = KeaLanesAdd(KeaLanesAdd(KeaLanesMul(KeaLanesLoad(body->col[0]), KeaLanesSplat(jAng[0])),
                                                 KeaLanesMul(KeaLanesLoad(body->col[1]), KeaLanesSplat(jAng[1]))),
                                     KeaLanesMul(KeaLanesLoad(body->col[2]), KeaLanesSplat(jAng[2])));
@@ -160,29 +170,40 @@ static inline MeReal KeaHalfInvMassJT4(const KeaBodyColumns *body, const MeReal 
     return KeaLanesSum3(KeaLanesMul(l, bl)) + KeaLanesSum3(KeaLanesMul(a, ba));
 }
 
-/** KeaRowInvMassJT from the bodies' columns: the same values, bit for bit (each lane KeaDot3's
- *  operations in its order), at a third of the instructions. */
-static inline MeReal KeaRowInvMassJT4(const KeaProblem *problem, const KeaBodyColumns *bodies, int i,
-                                      KeaJacobianRow *B)
+/** B = M^-1 J^T of row J on bodies c0 and c1 (NULL: the world, a zero half); returns the row's
+ *  diagonal J B + eps. Each half is (J.l)(I^-1 ...) in KeaDot3's order of operations: every lane
+ *  the scalar IEEE operations, so the same bits however the lanes are made. */
+static inline MeReal KeaRowInvMassJTOf(const KeaJacobianRow *J, const KeaBodyColumns *c0, const KeaBodyColumns *c1,
+                                       MeReal eps, KeaJacobianRow *B)
 {
-    const KeaJacobianRow *J = &problem->J[i];
-    const int *b = problem->rowBodies[i];
-    MeReal diag = problem->epsilon ? problem->epsilon[i] : ME_R(0.0);
+    MeReal diag = eps;
     int k;
-    if (b[0] >= 0) {
-        diag += KeaHalfInvMassJT4(&bodies[b[0]], J->lin0, J->ang0, B->lin0, B->ang0);
+    if (c0) {
+        diag += KeaHalfInvMassJT4(c0, J->lin0, J->ang0, B->lin0, B->ang0);
     } else {
         for (k = 0; k < 4; ++k)
             B->lin0[k] = B->ang0[k] = ME_R(0.0);
     }
-    if (b[1] >= 0) {
-        diag += KeaHalfInvMassJT4(&bodies[b[1]], J->lin1, J->ang1, B->lin1, B->ang1);
+    if (c1) {
+        diag += KeaHalfInvMassJT4(c1, J->lin1, J->ang1, B->lin1, B->ang1);
     } else {
         for (k = 0; k < 4; ++k)
             B->lin1[k] = B->ang1[k] = ME_R(0.0);
     }
     return diag;
 }
+
+/** B = M^-1 J_i^T of row i from the bodies' columns (KeaBodyColumnsFill); returns J_i B + eps_i. */
+static inline MeReal KeaRowInvMassJT4(const KeaProblem *problem, const KeaBodyColumns *bodies, int i,
+                                      KeaJacobianRow *B)
+{
+    const int *b = problem->rowBodies[i];
+    return KeaRowInvMassJTOf(&problem->J[i], b[0] >= 0 ? &bodies[b[0]] : NULL, b[1] >= 0 ? &bodies[b[1]] : NULL,
+                             problem->epsilon ? problem->epsilon[i] : ME_R(0.0), B);
+}
+
+/** The same without a workspace: the row's two bodies' columns are made here (KeaResidual). */
+MeReal KeaRowInvMassJT(const KeaProblem *problem, int i, KeaJacobianRow *B);
 
 /** A friction row's bound mu max(xLink, 0) for its normal row's impulse xLink. */
 static inline MeReal KeaFrictionBound(MeReal mu, MeReal xLink) { return mu * KeaMax(xLink, ME_R(0.0)); }

@@ -12,42 +12,21 @@ static void KeaInvInertiaTimes(const KeaBody *body, const MeReal *v, MeReal *out
 
 void KeaBodyColumnsFill(const KeaProblem *problem, KeaBodyColumns *out)
 {
-    int b, j, k;
-    for (b = 0; b < problem->nBodies; ++b) {
-        const KeaBody *body = &problem->bodies[b];
-        for (j = 0; j < 3; ++j) {
-            for (k = 0; k < 3; ++k)
-                out[b].col[j][k] = body->invInertia[k][j];
-            out[b].col[j][3] = ME_R(0.0);
-        }
-        out[b].invMass = body->invMass;
-    }
+    int b;
+    for (b = 0; b < problem->nBodies; ++b)
+        KeaBodyColumnsOf(&problem->bodies[b], &out[b]);
 }
 
 MeReal KeaRowInvMassJT(const KeaProblem *problem, int i, KeaJacobianRow *B)
 {
-    const KeaJacobianRow *J = &problem->J[i];
     const int *b = problem->rowBodies[i];
-    MeReal diag = problem->epsilon ? problem->epsilon[i] : ME_R(0.0);
-    int k;
-
-    for (k = 0; k < 4; ++k)
-        B->lin0[k] = B->ang0[k] = B->lin1[k] = B->ang1[k] = ME_R(0.0);
-    if (b[0] >= 0) {
-        const KeaBody *body = &problem->bodies[b[0]];
-        for (k = 0; k < 3; ++k)
-            B->lin0[k] = body->invMass * J->lin0[k];
-        KeaInvInertiaTimes(body, J->ang0, B->ang0);
-        diag += KeaDot3(J->lin0, B->lin0) + KeaDot3(J->ang0, B->ang0);
-    }
-    if (b[1] >= 0) {
-        const KeaBody *body = &problem->bodies[b[1]];
-        for (k = 0; k < 3; ++k)
-            B->lin1[k] = body->invMass * J->lin1[k];
-        KeaInvInertiaTimes(body, J->ang1, B->ang1);
-        diag += KeaDot3(J->lin1, B->lin1) + KeaDot3(J->ang1, B->ang1);
-    }
-    return diag;
+    KeaBodyColumns c0, c1;
+    if (b[0] >= 0)
+        KeaBodyColumnsOf(&problem->bodies[b[0]], &c0);
+    if (b[1] >= 0)
+        KeaBodyColumnsOf(&problem->bodies[b[1]], &c1);
+    return KeaRowInvMassJTOf(&problem->J[i], b[0] >= 0 ? &c0 : NULL, b[1] >= 0 ? &c1 : NULL,
+                             problem->epsilon ? problem->epsilon[i] : ME_R(0.0), B);
 }
 
 /* The sums run in a local array (no aliasing with M or in for the compiler); the common row counts
