@@ -90,6 +90,19 @@ static inline MeReal KeaRowVel4(const KeaJacobianRow *J, const KeaVel4 *v0, cons
                                     KeaLanesDot2(J->lin1, v1->lin, J->ang1, v1->ang)));
 }
 
+/* J . (v0, world) on padded rows: KeaRowVel4 without the world's half, which adds exact zeros. */
+static inline MeReal KeaRowVel4World(const KeaJacobianRow *J, const KeaVel4 *v0)
+{
+    return KeaLanesSum3(KeaLanesDot2(J->lin0, v0->lin, J->ang0, v0->ang));
+}
+
+/** J_r . B_c of two padded rows: KeaRowVel4 with B_c's halves as the two bodies' velocities. */
+static inline MeReal KeaRowDot4(const KeaJacobianRow *J, const KeaJacobianRow *B)
+{
+    return KeaLanesSum3(KeaLanesAdd(KeaLanesDot2(J->lin0, B->lin0, J->ang0, B->ang0),
+                                    KeaLanesDot2(J->lin1, B->lin1, J->ang1, B->ang1)));
+}
+
 /** v += B s for one body half (padded; the pads stay 0). */
 static inline void KeaHalfApply4(const MeReal *lin, const MeReal *ang, MeReal s, KeaVel4 *v)
 {
@@ -127,6 +140,9 @@ typedef struct KeaIterativeWork {
     MeReal smDecrease;            /**< decrease of the objective by that SM step (0 if rejected) */
     int smRan;                    /**< an SM step ran since the last sweep */
     int smUnpaid;                 /**< SM: the last SM step did less than the sweep after it */
+    int nContactBlocks;           /**< blocks that are plain contacts (blockContact) */
+    int sweepChanged;             /**< plain contacts' rows that went between free and a bound in
+                                       the last sweep (tallied by its steps) */
     MeReal *localW;        /**< a block's w */
     int *rowBlock;         /**< block of each row */
     int *segmentPos, *segmentBlock, nSegments; /**< SM: free blocks preconditioned by their factor */
@@ -373,6 +389,7 @@ static void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int c
     const int n = problem->nRows;
     int i = 0, offset = 0;
     w->nBlocks = 0;
+    w->nContactBlocks = 0;
     while (i < n) {
         const int *b = problem->rowBodies[i];
         const int contact = KeaContactStart(problem, i);
@@ -399,16 +416,21 @@ static void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int c
             MeReal *A = w->blockA + offset, column[KEA_MAX_BLOCK_ROWS];
             for (c = 0; c < m; ++c) {
                 const KeaJacobianRow *Bc = &w->B[i + c];
-                KeaVel4 v0, v1;
-                for (h = 0; h < 4; ++h) {
-                    v0.lin[h] = Bc->lin0[h];
-                    v0.ang[h] = Bc->ang0[h];
-                    v1.lin[h] = Bc->lin1[h];
-                    v1.ang[h] = Bc->ang1[h];
+                if (m <= 4) { /* KeaBlockGatherSmall's sums, reading B_c's halves in place */
+                    for (r = 0; r < m; ++r)
+                        A[r * m + c] = KeaRowDot4(&w->J[i + r], Bc);
+                } else {
+                    KeaVel4 v0, v1;
+                    for (h = 0; h < 4; ++h) {
+                        v0.lin[h] = Bc->lin0[h];
+                        v0.ang[h] = Bc->ang0[h];
+                        v1.lin[h] = Bc->lin1[h];
+                        v1.ang[h] = Bc->ang1[h];
+                    }
+                    KeaBlockGather(w, i, m, &v0, &v1, column);
+                    for (r = 0; r < m; ++r)
+                        A[r * m + c] = column[r];
                 }
-                KeaBlockGather(w, i, m, &v0, &v1, column);
-                for (r = 0; r < m; ++r)
-                    A[r * m + c] = column[r];
                 if (problem->epsilon)
                     A[c * m + c] += problem->epsilon[i + c];
             }
@@ -443,6 +465,7 @@ static void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int c
             offset += m * m;
         }
         w->blockContact[w->nBlocks] = KeaIsPlainContact(problem, w, i, m);
+        w->nContactBlocks += w->blockContact[w->nBlocks] != 0;
         ++w->nBlocks;
         i += m;
     }
@@ -647,10 +670,21 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
     return worst;
 }
 
-/* J . (v0, world) on padded rows: KeaRowVel4 without the world's half, which adds exact zeros. */
-static inline MeReal KeaRowVel4World(const KeaJacobianRow *J, const KeaVel4 *v0)
+/* A plain contact's rows free now (KeaRowIsFree: its normal row's bounds [0, hi), its friction
+ * rows' +-mu n) into was, from its impulses xb; returns how many of the three changed. The sweep
+ * calls it after each contact's step, which is that block's last change before the next SM
+ * chance (a contact's bounds depend on its own rows only). */
+static inline int KeaContactFreeRows(const MeReal *mu, MeReal hi, const MeReal *xb, unsigned char *was)
 {
-    return KeaLanesSum3(KeaLanesDot2(J->lin0, v0->lin, J->ang0, v0->ang));
+    const MeReal n = xb[0], bound1 = KeaFrictionBound(mu[1], n), bound2 = KeaFrictionBound(mu[2], n);
+    const unsigned char f0 = (unsigned char)(ME_R(0.0) < n && n < hi);
+    const unsigned char f1 = (unsigned char)(-bound1 < xb[1] && xb[1] < bound1);
+    const unsigned char f2 = (unsigned char)(-bound2 < xb[2] && xb[2] < bound2);
+    const int changed = (f0 != was[0]) + (f1 != was[1]) + (f2 != was[2]);
+    was[0] = f0;
+    was[1] = f1;
+    was[2] = f2;
+    return changed;
 }
 
 /* KeaBlockStep for a plain contact block (KeaIsPlainContact), with the same arithmetic in the same
@@ -658,7 +692,7 @@ static inline MeReal KeaRowVel4World(const KeaJacobianRow *J, const KeaVel4 *v0)
  * rows held in locals: the normal row's bounds are [0, inf), the friction rows' [-mu n, mu n] for
  * the normal impulse n. */
 static MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, int maxPasses, MeReal *x,
-                                  KeaStats *stats, int onWorld, int measure, MeReal *decrease)
+                                  KeaStats *stats, int onWorld, int measure, MeReal *decrease, int *changed)
 {
     const int s = w->blockStart[block];
     KeaVel4 *v0 = &w->dv[w->body[s][0]], *v1 = &w->dv[w->body[s][1]];
@@ -708,6 +742,7 @@ static MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w
             w->sweepDecrease = *decrease;
             KeaBlockApplyDeltas(w, s, 3, x);
             *decrease = w->sweepDecrease;
+            *changed += KeaContactFreeRows(mu, problem->hi[s], x + s, w->wasFree + s);
             return worst;
         }
     }
@@ -719,6 +754,7 @@ static MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w
     for (r = 0; r < 3; ++r)
         if (d[r] != ME_R(0.0))
             x[s + r] = xn[r];
+    *changed += KeaContactFreeRows(mu, problem->hi[s], xn, w->wasFree + s);
     return worst;
 }
 
@@ -732,7 +768,7 @@ static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const Kea
     /* decrease: the sweep's running sweepDecrease, in a local so that it can live in a register (in w
      * it chained every block to the last one through a store and a load) */
     MeReal worst = ME_R(0.0), decrease = ME_R(0.0);
-    int k;
+    int k, changed = 0;
     for (k = 0; k < w->nBlocks; ++k) {
         const int block = backward ? w->nBlocks - 1 - k : k;
         const int i = w->blockStart[block];
@@ -740,7 +776,7 @@ static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const Kea
         if (w->blockContact[block]) { /* one call site: the step is inlined into the sweep */
             worst = KeaMax(worst, KeaContactBlockStep(problem, w, block, params->maxFrictionPasses, x, stats,
                                                       w->blockContact[block] == KEA_CONTACT_WORLD,
-                                                      worst <= params->tolerance, &decrease));
+                                                      worst <= params->tolerance, &decrease, &changed));
             continue;
         }
         if (w->blockStart[block + 1] - i > 1) {
@@ -764,6 +800,7 @@ static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const Kea
         }
     }
     w->sweepDecrease = decrease;
+    w->sweepChanged = changed;
     return worst;
 }
 
@@ -782,7 +819,11 @@ static void KeaScatter(const KeaProblem *problem, const KeaIterativeWork *w, int
             }
         if (k < w->nSegments) {
             const int b = w->segmentBlock[k], s = w->blockStart[b], m = w->blockStart[b + 1] - s;
-            KeaBlockScatter(m, &w->B[s], v + p, &w->dvTmp[w->body[s][0]], &w->dvTmp[w->body[s][1]]);
+            KeaVel4 *v0 = &w->dvTmp[w->body[s][0]], *v1 = &w->dvTmp[w->body[s][1]];
+            if (w->blockContact[b]) /* the sweep's contact scatter: the world's half is not written */
+                KeaBlockScatterSized(3, &w->B[s], v + p, v0, w->blockContact[b] == KEA_CONTACT_WORLD ? NULL : v1);
+            else
+                KeaBlockScatter(m, &w->B[s], v + p, v0, v1);
             p += m;
         }
     }
@@ -800,7 +841,18 @@ static void KeaGather(const KeaIterativeWork *w, int nFree, const KeaVel4 *dv, M
         }
         if (k < w->nSegments) {
             const int b = w->segmentBlock[k], s = w->blockStart[b], m = w->blockStart[b + 1] - s;
-            KeaBlockGather(w, s, m, &dv[w->body[s][0]], &dv[w->body[s][1]], out + p);
+            const KeaVel4 *v0 = &dv[w->body[s][0]], *v1 = &dv[w->body[s][1]];
+            if (w->blockContact[b] == KEA_CONTACT_WORLD) { /* as the sweep's contact step gathers */
+                out[p] = KeaRowVel4World(&w->J[s], v0);
+                out[p + 1] = KeaRowVel4World(&w->J[s + 1], v0);
+                out[p + 2] = KeaRowVel4World(&w->J[s + 2], v0);
+            } else if (w->blockContact[b]) {
+                out[p] = KeaRowVel4(&w->J[s], v0, v1);
+                out[p + 1] = KeaRowVel4(&w->J[s + 1], v0, v1);
+                out[p + 2] = KeaRowVel4(&w->J[s + 2], v0, v1);
+            } else {
+                KeaBlockGather(w, s, m, v0, v1, out + p);
+            }
             p += m;
         }
     }
@@ -871,28 +923,19 @@ static unsigned char KeaRowIsFree(const KeaIterativeWork *w, int i, MeReal xi, M
     return (unsigned char)(w->invDiag[i] != ME_R(0.0) && lo < xi && xi < hi);
 }
 
-/* Set wasFree to which rows are free now (KeaRowIsFree), a plain contact's three rows at once (its
- * normal row's bounds [0, hi), its friction rows' +-mu n); returns how many rows changed. Every
+/* Set wasFree to which rows are free now (KeaRowIsFree); returns how many rows changed. Every
  * chance of an SM step does this, skipped or not, so it is kept cheaper than the bounds and the
- * free list, which only a step that runs needs. */
+ * free list, which only a step that runs needs: the plain contacts, a pile's every block, were
+ * tallied by the sweep just before (KeaContactFreeRows), only the other blocks are visited here
+ * (their friction bounds can follow a row that a later block of the sweep changed). */
 static int KeaUpdateFreeRows(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x)
 {
     unsigned char *was = w->wasFree;
-    int b, i, changed = 0;
-    for (b = 0; b < w->nBlocks; ++b) {
+    int b, i, changed = w->sweepChanged;
+    for (b = 0; b < w->nBlocks && w->nContactBlocks < w->nBlocks; ++b) {
         const int s = w->blockStart[b];
-        if (w->blockContact[b]) {
-            const MeReal n = x[s], bound1 = KeaFrictionBound(problem->mu[s + 1], n),
-                         bound2 = KeaFrictionBound(problem->mu[s + 2], n);
-            const unsigned char f0 = (unsigned char)(ME_R(0.0) < n && n < problem->hi[s]);
-            const unsigned char f1 = (unsigned char)(-bound1 < x[s + 1] && x[s + 1] < bound1);
-            const unsigned char f2 = (unsigned char)(-bound2 < x[s + 2] && x[s + 2] < bound2);
-            changed += (f0 != was[s]) + (f1 != was[s + 1]) + (f2 != was[s + 2]);
-            was[s] = f0;
-            was[s + 1] = f1;
-            was[s + 2] = f2;
-            continue;
-        }
+        if (w->blockContact[b])
+            continue; /* the sweep has tallied it (KeaContactFreeRows) */
         for (i = s; i < w->blockStart[b + 1]; ++i) {
             MeReal lo, hi;
             unsigned char isFree;
