@@ -402,10 +402,11 @@ static void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int c
         }
         w->blockStart[w->nBlocks] = i;
         w->blockMatrix[w->nBlocks] = offset;
-        for (r = 0; r < m; ++r) {
-            MeReal *JT = w->JT + 12 * i + r;
+        for (r = 0; r < m; ++r)
             w->rowBlock[i + r] = w->nBlocks;
-            for (c = 0; c < 3 && m > 4; ++c) { /* only KeaBlockGather's large blocks read JT */
+        for (r = 0; r < m && m > 4; ++r) { /* only KeaBlockGather's large blocks read JT */
+            MeReal *JT = w->JT + 12 * i + r;
+            for (c = 0; c < 3; ++c) {
                 JT[c * m] = w->J[i + r].lin0[c];
                 JT[(3 + c) * m] = w->J[i + r].ang0[c];
                 JT[(6 + c) * m] = w->J[i + r].lin1[c];

@@ -61,9 +61,13 @@ size_t KeaMemoryRequired(int nRows, int nBodies, KeaPath path)
     return bytes + KeaVelocityBytes(nBodies) + (KEA_ALIGN - 1);
 }
 
-static int KeaIsNumber(MeReal v) { return v == v; }
+/* 0 for a finite v, NaN for an infinite one or a NaN (without -ffast-math, as Karma is built, v * 0
+ * is not folded): summed over many values, one test at the end says whether all were finite. */
+static MeReal KeaNonFinite(MeReal v) { return v * ME_R(0.0); }
 
-/* Indices in range, bounds ordered, softness non-negative, numbers where numbers are needed. */
+/* Indices in range, bounds ordered, softness non-negative, numbers where numbers are needed. The
+ * rows' numbers are checked in sums of KeaNonFinite and conjunctions of comparisons (false on a
+ * NaN), one test per row: every step's every row goes through here. */
 static int KeaProblemIsValid(const KeaProblem *p)
 {
     int i, b, k;
@@ -83,18 +87,20 @@ static int KeaProblemIsValid(const KeaProblem *p)
                 return 0;
     }
     for (i = 0; i < p->nRows; ++i) {
-        for (k = 0; k < 2; ++k)
-            if (p->rowBodies[i][k] < KEA_WORLD || p->rowBodies[i][k] >= p->nBodies)
-                return 0;
-        for (k = 0; k < 3; ++k)
-            if (!KeaIsFinite(p->J[i].lin0[k]) || !KeaIsFinite(p->J[i].ang0[k]) ||
-                !KeaIsFinite(p->J[i].lin1[k]) || !KeaIsFinite(p->J[i].ang1[k]))
-                return 0;
-        if (!KeaIsFinite(p->rhs[i]) || !KeaIsNumber(p->lo[i]) || !KeaIsNumber(p->hi[i]) || !(p->lo[i] <= p->hi[i]))
-            return 0;
-        if (p->epsilon && !(p->epsilon[i] >= ME_R(0.0) && KeaIsFinite(p->epsilon[i])))
-            return 0;
-        if (p->x0 && !KeaIsFinite(p->x0[i]))
+        const KeaJacobianRow *J = &p->J[i];
+        MeReal nonFinite = KeaNonFinite(p->rhs[i]);
+        int ok = p->rowBodies[i][0] >= KEA_WORLD && p->rowBodies[i][0] < p->nBodies &&
+                 p->rowBodies[i][1] >= KEA_WORLD && p->rowBodies[i][1] < p->nBodies && p->lo[i] <= p->hi[i];
+        for (k = 0; k < 3; ++k) /* the pads (index 3) are not read as numbers */
+            nonFinite += (KeaNonFinite(J->lin0[k]) + KeaNonFinite(J->ang0[k])) +
+                         (KeaNonFinite(J->lin1[k]) + KeaNonFinite(J->ang1[k]));
+        if (p->epsilon) {
+            ok = ok && p->epsilon[i] >= ME_R(0.0);
+            nonFinite += KeaNonFinite(p->epsilon[i]);
+        }
+        if (p->x0)
+            nonFinite += KeaNonFinite(p->x0[i]);
+        if (!ok || !(nonFinite == ME_R(0.0)))
             return 0;
         if (p->link && p->link[i] >= 0) {
             const int l = p->link[i];
