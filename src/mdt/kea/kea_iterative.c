@@ -731,7 +731,13 @@ static MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w
         MeReal rl[3];
         for (r = 0; r < 3; ++r) /* r_loc = A_bb x_b - w_b */
             rl[r] = ((A[r] * xb[0] + A[3 + r] * xb[1]) + A[6 + r] * xb[2]) - wb[r];
-        if (!KeaContactActiveSets(A, rl, mu, xn)) { /* within rounding: the general solver */
+        /* the set the contact was in, tried first: a sliding contact usually keeps sliding the same
+         * way (the solution, when unique, is the same whichever valid set is found first) */
+        const MeReal was1Bound = KeaFrictionBound(mu[1], xb[0]), was2Bound = KeaFrictionBound(mu[2], xb[0]);
+        const int was1 = xb[1] >= was1Bound ? 1 : (xb[1] <= -was1Bound ? -1 : 0);
+        const int was2 = xb[2] >= was2Bound ? 1 : (xb[2] <= -was2Bound ? -1 : 0);
+        if (!((was1 | was2) != 0 && xb[0] > ME_R(0.0) && KeaContactTry(A, rl, mu, was1, was2, xn)) &&
+            !KeaContactActiveSets(A, rl, mu, xn)) { /* within rounding: the general solver */
             for (r = 0; r < 3; ++r) {
                 w->localW[r] = wb[r];
                 w->localX[r] = xb[r];
