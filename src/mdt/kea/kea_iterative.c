@@ -136,7 +136,9 @@ typedef struct KeaIterativeWork {
     unsigned char *blockContact;  /**< KEA_CONTACT_* kind of a plain contact block (KeaIsPlainContact), else 0 */
     unsigned char *wasFree;       /**< SM: the row was free at the last SM step (or the warm start) */
     int skippedLast;              /**< SM: the last SM step was skipped */
-    MeReal sweepDecrease;         /**< estimated decrease of the QP objective by the current sweep */
+    MeReal sweepDecrease;         /**< estimated decrease of the QP objective by the current sweep
+                                       (its contacts tallied only in a sweep after an SM step, the
+                                       one whose figure is read) */
     MeReal smDecrease;            /**< decrease of the objective by that SM step (0 if rejected) */
     int smRan;                    /**< an SM step ran since the last sweep */
     int smUnpaid;                 /**< SM: the last SM step did less than the sweep after it */
@@ -693,7 +695,8 @@ static inline int KeaContactFreeRows(const MeReal *mu, MeReal hi, const MeReal *
  * rows held in locals: the normal row's bounds are [0, inf), the friction rows' [-mu n, mu n] for
  * the normal impulse n. */
 static MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, int maxPasses, MeReal *x,
-                                  KeaStats *stats, int onWorld, int measure, MeReal *decrease, int *changed)
+                                  KeaStats *stats, int onWorld, int measure, int tally, MeReal *decrease,
+                                  int *changed)
 {
     const int s = w->blockStart[block];
     KeaVel4 *v0 = &w->dv[w->body[s][0]], *v1 = &w->dv[w->body[s][1]];
@@ -753,14 +756,14 @@ static MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w
             return worst;
         }
     }
-    for (r = 0; r < 3; ++r) {
-        d[r] = xn[r] - xb[r];
-        *decrease -= ME_R(0.5) * d[r] * wb[r];
-    }
-    KeaBlockScatterSized(3, &w->B[s], d, v0, onWorld ? NULL : v1);
     for (r = 0; r < 3; ++r)
-        if (d[r] != ME_R(0.0))
-            x[s + r] = xn[r];
+        d[r] = xn[r] - xb[r];
+    if (tally) /* only the sweep after an SM step is asked how much it lowered the objective */
+        for (r = 0; r < 3; ++r)
+            *decrease -= ME_R(0.5) * d[r] * wb[r];
+    KeaBlockScatterSized(3, &w->B[s], d, v0, onWorld ? NULL : v1);
+    for (r = 0; r < 3; ++r) /* d_r = 0: xn_r is x_r */
+        x[s + r] = xn[r];
     *changed += KeaContactFreeRows(mu, problem->hi[s], xn, w->wasFree + s);
     return worst;
 }
@@ -783,7 +786,7 @@ static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const Kea
         if (w->blockContact[block]) { /* one call site: the step is inlined into the sweep */
             worst = KeaMax(worst, KeaContactBlockStep(problem, w, block, params->maxFrictionPasses, x, stats,
                                                       w->blockContact[block] == KEA_CONTACT_WORLD,
-                                                      worst <= params->tolerance, &decrease, &changed));
+                                                      worst <= params->tolerance, w->smRan, &decrease, &changed));
             continue;
         }
         if (w->blockStart[block + 1] - i > 1) {
