@@ -118,6 +118,16 @@ static inline void KeaRowApply4(const KeaJacobianRow *B, MeReal s, KeaVel4 *v0, 
     KeaHalfApply4(B->lin1, B->ang1, s, v1);
 }
 
+/** SM: one piece of the free list for its matrix-free products, everything they read about it in
+ *  one place: a free row on its own, or a segment (a block whose rows are all free). */
+typedef struct KeaFreePiece {
+    int pos;      /**< its first position in the free list */
+    int row;      /**< its first row */
+    int rows;     /**< 1 for a row on its own, else the block's size */
+    int kind;     /**< 0, or the segment's KEA_CONTACT_* kind when it is a plain contact */
+    int body[2];  /**< the row halves' bodies (the world: nb) */
+} KeaFreePiece;
+
 typedef struct KeaIterativeWork {
     KeaBodyColumns *bodyColumns; /**< nb: inverse masses and inertia columns, for B */
     KeaJacobianRow *B;     /**< M^-1 J^T per row */
@@ -148,6 +158,8 @@ typedef struct KeaIterativeWork {
     MeReal *localW;        /**< a block's w */
     int *rowBlock;         /**< block of each row */
     int *segmentPos, *segmentBlock, nSegments; /**< SM: free blocks preconditioned by their factor */
+    KeaFreePiece *pieces;  /**< SM: the free list as rows on their own and segments, in order */
+    int nPieces;
     MeReal *localR, *localLo, *localHi, *localX; /**< a block's LCP (maxBlockRows each) */
     int *localLink;
     KeaDenseWork *dense;   /**< the dense solver, sized for maxBlockRows */
@@ -196,6 +208,7 @@ static void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows,
     w->rowBlock = KEA_ALLOC(arena, int, n);
     w->segmentPos = KEA_ALLOC(arena, int, n);
     w->segmentBlock = KEA_ALLOC(arena, int, n);
+    w->pieces = KEA_ALLOC(arena, KeaFreePiece, n);
     w->localR = KEA_ALLOC(arena, MeReal, cap);
     w->localLo = KEA_ALLOC(arena, MeReal, cap);
     w->localHi = KEA_ALLOC(arena, MeReal, cap);
@@ -814,56 +827,49 @@ static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const Kea
     return worst;
 }
 
-/* dvTmp = M^-1 J_F^T v (v by position in the free list); the segments (KeaFindSegments) a block at
- * a time, in free-list order. */
-static void KeaScatter(const KeaProblem *problem, const KeaIterativeWork *w, int nFree, const MeReal *v)
+/* dvTmp = M^-1 J_F^T v (v by position in the free list), a piece (KeaFindSegments) at a time in
+ * free-list order: a segment through the sweep's block kernels (a contact's world half not
+ * written), a row on its own by itself. */
+static void KeaScatter(const KeaProblem *problem, const KeaIterativeWork *w, const MeReal *v)
 {
-    int p = 0, k;
+    int k;
     memset(w->dvTmp, 0, sizeof(KeaVel4) * (size_t)(problem->nBodies + 1));
-    for (k = 0; k <= w->nSegments; ++k) {
-        const int end = k < w->nSegments ? w->segmentPos[k] : nFree;
-        for (; p < end; ++p)
-            if (v[p] != ME_R(0.0)) {
-                const int i = w->freeRows[p];
-                KeaRowApply4(&w->B[i], v[p], &w->dvTmp[w->body[i][0]], &w->dvTmp[w->body[i][1]]);
-            }
-        if (k < w->nSegments) {
-            const int b = w->segmentBlock[k], s = w->blockStart[b], m = w->blockStart[b + 1] - s;
-            KeaVel4 *v0 = &w->dvTmp[w->body[s][0]], *v1 = &w->dvTmp[w->body[s][1]];
-            if (w->blockContact[b]) /* the sweep's contact scatter: the world's half is not written */
-                KeaBlockScatterSized(3, &w->B[s], v + p, v0, w->blockContact[b] == KEA_CONTACT_WORLD ? NULL : v1);
-            else
-                KeaBlockScatter(m, &w->B[s], v + p, v0, v1);
-            p += m;
+    for (k = 0; k < w->nPieces; ++k) {
+        const KeaFreePiece *piece = &w->pieces[k];
+        KeaVel4 *v0 = &w->dvTmp[piece->body[0]], *v1 = &w->dvTmp[piece->body[1]];
+        const MeReal *vp = v + piece->pos;
+        if (piece->rows == 1) {
+            if (vp[0] != ME_R(0.0))
+                KeaRowApply4(&w->B[piece->row], vp[0], v0, v1);
+        } else if (piece->kind) {
+            KeaBlockScatterSized(3, &w->B[piece->row], vp, v0, piece->kind == KEA_CONTACT_WORLD ? NULL : v1);
+        } else {
+            KeaBlockScatter(piece->rows, &w->B[piece->row], vp, v0, v1);
         }
     }
 }
 
-/* out[p] = J_i . dv of the free rows (segments a block at a time). */
-static void KeaGather(const KeaIterativeWork *w, int nFree, const KeaVel4 *dv, MeReal *out)
+/* out[p] = J_i . dv of the free rows (a piece at a time, as KeaScatter). */
+static void KeaGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out)
 {
-    int p = 0, k;
-    for (k = 0; k <= w->nSegments; ++k) {
-        const int end = k < w->nSegments ? w->segmentPos[k] : nFree;
-        for (; p < end; ++p) {
-            const int i = w->freeRows[p];
-            out[p] = KeaRowVel4(&w->J[i], &dv[w->body[i][0]], &dv[w->body[i][1]]);
-        }
-        if (k < w->nSegments) {
-            const int b = w->segmentBlock[k], s = w->blockStart[b], m = w->blockStart[b + 1] - s;
-            const KeaVel4 *v0 = &dv[w->body[s][0]], *v1 = &dv[w->body[s][1]];
-            if (w->blockContact[b] == KEA_CONTACT_WORLD) { /* as the sweep's contact step gathers */
-                out[p] = KeaRowVel4World(&w->J[s], v0);
-                out[p + 1] = KeaRowVel4World(&w->J[s + 1], v0);
-                out[p + 2] = KeaRowVel4World(&w->J[s + 2], v0);
-            } else if (w->blockContact[b]) {
-                out[p] = KeaRowVel4(&w->J[s], v0, v1);
-                out[p + 1] = KeaRowVel4(&w->J[s + 1], v0, v1);
-                out[p + 2] = KeaRowVel4(&w->J[s + 2], v0, v1);
-            } else {
-                KeaBlockGather(w, s, m, v0, v1, out + p);
-            }
-            p += m;
+    int k;
+    for (k = 0; k < w->nPieces; ++k) {
+        const KeaFreePiece *piece = &w->pieces[k];
+        const KeaVel4 *v0 = &dv[piece->body[0]], *v1 = &dv[piece->body[1]];
+        const KeaJacobianRow *J = &w->J[piece->row];
+        MeReal *o = out + piece->pos;
+        if (piece->rows == 1) {
+            o[0] = KeaRowVel4(J, v0, v1);
+        } else if (piece->kind == KEA_CONTACT_WORLD) { /* as the sweep's contact step gathers */
+            o[0] = KeaRowVel4World(&J[0], v0);
+            o[1] = KeaRowVel4World(&J[1], v0);
+            o[2] = KeaRowVel4World(&J[2], v0);
+        } else if (piece->kind) {
+            o[0] = KeaRowVel4(&J[0], v0, v1);
+            o[1] = KeaRowVel4(&J[1], v0, v1);
+            o[2] = KeaRowVel4(&J[2], v0, v1);
+        } else {
+            KeaBlockGather(w, piece->row, piece->rows, v0, v1, o);
         }
     }
 }
@@ -874,15 +880,25 @@ static void KeaFindSegments(KeaIterativeWork *w, int nFree)
 {
     int p = 0;
     w->nSegments = 0;
+    w->nPieces = 0;
     while (p < nFree) {
         const int i = w->freeRows[p], b = w->rowBlock[i];
         const int m = w->blockStart[b + 1] - w->blockStart[b];
+        KeaFreePiece *piece = &w->pieces[w->nPieces++];
+        piece->pos = p;
+        piece->row = i;
+        piece->body[0] = w->body[i][0];
+        piece->body[1] = w->body[i][1];
         if (m > 1 && i == w->blockStart[b] && w->blockFactored[b] && p + m <= nFree &&
             w->freeRows[p + m - 1] == i + m - 1) {
             w->segmentPos[w->nSegments] = p;
             w->segmentBlock[w->nSegments++] = b;
+            piece->rows = m;
+            piece->kind = w->blockContact[b];
             p += m;
         } else {
+            piece->rows = 1;
+            piece->kind = 0;
             ++p;
         }
     }
@@ -984,7 +1000,7 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
 
     /* Preconditioned CG on A_FF step = -w_F from step = 0. */
     KeaFindSegments(w, nFree);
-    KeaGather(w, nFree, w->dv, w->grad);
+    KeaGather(w, w->dv, w->grad);
     for (p = 0; p < nFree; ++p) {
         i = w->freeRows[p];
         w->epsFree[p] = w->eps[i];
@@ -1002,8 +1018,8 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
     w->smDecrease = ME_R(0.0);
     while (steps < maxSteps) {
         MeReal pq, a, rzNew, beta;
-        KeaScatter(problem, w, nFree, w->dir);
-        KeaGather(w, nFree, w->dvTmp, w->q);
+        KeaScatter(problem, w, w->dir);
+        KeaGather(w, w->dvTmp, w->q);
         pq = KeaAddEpsDot(w->q, w->epsFree, w->dir, nFree);
         if (!(pq > ME_R(0.0)))
             break;
@@ -1032,8 +1048,8 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
             i = w->freeRows[p];
             w->z[p] = KeaClamp(x[i] + scale * w->step[p], w->lo[i], w->hi[i]) - x[i];
         }
-        KeaScatter(problem, w, nFree, w->z);
-        KeaGather(w, nFree, w->dvTmp, w->q); /* q is free after CG */
+        KeaScatter(problem, w, w->z);
+        KeaGather(w, w->dvTmp, w->q); /* q is free after CG */
         for (p = 0; p < nFree; ++p) {
             const MeReal As = w->q[p] + w->epsFree[p] * w->z[p];
             df += w->z[p] * (w->grad[p] + ME_R(0.5) * As);
