@@ -350,6 +350,32 @@ static inline void KeaBlockScatterSized(const int m, const KeaJacobianRow *B, co
     }
 }
 
+/* KeaBlockScatterSized for a contact's three rows without its test per row: a row with d_r = 0
+ * adds B_r 0, zeros (the same values; only a -0 in dv may become +0, which no later comparison or
+ * product tells apart). */
+static inline void KeaContactScatter(const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
+{
+    KeaLanes aLin = KeaLanesLoad(v0->lin), aAng = KeaLanesLoad(v0->ang);
+    int r;
+    for (r = 0; r < 3; ++r) {
+        const KeaLanes dr = KeaLanesSplat(d[r]);
+        aLin = KeaLanesAdd(aLin, KeaLanesMul(KeaLanesLoad(B[r].lin0), dr));
+        aAng = KeaLanesAdd(aAng, KeaLanesMul(KeaLanesLoad(B[r].ang0), dr));
+    }
+    KeaLanesStore(v0->lin, aLin);
+    KeaLanesStore(v0->ang, aAng);
+    if (v1) {
+        KeaLanes bLin = KeaLanesLoad(v1->lin), bAng = KeaLanesLoad(v1->ang);
+        for (r = 0; r < 3; ++r) {
+            const KeaLanes dr = KeaLanesSplat(d[r]);
+            bLin = KeaLanesAdd(bLin, KeaLanesMul(KeaLanesLoad(B[r].lin1), dr));
+            bAng = KeaLanesAdd(bAng, KeaLanesMul(KeaLanesLoad(B[r].ang1), dr));
+        }
+        KeaLanesStore(v1->lin, bLin);
+        KeaLanesStore(v1->ang, bAng);
+    }
+}
+
 static void KeaBlockScatter(int m, const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
 {
     int r;
@@ -774,7 +800,8 @@ static MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w
     if (tally) /* only the sweep after an SM step is asked how much it lowered the objective */
         for (r = 0; r < 3; ++r)
             *decrease -= ME_R(0.5) * d[r] * wb[r];
-    KeaBlockScatterSized(3, &w->B[s], d, v0, onWorld ? NULL : v1);
+    if (d[0] != ME_R(0.0) || d[1] != ME_R(0.0) || d[2] != ME_R(0.0))
+        KeaContactScatter(&w->B[s], d, v0, onWorld ? NULL : v1);
     for (r = 0; r < 3; ++r) /* d_r = 0: xn_r is x_r */
         x[s + r] = xn[r];
     *changed += KeaContactFreeRows(mu, problem->hi[s], xn, w->wasFree + s);
@@ -842,7 +869,7 @@ static void KeaScatter(const KeaProblem *problem, const KeaIterativeWork *w, con
             if (vp[0] != ME_R(0.0))
                 KeaRowApply4(&w->B[piece->row], vp[0], v0, v1);
         } else if (piece->kind) {
-            KeaBlockScatterSized(3, &w->B[piece->row], vp, v0, piece->kind == KEA_CONTACT_WORLD ? NULL : v1);
+            KeaContactScatter(&w->B[piece->row], vp, v0, piece->kind == KEA_CONTACT_WORLD ? NULL : v1);
         } else {
             KeaBlockScatter(piece->rows, &w->B[piece->row], vp, v0, v1);
         }
