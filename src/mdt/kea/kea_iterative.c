@@ -350,30 +350,28 @@ static inline void KeaBlockScatterSized(const int m, const KeaJacobianRow *B, co
     }
 }
 
-/* KeaBlockScatterSized for a contact's three rows without its test per row: a row with d_r = 0
- * adds B_r 0, zeros (the same values; only a -0 in dv may become +0, which no later comparison or
- * product tells apart). */
-static inline void KeaContactScatter(const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
+/* v += sum_r B_r d_r over a contact's three rows, on body half `half` of B. */
+static inline void KeaContactScatterHalf(const KeaJacobianRow *B, const MeReal *d, int half, KeaVel4 *v)
 {
-    KeaLanes aLin = KeaLanesLoad(v0->lin), aAng = KeaLanesLoad(v0->ang);
+    KeaLanes lin = KeaLanesLoad(v->lin), ang = KeaLanesLoad(v->ang);
     int r;
     for (r = 0; r < 3; ++r) {
         const KeaLanes dr = KeaLanesSplat(d[r]);
-        aLin = KeaLanesAdd(aLin, KeaLanesMul(KeaLanesLoad(B[r].lin0), dr));
-        aAng = KeaLanesAdd(aAng, KeaLanesMul(KeaLanesLoad(B[r].ang0), dr));
+        lin = KeaLanesAdd(lin, KeaLanesMul(KeaLanesLoad(half ? B[r].lin1 : B[r].lin0), dr));
+        ang = KeaLanesAdd(ang, KeaLanesMul(KeaLanesLoad(half ? B[r].ang1 : B[r].ang0), dr));
     }
-    KeaLanesStore(v0->lin, aLin);
-    KeaLanesStore(v0->ang, aAng);
-    if (v1) {
-        KeaLanes bLin = KeaLanesLoad(v1->lin), bAng = KeaLanesLoad(v1->ang);
-        for (r = 0; r < 3; ++r) {
-            const KeaLanes dr = KeaLanesSplat(d[r]);
-            bLin = KeaLanesAdd(bLin, KeaLanesMul(KeaLanesLoad(B[r].lin1), dr));
-            bAng = KeaLanesAdd(bAng, KeaLanesMul(KeaLanesLoad(B[r].ang1), dr));
-        }
-        KeaLanesStore(v1->lin, bLin);
-        KeaLanesStore(v1->ang, bAng);
-    }
+    KeaLanesStore(v->lin, lin);
+    KeaLanesStore(v->ang, ang);
+}
+
+/* KeaBlockScatterSized for a contact's three rows (v0 != v1; v1 NULL on the world) without its
+ * test per row: a row with d_r = 0 adds B_r 0, zeros (the same values; only a -0 in dv may become
+ * +0, which no later comparison or product tells apart). */
+static inline void KeaContactScatter(const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
+{
+    KeaContactScatterHalf(B, d, 0, v0);
+    if (v1)
+        KeaContactScatterHalf(B, d, 1, v1);
 }
 
 static void KeaBlockScatter(int m, const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
