@@ -261,8 +261,10 @@ typedef struct KeaCholesky {
 void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int lda, int i);
 /** Remove the row at position p from the factor (rank-one update of the trailing block, O(size^2)). */
 void KeaCholeskyRemove(KeaCholesky *c, int p);
-/** Plain Cholesky A = L L^T of a small dense m x m matrix (row-major). Returns 0, leaving L
- *  unusable, if a pivot falls below the floor (A not safely positive definite). */
+/** Plain Cholesky A = L L^T of a small dense m x m matrix (row-major): the lower triangle and the
+ *  diagonal of L are written, the upper triangle is left as it was (its readers, the blocks'
+ *  inverses, do not read it). Returns 0, leaving L unusable, if a pivot falls below the floor (A
+ *  not safely positive definite). */
 int KeaCholeskyDense(int m, const MeReal *A, MeReal *L);
 /** KeaCholeskyDense inline, for a caller that knows m (a contact's 3 x 3, unrolled). */
 static inline int KeaCholeskyDenseInline(int m, const MeReal *A, MeReal *L)
@@ -281,8 +283,6 @@ static inline int KeaCholeskyDenseInline(int m, const MeReal *A, MeReal *L)
                 L[i * m + i] = KeaSqrt(s);
             }
         }
-        for (j = i + 1; j < m; ++j)
-            L[i * m + j] = ME_R(0.0);
     }
     return 1;
 }
