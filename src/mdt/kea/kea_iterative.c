@@ -1015,11 +1015,11 @@ static int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, i
     w->skippedLast = 0;
     if (w->smUnpaid && changed > 16 && (long)changed * 100 > (long)n)
         return -1; /* it did not pay: wait until the active set has settled */
-    for (i = 0; i < n; ++i) { /* the step runs: freeze the bounds, list the free rows */
-        KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
-        if (w->wasFree[i])
+    for (i = 0; i < n; ++i) /* the step runs: list the free rows, freeze their bounds */
+        if (w->wasFree[i]) {
+            KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
             w->freeRows[nFree++] = i;
-    }
+        }
     if (nFree == 0)
         return 0;
 
@@ -1130,16 +1130,15 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
         w.diag[i] = KeaRowInvMassJT4(problem, w.bodyColumns, i, &w.B[i]);
         w.invDiag[i] = w.diag[i] > ME_R(0.0) ? ME_R(1.0) / w.diag[i] : ME_R(0.0);
         w.eps[i] = problem->epsilon ? problem->epsilon[i] : ME_R(0.0);
-        memset(&w.J[i], 0, sizeof w.J[i]);
-        for (k = 0; k < 3; ++k) {
-            if (rb[0] >= 0) {
-                w.J[i].lin0[k] = J->lin0[k];
-                w.J[i].ang0[k] = J->ang0[k];
-            }
-            if (rb[1] >= 0) {
-                w.J[i].lin1[k] = J->lin1[k];
-                w.J[i].ang1[k] = J->ang1[k];
-            }
+        w.J[i] = *J; /* then the pads and the world's halves zeroed */
+        w.J[i].lin0[3] = w.J[i].ang0[3] = w.J[i].lin1[3] = w.J[i].ang1[3] = ME_R(0.0);
+        if (rb[0] < 0) {
+            memset(w.J[i].lin0, 0, sizeof w.J[i].lin0);
+            memset(w.J[i].ang0, 0, sizeof w.J[i].ang0);
+        }
+        if (rb[1] < 0) {
+            memset(w.J[i].lin1, 0, sizeof w.J[i].lin1);
+            memset(w.J[i].ang1, 0, sizeof w.J[i].ang1);
         }
         w.body[i][0] = rb[0] >= 0 ? rb[0] : nb;
         w.body[i][1] = rb[1] >= 0 ? rb[1] : nb;
