@@ -40,7 +40,10 @@ echo "Karma $KARMA_VARIANT against $PEER $PEER_VARIANT on $SCENE, $PAIRS alterna
 for ((i = 1; i <= PAIRS; i++)); do
     k=$(cpu_ms karma_scenes "$KARMA_VARIANT")
     p=$(cpu_ms "${PEER}_peer" "$PEER_VARIANT")
-    [ -n "$k" ] && [ -n "$p" ] || { echo "paired.sh: a run printed no result (scene '$SCENE'?)" >&2; exit 1; }
+    if [ -z "$k" ] || [ -z "$p" ]; then
+        echo "paired.sh: a run printed no result (scene '$SCENE'?)" >&2
+        exit 1
+    fi
     r=$(awk -v k="$k" -v p="$p" 'BEGIN { printf "%.3f", k / p }')
     ratios+=("$r")
     echo "  pair $i: Karma $k  $PEER $p  ratio $r"
