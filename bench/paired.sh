@@ -38,8 +38,8 @@ cpu_ms() { # program variant
 ratios=()
 echo "Karma $KARMA_VARIANT against $PEER $PEER_VARIANT on $SCENE, $PAIRS alternating pairs (CPU ms per step, median of each run):"
 for ((i = 1; i <= PAIRS; i++)); do
-    k=$(cpu_ms karma_scenes "$KARMA_VARIANT")
-    p=$(cpu_ms "${PEER}_peer" "$PEER_VARIANT")
+    k=$(cpu_ms karma_scenes "$KARMA_VARIANT") || k=""
+    p=$(cpu_ms "${PEER}_peer" "$PEER_VARIANT") || p=""
     if [ -z "$k" ] || [ -z "$p" ]; then
         echo "paired.sh: a run printed no result (scene '$SCENE'?)" >&2
         exit 1
