@@ -28,8 +28,8 @@
  *   f(x) = 1/2 x^T A x - r^T x;   f(x + s) - f(x) = s . (w + 1/2 (J M^-1 J^T s + eps s))
  * (computed from the step alone, free of cancellation). A rejected step leaves x as PGS made it, so
  * SM never makes the QP worse; the next sweep re-applies the friction links and the active set.
- * Each CG step costs about half a sweep (an SM step of 4, with its line search, about two: measured
- * on the pile, 2026-11-27); KeaStats.subspaceSteps counts them.
+ * Each CG step costs about half a sweep (an SM step of 4, with its line search, two to three:
+ * measured on the pile, 2026-11-27); KeaStats.subspaceSteps counts them.
  *
  * SM pays when the sweeps have (nearly) settled which rows sit at a bound: CG on a free set that
  * the next sweep changes again is mostly thrown away. So the SM step after a sweep is skipped when
@@ -69,7 +69,9 @@
  * transpose of its J (KeaColumnsApply, one vectorised column kernel for all block products: w_b
  * through KeaColumnsApplyPair, which reads the two bodies in place,
  * A_bb^-1 w_b, the preconditioner, forming A_bb) and applies its deltas to local copies of its two
- * bodies; SM's matrix-free products go a free block (segment) at a time the same way. */
+ * bodies; SM's matrix-free products go through the free list a piece (a free row on its own, or a
+ * block whose rows are all free) at a time the same way, each piece's rows and bodies listed once
+ * per SM step (KeaFreePiece). */
 #include <string.h>
 
 #include "kea_internal.h"
