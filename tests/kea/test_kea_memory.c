@@ -132,7 +132,18 @@ static void bad_input_is_refused(void **state)
     t.eps[3] = ME_R(0.01);
     t.rhs[4] = (MeReal)NAN;
     assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusBadInput);
+    t.rhs[4] = MEINFINITY; /* Karma's infinity is not a number a row may hold */
+    assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusBadInput);
     t.rhs[4] = ME_R(0.5);
+    keep = t.J[5].ang1[2];
+    t.J[5].ang1[2] = (MeReal)NAN; /* every Jacobian entry is checked, the last one too */
+    assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusBadInput);
+    t.J[5].ang1[2] = -MEINFINITY;
+    assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusBadInput);
+    t.J[5].ang1[2] = keep;
+    t.J[5].ang1[3] = (MeReal)NAN; /* a pad is not a number the solver reads */
+    assert_true(kt_solve(&t.p, &prm, x, NULL, &st) == KeaStatusOk);
+    t.J[5].ang1[3] = ME_R(0.0);
     assert_true(kt_solve(&t.p, &prm, x, NULL, &st) == KeaStatusOk);
     assert_int_equal(KeaSolve(&t.p, NULL, NULL, 0, x, NULL, &st), KeaStatusBadInput);
     kt_free(&t);

@@ -985,7 +985,9 @@ static int KeaUpdateFreeRows(const KeaProblem *problem, KeaIterativeWork *w, con
 {
     unsigned char *was = w->wasFree;
     int b, i, changed = w->sweepChanged;
-    for (b = 0; b < w->nBlocks && w->nContactBlocks < w->nBlocks; ++b) {
+    if (w->nContactBlocks == w->nBlocks)
+        return changed;
+    for (b = 0; b < w->nBlocks; ++b) {
         const int s = w->blockStart[b];
         if (w->blockContact[b])
             continue; /* the sweep has tallied it (KeaContactFreeRows) */

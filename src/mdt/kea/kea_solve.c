@@ -61,13 +61,13 @@ size_t KeaMemoryRequired(int nRows, int nBodies, KeaPath path)
     return bytes + KeaVelocityBytes(nBodies) + (KEA_ALIGN - 1);
 }
 
-/* 0 for a finite v, NaN for an infinite one or a NaN (without -ffast-math, as Karma is built, v * 0
- * is not folded): summed over many values, one test at the end says whether all were finite. */
-static MeReal KeaNonFinite(MeReal v) { return v * ME_R(0.0); }
+/* KeaIsFinite as one comparison, |v| < MEINFINITY (false for a NaN), so that many of them can be
+ * combined with & without a branch each. */
+static int KeaIsFiniteFlag(MeReal v) { return KeaFabs(v) < MEINFINITY; }
 
-/* Indices in range, bounds ordered, softness non-negative, numbers where numbers are needed. The
- * rows' numbers are checked in sums of KeaNonFinite and conjunctions of comparisons (false on a
- * NaN), one test per row: every step's every row goes through here. */
+/* Indices in range, bounds ordered, softness non-negative, numbers where numbers are needed (finite
+ * in Karma's sense: within +-MEINFINITY). A row's tests are combined with & into one flag (a
+ * comparison with a NaN is false), one branch per row: every step's every row goes through here. */
 static int KeaProblemIsValid(const KeaProblem *p)
 {
     int i, b, k;
@@ -88,19 +88,16 @@ static int KeaProblemIsValid(const KeaProblem *p)
     }
     for (i = 0; i < p->nRows; ++i) {
         const KeaJacobianRow *J = &p->J[i];
-        MeReal nonFinite = KeaNonFinite(p->rhs[i]);
-        int ok = p->rowBodies[i][0] >= KEA_WORLD && p->rowBodies[i][0] < p->nBodies &&
-                 p->rowBodies[i][1] >= KEA_WORLD && p->rowBodies[i][1] < p->nBodies && p->lo[i] <= p->hi[i];
+        int ok = (p->rowBodies[i][0] >= KEA_WORLD) & (p->rowBodies[i][0] < p->nBodies) &
+                 (p->rowBodies[i][1] >= KEA_WORLD) & (p->rowBodies[i][1] < p->nBodies) & (p->lo[i] <= p->hi[i]) &
+                 KeaIsFiniteFlag(p->rhs[i]);
         for (k = 0; k < 3; ++k) /* the pads (index 3) are not read as numbers */
-            nonFinite += (KeaNonFinite(J->lin0[k]) + KeaNonFinite(J->ang0[k])) +
-                         (KeaNonFinite(J->lin1[k]) + KeaNonFinite(J->ang1[k]));
-        if (p->epsilon) {
-            ok = ok && p->epsilon[i] >= ME_R(0.0);
-            nonFinite += KeaNonFinite(p->epsilon[i]);
-        }
+            ok &= KeaIsFiniteFlag(J->lin0[k]) & KeaIsFiniteFlag(J->ang0[k]) & KeaIsFiniteFlag(J->lin1[k]) & KeaIsFiniteFlag(J->ang1[k]);
+        if (p->epsilon)
+            ok &= (p->epsilon[i] >= ME_R(0.0)) & KeaIsFiniteFlag(p->epsilon[i]);
         if (p->x0)
-            nonFinite += KeaNonFinite(p->x0[i]);
-        if (!ok || !(nonFinite == ME_R(0.0)))
+            ok &= KeaIsFiniteFlag(p->x0[i]);
+        if (!ok)
             return 0;
         if (p->link && p->link[i] >= 0) {
             const int l = p->link[i];
