@@ -22,7 +22,7 @@ typedef struct SkeletalData {
 } SkeletalData;
 MDT_CONSTRAINT_DATA_FITS(SkeletalData);
 
-static void reset(MdtConstraint *c)
+static void reset(MdtConstraintData *c)
 {
     MdtConstraintResetFrames(c);
     SkeletalData *d = MDT_CONSTRAINT_DATA(c, SkeletalData);
@@ -34,7 +34,7 @@ static void reset(MdtConstraint *c)
     d->combined = MEFALSE;
 }
 
-static int rowCount(const MdtConstraint *c)
+static int rowCount(const MdtConstraintData *c)
 {
     const SkeletalData *d = MDT_CONSTRAINT_DATA(c, const SkeletalData);
     int cone = d->coneOption == MdtSkeletalConeOptionFree ? 0 : d->coneOption == MdtSkeletalConeOptionCone ? 1 : 2;
@@ -47,7 +47,7 @@ typedef struct Swing {
     MeVector3 a0, f1[3], u;
 } Swing;
 
-static void swingOf(const MdtConstraint *c, Swing *s)
+static void swingOf(const MdtConstraintData *c, Swing *s)
 {
     MdtConstraintWorldPrimary(c, 0, s->a0);
     MdtBclWorldFrame(c, 1, s->f1);
@@ -88,13 +88,13 @@ static MeBool slotLimitRow(MdtRow *row, const Swing *sw, MeReal ap)
 }
 
 /* A locked row: rigid, or a spring with the given stiffness and damping. */
-static void addLocked(MdtRowWriter *w, MdtConstraint *c, MdtRow *row, MeReal k, MeReal d)
+static void addLocked(MdtRowWriter *w, MdtConstraintData *c, MdtRow *row, MeReal k, MeReal d)
 {
     if (MdtBclRowSpring(row, c, k, d, w->h))
         MdtRowWriterAdd(w, row);
 }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w)
+static void addRows(MdtConstraintData *c, MdtRowWriter *w)
 {
     const SkeletalData *d = MDT_CONSTRAINT_DATA(c, const SkeletalData);
     MdtBclAddPointRows(w, c);
@@ -219,7 +219,7 @@ MeBool MdtSkeletalCombinedLimitsAreEnabled(MdtSkeletalID j)
     return d->combined;
 }
 
-static MeReal twistOf(const MdtConstraint *c)
+static MeReal twistOf(const MdtConstraintData *c)
 {
     MdtBclRotation r;
     MdtRow row;

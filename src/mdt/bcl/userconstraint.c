@@ -15,7 +15,7 @@ typedef struct UserData {
 } UserData;
 MDT_CONSTRAINT_DATA_FITS(UserData);
 
-static void reset(MdtConstraint *c)
+static void reset(MdtConstraintData *c)
 {
     MdtConstraintResetFrames(c);
     UserData *d = MDT_CONSTRAINT_DATA(c, UserData);
@@ -23,7 +23,7 @@ static void reset(MdtConstraint *c)
     d->maxRows = MDT_MAX_JOINT_ROWS;
 }
 
-static int rowCount(const MdtConstraint *c)
+static int rowCount(const MdtConstraintData *c)
 {
     const UserData *d = MDT_CONSTRAINT_DATA(c, const UserData);
     return d->fn ? d->maxRows : 0;
@@ -39,7 +39,7 @@ static MeBool rowIsValid(const MdtUserConstraintRow *u)
            !isnan(u->stiffness) && !isnan(u->damping);
 }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w)
+static void addRows(MdtConstraintData *c, MdtRowWriter *w)
 {
     UserData *d = MDT_CONSTRAINT_DATA(c, UserData);
     if (!d->fn)
@@ -84,7 +84,7 @@ static void addRows(MdtConstraint *c, MdtRowWriter *w)
     }
 }
 
-static void unpack(MdtConstraint *c, const MeReal *impulses, int rows, MeReal h)
+static void unpack(MdtConstraintData *c, const MeReal *impulses, int rows, MeReal h)
 {
     UserData *d = MDT_CONSTRAINT_DATA(c, UserData);
     for (int i = 0; i < MDT_USER_CONSTRAINT_MAX_ROWS; i++)
