@@ -68,6 +68,12 @@ ME_API void MdtRPROJointGetAttachmentQuaternion(MdtRPROJointID j, unsigned int b
 #define MdtRPROJointGetWorld(j) MdtConstraintGetWorld(MdtRPROJointQuaConstraint(j))
 #define MdtRPROJointGetRowCount(j) MdtConstraintGetRowCount(MdtRPROJointQuaConstraint(j))
 
+/* Karma 1.2's names: the target angular velocity (ω0 − ω1 in body 1's frame) and the sort key. */
+#define MdtRPROJointSetRelativeAngularVelocity(j, w) MdtRPROJointSetAngularVelocity((j), (w))
+#define MdtRPROJointGetRelativeAngularVelocity(j, w) MdtRPROJointGetAngularVelocity((j), (w))
+#define MdtRPROSetSortKey(j, k) MdtConstraintSetSortKey(MdtRPROJointQuaConstraint(j), (k))
+#define MdtRPROGetSortKey(j) MdtConstraintGetSortKey(MdtRPROJointQuaConstraint(j))
+
 ME_EXTERN_C_END
 
 #endif /* MDT_RPROJOINT_H */

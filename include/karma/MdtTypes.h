@@ -6,7 +6,10 @@
 #ifndef MDT_TYPES_H
 #define MDT_TYPES_H
 
+#include "MeChunk.h"
+#include "MePool.h"
 #include "MePrecision.h"
+#include "MdtDefaults.h"
 
 ME_EXTERN_C_BEGIN
 

@@ -18,6 +18,7 @@
 #include "MdtContactGroup.h"
 #include "MdtContactParams.h"
 #include "MdtTypes.h"
+#include "MstModelDynamics.h"
 #include "MstTypes.h"
 
 ME_EXTERN_C_BEGIN
@@ -76,10 +77,6 @@ ME_API void MstBridgeUpdateTransitions(MstBridgeID b, McdSpaceID s, MdtWorldID w
  *  MstUniverseCreate does this; call it yourself when you build world, space and bridge by hand. */
 ME_API void MstSetWorldHandlers(MdtWorldID world);
 
-/** Link a model to a body (NULL: the model is part of the world). The model's transform pointer
- *  becomes the body's transform. */
-ME_API void McdModelSetBody(McdModelID model, MdtBodyID body);
-ME_API MdtBodyID McdModelGetBody(McdModelID model);
 /** Link counts of the last MstBridgeUpdateContacts: pairs tested, contacts made. */
 ME_API int MstBridgeGetLastPairCount(MstBridgeID b);
 ME_API int MstBridgeGetLastContactCount(MstBridgeID b);

@@ -3,6 +3,7 @@
  * Every public function resolves its ID first (a stale or foreign ID is reported and the call does
  * nothing), then validates its numbers where they enter (NaN/inf, ranges), and only then changes
  * state: a rejected call leaves the body exactly as it was. */
+#include <karma/MdtDefaults.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -124,15 +125,16 @@ static void setDefaults(MdtBodyData *b)
     MeVector3Set(b->velrot, 0, 0, 0);
     MeVector3Set(b->accel, 0, 0, 0);
     MeVector3Set(b->accelrot, 0, 0, 0);
-    b->mass = w->massScale;
+    b->mass = MDTBODY_DEFAULT_MASS * w->massScale;
     b->invMass = 1 / b->mass;
     MeMatrix3MakeIdentity(b->inertia);
-    MeMatrix3Scale(b->inertia, ME_R(0.4) * b->mass * w->lengthScale * w->lengthScale);
+    MeMatrix3Scale(b->inertia, MDTBODY_DEFAULT_INERTIA * b->mass * w->lengthScale * w->lengthScale);
     b->nonSpherical = MEFALSE;
     b->coriolis = MEFALSE;
     updateInverseInertia(b);
-    b->linearDamping = b->angularDamping = 0;
-    MeVector3Set(b->fastSpinAxis, 0, 1, 0);
+    b->linearDamping = MDTBODY_DEFAULT_LINEAR_DAMPING;
+    b->angularDamping = MDTBODY_DEFAULT_ANGULAR_DAMPING;
+    MeVector3Set(b->fastSpinAxis, MDTBODY_DEFAULT_FAST_SPIN_X, MDTBODY_DEFAULT_FAST_SPIN_Y, MDTBODY_DEFAULT_FAST_SPIN_Z);
     b->useFastSpin = MEFALSE;
     b->sortKey = 0;
     MeVector3Set(b->force, 0, 0, 0);

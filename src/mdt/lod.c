@@ -10,6 +10,7 @@
  * stamp (ContactData.lodRows), which the contact's row writer honours in the pack stage; the next step
  * starts from full rows again. The list lives in the world's LOD chunk. */
 
+#include <karma/MdtDefaults.h>
 #include <karma/MdtContact.h>
 
 #include "../me/check.h"
@@ -188,13 +189,13 @@ void MdtLODStage(MdtWorldData *w)
 void MdtLODParamsSetDefaults(MdtLODParams *p)
 {
     ME_CHECK_NOT_NULL(p, ME_NOTHING);
-    p->frictionRatio = 0;
-    p->zeroRowBonus = 150;
-    p->toWorldBonus = 100;
-    p->rowCountBias = 40;
-    p->penetrationBias = 15;
-    p->normVelBias = ME_R(6.5);
-    p->nonAutoBonus = 40;
+    p->frictionRatio = MDTWORLD_DEFAULT_FRICTION_RATIO;
+    p->zeroRowBonus = MDTWORLD_DEFAULT_ZERO_ROW_BONUS;
+    p->toWorldBonus = MDTWORLD_DEFAULT_TO_WORLD_BONUS;
+    p->rowCountBias = MDTWORLD_ROW_COUNT_BIAS;
+    p->penetrationBias = MDTWORLD_PENETRATION_BIAS;
+    p->normVelBias = MDTWORLD_NORM_VEL_BIAS;
+    p->nonAutoBonus = MDTWORLD_DEFAULT_NON_AUTO_BONUS;
 }
 
 void MdtWorldSetMaxMatrixSize(MdtWorldID id, int size)

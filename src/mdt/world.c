@@ -1,4 +1,5 @@
 /* world.c -- creating, configuring and destroying a dynamics world (see MdtWorld.h). */
+#include <karma/MdtDefaults.h>
 #include <string.h>
 
 #include <karma/MeMemory.h>
@@ -9,14 +10,14 @@
 #include "world.h"
 
 /* Karma's defaults (KARMA.md §5.1, decision D1 for auto-disable). */
-#define DEFAULT_EPSILON ME_R(0.01)
-#define DEFAULT_GAMMA ME_R(0.2)
+#define DEFAULT_EPSILON MDTWORLD_DEFAULT_EPSILON
+#define DEFAULT_GAMMA MDTWORLD_DEFAULT_GAMMA
 #define DEFAULT_LCP_ITERATIONS 10
-#define DEFAULT_AD_VELOCITY ME_R(0.02)
-#define DEFAULT_AD_ANGULAR_VELOCITY ME_R(0.001)
-#define DEFAULT_AD_ACCELERATION ME_R(0.05)
-#define DEFAULT_AD_ANGULAR_ACCELERATION ME_R(0.05)
-#define DEFAULT_AD_ALIVE_TIME ME_R(0.2)
+#define DEFAULT_AD_VELOCITY MDTWORLD_DEFAULT_VEL_THRESH
+#define DEFAULT_AD_ANGULAR_VELOCITY MDTWORLD_DEFAULT_VELROT_THRESH
+#define DEFAULT_AD_ACCELERATION MDTWORLD_DEFAULT_ACC_THRESH
+#define DEFAULT_AD_ANGULAR_ACCELERATION MDTWORLD_DEFAULT_ACCROT_THRESH
+#define DEFAULT_AD_ALIVE_TIME MDTWORLD_DEFAULT_ALIVE_TIME_THRESH
 
 /* A constraint slot holds the common header and the largest type's data (constraint.h). */
 #define CONSTRAINT_SLOT_BYTES sizeof(MdtConstraintData)
@@ -34,7 +35,7 @@ MdtWorldData *MdtWorldFromID(MdtWorldID id, const char *function)
 void MdtWorldSetDefaults(MdtWorldData *w)
 {
     MeReal l2 = w->lengthScale * w->lengthScale;
-    w->gravity[0] = w->gravity[1] = w->gravity[2] = 0;
+    MeVector3Set(w->gravity, MDTWORLD_DEFAULT_GRAVITY_X, MDTWORLD_DEFAULT_GRAVITY_Y, MDTWORLD_DEFAULT_GRAVITY_Z);
     w->epsilon = DEFAULT_EPSILON / w->massScale;
     w->gamma = DEFAULT_GAMMA;
     w->maxLCPIterations = DEFAULT_LCP_ITERATIONS;

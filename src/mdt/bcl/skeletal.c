@@ -9,6 +9,7 @@
  * and the twist ψ (MdtBclTwistRow): Limited, |ψ| − α_t ≤ 0; Fixed, ψ = 0. Limits use
  * MdtBclLimitRow (hard, or a spring-damper past the limit); locked rows are springs when given a
  * finite stiffness. */
+#include <karma/MdtDefaults.h>
 #include <karma/MdtSkeletal.h>
 
 #include "joint_parts.h"
@@ -28,7 +29,9 @@ static void reset(MdtConstraintData *c)
     SkeletalData *d = MDT_CONSTRAINT_DATA(c, SkeletalData);
     d->coneOption = MdtSkeletalConeOptionCone;
     d->twistOption = MdtSkeletalTwistOptionLimited;
-    d->primary = d->secondary = d->twist = ME_PI / 4; /* decision D6 */
+    d->primary = MDTSKELETAL_DEFAULT_PRI_ANGLE; /* decision D6 */
+    d->secondary = MDTSKELETAL_DEFAULT_SEC_ANGLE;
+    d->twist = MDTSKELETAL_DEFAULT_TWIST_ANGLE;
     d->coneK = d->twistK = MEINFINITY;
     d->coneD = d->twistD = 0;
     d->combined = MEFALSE;

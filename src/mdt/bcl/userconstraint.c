@@ -8,7 +8,7 @@
 #include "joint_parts.h"
 
 typedef struct UserData {
-    MdtBclAddConstraintFn fn;
+    MdtUserConstraintRowsFn fn;
     void *constraintStruct;
     int maxRows;
     MeReal force[MDT_USER_CONSTRAINT_MAX_ROWS];
@@ -100,7 +100,7 @@ MDT_BCL_TYPE_FUNCTIONS(UserConstraint, MdtBclUSER, userClass)
     MDT_BCL_JOINT_OR_RETURN(c_, j, MdtBclUSER, ret);                                                 \
     UserData *d = MDT_CONSTRAINT_DATA(c_, UserData)
 
-void MdtUserConstraintSetAddConstraintFunction(MdtUserConstraintID j, MdtBclAddConstraintFn fn)
+void MdtUserConstraintSetAddConstraintFunction(MdtUserConstraintID j, MdtUserConstraintRowsFn fn)
 {
     DATA_OR_RETURN(d, j, ME_NOTHING);
     if (c_->world->locked) {
@@ -110,7 +110,7 @@ void MdtUserConstraintSetAddConstraintFunction(MdtUserConstraintID j, MdtBclAddC
     d->fn = fn;
 }
 
-MdtBclAddConstraintFn MdtUserConstraintGetAddConstraintFunction(MdtUserConstraintID j)
+MdtUserConstraintRowsFn MdtUserConstraintGetAddConstraintFunction(MdtUserConstraintID j)
 {
     DATA_OR_RETURN(d, j, NULL);
     return d->fn;
