@@ -73,6 +73,10 @@ ME_API MdtContactID MdtBodyGetNextContact(MdtBodyID b, MdtContactID c);
 #define MdtContactSetUserData(c, d) MdtConstraintSetUserData(MdtContactQuaConstraint(c), (d))
 #define MdtContactGetWorld(c) MdtConstraintGetWorld(MdtContactQuaConstraint(c))
 
+/* Karma 1.2's names for the sort key. */
+#define MdtContactSetSortKey(c, k) MdtConstraintSetSortKey(MdtContactQuaConstraint(c), (k))
+#define MdtContactGetSortKey(c) MdtConstraintGetSortKey(MdtContactQuaConstraint(c))
+
 ME_EXTERN_C_END
 
 #endif /* MDT_CONTACT_H */

@@ -27,7 +27,7 @@
 #define DEFAULT_PAIR_BUFFER 128
 #define DEFAULT_CONTACT_BUFFER 32
 
-MstBridge *MstBridgeFromID(MstBridgeID id, const char *function)
+MstBridgeData *MstBridgeFromID(MstBridgeID id, const char *function)
 {
     return MeHandleResolveOwner((uintptr_t)id, ME_HANDLE_BRIDGE, function, "b");
 }
@@ -38,7 +38,7 @@ MstBridgeID MstBridgeCreate(McdFrameworkID frame, int maxMaterials)
         ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'maxMaterials' (%d) must be at least 1", maxMaterials);
         return NULL;
     }
-    MstBridge *b = MeMemoryCreateZeroed(sizeof *b);
+    MstBridgeData *b = MeMemoryCreateZeroed(sizeof *b);
     if (!b)
         return NULL;
     b->framework = frame;
@@ -66,7 +66,7 @@ MstBridgeID MstBridgeCreate(McdFrameworkID frame, int maxMaterials)
 
 void MstBridgeDestroy(MstBridgeID id)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
         return;
     MeHandleUnregisterOwner(b->ownerSlot);
@@ -80,7 +80,7 @@ MeBool MstBridgeIsValid(MstBridgeID id) { return MeHandleIsValid((uintptr_t)id, 
 
 void MstBridgeSetModelPairBufferSize(MstBridgeID id, int size)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
         return;
     if (size < 1) {
@@ -97,13 +97,13 @@ void MstBridgeSetModelPairBufferSize(MstBridgeID id, int size)
 
 int MstBridgeGetModelPairBufferSize(MstBridgeID id)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     return b ? b->pairBufferSize : 0;
 }
 
 void MstBridgeSetContactBufferSize(MstBridgeID id, int size)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
         return;
     if (size < 1) {
@@ -120,19 +120,19 @@ void MstBridgeSetContactBufferSize(MstBridgeID id, int size)
 
 int MstBridgeGetContactBufferSize(MstBridgeID id)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     return b ? b->contactBufferSize : 0;
 }
 
 int MstBridgeGetLastPairCount(MstBridgeID id)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     return b ? b->lastPairCount : 0;
 }
 
 int MstBridgeGetLastContactCount(MstBridgeID id)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     return b ? b->lastContactCount : 0;
 }
 
@@ -152,7 +152,7 @@ void MstHandleTransitions(McdModelPairContainer *pairs, McdSpaceID space, MdtWor
 {
     (void)space;
     (void)world;
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
         return;
     ME_CHECK_NOT_NULL(pairs, ME_NOTHING);
@@ -206,7 +206,7 @@ static int matchContacts(MdtContactGroupID g, const McdContact *in, int n, MdtCo
 }
 
 /* Test one pair and convert its contacts; returns the number of dynamics contacts made. */
-static int collidePair(MstBridge *b, McdModelPair *pair, MdtWorldID world)
+static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
 {
     McdModel *m1 = McdModelFromID(pair->model1, __func__);
     McdModel *m2 = McdModelFromID(pair->model2, __func__);
@@ -222,7 +222,7 @@ static int collidePair(MstBridge *b, McdModelPair *pair, MdtWorldID world)
     result.contacts = b->contacts;
     result.contactMaxCount = b->contactBufferSize;
     McdIntersectModels(pair, m1, m2, &result, "MstHandleCollisions");
-    MstMaterialPair *mat = MstBridgeMaterialPair(b, m1->material, m2->material, "MstHandleCollisions");
+    MstMaterialPairData *mat = MstBridgeMaterialPair(b, m1->material, m2->material, "MstHandleCollisions");
     if (!mat)
         return 0;
     if (result.contactCount > 0 && mat->intersectCB)
@@ -269,7 +269,7 @@ static int collidePair(MstBridge *b, McdModelPair *pair, MdtWorldID world)
 void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorldID world, MstBridgeID id)
 {
     (void)space;
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
         return;
     ME_CHECK_NOT_NULL(pairs, ME_NOTHING);
@@ -288,22 +288,11 @@ void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorl
 
 void MstBridgeUpdateContacts(MstBridgeID id, McdSpaceID space, MdtWorldID world)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
         return;
     b->lastPairCount = b->lastContactCount = 0;
-    if (McdSpaceIsChanging(space))
-        McdSpaceEndChanges(space);
-    McdSpacePairIterator it;
-    McdSpacePairIteratorBegin(space, &it);
-    MeBool more;
-    do {
-        McdModelPairContainerReset(b->pairs);
-        more = McdSpaceGetPairs(space, &it, b->pairs);
-        MstHandleTransitions(b->pairs, space, world, id);
-        MstHandleCollisions(b->pairs, space, world, id);
-    } while (more);
-    McdSpaceBeginChanges(space);
+    MstBridgeReadPairs(b, space, world, METRUE);
 }
 
 /* ---- linking models and bodies -------------------------------------------------------------- */
@@ -311,7 +300,7 @@ void MstBridgeUpdateContacts(MstBridgeID id, McdSpaceID space, MdtWorldID world)
 /* The model the bridge linked to a body, or NULL (quietly: the model may have been destroyed). */
 static McdModel *linkedModel(MdtBodyID body)
 {
-    MdtBody *bd = MdtBodyFromID(body, "MstSetWorldHandlers");
+    MdtBodyData *bd = MdtBodyFromID(body, "MstSetWorldHandlers");
     if (!bd || !bd->bridgeModel || !MeHandleIsValid(bd->bridgeModel, ME_HANDLE_MODEL))
         return NULL;
     return McdModelFromID((McdModelID)bd->bridgeModel, "MstSetWorldHandlers");
@@ -359,14 +348,14 @@ void McdModelSetBody(McdModelID id, MdtBodyID body)
     McdModel *m = McdModelFromID(id, __func__);
     if (!m)
         return;
-    MdtBody *bd = NULL;
+    MdtBodyData *bd = NULL;
     if (body) {
         bd = MdtBodyFromID(body, __func__);
         if (!bd)
             return;
     }
     if (m->body && MeHandleIsValid((uintptr_t)m->body, ME_HANDLE_BODY)) {
-        MdtBody *old = MdtBodyFromID((MdtBodyID)m->body, __func__);
+        MdtBodyData *old = MdtBodyFromID((MdtBodyID)m->body, __func__);
         if (old && old->bridgeModel == m->id)
             old->bridgeModel = 0;
     }

@@ -30,10 +30,10 @@ static void resetData(ContactData *d)
     MdtContactParamsReset(&d->params);
 }
 
-static void reset(MdtConstraint *c)
+static void reset(MdtConstraintData *c)
 {
     ContactData *d = MDT_CONSTRAINT_DATA(c, ContactData);
-    MdtConstraint *group = d->group, *next = d->next;
+    MdtConstraintData *group = d->group, *next = d->next;
     resetData(d);
     d->group = group; /* membership survives a reset */
     d->next = next;
@@ -51,14 +51,14 @@ int MdtContactRowCount(const ContactData *d)
     }
 }
 
-int MdtContactStepRows(const MdtConstraint *c)
+int MdtContactStepRows(const MdtConstraintData *c)
 {
     const ContactData *d = MDT_CONSTRAINT_DATA(c, const ContactData);
     int full = MdtContactRowCount(d);
     return d->lodStamp == c->world->partitionStamp && d->lodRows < full ? d->lodRows : full;
 }
 
-static int rowCount(const MdtConstraint *c) { return MdtContactStepRows(c); }
+static int rowCount(const MdtConstraintData *c) { return MdtContactStepRows(c); }
 
 /* Fills lin/ang of both halves for direction dir: J v = dir·(v1p − v0p). */
 static void directionRow(MdtRow *row, const MeVector3 dir, const MeVector3 r0, const MeVector3 r1)
@@ -70,7 +70,7 @@ static void directionRow(MdtRow *row, const MeVector3 dir, const MeVector3 r0, c
     MeVector3Scale(row->ang0, -1);
 }
 
-static MeReal pointVelocityAlong(const MdtBody *b, const MeVector3 r, const MeVector3 dir)
+static MeReal pointVelocityAlong(const MdtBodyData *b, const MeVector3 r, const MeVector3 dir)
 {
     if (!b)
         return 0;
@@ -79,11 +79,11 @@ static MeReal pointVelocityAlong(const MdtBody *b, const MeVector3 r, const MeVe
     return MeVector3Dot(dir, b->vel) + MeVector3Dot(dir, wxr);
 }
 
-void MdtContactAddRows(const MdtConstraint *owner, MdtConstraint *contact, MdtRowWriter *w)
+void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contact, MdtRowWriter *w)
 {
     ContactData *d = MDT_CONSTRAINT_DATA(contact, ContactData);
     const MdtContactParams *p = &d->params;
-    const MdtBody *b0 = owner->body[0], *b1 = owner->body[1];
+    const MdtBodyData *b0 = owner->body[0], *b1 = owner->body[1];
     const MeReal h = w->h;
     MeVector3 r0, r1 = {0, 0, 0};
     MeVector3Set(r0, d->position[0] - b0->comTM[3][0], d->position[1] - b0->comTM[3][1],
@@ -193,7 +193,7 @@ void MdtContactAddRows(const MdtConstraint *owner, MdtConstraint *contact, MdtRo
     }
 }
 
-void MdtContactUnpack(MdtConstraint *contact, const MeReal *impulses, int rows, MeReal h)
+void MdtContactUnpack(MdtConstraintData *contact, const MeReal *impulses, int rows, MeReal h)
 {
     ContactData *d = MDT_CONSTRAINT_DATA(contact, ContactData);
     for (int k = 0; k < 3; k++)
@@ -201,9 +201,9 @@ void MdtContactUnpack(MdtConstraint *contact, const MeReal *impulses, int rows, 
     d->normalForce = rows > 0 ? impulses[0] / h : 0;
 }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w) { MdtContactAddRows(c, c, w); }
+static void addRows(MdtConstraintData *c, MdtRowWriter *w) { MdtContactAddRows(c, c, w); }
 
-static void unpack(MdtConstraint *c, const MeReal *impulses, int rows, MeReal h)
+static void unpack(MdtConstraintData *c, const MeReal *impulses, int rows, MeReal h)
 {
     MdtContactUnpack(c, impulses, rows, h);
 }
@@ -211,20 +211,20 @@ static void unpack(MdtConstraint *c, const MeReal *impulses, int rows, MeReal h)
 const MdtConstraintClass MdtContactClass = {"Contact", 3, reset, rowCount, addRows, unpack, NULL};
 
 /* ---- API ---------------------------------------------------------------------------------- */
-static MdtConstraint *contactFromID(MdtContactID id, const char *function)
+static MdtConstraintData *contactFromID(MdtContactID id, const char *function)
 {
     return MdtConstraintFromIDOfType(id, MdtBclCONTACT, function);
 }
 
 #define CONTACT_OR_RETURN(c, d, id, ret)                                                             \
-    MdtConstraint *c = contactFromID((id), __func__);                                                \
+    MdtConstraintData *c = contactFromID((id), __func__);                                                \
     if (!c)                                                                                          \
         return ret;                                                                                  \
     ContactData *d = MDT_CONSTRAINT_DATA(c, ContactData)
 
 MdtContactID MdtContactCreate(MdtWorldID w)
 {
-    MdtConstraint *c = MdtConstraintCreateInternal(w, MdtBclCONTACT, &MdtContactClass, __func__);
+    MdtConstraintData *c = MdtConstraintCreateInternal(w, MdtBclCONTACT, &MdtContactClass, __func__);
     return c ? (MdtContactID)c->id : NULL;
 }
 
@@ -368,7 +368,7 @@ void MdtContactSetFromCollision(MdtContactID id, const MdtContactParams *params,
 {
     /* One handle check; each field then checked and set as its own setter would, a bad one skipped
      * and reported in that setter's name. */
-    MdtConstraint *c = contactFromID(id, "MdtContactSetParams");
+    MdtConstraintData *c = contactFromID(id, "MdtContactSetParams");
     if (!c)
         return;
     ContactData *d = MDT_CONSTRAINT_DATA(c, ContactData);
@@ -382,10 +382,10 @@ void MdtContactGetRelativeVelocity(MdtContactID id, MeVector3 v)
 {
     CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
     ME_CHECK_NOT_NULL(v, ME_NOTHING);
-    const MdtConstraint *owner = d->group ? d->group : c;
+    const MdtConstraintData *owner = d->group ? d->group : c;
     MeVector3 v0 = {0, 0, 0}, v1 = {0, 0, 0};
     for (int i = 0; i < 2; i++) {
-        const MdtBody *b = owner->body[i];
+        const MdtBodyData *b = owner->body[i];
         MeVector3 *out = i == 0 ? &v0 : &v1;
         if (!b) {
             if (d->params.options & MdtBclContactOptionUseWorldVelocity)
