@@ -7,6 +7,7 @@
 #include <karma/MdtPartition.h>
 
 #include "../me/check.h"
+#include "bcl/contact_internal.h"
 #include "constraint.h"
 #include "world.h"
 
@@ -43,19 +44,33 @@ void MdtWorldSetDebugDrawing(MdtWorldID id, MdtDebugDrawOptions options)
     w->debugOptions = options;
 }
 
-/* One contact's lines: red along the normal (longer when deeper), green along its force on body 0. */
-static void drawContact(MdtContactID c, MdtDebugDrawOptions options)
+/* The force a contact applied to its body 0 in this step, from its rows' impulses (a group's contacts
+ * keep no force vector of their own). */
+static void contactForce(const MdtWorldData *w, const MdtConstraintData *c, MeVector3 f)
 {
+    MeVector3Set(f, 0, 0, 0);
+    if (!w->rowsPacked || c->rowStart < 0)
+        return;
+    for (int k = 0; k < c->rowCount; k++) {
+        const KeaJacobianRow *J = &w->rows.J[c->rowStart + k];
+        MeVector3MultiplyAdd(f, w->rows.x[c->rowStart + k] / w->stepSize, J->lin0);
+    }
+}
+
+/* One contact's lines: red along the normal (longer when deeper), green along its force on body 0. */
+static void drawContact(const MdtWorldData *w, const MdtConstraintData *c)
+{
+    MdtContactID id = (MdtContactID)c->id;
     MeVector3 start, end;
-    MdtContactGetPosition(c, start);
-    if (options & MdtDebugDrawContacts) {
-        MdtContactGetNormal(c, end);
-        MeVector3Scale(end, 1 + 50 * MdtContactGetPenetration(c));
+    MdtContactGetPosition(id, start);
+    if (w->debugOptions & MdtDebugDrawContacts) {
+        MdtContactGetNormal(id, end);
+        MeVector3Scale(end, 1 + 50 * MdtContactGetPenetration(id));
         MeVector3Add(end, start, end);
         MdtDebugDrawLine(start, end, 1, 0, 0);
     }
-    if (options & MdtDebugDrawContactForce) {
-        MdtContactGetForce(c, 0, end);
+    if (w->debugOptions & MdtDebugDrawContactForce) {
+        contactForce(w, c, end);
         MeVector3Add(end, start, end);
         MdtDebugDrawLine(start, end, 0, 1, 0);
     }
@@ -66,13 +81,12 @@ void MdtWorldDebugDraw(MdtWorldData *w)
     const MdtPartitionLists *out = &w->partitions;
     for (int i = 0; i < out->constraintCount; i++) {
         const MdtConstraintData *c = out->constraints[i];
-        if (c->type == MdtBclCONTACT) {
-            drawContact((MdtContactID)c->id, w->debugOptions);
-        } else if (c->type == MdtBclCONTACTGROUP) {
-            MdtContactGroupID g = (MdtContactGroupID)c->id;
-            for (MdtContactID k = MdtContactGroupGetFirstContact(g); k; k = MdtContactGroupGetNextContact(g, k))
-                drawContact(k, w->debugOptions);
-        }
+        if (c->type == MdtBclCONTACT)
+            drawContact(w, c);
+        else if (c->type == MdtBclCONTACTGROUP)
+            for (const MdtConstraintData *k = MdtContactGroupFirst(c); k;
+                 k = MDT_CONSTRAINT_DATA(k, const ContactData)->next)
+                drawContact(w, k);
     }
 }
 
