@@ -231,7 +231,9 @@ static int collidePair(MstBridge *b, McdModelPair *pair, MdtWorldID world)
         destroyGroup(pair);
         return 0;
     }
-    /* The dynamic body is body 0: a pair whose model 1 is part of the world is turned round. */
+    /* Body 0 is model 1's body and body 1 model 2's, so McdContact's normal (model 2 towards model 1)
+     * is the MdtContact normal as it is (body 1 towards body 0). The dynamic body is body 0: a pair
+     * whose model 1 is part of the world is turned round and its normals negated. */
     MeBool swapped = !b1;
     MeReal sign = swapped ? -1 : 1;
     MdtContactGroupID g = (MdtContactGroupID)pair->userData;

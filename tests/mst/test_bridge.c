@@ -97,7 +97,8 @@ static MdtContactGroupID groupOf(MdtBodyID body)
 }
 
 /* A ball resting on the ground: the world model is model 1 of the pair (lower sort key) but the group
- * has the ball as body 0, the world as body 1, and its normal points from the ball into the ground. */
+ * has the ball as body 0, the world as body 1, and its normal points from the ground up into the ball
+ * (from body 1 towards body 0: the direction in which the ball is pushed). */
 static void group_lives_with_the_intersection(void **state)
 {
     (void)state;
@@ -117,7 +118,8 @@ static void group_lives_with_the_intersection(void **state)
     MdtContactGetNormal(MdtContactGroupGetFirstContact(g), n);
     printf("ball on plane: normal (%.3f %.3f %.3f), penetration %.4f\n", (double)n[0], (double)n[1], (double)n[2],
            (double)MdtContactGetPenetration(MdtContactGroupGetFirstContact(g)));
-    assert_near(n[2], -1, 1e-5);
+    assert_near(n[2], 1, 1e-5);
+    assert_true(MdtContactGroupIsSwapped(g)); /* model 1 is the ground: the pair was turned round */
     /* Lift the ball clear: the group goes when the models stop intersecting... */
     MdtBodySetPosition(body, 0, 0, 0.6f);
     MdtBodySetLinearVelocity(body, 0, 0, 0);
@@ -134,7 +136,7 @@ static void group_lives_with_the_intersection(void **state)
     MstUniverseDestroy(s.u);
 }
 
-/* The conversion carries each McdContact's position, normal (body 0 towards body 1) and penetration
+/* The conversion carries each McdContact's position, normal (body 1 towards body 0) and penetration
  * (the negated separation) into the group's MdtContact, and the material's parameters; a pair that
  * stays reuses its contact and refreshes all of it. */
 static void conversion_carries_the_geometry(void **state)
@@ -170,11 +172,56 @@ static void conversion_carries_the_geometry(void **state)
         assert_true(p[2] > -0.05 && p[2] < 0.05);
         assert_near(n[0], 0, 1e-6);
         assert_near(n[1], 0, 1e-6);
-        assert_near(n[2], -1, 1e-6);
+        assert_near(n[2], 1, 1e-6);
         assert_near(MdtContactGetPenetration(c), 0.5 - heights[k], 1e-5);
         assert_near(MdtContactParamsGetPrimaryFriction(MdtContactGetParams(c)), 0.75, 0);
     }
     MstUniverseDestroy(s.u);
+}
+
+/* The sense of a bridge-made contact, in both orders of the pair's models: a ball dropped onto the
+ * ground from 5 cm gets a contact whose normal is +z (the ground pushes the ball up), with the ball as
+ * body 0 whether the ground is model 1 (the pair turned round, normals negated) or model 2 (copied as
+ * they are); it lands and stays on the ground, never sinking more than a few millimetres. */
+static void bridge_normal_pushes_the_ball_up_in_both_orders(void **state)
+{
+    (void)state;
+    for (int groundFirst = 0; groundFirst < 2; groundFirst++) {
+        Scene s;
+        sceneInit(&s);
+        McdModelSetSortKey(s.ground, groundFirst ? 0 : 1);
+        McdModelID ball = sphereAt(&s, 0.5f, 0, 0, 0.55f);
+        McdModelSetSortKey(ball, groundFirst ? 1 : 0);
+        MdtBodyID body = McdModelGetBody(ball);
+        double lowest = 1e9;
+        MdtContactGroupID g = NULL;
+        MeVector3 n = {0, 0, 0};
+        for (int i = 0; i < 120; i++) {
+            MstUniverseStep(s.u, 1.0f / 60);
+            MeVector3 p;
+            MdtBodyGetPosition(body, p);
+            lowest = fmin(lowest, p[2]);
+            if (!g && (g = groupOf(body)) != NULL) {
+                MdtContactGetNormal(MdtContactGroupGetFirstContact(g), n);
+                assert_ptr_equal(MdtConstraintGetBody(MdtContactGroupQuaConstraint(g), 0), body);
+                assert_null(MdtConstraintGetBody(MdtContactGroupQuaConstraint(g), 1));
+                assert_int_equal(MdtContactGroupIsSwapped(g), groundFirst);
+            }
+        }
+        MeVector3 p, v;
+        MdtBodyGetPosition(body, p);
+        MdtBodyGetLinearVelocity(body, v);
+        printf("ground model %d: normal (%.3f %.3f %.3f), lowest centre %.5f, after 2 s z %.5f, vz %.1e\n",
+               groundFirst ? 1 : 2, (double)n[0], (double)n[1], (double)n[2], lowest, (double)p[2], (double)v[2]);
+        assert_non_null(g);
+        assert_near(n[0], 0, 1e-6);
+        assert_near(n[1], 0, 1e-6);
+        assert_near(n[2], 1, 1e-6);
+        assert_true(lowest > 0.5 - 0.005);
+        assert_near(p[2], 0.5, 0.005);
+        assert_near(v[2], 0, 1e-3);
+        MstUniverseDestroy(s.u);
+    }
 }
 
 /* The bridge's one-call contact update (MdtContactSetFromCollision) checks each field as its own
@@ -345,6 +392,7 @@ int main(void)
         cmocka_unit_test(material_table_is_symmetric),
         cmocka_unit_test(group_lives_with_the_intersection),
         cmocka_unit_test(conversion_carries_the_geometry),
+        cmocka_unit_test(bridge_normal_pushes_the_ball_up_in_both_orders),
         cmocka_unit_test(collision_update_skips_bad_fields_one_by_one),
         cmocka_unit_test(callbacks_and_parameters),
         cmocka_unit_test(freeze_follows_disable),
