@@ -5,7 +5,8 @@
  * MstBridgeUpdateContacts reads the space's pairs in chunks and, for each chunk, handles transitions
  * (Hello: order the pair and choose its nearfield test; Goodbye: destroy its contact group) and
  * collisions (nearfield test → McdContacts → MdtContacts in the pair's MdtContactGroup, created when
- * the models first intersect and destroyed when they stop, or at Goodbye).
+ * the models first intersect and destroyed at Goodbye; a step without contacts leaves it empty and
+ * disabled).
  *
  * Body order: a group's body 0 is model 1's body and body 1 model 2's; when model 1 has no body (it
  * is part of the world) the pair is turned round so that the dynamic body is body 0 and body 1 NULL

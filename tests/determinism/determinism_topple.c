@@ -24,7 +24,7 @@
 #if KARMA_DOUBLE
 #  define GOLDEN_HASH 0x39e9f65e87e6887dull
 #else
-#  define GOLDEN_HASH 0x721c9c2f55ec8383ull
+#  define GOLDEN_HASH 0x4da6ead296d10147ull
 #endif
 
 static uint64_t runTopple(MeBool trace, int *contactsSeen)

@@ -122,7 +122,7 @@ static void sphere_cases(void **state)
     identity(c.tm2, 0, 0, 0.8);
     expect(&c, "sphere-sphere penetrating 0.2", 1, 1, 0, 0, -1, -0.2, e), run(&c);
     identity(c.tm2, 0, 0, 0);
-    expect(&c, "sphere-sphere coincident centres", 1, 1, 0, 0, 1, -1.0, e); /* sphere 1 leaves along +z, by convention */
+    expect(&c, "sphere-sphere coincident centres", 1, 1, 0, 0, 1, -1.0, e); /* sphere 1 leaves along +z */
     c.anyNormal = 1;
     run(&c);
 

@@ -385,6 +385,149 @@ static void model_and_body_helpers(void **state)
     MstUniverseDestroy(s.u);
 }
 
+static void place(MdtBodyID b, MeReal x, MeReal y, MeReal z)
+{
+    MdtBodySetPosition(b, x, y, z);
+    MdtBodySetLinearVelocity(b, 0, 0, 0);
+    MdtBodySetAngularVelocity(b, 0, 0, 0);
+}
+
+static int rowsLastStep(MdtWorldID w)
+{
+    MdtWorldCounters c;
+    MdtWorldGetCounters(w, &c);
+    return c.rows;
+}
+
+/* A ball at distance d from the corner (1, 1, 6) of a fixed 2 m cube centred at (0, 0, 5), along the
+ * cube's diagonal: the surfaces are d − 0.5 apart, and the boxes overlap for every d below ~0.87. */
+static void nearCorner(MdtBodyID ball, double d)
+{
+    const double u = d / sqrt(3.0);
+    place(ball, (MeReal)(1 + u), (MeReal)(1 + u), (MeReal)(6 + u));
+}
+
+/* How long the bridge keeps a pair's contact group (decision M3, User Guide ch. 2): from the first
+ * step the models intersect until the pair says Goodbye. A step without contacts (the models apart
+ * while their boxes overlap, or a per-pair callback returning 0) leaves the group empty and disabled:
+ * it adds no rows, joins no bodies into a partition and wakes nothing; contacts coming back refill the
+ * same group. Gravity is off in these scenes, and the ground lies far below. */
+static void group_kept_while_the_boxes_overlap(void **state)
+{
+    (void)state;
+    Scene s;
+    sceneInit(&s);
+    MdtWorldSetGravity(s.w, 0, 0, 0);
+    MeMatrix4 tm;
+    MeMatrix4TMMakeIdentity(tm);
+    MeMatrix4TMSetPosition(tm, 0, 0, 5);
+    assert_non_null(MstFixedModelCreate(s.u, McdBoxCreate(s.fw, 2, 2, 2), tm));
+    MdtBodyID ball = McdModelGetBody(sphereAt(&s, 0.5f, 0, 0, 0));
+    /* touching (0.01 deep): a group with a contact */
+    nearCorner(ball, 0.49);
+    MstUniverseStep(s.u, ME_R(1.0) / 60);
+    MdtContactGroupID g = groupOf(ball);
+    assert_non_null(g);
+    assert_int_equal(MdtContactGroupGetCount(g), 1);
+    assert_true(MdtConstraintIsEnabled(MdtContactGroupQuaConstraint(g)));
+    /* lifted 0.05 clear, the boxes still overlapping: the same group, empty, adding no rows */
+    nearCorner(ball, 0.55);
+    MstUniverseStep(s.u, ME_R(1.0) / 60);
+    printf("apart by 0.05, boxes overlapping: group %s, %d contacts, %s; rows solved %d\n",
+           groupOf(ball) ? "kept" : "gone", groupOf(ball) ? MdtContactGroupGetCount(groupOf(ball)) : -1,
+           MdtConstraintIsEnabled(MdtContactGroupQuaConstraint(g)) ? "enabled" : "disabled", rowsLastStep(s.w));
+    assert_ptr_equal(groupOf(ball), g);
+    assert_int_equal(MdtContactGroupGetCount(g), 0);
+    assert_false(MdtConstraintIsEnabled(MdtContactGroupQuaConstraint(g)));
+    assert_int_equal(rowsLastStep(s.w), 0);
+    MeVector3 v;
+    MdtBodyGetLinearVelocity(ball, v);
+    assert_true(v[0] == 0 && v[1] == 0 && v[2] == 0); /* nothing pushed it */
+    /* touching again: the same group refilled and enabled */
+    nearCorner(ball, 0.495);
+    MstUniverseStep(s.u, ME_R(1.0) / 60);
+    assert_ptr_equal(groupOf(ball), g);
+    assert_int_equal(MdtContactGroupGetCount(g), 1);
+    assert_true(MdtConstraintIsEnabled(MdtContactGroupQuaConstraint(g)));
+    /* the boxes apart (Goodbye): the group is destroyed */
+    nearCorner(ball, 2);
+    MstUniverseStep(s.u, ME_R(1.0) / 60);
+    assert_null(groupOf(ball));
+    assert_false(MdtConstraintIsValid(MdtContactGroupQuaConstraint(g)));
+    assert_int_equal(MdtWorldGetTotalConstraints(s.w), 0);
+    MstUniverseDestroy(s.u);
+}
+
+static MeBool dropAll(McdIntersectResult *r, MdtContactGroupID g)
+{
+    (void)r, (void)g;
+    return MEFALSE;
+}
+
+static void per_pair_callback_removes_the_contacts_not_the_group(void **state)
+{
+    (void)state;
+    /* Karma's MstPerPairCBPtr: "if the callback returns 0, all contacts created for this pair will be
+     * removed". The group stays (empty, disabled) until Goodbye; the balls pass through each other. */
+    Scene s;
+    sceneInit(&s);
+    MdtWorldSetGravity(s.w, 0, 0, 0);
+    MstBridgeSetPerPairCB(s.b, 0, 0, dropAll);
+    MdtBodyID a = McdModelGetBody(sphereAt(&s, 0.5f, 0, 0, 10));
+    MdtBodyID b = McdModelGetBody(sphereAt(&s, 0.5f, ME_R(0.9), 0, 10));
+    MstUniverseStep(s.u, ME_R(1.0) / 60);
+    MdtContactGroupID g = groupOf(a);
+    assert_non_null(g);
+    assert_int_equal(MdtContactGroupGetCount(g), 0);
+    assert_false(MdtConstraintIsEnabled(MdtContactGroupQuaConstraint(g)));
+    MeVector3 v;
+    MdtBodyGetLinearVelocity(b, v);
+    assert_true(v[0] == 0); /* no push */
+    MstUniverseDestroy(s.u);
+}
+
+static void empty_group_neither_joins_nor_wakes(void **state)
+{
+    (void)state;
+    /* Two balls touch, then are set 0.06 apart along a diagonal (their boxes still overlap, so the
+     * pair stays and keeps its empty group). One spins in place and stays awake; the other, at rest,
+     * is in a partition of its own and falls asleep after the alive window, and the spinning
+     * neighbour's empty group does not wake it. */
+    Scene s;
+    sceneInit(&s);
+    MdtWorldSetGravity(s.w, 0, 0, 0);
+    MdtBodyID spinner = McdModelGetBody(sphereAt(&s, 0.5f, 0, 0, 10));
+    MdtBodyID rester = McdModelGetBody(sphereAt(&s, 0.5f, ME_R(0.7), ME_R(0.7), 10));
+    MstUniverseStep(s.u, ME_R(1.0) / 60); /* 0.99 apart: touching */
+    MdtContactGroupID g = groupOf(spinner);
+    assert_non_null(g);
+    assert_true(MdtContactGroupGetCount(g) >= 1);
+    place(spinner, 0, 0, 10);
+    place(rester, ME_R(0.75), ME_R(0.75), 10); /* 1.06 apart */
+    MdtBodySetAngularVelocity(spinner, 0, 0, 2);
+    int asleepAt = -1;
+    for (int i = 0; i < 180; i++) {
+        MstUniverseStep(s.u, ME_R(1.0) / 60);
+        assert_ptr_equal(groupOf(spinner), g);
+        assert_int_equal(MdtContactGroupGetCount(g), 0);
+        if (i == 0)
+            assert_int_not_equal(MdtBodyGetPartition(spinner), MdtBodyGetPartition(rester));
+        if (asleepAt < 0 && !MdtBodyIsEnabled(rester))
+            asleepAt = i;
+        if (asleepAt >= 0)
+            assert_false(MdtBodyIsEnabled(rester)); /* never woken again */
+    }
+    MeVector3 w;
+    MdtBodyGetAngularVelocity(spinner, w);
+    printf("empty group between a spinning ball and a resting one: the resting one asleep at step %d; spinner "
+           "enabled %d (spin %.3f rad/s)\n",
+           asleepAt, MdtBodyIsEnabled(spinner), (double)w[2]);
+    assert_true(asleepAt > 0 && asleepAt < 60);
+    assert_true(MdtBodyIsEnabled(spinner));
+    assert_near(w[2], 2, 1e-4);
+    MstUniverseDestroy(s.u);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -393,6 +536,9 @@ int main(void)
         cmocka_unit_test(group_lives_with_the_intersection),
         cmocka_unit_test(conversion_carries_the_geometry),
         cmocka_unit_test(bridge_normal_pushes_the_ball_up_in_both_orders),
+        cmocka_unit_test(group_kept_while_the_boxes_overlap),
+        cmocka_unit_test(per_pair_callback_removes_the_contacts_not_the_group),
+        cmocka_unit_test(empty_group_neither_joins_nor_wakes),
         cmocka_unit_test(collision_update_skips_bad_fields_one_by_one),
         cmocka_unit_test(callbacks_and_parameters),
         cmocka_unit_test(freeze_follows_disable),

@@ -1,8 +1,9 @@
 /* plane.c -- every primitive against the plane (internal). The plane is z = 0 of its transform, solid
  * below, normal +z; geometry 1 is the primitive, geometry 2 the plane, so the contact normal (from
- * geometry 2 towards geometry 1) is the plane's normal. Each test lists the primitive's candidate lowest points (a vertex, a sphere's lowest
- * point, a few points of each rim) and keeps those within the tolerance: a face or a cap standing on
- * the plane gets several points, a body on an edge two, on a corner one. */
+ * geometry 2 towards geometry 1) is the plane's normal. Each test lists the primitive's candidate
+ * lowest points (a vertex, a sphere's lowest point, a few points of each rim) and keeps those within
+ * the tolerance: a face or a cap standing on the plane gets several points, a body on an edge two, on
+ * a corner one. */
 #include "nearfield.h"
 
 /* Contact of a point of the primitive's surface with the plane. */
