@@ -58,11 +58,11 @@ struct MdtBclContactParams {
     MeReal max_adhesive_force;         /**< N */
     MeReal friction1;                  /**< Box model bound along the primary direction, N (MEINFINITY: no sliding) */
     MeReal frictioncoeff1;             /**< NormalForce model coefficient along the primary direction */
-    MeReal slip1;                      /**< tangential compliance (velocity per impulse, 1/kg) */
+    MeReal slip1;                      /**< tangential compliance: slip speed per friction force, s/kg (m/s per N) */
     MeReal friction2, frictioncoeff2, slip2; /**< the same along the secondary direction */
     MeReal slide1, slide2;             /**< surface velocity along the directions, m/s: the contact drives the
-                                            velocity of body 1 relative to body 0 at the contact along the
-                                            direction to it (a body on the world moves at −slide) */
+                                            velocity of body 0 relative to body 1 at the contact along the
+                                            direction to it (a body on the world moves at +slide) */
 };
 typedef struct MdtBclContactParams MdtContactParams;
 typedef struct MdtBclContactParams MdtBclContactParams; /**< Karma 1.2's name for the type */

@@ -5,11 +5,13 @@
  * MstBridgeUpdateContacts reads the space's pairs in chunks and, for each chunk, handles transitions
  * (Hello: order the pair and choose its nearfield test; Goodbye: destroy its contact group) and
  * collisions (nearfield test → McdContacts → MdtContacts in the pair's MdtContactGroup, created when
- * the models first intersect and destroyed when they stop, or at Goodbye).
+ * the models first intersect and destroyed at Goodbye; a step without contacts leaves it empty and
+ * disabled).
  *
  * Body order: a group's body 0 is model 1's body and body 1 model 2's; when model 1 has no body (it
  * is part of the world) the pair is turned round so that the dynamic body is body 0 and body 1 NULL
- * (the group is marked swapped). Dynamics normals point from body 0 to body 1. */
+ * (the group is marked swapped). Normals point from model 2 towards model 1 and from body 1 towards
+ * body 0 alike: copied as they are, negated for a turned-round pair. */
 #ifndef MST_BRIDGE_H
 #define MST_BRIDGE_H
 

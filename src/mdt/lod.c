@@ -50,7 +50,7 @@ static MeReal approachSpeed(const MdtConstraintData *owner, const ContactData *d
                      d->position[2] - b->comTM[3][2]);
         MeVector3Cross(wxr, b->velrot, r);
         MeReal v = MeVector3Dot(d->normal, b->vel) + MeVector3Dot(d->normal, wxr);
-        vn += i == 0 ? -v : v;
+        vn += i == 0 ? v : -v; /* separating speed: body 0 along n (n points from body 1 to body 0) */
     }
     return vn < 0 ? -vn : 0;
 }

@@ -1,10 +1,13 @@
 /* bridge.c -- MstBridge: creating it, and turning the space's pairs into dynamics contacts.
  *
- * A pair's MdtContactGroup hangs on McdModelPair.userData while the models intersect. Its contacts
- * are refreshed in place each step (the i-th contact of the test reuses the group's i-th contact,
- * after matching by position, see matchContacts), so the solver's warm start carries over between
- * steps. The group is destroyed when the models stop intersecting, at Goodbye, or when a per-pair
- * callback drops the pair. */
+ * A pair's MdtContactGroup hangs on McdModelPair.userData from the first step its models intersect
+ * until the pair's Goodbye (as the User Guide describes; decision M3). Its contacts are refreshed in
+ * place each step (a new contact reuses the group's nearest old one, see matchContacts), so the
+ * solver's warm start carries over between steps. A step without contacts (the models apart while
+ * their boxes still overlap, every contact refused by the per-contact callback, or the per-pair
+ * callback returning 0) empties the group and disables it, as Karma's bridge did: an empty group
+ * adds no rows, joins no bodies into a partition and wakes nothing; it is enabled again when
+ * contacts come back (they start from no warm start). */
 #include <string.h>
 
 #include <karma/McdInteraction.h>
@@ -138,6 +141,18 @@ int MstBridgeGetLastContactCount(MstBridgeID id)
 
 /* ---- the update --------------------------------------------------------------------------- */
 
+/* Remove every contact of the pair's group and disable it (the group itself lives on). */
+static void emptyGroup(MdtContactGroupID g)
+{
+    MdtContactID c = MdtContactGroupGetFirstContact(g);
+    while (c) {
+        MdtContactID next = MdtContactGroupGetNextContact(g, c);
+        MdtContactGroupDestroyContact(g, c);
+        c = next;
+    }
+    MdtConstraintDisable(MdtContactGroupQuaConstraint(g));
+}
+
 static void destroyGroup(McdModelPair *pair)
 {
     MdtContactGroupID g = (MdtContactGroupID)pair->userData;
@@ -227,14 +242,17 @@ static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
         return 0;
     if (result.contactCount > 0 && mat->intersectCB)
         mat->intersectCB(&result);
+    MdtContactGroupID g = (MdtContactGroupID)pair->userData;
     if (result.contactCount <= 0) {
-        destroyGroup(pair);
+        if (g)
+            emptyGroup(g);
         return 0;
     }
-    /* The dynamic body is body 0: a pair whose model 1 is part of the world is turned round. */
+    /* Body 0 is model 1's body and body 1 model 2's, so McdContact's normal (model 2 towards model 1)
+     * is the MdtContact normal as it is (body 1 towards body 0). The dynamic body is body 0: a pair
+     * whose model 1 is part of the world is turned round and its normals negated. */
     MeBool swapped = !b1;
     MeReal sign = swapped ? -1 : 1;
-    MdtContactGroupID g = (MdtContactGroupID)pair->userData;
     if (!g) {
         g = MdtContactGroupCreate(world);
         if (!g)
@@ -242,7 +260,6 @@ static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
         MdtConstraintSetBodies(MdtContactGroupQuaConstraint(g), swapped ? b2 : b1, swapped ? NULL : b2);
         MdtContactGroupSetSwapped(g, swapped);
         MdtContactGroupSetGenerator(g, pair);
-        MdtConstraintEnable(MdtContactGroupQuaConstraint(g));
         pair->userData = g;
     }
     int n = result.contactCount;
@@ -259,10 +276,13 @@ static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
         else
             kept++;
     }
+    /* A per-pair callback returning 0 removes the pair's contacts (Karma's MstPerPairCBPtr), not the
+     * group, which lives until Goodbye. */
     if (kept == 0 || (mat->perPairCB && !mat->perPairCB(&result, g))) {
-        destroyGroup(pair);
+        emptyGroup(g);
         return 0;
     }
+    MdtConstraintEnable(MdtContactGroupQuaConstraint(g));
     return kept;
 }
 

@@ -1,17 +1,22 @@
 /* contact.c -- MdtContact: its API and the rows of one contact (used alone and by contact groups).
  *
- * Rows of a contact at point p with unit normal n (body 0 → body 1), lever arms r0 = p − com0 and
- * r1 = p − com1. The constraint velocity of a direction d is the velocity of body 1's material point
- * relative to body 0's along d:  J v = d·(v1 + ω1 × r1 − v0 − ω0 × r0).
+ * Rows of a contact at point p with unit normal n (from body 1 towards body 0: the direction in
+ * which body 0 is pushed, as Karma), lever arms r0 = p − com0 and r1 = p − com1. The constraint
+ * velocity of a direction d is the velocity of body 0's material point relative to body 1's along d
+ * (Karma's sense):  J v = d·(v0 + ω0 × r0 − v1 − ω1 × r1).
  *   normal:   φ = −penetration (separation), impulse ≥ 0 (≥ −max adhesive force·h when adhesive);
  *             a separated contact (penetration < 0) may close its gap exactly (γ = 1: speculative);
  *             when approaching faster than the restitution threshold and touching within the step,
  *             the target separating speed is restitution × approach speed (no position correction
  *             on top); softness adds to the row's ε.
- *   friction: t1 = the primary direction (given, or chosen perpendicular to n), t2 = n × t1; target
- *             velocity = slide; ε += slip; bounds ±friction (Box) or |x| ≤ μ x_normal (NormalForce,
- *             a friction link the solver applies with the current normal impulse).
- * A world that moves under the contact (UseWorldVelocity) shifts each row's target by −d·v_world. */
+ *   friction: t1 = the primary direction (given, or chosen perpendicular to n), t2 = t1 × n; target
+ *             velocity = slide (body 0 relative to body 1); ε = slip / h instead of the world's ε
+ *             (slip is a compliance: sliding speed = slip × friction force, whatever the step, see
+ *             decision K28 in docs/decisions.md); bounds ±friction (Box) or
+ *             |x| ≤ μ x_normal (NormalForce, a friction link the solver applies with the current
+ *             normal impulse).
+ * A world that moves under the contact (UseWorldVelocity, body 1 NULL) is body 1 moving at
+ * v_world: each row's target shifts by +d·v_world. */
 #include <string.h>
 
 #include <karma/MdtContact.h>
@@ -60,14 +65,13 @@ int MdtContactStepRows(const MdtConstraintData *c)
 
 static int rowCount(const MdtConstraintData *c) { return MdtContactStepRows(c); }
 
-/* Fills lin/ang of both halves for direction dir: J v = dir·(v1p − v0p). */
+/* Fills lin/ang of both halves for direction dir: J v = dir·(v0p − v1p). */
 static void directionRow(MdtRow *row, const MeVector3 dir, const MeVector3 r0, const MeVector3 r1)
 {
-    MeVector3Copy(row->lin1, dir);
-    MeVector3MultiplyScalar(row->lin0, dir, -1);
-    MeVector3Cross(row->ang1, r1, dir);
+    MeVector3Copy(row->lin0, dir);
     MeVector3Cross(row->ang0, r0, dir);
-    MeVector3Scale(row->ang0, -1);
+    MeVector3MultiplyScalar(row->lin1, dir, -1);
+    MeVector3Cross(row->ang1, dir, r1); /* −(r1 × dir) */
 }
 
 static MeReal pointVelocityAlong(const MdtBodyData *b, const MeVector3 r, const MeVector3 dir)
@@ -103,9 +107,10 @@ void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contac
     row.lo = (p->options & MdtBclContactOptionAdhesive) ? -p->max_adhesive_force : 0;
     row.hi = MEINFINITY;
     row.epsilon = (p->options & MdtBclContactOptionSoft) ? p->softness : 0;
-    MeReal vn = pointVelocityAlong(b1, r1, d->normal) - pointVelocityAlong(b0, r0, d->normal);
+    /* Separating speed of body 0 from body 1 (negative when approaching). */
+    MeReal vn = pointVelocityAlong(b0, r0, d->normal) - pointVelocityAlong(b1, r1, d->normal);
     if (movingWorld)
-        vn += MeVector3Dot(d->normal, d->worldVelocity);
+        vn -= MeVector3Dot(d->normal, d->worldVelocity);
     /* Restitution. A contact reported with a gap g that the bodies close within this step (at speed
      * v = −vn) bounces now if g is small (the bounce comes at most g early), or else lands exactly
      * this step and bounces at the start of the next with the remembered approach speed (at most
@@ -142,7 +147,7 @@ void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contac
             row.gamma = 1;
     }
     if (movingWorld)
-        row.velocity -= MeVector3Dot(d->normal, d->worldVelocity);
+        row.velocity += MeVector3Dot(d->normal, d->worldVelocity);
     int normalRow = MdtRowWriterAdd(w, &row);
     if (!w->captured && normalRow >= 0)
         w->x0[w->first + normalRow] = d->impulse[0];
@@ -163,13 +168,17 @@ void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contac
         MeVector3 other;
         MeVector3PlaneSpace(d->normal, t[0], other);
     }
-    MeVector3Cross(t[1], d->normal, t[0]);
+    MeVector3Cross(t[1], t[0], d->normal);
 
     const MdtFrictionModel model[2] = {p->model1, p->model2};
     const MeReal bound[2] = {p->friction1, p->friction2};
     const MeReal coefficient[2] = {p->frictioncoeff1, p->frictioncoeff2};
-    const MeReal slip[2] = {(p->options & MdtBclContactOptionSlip1) ? p->slip1 : 0,
-                            (p->options & MdtBclContactOptionSlip2) ? p->slip2 : 0};
+    /* Slip is a compliance in force units (User Guide: slip speed = slip × friction force, whatever
+     * the step); the row's ε is per impulse (force × h), hence slip / h. A slipping row has its own
+     * compliance: the world's ε (which would add ε₀ h × force) is left out but for a trace that keeps
+     * redundant rows regular, as for bouncing rows. */
+    const MeReal slip[2] = {(p->options & MdtBclContactOptionSlip1) ? p->slip1 / h : 0,
+                            (p->options & MdtBclContactOptionSlip2) ? p->slip2 / h : 0};
     const MeReal slide[2] = {(p->options & MdtBclContactOptionSlide1) ? p->slide1 : 0,
                              (p->options & MdtBclContactOptionSlide2) ? p->slide2 : 0};
     int directions = p->type == MdtContactTypeFriction2D ? 2 : 1;
@@ -178,8 +187,11 @@ void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contac
         directionRow(&row, t[k], r0, r1);
         row.velocity = slide[k];
         if (movingWorld)
-            row.velocity -= MeVector3Dot(t[k], d->worldVelocity);
-        row.epsilon = slip[k];
+            row.velocity += MeVector3Dot(t[k], d->worldVelocity);
+        if (slip[k] > 0) {
+            row.epsilon = slip[k] + ME_R(1e-3) * w->epsilon0;
+            row.noWorldEpsilon = METRUE;
+        }
         if (model[k] == MdtFrictionModelNormalForce) {
             row.link = normalRow;
             row.mu = coefficient[k];
@@ -398,7 +410,7 @@ void MdtContactGetRelativeVelocity(MdtContactID id, MeVector3 v)
         MeVector3Cross(wxr, b->velrot, r);
         MeVector3Add(*out, b->vel, wxr);
     }
-    MeVector3Subtract(v, v1, v0);
+    MeVector3Subtract(v, v0, v1); /* body 0 relative to body 1, as Karma */
 }
 
 MeReal MdtContactGetNormalForce(MdtContactID id)

@@ -8,7 +8,7 @@
 
 typedef struct ContactData {
     MeVector3 position;       /* world */
-    MeVector3 normal;         /* unit, body 0 → body 1 */
+    MeVector3 normal;         /* unit, from body 1 towards body 0 (body 0 is pushed along it) */
     MeVector3 direction;      /* primary friction direction (with UseDirection) */
     MeVector3 worldVelocity;  /* surface velocity of the world (with UseWorldVelocity) */
     MeReal penetration;       /* > 0: overlap */
