@@ -40,11 +40,12 @@ typedef struct MdtKeaDebugDataRequest {
 ME_API MeCPUResources MdtKeaQueryCPUResources(void);
 
 /** Bytes of workspace the solver needs to solve partitions of num_rows_exc_padding[0 ...
- *  num_partitions−1] rows one after the other, none larger than max_rows rows or max_bodies bodies,
- *  whichever method (direct or iterative) each gets: the most the world's "Kea workspace" chunk
- *  (MdtWorldGetKeaPoolChunk) grows to for such a step. num_rows_exc_padding may be NULL (then every
- *  partition is taken to have max_rows rows). −1 (reported) for negative counts; INT_MAX when the
- *  size does not fit an int. */
+ *  num_partitions−1] rows one after the other, none with more than max_rows rows or max_bodies
+ *  bodies, each by the method the default solver settings give it (MdtLCPSolverAuto, 128 direct
+ *  rows): what the world's "Kea workspace" chunk (MdtWorldGetKeaPoolChunk) grows to for such a step,
+ *  or a little more. A world set to MdtLCPSolverIterative may need up to twice as much.
+ *  num_rows_exc_padding may be NULL (every partition then has max_rows rows). −1 (reported) for
+ *  negative counts; INT_MAX when the size does not fit an int. */
 ME_API int MdtKeaMemoryRequired(const int num_rows_exc_padding[], int num_partitions, int max_rows, int max_bodies);
 
 /* Data-cache maintenance that Karma 1.2 needed on PlayStation 2, where the solver's arrays went to the

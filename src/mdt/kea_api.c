@@ -16,7 +16,7 @@ static const struct MeCPUResourcesData portableC = {"portable C"};
 MeCPUResources MdtKeaQueryCPUResources(void) { return (MeCPUResources)(uintptr_t)&portableC; }
 
 /* The world solves its partitions one after the other in one workspace, sized for the largest
- * (src/mdt/kea/solve.c); KeaPathAuto's size covers whichever method a partition gets. */
+ * (src/mdt/kea/solve.c), each by the method its size gets under the default solver settings. */
 int MdtKeaMemoryRequired(const int num_rows_exc_padding[], int num_partitions, int max_rows, int max_bodies)
 {
     if (num_partitions < 0 || max_rows < 0 || max_bodies < 0) {
@@ -24,6 +24,8 @@ int MdtKeaMemoryRequired(const int num_rows_exc_padding[], int num_partitions, i
                   num_partitions, max_rows, max_bodies);
         return -1;
     }
+    KeaParameters defaults;
+    KeaParametersDefault(&defaults);
     size_t need = 0;
     for (int p = 0; p < num_partitions; p++) {
         int rows = num_rows_exc_padding ? num_rows_exc_padding[p] : max_rows;
@@ -34,7 +36,7 @@ int MdtKeaMemoryRequired(const int num_rows_exc_padding[], int num_partitions, i
         }
         if (rows == 0)
             continue; /* a partition without rows is not solved */
-        size_t bytes = KeaMemoryRequired(rows, max_bodies, KeaPathAuto);
+        size_t bytes = KeaMemoryRequired(rows, max_bodies, KeaSelectPath(rows, &defaults));
         if (bytes > need)
             need = bytes;
     }

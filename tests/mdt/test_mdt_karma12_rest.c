@@ -127,7 +127,7 @@ static void kea_memory_required_covers_what_a_solve_uses(void **state)
     assert_int_equal((size_t)used, MeChunkGetMaxSize(MdtWorldGetKeaPoolChunk(w)));
     int estimate = MdtKeaMemoryRequired(rows, n, maxRows, bodies);
     assert_true(estimate >= used);
-    assert_true(estimate <= 2 * used); /* an estimate of this solve, not a blanket bound */
+    assert_true(2 * estimate <= 3 * used); /* within 50%: an estimate of this solve, not a blanket bound */
     assert_int_equal(MdtKeaMemoryRequired(NULL, n, maxRows, bodies), estimate);
     /* No rows, nothing to solve; more rows, more memory. */
     assert_int_equal(MdtKeaMemoryRequired(NULL, 0, 0, 0), 0);
