@@ -15,10 +15,19 @@
 
 ME_EXTERN_C_BEGIN
 
-typedef struct McdFrameworkHandle_ *McdFrameworkID; /**< the collision framework (McdInit) */
-typedef struct McdGeometryHandle_ *McdGeometryID;   /**< a shape, shareable by many models */
-typedef struct McdModelHandle_ *McdModelID;         /**< a geometry placed in the world */
-typedef struct McdSpaceHandle_ *McdSpaceID;         /**< a farfield space (axis sort) */
+/* Karma's struct names, usable in declarations (`McdFramework *fw`). The structs stay incomplete:
+ * an ID is an encoded, checked handle, never a pointer to be followed. */
+typedef struct McdFramework McdFramework; /**< the collision framework (McdInit) */
+typedef struct McdGeometry McdGeometry;   /**< a shape, shareable by many models */
+typedef struct McdModel McdModel;         /**< a geometry placed in the world */
+typedef struct McdSpace McdSpace;         /**< a farfield space (axis sort) */
+typedef McdFramework *McdFrameworkID;
+typedef McdGeometry *McdGeometryID;
+typedef McdModel *McdModelID;
+typedef McdSpace *McdSpaceID;
+/** Karma's name for a model standing for several (same type as McdModelID). */
+typedef McdModelID McdCompositeModelID;
+typedef McdContact *McdContactID;
 
 /** Geometry type numbers (Karma's; Cone, which Karma left unnumbered, gets 9). User types
  *  registered with McdFrameworkRegisterGeometryType get the numbers after the built-in ones. */
@@ -41,6 +50,7 @@ typedef struct McdRequest {
     int contactMaxCount;   /**< contacts wanted at most for the pair */
     int faceNormalsFirst;  /**< prefer face normals over edge normals where both are valid */
 } McdRequest;
+typedef McdRequest *McdRequestID;
 
 /** A pair of models that the farfield found overlapping (or that the application made). */
 typedef struct McdModelPair {

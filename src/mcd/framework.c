@@ -13,17 +13,17 @@
 /* Default request: four contacts are enough to hold a box face on a plane. */
 #define DEFAULT_CONTACT_MAX_COUNT 4
 
-McdFramework *McdFrameworkFromID(McdFrameworkID id, const char *function)
+McdFrameworkData *McdFrameworkFromID(McdFrameworkID id, const char *function)
 {
     return MeHandleResolveOwner((uintptr_t)id, ME_HANDLE_FRAMEWORK, function, "fw");
 }
 
 #define FW_OR_RETURN(fw, id, ret)                                                                    \
-    McdFramework *fw = McdFrameworkFromID((id), __func__);                                           \
+    McdFrameworkData *fw = McdFrameworkFromID((id), __func__);                                           \
     if (!fw)                                                                                         \
     return ret
 
-static void installBuiltInTypes(McdFramework *fw)
+static void installBuiltInTypes(McdFrameworkData *fw)
 {
     fw->types[kMcdGeometryTypeNull] = McdNullTypeDesc;
     fw->types[kMcdGeometryTypeSphere] = McdSphereTypeDesc;
@@ -36,7 +36,7 @@ static void installBuiltInTypes(McdFramework *fw)
     fw->typeCount = kMcdGeometryBuiltInTypes;
 }
 
-static void freeFramework(McdFramework *fw)
+static void freeFramework(McdFrameworkData *fw)
 {
     MePoolDestroy(&fw->geometryPool);
     MePoolDestroy(&fw->modelPool);
@@ -60,7 +60,7 @@ McdFrameworkID McdInit(int geoTypeMaxCount, int modelCount, int instanceCount, M
                   geoTypeMaxCount, modelCount, (long)ME_HANDLE_MAX_INDEX, instanceCount);
         return NULL;
     }
-    McdFramework *fw = MeMemoryCreateZeroed(sizeof *fw);
+    McdFrameworkData *fw = MeMemoryCreateZeroed(sizeof *fw);
     if (!fw)
         return NULL;
     fw->typeCapacity = kMcdGeometryBuiltInTypes + geoTypeMaxCount;
@@ -72,8 +72,8 @@ McdFrameworkID McdInit(int geoTypeMaxCount, int modelCount, int instanceCount, M
      * unless shared, and aggregate children count against instanceCount. */
     int geometryCount = modelCount + instanceCount;
     if (!fw->types || !fw->interactions || !fw->warnedPairs ||
-        !MePoolInit(&fw->geometryPool, geometryCount, sizeof(McdGeometry), 16, "modelCount", 0) ||
-        !MePoolInit(&fw->modelPool, modelCount, sizeof(McdModel), 16, "modelCount", 0)) {
+        !MePoolInit(&fw->geometryPool, geometryCount, sizeof(McdGeometryData), 16, "modelCount", 0) ||
+        !MePoolInit(&fw->modelPool, modelCount, sizeof(McdModelData), 16, "modelCount", 0)) {
         freeFramework(fw);
         return NULL;
     }
@@ -100,17 +100,17 @@ void McdTerm(McdFrameworkID id)
     FW_OR_RETURN(fw, id, ME_NOTHING);
     /* Term actions may still use the framework's objects: run them first, newest first. */
     while (fw->termActionCount > 0) {
-        McdTermAction a = fw->termActions[--fw->termActionCount];
+        McdTermActionEntry a = fw->termActions[--fw->termActionCount];
         a.fn(id, a.data);
     }
     /* User geometries release their data; slots go in index order (deterministic). */
     for (int i = 0; i < fw->geometryPool.capacity; i++) {
         if (!MePoolSlotIsLive(&fw->geometryPool, i))
             continue;
-        McdGeometry *g = MePoolSlot(&fw->geometryPool, i);
+        McdGeometryData *g = MePoolSlot(&fw->geometryPool, i);
         const McdGeometryTypeDesc *t = McdGeometryTypeOf(g);
         if (t->destroy)
-            t->destroy(McdGeometryToID(g), McdGeometryData(g));
+            t->destroy(McdGeometryToID(g), McdGeometryShapeData(g));
     }
     MeHandleUnregisterOwner(fw->ownerSlot);
     freeFramework(fw);
@@ -236,12 +236,12 @@ MeBool McdPrimitivesRegisterInteractions(McdFrameworkID id)
 int McdPrimitivesGetTypeCount(void) { return 7; }
 
 /* ---- the interaction table ------------------------------------------------------------------- */
-static MeBool typeKnown(const McdFramework *fw, int type)
+static MeBool typeKnown(const McdFrameworkData *fw, int type)
 {
     return type >= 0 && type < fw->typeCount && fw->types[type].typeName != NULL;
 }
 
-MeBool McdFrameworkSetInteractionWithCache(McdFramework *fw, int type1, int type2, McdNearfieldFn fn,
+MeBool McdFrameworkSetInteractionWithCache(McdFrameworkData *fw, int type1, int type2, McdNearfieldFn fn,
                                            void (*releaseCache)(void *cache))
 {
     if (!typeKnown(fw, type1) || !typeKnown(fw, type2)) {
@@ -256,19 +256,19 @@ MeBool McdFrameworkSetInteractionWithCache(McdFramework *fw, int type1, int type
     return METRUE;
 }
 
-MeBool McdFrameworkSetInteraction(McdFramework *fw, int type1, int type2, McdNearfieldFn fn)
+MeBool McdFrameworkSetInteraction(McdFrameworkData *fw, int type1, int type2, McdNearfieldFn fn)
 {
     return McdFrameworkSetInteractionWithCache(fw, type1, type2, fn, NULL);
 }
 
 /* Calls an application's pair test: the entry is found from the two types, in the table's order. */
-static int userTrampoline(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+static int userTrampoline(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                           MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
     (void)cache;
-    const McdFramework *fw = g1->framework;
+    const McdFrameworkData *fw = g1->framework;
     McdUserIntersectFn fn = fw->interactions[g1->type * fw->typeCapacity + g2->type].userFn;
-    return fn(McdGeometryToID(g1), McdGeometryData(g1), tm1, McdGeometryToID(g2), McdGeometryData(g2), tm2,
+    return fn(McdGeometryToID(g1), McdGeometryShapeData(g1), tm1, McdGeometryToID(g2), McdGeometryShapeData(g2), tm2,
               tolerance, contacts, maxContacts);
 }
 
@@ -281,14 +281,14 @@ MeBool McdFrameworkSetUserInteraction(McdFrameworkID id, int type1, int type2, M
     return METRUE;
 }
 
-McdNearfieldFn McdFrameworkGetInteraction(const McdFramework *fw, int type1, int type2)
+McdNearfieldFn McdFrameworkGetInteraction(const McdFrameworkData *fw, int type1, int type2)
 {
     if (type1 < 0 || type2 < 0 || type1 >= fw->typeCount || type2 >= fw->typeCount)
         return NULL;
     return fw->interactions[type1 * fw->typeCapacity + type2].fn;
 }
 
-MeBool McdFrameworkHasInteraction(const McdFramework *fw, int type1, int type2)
+MeBool McdFrameworkHasInteraction(const McdFrameworkData *fw, int type1, int type2)
 {
     return McdFrameworkGetInteraction(fw, type1, type2) != NULL || McdFrameworkGetInteraction(fw, type2, type1) != NULL;
 }

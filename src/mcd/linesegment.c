@@ -7,7 +7,7 @@
 #include "../me/check.h"
 #include "framework.h"
 
-int McdModelLineSegIntersectInternal(const McdModel *m, const MeVector3 p0, const MeVector3 p1,
+int McdModelLineSegIntersectInternal(const McdModelData *m, const MeVector3 p0, const MeVector3 p1,
                                      McdLineSegIntersectResult *result)
 {
     MeMatrix4Ptr tm = (MeMatrix4Ptr)m->worldTransform;
@@ -28,7 +28,7 @@ int McdModelLineSegIntersectInternal(const McdModel *m, const MeVector3 p0, cons
 
 int McdLineSegIntersect(McdModelID id, const MeVector3 p0, const MeVector3 p1, McdLineSegIntersectResult *result)
 {
-    McdModel *m = McdModelFromID(id, __func__);
+    McdModelData *m = McdModelFromID(id, __func__);
     if (!m)
         return 0;
     ME_CHECK_NOT_NULL(p0, 0);

@@ -10,17 +10,17 @@
 /* A relative transform must be rigid to this tolerance. */
 #define TM_TOLERANCE ME_R(1e-3)
 
-McdModel *McdModelFromID(McdModelID id, const char *function)
+McdModelData *McdModelFromID(McdModelID id, const char *function)
 {
     return MeHandleResolve((uintptr_t)id, ME_HANDLE_MODEL, function, "m", NULL);
 }
 
 #define MODEL_OR_RETURN(m, id, ret)                                                                  \
-    McdModel *m = McdModelFromID((id), __func__);                                                    \
+    McdModelData *m = McdModelFromID((id), __func__);                                                    \
     if (!m)                                                                                          \
     return ret
 
-static void setDefaults(McdModel *m)
+static void setDefaults(McdModelData *m)
 {
     m->transform = NULL;
     MeMatrix4TMMakeIdentity(m->ownTransform);
@@ -34,9 +34,9 @@ static void setDefaults(McdModel *m)
     m->body = NULL;
 }
 
-MeMatrix4Ptr McdModelTransformInternal(McdModel *m) { return m->transform ? m->transform : m->ownTransform; }
+MeMatrix4Ptr McdModelTransformInternal(McdModelData *m) { return m->transform ? m->transform : m->ownTransform; }
 
-static void compound(McdModel *m)
+static void compound(McdModelData *m)
 {
     MeMatrix4Ptr tm = McdModelTransformInternal(m);
     if (m->hasRelative)
@@ -55,7 +55,7 @@ static MeBool transformIsFinite(MeMatrix4 tm)
 }
 
 /* Update in the name of `function`: a non-finite transform is reported and the last AABB kept. */
-static void update(McdModel *m, const char *function)
+static void update(McdModelData *m, const char *function)
 {
     MeMatrix4 previous;
     MeMatrix4Copy(previous, m->worldTransform);
@@ -73,9 +73,9 @@ static void update(McdModel *m, const char *function)
     }
 }
 
-void McdModelUpdateInternal(McdModel *m) { update(m, "McdSpaceUpdateAll"); }
+void McdModelUpdateInternal(McdModelData *m) { update(m, "McdSpaceUpdateAll"); }
 
-void McdModelSetSpaceInternal(McdModel *m, struct McdSpace *space, McdSpaceID spaceID, int index)
+void McdModelSetSpaceInternal(McdModelData *m, struct McdSpaceData *space, McdSpaceID spaceID, int index)
 {
     m->space = space;
     m->spaceID = spaceID;
@@ -83,9 +83,9 @@ void McdModelSetSpaceInternal(McdModel *m, struct McdSpace *space, McdSpaceID sp
 }
 
 /* Take a geometry of the model's framework (reported otherwise). */
-static McdGeometry *geometryFor(McdFramework *fw, McdGeometryID id, const char *function)
+static McdGeometryData *geometryFor(McdFrameworkData *fw, McdGeometryID id, const char *function)
 {
-    McdGeometry *g = McdGeometryFromID(id, function);
+    McdGeometryData *g = McdGeometryFromID(id, function);
     if (g && fw && g->framework != fw) {
         ME_REPORT_IN(function, ME_ERR_FOREIGN_HANDLE, "the geometry belongs to another framework; call ignored");
         return NULL;
@@ -95,11 +95,11 @@ static McdGeometry *geometryFor(McdFramework *fw, McdGeometryID id, const char *
 
 McdModelID McdModelCreate(McdGeometryID geometry)
 {
-    McdGeometry *g = geometryFor(NULL, geometry, __func__);
+    McdGeometryData *g = geometryFor(NULL, geometry, __func__);
     if (!g)
         return NULL;
-    McdFramework *fw = g->framework;
-    McdModel *m = MePoolGetStruct(&fw->modelPool);
+    McdFrameworkData *fw = g->framework;
+    McdModelData *m = MePoolGetStruct(&fw->modelPool);
     if (!m) {
         ME_REPORT(ME_ERR_POOL_FULL, "all %d models are in use; raise modelCount in McdInit", fw->modelPool.capacity);
         return NULL;
@@ -146,7 +146,7 @@ McdFrameworkID McdModelGetFramework(McdModelID id)
 void McdModelSetGeometry(McdModelID id, McdGeometryID geometry)
 {
     MODEL_OR_RETURN(m, id, ME_NOTHING);
-    McdGeometry *g = geometryFor(m->framework, geometry, __func__);
+    McdGeometryData *g = geometryFor(m->framework, geometry, __func__);
     if (!g)
         return;
     g->refCount++;
@@ -289,7 +289,7 @@ void McdModelGetBSphere(McdModelID id, MeVector3 centre, MeReal *radius)
     ME_CHECK_NOT_NULL(centre, ME_NOTHING);
     ME_CHECK_NOT_NULL(radius, ME_NOTHING);
     MeVector3 local;
-    McdGeometryTypeOf(m->geometry)->getBSphere(McdGeometryToID(m->geometry), McdGeometryData(m->geometry), local,
+    McdGeometryTypeOf(m->geometry)->getBSphere(McdGeometryToID(m->geometry), McdGeometryShapeData(m->geometry), local,
                                                 radius);
     MeMatrix4TMTransform(centre, m->worldTransform, local);
 }
@@ -302,7 +302,7 @@ MeBool McdModelGetMassProperties(McdModelID id, MeVector3 com, MeMatrix3 inertia
     ME_CHECK_NOT_NULL(volume, MEFALSE);
     MeMatrix4 massTM, comTM;
     MeMatrix3 local;
-    McdGeometryTypeOf(m->geometry)->getMassProperties(McdGeometryToID(m->geometry), McdGeometryData(m->geometry),
+    McdGeometryTypeOf(m->geometry)->getMassProperties(McdGeometryToID(m->geometry), McdGeometryShapeData(m->geometry),
                                                        massTM, local, volume);
     /* The centre-of-mass frame in the model's frame: mass frame, then the relative transform. */
     MeMatrix4TMCompound(comTM, massTM, m->relativeTransform);

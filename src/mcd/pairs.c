@@ -15,7 +15,7 @@
 
 McdModelPairID McdModelPairCreate(McdModelID model1, McdModelID model2)
 {
-    McdModel *m1 = McdModelFromID(model1, __func__), *m2 = McdModelFromID(model2, __func__);
+    McdModelData *m1 = McdModelFromID(model1, __func__), *m2 = McdModelFromID(model2, __func__);
     if (!m1 || !m2)
         return NULL;
     if (m1->framework != m2->framework) {
@@ -48,7 +48,7 @@ void McdModelPairReset(McdModelPairID pair, McdModelID model1, McdModelID model2
 }
 
 /* Resolve both models of a pair in the caller's name. */
-static MeBool pairModels(const McdModelPair *pair, McdModel **m1, McdModel **m2, const char *function)
+static MeBool pairModels(const McdModelPair *pair, McdModelData **m1, McdModelData **m2, const char *function)
 {
     if (!pair) {
         MeReport(ME_ERR_NULL_ARGUMENT, function, __FILE__, __LINE__, "argument 'pair' is NULL; call ignored");
@@ -59,9 +59,9 @@ static MeBool pairModels(const McdModelPair *pair, McdModel **m1, McdModel **m2,
     return *m1 && *m2;
 }
 
-void McdHelloInternal(McdModelPair *pair, McdModel *m1, McdModel *m2, const char *function)
+void McdHelloInternal(McdModelPair *pair, McdModelData *m1, McdModelData *m2, const char *function)
 {
-    McdFramework *fw = m1->framework;
+    McdFrameworkData *fw = m1->framework;
     int t1 = m1->geometry->type, t2 = m2->geometry->type;
     pair->cache = NULL;
     pair->swapped = 0;
@@ -87,7 +87,7 @@ void McdHelloInternal(McdModelPair *pair, McdModel *m1, McdModel *m2, const char
 
 void McdHello(McdModelPairID pair)
 {
-    McdModel *m1, *m2;
+    McdModelData *m1, *m2;
     if (!pairModels(pair, &m1, &m2, __func__))
         return;
     if (m1->framework != m2->framework) {
@@ -97,9 +97,9 @@ void McdHello(McdModelPairID pair)
     McdHelloInternal(pair, m1, m2, __func__);
 }
 
-void McdGoodbyeInternal(McdModelPair *pair, McdModel *m1)
+void McdGoodbyeInternal(McdModelPair *pair, McdModelData *m1)
 {
-    McdFramework *fw = m1->framework;
+    McdFrameworkData *fw = m1->framework;
     if (pair->cache && pair->testIndex >= 0 && fw->interactions[pair->testIndex].releaseCache)
         fw->interactions[pair->testIndex].releaseCache(pair->cache);
     pair->cache = NULL;
@@ -109,7 +109,7 @@ void McdGoodbyeInternal(McdModelPair *pair, McdModel *m1)
 
 void McdGoodbye(McdModelPairID pair)
 {
-    McdModel *m1, *m2;
+    McdModelData *m1, *m2;
     if (pairModels(pair, &m1, &m2, __func__))
         McdGoodbyeInternal(pair, m1);
 }
@@ -143,7 +143,7 @@ static void clearResult(McdModelPair *pair, McdIntersectResult *result)
 int McdIntersect(McdModelPairID pair, McdIntersectResult *result)
 {
     ME_CHECK_NOT_NULL(result, 0);
-    McdModel *m1, *m2;
+    McdModelData *m1, *m2;
     if (!pairModels(pair, &m1, &m2, __func__)) {
         clearResult(pair, result);
         return 0;
@@ -151,7 +151,7 @@ int McdIntersect(McdModelPairID pair, McdIntersectResult *result)
     return McdIntersectModels(pair, m1, m2, result, __func__); /* which clears the result first */
 }
 
-int McdIntersectModels(McdModelPair *pair, McdModel *m1, McdModel *m2, McdIntersectResult *result,
+int McdIntersectModels(McdModelPair *pair, McdModelData *m1, McdModelData *m2, McdIntersectResult *result,
                        const char *function)
 {
     clearResult(pair, result);
@@ -161,7 +161,7 @@ int McdIntersectModels(McdModelPair *pair, McdModel *m1, McdModel *m2, McdInters
                   result->contactMaxCount);
         return 0;
     }
-    McdFramework *fw = m1->framework;
+    McdFrameworkData *fw = m1->framework;
     if (pair->testIndex < 0)
         return 0;
     const McdRequest *request = pair->request ? pair->request : &fw->defaultRequest;
@@ -199,7 +199,7 @@ int McdIntersectModels(McdModelPair *pair, McdModel *m1, McdModel *m2, McdInters
 
 MeBool McdNearby(McdModelPairID pair)
 {
-    McdModel *m1, *m2;
+    McdModelData *m1, *m2;
     if (!pairModels(pair, &m1, &m2, __func__))
         return MEFALSE;
     for (int j = 0; j < 3; j++)

@@ -8,17 +8,17 @@
 #include "../me/handle.h"
 #include "space.h"
 
-McdSpace *McdSpaceFromID(McdSpaceID id, const char *function)
+McdSpaceData *McdSpaceFromID(McdSpaceID id, const char *function)
 {
     return MeHandleResolveOwner((uintptr_t)id, ME_HANDLE_SPACE, function, "space");
 }
 
 #define SPACE_OR_RETURN(s, id, ret)                                                                  \
-    McdSpace *s = McdSpaceFromID((id), __func__);                                                    \
+    McdSpaceData *s = McdSpaceFromID((id), __func__);                                                    \
     if (!s)                                                                                          \
     return ret
 
-McdSpace *McdSpaceCreateInternal(struct McdFramework *fw, int axes, int objectCount, int pairCount, const char *function)
+McdSpaceData *McdSpaceCreateInternal(struct McdFrameworkData *fw, int axes, int objectCount, int pairCount, const char *function)
 {
     if (axes <= 0 || axes > McdAllAxes) {
         ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE,
@@ -32,7 +32,7 @@ McdSpace *McdSpaceCreateInternal(struct McdFramework *fw, int axes, int objectCo
                      pairCount, (long)ME_HANDLE_MAX_INDEX);
         return NULL;
     }
-    McdSpace *s = MeMemoryCreateZeroed(sizeof *s);
+    McdSpaceData *s = MeMemoryCreateZeroed(sizeof *s);
     if (!s)
         return NULL;
     s->framework = fw;
@@ -54,7 +54,7 @@ McdSpace *McdSpaceCreateInternal(struct McdFramework *fw, int axes, int objectCo
     return s;
 }
 
-void McdSpaceDestroyInternal(McdSpace *s)
+void McdSpaceDestroyInternal(McdSpaceData *s)
 {
     for (int slot = 0; slot < s->maxObjects; slot++) /* release the culling tables */
         if (s->obj[slot].flags & MCD_OBJ_LIVE)
@@ -104,7 +104,7 @@ void McdSpaceBuild(McdSpaceID space)
         McdSpaceRebuild(s, __func__);
 }
 
-MeBool McdSpaceCheckChanging(const McdSpace *s, MeBool wanted, const char *function)
+MeBool McdSpaceCheckChanging(const McdSpaceData *s, MeBool wanted, const char *function)
 {
     if (s->changing == wanted)
         return METRUE;
@@ -158,7 +158,7 @@ void McdSpacePairIteratorBegin(McdSpaceID space, McdSpacePairIterator *iter)
 static MeBool fill(McdSpaceID space, McdSpacePairIterator *iter, McdModelPairContainer *c, MeBool all,
                    const char *function)
 {
-    McdSpace *s = McdSpaceFromID(space, function);
+    McdSpaceData *s = McdSpaceFromID(space, function);
     if (!s)
         return MEFALSE;
     if (!iter || !c) {

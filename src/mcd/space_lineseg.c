@@ -53,7 +53,7 @@ static MeBool hitBefore(const Hit *x, const Hit *y)
 }
 
 typedef struct Query {
-    McdSpace *s;
+    McdSpaceData *s;
     MeReal p0[3], p1[3], d[3];
 } Query;
 
@@ -153,7 +153,7 @@ int McdSpaceGetLineSegIntersections(McdSpaceID space, const MeVector3 orig, cons
         while (at > 0) {
             Hit prev;
             prev.r = results[at - 1];
-            McdModel *pm = McdModelFromID(prev.r.model, __func__);
+            McdModelData *pm = McdModelFromID(prev.r.model, __func__);
             prev.slot = pm ? pm->spaceIndex : 0;
             prev.key = q.s->obj[prev.slot].key;
             if (!hitBefore(&h, &prev))

@@ -11,7 +11,7 @@
 /* ---- a fake pair test: one contact at the midpoint of the two origins, normal 1 -> 2 ------------ */
 static int fakeCalls;
 static int fakeFirstType;
-static int fakeTest(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2, MeReal tolerance,
+static int fakeTest(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2, MeReal tolerance,
                     McdContact *contacts, int maxContacts, void **cache)
 {
     (void)g2, (void)tolerance, (void)maxContacts;
@@ -314,7 +314,7 @@ static void interaction_table_one_way_and_swap(void **state)
     (void)state;
     karma_capture_messages();
     McdFrameworkID fwId = McdInit(0, 8, 0, 1);
-    McdFramework *fw = McdFrameworkFromID(fwId, "test");
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, "test");
     /* Registered for (Box, Sphere) only. */
     assert_true(McdFrameworkSetInteractionWithCache(fw, kMcdGeometryTypeBox, kMcdGeometryTypeSphere, fakeTest,
                                                     fakeRelease));
@@ -415,7 +415,7 @@ static void every_primitive_pair_has_a_test(void **state)
 {
     (void)state;
     McdFrameworkID fwId = McdInit(0, 1, 0, 1);
-    McdFramework *fw = McdFrameworkFromID(fwId, "test");
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, "test");
     McdPrimitivesRegisterInteractions(fwId);
     static const int prims[] = {kMcdGeometryTypeSphere, kMcdGeometryTypeBox, kMcdGeometryTypePlane,
                                 kMcdGeometryTypeCylinder, kMcdGeometryTypeSphyl, kMcdGeometryTypeCone};

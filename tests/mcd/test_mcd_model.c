@@ -201,10 +201,10 @@ static void destroy_refused_in_a_space(void **state)
     (void)state;
     karma_capture_messages();
     McdModelID m = McdModelCreate(McdSphereCreate(fw, 1));
-    McdModel *rec = McdModelFromID(m, "test");
+    McdModelData *rec = McdModelFromID(m, "test");
     int fakeSpace;
     McdSpaceID fakeId = (McdSpaceID)(uintptr_t)0x1234;
-    McdModelSetSpaceInternal(rec, (struct McdSpace *)(void *)&fakeSpace, fakeId, 0);
+    McdModelSetSpaceInternal(rec, (struct McdSpaceData *)(void *)&fakeSpace, fakeId, 0);
     assert_ptr_equal(McdModelGetSpace(m), fakeId);
     assert_reports(ME_ERR_MCD_IN_USE, McdModelDestroy(m));
     assert_true(McdModelIsValid(m));

@@ -62,10 +62,10 @@ static MeBool checkDimensions(MeReal dx, MeReal dy, MeReal dz, const char *funct
 
 McdBoxID McdBoxCreate(McdFrameworkID fwId, MeReal dx, MeReal dy, MeReal dz)
 {
-    McdFramework *fw = McdFrameworkFromID(fwId, __func__);
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
     if (!fw || !checkDimensions(dx, dy, dz, __func__))
         return NULL;
-    McdGeometry *g = McdGeometryNew(fw, kMcdGeometryTypeBox, __func__);
+    McdGeometryData *g = McdGeometryNew(fw, kMcdGeometryTypeBox, __func__);
     if (!g)
         return NULL;
     MeVector3Set(g->u.box.radii, ME_R(0.5) * dx, ME_R(0.5) * dy, ME_R(0.5) * dz);
@@ -74,7 +74,7 @@ McdBoxID McdBoxCreate(McdFrameworkID fwId, MeReal dx, MeReal dy, MeReal dz)
 
 void McdBoxGetRadii(McdBoxID id, MeVector3 radii)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
     ME_CHECK_NOT_NULL(radii, ME_NOTHING);
     if (g)
         MeVector3Copy(radii, g->u.box.radii);
@@ -84,7 +84,7 @@ void McdBoxGetRadii(McdBoxID id, MeVector3 radii)
 
 void McdBoxGetDimensions(McdBoxID id, MeReal *dx, MeReal *dy, MeReal *dz)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
     ME_CHECK_NOT_NULL(dx, ME_NOTHING);
     ME_CHECK_NOT_NULL(dy, ME_NOTHING);
     ME_CHECK_NOT_NULL(dz, ME_NOTHING);
@@ -95,7 +95,7 @@ void McdBoxGetDimensions(McdBoxID id, MeReal *dx, MeReal *dy, MeReal *dz)
 
 void McdBoxSetDimensions(McdBoxID id, MeReal dx, MeReal dy, MeReal dz)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
     if (g && checkDimensions(dx, dy, dz, __func__))
         MeVector3Set(g->u.box.radii, ME_R(0.5) * dx, ME_R(0.5) * dy, ME_R(0.5) * dz);
 }
