@@ -77,6 +77,25 @@ typedef struct McdIntersectResult {
     void *data;            /**< test-specific extra data, or NULL */
 } McdIntersectResult;
 
+/* ---- Karma 1.2's callback types ------------------------------------------------------------ */
+
+/** Called by McdTerm before anything is freed (McdFrameworkRegisterTermAction). */
+typedef void (*McdTermAction)(McdFrameworkID frame);
+/** Called by McdModelUpdate (and the space's update) before the model's transforms are compounded:
+ *  the place to move a model that follows something else. */
+typedef void (*McdModelUpdateFnPtr)(McdModel *model);
+/** Called by McdIntersect for each model of the pair that has one, after the contacts are made. */
+typedef void (*McdModelIntersectFnPtr)(McdModel *model, McdIntersectResult *result);
+/** Called by McdHello (Karma's hook that chooses a pair's request). */
+typedef void (*McdHelloCallbackFnPtr)(McdModelPair *pair);
+/** Called for each overlapping pair that a full pair pool could not record. */
+typedef void (*McdSpacePoolErrorFnPtr)(McdModelID model1, McdModelID model2);
+
+/** Debug drawing options (McdFrameworkSetDebugDrawing). */
+typedef enum McdDebugDrawOptions {
+    kMcdDebugDrawAABB = 0x001 /**< draw the models' AABBs */
+} McdDebugDrawOptions;
+
 ME_EXTERN_C_END
 
 #endif /* MCD_TYPES_H */

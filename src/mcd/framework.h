@@ -21,7 +21,8 @@
 #define MCD_TERM_ACTION_MAX 16
 
 typedef struct McdTermActionEntry {
-    McdFrameworkTermActionFn fn;
+    McdFrameworkTermActionFn fn; /* our form (with data), or NULL */
+    McdTermAction karmaFn;       /* Karma's form (McdFrameworkRegisterTermAction), or NULL */
     void *data;
 } McdTermActionEntry;
 
@@ -41,6 +42,9 @@ typedef struct McdFrameworkData {
     MeReal lengthScale;
     MeReal defaultContactTolerance;
     McdRequest defaultRequest;
+    McdRequest *defaultRequestPtr; /* the request pairs use (&defaultRequest unless the user set one) */
+    McdHelloCallbackFnPtr helloCallback; /* McdSetHelloCallback, or NULL */
+    McdLineSegIntersectFnPtr *lineSegFns; /* typeCapacity entries: McdFrameworkSetLineSegInteraction */
     int typeCount;                 /* built-in + registered user types */
     int typeCapacity;              /* kMcdGeometryBuiltInTypes + geoTypeMaxCount */
     McdGeometryTypeDesc *types;    /* typeCapacity entries */
@@ -73,6 +77,9 @@ MeBool McdFrameworkSetInteractionWithCache(McdFrameworkData *fw, int type1, int 
 McdNearfieldFn McdFrameworkGetInteraction(const McdFrameworkData *fw, int type1, int type2);
 /** Whether a test exists for the pair either way round. */
 MeBool McdFrameworkHasInteraction(const McdFrameworkData *fw, int type1, int type2);
+/** The segment test of a type in Karma's form: the user's (McdFrameworkSetLineSegInteraction), the
+ *  built-in one, or NULL when the type has none. */
+McdLineSegIntersectFnPtr McdFrameworkLineSegFn(const McdFrameworkData *fw, int type);
 /** Register every primitive pair test (nearfield/register.c). */
 void McdNearfieldRegisterPrimitives(McdFrameworkData *fw);
 

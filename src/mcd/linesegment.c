@@ -10,6 +10,11 @@
 int McdModelLineSegIntersectInternal(const McdModelData *m, const MeVector3 p0, const MeVector3 p1,
                                      McdLineSegIntersectResult *result)
 {
+    McdLineSegIntersectFnPtr user = m->framework->lineSegFns[m->geometry->type];
+    if (user) { /* the application's test for this type (McdFrameworkSetLineSegInteraction) */
+        MeVector3 a = {p0[0], p0[1], p0[2]}, b = {p1[0], p1[1], p1[2]};
+        return user(McdModelToID(m), a, b, result) != 0;
+    }
     MeMatrix4Ptr tm = (MeMatrix4Ptr)m->worldTransform;
     MeVector3 a, b, n;
     MeReal t;

@@ -30,6 +30,7 @@ typedef struct McdGeometryData {
     struct McdFrameworkData *framework;
     int type;             /* McdGeometryType or a user type number */
     int refCount;         /* models and aggregates using it; destroy is refused while > 0 */
+    int userRefCount;     /* holds taken by McdGeometryIncrementReferenceCount; also refuse destroy */
     union {
         McdSphereData sphere;
         McdBoxData box;
@@ -59,6 +60,15 @@ typedef struct McdModelData {
     McdSpaceID spaceID;            /* its ID (McdModelGetSpace), NULL when in no space */
     int spaceIndex;                /* its slot in that space */
     MeBool frozen;
+    /* Karma's hooks and pointers (McdModel.h); none is followed by Mcd itself except as noted. */
+    MeReal (*relativePtr)[4];          /* McdModelSetRelativeTransformPtrs: read at each update, or NULL */
+    MeReal (*compoundPtr)[4];          /* receives the geometry-to-world transform at each update, or NULL */
+    MeReal *linearVelocity;            /* kept for safe time (later work) */
+    MeReal *angularVelocity;
+    int requestID;                     /* McduRequestTable's class of the model */
+    McdModelUpdateFnPtr updateFn;      /* called first by each update */
+    McdModelIntersectFnPtr intersectFn; /* called by McdIntersect after the contacts are made */
+    MeBool inUpdateFn;                 /* updateFn is running (an update it calls does not call it again) */
 } McdModelData;
 
 /** A pair test: contacts (world frame, normal from g1 to g2, separation < 0 when overlapping) for g1

@@ -117,12 +117,34 @@ MeBool McdSpaceCheckChanging(const McdSpaceData *s, MeBool wanted, const char *f
     return MEFALSE;
 }
 
-McdSpacePoolFullHandler McdSpaceSetPoolFullHandler(McdSpaceID space, McdSpacePoolFullHandler handler)
+void McdSpaceSetPoolFullHandler(McdSpaceID space, McdSpacePoolErrorFnPtr handler)
+{
+    SPACE_OR_RETURN(s, space, ME_NOTHING);
+    s->poolFull = handler;
+}
+
+McdSpacePoolErrorFnPtr McdSpaceGetPoolFullHandler(McdSpaceID space)
 {
     SPACE_OR_RETURN(s, space, NULL);
-    McdSpacePoolFullHandler old = s->poolFull;
-    s->poolFull = handler;
-    return old;
+    return s->poolFull;
+}
+
+void McdSpaceSetUserData(McdSpaceID space, void *data)
+{
+    SPACE_OR_RETURN(s, space, ME_NOTHING);
+    s->userData = data;
+}
+
+void *McdSpaceGetUserData(McdSpaceID space)
+{
+    SPACE_OR_RETURN(s, space, NULL);
+    return s->userData;
+}
+
+void McdSpaceSetAABBFn(McdSpaceID space, McdSpaceUpdateAABBFnPtr updateAABBFn)
+{
+    SPACE_OR_RETURN(s, space, ME_NOTHING);
+    s->updateAABBFn = updateAABBFn;
 }
 
 int McdSpaceGetPairCount(McdSpaceID space)
@@ -295,4 +317,53 @@ MeBool McdModelPairContainerInsertStayingPair(McdModelPairContainer *c, McdModel
         return MEFALSE;
     c->stayingEnd++;
     return METRUE;
+}
+
+void McdModelPairContainerInit(McdModelPairContainer *c, McdModelPair **array, int size)
+{
+    ME_CHECK_NOT_NULL(c, ME_NOTHING);
+    if (size < 0 || (size > 0 && !array)) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "size (%d) must be >= 0 with an array of that many entries; call ignored",
+                  size);
+        return;
+    }
+    c->array = array;
+    c->size = size;
+    McdModelPairContainerReset(c);
+}
+
+void McdModelPairContainerRemovePair(McdModelPairContainer *c, McdModelPairID *entry)
+{
+    ME_CHECK_NOT_NULL(c, ME_NOTHING);
+    ME_CHECK_NOT_NULL(entry, ME_NOTHING);
+    ptrdiff_t at = entry - c->array;
+    if (at < c->goodbyeFirst || at >= c->stayingEnd) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "the entry is not one of the container's pairs; call ignored");
+        return;
+    }
+    /* Close the gap, keeping the order of every range; the ranges after it move down by one. */
+    memmove(&c->array[at], &c->array[at + 1], (size_t)(c->stayingEnd - at - 1) * sizeof *c->array);
+    if (at < c->goodbyeEnd)
+        c->goodbyeEnd--;
+    if (at < c->helloFirst)
+        c->helloFirst--;
+    if (at < c->helloEndStayingFirst)
+        c->helloEndStayingFirst--;
+    c->stayingEnd--;
+}
+
+void McdModelPairContainerPrintStats(McdModelPairContainer *c)
+{
+    ME_CHECK_NOT_NULL(c, ME_NOTHING);
+    MeInfo(0, "McdModelPairContainer (size %d): %d hello, %d staying, %d goodbye", c->size,
+           McdModelPairContainerGetHelloCount(c), McdModelPairContainerGetStayingCount(c),
+           McdModelPairContainerGetGoodbyeCount(c));
+}
+
+void McdModelPairContainerIteratorInit(McdModelPairContainerIterator *iter, McdModelPairContainer *c)
+{
+    ME_CHECK_NOT_NULL(iter, ME_NOTHING);
+    ME_CHECK_NOT_NULL(c, ME_NOTHING);
+    iter->container = c;
+    iter->count = c->helloFirst;
 }

@@ -126,9 +126,16 @@ typedef struct McdSpaceData {
     MeBool changing;
     MeU32 reportNumber;
     McdSpacePoolFullHandler poolFull;
+    McdSpaceUpdateAABBFnPtr updateAABBFn; /* NULL: McdModelUpdate */
+    void *userData;
     int lostTotal, lostNow;
     MeBool lostPending;
 } McdSpaceData;
+
+/* ---- space_model.c ------------------------------------------------------------------------ */
+/* Take a model out of its space whatever the space's state (McdFrameworkDestroyAllModelsAndGeometries):
+ * its pairs say Goodbye at the next McdSpaceEndChanges. */
+void McdSpaceForgetModel(struct McdModelData *m);
 
 /* ---- space.c ------------------------------------------------------------------------------ */
 /* Resolve a space ID (reported in `function`'s name; NULL when invalid). */

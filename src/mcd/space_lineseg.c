@@ -97,7 +97,7 @@ static MeBool queryModel(const Query *q, int slot, Hit *h)
 }
 
 static int firstHit(McdSpaceID space, const MeVector3 orig, const MeVector3 dest, McdLineSegIntersectResult *result,
-                    McdSpaceLineSegFilterFn filter, void *data, const char *function)
+                    McdLineSegIntersectEnableCallback filter, void *data, const char *function)
 {
     Query q;
     if (!queryStart(&q, space, orig, dest, result, function))
@@ -126,8 +126,8 @@ int McdSpaceGetLineSegFirstIntersection(McdSpaceID space, const MeVector3 orig, 
 }
 
 int McdSpaceGetLineSegFirstEnabledIntersection(McdSpaceID space, const MeVector3 orig, const MeVector3 dest,
-                                               McdLineSegIntersectResult *result, McdSpaceLineSegFilterFn filterCB,
-                                               void *data)
+                                               McdLineSegIntersectEnableCallback filterCB, void *data,
+                                               McdLineSegIntersectResult *result)
 {
     return firstHit(space, orig, dest, result, filterCB, data, __func__);
 }

@@ -107,10 +107,35 @@ MeBool McdSpaceInsertModel(McdSpaceID space, McdModelID model)
     return insert(space, model, NULL, 0, 0, __func__);
 }
 
+void McdSpaceSetModelCullingParameters(McdSpaceID space, McdModelID model, McdCullingTable *table, int index, int id)
+{
+    McdModelData *m;
+    McdSpaceData *s = modelSpace(model, &m, 1, __func__);
+    if (!s)
+        return;
+    if (m->space != McdSpaceFromID(space, __func__)) {
+        ME_REPORT(ME_ERR_FOREIGN_HANDLE, "the model is in another space; call ignored");
+        return;
+    }
+    if (table && (index < 0 || index >= table->size)) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "index (%d) must be in [0, %d) (the table's size); call ignored", index,
+                  table->size);
+        return;
+    }
+    McdSpaceObjectSetCulling(s, m->spaceIndex, table, index, id);
+}
+
 MeBool McdSpaceInsertModelWithCulling(McdSpaceID space, McdModelID model, McdCullingTableID table, int index, int id)
 {
     ME_CHECK_NOT_NULL(table, MEFALSE);
     return insert(space, model, (McdCullingTable *)table, index, id, __func__);
+}
+
+void McdSpaceForgetModel(struct McdModelData *m)
+{
+    McdSpaceObjectRemove(m->space, m->spaceIndex);
+    m->frozen = MEFALSE;
+    McdModelSetSpaceInternal(m, NULL, NULL, -1);
 }
 
 MeBool McdSpaceRemoveModel(McdModelID model)
@@ -135,7 +160,10 @@ void McdSpaceUpdateAll(McdSpaceID space)
         if (!(o->flags & MCD_OBJ_LIVE) || !o->model)
             continue;
         if (!(o->flags & MCD_OBJ_FROZEN)) {
-            McdModelUpdateInternal(o->model);
+            if (s->updateAABBFn)
+                s->updateAABBFn((McdModelID)o->handle, 0);
+            else
+                McdModelUpdateInternal(o->model);
             takeModel(s, slot, o->model, __func__);
         } else if (o->key != o->model->sortKey) {
             o->key = o->model->sortKey;
@@ -204,21 +232,28 @@ static McdSpaceData *pairSpace(McdModelID model1, McdModelID model2, int *a, int
     return s;
 }
 
-void McdSpaceDisablePair(McdModelID model1, McdModelID model2)
+MeBool McdSpaceDisablePair(McdModelID model1, McdModelID model2)
 {
     int a, b;
     McdSpaceData *s = pairSpace(model1, model2, &a, &b, 1, __func__);
-    if (s && !McdSpacePairSetDisabled(s, a, b, METRUE))
+    if (!s)
+        return MEFALSE;
+    if (!McdSpacePairSetDisabled(s, a, b, METRUE)) {
         ME_REPORT(ME_ERR_POOL_FULL, "the space's pair pool is full (pairCount = %d): the pair was not disabled; "
                   "raise pairCount in McdSpaceAxisSortCreate", s->maxPairs);
+        return MEFALSE;
+    }
+    return METRUE;
 }
 
-void McdSpaceEnablePair(McdModelID model1, McdModelID model2)
+MeBool McdSpaceEnablePair(McdModelID model1, McdModelID model2)
 {
     int a, b;
     McdSpaceData *s = pairSpace(model1, model2, &a, &b, 1, __func__);
-    if (s)
-        McdSpacePairSetDisabled(s, a, b, MEFALSE);
+    if (!s)
+        return MEFALSE;
+    McdSpacePairSetDisabled(s, a, b, MEFALSE);
+    return METRUE;
 }
 
 MeBool McdSpacePairIsEnabled(McdModelID model1, McdModelID model2)

@@ -72,14 +72,24 @@ McdBoxID McdBoxCreate(McdFrameworkID fwId, MeReal dx, MeReal dy, MeReal dz)
     return McdGeometryToID(g);
 }
 
-void McdBoxGetRadii(McdBoxID id, MeVector3 radii)
+MeReal *McdBoxGetRadii(McdBoxID id)
 {
     McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
-    ME_CHECK_NOT_NULL(radii, ME_NOTHING);
+    return g ? g->u.box.radii : NULL; /* geometries live in a pool slot: the pointer stays valid */
+}
+
+void McdBoxGetXYAABB(McdBoxID id, MeMatrix4 tm, MeReal bounds[4])
+{
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
     if (g)
-        MeVector3Copy(radii, g->u.box.radii);
-    else
-        MeVector3Set(radii, 0, 0, 0);
+        McdGeometryXYAABB(g, tm, bounds, __func__);
+}
+
+void McdBoxMaximumPointLocal(McdBoxID id, MeReal *inDir, MeReal *outPoint)
+{
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
+    if (g)
+        McdGeometryMaximumPointLocalChecked(g, inDir, outPoint, __func__);
 }
 
 void McdBoxGetDimensions(McdBoxID id, MeReal *dx, MeReal *dy, MeReal *dz)

@@ -100,3 +100,27 @@ MeReal McdCylinderGetHalfHeight(McdCylinderID id)
     McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
     return g ? g->u.cylinder.halfHeight : 0;
 }
+
+void McdCylinderSetGeometricalParameters(McdCylinderID id, MeReal inRadius, MeReal inHeight)
+{
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
+    if (g && McdCheckDimension(inRadius, "inRadius", MEFALSE, __func__) &&
+        McdCheckDimension(inHeight, "inHeight", MEFALSE, __func__)) {
+        g->u.cylinder.radius = inRadius;
+        g->u.cylinder.halfHeight = ME_R(0.5) * inHeight;
+    }
+}
+
+void McdCylinderGetXYAABB(McdCylinderID id, MeMatrix4 tm, MeReal bounds[4])
+{
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
+    if (g)
+        McdGeometryXYAABB(g, tm, bounds, __func__);
+}
+
+void McdCylinderMaximumPointLocal(McdCylinderID id, MeReal *inDir, MeReal *outPoint)
+{
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
+    if (g)
+        McdGeometryMaximumPointLocalChecked(g, inDir, outPoint, __func__);
+}

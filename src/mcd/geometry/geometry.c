@@ -89,9 +89,9 @@ MeBool McdGeometryLineSegInternal(const McdGeometryData *g, const MeVector3 p0, 
 void McdGeometryDestroy(McdGeometryID id)
 {
     GEOMETRY_OR_RETURN(g, id, ME_NOTHING);
-    if (g->refCount > 0) {
-        ME_REPORT(ME_ERR_MCD_IN_USE, "the geometry is used by %d model(s); destroy or re-point them first; call ignored",
-                  g->refCount);
+    if (g->refCount > 0 || g->userRefCount > 0) {
+        ME_REPORT(ME_ERR_MCD_IN_USE, "the geometry is used by %d model(s) and holds %d reference(s) taken by "
+                  "McdGeometryIncrementReferenceCount; release them first; call ignored", g->refCount, g->userRefCount);
         return;
     }
     const McdGeometryTypeDesc *t = McdGeometryTypeOf(g);
@@ -114,10 +114,81 @@ const char *McdGeometryGetTypeName(McdGeometryID id)
     return McdGeometryTypeOf(g)->typeName;
 }
 
+static MeMatrix4Ptr identityIfNull(MeMatrix4 tm, MeMatrix4 storage);
+
 int McdGeometryGetReferenceCount(McdGeometryID id)
 {
     GEOMETRY_OR_RETURN(g, id, 0);
-    return g->refCount;
+    return g->refCount + g->userRefCount;
+}
+
+void McdGeometryIncrementReferenceCount(McdGeometryID id)
+{
+    GEOMETRY_OR_RETURN(g, id, ME_NOTHING);
+    g->userRefCount++;
+}
+
+void McdGeometryDecrementReferenceCount(McdGeometryID id)
+{
+    GEOMETRY_OR_RETURN(g, id, ME_NOTHING);
+    if (g->userRefCount == 0) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "the geometry holds no reference taken by McdGeometryIncrementReferenceCount "
+                                         "(its %d models hold theirs until destroyed); call ignored", g->refCount);
+        return;
+    }
+    g->userRefCount--;
+}
+
+void McdGeometrySetReferenceCount(McdGeometryID id, int refCount)
+{
+    GEOMETRY_OR_RETURN(g, id, ME_NOTHING);
+    if (refCount < g->refCount) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "refCount (%d) is below the %d models that use the geometry; call ignored",
+                  refCount, g->refCount);
+        return;
+    }
+    g->userRefCount = refCount - g->refCount;
+}
+
+int McdGeometryGetType(McdGeometryID id)
+{
+    GEOMETRY_OR_RETURN(g, id, -1);
+    return g->type;
+}
+
+McdLineSegIntersectFnPtr McdGeometryGetLineSegIntersectFnPtr(McdGeometryID id)
+{
+    GEOMETRY_OR_RETURN(g, id, NULL);
+    return McdFrameworkLineSegFn(g->framework, g->type);
+}
+
+void McdGeometryXYAABB(const McdGeometryData *g, MeMatrix4 tm, MeReal bounds[4], const char *function)
+{
+    if (!bounds) {
+        ME_REPORT_IN(function, ME_ERR_NULL_ARGUMENT, "argument 'bounds' is NULL; call ignored");
+        return;
+    }
+    MeMatrix4 identity;
+    MeVector3 lo, hi;
+    McdGeometryAABBInternal(g, identityIfNull(tm, identity), lo, hi);
+    bounds[0] = lo[0];
+    bounds[1] = hi[0];
+    bounds[2] = lo[1];
+    bounds[3] = hi[1];
+}
+
+void McdGeometryMaximumPointLocalChecked(const McdGeometryData *g, const MeReal *dir, MeReal *point,
+                                         const char *function)
+{
+    if (!dir || !point) {
+        ME_REPORT_IN(function, ME_ERR_NULL_ARGUMENT, "argument 'inDir' or 'outPoint' is NULL; call ignored");
+        return;
+    }
+    if (!(ME_IS_FINITE(dir[0]) && ME_IS_FINITE(dir[1]) && ME_IS_FINITE(dir[2]))) {
+        ME_REPORT_IN(function, ME_ERR_NONFINITE_ARGUMENT, "argument 'inDir' holds NaN or infinity; call ignored");
+        return;
+    }
+    McdGeometrySupportLocal(g, dir, point);
 }
 
 McdFrameworkID McdGeometryGetFramework(McdGeometryID id)
@@ -161,16 +232,16 @@ void McdGeometryMaximumPoint(McdGeometryID id, MeMatrix4 tm, const MeVector3 dir
     McdGeometrySupportWorld(g, identityIfNull(tm, identity), dir, point);
 }
 
-MeBool McdGeometryGetMassProperties(McdGeometryID id, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume)
+MeI16 McdGeometryGetMassProperties(McdGeometryID id, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume)
 {
-    GEOMETRY_OR_RETURN(g, id, MEFALSE);
-    ME_CHECK_NOT_NULL(inertia, MEFALSE);
-    ME_CHECK_NOT_NULL(volume, MEFALSE);
+    GEOMETRY_OR_RETURN(g, id, 1);
+    ME_CHECK_NOT_NULL(inertia, 1);
+    ME_CHECK_NOT_NULL(volume, 1);
     MeMatrix4 rel;
     McdGeometryTypeOf(g)->getMassProperties(id, McdGeometryShapeData(g), rel, inertia, volume);
     if (relTM)
         MeMatrix4Copy(relTM, rel);
-    return ME_IS_FINITE(*volume) && *volume > 0;
+    return ME_IS_FINITE(*volume) && *volume > 0 ? 0 : 1; /* Karma's convention: 0 means success */
 }
 
 void McdGeometryDebugDraw(McdGeometryID id, MeMatrix4 tm, const float colour[3])
