@@ -23,26 +23,66 @@
 
 ME_EXTERN_C_BEGIN
 
-/** Declares Karma's per-type functions of a primitive T (Sphere, Box, ...):
- *  T##GetTypeId(): the type number; T##RegisterType(fw): nothing to do (built in);
- *  T##Destroy(g): McdGeometryDestroy; T##GetBSphere, T##GetMassProperties, T##GetTypeName,
- *  T##DebugDraw: the generic calls, refused (ME_ERR_BAD_HANDLE) for a geometry of another type. */
-#define MCD_DECLARE_PRIMITIVE_TYPE(T)                                                                   \
-    ME_API MeI16 T##GetTypeId(void);                                                                     \
-    ME_API void T##RegisterType(McdFramework *frame);                                                    \
-    ME_API void T##Destroy(McdGeometryID g);                                                             \
-    ME_API void T##GetBSphere(McdGeometryID g, MeVector3 center, MeReal *radius);                        \
-    ME_API MeI16 T##GetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume); \
-    ME_API char *T##GetTypeName(McdGeometryID g);                                                        \
-    ME_API void T##DebugDraw(const McdGeometryID g, MeMatrix4 tm, const MeReal colour[3])
+/* Karma's per-type functions of each primitive T (Sphere, Box, ...): T##GetTypeId() gives the type
+ * number; T##RegisterType(fw) has nothing to do (built in); T##Destroy is McdGeometryDestroy; the
+ * others are the generic calls. Each refuses (ME_ERR_WRONG_HANDLE_KIND) a geometry of another type. */
 
-MCD_DECLARE_PRIMITIVE_TYPE(McdNull);
-MCD_DECLARE_PRIMITIVE_TYPE(McdSphere);
-MCD_DECLARE_PRIMITIVE_TYPE(McdBox);
-MCD_DECLARE_PRIMITIVE_TYPE(McdPlane);
-MCD_DECLARE_PRIMITIVE_TYPE(McdCylinder);
-MCD_DECLARE_PRIMITIVE_TYPE(McdSphyl);
-MCD_DECLARE_PRIMITIVE_TYPE(McdCone);
+ME_API MeI16 McdNullGetTypeId(void);
+ME_API void McdNullRegisterType(McdFramework *frame);
+ME_API void McdNullDestroy(McdGeometryID g);
+ME_API void McdNullGetBSphere(McdGeometryID g, MeVector3 center, MeReal *radius);
+ME_API MeI16 McdNullGetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume);
+ME_API char *McdNullGetTypeName(McdGeometryID g);
+ME_API void McdNullDebugDraw(const McdGeometryID g, MeMatrix4 tm, const MeReal colour[3]);
+
+ME_API MeI16 McdSphereGetTypeId(void);
+ME_API void McdSphereRegisterType(McdFramework *frame);
+ME_API void McdSphereDestroy(McdGeometryID g);
+ME_API void McdSphereGetBSphere(McdGeometryID g, MeVector3 center, MeReal *radius);
+ME_API MeI16 McdSphereGetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume);
+ME_API char *McdSphereGetTypeName(McdGeometryID g);
+ME_API void McdSphereDebugDraw(const McdGeometryID g, MeMatrix4 tm, const MeReal colour[3]);
+
+ME_API MeI16 McdBoxGetTypeId(void);
+ME_API void McdBoxRegisterType(McdFramework *frame);
+ME_API void McdBoxDestroy(McdGeometryID g);
+ME_API void McdBoxGetBSphere(McdGeometryID g, MeVector3 center, MeReal *radius);
+ME_API MeI16 McdBoxGetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume);
+ME_API char *McdBoxGetTypeName(McdGeometryID g);
+ME_API void McdBoxDebugDraw(const McdGeometryID g, MeMatrix4 tm, const MeReal colour[3]);
+
+ME_API MeI16 McdPlaneGetTypeId(void);
+ME_API void McdPlaneRegisterType(McdFramework *frame);
+ME_API void McdPlaneDestroy(McdGeometryID g);
+ME_API void McdPlaneGetBSphere(McdGeometryID g, MeVector3 center, MeReal *radius);
+ME_API MeI16 McdPlaneGetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume);
+ME_API char *McdPlaneGetTypeName(McdGeometryID g);
+ME_API void McdPlaneDebugDraw(const McdGeometryID g, MeMatrix4 tm, const MeReal colour[3]);
+
+ME_API MeI16 McdCylinderGetTypeId(void);
+ME_API void McdCylinderRegisterType(McdFramework *frame);
+ME_API void McdCylinderDestroy(McdGeometryID g);
+ME_API void McdCylinderGetBSphere(McdGeometryID g, MeVector3 center, MeReal *radius);
+ME_API MeI16 McdCylinderGetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume);
+ME_API char *McdCylinderGetTypeName(McdGeometryID g);
+ME_API void McdCylinderDebugDraw(const McdGeometryID g, MeMatrix4 tm, const MeReal colour[3]);
+
+ME_API MeI16 McdSphylGetTypeId(void);
+ME_API void McdSphylRegisterType(McdFramework *frame);
+ME_API void McdSphylDestroy(McdGeometryID g);
+ME_API void McdSphylGetBSphere(McdGeometryID g, MeVector3 center, MeReal *radius);
+ME_API MeI16 McdSphylGetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume);
+ME_API char *McdSphylGetTypeName(McdGeometryID g);
+ME_API void McdSphylDebugDraw(const McdGeometryID g, MeMatrix4 tm, const MeReal colour[3]);
+
+ME_API MeI16 McdConeGetTypeId(void);
+ME_API void McdConeRegisterType(McdFramework *frame);
+ME_API void McdConeDestroy(McdGeometryID g);
+ME_API void McdConeGetBSphere(McdGeometryID g, MeVector3 center, MeReal *radius);
+ME_API MeI16 McdConeGetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume);
+ME_API char *McdConeGetTypeName(McdGeometryID g);
+ME_API void McdConeDebugDraw(const McdGeometryID g, MeMatrix4 tm, const MeReal colour[3]);
+
 
 /** Karma's partial registrations: every primitive type and pair test is registered here. */
 #define McdSphereBoxPlaneRegisterTypes(frame) ((void)McdPrimitivesRegisterTypes(frame))
