@@ -3,7 +3,7 @@
 #   -DSHARED=<libkarma.so> -DSTATIC=<libkarma.a> -DHEADERS=<include/karma> -DNM=<nm> -DREADELF=<readelf>
 #   -DCC=<compiler> -DWORK=<scratch dir> -DSANITIZE=ON|OFF
 #
-# 1. The shared library exports exactly the functions declared with ME_API in the public headers:
+# 1. The shared library exports exactly the functions and data declared with ME_API in the public headers:
 #    nothing internal leaks (hidden visibility works) and nothing declared is missing.
 # 2. It needs only libm and libc (plus the sanitizer runtimes in a sanitizer build).
 # 3. Every global symbol of the static library carries a Karma prefix (no clash with users' names).
@@ -20,6 +20,12 @@ foreach(h ${headers})
   string(REGEX MATCHALL "ME_API[^(;#]*\\(" decls "${text}")
   foreach(d ${decls})
     string(REGEX MATCH "([A-Za-z_][A-Za-z0-9_]*)[ \t\n]*\\($" m "${d}")
+    list(APPEND declared ${CMAKE_MATCH_1})
+  endforeach()
+  # Exported data: Karma 1.2's global tables and hooks (`ME_API extern MeMemoryAPIStruct MeMemoryAPI;`).
+  string(REGEX MATCHALL "ME_API extern [^;(]*[A-Za-z0-9_]" datas "${text}")
+  foreach(d ${datas})
+    string(REGEX MATCH "([A-Za-z_][A-Za-z0-9_]*)$" m "${d}")
     list(APPEND declared ${CMAKE_MATCH_1})
   endforeach()
   string(REGEX MATCHALL "#define[ \t]+[A-Za-z0-9_]+[ \t]+ME_PRECISION_SYMBOL" defs "${text}")
