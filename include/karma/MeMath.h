@@ -66,7 +66,8 @@ static inline void MeRealSwap(MeReal *a, MeReal *b)
 #define MeCLAMP(a, lo, hi) (MeMAX(MeMIN((a), (hi)), (lo)))
 
 /** Seed the library's own pseudo-random generator (used by MeRealRandomInRange). The generator is
- * deterministic and independent of rand(); its state is global (not thread-safe). Default seed 0. */
+ * deterministic and independent of rand(); its state is global and safe to draw from on several
+ * threads (each number goes to one caller). Default seed 0. */
 ME_API void MeRealRandomSeed(MeU32 seed);
 /** Pseudo-random MeReal uniformly distributed in [start, end), from the generator seeded by
  * MeRealRandomSeed: the same seed gives the same sequence on every platform. */
