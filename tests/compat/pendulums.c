@@ -10,6 +10,7 @@
 */
 #include <math.h>
 #include <Mdt.h>
+#include <MeMemory.h>
 #include "compat_check.h"
 
 #define N 8
