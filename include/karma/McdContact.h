@@ -1,7 +1,8 @@
 /* McdContact.h -- a contact point produced by a nearfield (pair) test.
  *
- * Conventions: the normal is a unit vector pointing from model 1 towards model 2 of the pair (the
- * direction in which model 2 must move to separate); `separation` is the signed distance between the
+ * Conventions (as Karma's pair tests): the normal is a unit vector pointing from model 2 towards
+ * model 1 of the pair (the direction in which model 1 must move to separate: sphere-sphere, centre 1
+ * minus centre 2; a model on a plane, the plane's normal); `separation` is the signed distance between the
  * surfaces along the normal: negative when they overlap (penetration depth = -separation), positive
  * when a contact is reported early because it lies within the models' contact tolerance. */
 #ifndef MCD_CONTACT_H
@@ -13,7 +14,7 @@ ME_EXTERN_C_BEGIN
 
 typedef struct McdContact {
     MeVector3 position; /**< world point, midway between the two surfaces */
-    MeVector3 normal;   /**< unit, model 1 -> model 2 */
+    MeVector3 normal;   /**< unit, model 2 -> model 1 */
     MeReal separation;  /**< < 0: penetration */
     MeI16 dims;         /**< dimension of the touching features' overlap: 0 point, 1 line, 2 face */
     MeI16 pad_;

@@ -79,7 +79,7 @@ ME_API int McdFrameworkGetGeometryTypeCount(McdFrameworkID fw);
 ME_API const char *McdFrameworkGetGeometryTypeName(McdFrameworkID fw, int type);
 
 /** A pair test written by the application (for user types): contacts between g1 at tm1 and g2 at
- *  tm2 (world), normals from g1 to g2, separation < 0 when overlapping, only contacts with
+ *  tm2 (world), normals from g2 towards g1, separation < 0 when overlapping, only contacts with
  *  separation <= tolerance; at most maxContacts written; returns the count. `data` as in the
  *  geometry protocol (the user's pointer for user types, the shape data for built-in ones). */
 typedef int (*McdUserIntersectFn)(McdGeometryID g1, void *data1, MeMatrix4 tm1, McdGeometryID g2, void *data2,

@@ -3,7 +3,7 @@
  * McdHello chooses the pair test from the framework's interaction table (tests are registered one
  * way round; the pair remembers whether its models must be swapped). McdIntersect runs it on the
  * models' transforms of their last update and fills the caller's contact array: normals point from
- * model 1 to model 2, separation < 0 means overlap, contacts up to the sum of the two contact
+ * model 2 towards model 1, separation < 0 means overlap, contacts up to the sum of the two contact
  * tolerances are reported. A pair of types with no test gives no contacts (reported once per type
  * pair). McdGoodbye releases the pair's cached data. */
 #ifndef MCD_INTERACTION_H

@@ -63,7 +63,7 @@ typedef struct McdIntersectResult {
     int contactMaxCount;   /**< its size */
     int contactCount;      /**< contacts written */
     int touch;             /**< non-zero when the models touch (within their contact tolerances) */
-    MeVector3 normal;      /**< representative normal, model 1 -> model 2 */
+    MeVector3 normal;      /**< representative normal, model 2 -> model 1 */
     void *data;            /**< test-specific extra data, or NULL */
 } McdIntersectResult;
 

@@ -31,6 +31,9 @@ ME_API MdtBSJointID MdtConstraintDCastBSJoint(MdtConstraintID c);
 #define MdtBSJointSetSortKey(j, k) MdtConstraintSetSortKey(MdtBSJointQuaConstraint(j), (k))
 #define MdtBSJointGetWorld(j) MdtConstraintGetWorld(MdtBSJointQuaConstraint(j))
 
+/* Karma 1.2's name for the sort key getter. */
+#define MdtBSJointGetSortKey(j) MdtConstraintGetSortKey(MdtBSJointQuaConstraint(j))
+
 ME_EXTERN_C_END
 
 #endif /* MDT_BSJOINT_H */

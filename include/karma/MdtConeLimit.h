@@ -51,6 +51,14 @@ ME_API MeReal MdtConeLimitGetAngle(MdtConeLimitID j);
 #define MdtConeLimitGetWorld(j) MdtConstraintGetWorld(MdtConeLimitQuaConstraint(j))
 #define MdtConeLimitGetRowCount(j) MdtConstraintGetRowCount(MdtConeLimitQuaConstraint(j))
 
+/* Karma 1.2's names for the per-body axes and the cone's axis (body 1's primary axis). */
+#define MdtConeLimitBodyGetAxes(j, i, p, o) MdtConstraintBodyGetAxes(MdtConeLimitQuaConstraint(j), (i), (p), (o))
+#define MdtConeLimitBodySetAxes(j, i, px, py, pz, ox, oy, oz)                                           \
+    MdtConstraintBodySetAxes(MdtConeLimitQuaConstraint(j), (i), (px), (py), (pz), (ox), (oy), (oz))
+#define MdtConeLimitBodySetAxesRel(j, i, px, py, pz, ox, oy, oz)                                        \
+    MdtConstraintBodySetAxesRel(MdtConeLimitQuaConstraint(j), (i), (px), (py), (pz), (ox), (oy), (oz))
+#define MdtConeLimitGetAxis(j, a) MdtConstraintGetAxis(MdtConeLimitQuaConstraint(j), (a))
+
 ME_EXTERN_C_END
 
 #endif /* MDT_CONELIMIT_H */

@@ -1,9 +1,10 @@
 /* MdtContact.h -- a contact point between two bodies (or a body and the world).
  *
- * Sign conventions (as Karma): the normal is a unit vector pointing from body 0 towards body 1 (the
- * direction in which body 1 is pushed; body 0 is pushed the other way), and the penetration is
- * positive when the bodies overlap. A collision system's McdContact (normal model 1 → model 2,
- * separation < 0 when penetrating) converts with normal as is and penetration = −separation.
+ * Sign conventions (as Karma): the normal is a unit vector pointing from body 1 towards body 0 (the
+ * direction in which body 0 is pushed; body 1 is pushed the other way): a ball (body 0) on the
+ * world (body 1 NULL) with y up has the normal (0, 1, 0). The penetration is positive when the
+ * bodies overlap. A collision system's McdContact (normal from model 2 towards model 1, separation
+ * < 0 when penetrating) converts with normal as is and penetration = −separation.
  * Contacts are normally members of an MdtContactGroup (one per touching pair, see
  * MdtContactGroup.h); a stand-alone contact is a constraint of its own (MdtContactCreate, then
  * MdtContactSetBodies and MdtContactEnable).
@@ -26,14 +27,14 @@ ME_API MdtContactID MdtConstraintDCastContact(MdtConstraintID c);
 /** Contact point, world frame. */
 ME_API void MdtContactSetPosition(MdtContactID c, MeReal x, MeReal y, MeReal z);
 ME_API void MdtContactGetPosition(MdtContactID c, MeVector3 p);
-/** Normal from body 0 to body 1 (normalised here; a zero vector is refused). */
+/** Normal from body 1 towards body 0 (normalised here; a zero vector is refused). */
 ME_API void MdtContactSetNormal(MdtContactID c, MeReal x, MeReal y, MeReal z);
 ME_API void MdtContactGetNormal(MdtContactID c, MeVector3 n);
 /** Overlap depth (> 0 when penetrating), m. */
 ME_API void MdtContactSetPenetration(MdtContactID c, MeReal p);
 ME_API MeReal MdtContactGetPenetration(MdtContactID c);
 /** Primary friction direction (made perpendicular to the normal; used with the UseDirection
- *  option, else a direction is chosen). The secondary is normal × primary. */
+ *  option, else a direction is chosen). The secondary is primary × normal (as Karma). */
 ME_API void MdtContactSetDirection(MdtContactID c, MeReal x, MeReal y, MeReal z);
 ME_API void MdtContactGetDirection(MdtContactID c, MeVector3 d);
 /** Velocity of the world's surface at this contact (body 1 NULL; sets the UseWorldVelocity option). */
@@ -43,7 +44,7 @@ ME_API void MdtContactGetWorldVelocity(MdtContactID c, MeVector3 v);
 ME_API MdtContactParamsID MdtContactGetParams(MdtContactID c);
 /** Copy parameters into the contact. */
 ME_API void MdtContactSetParams(MdtContactID c, const MdtContactParams *p);
-/** Relative velocity of body 1's material point with respect to body 0's at the contact. */
+/** Velocity of body 0's material point relative to body 1's (or to the moving world) at the contact. */
 ME_API void MdtContactGetRelativeVelocity(MdtContactID c, MeVector3 v);
 /** Normal force (N) the contact applied in the last step (≥ 0 unless adhesive). */
 ME_API MeReal MdtContactGetNormalForce(MdtContactID c);
@@ -72,6 +73,10 @@ ME_API MdtContactID MdtBodyGetNextContact(MdtBodyID b, MdtContactID c);
 #define MdtContactGetUserData(c) MdtConstraintGetUserData(MdtContactQuaConstraint(c))
 #define MdtContactSetUserData(c, d) MdtConstraintSetUserData(MdtContactQuaConstraint(c), (d))
 #define MdtContactGetWorld(c) MdtConstraintGetWorld(MdtContactQuaConstraint(c))
+
+/* Karma 1.2's names for the sort key. */
+#define MdtContactSetSortKey(c, k) MdtConstraintSetSortKey(MdtContactQuaConstraint(c), (k))
+#define MdtContactGetSortKey(c) MdtConstraintGetSortKey(MdtContactQuaConstraint(c))
 
 ME_EXTERN_C_END
 

@@ -56,6 +56,9 @@ ME_API void *MdtContactGroupGetGenerator(MdtContactGroupID g);
 #define MdtContactGroupSetUserData(g, d) MdtConstraintSetUserData(MdtContactGroupQuaConstraint(g), (d))
 #define MdtContactGroupGetUserData(g) MdtConstraintGetUserData(MdtContactGroupQuaConstraint(g))
 
+/* Karma 1.2's name (without "Get") for the group's torque on body i. */
+#define MdtContactGroupTorque(g, i, t) MdtContactGroupGetTorque((g), (i), (t))
+
 ME_EXTERN_C_END
 
 #endif /* MDT_CONTACT_GROUP_H */

@@ -56,10 +56,10 @@ typedef struct MdtContactParams {
     MeReal velThreshold;               /**< restitution only above this approach speed, m/s */
     MeReal softness;                   /**< added to the normal row's ε (velocity per impulse, 1/kg) */
     MeReal max_adhesive_force;         /**< N */
-    MeReal slip1, slip2;               /**< tangential compliance (velocity per impulse, 1/kg) */
+    MeReal slip1, slip2;               /**< tangential compliance: slip speed per friction force, s/kg (m/s per N) */
     MeReal slide1, slide2;             /**< surface velocity along the directions, m/s: the contact drives the
-                                            velocity of body 1 relative to body 0 at the contact along the
-                                            direction to it (a body on the world moves at −slide) */
+                                            velocity of body 0 relative to body 1 at the contact along the
+                                            direction to it (a body on the world moves at +slide) */
 } MdtContactParams;
 
 /** Parameters are addressed through a plain pointer (inside a contact or a material table). */

@@ -3,13 +3,13 @@
  * MdtWorldStep(w, h) is exactly
  *
  *     MdtWorldStepBegin(w, h);
- *     MdtUpdatePartitions(w);         islands of enabled bodies joined by constraints
+ *     MdtWorldUpdatePartitions(w);    islands of enabled bodies joined by constraints
  *     MdtAutoDisablePartitions(w);    islands at rest go to sleep                    (optional)
  *     MdtLODPartitions(w);            matrix capping (MdtWorldSetMaxMatrixSize)      (optional)
- *     MdtPackAllPartitions(w);        external forces -> predicted velocities; constraints -> rows
- *     MdtKeaAddConstraintForces(w);   the LCP of each partition (Kea)
- *     MdtKeaIntegrateSystem(w);       velocities, then positions; NaN/inf containment
- *     MdtUnpackForces(w);             constraint forces for the application; accumulators cleared
+ *     MdtPack(w);                     external forces -> predicted velocities; constraints -> rows
+ *     MdtKeaSolve(w);                 the LCP of each partition (Kea)
+ *     MdtKeaIntegrate(w);             velocities, then positions; NaN/inf containment
+ *     MdtUnpack(w);                   constraint forces for the application; accumulators cleared
  *     MdtWorldStepEnd(w);
  *
  * so an application can write its own step: inspect the partitions between stages
@@ -19,9 +19,11 @@
  * locked as during MdtWorldStep: bodies and constraints cannot be created or destroyed. Each stage is
  * a section of the world's profile, as in MdtWorldStep.
  *
- * Karma's headers named these per partition (MdtAutoDisableLastPartition, MdtPackPartition...) for an
- * end-of-partition callback; here each stage runs over all partitions of the step (decision D7 in
- * docs/decisions.md). The User Guide's names are kept as aliases below. */
+ * Karma 1.2's headers declared per-partition stages on Kea's arrays (MdtUpdatePartitions,
+ * MdtPackAllPartitions(po, ...), MdtKeaAddConstraintForces(constraints, ...), MdtUnpackForces(force,
+ * partition, po)...); here each stage runs over all partitions of the step (decisions D7, K16), so the
+ * stages take the User Guide's names (MdtWorldUpdatePartitions, MdtPack, MdtKeaSolve, MdtKeaIntegrate)
+ * and a 1.2 call to the header names fails to compile instead of misbehaving (docs/api_changes.md). */
 #ifndef MDT_MAIN_LOOP_H
 #define MDT_MAIN_LOOP_H
 
@@ -34,30 +36,30 @@ ME_EXTERN_C_BEGIN
 ME_API void MdtWorldStepBegin(MdtWorldID w, MeReal stepSize);
 /** Find the partitions: enabled bodies joined by enabled constraints; disabled bodies reached
  *  through a constraint are enabled ("enabled by partitioner"). */
-ME_API void MdtUpdatePartitions(MdtWorldID w);
+ME_API void MdtWorldUpdatePartitions(MdtWorldID w);
 /** Disable the partitions whose bodies are all at rest (auto-disable thresholds, alive window). */
 ME_API void MdtAutoDisablePartitions(MdtWorldID w);
 /** Matrix capping: in each partition with more rows than MdtWorldGetMaxMatrixSize, drop contact rows
  *  (see MdtLOD.h). Does nothing when capping is off. */
 ME_API void MdtLODPartitions(MdtWorldID w);
 /** Predict the velocities under external forces and write every constraint's solver rows. */
-ME_API void MdtPackAllPartitions(MdtWorldID w);
+ME_API void MdtPack(MdtWorldID w);
 /** Solve each partition's LCP for the constraint impulses (the world's solver settings). */
-ME_API void MdtKeaAddConstraintForces(MdtWorldID w);
+ME_API void MdtKeaSolve(MdtWorldID w);
 /** Integrate velocities and positions; a partition whose solve or state is not finite is restored,
- *  stopped, disabled and reported (MdtWorldSetSimErrorCB). */
-ME_API void MdtKeaIntegrateSystem(MdtWorldID w);
+ *  stopped, disabled and reported (MdtWorldSetSimErrorHandler). */
+ME_API void MdtKeaIntegrate(MdtWorldID w);
 /** Write each constraint's force and torque (MdtConstraintGetForce) and keep its impulses for warm
  *  starting; clear the accumulators of the simulated bodies. */
-ME_API void MdtUnpackForces(MdtWorldID w);
+ME_API void MdtUnpack(MdtWorldID w);
 /** End the step: counts it, adds its time, unlocks the world. */
 ME_API void MdtWorldStepEnd(MdtWorldID w);
 
-/** What the last MdtUpdatePartitions found, as later stages left it. */
+/** What the last MdtWorldUpdatePartitions found, as later stages left it. */
 typedef struct MdtPartitionInfo {
     int bodies;      /**< bodies in the partition */
     int constraints; /**< enabled constraints (a contact group counts once) */
-    int rows;        /**< solver rows (after MdtPackAllPartitions; 0 before) */
+    int rows;        /**< solver rows (after MdtPack; 0 before) */
     int droppedRows; /**< rows removed by matrix capping (MdtLODPartitions) */
 } MdtPartitionInfo;
 /** Partitions of the current or last step (after auto-disable has removed the sleeping ones). */
@@ -67,12 +69,8 @@ ME_API void MdtWorldGetPartitionInfo(MdtWorldID w, int partition, MdtPartitionIn
 /** Body `index` of a partition, in solver order; NULL (reported) when out of range. */
 ME_API MdtBodyID MdtWorldGetPartitionBody(MdtWorldID w, int partition, int index);
 
-/* The User Guide's names for the stages (decision D7). */
-#define MdtWorldUpdatePartitions(w) MdtUpdatePartitions(w)
+/* The User Guide's name for the auto-disable stage (decision D7). */
 #define MdtAutoDisable(w) MdtAutoDisablePartitions(w)
-#define MdtPack(w) MdtPackAllPartitions(w)
-#define MdtKeaSolve(w) MdtKeaAddConstraintForces(w)
-#define MdtKeaIntegrate(w) MdtKeaIntegrateSystem(w)
 
 ME_EXTERN_C_END
 

@@ -36,13 +36,15 @@ ME_API void MdtRPROJointGetLinearStrength(MdtRPROJointID j, MeVector3 s);
 /** Largest torque (N·m) about each angular axis (≥ 0; MEINFINITY = no cap). */
 ME_API void MdtRPROJointSetAngularStrength(MdtRPROJointID j, MeReal sx, MeReal sy, MeReal sz);
 ME_API void MdtRPROJointGetAngularStrength(MdtRPROJointID j, MeVector3 s);
-/** Attachment point in body `bodyindex`'s frame (an offset from the body's origin). */
-ME_API void MdtRPROJointSetAttachmentPosition(MdtRPROJointID j, unsigned int bodyindex, MeReal x, MeReal y,
-                                              MeReal z);
+/** Attachment point in body `bodyindex`'s frame (an offset from the body's origin). The body index
+ *  comes last, as in Karma 1.2. */
+ME_API void MdtRPROJointSetAttachmentPosition(MdtRPROJointID j, MeReal x, MeReal y, MeReal z,
+                                              unsigned int bodyindex);
 ME_API void MdtRPROJointGetAttachmentPosition(MdtRPROJointID j, unsigned int bodyindex, MeVector3 p);
-/** Attachment frame orientation in body `bodyindex`'s frame (unit quaternion). */
-ME_API void MdtRPROJointSetAttachmentQuaternion(MdtRPROJointID j, unsigned int bodyindex, MeReal q0, MeReal q1,
-                                                MeReal q2, MeReal q3);
+/** Attachment frame orientation in body `bodyindex`'s frame (unit quaternion q0 = w); the body
+ *  index comes last, as in Karma 1.2. */
+ME_API void MdtRPROJointSetAttachmentQuaternion(MdtRPROJointID j, MeReal q0, MeReal q1, MeReal q2, MeReal q3,
+                                                unsigned int bodyindex);
 ME_API void MdtRPROJointGetAttachmentQuaternion(MdtRPROJointID j, unsigned int bodyindex, MeVector4 q);
 
 /* The common constraint API under this type's names. */
@@ -65,6 +67,12 @@ ME_API void MdtRPROJointGetAttachmentQuaternion(MdtRPROJointID j, unsigned int b
 #define MdtRPROJointGetSortKey(j) MdtConstraintGetSortKey(MdtRPROJointQuaConstraint(j))
 #define MdtRPROJointGetWorld(j) MdtConstraintGetWorld(MdtRPROJointQuaConstraint(j))
 #define MdtRPROJointGetRowCount(j) MdtConstraintGetRowCount(MdtRPROJointQuaConstraint(j))
+
+/* Karma 1.2's names: the target angular velocity (ω0 − ω1 in body 1's frame) and the sort key. */
+#define MdtRPROJointSetRelativeAngularVelocity(j, w) MdtRPROJointSetAngularVelocity((j), (w))
+#define MdtRPROJointGetRelativeAngularVelocity(j, w) MdtRPROJointGetAngularVelocity((j), (w))
+#define MdtRPROSetSortKey(j, k) MdtConstraintSetSortKey(MdtRPROJointQuaConstraint(j), (k))
+#define MdtRPROGetSortKey(j) MdtConstraintGetSortKey(MdtRPROJointQuaConstraint(j))
 
 ME_EXTERN_C_END
 

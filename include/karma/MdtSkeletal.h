@@ -96,6 +96,16 @@ ME_API MeReal MdtSkeletalGetSwingAngle(MdtSkeletalID j);
 #define MdtSkeletalGetWorld(j) MdtConstraintGetWorld(MdtSkeletalQuaConstraint(j))
 #define MdtSkeletalGetRowCount(j) MdtConstraintGetRowCount(MdtSkeletalQuaConstraint(j))
 
+/* Karma 1.2's names for the limit options and the per-body axes. */
+#define MdtSkeletalSetConeOption(j, option) MdtSkeletalSetConeLimitOption((j), (option))
+#define MdtSkeletalGetConeOption(j) MdtSkeletalGetConeLimitOption(j)
+#define MdtSkeletalSetTwistOption(j, option) MdtSkeletalSetTwistLimitOption((j), (option))
+#define MdtSkeletalGetTwistOption(j) MdtSkeletalGetTwistLimitOption(j)
+#define MdtSkeletalBodyGetAxis(j, i, a) MdtConstraintBodyGetAxis(MdtSkeletalQuaConstraint(j), (i), (a))
+#define MdtSkeletalBodyGetAxes(j, i, p, o) MdtConstraintBodyGetAxes(MdtSkeletalQuaConstraint(j), (i), (p), (o))
+#define MdtSkeletalBodySetAxes(j, i, px, py, pz, ox, oy, oz)                                            \
+    MdtConstraintBodySetAxes(MdtSkeletalQuaConstraint(j), (i), (px), (py), (pz), (ox), (oy), (oz))
+
 ME_EXTERN_C_END
 
 #endif /* MDT_SKELETAL_H */

@@ -53,6 +53,14 @@ ME_API MeReal MdtSpring6GetAngularDamping(MdtSpring6ID j, unsigned int axis);
 #define MdtSpring6GetWorld(j) MdtConstraintGetWorld(MdtSpring6QuaConstraint(j))
 #define MdtSpring6GetRowCount(j) MdtConstraintGetRowCount(MdtSpring6QuaConstraint(j))
 
+/* Karma 1.2's names: velocity of the world at the attachment (body 1 NULL), world frame. */
+#define MdtSpring6SetWorldLinearVelocity(j, vx, vy, vz)                                                 \
+    MdtConstraintSetWorldLinearVelocity(MdtSpring6QuaConstraint(j), (vx), (vy), (vz))
+#define MdtSpring6SetWorldAngularVelocity(j, vx, vy, vz)                                                \
+    MdtConstraintSetWorldAngularVelocity(MdtSpring6QuaConstraint(j), (vx), (vy), (vz))
+#define MdtSpring6GetWorldLinearVelocity(j, v) MdtConstraintGetWorldLinearVelocity(MdtSpring6QuaConstraint(j), (v))
+#define MdtSpring6GetWorldAngularVelocity(j, v) MdtConstraintGetWorldAngularVelocity(MdtSpring6QuaConstraint(j), (v))
+
 ME_EXTERN_C_END
 
 #endif /* MDT_SPRING6_H */

@@ -6,33 +6,60 @@
 #ifndef MDT_TYPES_H
 #define MDT_TYPES_H
 
+#include "MeChunk.h"
+#include "MePool.h"
 #include "MePrecision.h"
+#include "MdtDefaults.h"
 
 ME_EXTERN_C_BEGIN
 
-typedef struct MdtWorldHandle_ *MdtWorldID;           /**< a dynamics world */
-typedef struct MdtBodyHandle_ *MdtBodyID;             /**< a rigid body of a world */
-typedef struct MdtConstraintHandle_ *MdtConstraintID; /**< any constraint: joint, contact, contact group */
+/* Karma 1.2's struct names, usable in declarations (`MdtWorld *w`, `MdtBody *b`). The structs are
+ * never defined: an ID is a checked handle with the type of a pointer to one of them. The library's
+ * own records have other names. */
+typedef struct MdtWorld MdtWorld;
+typedef struct MdtBody MdtBody;
+typedef struct MdtBaseConstraint MdtBaseConstraint; /**< what any constraint ID points to */
+typedef struct MdtBSJoint MdtBSJoint;
+typedef struct MdtHinge MdtHinge;
+typedef struct MdtPrismatic MdtPrismatic;
+typedef struct MdtUniversal MdtUniversal;
+typedef struct MdtAngular3 MdtAngular3;
+typedef struct MdtCarWheel MdtCarWheel;
+typedef struct MdtLinear1 MdtLinear1;
+typedef struct MdtLinear2 MdtLinear2;
+typedef struct MdtFixedPath MdtFixedPath;
+typedef struct MdtRPROJoint MdtRPROJoint;
+typedef struct MdtSkeletal MdtSkeletal;
+typedef struct MdtSpring6 MdtSpring6;
+typedef struct MdtSpring MdtSpring;
+typedef struct MdtConeLimit MdtConeLimit;
+typedef struct MdtContact MdtContact;
+typedef struct MdtContactGroup MdtContactGroup;
+typedef struct MdtUserConstraint MdtUserConstraint;
+
+typedef MdtWorld *MdtWorldID;                   /**< a dynamics world */
+typedef MdtBody *MdtBodyID;                     /**< a rigid body of a world */
+typedef MdtBaseConstraint *MdtConstraintID;     /**< any constraint: joint, contact, contact group */
 
 /* Each constraint type has an ID type of its own; Mdt<Type>QuaConstraint converts it to an
  * MdtConstraintID and MdtConstraintDCast<Type> converts back (NULL if the type differs). */
-typedef struct MdtBSJointHandle_ *MdtBSJointID;
-typedef struct MdtHingeHandle_ *MdtHingeID;
-typedef struct MdtPrismaticHandle_ *MdtPrismaticID;
-typedef struct MdtUniversalHandle_ *MdtUniversalID;
-typedef struct MdtAngular3Handle_ *MdtAngular3ID;
-typedef struct MdtCarWheelHandle_ *MdtCarWheelID;
-typedef struct MdtLinear1Handle_ *MdtLinear1ID;
-typedef struct MdtLinear2Handle_ *MdtLinear2ID;
-typedef struct MdtFixedPathHandle_ *MdtFixedPathID;
-typedef struct MdtRPROJointHandle_ *MdtRPROJointID;
-typedef struct MdtSkeletalHandle_ *MdtSkeletalID;
-typedef struct MdtSpring6Handle_ *MdtSpring6ID;
-typedef struct MdtSpringHandle_ *MdtSpringID;
-typedef struct MdtConeLimitHandle_ *MdtConeLimitID;
-typedef struct MdtContactHandle_ *MdtContactID;
-typedef struct MdtContactGroupHandle_ *MdtContactGroupID;
-typedef struct MdtUserConstraintHandle_ *MdtUserConstraintID;
+typedef MdtBSJoint *MdtBSJointID;
+typedef MdtHinge *MdtHingeID;
+typedef MdtPrismatic *MdtPrismaticID;
+typedef MdtUniversal *MdtUniversalID;
+typedef MdtAngular3 *MdtAngular3ID;
+typedef MdtCarWheel *MdtCarWheelID;
+typedef MdtLinear1 *MdtLinear1ID;
+typedef MdtLinear2 *MdtLinear2ID;
+typedef MdtFixedPath *MdtFixedPathID;
+typedef MdtRPROJoint *MdtRPROJointID;
+typedef MdtSkeletal *MdtSkeletalID;
+typedef MdtSpring6 *MdtSpring6ID;
+typedef MdtSpring *MdtSpringID;
+typedef MdtConeLimit *MdtConeLimitID;
+typedef MdtContact *MdtContactID;
+typedef MdtContactGroup *MdtContactGroupID;
+typedef MdtUserConstraint *MdtUserConstraintID;
 
 /** The constraint types, in Karma's order (the order is part of the API: it indexes dispatch). */
 typedef enum MdtBclJointType {

@@ -23,9 +23,12 @@ ME_API MdtUniversalID MdtConstraintDCastUniversal(MdtConstraintID c);
 ME_API void MdtUniversalSetAxis(MdtUniversalID j, unsigned int bodyindex, MeReal x, MeReal y, MeReal z);
 /** Body `bodyindex`'s axis, world frame. */
 ME_API void MdtUniversalGetAxis(MdtUniversalID j, unsigned int bodyindex, MeVector3 axis);
-/** Body `bodyindex`'s axis (primary) and an orthogonal axis, world directions. */
-#define MdtUniversalSetAxes(j, i, px, py, pz, ox, oy, oz)                                               \
-    MdtConstraintBodySetAxes(MdtUniversalQuaConstraint(j), (i), (px), (py), (pz), (ox), (oy), (oz))
+/** The joint's primary and orthogonal axes, world directions (Karma 1.2: both bodies' frames). */
+#define MdtUniversalSetAxes(j, px, py, pz, ox, oy, oz)                                                  \
+    MdtConstraintSetAxes(MdtUniversalQuaConstraint(j), (px), (py), (pz), (ox), (oy), (oz))
+/** Body `bodyindex`'s primary and orthogonal axes, world directions. */
+#define MdtUniversalGetAxes(j, bodyindex, p, o)                                                         \
+    MdtConstraintBodyGetAxes(MdtUniversalQuaConstraint(j), (bodyindex), (p), (o))
 
 /* The common constraint API under this type's names. */
 #define MdtUniversalDestroy(j) MdtConstraintDestroy(MdtUniversalQuaConstraint(j))

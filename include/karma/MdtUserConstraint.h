@@ -1,7 +1,7 @@
 /* MdtUserConstraint.h -- a constraint whose rows the application writes.
  *
  * Each step, for each enabled user constraint in a partition being solved, the world calls the
- * constraint's MdtBclAddConstraintFn. The function fills up to `maxRows` rows and returns how many it
+ * constraint's MdtUserConstraintRowsFn. The function fills up to `maxRows` rows and returns how many it
  * wrote. A row constrains one scalar combination of the two bodies' velocities, its constraint
  * velocity
  *
@@ -61,12 +61,12 @@ typedef struct MdtBclSolverParameters {
 
 /** Writes the rows of `constraint` into rows[0 ... maxRows−1] and returns how many (0 ... maxRows).
  *  `constraintStruct` is what MdtUserConstraintSetConstraintStruct gave. */
-typedef int (*MdtBclAddConstraintFn)(MdtUserConstraintID constraint, MdtUserConstraintRow *rows, int maxRows,
+typedef int (*MdtUserConstraintRowsFn)(MdtUserConstraintID constraint, MdtUserConstraintRow *rows, int maxRows,
                                      const MdtBclSolverParameters *params, void *constraintStruct);
 
 /** The function that writes the rows (NULL: none, the constraint writes no rows). */
-ME_API void MdtUserConstraintSetAddConstraintFunction(MdtUserConstraintID j, MdtBclAddConstraintFn fn);
-ME_API MdtBclAddConstraintFn MdtUserConstraintGetAddConstraintFunction(MdtUserConstraintID j);
+ME_API void MdtUserConstraintSetAddConstraintFunction(MdtUserConstraintID j, MdtUserConstraintRowsFn fn);
+ME_API MdtUserConstraintRowsFn MdtUserConstraintGetAddConstraintFunction(MdtUserConstraintID j);
 /** The application's data for the function. */
 ME_API void MdtUserConstraintSetConstraintStruct(MdtUserConstraintID j, void *constraintStruct);
 ME_API void *MdtUserConstraintGetConstraintStruct(MdtUserConstraintID j);
@@ -96,6 +96,10 @@ ME_API MeReal MdtUserConstraintGetRowForce(MdtUserConstraintID j, int row);
 #define MdtUserConstraintGetSortKey(j) MdtConstraintGetSortKey(MdtUserConstraintQuaConstraint(j))
 #define MdtUserConstraintGetWorld(j) MdtConstraintGetWorld(MdtUserConstraintQuaConstraint(j))
 #define MdtUserConstraintGetRowCount(j) MdtConstraintGetRowCount(MdtUserConstraintQuaConstraint(j))
+
+/* Karma 1.2's names for the function's data. */
+#define MdtUserConstraintSetConstraintData(j, data) MdtUserConstraintSetConstraintStruct((j), (data))
+#define MdtUserConstraintGetConstraintData(j) MdtUserConstraintGetConstraintStruct(j)
 
 ME_EXTERN_C_END
 

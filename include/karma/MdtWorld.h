@@ -161,17 +161,21 @@ typedef struct MdtSimError {
     int solverStatus;       /**< the solver's status for the partition (0 = converged) */
 } MdtSimError;
 /** Called once per failed partition, from inside the step (the world is locked). */
-typedef void (*MdtSimErrorCBPtr)(MdtWorldID w, const MdtSimError *error, void *userData);
+typedef void (*MdtSimErrorHandlerPtr)(MdtWorldID w, const MdtSimError *error, void *userData);
 /** Check the solver's result of every partition before integrating (default on). The integrated
  *  state is always checked: a partition whose state is NaN or infinite is restored, stopped and
  *  disabled, reported with ME_ERR_NONFINITE_STATE and passed to the callback; other partitions are
  *  not affected. With the check off a bad solve is caught by the state check after integration. */
 ME_API void MdtWorldSetCheckSim(MdtWorldID w, MeBool check);
 ME_API MeBool MdtWorldGetCheckSim(MdtWorldID w);
-/** Callback for failed partitions (NULL: none; the ME_ERR_NONFINITE_STATE report is always made). */
-ME_API void MdtWorldSetSimErrorCB(MdtWorldID w, MdtSimErrorCBPtr cb, void *userData);
+/** Callback for failed partitions (NULL: none; the ME_ERR_NONFINITE_STATE report is always made).
+ *  Karma 1.2's MdtWorldSetSimErrorCB passed Kea's internal arrays, which this library does not have:
+ *  hence another name and callback type (docs/api_changes.md). */
+ME_API void MdtWorldSetSimErrorHandler(MdtWorldID w, MdtSimErrorHandlerPtr cb, void *userData);
+/** The callback set by MdtWorldSetSimErrorHandler (NULL if none), and its user data. */
+ME_API MdtSimErrorHandlerPtr MdtWorldGetSimErrorHandler(MdtWorldID w, void **userData);
 /** A callback that prints the failed partition's bodies (state, forces) at info level. */
-ME_API void MdtDefaultSimErrorCallBack(MdtWorldID w, const MdtSimError *error, void *userData);
+ME_API void MdtDefaultSimErrorHandler(MdtWorldID w, const MdtSimError *error, void *userData);
 
 /** Whether `w` is a live world ID (no message). */
 ME_API MeBool MdtWorldIsValid(MdtWorldID w);

@@ -5,11 +5,13 @@
  * MstBridgeUpdateContacts reads the space's pairs in chunks and, for each chunk, handles transitions
  * (Hello: order the pair and choose its nearfield test; Goodbye: destroy its contact group) and
  * collisions (nearfield test → McdContacts → MdtContacts in the pair's MdtContactGroup, created when
- * the models first intersect and destroyed when they stop, or at Goodbye).
+ * the models first intersect and destroyed at Goodbye; a step without contacts leaves it empty and
+ * disabled).
  *
  * Body order: a group's body 0 is model 1's body and body 1 model 2's; when model 1 has no body (it
  * is part of the world) the pair is turned round so that the dynamic body is body 0 and body 1 NULL
- * (the group is marked swapped). Dynamics normals point from body 0 to body 1. */
+ * (the group is marked swapped). Normals point from model 2 towards model 1 and from body 1 towards
+ * body 0 alike: copied as they are, negated for a turned-round pair. */
 #ifndef MST_BRIDGE_H
 #define MST_BRIDGE_H
 
@@ -18,20 +20,10 @@
 #include "MdtContactGroup.h"
 #include "MdtContactParams.h"
 #include "MdtTypes.h"
+#include "MstModelDynamics.h"
+#include "MstTypes.h"
 
 ME_EXTERN_C_BEGIN
-
-typedef struct MstBridgeHandle_ *MstBridgeID;
-/** A material: an index into the bridge's table. 0 is the default material. */
-typedef int MstMaterialID;
-
-/** Called once per colliding pair, after the nearfield test and before conversion (edit or cull
- *  result->contacts / contactCount here). */
-typedef void (*MstIntersectCBPtr)(McdIntersectResult *result);
-/** Called for each converted contact; return 0 to drop it. */
-typedef MeBool (*MstPerContactCBPtr)(McdIntersectResult *result, McdContact *colC, MdtContactID dynC);
-/** Called once per pair after conversion; return 0 to drop all the pair's contacts. */
-typedef MeBool (*MstPerPairCBPtr)(McdIntersectResult *result, MdtContactGroupID contactGroup);
 
 /** A bridge with room for maxMaterials materials (≥ 1; material 0 exists from the start). */
 ME_API MstBridgeID MstBridgeCreate(McdFrameworkID frame, int maxMaterials);
@@ -74,8 +66,12 @@ ME_API void MstHandleTransitions(McdModelPairContainer *pairs, McdSpaceID space,
 /** Nearfield tests for the Hello and Staying pairs of a container with at least one unfrozen model,
  *  and conversion of their contacts. */
 ME_API void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorldID world, MstBridgeID b);
-/** Karma's names for the stages (decision D7 keeps them as aliases). */
-#define MstBridgeUpdateTransitions(b, s, w, pairs) MstHandleTransitions((pairs), (s), (w), (b))
+/** Karma 1.2's transitions stage on its own: ends the space's change block, reads every pair and
+ *  handles only the Hello and Goodbye ones (MstHandleTransitions), opens a change block again. Call
+ *  it after McdSpaceRemoveModel (and McdSpaceUpdateAll) and before destroying the model, so that the
+ *  model's pairs say Goodbye and their contact groups go. */
+ME_API void MstBridgeUpdateTransitions(MstBridgeID b, McdSpaceID s, MdtWorldID w);
+/** The User Guide's name for the collisions stage on one container (decision D7). */
 #define MstBridgeUpdateCollisions(b, s, w, pairs) MstHandleCollisions((pairs), (s), (w), (b))
 
 /** Install the world handlers that keep models and bodies in step: a disabled body's models are
@@ -83,10 +79,6 @@ ME_API void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, 
  *  MstUniverseCreate does this; call it yourself when you build world, space and bridge by hand. */
 ME_API void MstSetWorldHandlers(MdtWorldID world);
 
-/** Link a model to a body (NULL: the model is part of the world). The model's transform pointer
- *  becomes the body's transform. */
-ME_API void McdModelSetBody(McdModelID model, MdtBodyID body);
-ME_API MdtBodyID McdModelGetBody(McdModelID model);
 /** Link counts of the last MstBridgeUpdateContacts: pairs tested, contacts made. */
 ME_API int MstBridgeGetLastPairCount(MstBridgeID b);
 ME_API int MstBridgeGetLastContactCount(MstBridgeID b);

@@ -14,28 +14,12 @@
 #include "MdtTypes.h"
 #include "MeProfile.h"
 #include "MstBridge.h"
+#include "MstTypes.h"
 
 ME_EXTERN_C_BEGIN
 
-typedef struct MstUniverseHandle_ *MstUniverseID;
-
-/** Every pool of a universe. Start from MstUniverseDefaultSizes and change what you need. */
-typedef struct MstUniverseSizes {
-    int dynamicBodiesMaxCount;              /**< 100 */
-    int dynamicConstraintsMaxCount;         /**< 500: joints and contacts together */
-    int materialsMaxCount;                  /**< 10 (at least 1: the default material) */
-    int collisionModelsMaxCount;            /**< 100 */
-    int collisionPairsMaxCount;             /**< 500 */
-    int collisionUserGeometryTypesMaxCount; /**< 0 */
-    int collisionGeometryInstancesMaxCount; /**< 100 (decision D5) */
-    MeReal lengthScale;                     /**< 1 */
-    MeReal massScale;                       /**< 1 */
-} MstUniverseSizes;
-
-/** Karma's defaults (KARMA.md §8). */
+/** Karma's defaults as a value (the same as the object MstUniverseDefaultSizes, MstTypes.h). */
 ME_API MstUniverseSizes MstUniverseGetDefaultSizes(void);
-/** Karma's spelling: `MstUniverseSizes s = MstUniverseDefaultSizes;` */
-#define MstUniverseDefaultSizes (MstUniverseGetDefaultSizes())
 
 /** Framework (primitive types and their pair tests registered), space on all three axes, world,
  *  bridge and the world handlers; NULL (reported) when a size is invalid or memory runs out. */

@@ -61,7 +61,7 @@ typedef struct McdModel {
     MeBool frozen;
 } McdModel;
 
-/** A pair test: contacts (world frame, normal from g1 to g2, separation < 0 when overlapping) for g1
+/** A pair test: contacts (world frame, normal from g2 towards g1, separation < 0 when overlapping) for g1
  *  at world transform tm1 and g2 at tm2, reporting only contacts with separation <= tolerance (the
  *  sum of the models' contact tolerances). Writes at most maxContacts; returns the count written.
  *  `cache` is the pair's McdModelPair.cache slot (may be NULL). */

@@ -3,7 +3,7 @@
  * Pair tests are registered one way round (framework.c); McdHello looks the pair's geometry types up
  * both ways and remembers in `swapped` that the test takes model 2 first. McdIntersect then calls
  * the test in its own order and turns the answer back: normals negated, elements exchanged, so the
- * caller always sees normals from model 1 to model 2. */
+ * caller always sees normals from model 2 towards model 1. */
 #include <string.h>
 
 #include <karma/McdInteraction.h>

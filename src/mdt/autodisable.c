@@ -9,7 +9,7 @@
 #include "constraint.h"
 #include "world.h"
 
-static MeBool bodyIsAtRest(const MdtBody *b, const MdtAutoDisableParams *p)
+static MeBool bodyIsAtRest(const MdtBodyData *b, const MdtAutoDisableParams *p)
 {
     return MeVector3MagnitudeSqr(b->vel) < p->velocity && MeVector3MagnitudeSqr(b->velrot) < p->angularVelocity &&
            MeVector3MagnitudeSqr(b->accel) < p->acceleration &&
@@ -17,11 +17,11 @@ static MeBool bodyIsAtRest(const MdtBody *b, const MdtAutoDisableParams *p)
            (b->enabledTime > p->aliveTime || b->enabledByPartitioner);
 }
 
-void MdtAutoDisableStage(MdtWorld *w)
+void MdtAutoDisableStage(MdtWorldData *w)
 {
     if (!w->autoDisable.enabled)
         return;
-    MdtPartitionOutput *out = &w->partitions;
+    MdtPartitionLists *out = &w->partitions;
     int kept = 0, keptConstraints = 0, keptPartitions = 0;
     for (int p = 0; p < out->partitionCount; p++) {
         int start = out->partitionStart[p], end = out->partitionStart[p + 1];
@@ -31,7 +31,7 @@ void MdtAutoDisableStage(MdtWorld *w)
             rest = bodyIsAtRest(out->bodies[i], &w->autoDisable);
         if (rest) {
             for (int i = start; i < end; i++) {
-                MdtBody *b = out->bodies[i];
+                MdtBodyData *b = out->bodies[i];
                 MeVector3Set(b->vel, 0, 0, 0);
                 MeVector3Set(b->velrot, 0, 0, 0);
                 MdtBodySetEnabledInternal(b, MEFALSE);
@@ -49,7 +49,7 @@ void MdtAutoDisableStage(MdtWorld *w)
             out->constraints[keptConstraints++] = out->constraints[i];
         }
         for (int i = start; i < end; i++) {
-            MdtBody *b = out->bodies[i];
+            MdtBodyData *b = out->bodies[i];
             b->stepIndex = kept;
             b->partition = keptPartitions;
             out->ids[kept] = out->ids[i];

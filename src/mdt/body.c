@@ -3,6 +3,7 @@
  * Every public function resolves its ID first (a stale or foreign ID is reported and the call does
  * nothing), then validates its numbers where they enter (NaN/inf, ranges), and only then changes
  * state: a rejected call leaves the body exactly as it was. */
+#include <karma/MdtDefaults.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -20,18 +21,18 @@
 /* A mass or inertia further than this factor from the world's scale gets an info message. */
 #define MASS_RANGE_LIMIT ME_R(100.0)
 
-MdtBody *MdtBodyFromID(MdtBodyID id, const char *function)
+MdtBodyData *MdtBodyFromID(MdtBodyID id, const char *function)
 {
     return MeHandleResolve((uintptr_t)id, ME_HANDLE_BODY, function, "b", NULL);
 }
 
 #define BODY_OR_RETURN(b, id, ret)                                                                   \
-    MdtBody *b = MdtBodyFromID((id), __func__);                                                      \
+    MdtBodyData *b = MdtBodyFromID((id), __func__);                                                      \
     if (!b)                                                                                          \
     return ret
 
 /* ---- internal helpers --------------------------------------------------------------------- */
-void MdtBodyUpdateTransforms(MdtBody *b, const MeVector3 comPosition)
+void MdtBodyUpdateTransforms(MdtBodyData *b, const MeVector3 comPosition)
 {
     MeMatrix3 R;
     MeVector3 offsetWorld;
@@ -48,7 +49,7 @@ void MdtBodyUpdateTransforms(MdtBody *b, const MeVector3 comPosition)
 }
 
 /* out = Rᵀ · M · R: a body-frame tensor expressed in the world (R's rows are the body axes). */
-static void bodyToWorldTensor(const MdtBody *b, MeMatrix3 M, MeMatrix3 out)
+static void bodyToWorldTensor(const MdtBodyData *b, MeMatrix3 M, MeMatrix3 out)
 {
     MeMatrix3 R, MR;
     for (int i = 0; i < 3; i++)
@@ -60,14 +61,14 @@ static void bodyToWorldTensor(const MdtBody *b, MeMatrix3 M, MeMatrix3 out)
             out[i][j] = R[0][i] * MR[0][j] + R[1][i] * MR[1][j] + R[2][i] * MR[2][j];
 }
 
-void MdtBodyWorldInverseInertia(const MdtBody *b, MeMatrix3 out)
+void MdtBodyWorldInverseInertia(const MdtBodyData *b, MeMatrix3 out)
 {
     MeMatrix3 inv;
     memcpy(inv, b->invInertia, sizeof inv);
     bodyToWorldTensor(b, inv, out);
 }
 
-void MdtBodyWorldInertia(const MdtBody *b, MeMatrix3 out)
+void MdtBodyWorldInertia(const MdtBodyData *b, MeMatrix3 out)
 {
     MeMatrix3 I;
     if (b->nonSpherical) {
@@ -80,7 +81,7 @@ void MdtBodyWorldInertia(const MdtBody *b, MeMatrix3 out)
 }
 
 /* The inverse inertia in use: the full tensor, or the mean of its diagonal when spherical. */
-static void updateInverseInertia(MdtBody *b)
+static void updateInverseInertia(MdtBodyData *b)
 {
     if (b->nonSpherical) {
         /* The tensor was checked positive definite when it was set. */
@@ -94,9 +95,9 @@ static void updateInverseInertia(MdtBody *b)
     }
 }
 
-void MdtBodySetEnabledInternal(MdtBody *b, MeBool enabled)
+void MdtBodySetEnabledInternal(MdtBodyData *b, MeBool enabled)
 {
-    MdtWorld *w = b->world;
+    MdtWorldData *w = b->world;
     if (b->enabled == enabled)
         return;
     b->enabled = enabled;
@@ -113,9 +114,9 @@ void MdtBodySetEnabledInternal(MdtBody *b, MeBool enabled)
     }
 }
 
-static void setDefaults(MdtBody *b)
+static void setDefaults(MdtBodyData *b)
 {
-    const MdtWorld *w = b->world;
+    const MdtWorldData *w = b->world;
     MeVector3 origin = {0, 0, 0};
     MeQuaternionSet(b->q, 1, 0, 0, 0);
     MeVector3Set(b->comOffset, 0, 0, 0);
@@ -124,15 +125,16 @@ static void setDefaults(MdtBody *b)
     MeVector3Set(b->velrot, 0, 0, 0);
     MeVector3Set(b->accel, 0, 0, 0);
     MeVector3Set(b->accelrot, 0, 0, 0);
-    b->mass = w->massScale;
+    b->mass = MDTBODY_DEFAULT_MASS * w->massScale;
     b->invMass = 1 / b->mass;
     MeMatrix3MakeIdentity(b->inertia);
-    MeMatrix3Scale(b->inertia, ME_R(0.4) * b->mass * w->lengthScale * w->lengthScale);
+    MeMatrix3Scale(b->inertia, MDTBODY_DEFAULT_INERTIA * b->mass * w->lengthScale * w->lengthScale);
     b->nonSpherical = MEFALSE;
     b->coriolis = MEFALSE;
     updateInverseInertia(b);
-    b->linearDamping = b->angularDamping = 0;
-    MeVector3Set(b->fastSpinAxis, 0, 1, 0);
+    b->linearDamping = MDTBODY_DEFAULT_LINEAR_DAMPING;
+    b->angularDamping = MDTBODY_DEFAULT_ANGULAR_DAMPING;
+    MeVector3Set(b->fastSpinAxis, MDTBODY_DEFAULT_FAST_SPIN_X, MDTBODY_DEFAULT_FAST_SPIN_Y, MDTBODY_DEFAULT_FAST_SPIN_Z);
     b->useFastSpin = MEFALSE;
     b->sortKey = 0;
     MeVector3Set(b->force, 0, 0, 0);
@@ -147,14 +149,14 @@ static void setDefaults(MdtBody *b)
 /* ---- lifecycle ---------------------------------------------------------------------------- */
 MdtBodyID MdtBodyCreate(MdtWorldID wid)
 {
-    MdtWorld *w = MdtWorldFromID(wid, __func__);
+    MdtWorldData *w = MdtWorldFromID(wid, __func__);
     if (!w)
         return NULL;
     if (w->locked) {
         ME_REPORT(ME_ERR_WORLD_LOCKED, "bodies cannot be created during the world's step");
         return NULL;
     }
-    MdtBody *b = MePoolGetStruct(&w->bodyPool);
+    MdtBodyData *b = MePoolGetStruct(&w->bodyPool);
     if (!b) {
         ME_REPORT(ME_ERR_POOL_FULL, "the world's body pool is full (%d bodies); raise %s in MdtWorldCreate",
                   w->bodyPool.capacity, w->bodyPool.sizeName);
@@ -170,7 +172,7 @@ MdtBodyID MdtBodyCreate(MdtWorldID wid)
 void MdtBodyDestroy(MdtBodyID id)
 {
     BODY_OR_RETURN(b, id, ME_NOTHING);
-    MdtWorld *w = b->world;
+    MdtWorldData *w = b->world;
     if (w->locked) {
         ME_REPORT(ME_ERR_WORLD_LOCKED, "bodies cannot be destroyed during the world's step");
         return;
@@ -194,8 +196,8 @@ MdtBodyID MdtBodyCopy(MdtBodyID id, MdtWorldID wid)
     MdtBodyID copyId = MdtBodyCreate(wid);
     if (!copyId)
         return NULL;
-    MdtBody *c = MdtBodyFromID(copyId, __func__);
-    MdtBody saved = *c;
+    MdtBodyData *c = MdtBodyFromID(copyId, __func__);
+    MdtBodyData saved = *c;
     *c = *b;
     c->id = saved.id;
     c->world = saved.world;
@@ -468,7 +470,7 @@ static MeBool isRotation(MeMatrix3 R)
     return MeMatrix3Determinant(R) > 0;
 }
 
-static void setOrientation(MdtBody *b, MeMatrix3 R)
+static void setOrientation(MdtBodyData *b, MeMatrix3 R)
 {
     MeVector3 com;
     MeVector3Set(com, b->comTM[3][0], b->comTM[3][1], b->comTM[3][2]);
@@ -504,7 +506,7 @@ void MdtBodySetTransform(MdtBodyID id, MeMatrix4 tm)
     setOrientation(b, R);
 }
 
-static MeBool checkMassRange(const MdtBody *b, MeReal value, MeReal scale, const char *what)
+static MeBool checkMassRange(const MdtBodyData *b, MeReal value, MeReal scale, const char *what)
 {
     if (value > MASS_RANGE_LIMIT * scale || value * MASS_RANGE_LIMIT < scale) {
         ME_REPORT(ME_ERR_MASS_RATIO, "%s %g is over %g times away from the world's scale %g", what, (double)value,
@@ -721,7 +723,7 @@ MeBool MdtBodyCoriolisForceIsEnabled(MdtBodyID id)
 }
 
 /* Move the COM within the body: the body frame stays put, the COM frame follows. */
-static void setComOffset(MdtBody *b, const MeVector3 offset)
+static void setComOffset(MdtBodyData *b, const MeVector3 offset)
 {
     MeVector3 origin, offsetWorld, com;
     MeMatrix3 R;
@@ -775,7 +777,7 @@ void MdtBodySetSortKey(MdtBodyID id, MeI32 key)
 }
 
 /* ---- iteration ---------------------------------------------------------------------------- */
-static MdtBodyID nextLive(MdtWorld *w, int from)
+static MdtBodyID nextLive(MdtWorldData *w, int from)
 {
     for (int i = from; i < w->bodyPool.capacity; i++)
         if (MePoolSlotIsLive(&w->bodyPool, i))
@@ -785,7 +787,7 @@ static MdtBodyID nextLive(MdtWorld *w, int from)
 
 MdtBodyID MdtBodyGetFirst(MdtWorldID wid)
 {
-    MdtWorld *w = MdtWorldFromID(wid, __func__);
+    MdtWorldData *w = MdtWorldFromID(wid, __func__);
     return w ? nextLive(w, 0) : NULL;
 }
 
@@ -820,7 +822,7 @@ void MdtBodyAddForce(MdtBodyID id, MeReal fx, MeReal fy, MeReal fz)
 }
 
 /* Adds v to `linear` and (p − com) × v to `angular`. */
-static void addAtPosition(MdtBody *b, MeVector3 linear, MeVector3 angular, const MeVector3 v, const MeVector3 p)
+static void addAtPosition(MdtBodyData *b, MeVector3 linear, MeVector3 angular, const MeVector3 v, const MeVector3 p)
 {
     MeVector3 r, rxv;
     MeVector3Set(r, p[0] - b->comTM[3][0], p[1] - b->comTM[3][1], p[2] - b->comTM[3][2]);

@@ -13,11 +13,11 @@
 #include <karma/MdtBody.h>
 #include <karma/MeMath.h>
 
-struct MdtWorld;
+struct MdtWorldData;
 
-typedef struct MdtBody {
+typedef struct MdtBodyData {
     uintptr_t id;            /* this body's own checked ID */
-    struct MdtWorld *world;
+    struct MdtWorldData *world;
     int slot;                /* index in the world's body pool */
 
     /* state */
@@ -62,17 +62,17 @@ typedef struct MdtBody {
 
     /* constraints attached to this body: a singly linked list through the constraints (later) */
     void *firstConstraint;
-} MdtBody;
+} MdtBodyData;
 
 /* Resolve an ID or report in the caller's name; NULL when invalid. */
-MdtBody *MdtBodyFromID(MdtBodyID id, const char *function);
+MdtBodyData *MdtBodyFromID(MdtBodyID id, const char *function);
 /* Recompute bodyTM and comTM from q, the COM position and the offset. */
-void MdtBodyUpdateTransforms(MdtBody *b, const MeVector3 comPosition);
+void MdtBodyUpdateTransforms(MdtBodyData *b, const MeVector3 comPosition);
 /* World-frame inverse inertia tensor (symmetric) of the body's current orientation. */
-void MdtBodyWorldInverseInertia(const MdtBody *b, MeMatrix3 out);
+void MdtBodyWorldInverseInertia(const MdtBodyData *b, MeMatrix3 out);
 /* World-frame inertia tensor. */
-void MdtBodyWorldInertia(const MdtBody *b, MeMatrix3 out);
+void MdtBodyWorldInertia(const MdtBodyData *b, MeMatrix3 out);
 /* Enable or disable, calling the world's callbacks (used by the partitioner and auto-disable). */
-void MdtBodySetEnabledInternal(MdtBody *b, MeBool enabled);
+void MdtBodySetEnabledInternal(MdtBodyData *b, MeBool enabled);
 
 #endif /* MDT_BODY_INTERNAL_H */

@@ -9,14 +9,14 @@
 #include "world.h"
 
 /* ---- lookup ------------------------------------------------------------------------------- */
-MdtConstraint *MdtConstraintFromID(MdtConstraintID id, const char *function)
+MdtConstraintData *MdtConstraintFromID(MdtConstraintID id, const char *function)
 {
     return MeHandleResolve((uintptr_t)id, ME_HANDLE_CONSTRAINT, function, "c", NULL);
 }
 
-MdtConstraint *MdtConstraintFromIDOfType(const void *id, MdtBclJointType type, const char *function)
+MdtConstraintData *MdtConstraintFromIDOfType(const void *id, MdtBclJointType type, const char *function)
 {
-    MdtConstraint *c = MeHandleResolve((uintptr_t)id, ME_HANDLE_CONSTRAINT, function, "c", NULL);
+    MdtConstraintData *c = MeHandleResolve((uintptr_t)id, ME_HANDLE_CONSTRAINT, function, "c", NULL);
     if (c && c->type != type) {
         ME_REPORT_IN(function, ME_ERR_WRONG_HANDLE_KIND, "the constraint is a %s, not the type this function takes",
                      c->cls->name);
@@ -26,7 +26,7 @@ MdtConstraint *MdtConstraintFromIDOfType(const void *id, MdtBclJointType type, c
 }
 
 #define CONSTRAINT_OR_RETURN(c, id, ret)                                                             \
-    MdtConstraint *c = MdtConstraintFromID((id), __func__);                                          \
+    MdtConstraintData *c = MdtConstraintFromID((id), __func__);                                          \
     if (!c)                                                                                          \
     return ret
 
@@ -40,14 +40,14 @@ static MeBool checkBodyIndex(unsigned int bodyindex, const char *function)
 }
 
 /* ---- body lists --------------------------------------------------------------------------- */
-static void unlinkFromBody(MdtConstraint *c, int index)
+static void unlinkFromBody(MdtConstraintData *c, int index)
 {
-    MdtBody *b = c->body[index];
+    MdtBodyData *b = c->body[index];
     if (!b)
         return;
-    MdtConstraint **link = (MdtConstraint **)&b->firstConstraint;
+    MdtConstraintData **link = (MdtConstraintData **)&b->firstConstraint;
     while (*link) {
-        MdtConstraint *it = *link;
+        MdtConstraintData *it = *link;
         int which = it->body[0] == b ? 0 : 1;
         if (it == c) {
             *link = it->nextForBody[which];
@@ -58,16 +58,16 @@ static void unlinkFromBody(MdtConstraint *c, int index)
     c->nextForBody[index] = NULL;
 }
 
-static void linkToBody(MdtConstraint *c, int index)
+static void linkToBody(MdtConstraintData *c, int index)
 {
-    MdtBody *b = c->body[index];
+    MdtBodyData *b = c->body[index];
     if (!b)
         return;
     c->nextForBody[index] = b->firstConstraint;
     b->firstConstraint = c;
 }
 
-void MdtConstraintAttach(MdtConstraint *c, MdtBody *b0, MdtBody *b1)
+void MdtConstraintAttach(MdtConstraintData *c, MdtBodyData *b0, MdtBodyData *b1)
 {
     if (!c->inGroup) {
         unlinkFromBody(c, 0);
@@ -82,7 +82,7 @@ void MdtConstraintAttach(MdtConstraint *c, MdtBody *b0, MdtBody *b1)
 }
 
 /* ---- creation and destruction ------------------------------------------------------------- */
-void MdtConstraintResetFrames(MdtConstraint *c)
+void MdtConstraintResetFrames(MdtConstraintData *c)
 {
     for (int i = 0; i < 2; i++) {
         MeVector3Set(c->position[i], 0, 0, 0);
@@ -91,17 +91,17 @@ void MdtConstraintResetFrames(MdtConstraint *c)
     }
 }
 
-MdtConstraint *MdtConstraintCreateInternal(MdtWorldID wid, MdtBclJointType type, const MdtConstraintClass *cls,
+MdtConstraintData *MdtConstraintCreateInternal(MdtWorldID wid, MdtBclJointType type, const MdtConstraintClass *cls,
                                            const char *function)
 {
-    MdtWorld *w = MdtWorldFromID(wid, function);
+    MdtWorldData *w = MdtWorldFromID(wid, function);
     if (!w)
         return NULL;
     if (w->locked) {
         ME_REPORT_IN(function, ME_ERR_WORLD_LOCKED, "constraints cannot be created during the world's step");
         return NULL;
     }
-    MdtConstraint *c = MePoolGetStruct(&w->constraintPool);
+    MdtConstraintData *c = MePoolGetStruct(&w->constraintPool);
     if (!c) {
         ME_REPORT_IN(function, ME_ERR_POOL_FULL,
                      "the world's constraint pool is full (%d joints, contacts and groups); raise %s in "
@@ -121,9 +121,9 @@ MdtConstraint *MdtConstraintCreateInternal(MdtWorldID wid, MdtBclJointType type,
     return c;
 }
 
-void MdtConstraintRelease(MdtConstraint *c)
+void MdtConstraintRelease(MdtConstraintData *c)
 {
-    MdtWorld *w = c->world;
+    MdtWorldData *w = c->world;
     if (c->enabled) {
         c->enabled = MEFALSE;
         w->enabledConstraintCount--;
@@ -198,7 +198,7 @@ const char *MdtConstraintGetTypeName(MdtConstraintID id)
 }
 
 /* ---- frames ------------------------------------------------------------------------------- */
-void MdtConstraintToBodyPoint(const MdtConstraint *c, int index, const MeVector3 world, MeVector3 out)
+void MdtConstraintToBodyPoint(const MdtConstraintData *c, int index, const MeVector3 world, MeVector3 out)
 {
     if (c->body[index])
         MeMatrix4TMInverseTransform(out, c->body[index]->bodyTM, world);
@@ -206,7 +206,7 @@ void MdtConstraintToBodyPoint(const MdtConstraint *c, int index, const MeVector3
         MeVector3Copy(out, world);
 }
 
-void MdtConstraintToBodyVector(const MdtConstraint *c, int index, const MeVector3 world, MeVector3 out)
+void MdtConstraintToBodyVector(const MdtConstraintData *c, int index, const MeVector3 world, MeVector3 out)
 {
     if (c->body[index])
         MeMatrix4TMInverseRotate(out, c->body[index]->bodyTM, world);
@@ -214,7 +214,7 @@ void MdtConstraintToBodyVector(const MdtConstraint *c, int index, const MeVector
         MeVector3Copy(out, world);
 }
 
-void MdtConstraintWorldPosition(const MdtConstraint *c, int index, MeVector3 out)
+void MdtConstraintWorldPosition(const MdtConstraintData *c, int index, MeVector3 out)
 {
     if (c->body[index])
         MeMatrix4TMTransform(out, c->body[index]->bodyTM, c->position[index]);
@@ -222,7 +222,7 @@ void MdtConstraintWorldPosition(const MdtConstraint *c, int index, MeVector3 out
         MeVector3Copy(out, c->position[index]);
 }
 
-void MdtConstraintWorldPrimary(const MdtConstraint *c, int index, MeVector3 out)
+void MdtConstraintWorldPrimary(const MdtConstraintData *c, int index, MeVector3 out)
 {
     if (c->body[index])
         MeMatrix4TMRotate(out, c->body[index]->bodyTM, c->primary[index]);
@@ -230,7 +230,7 @@ void MdtConstraintWorldPrimary(const MdtConstraint *c, int index, MeVector3 out)
         MeVector3Copy(out, c->primary[index]);
 }
 
-void MdtConstraintWorldOrthogonal(const MdtConstraint *c, int index, MeVector3 out)
+void MdtConstraintWorldOrthogonal(const MdtConstraintData *c, int index, MeVector3 out)
 {
     if (c->body[index])
         MeMatrix4TMRotate(out, c->body[index]->bodyTM, c->orthogonal[index]);
@@ -287,7 +287,7 @@ void MdtConstraintBodySetPositionRel(MdtConstraintID id, unsigned int bodyindex,
     MeVector3Set(c->position[bodyindex], x, y, z);
 }
 
-static void setWorldAxes(MdtConstraint *c, int first, int last, MeVector3 p, MeVector3 o)
+static void setWorldAxes(MdtConstraintData *c, int first, int last, MeVector3 p, MeVector3 o)
 {
     for (int i = first; i <= last; i++) {
         MdtConstraintToBodyVector(c, i, p, c->primary[i]);
@@ -473,10 +473,10 @@ void MdtConstraintGetWorldAngularVelocity(MdtConstraintID id, MeVector3 av)
 void MdtConstraintSetBodies(MdtConstraintID id, MdtBodyID b1, MdtBodyID b2)
 {
     CONSTRAINT_OR_RETURN(c, id, ME_NOTHING);
-    MdtBody *body0 = MdtBodyFromID(b1, __func__);
+    MdtBodyData *body0 = MdtBodyFromID(b1, __func__);
     if (!body0)
         return;
-    MdtBody *body1 = NULL;
+    MdtBodyData *body1 = NULL;
     if (b2) {
         body1 = MdtBodyFromID(b2, __func__);
         if (!body1)
@@ -528,12 +528,12 @@ void MdtConstraintSetWorldAngularVelocity(MdtConstraintID id, MeReal ax, MeReal 
 }
 
 /* ---- iteration ---------------------------------------------------------------------------- */
-static MdtConstraintID nextTopLevel(MdtWorld *w, int from)
+static MdtConstraintID nextTopLevel(MdtWorldData *w, int from)
 {
     for (int i = from; i < w->constraintPool.capacity; i++) {
         if (!MePoolSlotIsLive(&w->constraintPool, i))
             continue;
-        const MdtConstraint *c = MePoolSlot(&w->constraintPool, i);
+        const MdtConstraintData *c = MePoolSlot(&w->constraintPool, i);
         if (!c->inGroup)
             return (MdtConstraintID)c->id;
     }
@@ -542,7 +542,7 @@ static MdtConstraintID nextTopLevel(MdtWorld *w, int from)
 
 MdtConstraintID MdtConstraintGetFirst(MdtWorldID wid)
 {
-    MdtWorld *w = MdtWorldFromID(wid, __func__);
+    MdtWorldData *w = MdtWorldFromID(wid, __func__);
     return w ? nextTopLevel(w, 0) : NULL;
 }
 
@@ -554,7 +554,7 @@ MdtConstraintID MdtConstraintGetNext(MdtConstraintID id)
 
 void MdtWorldForAllConstraints(MdtWorldID wid, MdtConstraintIteratorCBPtr cb, void *ccbdata)
 {
-    MdtWorld *w = MdtWorldFromID(wid, __func__);
+    MdtWorldData *w = MdtWorldFromID(wid, __func__);
     if (!w)
         return;
     ME_CHECK_NOT_NULL(cb, ME_NOTHING);
@@ -562,41 +562,41 @@ void MdtWorldForAllConstraints(MdtWorldID wid, MdtConstraintIteratorCBPtr cb, vo
     for (int i = 0; i < w->constraintPool.capacity; i++) {
         if (!MePoolSlotIsLive(&w->constraintPool, i))
             continue;
-        const MdtConstraint *c = MePoolSlot(&w->constraintPool, i);
+        const MdtConstraintData *c = MePoolSlot(&w->constraintPool, i);
         if (!c->inGroup)
             cb((MdtConstraintID)c->id, ccbdata);
     }
 }
 
-static MdtConstraint *nextOnBody(const MdtBody *b, const MdtConstraint *c)
+static MdtConstraintData *nextOnBody(const MdtBodyData *b, const MdtConstraintData *c)
 {
     return c->nextForBody[c->body[0] == b ? 0 : 1];
 }
 
 MdtConstraintID MdtBodyGetFirstConstraint(MdtBodyID bid)
 {
-    MdtBody *b = MdtBodyFromID(bid, __func__);
+    MdtBodyData *b = MdtBodyFromID(bid, __func__);
     if (!b || !b->firstConstraint)
         return NULL;
-    return (MdtConstraintID)((MdtConstraint *)b->firstConstraint)->id;
+    return (MdtConstraintID)((MdtConstraintData *)b->firstConstraint)->id;
 }
 
 MdtConstraintID MdtBodyGetNextConstraint(MdtBodyID bid, MdtConstraintID cid)
 {
-    MdtBody *b = MdtBodyFromID(bid, __func__);
+    MdtBodyData *b = MdtBodyFromID(bid, __func__);
     if (!b)
         return NULL;
     CONSTRAINT_OR_RETURN(c, cid, NULL);
-    MdtConstraint *next = nextOnBody(b, c);
+    MdtConstraintData *next = nextOnBody(b, c);
     return next ? (MdtConstraintID)next->id : NULL;
 }
 
 /* Calls fn for each constraint of the body (optionally only contact groups); fn may release it. */
-static void forBody(MdtBody *b, MeBool contactsOnly, void (*fn)(MdtConstraint *, void *), void *data)
+static void forBody(MdtBodyData *b, MeBool contactsOnly, void (*fn)(MdtConstraintData *, void *), void *data)
 {
-    MdtConstraint *c = b->firstConstraint;
+    MdtConstraintData *c = b->firstConstraint;
     while (c) {
-        MdtConstraint *next = nextOnBody(b, c);
+        MdtConstraintData *next = nextOnBody(b, c);
         if (!contactsOnly || c->type == MdtBclCONTACTGROUP || c->type == MdtBclCONTACT)
             fn(c, data);
         c = next;
@@ -608,19 +608,19 @@ typedef struct CallbackData {
     void *data;
 } CallbackData;
 
-static void callUser(MdtConstraint *c, void *data)
+static void callUser(MdtConstraintData *c, void *data)
 {
     CallbackData *d = data;
     d->cb((MdtConstraintID)c->id, d->data);
 }
 
-static void disableOne(MdtConstraint *c, void *data)
+static void disableOne(MdtConstraintData *c, void *data)
 {
     (void)data;
     MdtConstraintDisable((MdtConstraintID)c->id);
 }
 
-static void releaseOne(MdtConstraint *c, void *data)
+static void releaseOne(MdtConstraintData *c, void *data)
 {
     (void)data;
     MdtConstraintRelease(c);
@@ -628,7 +628,7 @@ static void releaseOne(MdtConstraint *c, void *data)
 
 void MdtBodyForAllConstraints(MdtBodyID bid, MdtConstraintIteratorCBPtr cb, void *ccbdata)
 {
-    MdtBody *b = MdtBodyFromID(bid, __func__);
+    MdtBodyData *b = MdtBodyFromID(bid, __func__);
     if (!b)
         return;
     ME_CHECK_NOT_NULL(cb, ME_NOTHING);
@@ -638,28 +638,28 @@ void MdtBodyForAllConstraints(MdtBodyID bid, MdtConstraintIteratorCBPtr cb, void
 
 void MdtBodyDisableConstraints(MdtBodyID bid)
 {
-    MdtBody *b = MdtBodyFromID(bid, __func__);
+    MdtBodyData *b = MdtBodyFromID(bid, __func__);
     if (b)
         forBody(b, MEFALSE, disableOne, NULL);
 }
 
 void MdtBodyDestroyConstraints(MdtBodyID bid)
 {
-    MdtBody *b = MdtBodyFromID(bid, __func__);
+    MdtBodyData *b = MdtBodyFromID(bid, __func__);
     if (b)
         forBody(b, MEFALSE, releaseOne, NULL);
 }
 
 void MdtBodyDisableContacts(MdtBodyID bid)
 {
-    MdtBody *b = MdtBodyFromID(bid, __func__);
+    MdtBodyData *b = MdtBodyFromID(bid, __func__);
     if (b)
         forBody(b, METRUE, disableOne, NULL);
 }
 
 void MdtBodyDestroyContacts(MdtBodyID bid)
 {
-    MdtBody *b = MdtBodyFromID(bid, __func__);
+    MdtBodyData *b = MdtBodyFromID(bid, __func__);
     if (b)
         forBody(b, METRUE, releaseOne, NULL);
 }

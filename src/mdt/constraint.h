@@ -24,8 +24,8 @@
 #include "body.h"
 #include "kea/kea.h"
 
-struct MdtWorld;
-struct MdtConstraint;
+struct MdtWorldData;
+struct MdtConstraintData;
 struct MdtRowWriter;
 
 /** Largest number of rows any joint writes (contact groups write 3 per contact). */
@@ -38,25 +38,25 @@ typedef struct MdtConstraintClass {
     const char *name;
     int maxRows; /* rows written at most (contact groups: per contact) */
     /* Restore the type's defaults in c->data (and frames if the type has its own defaults). */
-    void (*reset)(struct MdtConstraint *c);
+    void (*reset)(struct MdtConstraintData *c);
     /* Rows this step (an upper bound is fine); NULL means maxRows. */
-    int (*rowCount)(const struct MdtConstraint *c);
+    int (*rowCount)(const struct MdtConstraintData *c);
     /* Write this step's rows. */
-    void (*addRows)(struct MdtConstraint *c, struct MdtRowWriter *w);
+    void (*addRows)(struct MdtConstraintData *c, struct MdtRowWriter *w);
     /* After the solve: per-type outputs from the row impulses (optional). */
-    void (*unpack)(struct MdtConstraint *c, const MeReal *impulses, int rows, MeReal h);
+    void (*unpack)(struct MdtConstraintData *c, const MeReal *impulses, int rows, MeReal h);
     /* Before the slot is released (optional; contact groups free their contacts). */
-    void (*destroy)(struct MdtConstraint *c);
+    void (*destroy)(struct MdtConstraintData *c);
 } MdtConstraintClass;
 
 /** The common header and the type data of a constraint. */
-typedef struct MdtConstraint {
+typedef struct MdtConstraintData {
     uintptr_t id;
-    struct MdtWorld *world;
+    struct MdtWorldData *world;
     int slot;
     MdtBclJointType type;
     const MdtConstraintClass *cls;
-    MdtBody *body[2];             /* body[1] NULL = the world */
+    MdtBodyData *body[2];             /* body[1] NULL = the world */
     MeBool enabled;
     MeBool inGroup;               /* a contact owned by a contact group (not partitioned itself) */
     void *userData;
@@ -74,7 +74,7 @@ typedef struct MdtConstraint {
     MeReal impulse[MDT_MAX_JOINT_ROWS]; /* last step's row impulses: the next step's warm start */
 
     /* Links: the constraint lists of body 0 and body 1. */
-    struct MdtConstraint *nextForBody[2];
+    struct MdtConstraintData *nextForBody[2];
     /* Step bookkeeping. */
     unsigned long visitStamp;     /* partitioner: step in which it was last placed */
     int rowStart;                 /* first row in the step's row arrays, or -1 */
@@ -86,7 +86,7 @@ typedef struct MdtConstraint {
         void *pointer;
         double alignment;
     } data;
-} MdtConstraint;
+} MdtConstraintData;
 
 /** Type data of a constraint, as the type's own struct. */
 #define MDT_CONSTRAINT_DATA(c, Type) ((Type *)(void *)(c)->data.reals)
@@ -97,26 +97,26 @@ typedef struct MdtConstraint {
 /* ---- creation and lookup ------------------------------------------------------------------ */
 /** A new disabled constraint of `type` (behaviour in `cls`) in world `wid`, reset to its defaults;
  *  NULL (reported in `function`'s name) when the ID is bad or the pool is full. */
-MdtConstraint *MdtConstraintCreateInternal(MdtWorldID wid, MdtBclJointType type, const MdtConstraintClass *cls,
+MdtConstraintData *MdtConstraintCreateInternal(MdtWorldID wid, MdtBclJointType type, const MdtConstraintClass *cls,
                                            const char *function);
 /** Resolve an ID of any constraint type; NULL (reported) if invalid. */
-MdtConstraint *MdtConstraintFromID(MdtConstraintID id, const char *function);
+MdtConstraintData *MdtConstraintFromID(MdtConstraintID id, const char *function);
 /** Resolve an ID that must be of `type`; NULL (reported) if invalid or of another type. */
-MdtConstraint *MdtConstraintFromIDOfType(const void *id, MdtBclJointType type, const char *function);
+MdtConstraintData *MdtConstraintFromIDOfType(const void *id, MdtBclJointType type, const char *function);
 /** Release the slot (after the class's destroy hook), unlinking from the bodies. */
-void MdtConstraintRelease(MdtConstraint *c);
+void MdtConstraintRelease(MdtConstraintData *c);
 /** Attach to bodies (NULL body1 = world); relinks the bodies' constraint lists. */
-void MdtConstraintAttach(MdtConstraint *c, MdtBody *b0, MdtBody *b1);
+void MdtConstraintAttach(MdtConstraintData *c, MdtBodyData *b0, MdtBodyData *b1);
 /** Reset the common frames: positions 0, primary (1,0,0), orthogonal (0,1,0) in each body's frame. */
-void MdtConstraintResetFrames(MdtConstraint *c);
+void MdtConstraintResetFrames(MdtConstraintData *c);
 
 /* ---- frames in world coordinates ----------------------------------------------------------- */
-void MdtConstraintWorldPosition(const MdtConstraint *c, int body, MeVector3 out);
-void MdtConstraintWorldPrimary(const MdtConstraint *c, int body, MeVector3 out);
-void MdtConstraintWorldOrthogonal(const MdtConstraint *c, int body, MeVector3 out);
+void MdtConstraintWorldPosition(const MdtConstraintData *c, int body, MeVector3 out);
+void MdtConstraintWorldPrimary(const MdtConstraintData *c, int body, MeVector3 out);
+void MdtConstraintWorldOrthogonal(const MdtConstraintData *c, int body, MeVector3 out);
 /** A world point / direction expressed in body `index`'s frame (identity for the world). */
-void MdtConstraintToBodyPoint(const MdtConstraint *c, int index, const MeVector3 world, MeVector3 out);
-void MdtConstraintToBodyVector(const MdtConstraint *c, int index, const MeVector3 world, MeVector3 out);
+void MdtConstraintToBodyPoint(const MdtConstraintData *c, int index, const MeVector3 world, MeVector3 out);
+void MdtConstraintToBodyVector(const MdtConstraintData *c, int index, const MeVector3 world, MeVector3 out);
 
 /* ---- the row writer (BCL) ------------------------------------------------------------------ */
 /** One row as a constraint describes it. Zero-initialise, then fill what applies. */
@@ -143,7 +143,7 @@ typedef struct MdtRowWriter {
     int count;    /* rows written so far */
     int capacity;
     /* The constraint being written. */
-    MdtConstraint *constraint;
+    MdtConstraintData *constraint;
     int first;    /* its first row */
     int localBody[2]; /* partition-local indices of its bodies, or KEA_WORLD */
     MeReal h, gamma, epsilon0;
@@ -161,23 +161,23 @@ static inline void MdtRowInit(MdtRow *row)
 }
 /** The rows constraint `c` would write now, as MdtRows (at most `max`); for tests and tools (e.g.
  *  Jacobians against finite differences of the errors). `h` is the step the rows are written for. */
-int MdtConstraintCaptureRows(MdtConstraint *c, MdtRow *rows, int max, MeReal h);
+int MdtConstraintCaptureRows(MdtConstraintData *c, MdtRow *rows, int max, MeReal h);
 
 /* ---- shared row pieces (bcl/parts.c) -------------------------------------------------------- */
 /** Three rows holding a point of body 0 on a point of body 1 (ball and socket). */
-void MdtBclAddPointRows(MdtRowWriter *w, const MdtConstraint *c);
+void MdtBclAddPointRows(MdtRowWriter *w, const MdtConstraintData *c);
 /** Rows keeping the world direction `d1` of body 0 perpendicular to body 1's direction `d2`:
  *  one row, error d1·d2. */
-void MdtBclAddPerpendicularRow(MdtRowWriter *w, const MdtConstraint *c, const MeVector3 d1, const MeVector3 d2);
+void MdtBclAddPerpendicularRow(MdtRowWriter *w, const MdtConstraintData *c, const MeVector3 d1, const MeVector3 d2);
 /** Two rows keeping body 0's primary axis parallel to body 1's (hinge). */
-void MdtBclAddParallelAxisRows(MdtRowWriter *w, const MdtConstraint *c);
+void MdtBclAddParallelAxisRows(MdtRowWriter *w, const MdtConstraintData *c);
 /** Lever arm of the attachment point from body `index`'s COM, world frame (zero for the world). */
-void MdtBclLeverArm(const MdtConstraint *c, int index, MeVector3 r);
+void MdtBclLeverArm(const MdtConstraintData *c, int index, MeVector3 r);
 /** Angular Jacobian of θ = atan2(d·v, d·u), with d fixed in body `dBody` and u, v in the other
  *  (exact at any pose); fills ang0/ang1 of `row` and returns θ in (−π, π]. */
 MeReal MdtBclAngleRow(MdtRow *row, const MeVector3 u, const MeVector3 v, const MeVector3 d, int dBody);
 /** Jacobian of φ = (p0 − p1)·d (attachment points; d fixed in body `dBody`, world frame now); fills
  *  lin/ang of `row` and returns φ. */
-MeReal MdtBclSlideRow(MdtRow *row, const MdtConstraint *c, const MeVector3 d, int dBody);
+MeReal MdtBclSlideRow(MdtRow *row, const MdtConstraintData *c, const MeVector3 d, int dBody);
 
 #endif /* MDT_CONSTRAINT_INTERNAL_H */

@@ -10,6 +10,7 @@
  * stamp (ContactData.lodRows), which the contact's row writer honours in the pack stage; the next step
  * starts from full rows again. The list lives in the world's LOD chunk. */
 
+#include <karma/MdtDefaults.h>
 #include <karma/MdtContact.h>
 
 #include "../me/check.h"
@@ -19,8 +20,8 @@
 #include "world.h"
 
 typedef struct LODEntry {
-    MdtConstraint *contact;
-    const MdtConstraint *owner; /* the group, or the stand-alone contact itself */
+    MdtConstraintData *contact;
+    const MdtConstraintData *owner; /* the group, or the stand-alone contact itself */
     MeReal importance;
     int full;                   /* rows of its type */
     int rows;                   /* rows it keeps */
@@ -35,14 +36,14 @@ static int compareEntries(const void *pa, const void *pb)
     return (a->contact->slot > b->contact->slot) - (a->contact->slot < b->contact->slot);
 }
 
-static int constraintRows(const MdtConstraint *c) { return c->cls->rowCount ? c->cls->rowCount(c) : c->cls->maxRows; }
+static int constraintRows(const MdtConstraintData *c) { return c->cls->rowCount ? c->cls->rowCount(c) : c->cls->maxRows; }
 
 /* Speed at which the two bodies approach each other at the contact (0 when separating). */
-static MeReal approachSpeed(const MdtConstraint *owner, const ContactData *d)
+static MeReal approachSpeed(const MdtConstraintData *owner, const ContactData *d)
 {
     MeReal vn = 0;
     for (int i = 0; i < 2; i++) {
-        const MdtBody *b = owner->body[i];
+        const MdtBodyData *b = owner->body[i];
         if (!b)
             continue;
         MeVector3 r, wxr;
@@ -50,12 +51,12 @@ static MeReal approachSpeed(const MdtConstraint *owner, const ContactData *d)
                      d->position[2] - b->comTM[3][2]);
         MeVector3Cross(wxr, b->velrot, r);
         MeReal v = MeVector3Dot(d->normal, b->vel) + MeVector3Dot(d->normal, wxr);
-        vn += i == 0 ? -v : v;
+        vn += i == 0 ? v : -v; /* separating speed: body 0 along n (n points from body 1 to body 0) */
     }
     return vn < 0 ? -vn : 0;
 }
 
-static MeReal formulaImportance(const MdtWorld *w, const MdtConstraint *owner, const ContactData *d, int ownerRows,
+static MeReal formulaImportance(const MdtWorldData *w, const MdtConstraintData *owner, const ContactData *d, int ownerRows,
                                 int partitionRows)
 {
     const MdtLODParams *p = &w->lod;
@@ -72,11 +73,11 @@ static MeReal formulaImportance(const MdtWorld *w, const MdtConstraint *owner, c
 }
 
 /* Append the contacts of one constraint (a group's, or a stand-alone contact) to the list. */
-static int listContacts(MdtWorld *w, MdtConstraint *c, LODEntry *list, int n, int partitionRows)
+static int listContacts(MdtWorldData *w, MdtConstraintData *c, LODEntry *list, int n, int partitionRows)
 {
-    MdtConstraint *first = c->type == MdtBclCONTACTGROUP ? MdtContactGroupFirst(c) : c;
+    MdtConstraintData *first = c->type == MdtBclCONTACTGROUP ? MdtContactGroupFirst(c) : c;
     int ownerRows = constraintRows(c), start = n;
-    for (MdtConstraint *k = first; k; k = k == c ? NULL : MDT_CONSTRAINT_DATA(k, ContactData)->next) {
+    for (MdtConstraintData *k = first; k; k = k == c ? NULL : MDT_CONSTRAINT_DATA(k, ContactData)->next) {
         const ContactData *d = MDT_CONSTRAINT_DATA(k, const ContactData);
         LODEntry *e = &list[n++];
         e->contact = k;
@@ -101,20 +102,20 @@ static int listContacts(MdtWorld *w, MdtConstraint *c, LODEntry *list, int n, in
     return n;
 }
 
-static int countContacts(const MdtConstraint *c)
+static int countContacts(const MdtConstraintData *c)
 {
     if (c->type == MdtBclCONTACT)
         return 1;
     int n = 0;
-    for (const MdtConstraint *k = MdtContactGroupFirst(c); k; k = MDT_CONSTRAINT_DATA(k, const ContactData)->next)
+    for (const MdtConstraintData *k = MdtContactGroupFirst(c); k; k = MDT_CONSTRAINT_DATA(k, const ContactData)->next)
         n++;
     return n;
 }
 
 /* Cap partition p; returns the rows dropped. */
-static int capPartition(MdtWorld *w, int p, int rows)
+static int capPartition(MdtWorldData *w, int p, int rows)
 {
-    MdtPartitionOutput *out = &w->partitions;
+    MdtPartitionLists *out = &w->partitions;
     int cStart = out->constraintStart[p], cEnd = out->constraintStart[p + 1], n = 0;
     for (int i = cStart; i < cEnd; i++)
         if (out->constraints[i]->type == MdtBclCONTACTGROUP || out->constraints[i]->type == MdtBclCONTACT)
@@ -126,7 +127,7 @@ static int capPartition(MdtWorld *w, int p, int rows)
         return 0; /* reported by the chunk: this partition is solved uncapped */
     n = 0;
     for (int i = cStart; i < cEnd; i++) {
-        MdtConstraint *c = out->constraints[i];
+        MdtConstraintData *c = out->constraints[i];
         if (c->type == MdtBclCONTACTGROUP || c->type == MdtBclCONTACT)
             n = listContacts(w, c, list, n, rows);
     }
@@ -166,11 +167,11 @@ static int capPartition(MdtWorld *w, int p, int rows)
     return dropped;
 }
 
-void MdtLODStage(MdtWorld *w)
+void MdtLODStage(MdtWorldData *w)
 {
     if (w->maxMatrixSize == MDT_MATRIX_SIZE_UNCAPPED)
         return;
-    MdtPartitionOutput *out = &w->partitions;
+    MdtPartitionLists *out = &w->partitions;
     for (int p = 0; p < out->partitionCount; p++) {
         int rows = 0;
         for (int i = out->constraintStart[p]; i < out->constraintStart[p + 1]; i++)
@@ -188,18 +189,18 @@ void MdtLODStage(MdtWorld *w)
 void MdtLODParamsSetDefaults(MdtLODParams *p)
 {
     ME_CHECK_NOT_NULL(p, ME_NOTHING);
-    p->frictionRatio = 0;
-    p->zeroRowBonus = 150;
-    p->toWorldBonus = 100;
-    p->rowCountBias = 40;
-    p->penetrationBias = 15;
-    p->normVelBias = ME_R(6.5);
-    p->nonAutoBonus = 40;
+    p->frictionRatio = MDTWORLD_DEFAULT_FRICTION_RATIO;
+    p->zeroRowBonus = MDTWORLD_DEFAULT_ZERO_ROW_BONUS;
+    p->toWorldBonus = MDTWORLD_DEFAULT_TO_WORLD_BONUS;
+    p->rowCountBias = MDTWORLD_ROW_COUNT_BIAS;
+    p->penetrationBias = MDTWORLD_PENETRATION_BIAS;
+    p->normVelBias = MDTWORLD_NORM_VEL_BIAS;
+    p->nonAutoBonus = MDTWORLD_DEFAULT_NON_AUTO_BONUS;
 }
 
 void MdtWorldSetMaxMatrixSize(MdtWorldID id, int size)
 {
-    MdtWorld *w = MdtWorldFromID(id, __func__);
+    MdtWorldData *w = MdtWorldFromID(id, __func__);
     if (!w)
         return;
     if (size < 1) {
@@ -212,13 +213,13 @@ void MdtWorldSetMaxMatrixSize(MdtWorldID id, int size)
 
 int MdtWorldGetMaxMatrixSize(MdtWorldID id)
 {
-    MdtWorld *w = MdtWorldFromID(id, __func__);
+    MdtWorldData *w = MdtWorldFromID(id, __func__);
     return w ? w->maxMatrixSize : MDT_MATRIX_SIZE_UNCAPPED;
 }
 
 void MdtWorldGetLODParams(MdtWorldID id, MdtLODParams *params)
 {
-    MdtWorld *w = MdtWorldFromID(id, __func__);
+    MdtWorldData *w = MdtWorldFromID(id, __func__);
     if (!w)
         return;
     ME_CHECK_NOT_NULL(params, ME_NOTHING);
@@ -227,7 +228,7 @@ void MdtWorldGetLODParams(MdtWorldID id, MdtLODParams *params)
 
 void MdtWorldSetLODParams(MdtWorldID id, const MdtLODParams *p)
 {
-    MdtWorld *w = MdtWorldFromID(id, __func__);
+    MdtWorldData *w = MdtWorldFromID(id, __func__);
     if (!w)
         return;
     ME_CHECK_NOT_NULL(p, ME_NOTHING);
@@ -243,7 +244,7 @@ void MdtWorldSetLODParams(MdtWorldID id, const MdtLODParams *p)
 
 void MdtWorldSetContactImportanceCB(MdtWorldID id, MdtContactImportanceCBPtr cb, void *userData)
 {
-    MdtWorld *w = MdtWorldFromID(id, __func__);
+    MdtWorldData *w = MdtWorldFromID(id, __func__);
     if (!w)
         return;
     w->importanceCB = cb;

@@ -1,4 +1,4 @@
-/* pack.c -- MdtPackAllPartitions (MdtPackStage): turn the step's partitions into solver input (Karma's BCL stage).
+/* pack.c -- MdtPack (MdtPackStage): turn the step's partitions into solver input (Karma's BCL stage).
  *
  * First the bodies' velocities are predicted with the external forces (predict.c); then, partition
  * by partition, every enabled constraint writes its rows through the row writer below, which turns
@@ -27,7 +27,7 @@ static MeReal toImpulse(MeReal force, MeReal h)
 
 int MdtRowWriterAdd(MdtRowWriter *w, const MdtRow *row)
 {
-    MdtConstraint *c = w->constraint;
+    MdtConstraintData *c = w->constraint;
     int local = w->count - w->first;
     if (w->count >= w->capacity) {
         ME_ASSERT_INTERNAL(w->count < w->capacity);
@@ -42,7 +42,7 @@ int MdtRowWriterAdd(MdtRowWriter *w, const MdtRow *row)
     memset(J, 0, sizeof *J);
     MeVector3Copy(J->lin0, row->lin0);
     MeVector3Copy(J->ang0, row->ang0);
-    const MdtBody *b0 = c->body[0], *b1 = c->body[1];
+    const MdtBodyData *b0 = c->body[0], *b1 = c->body[1];
     /* Constraint velocity now (with external forces applied): J v*. */
     MeReal jv = dot3(row->lin0, b0->velStar) + dot3(row->ang0, b0->velrotStar);
     if (b1) {
@@ -66,13 +66,13 @@ int MdtRowWriterAdd(MdtRowWriter *w, const MdtRow *row)
     return local;
 }
 
-static int rowCountOf(const MdtConstraint *c)
+static int rowCountOf(const MdtConstraintData *c)
 {
     return c->cls->rowCount ? c->cls->rowCount(c) : c->cls->maxRows;
 }
 
 /* Lay out the step's row arrays for `rows` rows and `bodies` bodies in the row chunk. */
-static MeBool allocateRows(MdtWorld *w, int rows, int bodies, int partitions)
+static MeBool allocateRows(MdtWorldData *w, int rows, int bodies, int partitions)
 {
     MdtStepRows *r = &w->rows;
     size_t nr = (size_t)(rows > 0 ? rows : 1), nb = (size_t)(bodies > 0 ? bodies : 1);
@@ -102,9 +102,9 @@ static MeBool allocateRows(MdtWorld *w, int rows, int bodies, int partitions)
     return METRUE;
 }
 
-void MdtPackStage(MdtWorld *w)
+void MdtPackStage(MdtWorldData *w)
 {
-    MdtPartitionOutput *out = &w->partitions;
+    MdtPartitionLists *out = &w->partitions;
     MdtStepRows *r = &w->rows;
     MdtKeaPredictVelocities(w);
 
@@ -123,7 +123,7 @@ void MdtPackStage(MdtWorld *w)
 
     /* Bodies: inverse mass and world inverse inertia, in step order. */
     for (int i = 0; i < out->bodyCount; i++) {
-        const MdtBody *b = out->bodies[i];
+        const MdtBodyData *b = out->bodies[i];
         r->bodies[i].invMass = b->invMass;
         MdtBodyWorldInverseInertia(b, r->bodies[i].invInertia);
     }
@@ -147,7 +147,7 @@ void MdtPackStage(MdtWorld *w)
         int bodyBase = out->partitionStart[p];
         r->partitionRowStart[p] = writer.count;
         for (int i = out->constraintStart[p]; i < out->constraintStart[p + 1]; i++) {
-            MdtConstraint *c = out->constraints[i];
+            MdtConstraintData *c = out->constraints[i];
             writer.constraint = c;
             writer.first = writer.count;
             writer.capacity = writer.count + rowCountOf(c);
@@ -164,7 +164,7 @@ void MdtPackStage(MdtWorld *w)
     w->rowsPacked = METRUE;
 }
 
-int MdtConstraintCaptureRows(MdtConstraint *c, MdtRow *rows, int max, MeReal h)
+int MdtConstraintCaptureRows(MdtConstraintData *c, MdtRow *rows, int max, MeReal h)
 {
     MdtRowWriter w;
     memset(&w, 0, sizeof w);

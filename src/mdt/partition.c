@@ -1,4 +1,4 @@
-/* partition.c -- MdtUpdatePartitions (MdtPartitionStage): group the enabled bodies and constraints into partitions.
+/* partition.c -- MdtWorldUpdatePartitions (MdtPartitionStage): group the enabled bodies and constraints into partitions.
  *
  * A partition (island) is a minimal set of bodies and constraints that can be solved without
  * reference to any other: if a body is in it, every enabled constraint on that body is, and so is
@@ -20,7 +20,7 @@
 
 static int compareBodies(const void *pa, const void *pb)
 {
-    const MdtBody *a = *(MdtBody *const *)pa, *b = *(MdtBody *const *)pb;
+    const MdtBodyData *a = *(MdtBodyData *const *)pa, *b = *(MdtBodyData *const *)pb;
     if (a->sortKey != b->sortKey)
         return a->sortKey < b->sortKey ? -1 : 1;
     return (a->slot > b->slot) - (a->slot < b->slot);
@@ -28,7 +28,7 @@ static int compareBodies(const void *pa, const void *pb)
 
 static int compareConstraints(const void *pa, const void *pb)
 {
-    const MdtConstraint *a = *(MdtConstraint *const *)pa, *b = *(MdtConstraint *const *)pb;
+    const MdtConstraintData *a = *(MdtConstraintData *const *)pa, *b = *(MdtConstraintData *const *)pb;
     if (a->sortKey != b->sortKey)
         return a->sortKey < b->sortKey ? -1 : 1;
     return (a->slot > b->slot) - (a->slot < b->slot);
@@ -40,14 +40,14 @@ static int compareConstraints(const void *pa, const void *pb)
  * for them. Otherwise (rare) each partition is sorted. O(bodies + constraint slots) against
  * O(n log n) comparisons through a function pointer. The cursors borrow the droppedRows array,
  * which is cleared afterwards. */
-static void sortPartitions(MdtWorld *w, MdtBody *const *seeds, int seedCount, MeBool woke, MeBool keyed)
+static void sortPartitions(MdtWorldData *w, MdtBodyData *const *seeds, int seedCount, MeBool woke, MeBool keyed)
 {
-    MdtPartitionOutput *out = &w->partitions;
+    MdtPartitionLists *out = &w->partitions;
     int *cursor = out->droppedRows;
     if (woke) {
         for (int p = 0; p < out->partitionCount; p++)
             MeSortInPlace(out->bodies + out->partitionStart[p],
-                          (size_t)(out->partitionStart[p + 1] - out->partitionStart[p]), sizeof(MdtBody *),
+                          (size_t)(out->partitionStart[p + 1] - out->partitionStart[p]), sizeof(MdtBodyData *),
                           compareBodies);
     } else {
         for (int p = 0; p < out->partitionCount; p++)
@@ -58,7 +58,7 @@ static void sortPartitions(MdtWorld *w, MdtBody *const *seeds, int seedCount, Me
     if (keyed) {
         for (int p = 0; p < out->partitionCount; p++)
             MeSortInPlace(out->constraints + out->constraintStart[p],
-                          (size_t)(out->constraintStart[p + 1] - out->constraintStart[p]), sizeof(MdtConstraint *),
+                          (size_t)(out->constraintStart[p + 1] - out->constraintStart[p]), sizeof(MdtConstraintData *),
                           compareConstraints);
     } else if (out->constraintCount > 0) {
         const unsigned long stamp = w->partitionStamp;
@@ -68,7 +68,7 @@ static void sortPartitions(MdtWorld *w, MdtBody *const *seeds, int seedCount, Me
         for (int i = 0; i < w->constraintPool.capacity && placed < out->constraintCount; i++) {
             if (!MePoolSlotIsLive(&w->constraintPool, i))
                 continue;
-            MdtConstraint *c = MePoolSlot(&w->constraintPool, i);
+            MdtConstraintData *c = MePoolSlot(&w->constraintPool, i);
             if (c->visitStamp == stamp && c->enabled) {
                 out->constraints[cursor[c->partition]++] = c;
                 placed++;
@@ -78,21 +78,21 @@ static void sortPartitions(MdtWorld *w, MdtBody *const *seeds, int seedCount, Me
 }
 
 /* Carve the output arrays out of the partition chunk. */
-static MeBool allocateOutput(MdtWorld *w, MdtBody ***seeds, int maxBodies, int maxConstraints)
+static MeBool allocateOutput(MdtWorldData *w, MdtBodyData ***seeds, int maxBodies, int maxConstraints)
 {
-    MdtPartitionOutput *out = &w->partitions;
+    MdtPartitionLists *out = &w->partitions;
     size_t nb = (size_t)maxBodies + 1, nc = (size_t)maxConstraints + 1;
-    size_t bytes = sizeof(MdtBody *) * 2 * nb + sizeof(MdtBodyID) * nb + sizeof(MdtConstraint *) * nc +
+    size_t bytes = sizeof(MdtBodyData *) * 2 * nb + sizeof(MdtBodyID) * nb + sizeof(MdtConstraintData *) * nc +
                    sizeof(int) * 5 * nb + 64;
     unsigned char *mem = MeChunkGetMem(&w->partitionChunk, bytes);
     if (!mem)
         return MEFALSE;
     MeChunkPutMem(&w->partitionChunk, mem); /* the arrays stay valid until the next step */
     /* Pointer arrays first (strictest alignment), then ints. */
-    out->bodies = (MdtBody **)mem;
+    out->bodies = (MdtBodyData **)mem;
     *seeds = out->bodies + nb;
     out->ids = (MdtBodyID *)(*seeds + nb);
-    out->constraints = (MdtConstraint **)(out->ids + nb);
+    out->constraints = (MdtConstraintData **)(out->ids + nb);
     out->partitionStart = (int *)(out->constraints + nc);
     out->constraintStart = out->partitionStart + nb;
     out->droppedRows = out->constraintStart + nb;
@@ -101,11 +101,11 @@ static MeBool allocateOutput(MdtWorld *w, MdtBody ***seeds, int maxBodies, int m
     return METRUE;
 }
 
-void MdtPartitionStage(MdtWorld *w)
+void MdtPartitionStage(MdtWorldData *w)
 {
-    MdtPartitionOutput *out = &w->partitions;
+    MdtPartitionLists *out = &w->partitions;
     const unsigned long stamp = ++w->partitionStamp;
-    MdtBody **seeds;
+    MdtBodyData **seeds;
     int maxBodies = MePoolGetUsed(&w->bodyPool);
     out->bodyCount = out->partitionCount = out->constraintCount = 0;
     w->rowsPacked = MEFALSE;
@@ -119,17 +119,17 @@ void MdtPartitionStage(MdtWorld *w)
     for (int i = 0; i < w->bodyPool.capacity; i++) {
         if (!MePoolSlotIsLive(&w->bodyPool, i))
             continue;
-        MdtBody *b = MePoolSlot(&w->bodyPool, i);
+        MdtBodyData *b = MePoolSlot(&w->bodyPool, i);
         b->partition = -1;
         b->stepIndex = -1;
         if (b->enabled)
             seeds[seedCount++] = b;
     }
-    MeSortInPlace(seeds, (size_t)seedCount, sizeof(MdtBody *), compareBodies);
+    MeSortInPlace(seeds, (size_t)seedCount, sizeof(MdtBodyData *), compareBodies);
 
     MeBool woke = MEFALSE, keyed = MEFALSE; /* the orders below hold without a sort unless these */
     for (int s = 0; s < seedCount; s++) {
-        MdtBody *seed = seeds[s];
+        MdtBodyData *seed = seeds[s];
         if (seed->visitStamp == stamp)
             continue;
         int bodyStart = out->bodyCount, constraintStart = out->constraintCount;
@@ -138,8 +138,8 @@ void MdtPartitionStage(MdtWorld *w)
         out->bodies[out->bodyCount++] = seed;
         /* Breadth-first: the body array itself is the queue. */
         for (int head = bodyStart; head < out->bodyCount; head++) {
-            MdtBody *b = out->bodies[head];
-            for (MdtConstraint *c = b->firstConstraint; c; c = c->nextForBody[c->body[0] == b ? 0 : 1]) {
+            MdtBodyData *b = out->bodies[head];
+            for (MdtConstraintData *c = b->firstConstraint; c; c = c->nextForBody[c->body[0] == b ? 0 : 1]) {
                 if (!c->enabled || c->visitStamp == stamp)
                     continue;
                 c->visitStamp = stamp;
@@ -147,7 +147,7 @@ void MdtPartitionStage(MdtWorld *w)
                 keyed |= c->sortKey != 0;
                 out->constraints[out->constraintCount++] = c;
                 for (int k = 0; k < 2; k++) {
-                    MdtBody *other = c->body[k];
+                    MdtBodyData *other = c->body[k];
                     if (!other || other->visitStamp == stamp)
                         continue;
                     other->visitStamp = stamp;

@@ -11,7 +11,7 @@
 #include "constraint.h"
 #include "world.h"
 
-static void stopAndDisable(MdtBody *b)
+static void stopAndDisable(MdtBodyData *b)
 {
     MeVector4Copy(b->q, b->stepStartQ);
     MdtBodyUpdateTransforms(b, b->stepStartCom);
@@ -22,9 +22,9 @@ static void stopAndDisable(MdtBody *b)
     MdtBodySetEnabledInternal(b, MEFALSE);
 }
 
-void MdtSimErrorHandlePartitions(MdtWorld *w)
+void MdtSimErrorHandlePartitions(MdtWorldData *w)
 {
-    MdtPartitionOutput *out = &w->partitions;
+    MdtPartitionLists *out = &w->partitions;
     for (int p = 0; p < out->partitionCount; p++) {
         if (!out->simError[p])
             continue;
@@ -52,30 +52,38 @@ void MdtSimErrorHandlePartitions(MdtWorld *w)
 /* ---- API ---------------------------------------------------------------------------------- */
 void MdtWorldSetCheckSim(MdtWorldID id, MeBool check)
 {
-    MdtWorld *w = MdtWorldFromID(id, __func__);
+    MdtWorldData *w = MdtWorldFromID(id, __func__);
     if (w)
         w->checkSim = check ? METRUE : MEFALSE;
 }
 
 MeBool MdtWorldGetCheckSim(MdtWorldID id)
 {
-    MdtWorld *w = MdtWorldFromID(id, __func__);
+    MdtWorldData *w = MdtWorldFromID(id, __func__);
     return w ? w->checkSim : MEFALSE;
 }
 
-void MdtWorldSetSimErrorCB(MdtWorldID id, MdtSimErrorCBPtr cb, void *userData)
+void MdtWorldSetSimErrorHandler(MdtWorldID id, MdtSimErrorHandlerPtr cb, void *userData)
 {
-    MdtWorld *w = MdtWorldFromID(id, __func__);
+    MdtWorldData *w = MdtWorldFromID(id, __func__);
     if (!w)
         return;
     w->simErrorCB = cb;
     w->simErrorData = userData;
 }
 
-void MdtDefaultSimErrorCallBack(MdtWorldID id, const MdtSimError *error, void *userData)
+MdtSimErrorHandlerPtr MdtWorldGetSimErrorHandler(MdtWorldID id, void **userData)
+{
+    MdtWorldData *w = MdtWorldFromID(id, __func__);
+    if (userData)
+        *userData = w ? w->simErrorData : NULL;
+    return w ? w->simErrorCB : NULL;
+}
+
+void MdtDefaultSimErrorHandler(MdtWorldID id, const MdtSimError *error, void *userData)
 {
     (void)userData;
-    MdtWorld *w = MdtWorldFromID(id, __func__);
+    MdtWorldData *w = MdtWorldFromID(id, __func__);
     if (!w)
         return;
     ME_CHECK_NOT_NULL(error, ME_NOTHING);

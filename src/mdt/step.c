@@ -1,13 +1,13 @@
 /* step.c -- MdtWorldStep and its stages as public functions (MdtMainLoop.h, docs/step.md).
  *
  *   MdtWorldStepBegin         check h, lock the world, start the profile frame
- *   MdtUpdatePartitions       islands of enabled bodies joined by constraints
+ *   MdtWorldUpdatePartitions  islands of enabled bodies joined by constraints
  *   MdtAutoDisablePartitions  islands at rest go to sleep                           (optional)
  *   MdtLODPartitions          matrix capping                                        (optional)
- *   MdtPackAllPartitions      external forces → predicted velocities; constraints → solver rows
- *   MdtKeaAddConstraintForces the LCP for the constraint impulses, per island
- *   MdtKeaIntegrateSystem     velocities, then positions and orientations; state check
- *   MdtUnpackForces           constraint forces back into the constraints; accumulators cleared
+ *   MdtPack                   external forces → predicted velocities; constraints → solver rows
+ *   MdtKeaSolve               the LCP for the constraint impulses, per island
+ *   MdtKeaIntegrate           velocities, then positions and orientations; state check
+ *   MdtUnpack                 constraint forces back into the constraints; accumulators cleared
  *   MdtWorldStepEnd           count the step, unlock
  *
  * MdtWorldStep runs exactly these, so a step written by the application from the public stages is
@@ -19,17 +19,17 @@
 #include "world.h"
 
 /* The stage a call needs the world to be in: at least `after`, and before `stage` itself. */
-static MdtWorld *enterStage(MdtWorldID id, MdtStage stage, MdtStage after, const char *function)
+static MdtWorldData *enterStage(MdtWorldID id, MdtStage stage, MdtStage after, const char *function)
 {
-    MdtWorld *w = MdtWorldFromID(id, function);
+    MdtWorldData *w = MdtWorldFromID(id, function);
     if (!w)
         return NULL;
     if (w->stage < after || w->stage >= stage) {
         static const char *const names[] = {"MdtWorldStepBegin",        "MdtWorldStepBegin",
-                                            "MdtUpdatePartitions",      "MdtAutoDisablePartitions",
-                                            "MdtLODPartitions",         "MdtPackAllPartitions",
-                                            "MdtKeaAddConstraintForces", "MdtKeaIntegrateSystem",
-                                            "MdtUnpackForces"};
+                                            "MdtWorldUpdatePartitions", "MdtAutoDisablePartitions",
+                                            "MdtLODPartitions",         "MdtPack",
+                                            "MdtKeaSolve",              "MdtKeaIntegrate",
+                                            "MdtUnpack"};
         ME_REPORT_IN(function, ME_ERR_BAD_STATE,
                      "stage called out of order: it must follow %s%s in the same step; call ignored",
                      names[after], w->stage == MdtStageIdle ? " (no step has begun)" : "");
@@ -38,7 +38,7 @@ static MdtWorld *enterStage(MdtWorldID id, MdtStage stage, MdtStage after, const
     return w;
 }
 
-static MeBool beginStep(MdtWorld *w, MeReal stepSize, const char *function)
+static MeBool beginStep(MdtWorldData *w, MeReal stepSize, const char *function)
 {
     if (!(ME_IS_FINITE(stepSize) && stepSize > 0)) {
         ME_REPORT_IN(function, ME_ERR_STEP_SIZE, "argument 'stepSize' (%g) must be positive and finite; step skipped",
@@ -58,7 +58,7 @@ static MeBool beginStep(MdtWorld *w, MeReal stepSize, const char *function)
     return METRUE;
 }
 
-static void endStep(MdtWorld *w)
+static void endStep(MdtWorldData *w)
 {
     MeProfileEndSection(&w->profile, MDT_SECTION_STEP);
     MeProfileFrameEnd(&w->profile);
@@ -71,7 +71,7 @@ static void endStep(MdtWorld *w)
 /* The stages in order: what each runs, its profile section, the stage it completes and the earliest
  * stage it may follow (the optional auto-disable and LOD stages may be skipped). */
 typedef struct StageDef {
-    void (*run)(MdtWorld *w);
+    void (*run)(MdtWorldData *w);
     const char *section;
     MdtStage done, after;
 } StageDef;
@@ -87,7 +87,7 @@ static const StageDef stages[] = {
 };
 
 /* One stage, timed in its profile section. */
-static void runStage(MdtWorld *w, const StageDef *stage)
+static void runStage(MdtWorldData *w, const StageDef *stage)
 {
     MeProfileStartSection(&w->profile, stage->section);
     stage->run(w);
@@ -98,36 +98,36 @@ static void runStage(MdtWorld *w, const StageDef *stage)
 /* A stage called by the application: checked against the step's progress, then run. */
 static void publicStage(MdtWorldID id, int index, const char *function)
 {
-    MdtWorld *w = enterStage(id, stages[index].done, stages[index].after, function);
+    MdtWorldData *w = enterStage(id, stages[index].done, stages[index].after, function);
     if (w)
         runStage(w, &stages[index]);
 }
 
 void MdtWorldStepBegin(MdtWorldID id, MeReal stepSize)
 {
-    MdtWorld *w = MdtWorldFromID(id, __func__);
+    MdtWorldData *w = MdtWorldFromID(id, __func__);
     if (w)
         beginStep(w, stepSize, __func__);
 }
 
-void MdtUpdatePartitions(MdtWorldID id) { publicStage(id, 0, __func__); }
+void MdtWorldUpdatePartitions(MdtWorldID id) { publicStage(id, 0, __func__); }
 void MdtAutoDisablePartitions(MdtWorldID id) { publicStage(id, 1, __func__); }
 void MdtLODPartitions(MdtWorldID id) { publicStage(id, 2, __func__); }
-void MdtPackAllPartitions(MdtWorldID id) { publicStage(id, 3, __func__); }
-void MdtKeaAddConstraintForces(MdtWorldID id) { publicStage(id, 4, __func__); }
-void MdtKeaIntegrateSystem(MdtWorldID id) { publicStage(id, 5, __func__); }
-void MdtUnpackForces(MdtWorldID id) { publicStage(id, 6, __func__); }
+void MdtPack(MdtWorldID id) { publicStage(id, 3, __func__); }
+void MdtKeaSolve(MdtWorldID id) { publicStage(id, 4, __func__); }
+void MdtKeaIntegrate(MdtWorldID id) { publicStage(id, 5, __func__); }
+void MdtUnpack(MdtWorldID id) { publicStage(id, 6, __func__); }
 
 void MdtWorldStepEnd(MdtWorldID id)
 {
-    MdtWorld *w = enterStage(id, (MdtStage)(MdtStageUnpacked + 1), MdtStageUnpacked, __func__);
+    MdtWorldData *w = enterStage(id, (MdtStage)(MdtStageUnpacked + 1), MdtStageUnpacked, __func__);
     if (w)
         endStep(w);
 }
 
 void MdtWorldStep(MdtWorldID id, MeReal stepSize)
 {
-    MdtWorld *w = MdtWorldFromID(id, __func__);
+    MdtWorldData *w = MdtWorldFromID(id, __func__);
     if (!w || !beginStep(w, stepSize, __func__))
         return;
     for (size_t i = 0; i < sizeof stages / sizeof stages[0]; i++)
@@ -136,9 +136,9 @@ void MdtWorldStep(MdtWorldID id, MeReal stepSize)
 }
 
 /* ---- partition queries -------------------------------------------------------------------- */
-static MdtWorld *partitionWorld(MdtWorldID id, int partition, const char *function)
+static MdtWorldData *partitionWorld(MdtWorldID id, int partition, const char *function)
 {
-    MdtWorld *w = MdtWorldFromID(id, function);
+    MdtWorldData *w = MdtWorldFromID(id, function);
     if (!w)
         return NULL;
     if (partition < 0 || partition >= w->partitions.partitionCount) {
@@ -151,7 +151,7 @@ static MdtWorld *partitionWorld(MdtWorldID id, int partition, const char *functi
 
 int MdtWorldGetPartitionCount(MdtWorldID id)
 {
-    MdtWorld *w = MdtWorldFromID(id, __func__);
+    MdtWorldData *w = MdtWorldFromID(id, __func__);
     return w ? w->partitions.partitionCount : 0;
 }
 
@@ -159,10 +159,10 @@ void MdtWorldGetPartitionInfo(MdtWorldID id, int partition, MdtPartitionInfo *in
 {
     ME_CHECK_NOT_NULL(info, ME_NOTHING);
     info->bodies = info->constraints = info->rows = info->droppedRows = 0;
-    MdtWorld *w = partitionWorld(id, partition, __func__);
+    MdtWorldData *w = partitionWorld(id, partition, __func__);
     if (!w)
         return;
-    const MdtPartitionOutput *out = &w->partitions;
+    const MdtPartitionLists *out = &w->partitions;
     info->bodies = out->partitionStart[partition + 1] - out->partitionStart[partition];
     info->constraints = out->constraintStart[partition + 1] - out->constraintStart[partition];
     info->droppedRows = out->droppedRows[partition];
@@ -172,10 +172,10 @@ void MdtWorldGetPartitionInfo(MdtWorldID id, int partition, MdtPartitionInfo *in
 
 MdtBodyID MdtWorldGetPartitionBody(MdtWorldID id, int partition, int index)
 {
-    MdtWorld *w = partitionWorld(id, partition, __func__);
+    MdtWorldData *w = partitionWorld(id, partition, __func__);
     if (!w)
         return NULL;
-    const MdtPartitionOutput *out = &w->partitions;
+    const MdtPartitionLists *out = &w->partitions;
     int count = out->partitionStart[partition + 1] - out->partitionStart[partition];
     if (index < 0 || index >= count) {
         ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'index' (%d) must lie in [0, %d)", index, count);

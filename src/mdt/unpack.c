@@ -1,4 +1,4 @@
-/* unpack.c -- MdtUnpackForces (MdtUnpackStage): the constraint forces of the step, back into the
+/* unpack.c -- MdtUnpack (MdtUnpackStage): the constraint forces of the step, back into the
  * constraints, and the simulated bodies' accumulators cleared.
  *
  * For each constraint solved this step: the force and torque on each body are the sums of its rows'
@@ -12,12 +12,12 @@
 #include "world.h"
 
 /* Clears the accumulators of the bodies that were simulated; disabled bodies keep theirs. */
-static void clearAccumulators(MdtWorld *w)
+static void clearAccumulators(MdtWorldData *w)
 {
     for (int i = 0; i < w->bodyPool.capacity; i++) {
         if (!MePoolSlotIsLive(&w->bodyPool, i))
             continue;
-        MdtBody *b = MePoolSlot(&w->bodyPool, i);
+        MdtBodyData *b = MePoolSlot(&w->bodyPool, i);
         if (b->stepIndex < 0)
             continue;
         MeVector3Set(b->force, 0, 0, 0);
@@ -28,9 +28,9 @@ static void clearAccumulators(MdtWorld *w)
     }
 }
 
-void MdtUnpackStage(MdtWorld *w)
+void MdtUnpackStage(MdtWorldData *w)
 {
-    const MdtPartitionOutput *out = &w->partitions;
+    const MdtPartitionLists *out = &w->partitions;
     const MdtStepRows *r = &w->rows;
     const MeReal invH = 1 / w->stepSize;
     if (w->rowsPacked) {
@@ -40,7 +40,7 @@ void MdtUnpackStage(MdtWorld *w)
                        sizeof(MeReal) * (size_t)(r->partitionRowStart[p + 1] - r->partitionRowStart[p]));
     }
     for (int i = 0; w->rowsPacked && i < out->constraintCount; i++) {
-        MdtConstraint *c = out->constraints[i];
+        MdtConstraintData *c = out->constraints[i];
         MeVector3 f0 = {0, 0, 0}, t0 = {0, 0, 0}, f1 = {0, 0, 0}, t1 = {0, 0, 0};
         for (int k = 0; k < c->rowCount; k++) {
             int row = c->rowStart + k;

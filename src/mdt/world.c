@@ -1,4 +1,5 @@
 /* world.c -- creating, configuring and destroying a dynamics world (see MdtWorld.h). */
+#include <karma/MdtDefaults.h>
 #include <string.h>
 
 #include <karma/MeMemory.h>
@@ -9,32 +10,32 @@
 #include "world.h"
 
 /* Karma's defaults (KARMA.md §5.1, decision D1 for auto-disable). */
-#define DEFAULT_EPSILON ME_R(0.01)
-#define DEFAULT_GAMMA ME_R(0.2)
+#define DEFAULT_EPSILON MDTWORLD_DEFAULT_EPSILON
+#define DEFAULT_GAMMA MDTWORLD_DEFAULT_GAMMA
 #define DEFAULT_LCP_ITERATIONS 10
-#define DEFAULT_AD_VELOCITY ME_R(0.02)
-#define DEFAULT_AD_ANGULAR_VELOCITY ME_R(0.001)
-#define DEFAULT_AD_ACCELERATION ME_R(0.05)
-#define DEFAULT_AD_ANGULAR_ACCELERATION ME_R(0.05)
-#define DEFAULT_AD_ALIVE_TIME ME_R(0.2)
+#define DEFAULT_AD_VELOCITY MDTWORLD_DEFAULT_VEL_THRESH
+#define DEFAULT_AD_ANGULAR_VELOCITY MDTWORLD_DEFAULT_VELROT_THRESH
+#define DEFAULT_AD_ACCELERATION MDTWORLD_DEFAULT_ACC_THRESH
+#define DEFAULT_AD_ANGULAR_ACCELERATION MDTWORLD_DEFAULT_ACCROT_THRESH
+#define DEFAULT_AD_ALIVE_TIME MDTWORLD_DEFAULT_ALIVE_TIME_THRESH
 
 /* A constraint slot holds the common header and the largest type's data (constraint.h). */
-#define CONSTRAINT_SLOT_BYTES sizeof(MdtConstraint)
+#define CONSTRAINT_SLOT_BYTES sizeof(MdtConstraintData)
 
-MdtWorld *MdtWorldFromID(MdtWorldID id, const char *function)
+MdtWorldData *MdtWorldFromID(MdtWorldID id, const char *function)
 {
     return MeHandleResolveOwner((uintptr_t)id, ME_HANDLE_WORLD, function, "w");
 }
 
 #define WORLD_OR_RETURN(w, id, ret)                                                                  \
-    MdtWorld *w = MdtWorldFromID((id), __func__);                                                    \
+    MdtWorldData *w = MdtWorldFromID((id), __func__);                                                    \
     if (!w)                                                                                          \
     return ret
 
-void MdtWorldSetDefaults(MdtWorld *w)
+void MdtWorldSetDefaults(MdtWorldData *w)
 {
     MeReal l2 = w->lengthScale * w->lengthScale;
-    w->gravity[0] = w->gravity[1] = w->gravity[2] = 0;
+    MeVector3Set(w->gravity, MDTWORLD_DEFAULT_GRAVITY_X, MDTWORLD_DEFAULT_GRAVITY_Y, MDTWORLD_DEFAULT_GRAVITY_Z);
     w->epsilon = DEFAULT_EPSILON / w->massScale;
     w->gamma = DEFAULT_GAMMA;
     w->maxLCPIterations = DEFAULT_LCP_ITERATIONS;
@@ -63,14 +64,14 @@ MdtWorldID MdtWorldCreate(unsigned int maxBodies, unsigned int maxConstraints, M
                   maxConstraints, (long)ME_HANDLE_MAX_INDEX);
         return NULL;
     }
-    MdtWorld *w = MeMemoryCreateZeroed(sizeof *w);
+    MdtWorldData *w = MeMemoryCreateZeroed(sizeof *w);
     if (!w)
         return NULL;
     w->maxBodies = maxBodies;
     w->maxConstraints = maxConstraints;
     w->lengthScale = lengthScale;
     w->massScale = massScale;
-    if (!MePoolInit(&w->bodyPool, (int)maxBodies, sizeof(MdtBody), 16, "maxBodies", 0) ||
+    if (!MePoolInit(&w->bodyPool, (int)maxBodies, sizeof(MdtBodyData), 16, "maxBodies", 0) ||
         !MePoolInit(&w->constraintPool, (int)maxConstraints, CONSTRAINT_SLOT_BYTES, 16, "maxConstraints", 0)) {
         MePoolDestroy(&w->bodyPool);
         MeMemoryDestroy(w);
@@ -338,7 +339,7 @@ void MdtWorldResetForces(MdtWorldID id)
     for (int i = 0; i < w->bodyPool.capacity; i++) {
         if (!MePoolSlotIsLive(&w->bodyPool, i))
             continue;
-        MdtBody *b = MePoolSlot(&w->bodyPool, i);
+        MdtBodyData *b = MePoolSlot(&w->bodyPool, i);
         MeVector3Set(b->force, 0, 0, 0);
         MeVector3Set(b->torque, 0, 0, 0);
         MeVector3Set(b->impulse, 0, 0, 0);
@@ -355,7 +356,7 @@ void MdtWorldSetAutoDisable(MdtWorldID id, MeBool d)
 /* All auto-disable thresholds share one check: finite and not negative. */
 static void setThreshold(MdtWorldID id, MeReal value, size_t offset, const char *function)
 {
-    MdtWorld *w = MdtWorldFromID(id, function);
+    MdtWorldData *w = MdtWorldFromID(id, function);
     if (!w)
         return;
     if (!ME_IS_FINITE(value)) {

@@ -30,22 +30,22 @@ typedef struct MdtAutoDisableParams {
     MeReal aliveTime;                                                    /* seconds */
 } MdtAutoDisableParams;
 
-struct MdtConstraint;
+struct MdtConstraintData;
 
 /* The step's view of the enabled bodies and constraints, grouped into partitions (islands). */
-typedef struct MdtPartitionOutput {
+typedef struct MdtPartitionLists {
     int bodyCount;
-    MdtBody **bodies;        /* enabled bodies, grouped by partition */
+    MdtBodyData **bodies;        /* enabled bodies, grouped by partition */
     int partitionCount;
     int *partitionStart;     /* partitionCount + 1 offsets into bodies */
     int constraintCount;
-    struct MdtConstraint **constraints; /* enabled constraints, grouped by partition */
+    struct MdtConstraintData **constraints; /* enabled constraints, grouped by partition */
     int *constraintStart;    /* partitionCount + 1 offsets into constraints */
     int *droppedRows;        /* per partition: rows removed by matrix capping */
     int *simError;           /* per partition: 0, or the MdtSimErrorKind that failed it */
     int *solverStatus;       /* per partition: the KeaStatus of its solve */
     MdtBodyID *ids;          /* scratch for the sim-error callback's body list (maxBodies) */
-} MdtPartitionOutput;
+} MdtPartitionLists;
 
 /* Where an application-driven step is (MdtMainLoop.h): each stage requires the previous one. */
 typedef enum MdtStage {
@@ -73,7 +73,7 @@ typedef struct MdtStepRows {
     size_t workspaceBytes;   /* Kea workspace for the largest partition */
 } MdtStepRows;
 
-typedef struct MdtWorld {
+typedef struct MdtWorldData {
     int ownerSlot;           /* registry slot behind the MdtWorldID */
     uintptr_t id;
     MePool bodyPool;
@@ -92,7 +92,7 @@ typedef struct MdtWorld {
     void *bodyEnableData, *bodyDisableData;
     MdtContactGroupDestroyCBPtr contactGroupDestroyCB;
     void *contactGroupDestroyData;
-    MdtSimErrorCBPtr simErrorCB;
+    MdtSimErrorHandlerPtr simErrorCB;
     void *simErrorData;
     MeBool checkSim;
     MdtContactImportanceCBPtr importanceCB;
@@ -110,7 +110,7 @@ typedef struct MdtWorld {
     MeReal stepSize;         /* of the step in progress or the last one */
     int enabledBodyCount;
     int enabledConstraintCount;
-    MdtPartitionOutput partitions;
+    MdtPartitionLists partitions;
     MdtStepRows rows;
     MeBool rowsPacked;       /* rows describe the current partitions (pack ran after partitioning) */
     unsigned long partitionStamp;
@@ -123,22 +123,22 @@ typedef struct MdtWorld {
     unsigned long steps;
     MeReal time;
     int lastRowCount;
-} MdtWorld;
+} MdtWorldData;
 
 /* Resolve an ID or report in the caller's name; NULL when invalid. */
-MdtWorld *MdtWorldFromID(MdtWorldID id, const char *function);
+MdtWorldData *MdtWorldFromID(MdtWorldID id, const char *function);
 /* Set every setting to its default for the world's scales. */
-void MdtWorldSetDefaults(MdtWorld *w);
+void MdtWorldSetDefaults(MdtWorldData *w);
 
 /* The stages of the step (docs/step.md, MdtMainLoop.h); step.c wraps each in its public function. */
-void MdtPartitionStage(MdtWorld *w);
-void MdtAutoDisableStage(MdtWorld *w);
-void MdtLODStage(MdtWorld *w);
-void MdtPackStage(MdtWorld *w);
-void MdtSolveStage(MdtWorld *w);
-void MdtIntegrateStage(MdtWorld *w);
-void MdtUnpackStage(MdtWorld *w);
+void MdtPartitionStage(MdtWorldData *w);
+void MdtAutoDisableStage(MdtWorldData *w);
+void MdtLODStage(MdtWorldData *w);
+void MdtPackStage(MdtWorldData *w);
+void MdtSolveStage(MdtWorldData *w);
+void MdtIntegrateStage(MdtWorldData *w);
+void MdtUnpackStage(MdtWorldData *w);
 /* Restore, stop and disable the partitions marked in simError; report each and call the callback. */
-void MdtSimErrorHandlePartitions(MdtWorld *w);
+void MdtSimErrorHandlePartitions(MdtWorldData *w);
 
 #endif /* MDT_WORLD_INTERNAL_H */

@@ -1,10 +1,13 @@
 /* bridge.c -- MstBridge: creating it, and turning the space's pairs into dynamics contacts.
  *
- * A pair's MdtContactGroup hangs on McdModelPair.userData while the models intersect. Its contacts
- * are refreshed in place each step (the i-th contact of the test reuses the group's i-th contact,
- * after matching by position, see matchContacts), so the solver's warm start carries over between
- * steps. The group is destroyed when the models stop intersecting, at Goodbye, or when a per-pair
- * callback drops the pair. */
+ * A pair's MdtContactGroup hangs on McdModelPair.userData from the first step its models intersect
+ * until the pair's Goodbye (as the User Guide describes; decision M3). Its contacts are refreshed in
+ * place each step (a new contact reuses the group's nearest old one, see matchContacts), so the
+ * solver's warm start carries over between steps. A step without contacts (the models apart while
+ * their boxes still overlap, every contact refused by the per-contact callback, or the per-pair
+ * callback returning 0) empties the group and disables it, as Karma's bridge did: an empty group
+ * adds no rows, joins no bodies into a partition and wakes nothing; it is enabled again when
+ * contacts come back (they start from no warm start). */
 #include <string.h>
 
 #include <karma/McdInteraction.h>
@@ -27,7 +30,7 @@
 #define DEFAULT_PAIR_BUFFER 128
 #define DEFAULT_CONTACT_BUFFER 32
 
-MstBridge *MstBridgeFromID(MstBridgeID id, const char *function)
+MstBridgeData *MstBridgeFromID(MstBridgeID id, const char *function)
 {
     return MeHandleResolveOwner((uintptr_t)id, ME_HANDLE_BRIDGE, function, "b");
 }
@@ -38,7 +41,7 @@ MstBridgeID MstBridgeCreate(McdFrameworkID frame, int maxMaterials)
         ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'maxMaterials' (%d) must be at least 1", maxMaterials);
         return NULL;
     }
-    MstBridge *b = MeMemoryCreateZeroed(sizeof *b);
+    MstBridgeData *b = MeMemoryCreateZeroed(sizeof *b);
     if (!b)
         return NULL;
     b->framework = frame;
@@ -66,7 +69,7 @@ MstBridgeID MstBridgeCreate(McdFrameworkID frame, int maxMaterials)
 
 void MstBridgeDestroy(MstBridgeID id)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
         return;
     MeHandleUnregisterOwner(b->ownerSlot);
@@ -80,7 +83,7 @@ MeBool MstBridgeIsValid(MstBridgeID id) { return MeHandleIsValid((uintptr_t)id, 
 
 void MstBridgeSetModelPairBufferSize(MstBridgeID id, int size)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
         return;
     if (size < 1) {
@@ -97,13 +100,13 @@ void MstBridgeSetModelPairBufferSize(MstBridgeID id, int size)
 
 int MstBridgeGetModelPairBufferSize(MstBridgeID id)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     return b ? b->pairBufferSize : 0;
 }
 
 void MstBridgeSetContactBufferSize(MstBridgeID id, int size)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
         return;
     if (size < 1) {
@@ -120,23 +123,35 @@ void MstBridgeSetContactBufferSize(MstBridgeID id, int size)
 
 int MstBridgeGetContactBufferSize(MstBridgeID id)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     return b ? b->contactBufferSize : 0;
 }
 
 int MstBridgeGetLastPairCount(MstBridgeID id)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     return b ? b->lastPairCount : 0;
 }
 
 int MstBridgeGetLastContactCount(MstBridgeID id)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     return b ? b->lastContactCount : 0;
 }
 
 /* ---- the update --------------------------------------------------------------------------- */
+
+/* Remove every contact of the pair's group and disable it (the group itself lives on). */
+static void emptyGroup(MdtContactGroupID g)
+{
+    MdtContactID c = MdtContactGroupGetFirstContact(g);
+    while (c) {
+        MdtContactID next = MdtContactGroupGetNextContact(g, c);
+        MdtContactGroupDestroyContact(g, c);
+        c = next;
+    }
+    MdtConstraintDisable(MdtContactGroupQuaConstraint(g));
+}
 
 static void destroyGroup(McdModelPair *pair)
 {
@@ -152,7 +167,7 @@ void MstHandleTransitions(McdModelPairContainer *pairs, McdSpaceID space, MdtWor
 {
     (void)space;
     (void)world;
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
         return;
     ME_CHECK_NOT_NULL(pairs, ME_NOTHING);
@@ -206,7 +221,7 @@ static int matchContacts(MdtContactGroupID g, const McdContact *in, int n, MdtCo
 }
 
 /* Test one pair and convert its contacts; returns the number of dynamics contacts made. */
-static int collidePair(MstBridge *b, McdModelPair *pair, MdtWorldID world)
+static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
 {
     McdModel *m1 = McdModelFromID(pair->model1, __func__);
     McdModel *m2 = McdModelFromID(pair->model2, __func__);
@@ -222,19 +237,22 @@ static int collidePair(MstBridge *b, McdModelPair *pair, MdtWorldID world)
     result.contacts = b->contacts;
     result.contactMaxCount = b->contactBufferSize;
     McdIntersectModels(pair, m1, m2, &result, "MstHandleCollisions");
-    MstMaterialPair *mat = MstBridgeMaterialPair(b, m1->material, m2->material, "MstHandleCollisions");
+    MstMaterialPairData *mat = MstBridgeMaterialPair(b, m1->material, m2->material, "MstHandleCollisions");
     if (!mat)
         return 0;
     if (result.contactCount > 0 && mat->intersectCB)
         mat->intersectCB(&result);
+    MdtContactGroupID g = (MdtContactGroupID)pair->userData;
     if (result.contactCount <= 0) {
-        destroyGroup(pair);
+        if (g)
+            emptyGroup(g);
         return 0;
     }
-    /* The dynamic body is body 0: a pair whose model 1 is part of the world is turned round. */
+    /* Body 0 is model 1's body and body 1 model 2's, so McdContact's normal (model 2 towards model 1)
+     * is the MdtContact normal as it is (body 1 towards body 0). The dynamic body is body 0: a pair
+     * whose model 1 is part of the world is turned round and its normals negated. */
     MeBool swapped = !b1;
     MeReal sign = swapped ? -1 : 1;
-    MdtContactGroupID g = (MdtContactGroupID)pair->userData;
     if (!g) {
         g = MdtContactGroupCreate(world);
         if (!g)
@@ -242,7 +260,6 @@ static int collidePair(MstBridge *b, McdModelPair *pair, MdtWorldID world)
         MdtConstraintSetBodies(MdtContactGroupQuaConstraint(g), swapped ? b2 : b1, swapped ? NULL : b2);
         MdtContactGroupSetSwapped(g, swapped);
         MdtContactGroupSetGenerator(g, pair);
-        MdtConstraintEnable(MdtContactGroupQuaConstraint(g));
         pair->userData = g;
     }
     int n = result.contactCount;
@@ -259,17 +276,20 @@ static int collidePair(MstBridge *b, McdModelPair *pair, MdtWorldID world)
         else
             kept++;
     }
+    /* A per-pair callback returning 0 removes the pair's contacts (Karma's MstPerPairCBPtr), not the
+     * group, which lives until Goodbye. */
     if (kept == 0 || (mat->perPairCB && !mat->perPairCB(&result, g))) {
-        destroyGroup(pair);
+        emptyGroup(g);
         return 0;
     }
+    MdtConstraintEnable(MdtContactGroupQuaConstraint(g));
     return kept;
 }
 
 void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorldID world, MstBridgeID id)
 {
     (void)space;
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
         return;
     ME_CHECK_NOT_NULL(pairs, ME_NOTHING);
@@ -288,22 +308,11 @@ void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorl
 
 void MstBridgeUpdateContacts(MstBridgeID id, McdSpaceID space, MdtWorldID world)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
         return;
     b->lastPairCount = b->lastContactCount = 0;
-    if (McdSpaceIsChanging(space))
-        McdSpaceEndChanges(space);
-    McdSpacePairIterator it;
-    McdSpacePairIteratorBegin(space, &it);
-    MeBool more;
-    do {
-        McdModelPairContainerReset(b->pairs);
-        more = McdSpaceGetPairs(space, &it, b->pairs);
-        MstHandleTransitions(b->pairs, space, world, id);
-        MstHandleCollisions(b->pairs, space, world, id);
-    } while (more);
-    McdSpaceBeginChanges(space);
+    MstBridgeReadPairs(b, space, world, METRUE);
 }
 
 /* ---- linking models and bodies -------------------------------------------------------------- */
@@ -311,7 +320,7 @@ void MstBridgeUpdateContacts(MstBridgeID id, McdSpaceID space, MdtWorldID world)
 /* The model the bridge linked to a body, or NULL (quietly: the model may have been destroyed). */
 static McdModel *linkedModel(MdtBodyID body)
 {
-    MdtBody *bd = MdtBodyFromID(body, "MstSetWorldHandlers");
+    MdtBodyData *bd = MdtBodyFromID(body, "MstSetWorldHandlers");
     if (!bd || !bd->bridgeModel || !MeHandleIsValid(bd->bridgeModel, ME_HANDLE_MODEL))
         return NULL;
     return McdModelFromID((McdModelID)bd->bridgeModel, "MstSetWorldHandlers");
@@ -359,14 +368,14 @@ void McdModelSetBody(McdModelID id, MdtBodyID body)
     McdModel *m = McdModelFromID(id, __func__);
     if (!m)
         return;
-    MdtBody *bd = NULL;
+    MdtBodyData *bd = NULL;
     if (body) {
         bd = MdtBodyFromID(body, __func__);
         if (!bd)
             return;
     }
     if (m->body && MeHandleIsValid((uintptr_t)m->body, ME_HANDLE_BODY)) {
-        MdtBody *old = MdtBodyFromID((MdtBodyID)m->body, __func__);
+        MdtBodyData *old = MdtBodyFromID((MdtBodyID)m->body, __func__);
         if (old && old->bridgeModel == m->id)
             old->bridgeModel = 0;
     }

@@ -7,28 +7,32 @@
 #include <karma/MstBridge.h>
 
 /** One entry of the symmetric material table. */
-typedef struct MstMaterialPair {
+typedef struct MstMaterialPairData {
     MdtContactParams params;
     MstIntersectCBPtr intersectCB;
     MstPerContactCBPtr perContactCB;
     MstPerPairCBPtr perPairCB;
-} MstMaterialPair;
+} MstMaterialPairData;
 
-typedef struct MstBridge {
+typedef struct MstBridgeData {
     int ownerSlot;
     uintptr_t id;
     McdFrameworkID framework;
     int maxMaterials, materialCount;
-    MstMaterialPair *table;            /* maxMaterials², entry (i, j) with i <= j used */
+    MstMaterialPairData *table;            /* maxMaterials², entry (i, j) with i <= j used */
     McdModelPairContainer *pairs;      /* chunk read from the space */
     int pairBufferSize;
     McdContact *contacts;              /* buffer for one pair test */
     int contactBufferSize;
     int lastPairCount, lastContactCount;
-} MstBridge;
+} MstBridgeData;
 
-MstBridge *MstBridgeFromID(MstBridgeID id, const char *function);
+MstBridgeData *MstBridgeFromID(MstBridgeID id, const char *function);
 /** The table entry for a material pair, or NULL (reported in `function`'s name) for a bad index. */
-MstMaterialPair *MstBridgeMaterialPair(MstBridge *b, MstMaterialID m1, MstMaterialID m2, const char *function);
+MstMaterialPairData *MstBridgeMaterialPair(MstBridgeData *b, MstMaterialID m1, MstMaterialID m2, const char *function);
+
+/** Read the space's pairs chunk by chunk (ending and reopening its change block) and hand each
+ *  chunk to MstHandleTransitions and, when `collisions`, to MstHandleCollisions. */
+void MstBridgeReadPairs(MstBridgeData *b, McdSpaceID space, MdtWorldID world, MeBool collisions);
 
 #endif /* MST_BRIDGE_INTERNAL_H */

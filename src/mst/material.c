@@ -8,7 +8,7 @@
 #include "../me/check.h"
 #include "bridge.h"
 
-MstMaterialPair *MstBridgeMaterialPair(MstBridge *b, MstMaterialID m1, MstMaterialID m2, const char *function)
+MstMaterialPairData *MstBridgeMaterialPair(MstBridgeData *b, MstMaterialID m1, MstMaterialID m2, const char *function)
 {
     if (m1 < 0 || m1 >= b->materialCount || m2 < 0 || m2 >= b->materialCount) {
         ME_REPORT_IN(function, ME_ERR_MST_MATERIAL,
@@ -24,7 +24,7 @@ MstMaterialID MstBridgeGetDefaultMaterial(void) { return 0; }
 
 MstMaterialID MstBridgeGetNewMaterial(MstBridgeID id)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
         return -1;
     if (b->materialCount >= b->maxMaterials) {
@@ -37,20 +37,20 @@ MstMaterialID MstBridgeGetNewMaterial(MstBridgeID id)
 
 int MstBridgeGetMaterialCount(MstBridgeID id)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     return b ? b->materialCount : 0;
 }
 
 int MstBridgeGetMaxMaterials(MstBridgeID id)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
     return b ? b->maxMaterials : 0;
 }
 
 MdtContactParamsID MstBridgeGetContactParams(MstBridgeID id, MstMaterialID m1, MstMaterialID m2)
 {
-    MstBridge *b = MstBridgeFromID(id, __func__);
-    MstMaterialPair *e = b ? MstBridgeMaterialPair(b, m1, m2, __func__) : NULL;
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
+    MstMaterialPairData *e = b ? MstBridgeMaterialPair(b, m1, m2, __func__) : NULL;
     return e ? &e->params : NULL;
 }
 
@@ -58,15 +58,15 @@ MdtContactParamsID MstBridgeGetContactParams(MstBridgeID id, MstMaterialID m1, M
 #define MATERIAL_CALLBACK(Name, Type, field)                                                         \
     void MstBridgeSet##Name(MstBridgeID id, MstMaterialID m1, MstMaterialID m2, Type cb)             \
     {                                                                                                \
-        MstBridge *b = MstBridgeFromID(id, __func__);                                                \
-        MstMaterialPair *e = b ? MstBridgeMaterialPair(b, m1, m2, __func__) : NULL;                  \
+        MstBridgeData *b = MstBridgeFromID(id, __func__);                                                \
+        MstMaterialPairData *e = b ? MstBridgeMaterialPair(b, m1, m2, __func__) : NULL;                  \
         if (e)                                                                                       \
             e->field = cb;                                                                           \
     }                                                                                                \
     Type MstBridgeGet##Name(MstBridgeID id, MstMaterialID m1, MstMaterialID m2)                      \
     {                                                                                                \
-        MstBridge *b = MstBridgeFromID(id, __func__);                                                \
-        MstMaterialPair *e = b ? MstBridgeMaterialPair(b, m1, m2, __func__) : NULL;                  \
+        MstBridgeData *b = MstBridgeFromID(id, __func__);                                                \
+        MstMaterialPairData *e = b ? MstBridgeMaterialPair(b, m1, m2, __func__) : NULL;                  \
         return e ? e->field : NULL;                                                                  \
     }
 

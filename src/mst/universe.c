@@ -11,42 +11,86 @@
 
 #include "../mcd/framework.h"
 #include "../me/check.h"
-#include "../me/handle.h"
 
-typedef struct MstUniverse {
-    int ownerSlot;
-    uintptr_t id;
+#include <limits.h>
+
+/* A universe's record. Karma 1.2's programs read the public struct (MstTypes.h) through the ID, so
+ * the ID is a real pointer: to an entry of `universes` below. The record keeps its own copy of the
+ * parts, so a program that writes the public fields cannot redirect the library. */
+typedef struct MstUniverseData {
     MstUniverseSizes sizes;
     McdFrameworkID framework;
     McdSpaceID space;
     MdtWorldID world;
     MstBridgeID bridge;
     MeProfile profile;        /* "Collision" = "Farfield" + "Nearfield" of each step */
-} MstUniverse;
+} MstUniverseData;
 
-static MstUniverse *universeFromID(MstUniverseID id, const char *function)
+/* The table of universes. An ID is valid when it is the address of an entry whose record is live;
+ * it is tested by its numeric value against the table's bounds before anything is read through it,
+ * so a made-up pointer is never dereferenced. Entries are handed out round-robin so that the entry
+ * of a destroyed universe is reused as late as possible, like the handle registry's owner slots:
+ * a stale ID is caught until MST_MAX_UNIVERSES more universes have been created. Each universe
+ * also takes four owner slots (framework, space, world, bridge) of the handle registry. */
+#define MST_MAX_UNIVERSES 256
+static MstUniverse universes[MST_MAX_UNIVERSES];
+static MstUniverseData *records[MST_MAX_UNIVERSES];
+static int nextUniverse;
+
+/* The entry an ID names, or -1 when it names none (not in the table, or misaligned). */
+static int universeIndex(MstUniverseID id)
 {
-    return MeHandleResolveOwner((uintptr_t)id, ME_HANDLE_UNIVERSE, function, "u");
+    uintptr_t p = (uintptr_t)(const void *)id, base = (uintptr_t)(const void *)universes;
+    if (p < base || p >= base + sizeof universes || (p - base) % sizeof universes[0] != 0)
+        return -1;
+    return (int)((p - base) / sizeof universes[0]);
 }
 
-MstUniverseSizes MstUniverseGetDefaultSizes(void)
+static MstUniverseData *universeFromID(MstUniverseID id, const char *function)
 {
-    MstUniverseSizes s;
-    s.dynamicBodiesMaxCount = 100;
-    s.dynamicConstraintsMaxCount = 500;
-    s.materialsMaxCount = 10;
-    s.collisionModelsMaxCount = 100;
-    s.collisionPairsMaxCount = 500;
-    s.collisionUserGeometryTypesMaxCount = 0;
-    s.collisionGeometryInstancesMaxCount = 100;
-    s.lengthScale = 1;
-    s.massScale = 1;
-    return s;
+    if (!id) {
+        ME_REPORT_IN(function, ME_ERR_NULL_ARGUMENT, "argument 'u' is a NULL universe ID; call ignored");
+        return NULL;
+    }
+    int i = universeIndex(id);
+    if (i < 0 || !records[i]) {
+        ME_REPORT_IN(function, ME_ERR_INVALID_HANDLE,
+                     "argument 'u' is not a live universe ID (destroyed, stale or never created); call ignored");
+        return NULL;
+    }
+    return records[i];
 }
+
+/* A free entry for a new universe, or -1 (reported) when every entry is in use. */
+static int claimUniverse(const char *function)
+{
+    for (int tries = 0; tries < MST_MAX_UNIVERSES; tries++) {
+        int i = nextUniverse;
+        nextUniverse = (nextUniverse + 1) % MST_MAX_UNIVERSES;
+        if (!records[i])
+            return i;
+    }
+    ME_REPORT_IN(function, ME_ERR_TOO_MANY_OWNERS, "at most %d universes may exist at once", MST_MAX_UNIVERSES);
+    return -1;
+}
+
+const MstUniverseSizes MstUniverseDefaultSizes = {
+    .dynamicBodiesMaxCount = 100,
+    .dynamicConstraintsMaxCount = 500,
+    .collisionUserGeometryTypesMaxCount = 0,
+    .collisionModelsMaxCount = 100,
+    .collisionPairsMaxCount = 500,
+    .collisionGeometryInstancesMaxCount = 100,
+    .materialsMaxCount = 10,
+    .lengthScale = 1,
+    .massScale = 1,
+};
+
+MstUniverseSizes MstUniverseGetDefaultSizes(void) { return MstUniverseDefaultSizes; }
 
 static MeBool sizesValid(const MstUniverseSizes *s, const char *function)
 {
-    const struct { const char *name; int value, min; } counts[] = {
+    const struct { const char *name; unsigned int value, min; } counts[] = {
         {"dynamicBodiesMaxCount", s->dynamicBodiesMaxCount, 1},
         {"dynamicConstraintsMaxCount", s->dynamicConstraintsMaxCount, 1},
         {"materialsMaxCount", s->materialsMaxCount, 1},
@@ -56,9 +100,9 @@ static MeBool sizesValid(const MstUniverseSizes *s, const char *function)
         {"collisionGeometryInstancesMaxCount", s->collisionGeometryInstancesMaxCount, 0},
     };
     for (size_t i = 0; i < sizeof counts / sizeof counts[0]; i++)
-        if (counts[i].value < counts[i].min) {
-            ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE, "sizes->%s (%d) must be at least %d", counts[i].name,
-                         counts[i].value, counts[i].min);
+        if (counts[i].value < counts[i].min || counts[i].value > (unsigned)INT_MAX) {
+            ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE, "sizes->%s (%u) must lie in [%u, %d]", counts[i].name,
+                         counts[i].value, counts[i].min, INT_MAX);
             return MEFALSE;
         }
     if (!(ME_IS_FINITE(s->lengthScale) && s->lengthScale > 0 && ME_IS_FINITE(s->massScale) && s->massScale > 0)) {
@@ -69,7 +113,7 @@ static MeBool sizesValid(const MstUniverseSizes *s, const char *function)
     return METRUE;
 }
 
-static void destroyParts(MstUniverse *u)
+static void destroyParts(MstUniverseData *u)
 {
     if (u->bridge)
         MstBridgeDestroy(u->bridge);
@@ -86,42 +130,47 @@ MstUniverseID MstUniverseCreate(const MstUniverseSizes *sizes)
     ME_CHECK_NOT_NULL(sizes, NULL);
     if (!sizesValid(sizes, __func__))
         return NULL;
-    MstUniverse *u = MeMemoryCreateZeroed(sizeof *u);
+    int index = claimUniverse(__func__);
+    if (index < 0)
+        return NULL;
+    MstUniverseData *u = MeMemoryCreateZeroed(sizeof *u);
     if (!u)
         return NULL;
     u->sizes = *sizes;
-    u->framework = McdInit(sizes->collisionUserGeometryTypesMaxCount, sizes->collisionModelsMaxCount,
-                           sizes->collisionGeometryInstancesMaxCount, sizes->lengthScale);
+    u->framework = McdInit((int)sizes->collisionUserGeometryTypesMaxCount, (int)sizes->collisionModelsMaxCount,
+                           (int)sizes->collisionGeometryInstancesMaxCount, sizes->lengthScale);
     if (u->framework) {
         McdPrimitivesRegisterTypes(u->framework);
         McdPrimitivesRegisterInteractions(u->framework);
-        u->space = McdSpaceAxisSortCreate(u->framework, McdAllAxes, sizes->collisionModelsMaxCount,
-                                          sizes->collisionPairsMaxCount);
+        u->space = McdSpaceAxisSortCreate(u->framework, McdAllAxes, (int)sizes->collisionModelsMaxCount,
+                                          (int)sizes->collisionPairsMaxCount);
     }
     if (u->space)
-        u->world = MdtWorldCreate((unsigned)sizes->dynamicBodiesMaxCount, (unsigned)sizes->dynamicConstraintsMaxCount,
+        u->world = MdtWorldCreate(sizes->dynamicBodiesMaxCount, sizes->dynamicConstraintsMaxCount,
                                   sizes->lengthScale, sizes->massScale);
     if (u->world)
-        u->bridge = MstBridgeCreate(u->framework, sizes->materialsMaxCount);
-    if (u->bridge)
-        u->ownerSlot = MeHandleRegisterOwner(u, ME_HANDLE_UNIVERSE, __func__);
-    if (!u->ownerSlot) {
+        u->bridge = MstBridgeCreate(u->framework, (int)sizes->materialsMaxCount);
+    if (!u->bridge) {
         destroyParts(u);
         MeMemoryDestroy(u);
         return NULL;
     }
-    u->id = MeHandleOfOwner(u->ownerSlot);
     MeProfileInit(&u->profile);
     MstSetWorldHandlers(u->world);
-    return (MstUniverseID)u->id;
+    records[index] = u;
+    universes[index] = (MstUniverse){.sizes = u->sizes, .world = u->world, .frame = u->framework,
+                                     .space = u->space, .bridge = u->bridge};
+    return &universes[index];
 }
 
 void MstUniverseDestroy(MstUniverseID id)
 {
-    MstUniverse *u = universeFromID(id, __func__);
+    MstUniverseData *u = universeFromID(id, __func__);
     if (!u)
         return;
-    MeHandleUnregisterOwner(u->ownerSlot);
+    int index = universeIndex(id);
+    records[index] = NULL;
+    universes[index] = (MstUniverse){.sizes = {0}};
     /* Models first (they hold references to geometries and sit in the space); the world takes its
      * bodies and constraints with it, the framework its geometries. */
     if (McdSpaceIsChanging(u->space) == MEFALSE)
@@ -146,11 +195,15 @@ void MstUniverseDestroy(MstUniverseID id)
     MeMemoryDestroy(u);
 }
 
-MeBool MstUniverseIsValid(MstUniverseID id) { return MeHandleIsValid((uintptr_t)id, ME_HANDLE_UNIVERSE); }
+MeBool MstUniverseIsValid(MstUniverseID id)
+{
+    int i = id ? universeIndex(id) : -1;
+    return i >= 0 && records[i] != NULL;
+}
 
 void MstUniverseStep(MstUniverseID id, MeReal stepSize)
 {
-    MstUniverse *u = universeFromID(id, __func__);
+    MstUniverseData *u = universeFromID(id, __func__);
     if (!u)
         return;
     MeProfile *prof = &u->profile;
@@ -169,14 +222,14 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
 
 const MeProfile *MstUniverseGetProfile(MstUniverseID id)
 {
-    MstUniverse *u = universeFromID(id, __func__);
+    MstUniverseData *u = universeFromID(id, __func__);
     return u ? &u->profile : NULL;
 }
 
 #define UNIVERSE_GETTER(Name, Type, field)                                                           \
     Type MstUniverseGet##Name(MstUniverseID id)                                                      \
     {                                                                                                \
-        MstUniverse *u = universeFromID(id, __func__);                                               \
+        MstUniverseData *u = universeFromID(id, __func__);                                               \
         return u ? u->field : NULL;                                                                  \
     }
 UNIVERSE_GETTER(World, MdtWorldID, world)
@@ -233,7 +286,7 @@ void MstAutoSetInertialTensor(McdModelID model)
 
 McdModelID MstModelAndBodyCreate(MstUniverseID id, McdGeometryID geometry, MeReal density)
 {
-    MstUniverse *u = universeFromID(id, __func__);
+    MstUniverseData *u = universeFromID(id, __func__);
     if (!u)
         return NULL;
     ME_CHECK_FINITE(density, NULL);
@@ -293,7 +346,7 @@ void MstModelAndBodyDestroy(McdModelID model)
 
 McdModelID MstFixedModelCreate(MstUniverseID id, McdGeometryID geometry, MeMatrix4Ptr tm)
 {
-    MstUniverse *u = universeFromID(id, __func__);
+    MstUniverseData *u = universeFromID(id, __func__);
     if (!u)
         return NULL;
     ME_CHECK_NOT_NULL(tm, NULL);

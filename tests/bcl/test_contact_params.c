@@ -22,6 +22,7 @@ typedef struct Scene {
     int useDir;
     MeReal worldVel[3]; /* velocity of the plane's surface, when set */
     int useWorldVel;
+    double h;           /* the step */
 } Scene;
 
 static void makeScene(Scene *s, double z)
@@ -42,6 +43,7 @@ static void makeScene(Scene *s, double z)
     MeVector3Copy(s->up, UP);
     s->offset = 0;
     s->useDir = s->useWorldVel = 0;
+    s->h = H;
 }
 
 /* Refresh the four contacts (parameters, geometry, direction, world velocity), then step. */
@@ -54,7 +56,7 @@ static void stepScene(Scene *s)
         if (s->useWorldVel)
             MdtContactSetWorldVelocity(c, s->worldVel[0], s->worldVel[1], s->worldVel[2]);
     }
-    MdtWorldStep(s->w, (MeReal)H);
+    MdtWorldStep(s->w, (MeReal)s->h);
 }
 
 static void steps(Scene *s, int n)
@@ -153,7 +155,7 @@ static double bounceRatio(double drop, double e, double threshold)
         if (rebound == 0)
             impact = fmax(impact, -v[2]);
         MdtContactSetPosition(c, p[0], p[1], 0);
-        MdtContactSetNormal(c, 0, 0, -1);
+        MdtContactSetNormal(c, 0, 0, 1); /* the ground pushes the ball (body 0) up */
         MdtContactSetPenetration(c, (MeReal)(r - p[2]));
         MdtWorldStep(w, (MeReal)H);
         MdtBodyGetLinearVelocity(ball, v);
@@ -271,39 +273,47 @@ static void adhesion_holds_up_to_its_force(void **state)
 static void slip_gives_velocity_proportional_to_force(void **state)
 {
     (void)state;
-    /* Unbounded friction with slip s: a steady push F slides the box at (ε + s) (F / 4) h per contact
-     * row (velocity per impulse), with no static phase; twice the force, twice the speed. */
-    const double slip = 0.5, forces[2] = {4, 8};
-    double speeds[2];
-    for (int k = 0; k < 2; k++) {
-        Scene s;
-        makeScene(&s, 0.5);
-        MdtContactParamsSetType(&s.params, MdtContactTypeFriction2D);
-        MdtContactParamsSetSlip(&s.params, (MeReal)slip);
-        assert_true((s.params.options & (MdtBclContactOptionSlip1 | MdtBclContactOptionSlip2)) ==
-                    (MdtBclContactOptionSlip1 | MdtBclContactOptionSlip2));
-        steps(&s, 10);
-        pushSteps(&s, forces[k], 0, 120);
-        MeVector3 v;
-        velocity(&s, v);
-        speeds[k] = v[0];
-        double expected = (MdtWorldGetEpsilon(s.w) + slip) * (forces[k] / 4) * H;
-        print_message("slip %.2f, push %.0f N: slides at %.6f m/s (predicted %.6f)\n", slip, forces[k], v[0], expected);
-        assert_rel(v[0], expected, 1e-3);
-        assert_near(v[1], 0, 1e-6);
-        MdtWorldDestroy(s.w);
-    }
-    assert_rel(speeds[1], 2 * speeds[0], 1e-3);
+    /* Unbounded friction with slip s (User Guide: slip speed = slip × friction force, not scaled by
+     * the step): a steady push F shared by the four contacts slides the box at s F / 4, with no static
+     * phase; twice the force, twice the speed; the same at two step sizes. The slipping rows keep a
+     * trace of the world's ε (10⁻³ ε₀ per impulse), which adds 10⁻³ ε₀ h F / 4. */
+    const double slip = 0.02, forces[2] = {4, 8}, stepSizes[2] = {H, H / 4};
+    double speeds[2][2];
+    for (int k = 0; k < 2; k++)
+        for (int j = 0; j < 2; j++) {
+            Scene s;
+            makeScene(&s, 0.5);
+            s.h = stepSizes[j];
+            MdtContactParamsSetType(&s.params, MdtContactTypeFriction2D);
+            MdtContactParamsSetSlip(&s.params, (MeReal)slip);
+            assert_true((s.params.options & (MdtBclContactOptionSlip1 | MdtBclContactOptionSlip2)) ==
+                        (MdtBclContactOptionSlip1 | MdtBclContactOptionSlip2));
+            steps(&s, (int)(0.2 / s.h));
+            pushSteps(&s, forces[k], 0, (int)(2.0 / s.h));
+            MeVector3 v;
+            velocity(&s, v);
+            speeds[k][j] = v[0];
+            double expected = slip * forces[k] / 4, trace = 1e-3 * MdtWorldGetEpsilon(s.w) * s.h * forces[k] / 4;
+            print_message("slip %.2f s/kg, push %.0f N, step 1/%.0f s: slides at %.7f m/s (s F / 4 = %.7f, + trace "
+                          "%.1e)\n",
+                          slip, forces[k], 1 / s.h, v[0], expected, trace);
+            assert_rel(v[0], expected + trace, 1e-4);
+            assert_near(v[1], 0, 1e-6);
+            MdtWorldDestroy(s.w);
+        }
+    assert_rel(speeds[1][0], 2 * speeds[0][0], 1e-4);
+    assert_rel(speeds[0][1], speeds[0][0], 1e-4); /* independent of the step */
+    assert_rel(speeds[1][1], speeds[1][0], 1e-4);
 }
 
 /* ---- slide ---- */
 static void slide_sets_the_relative_tangential_velocity(void **state)
 {
     (void)state;
-    /* Slide 0.5 m/s along the primary direction t1 = x and 0.2 along the secondary t2 = normal × t1 =
-     * (0, 0, −1) × x = −y (the normal points from body 0, the box, to body 1, the world): the contacts
-     * drive the velocity of body 1 relative to body 0 at the contact to 0.5 t1 + 0.2 t2 = (0.5, −0.2, 0),
-     * so the box moves at (−0.5, 0.2, 0). */
+    /* Slide 0.5 m/s along the primary direction t1 = x and 0.2 along the secondary t2 = t1 × normal =
+     * x × (0, 0, 1) = −y (as Karma; the normal points from body 1, the world, to body 0, the box): the
+     * contacts drive the velocity of body 0 relative to body 1 at the contact to 0.5 t1 + 0.2 t2 =
+     * (0.5, −0.2, 0), so the box moves at (0.5, −0.2, 0). */
     Scene s;
     makeScene(&s, 0.5);
     MdtContactParamsSetType(&s.params, MdtContactTypeFriction2D);
@@ -323,8 +333,8 @@ static void slide_sets_the_relative_tangential_velocity(void **state)
     print_message("slide (0.5 along x, 0.2 along -y): box v = (%.5f, %.5f, %.1e), contact relative velocity (%.5f, %.5f, %.1e), "
                   "spin %.1e\n",
                   v[0], v[1], v[2], rel[0], rel[1], rel[2], sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]));
-    assert_near(v[0], -0.5, 1e-4);
-    assert_near(v[1], 0.2, 1e-4);
+    assert_near(v[0], 0.5, 1e-4);
+    assert_near(v[1], -0.2, 1e-4);
     assert_near(rel[0], 0.5, 1e-4);
     assert_near(rel[1], -0.2, 1e-4);
     assert_near(rel[2], 0, 1e-4);

@@ -153,7 +153,7 @@ static double dropBall(double H, double e, double h, double *velocityRatio)
         if (!bounced && v[2] < vBefore)
             vBefore = v[2]; /* the impact speed: the fastest approach */
         MdtContactSetPosition(c, p[0], p[1], 0);
-        MdtContactSetNormal(c, 0, 0, -1);
+        MdtContactSetNormal(c, 0, 0, 1); /* the ground pushes the ball (body 0) up */
         MdtContactSetPenetration(c, (MeReal)(r - p[2]));
         MdtWorldStep(w, (MeReal)h);
         MdtBodyGetPosition(ball, p);

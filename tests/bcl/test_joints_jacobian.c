@@ -133,7 +133,7 @@ static void rproConfigure(MdtConstraintID c, int trial)
     MdtRPROJointSetRelativeQuaternion(j, q);
     MdtRPROJointSetAngularVelocity(j, w);
     MeQuaternionMake(q, w, 3 * rnd());
-    MdtRPROJointSetAttachmentQuaternion(j, 0, q[0], q[1], q[2], q[3]);
+    MdtRPROJointSetAttachmentQuaternion(j, q[0], q[1], q[2], q[3], 0);
 }
 
 static void rpro(void **s)

@@ -227,7 +227,7 @@ static void scriptStep(Scene *s, int step)
     MdtContactID c = MdtContactGroupGetFirstContact(s->bounce);
     MdtContactSetParams(c, &s->ballParams);
     MdtContactSetPosition(c, b[0], b[1], 0);
-    MdtContactSetNormal(c, 0, 0, -1);
+    MdtContactSetNormal(c, 0, 0, 1); /* the ground pushes the ball (body 0) up */
     MdtContactSetPenetration(c, ME_R(0.25) - b[2]);
 }
 

@@ -182,7 +182,7 @@ static void bad_gains_and_angles(void **s)
     MeVector3 v;
     assert_reports(ME_ERR_QUATERNION_NOT_UNIT, MdtRPROJointSetRelativeQuaternion(r, notUnit));
     assert_reports(ME_ERR_QUATERNION_NOT_UNIT, MdtRPROJointSetAttachmentQuaternion(r, 0, 0, 0, 0, 0));
-    assert_reports(ME_ERR_BODY_INDEX, MdtRPROJointSetAttachmentQuaternion(r, 5, 1, 0, 0, 0));
+    assert_reports(ME_ERR_BODY_INDEX, MdtRPROJointSetAttachmentQuaternion(r, 1, 0, 0, 0, 5));
     assert_reports(ME_ERR_NEGATIVE_VALUE, MdtRPROJointSetAngularStrength(r, 1, -1, 1));
     assert_reports(ME_ERR_NULL_ARGUMENT, MdtRPROJointSetAngularVelocity(r, NULL));
     MdtRPROJointGetRelativeQuaternion(r, q);

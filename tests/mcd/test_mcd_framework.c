@@ -8,7 +8,7 @@
 
 #include "mcd/framework.h"
 
-/* ---- a fake pair test: one contact at the midpoint of the two origins, normal 1 -> 2 ------------ */
+/* ---- a fake pair test: one contact at the midpoint of the two origins, normal 2 -> 1 ------------ */
 static int fakeCalls;
 static int fakeFirstType;
 static int fakeTest(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2, MeReal tolerance,
@@ -19,7 +19,7 @@ static int fakeTest(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2,
     fakeFirstType = g1->type;
     *cache = &fakeCalls;
     memset(contacts, 0, sizeof *contacts);
-    MeVector3Subtract(contacts[0].normal, tm2[3], tm1[3]);
+    MeVector3Subtract(contacts[0].normal, tm1[3], tm2[3]);
     MeVector3Normalize(contacts[0].normal);
     contacts[0].separation = -ME_R(0.1);
     contacts[0].element1 = (void *)tm1; /* tags to check the exchange of elements on swap */
@@ -178,7 +178,7 @@ static int cubeSphere(McdGeometryID g1, void *data1, MeMatrix4 tm1, McdGeometryI
     for (int i = 0; i < 3; i++)
         q[i] = c[i] < -h ? -h : c[i] > h ? h : c[i];
     MeMatrix4TMTransform(w, tm1, q);
-    MeVector3Subtract(contacts[0].normal, tm2[3], w);
+    MeVector3Subtract(contacts[0].normal, w, tm2[3]); /* from the sphere (g2) towards the cube (g1) */
     MeReal d = MeVector3Normalize(contacts[0].normal);
     contacts[0].separation = d - r;
     MeVector3Copy(contacts[0].position, w);
@@ -279,7 +279,7 @@ static void user_geometry_type(void **state)
     result.contactMaxCount = 1;
     assert_true(McdIntersect(pair, &result));
     assert_near(contact.separation, -0.15, 1e-5);
-    assert_near(result.normal[2], -1, 1e-6); /* model 1 (ball) -> model 2 (cube): down */
+    assert_near(result.normal[2], 1, 1e-6); /* model 2 (cube) towards model 1 (ball): up */
     McdGoodbye(pair);
     McdModelPairDestroy(pair);
     McdModelDestroy(ball);
@@ -339,9 +339,9 @@ static void interaction_table_one_way_and_swap(void **state)
     assert_int_equal(fakeCalls, 1);
     assert_int_equal(fakeFirstType, kMcdGeometryTypeBox);
     assert_int_equal(result.contactCount, 1);
-    /* Normals are model 1 -> model 2 whatever the order of the test: sphere (0) -> box (+x). */
-    assert_near(contacts[0].normal[0], 1, 1e-6);
-    assert_near(result.normal[0], 1, 1e-6);
+    /* Normals are model 2 -> model 1 whatever the order of the test: box (+x) -> sphere (0). */
+    assert_near(contacts[0].normal[0], -1, 1e-6);
+    assert_near(result.normal[0], -1, 1e-6);
     assert_non_null(contacts[0].element1);
     MeMatrix4 sphereTM;
     McdModelGetWorldTransform(sphere, sphereTM);
@@ -354,7 +354,7 @@ static void interaction_table_one_way_and_swap(void **state)
     McdHello(pair);
     assert_int_equal(pair->swapped, 0);
     McdIntersect(pair, &result);
-    assert_near(result.normal[0], -1, 1e-6);
+    assert_near(result.normal[0], 1, 1e-6);
     McdGoodbye(pair);
     /* Request caps the contact count; contactMaxCount 0 gives none. */
     McdRequest one = {0, 0};
@@ -444,8 +444,8 @@ static void every_primitive_pair_has_a_test(void **state)
 
 /* Every built-in pair through the public path: models, McdModelPairCreate, McdHello, McdIntersect,
  * McdGoodbye, both orders of the models. Shape 2 stands on shape 1 on the common z axis (a shape
- * stands on the plane), so the separation is the gap exactly, the normal +z from the lower model to
- * the upper one. The contact tolerance is the sum of the models' (0.01 + 0.02): a gap of 0.025 gives
+ * stands on the plane), so the separation is the gap exactly, the normal from model 2 towards model 1:
+ * -z when the lower model is model 1, +z when it is model 2. The contact tolerance is the sum of the models' (0.01 + 0.02): a gap of 0.025 gives
  * contacts, 0.035 none; a gap of -0.02 is a penetration of 0.02. */
 static McdGeometryID axisGeometry(McdFrameworkID fw, int type, double *top, double *bottom)
 {
@@ -494,7 +494,7 @@ static void every_pair_through_models(void **state)
                     McdHello(pair);
                     assert_true(pair->testIndex >= 0);
                     McdIntersect(pair, &result);
-                    double sign = order ? -1 : 1, deepest = 1e30;
+                    double sign = order ? 1 : -1, deepest = 1e30; /* normals from model 2 towards model 1 */
                     if (gaps[k] > 0.03) {
                         assert_int_equal(result.contactCount, 0);
                         assert_false(result.touch);

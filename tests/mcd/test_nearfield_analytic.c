@@ -1,8 +1,9 @@
 /* Analytic cases for every pair test: touching, separated within and beyond the tolerance,
  * penetrating by a known depth, face, edge and vertex contacts, coincident centres, parallel faces,
  * shapes resting on faces and planes. Each case states the expected number of contacts, the normal
- * (geometry 1 -> 2) and the deepest separation; the pair is also run swapped (normal negated, same
- * depth). */
+ * (from geometry 2 towards geometry 1, as Karma's pair tests) and the deepest separation; the pair is
+ * also run swapped (normal negated, same depth), and geometry 1 moved along the deepest contact's
+ * normal by the depth must come apart. */
 #include "karma_test.h"
 
 #include <string.h>
@@ -43,6 +44,22 @@ static void expect(Case *c, const char *name, int minCount, int maxCount, double
     c->anyNormal = 0;
 }
 
+/* Deepest separation of the pair with geometry 1 moved by `shift` along the unit n (1e300: none). */
+static double deepestMoved(const Case *c, const double n[3], double shift)
+{
+    McdContact k[8];
+    MeMatrix4 tm1;
+    int count, i;
+    double deep = 1e300;
+    memcpy(tm1, c->tm1, sizeof tm1);
+    for (i = 0; i < 3; i++)
+        tm1[3][i] += (MeReal)(shift * n[i]);
+    count = McdNfCollide(&c->g1, tm1, &c->g2, (MeReal(*)[4])c->tm2, (MeReal)TOL, k, 4);
+    for (i = 0; i < count; i++)
+        deep = fmin(deep, k[i].separation);
+    return deep;
+}
+
 static void run(const Case *c)
 {
     McdContact k[8], ks[8];
@@ -69,6 +86,21 @@ static void run(const Case *c)
         assert_near(deepS, c->sep, c->tol);
         assert_true(nerr <= c->tol * 10 + 1e-6);
     }
+    if (n > 0) {
+        /* The sense of the normal, from the geometry alone: geometry 1 moved along the deepest
+         * contact's normal by the depth plus a margin comes apart by about the margin (along the
+         * opposite normal it would sink in). */
+        const double margin = 0.005;
+        double nd[3], apart;
+        for (i = 0, j = 0; i < n; i++)
+            if (k[i].separation < k[j].separation)
+                j = i;
+        for (i = 0; i < 3; i++)
+            nd[i] = k[j].normal[i];
+        apart = deepestMoved(c, nd, fmax(-deep, 0) + margin);
+        printf("%-44s moved along the normal by the depth + %.3f: deepest %+.5f\n", "", margin, apart);
+        assert_true(apart > 0.5 * margin);
+    }
 }
 
 static void identity(MeMatrix4 tm, double x, double y, double z) { place(tm, 0, 0, 1, 0, x, y, z); }
@@ -82,15 +114,15 @@ static void sphere_cases(void **state)
     ref_make_sphere(&c.g2, 0.5);
     identity(c.tm1, 0, 0, 0);
     identity(c.tm2, 1, 0, 0);
-    expect(&c, "sphere-sphere touching", 1, 1, 1, 0, 0, 0, e), run(&c);
+    expect(&c, "sphere-sphere touching", 1, 1, -1, 0, 0, 0, e), run(&c);
     identity(c.tm2, 1.01, 0, 0);
-    expect(&c, "sphere-sphere apart 0.01 (within tolerance)", 1, 1, 1, 0, 0, 0.01, e), run(&c);
+    expect(&c, "sphere-sphere apart 0.01 (within tolerance)", 1, 1, -1, 0, 0, 0.01, e), run(&c);
     identity(c.tm2, 0, 1.05, 0);
-    expect(&c, "sphere-sphere apart 0.05 (beyond tolerance)", 0, 0, 0, 1, 0, 0, e), run(&c);
+    expect(&c, "sphere-sphere apart 0.05 (beyond tolerance)", 0, 0, 0, -1, 0, 0, e), run(&c);
     identity(c.tm2, 0, 0, 0.8);
-    expect(&c, "sphere-sphere penetrating 0.2", 1, 1, 0, 0, 1, -0.2, e), run(&c);
+    expect(&c, "sphere-sphere penetrating 0.2", 1, 1, 0, 0, -1, -0.2, e), run(&c);
     identity(c.tm2, 0, 0, 0);
-    expect(&c, "sphere-sphere coincident centres", 1, 1, 0, 0, 1, -1.0, e); /* +z by convention */
+    expect(&c, "sphere-sphere coincident centres", 1, 1, 0, 0, 1, -1.0, e); /* sphere 1 leaves along +z */
     c.anyNormal = 1;
     run(&c);
 
@@ -98,36 +130,36 @@ static void sphere_cases(void **state)
     ref_make_box(&c.g2, 1, 1, 1);
     identity(c.tm2, 0, 0, 0);
     identity(c.tm1, -0.9, 0, 0);
-    expect(&c, "sphere-box face, depth 0.1", 1, 1, 1, 0, 0, -0.1, e), run(&c);
+    expect(&c, "sphere-box face, depth 0.1", 1, 1, -1, 0, 0, -0.1, e), run(&c);
     identity(c.tm1, -0.8, -0.8, 0);
     c.anyNormal = 0;
-    expect(&c, "sphere-box edge, depth 0.5-0.3*sqrt2", 1, 1, S2, S2, 0, 0.3 * sqrt(2.0) - 0.5, e), run(&c);
+    expect(&c, "sphere-box edge, depth 0.5-0.3*sqrt2", 1, 1, -S2, -S2, 0, 0.3 * sqrt(2.0) - 0.5, e), run(&c);
     identity(c.tm1, -0.8, -0.8, -0.8);
-    expect(&c, "sphere-box vertex, apart 0.3*sqrt3-0.5", 1, 1, S3, S3, S3, 0.3 * sqrt(3.0) - 0.5, e), run(&c);
+    expect(&c, "sphere-box vertex, apart 0.3*sqrt3-0.5", 1, 1, -S3, -S3, -S3, 0.3 * sqrt(3.0) - 0.5, e), run(&c);
     ref_make_box(&c.g2, 1, 2, 3);
     identity(c.tm1, 0, 0, 0);
-    expect(&c, "sphere-box coincident centres (1x2x3)", 1, 1, -1, 0, 0, -1.0, e), run(&c);
+    expect(&c, "sphere-box coincident centres (1x2x3)", 1, 1, 1, 0, 0, -1.0, e), run(&c);
 
     ref_make_sphere(&c.g1, 0.25);
     ref_make_cylinder(&c.g2, 0.5, 1);
     identity(c.tm1, 0.7, 0, 0);
-    expect(&c, "sphere-cylinder side, depth 0.05", 1, 1, -1, 0, 0, -0.05, e), run(&c);
+    expect(&c, "sphere-cylinder side, depth 0.05", 1, 1, 1, 0, 0, -0.05, e), run(&c);
     identity(c.tm1, 0.1, 0, 0.7);
-    expect(&c, "sphere-cylinder cap, depth 0.05", 1, 1, 0, 0, -1, -0.05, e), run(&c);
+    expect(&c, "sphere-cylinder cap, depth 0.05", 1, 1, 0, 0, 1, -0.05, e), run(&c);
     identity(c.tm1, 0.6, 0, 0.6);
-    expect(&c, "sphere-cylinder rim, depth 0.25-0.1*sqrt2", 1, 1, -S2, 0, -S2, 0.1 * sqrt(2.0) - 0.25, e), run(&c);
+    expect(&c, "sphere-cylinder rim, depth 0.25-0.1*sqrt2", 1, 1, S2, 0, S2, 0.1 * sqrt(2.0) - 0.25, e), run(&c);
 
     ref_make_sphere(&c.g1, 0.2);
     ref_make_sphyl(&c.g2, 0.3, 1);
     identity(c.tm1, 0.45, 0, 0.2);
-    expect(&c, "sphere-sphyl side, depth 0.05", 1, 1, -1, 0, 0, -0.05, e), run(&c);
+    expect(&c, "sphere-sphyl side, depth 0.05", 1, 1, 1, 0, 0, -0.05, e), run(&c);
     identity(c.tm1, 0, 0, 1.01);
-    expect(&c, "sphere-sphyl end, apart 0.01", 1, 1, 0, 0, -1, 0.01, e), run(&c);
+    expect(&c, "sphere-sphyl end, apart 0.01", 1, 1, 0, 0, 1, 0.01, e), run(&c);
 
     ref_make_sphere(&c.g1, 0.3);
     ref_make_cone(&c.g2, 0.5, 0, 1); /* apex at z = 0.75 */
     identity(c.tm1, 0, 0, 0.75 + 0.3 - 0.02);
-    expect(&c, "sphere-cone on the apex, depth 0.02", 1, 1, 0, 0, -1, -0.02, ME_TOL(1e-7, 2e-5)), run(&c);
+    expect(&c, "sphere-cone on the apex, depth 0.02", 1, 1, 0, 0, 1, -0.02, ME_TOL(1e-7, 2e-5)), run(&c);
 }
 
 static void box_cases(void **state)
@@ -139,27 +171,27 @@ static void box_cases(void **state)
     ref_make_box(&c.g2, 1, 1, 1);
     identity(c.tm1, 0, 0, 0);
     identity(c.tm2, 0, 0, 0.99);
-    expect(&c, "box-box parallel faces, depth 0.01", 4, 4, 0, 0, 1, -0.01, e), run(&c);
+    expect(&c, "box-box parallel faces, depth 0.01", 4, 4, 0, 0, -1, -0.01, e), run(&c);
     place(c.tm2, 0, 0, 1, 0.785398163397, 0.2, 0.1, 0.99);
-    expect(&c, "box-box face on face turned 45 deg", 4, 4, 0, 0, 1, -0.01, e), run(&c);
+    expect(&c, "box-box face on face turned 45 deg", 4, 4, 0, 0, -1, -0.01, e), run(&c);
     identity(c.tm2, 0, 0, 1.01);
-    expect(&c, "box-box parallel faces apart 0.01", 4, 4, 0, 0, 1, 0.01, ME_TOL(1e-8, 1e-5)), run(&c);
+    expect(&c, "box-box parallel faces apart 0.01", 4, 4, 0, 0, -1, 0.01, ME_TOL(1e-8, 1e-5)), run(&c);
     identity(c.tm2, 0, 0, 1.05);
-    expect(&c, "box-box apart 0.05 (beyond tolerance)", 0, 0, 0, 0, 1, 0, e), run(&c);
+    expect(&c, "box-box apart 0.05 (beyond tolerance)", 0, 0, 0, 0, -1, 0, e), run(&c);
     place(c.tm2, 0, 1, 0, 0.785398163397, 0, 0, 0.5 + S2 - 0.05);
-    expect(&c, "box-box edge on face, depth 0.05", 2, 2, 0, 0, 1, -0.05, e), run(&c);
+    expect(&c, "box-box edge on face, depth 0.05", 2, 2, 0, 0, -1, -0.05, e), run(&c);
     {
         /* a vertex down: the rotation taking (1,1,1)/sqrt3 to -z */
         double ax = 1, ay = -1, az = 0, angle = acos(-S3);
         place(c.tm2, ax, ay, az, angle, 0.1, 0, 0.5 + 0.5 * sqrt(3.0) - 0.03);
-        expect(&c, "box-box vertex on face, depth 0.03", 1, 1, 0, 0, 1, -0.03, ME_TOL(1e-8, 1e-5)), run(&c);
+        expect(&c, "box-box vertex on face, depth 0.03", 1, 1, 0, 0, -1, -0.03, ME_TOL(1e-8, 1e-5)), run(&c);
     }
     place(c.tm1, 1, 0, 0, 0.785398163397, 0, 0, 0);
     place(c.tm2, 0, 1, 0, 0.785398163397, 0, 0, 2 * S2 - 0.04);
-    expect(&c, "box-box crossed edges, depth 0.04", 1, 1, 0, 0, 1, -0.04, ME_TOL(1e-8, 1e-5)), run(&c);
+    expect(&c, "box-box crossed edges, depth 0.04", 1, 1, 0, 0, -1, -0.04, ME_TOL(1e-8, 1e-5)), run(&c);
     identity(c.tm1, 0, 0, 0);
     identity(c.tm2, 0, 0, 0);
-    expect(&c, "box-box coincident centres", 1, 4, 1, 0, 0, -1.0, e);
+    expect(&c, "box-box coincident centres", 1, 4, -1, 0, 0, -1.0, e);
     {
         /* any face axis is a minimum: check count and depth only */
         McdContact k[4];
@@ -179,60 +211,60 @@ static void rest_on_box(void **state)
     identity(c.tm1, 0, 0, 0);
     ref_make_cylinder(&c.g2, 0.5, 1);
     identity(c.tm2, 0.1, 0, 1 - 0.02);
-    expect(&c, "box-cylinder standing on its cap, depth 0.02", 3, 4, 0, 0, 1, -0.02, e), run(&c);
+    expect(&c, "box-cylinder standing on its cap, depth 0.02", 3, 4, 0, 0, -1, -0.02, e), run(&c);
     place(c.tm2, 1, 0, 0, 1.5707963267949, 0, 0.1, 1 - 0.02);
-    expect(&c, "box-cylinder lying on its side, depth 0.02", 2, 2, 0, 0, 1, -0.02, e), run(&c);
+    expect(&c, "box-cylinder lying on its side, depth 0.02", 2, 2, 0, 0, -1, -0.02, e), run(&c);
     ref_make_sphyl(&c.g2, 0.25, 1);
     place(c.tm2, 1, 0, 0, 1.5707963267949, 0, 0.1, 0.75 - 0.02);
-    expect(&c, "box-sphyl lying, depth 0.02", 2, 2, 0, 0, 1, -0.02, e), run(&c);
+    expect(&c, "box-sphyl lying, depth 0.02", 2, 2, 0, 0, -1, -0.02, e), run(&c);
     place(c.tm2, 1, 0, 0, 0, 0, 0.1, 1.25 - 0.02);
-    expect(&c, "box-sphyl standing on an end, depth 0.02", 1, 1, 0, 0, 1, -0.02, e), run(&c);
+    expect(&c, "box-sphyl standing on an end, depth 0.02", 1, 1, 0, 0, -1, -0.02, e), run(&c);
     ref_make_cone(&c.g2, 0.5, 0, 1); /* base at z = -0.25 */
     identity(c.tm2, 0, 0, 0.75 - 0.02);
-    expect(&c, "box-cone standing on its base, depth 0.02", 3, 4, 0, 0, 1, -0.02, e), run(&c);
+    expect(&c, "box-cone standing on its base, depth 0.02", 3, 4, 0, 0, -1, -0.02, e), run(&c);
     place(c.tm2, 1, 0, 0, 3.14159265358979, 0, 0, 0.5 + 0.75 - 0.02);
-    expect(&c, "box-cone on its apex, depth 0.02", 1, 1, 0, 0, 1, -0.02, e), run(&c);
+    expect(&c, "box-cone on its apex, depth 0.02", 1, 1, 0, 0, -1, -0.02, e), run(&c);
 
     ref_make_cylinder(&c.g1, 0.6, 1);
     ref_make_cylinder(&c.g2, 0.5, 1);
     identity(c.tm2, 0.05, 0, 1 - 0.02);
-    expect(&c, "cylinder-cylinder stacked, depth 0.02", 3, 4, 0, 0, 1, -0.02, e), run(&c);
+    expect(&c, "cylinder-cylinder stacked, depth 0.02", 3, 4, 0, 0, -1, -0.02, e), run(&c);
     place(c.tm2, 1, 0, 0, 1.5707963267949, 0, 0, 0.5 + 0.5 - 0.02);
-    expect(&c, "cylinder-cylinder lying across a cap", 2, 2, 0, 0, 1, -0.02, e), run(&c);
+    expect(&c, "cylinder-cylinder lying across a cap", 2, 2, 0, 0, -1, -0.02, e), run(&c);
     place(c.tm1, 0, 1, 0, 1.5707963267949, 0, 0, 0);
     place(c.tm2, 0, 1, 0, 1.5707963267949, 0, 0, 1.1 - 0.02);
     /* curved against curved: EPA's normal is good to ~1e-3 here (see the report), the depth to 1e-5 */
-    expect(&c, "cylinder-cylinder parallel sides", 2, 2, 0, 0, 1, -0.02, 2e-4), run(&c);
+    expect(&c, "cylinder-cylinder parallel sides", 2, 2, 0, 0, -1, -0.02, 2e-4), run(&c);
     identity(c.tm1, 0, 0, 0);
     ref_make_sphyl(&c.g2, 0.2, 0.6);
     place(c.tm2, 1, 0, 0, 1.5707963267949, 0, 0, 0.7 - 0.02);
-    expect(&c, "cylinder-sphyl lying on a cap", 2, 2, 0, 0, 1, -0.02, e), run(&c);
+    expect(&c, "cylinder-sphyl lying on a cap", 2, 2, 0, 0, -1, -0.02, e), run(&c);
     ref_make_cone(&c.g2, 0.4, 0.2, 0.8);
     {
         double zl = -c.g2.u.cone.zLower;
         identity(c.tm2, 0, 0, 0.5 + zl - 0.02);
-        expect(&c, "cylinder-cone (frustum) on a cap", 3, 4, 0, 0, 1, -0.02, e), run(&c);
+        expect(&c, "cylinder-cone (frustum) on a cap", 3, 4, 0, 0, -1, -0.02, e), run(&c);
     }
     ref_make_sphyl(&c.g1, 0.25, 1);
     ref_make_sphyl(&c.g2, 0.25, 1);
     identity(c.tm1, 0, 0, 0);
     identity(c.tm2, 0.45, 0, 0.1);
-    expect(&c, "sphyl-sphyl parallel, depth 0.05", 2, 2, 1, 0, 0, -0.05, ME_TOL(1e-9, 2e-6)), run(&c);
+    expect(&c, "sphyl-sphyl parallel, depth 0.05", 2, 2, -1, 0, 0, -0.05, ME_TOL(1e-9, 2e-6)), run(&c);
     place(c.tm2, 1, 0, 0, 1.5707963267949, 0.45, 0, 0);
-    expect(&c, "sphyl-sphyl crossed, depth 0.05", 1, 1, 1, 0, 0, -0.05, ME_TOL(1e-9, 2e-6)), run(&c);
+    expect(&c, "sphyl-sphyl crossed, depth 0.05", 1, 1, -1, 0, 0, -0.05, ME_TOL(1e-9, 2e-6)), run(&c);
     ref_make_cone(&c.g1, 0.5, 0, 1);
     ref_make_cone(&c.g2, 0.5, 0, 1);
     identity(c.tm1, 0, 0, 0);
     place(c.tm2, 1, 0, 0, 3.14159265358979, 0, 0, 0.75 + 0.75 - 0.02);
     /* apexes overlapping by 0.02 along the axis: the cones leave sideways, along a side normal (any
      * azimuth), by 0.02 sin(half angle) = 0.02 * 0.5 / sqrt(1.25); apex against side, both ways */
-    expect(&c, "cone-cone apex to apex, 0.02 along the axis", 1, 2, 0, 0, 1, -0.02 * 0.5 / sqrt(1.25), e);
+    expect(&c, "cone-cone apex to apex, 0.02 along the axis", 1, 2, 0, 0, -1, -0.02 * 0.5 / sqrt(1.25), e);
     c.anyNormal = 1;
     run(&c);
     ref_make_sphyl(&c.g2, 0.2, 0.6);
     place(c.tm1, 1, 0, 0, 3.14159265358979, 0, 0, 0); /* base up, at z = +0.25 */
     place(c.tm2, 1, 0, 0, 1.5707963267949, 0, 0, 0.25 + 0.2 - 0.02);
-    expect(&c, "cone-sphyl lying on the base", 2, 2, 0, 0, 1, -0.02, e), run(&c);
+    expect(&c, "cone-sphyl lying on the base", 2, 2, 0, 0, -1, -0.02, e), run(&c);
 }
 
 static void plane_cases(void **state)
@@ -244,34 +276,34 @@ static void plane_cases(void **state)
     place(c.tm2, 1, 0, 0, -1.5707963267949, 0, 0, 0); /* y up, as the quadbike */
     ref_make_sphere(&c.g1, 0.5);
     identity(c.tm1, 0.3, 0.4, 0.1);
-    expect(&c, "sphere-plane (y up), depth 0.1", 1, 1, 0, -1, 0, -0.1, e), run(&c);
+    expect(&c, "sphere-plane (y up), depth 0.1", 1, 1, 0, 1, 0, -0.1, e), run(&c);
     identity(c.tm2, 0, 0, 0);
     ref_make_box(&c.g1, 1, 1, 1);
     identity(c.tm1, 0, 0, 0.49);
-    expect(&c, "box-plane on a face", 4, 4, 0, 0, -1, -0.01, e), run(&c);
+    expect(&c, "box-plane on a face", 4, 4, 0, 0, 1, -0.01, e), run(&c);
     place(c.tm1, 1, 0, 0, 0.785398163397, 0, 0, S2 - 0.01);
-    expect(&c, "box-plane on an edge", 2, 2, 0, 0, -1, -0.01, e), run(&c);
+    expect(&c, "box-plane on an edge", 2, 2, 0, 0, 1, -0.01, e), run(&c);
     place(c.tm1, 1, -1, 0, acos(-S3), 0, 0, 0.5 * sqrt(3.0) - 0.01);
-    expect(&c, "box-plane on a vertex", 1, 1, 0, 0, -1, -0.01, ME_TOL(1e-8, 1e-5)), run(&c);
+    expect(&c, "box-plane on a vertex", 1, 1, 0, 0, 1, -0.01, ME_TOL(1e-8, 1e-5)), run(&c);
     identity(c.tm1, 0, 0, 0.51);
-    expect(&c, "box-plane apart 0.01", 4, 4, 0, 0, -1, 0.01, e), run(&c);
+    expect(&c, "box-plane apart 0.01", 4, 4, 0, 0, 1, 0.01, e), run(&c);
     identity(c.tm1, 0, 0, 0.55);
-    expect(&c, "box-plane apart 0.05", 0, 0, 0, 0, -1, 0, e), run(&c);
+    expect(&c, "box-plane apart 0.05", 0, 0, 0, 0, 1, 0, e), run(&c);
     ref_make_cylinder(&c.g1, 0.5, 1);
     identity(c.tm1, 0, 0, 0.49);
-    expect(&c, "cylinder-plane on a cap", 4, 4, 0, 0, -1, -0.01, e), run(&c);
+    expect(&c, "cylinder-plane on a cap", 4, 4, 0, 0, 1, -0.01, e), run(&c);
     place(c.tm1, 1, 0, 0, 1.5707963267949, 0, 0, 0.49);
-    expect(&c, "cylinder-plane on its side", 2, 2, 0, 0, -1, -0.01, e), run(&c);
+    expect(&c, "cylinder-plane on its side", 2, 2, 0, 0, 1, -0.01, e), run(&c);
     ref_make_sphyl(&c.g1, 0.3, 1);
     place(c.tm1, 0, 1, 0, 1.5707963267949, 0, 0, 0.29);
-    expect(&c, "sphyl-plane lying", 2, 2, 0, 0, -1, -0.01, e), run(&c);
+    expect(&c, "sphyl-plane lying", 2, 2, 0, 0, 1, -0.01, e), run(&c);
     identity(c.tm1, 0, 0, 0.79);
-    expect(&c, "sphyl-plane standing", 1, 1, 0, 0, -1, -0.01, e), run(&c);
+    expect(&c, "sphyl-plane standing", 1, 1, 0, 0, 1, -0.01, e), run(&c);
     ref_make_cone(&c.g1, 0.5, 0, 1);
     identity(c.tm1, 0, 0, 0.24);
-    expect(&c, "cone-plane on its base", 4, 4, 0, 0, -1, -0.01, e), run(&c);
+    expect(&c, "cone-plane on its base", 4, 4, 0, 0, 1, -0.01, e), run(&c);
     place(c.tm1, 1, 0, 0, 3.14159265358979, 0, 0, 0.74);
-    expect(&c, "cone-plane on its apex", 1, 1, 0, 0, -1, -0.01, e), run(&c);
+    expect(&c, "cone-plane on its apex", 1, 1, 0, 0, 1, -0.01, e), run(&c);
 }
 
 /* ---- every pair, systematically -------------------------------------------------------------- */
@@ -327,9 +359,9 @@ static void every_pair_stacked_on_axis(void **state)
                 identity(c.tm2, 0, 0, sh[a].top + sh[b].bottom + gap);
                 snprintf(name, sizeof name, "%s below %s, gap %+.2f", sh[a].name, sh[b].name, gap);
                 if (gap > TOL)
-                    expect(&c, name, 0, 0, 0, 0, 1, 0, e);
+                    expect(&c, name, 0, 0, 0, 0, -1, 0, e);
                 else
-                    expect(&c, name, flat ? 3 : 1, flat ? 4 : 1, 0, 0, 1, gap, e);
+                    expect(&c, name, flat ? 3 : 1, flat ? 4 : 1, 0, 0, -1, gap, e);
                 run(&c);
                 cases++;
             }
@@ -346,7 +378,7 @@ static void coincident(const char *name, const McdGeometry *g1, const McdGeometr
     identity(c.tm1, 0, 0, 0);
     identity(c.tm2, 0, 0, 0);
     if (g2->type == kMcdGeometryTypePlane) {
-        expect(&c, name, 1, 4, 0, 0, -1, -depth, e); /* out through the plane: -z, from the shape */
+        expect(&c, name, 1, 4, 0, 0, 1, -depth, e); /* the plane's normal: the shape leaves along +z */
     } else {
         expect(&c, name, 1, 4, axis == 0, axis == 1, axis == 2, -depth, e);
         c.anyNormal = 1; /* the sign (and for ties the direction) is a choice: checked below */
@@ -361,7 +393,7 @@ static void coincident(const char *name, const McdGeometry *g1, const McdGeometr
             if (k[i].separation < k[deepest].separation)
                 deepest = i;
         for (i = 0; i < 3; i++)
-            nn[i] = k[deepest].normal[i];
+            nn[i] = -k[deepest].normal[i]; /* the reference measures the overlap along 1 -> 2 */
         printf("    overlap along the normal given %.7f (depth %.7f)\n", ref_overlap(g1, c.tm1, g2, c.tm2, nn), depth);
         assert_near(ref_overlap(g1, c.tm1, g2, c.tm2, nn), depth, ME_TOL(1e-6, 1e-4));
         if (axis >= 0)

@@ -66,9 +66,10 @@ static double checkContacts(const McdGeometry *g1, MeMatrix4 tm1, const McdGeome
             len += nn[i] * nn[i];
         }
         st->normalErr = maxd(st->normalErr, fabs(sqrt(len) - 1));
+        /* the normal points from shape 2 towards shape 1: separation = (p1 - p2) . n */
         for (i = 0; i < 3; i++) {
-            p1[i] = c[k].position[i] - 0.5 * s * nn[i];
-            p2[i] = c[k].position[i] + 0.5 * s * nn[i];
+            p1[i] = c[k].position[i] + 0.5 * s * nn[i];
+            p2[i] = c[k].position[i] - 0.5 * s * nn[i];
         }
         st->surfaceErr = maxd(st->surfaceErr, fabs(ref_sdf(g1, tm1, p1)));
         st->surfaceErr = maxd(st->surfaceErr, fabs(ref_sdf(g2, tm2, p2)));
@@ -94,7 +95,9 @@ static void run_pair(void **state)
         McdGeometry g1, g2;
         MeMatrix4 tm1, tm2;
         McdContact c[8], cs[8];
-        double nRef[3], dref, deep = 1e300, deepS, n1[3] = {0, 0, 0}, n2[3], size, tolD;
+        /* n1: the deepest contact's normal (2 -> 1); m1 = -n1, the direction the references measure
+         * the overlap along (1 -> 2) */
+        double nRef[3], dref, deep = 1e300, deepS, n1[3] = {0, 0, 0}, m1[3], n2[3], size, tolD;
         Stats ps = {0}; /* this pose's errors */
         double poseMtd = 0;
         int n, ns, k;
@@ -125,13 +128,15 @@ static void run_pair(void **state)
         assert_true(n >= 0 && n <= 4);
         if (n > 0) {
             deep = checkContacts(&g1, tm1, &g2, tm2, c, n, &ps, n1);
-            if (e->type2 == kMcdGeometryTypePlane) {
+            for (k = 0; k < 3; k++)
+                m1[k] = -n1[k];
+            if (e->type2 == kMcdGeometryTypePlane) { /* the contact normal is the plane's */
                 double dn = 0;
                 for (k = 0; k < 3; k++)
-                    dn += (n1[k] + tm2[2][k]) * (n1[k] + tm2[2][k]);
+                    dn += (n1[k] - tm2[2][k]) * (n1[k] - tm2[2][k]);
                 poseMtd = sqrt(dn);
             } else {
-                double fRep = ref_overlap(&g1, tm1, &g2, tm2, n1);
+                double fRep = ref_overlap(&g1, tm1, &g2, tm2, m1);
                 /* the search of the reference may miss a kink that the method finds: then the method's
                  * direction is the better reference (counted) */
                 if (-fRep > dref + tolD) {
@@ -175,14 +180,12 @@ static void run_pair(void **state)
             st.swapErr = maxd(st.swapErr, fabs(deep - TOL) / size); /* only fine at the threshold */
             continue;
         }
-        deepS = checkContacts(&g2, tm2, &g1, tm1, cs, ns, &st, n2);
-        for (k = 0; k < 3; k++)
-            n2[k] = -n2[k];
+        deepS = checkContacts(&g2, tm2, &g1, tm1, cs, ns, &st, n2); /* n2: from shape 1 towards shape 2 */
         {
             double poseSwap = fabs(deepS - deep) / size;
             if (e->type2 == kMcdGeometryTypePlane) /* the same normal, negated, as unswapped */
-                poseSwap = maxd(poseSwap, sqrt((n2[0] - n1[0]) * (n2[0] - n1[0]) + (n2[1] - n1[1]) * (n2[1] - n1[1]) +
-                                               (n2[2] - n1[2]) * (n2[2] - n1[2])));
+                poseSwap = maxd(poseSwap, sqrt((n2[0] - m1[0]) * (n2[0] - m1[0]) + (n2[1] - m1[1]) * (n2[1] - m1[1]) +
+                                               (n2[2] - m1[2]) * (n2[2] - m1[2])));
             else
                 poseSwap = maxd(poseSwap, fabs(-ref_overlap(&g1, tm1, &g2, tm2, n2) - dref) / size);
             st.swapErr = maxd(st.swapErr, poseSwap);

@@ -76,13 +76,13 @@ static void refreshContacts(Scene *s)
 static void stagedStep(MdtWorldID w, MeReal h)
 {
     MdtWorldStepBegin(w, h);
-    MdtUpdatePartitions(w);
+    MdtWorldUpdatePartitions(w);
     MdtAutoDisablePartitions(w);
     MdtLODPartitions(w);
-    MdtPackAllPartitions(w);
-    MdtKeaAddConstraintForces(w);
-    MdtKeaIntegrateSystem(w);
-    MdtUnpackForces(w);
+    MdtPack(w);
+    MdtKeaSolve(w);
+    MdtKeaIntegrate(w);
+    MdtUnpack(w);
     MdtWorldStepEnd(w);
 }
 
@@ -162,16 +162,16 @@ static void stages_out_of_order_are_refused(void **state)
     build(&s);
     refreshContacts(&s);
     const MeReal h = ME_R(1.0) / 60;
-    assert_reports(ME_ERR_BAD_STATE, MdtPackAllPartitions(s.world)); /* no step begun */
+    assert_reports(ME_ERR_BAD_STATE, MdtPack(s.world)); /* no step begun */
     assert_reports(ME_ERR_BAD_STATE, MdtWorldStepEnd(s.world));
     assert_reports(ME_ERR_STEP_SIZE, MdtWorldStepBegin(s.world, -h));
     MdtWorldStepBegin(s.world, h);
     assert_reports(ME_ERR_WORLD_LOCKED, MdtWorldStepBegin(s.world, h));
     assert_reports(ME_ERR_WORLD_LOCKED, MdtWorldStep(s.world, h));
     assert_reports(ME_ERR_WORLD_LOCKED, MdtBodyCreate(s.world));
-    assert_reports(ME_ERR_BAD_STATE, MdtPackAllPartitions(s.world)); /* before the partitions */
-    MdtUpdatePartitions(s.world);
-    assert_reports(ME_ERR_BAD_STATE, MdtUpdatePartitions(s.world)); /* twice */
+    assert_reports(ME_ERR_BAD_STATE, MdtPack(s.world)); /* before the partitions */
+    MdtWorldUpdatePartitions(s.world);
+    assert_reports(ME_ERR_BAD_STATE, MdtWorldUpdatePartitions(s.world)); /* twice */
     /* Inspect the partitions: chain, column, sleeper, thrown body, in (sort key, slot) order. */
     assert_int_equal(MdtWorldGetPartitionCount(s.world), 4);
     MdtPartitionInfo info;
@@ -183,18 +183,18 @@ static void stages_out_of_order_are_refused(void **state)
     assert_reports(ME_ERR_ARGUMENT_RANGE, MdtWorldGetPartitionInfo(s.world, 4, &info));
     assert_reports(ME_ERR_ARGUMENT_RANGE, MdtWorldGetPartitionBody(s.world, 0, LINKS));
     /* The optional stages may be skipped. */
-    MdtPackAllPartitions(s.world);
+    MdtPack(s.world);
     assert_reports(ME_ERR_BAD_STATE, MdtLODPartitions(s.world)); /* too late */
     MdtWorldGetPartitionInfo(s.world, 0, &info);
     assert_int_equal(info.rows, 3 * LINKS);
     MdtWorldGetPartitionInfo(s.world, 1, &info);
     assert_int_equal(info.bodies, COLUMN);
     assert_int_equal(info.rows, COLUMN * 4 * 3);
-    assert_reports(ME_ERR_BAD_STATE, MdtKeaIntegrateSystem(s.world)); /* solve first */
-    MdtKeaAddConstraintForces(s.world);
-    MdtKeaIntegrateSystem(s.world);
+    assert_reports(ME_ERR_BAD_STATE, MdtKeaIntegrate(s.world)); /* solve first */
+    MdtKeaSolve(s.world);
+    MdtKeaIntegrate(s.world);
     assert_reports(ME_ERR_BAD_STATE, MdtWorldStepEnd(s.world)); /* unpack first */
-    MdtUnpackForces(s.world);
+    MdtUnpack(s.world);
     MdtWorldStepEnd(s.world);
     MdtWorldCounters c;
     MdtWorldGetCounters(s.world, &c);
@@ -234,14 +234,14 @@ static void partitions_list_bodies_in_sort_key_then_slot_order(void **state)
             MdtConstraintSetSortKey(MdtBSJointQuaConstraint(j[2]), 7);
         }
         MdtWorldStepBegin(w, ME_R(1.0) / 60);
-        MdtUpdatePartitions(w);
+        MdtWorldUpdatePartitions(w);
         assert_int_equal(MdtWorldGetPartitionCount(w), 1);
         for (int i = 0; i < 5; i++)
             assert_ptr_equal(MdtWorldGetPartitionBody(w, 0, i), b[orders[round][i]]);
-        MdtPackAllPartitions(w);
-        MdtKeaAddConstraintForces(w);
-        MdtKeaIntegrateSystem(w);
-        MdtUnpackForces(w);
+        MdtPack(w);
+        MdtKeaSolve(w);
+        MdtKeaIntegrate(w);
+        MdtUnpack(w);
         MdtWorldStepEnd(w);
         assert_true(MdtBodyIsEnabled(b[3]));
     }

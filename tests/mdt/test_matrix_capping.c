@@ -59,7 +59,7 @@ static void build(Scene *s, int handMade)
             MdtContactSetParams(s->contact[g][k], &s->params);
             MdtContactSetPosition(s->contact[g][k], p[0] + (k & 1 ? 0.5f : -0.5f), p[1] + (k & 2 ? 0.5f : -0.5f),
                                   p[2] - 0.5f);
-            MdtContactSetNormal(s->contact[g][k], 0, 0, -1);
+            MdtContactSetNormal(s->contact[g][k], 0, 0, 1); /* body 1 below pushes body 0 up */
             MdtContactSetPenetration(s->contact[g][k], (MeReal)pen[g][k]);
         }
     }

@@ -114,7 +114,7 @@ static void nan_is_contained_to_its_partition(void **state)
     build(&clean, 0);
     build(&dirty, 1);
     Seen seen = {0};
-    MdtWorldSetSimErrorCB(dirty.world, onSimError, &seen);
+    MdtWorldSetSimErrorHandler(dirty.world, onSimError, &seen);
     assert_true(MdtWorldGetCheckSim(dirty.world));
     int identical = 1;
     MeVector3 before = {0, 0, 0}, after, v;
@@ -199,7 +199,7 @@ static void default_callback_and_settings(void **state)
     MdtWorldSetCheckSim(s.world, MEFALSE);
     assert_false(MdtWorldGetCheckSim(s.world));
     MdtWorldSetCheckSim(s.world, METRUE);
-    MdtWorldSetSimErrorCB(s.world, MdtDefaultSimErrorCallBack, NULL);
+    MdtWorldSetSimErrorHandler(s.world, MdtDefaultSimErrorHandler, NULL);
     MdtBodyGetAngularVelocityPtr(s.bad)[0] = (MeReal)INFINITY;
     unsigned long infos = MeMessageGetCount(ME_ERR_USER_MESSAGE);
     assert_reports(ME_ERR_NONFINITE_STATE, step(&s));

@@ -97,7 +97,8 @@ static MdtContactGroupID groupOf(MdtBodyID body)
 }
 
 /* A ball resting on the ground: the world model is model 1 of the pair (lower sort key) but the group
- * has the ball as body 0, the world as body 1, and its normal points from the ball into the ground. */
+ * has the ball as body 0, the world as body 1, and its normal points from the ground up into the ball
+ * (from body 1 towards body 0: the direction in which the ball is pushed). */
 static void group_lives_with_the_intersection(void **state)
 {
     (void)state;
@@ -117,7 +118,8 @@ static void group_lives_with_the_intersection(void **state)
     MdtContactGetNormal(MdtContactGroupGetFirstContact(g), n);
     printf("ball on plane: normal (%.3f %.3f %.3f), penetration %.4f\n", (double)n[0], (double)n[1], (double)n[2],
            (double)MdtContactGetPenetration(MdtContactGroupGetFirstContact(g)));
-    assert_near(n[2], -1, 1e-5);
+    assert_near(n[2], 1, 1e-5);
+    assert_true(MdtContactGroupIsSwapped(g)); /* model 1 is the ground: the pair was turned round */
     /* Lift the ball clear: the group goes when the models stop intersecting... */
     MdtBodySetPosition(body, 0, 0, 0.6f);
     MdtBodySetLinearVelocity(body, 0, 0, 0);
@@ -134,7 +136,7 @@ static void group_lives_with_the_intersection(void **state)
     MstUniverseDestroy(s.u);
 }
 
-/* The conversion carries each McdContact's position, normal (body 0 towards body 1) and penetration
+/* The conversion carries each McdContact's position, normal (body 1 towards body 0) and penetration
  * (the negated separation) into the group's MdtContact, and the material's parameters; a pair that
  * stays reuses its contact and refreshes all of it. */
 static void conversion_carries_the_geometry(void **state)
@@ -170,11 +172,56 @@ static void conversion_carries_the_geometry(void **state)
         assert_true(p[2] > -0.05 && p[2] < 0.05);
         assert_near(n[0], 0, 1e-6);
         assert_near(n[1], 0, 1e-6);
-        assert_near(n[2], -1, 1e-6);
+        assert_near(n[2], 1, 1e-6);
         assert_near(MdtContactGetPenetration(c), 0.5 - heights[k], 1e-5);
         assert_near(MdtContactParamsGetPrimaryFriction(MdtContactGetParams(c)), 0.75, 0);
     }
     MstUniverseDestroy(s.u);
+}
+
+/* The sense of a bridge-made contact, in both orders of the pair's models: a ball dropped onto the
+ * ground from 5 cm gets a contact whose normal is +z (the ground pushes the ball up), with the ball as
+ * body 0 whether the ground is model 1 (the pair turned round, normals negated) or model 2 (copied as
+ * they are); it lands and stays on the ground, never sinking more than a few millimetres. */
+static void bridge_normal_pushes_the_ball_up_in_both_orders(void **state)
+{
+    (void)state;
+    for (int groundFirst = 0; groundFirst < 2; groundFirst++) {
+        Scene s;
+        sceneInit(&s);
+        McdModelSetSortKey(s.ground, groundFirst ? 0 : 1);
+        McdModelID ball = sphereAt(&s, 0.5f, 0, 0, 0.55f);
+        McdModelSetSortKey(ball, groundFirst ? 1 : 0);
+        MdtBodyID body = McdModelGetBody(ball);
+        double lowest = 1e9;
+        MdtContactGroupID g = NULL;
+        MeVector3 n = {0, 0, 0};
+        for (int i = 0; i < 120; i++) {
+            MstUniverseStep(s.u, 1.0f / 60);
+            MeVector3 p;
+            MdtBodyGetPosition(body, p);
+            lowest = fmin(lowest, p[2]);
+            if (!g && (g = groupOf(body)) != NULL) {
+                MdtContactGetNormal(MdtContactGroupGetFirstContact(g), n);
+                assert_ptr_equal(MdtConstraintGetBody(MdtContactGroupQuaConstraint(g), 0), body);
+                assert_null(MdtConstraintGetBody(MdtContactGroupQuaConstraint(g), 1));
+                assert_int_equal(MdtContactGroupIsSwapped(g), groundFirst);
+            }
+        }
+        MeVector3 p, v;
+        MdtBodyGetPosition(body, p);
+        MdtBodyGetLinearVelocity(body, v);
+        printf("ground model %d: normal (%.3f %.3f %.3f), lowest centre %.5f, after 2 s z %.5f, vz %.1e\n",
+               groundFirst ? 1 : 2, (double)n[0], (double)n[1], (double)n[2], lowest, (double)p[2], (double)v[2]);
+        assert_non_null(g);
+        assert_near(n[0], 0, 1e-6);
+        assert_near(n[1], 0, 1e-6);
+        assert_near(n[2], 1, 1e-6);
+        assert_true(lowest > 0.5 - 0.005);
+        assert_near(p[2], 0.5, 0.005);
+        assert_near(v[2], 0, 1e-3);
+        MstUniverseDestroy(s.u);
+    }
 }
 
 /* The bridge's one-call contact update (MdtContactSetFromCollision) checks each field as its own
@@ -338,6 +385,149 @@ static void model_and_body_helpers(void **state)
     MstUniverseDestroy(s.u);
 }
 
+static void place(MdtBodyID b, MeReal x, MeReal y, MeReal z)
+{
+    MdtBodySetPosition(b, x, y, z);
+    MdtBodySetLinearVelocity(b, 0, 0, 0);
+    MdtBodySetAngularVelocity(b, 0, 0, 0);
+}
+
+static int rowsLastStep(MdtWorldID w)
+{
+    MdtWorldCounters c;
+    MdtWorldGetCounters(w, &c);
+    return c.rows;
+}
+
+/* A ball at distance d from the corner (1, 1, 6) of a fixed 2 m cube centred at (0, 0, 5), along the
+ * cube's diagonal: the surfaces are d − 0.5 apart, and the boxes overlap for every d below ~0.87. */
+static void nearCorner(MdtBodyID ball, double d)
+{
+    const double u = d / sqrt(3.0);
+    place(ball, (MeReal)(1 + u), (MeReal)(1 + u), (MeReal)(6 + u));
+}
+
+/* How long the bridge keeps a pair's contact group (decision M3, User Guide ch. 2): from the first
+ * step the models intersect until the pair says Goodbye. A step without contacts (the models apart
+ * while their boxes overlap, or a per-pair callback returning 0) leaves the group empty and disabled:
+ * it adds no rows, joins no bodies into a partition and wakes nothing; contacts coming back refill the
+ * same group. Gravity is off in these scenes, and the ground lies far below. */
+static void group_kept_while_the_boxes_overlap(void **state)
+{
+    (void)state;
+    Scene s;
+    sceneInit(&s);
+    MdtWorldSetGravity(s.w, 0, 0, 0);
+    MeMatrix4 tm;
+    MeMatrix4TMMakeIdentity(tm);
+    MeMatrix4TMSetPosition(tm, 0, 0, 5);
+    assert_non_null(MstFixedModelCreate(s.u, McdBoxCreate(s.fw, 2, 2, 2), tm));
+    MdtBodyID ball = McdModelGetBody(sphereAt(&s, 0.5f, 0, 0, 0));
+    /* touching (0.01 deep): a group with a contact */
+    nearCorner(ball, 0.49);
+    MstUniverseStep(s.u, ME_R(1.0) / 60);
+    MdtContactGroupID g = groupOf(ball);
+    assert_non_null(g);
+    assert_int_equal(MdtContactGroupGetCount(g), 1);
+    assert_true(MdtConstraintIsEnabled(MdtContactGroupQuaConstraint(g)));
+    /* lifted 0.05 clear, the boxes still overlapping: the same group, empty, adding no rows */
+    nearCorner(ball, 0.55);
+    MstUniverseStep(s.u, ME_R(1.0) / 60);
+    printf("apart by 0.05, boxes overlapping: group %s, %d contacts, %s; rows solved %d\n",
+           groupOf(ball) ? "kept" : "gone", groupOf(ball) ? MdtContactGroupGetCount(groupOf(ball)) : -1,
+           MdtConstraintIsEnabled(MdtContactGroupQuaConstraint(g)) ? "enabled" : "disabled", rowsLastStep(s.w));
+    assert_ptr_equal(groupOf(ball), g);
+    assert_int_equal(MdtContactGroupGetCount(g), 0);
+    assert_false(MdtConstraintIsEnabled(MdtContactGroupQuaConstraint(g)));
+    assert_int_equal(rowsLastStep(s.w), 0);
+    MeVector3 v;
+    MdtBodyGetLinearVelocity(ball, v);
+    assert_true(v[0] == 0 && v[1] == 0 && v[2] == 0); /* nothing pushed it */
+    /* touching again: the same group refilled and enabled */
+    nearCorner(ball, 0.495);
+    MstUniverseStep(s.u, ME_R(1.0) / 60);
+    assert_ptr_equal(groupOf(ball), g);
+    assert_int_equal(MdtContactGroupGetCount(g), 1);
+    assert_true(MdtConstraintIsEnabled(MdtContactGroupQuaConstraint(g)));
+    /* the boxes apart (Goodbye): the group is destroyed */
+    nearCorner(ball, 2);
+    MstUniverseStep(s.u, ME_R(1.0) / 60);
+    assert_null(groupOf(ball));
+    assert_false(MdtConstraintIsValid(MdtContactGroupQuaConstraint(g)));
+    assert_int_equal(MdtWorldGetTotalConstraints(s.w), 0);
+    MstUniverseDestroy(s.u);
+}
+
+static MeBool dropAll(McdIntersectResult *r, MdtContactGroupID g)
+{
+    (void)r, (void)g;
+    return MEFALSE;
+}
+
+static void per_pair_callback_removes_the_contacts_not_the_group(void **state)
+{
+    (void)state;
+    /* Karma's MstPerPairCBPtr: "if the callback returns 0, all contacts created for this pair will be
+     * removed". The group stays (empty, disabled) until Goodbye; the balls pass through each other. */
+    Scene s;
+    sceneInit(&s);
+    MdtWorldSetGravity(s.w, 0, 0, 0);
+    MstBridgeSetPerPairCB(s.b, 0, 0, dropAll);
+    MdtBodyID a = McdModelGetBody(sphereAt(&s, 0.5f, 0, 0, 10));
+    MdtBodyID b = McdModelGetBody(sphereAt(&s, 0.5f, ME_R(0.9), 0, 10));
+    MstUniverseStep(s.u, ME_R(1.0) / 60);
+    MdtContactGroupID g = groupOf(a);
+    assert_non_null(g);
+    assert_int_equal(MdtContactGroupGetCount(g), 0);
+    assert_false(MdtConstraintIsEnabled(MdtContactGroupQuaConstraint(g)));
+    MeVector3 v;
+    MdtBodyGetLinearVelocity(b, v);
+    assert_true(v[0] == 0); /* no push */
+    MstUniverseDestroy(s.u);
+}
+
+static void empty_group_neither_joins_nor_wakes(void **state)
+{
+    (void)state;
+    /* Two balls touch, then are set 0.06 apart along a diagonal (their boxes still overlap, so the
+     * pair stays and keeps its empty group). One spins in place and stays awake; the other, at rest,
+     * is in a partition of its own and falls asleep after the alive window, and the spinning
+     * neighbour's empty group does not wake it. */
+    Scene s;
+    sceneInit(&s);
+    MdtWorldSetGravity(s.w, 0, 0, 0);
+    MdtBodyID spinner = McdModelGetBody(sphereAt(&s, 0.5f, 0, 0, 10));
+    MdtBodyID rester = McdModelGetBody(sphereAt(&s, 0.5f, ME_R(0.7), ME_R(0.7), 10));
+    MstUniverseStep(s.u, ME_R(1.0) / 60); /* 0.99 apart: touching */
+    MdtContactGroupID g = groupOf(spinner);
+    assert_non_null(g);
+    assert_true(MdtContactGroupGetCount(g) >= 1);
+    place(spinner, 0, 0, 10);
+    place(rester, ME_R(0.75), ME_R(0.75), 10); /* 1.06 apart */
+    MdtBodySetAngularVelocity(spinner, 0, 0, 2);
+    int asleepAt = -1;
+    for (int i = 0; i < 180; i++) {
+        MstUniverseStep(s.u, ME_R(1.0) / 60);
+        assert_ptr_equal(groupOf(spinner), g);
+        assert_int_equal(MdtContactGroupGetCount(g), 0);
+        if (i == 0)
+            assert_int_not_equal(MdtBodyGetPartition(spinner), MdtBodyGetPartition(rester));
+        if (asleepAt < 0 && !MdtBodyIsEnabled(rester))
+            asleepAt = i;
+        if (asleepAt >= 0)
+            assert_false(MdtBodyIsEnabled(rester)); /* never woken again */
+    }
+    MeVector3 w;
+    MdtBodyGetAngularVelocity(spinner, w);
+    printf("empty group between a spinning ball and a resting one: the resting one asleep at step %d; spinner "
+           "enabled %d (spin %.3f rad/s)\n",
+           asleepAt, MdtBodyIsEnabled(spinner), (double)w[2]);
+    assert_true(asleepAt > 0 && asleepAt < 60);
+    assert_true(MdtBodyIsEnabled(spinner));
+    assert_near(w[2], 2, 1e-4);
+    MstUniverseDestroy(s.u);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -345,6 +535,10 @@ int main(void)
         cmocka_unit_test(material_table_is_symmetric),
         cmocka_unit_test(group_lives_with_the_intersection),
         cmocka_unit_test(conversion_carries_the_geometry),
+        cmocka_unit_test(bridge_normal_pushes_the_ball_up_in_both_orders),
+        cmocka_unit_test(group_kept_while_the_boxes_overlap),
+        cmocka_unit_test(per_pair_callback_removes_the_contacts_not_the_group),
+        cmocka_unit_test(empty_group_neither_joins_nor_wakes),
         cmocka_unit_test(collision_update_skips_bad_fields_one_by_one),
         cmocka_unit_test(callbacks_and_parameters),
         cmocka_unit_test(freeze_follows_disable),

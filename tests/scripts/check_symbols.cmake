@@ -3,7 +3,8 @@
 #   -DSHARED=<libkarma.so> -DSTATIC=<libkarma.a> -DHEADERS=<include/karma> -DNM=<nm> -DREADELF=<readelf>
 #   -DCC=<compiler> -DWORK=<scratch dir> -DSANITIZE=ON|OFF
 #
-# 1. The shared library exports exactly the functions declared with ME_API in the public headers:
+# 1. The shared library exports exactly the functions and data objects declared with ME_API in the
+#    public headers (`ME_API extern const T Name;` for data, as Karma 1.2's MstUniverseDefaultSizes):
 #    nothing internal leaks (hidden visibility works) and nothing declared is missing.
 # 2. It needs only libm and libc (plus the sanitizer runtimes in a sanitizer build).
 # 3. Every global symbol of the static library carries a Karma prefix (no clash with users' names).
@@ -20,6 +21,12 @@ foreach(h ${headers})
   string(REGEX MATCHALL "ME_API[^(;#]*\\(" decls "${text}")
   foreach(d ${decls})
     string(REGEX MATCH "([A-Za-z_][A-Za-z0-9_]*)[ \t\n]*\\($" m "${d}")
+    list(APPEND declared ${CMAKE_MATCH_1})
+  endforeach()
+  # (without the ';', which a CMake list would split on)
+  string(REGEX MATCHALL "ME_API[ \t]+extern[^(;#]*" datadecls "${text}")
+  foreach(d ${datadecls})
+    string(REGEX MATCH "([A-Za-z_][A-Za-z0-9_]*)[ \t\n]*$" m "${d}")
     list(APPEND declared ${CMAKE_MATCH_1})
   endforeach()
   string(REGEX MATCHALL "#define[ \t]+[A-Za-z0-9_]+[ \t]+ME_PRECISION_SYMBOL" defs "${text}")
@@ -53,6 +60,10 @@ foreach(line ${lines})
   set(name ${CMAKE_MATCH_2})
   # Symbols the linker defines in every shared object.
   if(name MATCHES "^(_init|_fini|_edata|_end|__bss_start)$")
+    continue()
+  endif()
+  # ASan's ODR indicator for an exported data object (MstUniverseDefaultSizes).
+  if(SANITIZE AND name MATCHES "^__odr_asan[._]")
     continue()
   endif()
   list(APPEND exported ${name})

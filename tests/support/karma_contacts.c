@@ -68,7 +68,7 @@ int karma_box_on_plane(MdtContactGroupID g, MdtBodyID box, const MeVector3 halfE
         MdtContactSetParams(c, params);
         MdtContactSetPosition(c, world[0] - height * up[0] / 2, world[1] - height * up[1] / 2,
                               world[2] - height * up[2] / 2);
-        MdtContactSetNormal(c, -up[0], -up[1], -up[2]); /* body 0 (box) → body 1 (world) */
+        MdtContactSetNormal(c, up[0], up[1], up[2]); /* world (body 1) towards the box (body 0) */
         MdtContactSetPenetration(c, -height);
     }
     return 1;
@@ -87,8 +87,6 @@ int karma_box_on_box(MdtContactGroupID g, MdtBodyID top, MdtBodyID bottom, const
     MeVector3 up;
     MeVector3MultiplyScalar(up, tb[axis], best > 0 ? 1 : -1);
     MeReal faceOffset = MeVector3Dot(tb[3], up) + halfExtents[axis];
-    MeVector3 down;
-    MeVector3MultiplyScalar(down, up, -1);
     /* Incident face: the top box's face most opposed to `up`; its four corners. */
     MeReal ib;
     int ia = mostAlignedAxis(tt, up, NULL, &ib);
@@ -104,7 +102,7 @@ int karma_box_on_box(MdtContactGroupID g, MdtBodyID top, MdtBodyID bottom, const
         MdtContactSetParams(c, params);
         MdtContactSetPosition(c, world[0] - height * up[0] / 2, world[1] - height * up[1] / 2,
                               world[2] - height * up[2] / 2);
-        MdtContactSetNormal(c, down[0], down[1], down[2]); /* body 0 (top) → body 1 (bottom) */
+        MdtContactSetNormal(c, up[0], up[1], up[2]); /* bottom (body 1) towards top (body 0) */
         MdtContactSetPenetration(c, -height);
     }
     return 1;
@@ -155,7 +153,7 @@ int karma_box_on_box_clipped(MdtContactGroupID g, MdtBodyID top, const MeVector3
         MeReal height = MeVector3Dot(m, cq) / MeVector3Dot(m, up);
         MdtContactSetParams(c, params);
         MdtContactSetPosition(c, q[0] + height * up[0] / 2, q[1] + height * up[1] / 2, q[2] + height * up[2] / 2);
-        MdtContactSetNormal(c, -up[0], -up[1], -up[2]); /* body 0 (top) → body 1 (bottom) */
+        MdtContactSetNormal(c, up[0], up[1], up[2]); /* bottom (body 1) towards top (body 0) */
         MdtContactSetPenetration(c, -height);
     }
     return 1;

@@ -14,19 +14,19 @@ typedef struct Pose {
     MeVector4 q;
 } Pose;
 
-static void savePose(const MdtBody *b, Pose *p)
+static void savePose(const MdtBodyData *b, Pose *p)
 {
     MeVector3Set(p->com, b->comTM[3][0], b->comTM[3][1], b->comTM[3][2]);
     MeVector4Copy(p->q, b->q);
 }
 
-static void restorePose(MdtBody *b, const Pose *p)
+static void restorePose(MdtBodyData *b, const Pose *p)
 {
     MeVector4Copy(b->q, p->q);
     MdtBodyUpdateTransforms(b, p->com);
 }
 
-static void movePose(MdtBody *b, const Pose *p, MeReal dt)
+static void movePose(MdtBodyData *b, const Pose *p, MeReal dt)
 {
     MeVector3 com;
     for (int k = 0; k < 3; k++)
@@ -42,7 +42,7 @@ static void movePose(MdtBody *b, const Pose *p, MeReal dt)
     MdtBodyUpdateTransforms(b, com);
 }
 
-static int captureAt(MdtConstraint *c, Pose poses[2], MeReal dt, MdtRow *rows)
+static int captureAt(MdtConstraintData *c, Pose poses[2], MeReal dt, MdtRow *rows)
 {
     for (int i = 0; i < 2; i++)
         if (c->body[i])
@@ -58,7 +58,7 @@ static MeReal dot3(const MeReal *a, const MeReal *b) { return a[0] * b[0] + a[1]
 
 double karma_jacobian_error(MdtConstraintID id, int *rowsChecked)
 {
-    MdtConstraint *c = MdtConstraintFromID(id, __func__);
+    MdtConstraintData *c = MdtConstraintFromID(id, __func__);
     assert_non_null(c);
     Pose poses[2];
     for (int i = 0; i < 2; i++)

@@ -2,7 +2,7 @@
  *
  * Fifteen candidate axes: the three face normals of each box and the nine cross products of their
  * edges (Gottschalk et al. 1996; Ericson 4.4). Overlapping boxes: the axis of least overlap is the
- * contact normal (a face axis unless an edge axis is clearly better, which keeps resting contacts
+ * contact axis (a face axis unless an edge axis is clearly better, which keeps resting contacts
  * steady); a face contact clips the other box's most anti-parallel face against the reference face
  * (Sutherland-Hodgman) and keeps up to four points, an edge contact gives the closest points of the two
  * edges. Boxes apart by less than the tolerance go to the general path (GJK), which measures the true
@@ -73,10 +73,11 @@ static int faceContact(const Box *ref, int k, const MeVector3 nr, const Box *inc
     }
     MeVector3ScaleAndAdd(fc, ref->c, ref->h[k], nr);
     off = MeVector3Dot(fc, nr);
+    /* the contact normal points from box 2 towards box 1 */
     if (refIsFirst)
-        MeVector3Copy(n, nr);
-    else
         MeVector3MultiplyScalar(n, nr, -ME_R(1.0));
+    else
+        MeVector3Copy(n, nr);
     for (i = 0; i < cnt; i++) {
         MeReal sep = MeVector3Dot(poly[cur][i], nr) - off;
         MeVector3 onRef;
@@ -190,7 +191,7 @@ int McdNfBoxBox(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeM
         MeVector3Copy(on2, on1);
         MeVector3MultiplyAdd(on1, ME_R(0.5) * edgeBest, edgeAxis);
         MeVector3MultiplyAdd(on2, -ME_R(0.5) * edgeBest, edgeAxis);
-        return McdNfAddPair(contacts, 0, maxContacts, on1, on2, edgeAxis, tolerance, 0);
+        return McdNfAddPair(contacts, 0, maxContacts, on1, on2, negAxis, tolerance, 0); /* B towards A */
     }
     {
         McdContact buf[16];

@@ -27,7 +27,7 @@ int McdNfAddPair(McdContact *contacts, int count, int maxContacts, const MeVecto
     MeVector3 d;
     McdContact *c;
     MeReal sep;
-    MeVector3Subtract(d, on2, on1);
+    MeVector3Subtract(d, on1, on2); /* the normal points from surface 2 towards surface 1 */
     sep = MeVector3Dot(d, normal);
     if (!(sep <= tolerance) || count >= maxContacts)
         return 0;

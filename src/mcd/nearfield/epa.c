@@ -3,7 +3,8 @@
  * Grows a polytope inside D = core1 - core2 from GJK's simplex, always pushing out the face nearest to
  * the origin with the support point along its normal, until that face lies on D's boundary (van den
  * Bergen, "Proximity queries and penetration depth computation on 3D game objects", 2001). The
- * nearest face's normal is the minimum translation direction, core 1 -> core 2. */
+ * nearest face's normal is the minimum translation direction, core 1 -> core 2 (the distance query's
+ * direction; the contact normal is its opposite, see nearfield.h). */
 #include "nearfield.h"
 
 #define EPA_MAX_VERTS 256

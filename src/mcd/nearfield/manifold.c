@@ -1,11 +1,21 @@
 /* manifold.c -- the general convex pair test and its contact set (internal).
  *
- * Once GJK/EPA has given the contact normal n (core 1 -> core 2), each core's feature facing the other
+ * Once GJK/EPA has given the direction n (core 1 -> core 2), each core's feature facing the other
  * (vertex, edge, face; a disc as a polygon) is taken, and the features are clipped against each other
  * in projection along n: every clipped point pairs a point of one feature with the point of the other
  * straight along n, so both lie on their surfaces and their distance along n is the separation there.
- * Points beyond the tolerance are dropped and the rest reduced to four (Ericson ch. 5; Gregorius). */
+ * Points beyond the tolerance are dropped and the rest reduced to four (Ericson ch. 5; Gregorius).
+ * The contacts' normal is -n (from core 2 towards core 1, the contact convention). */
 #include "nearfield.h"
+
+/* Write a contact of the pair (on1, on2) found along the query's direction n12 (core 1 -> core 2). */
+static int addAlong(McdContact *c, int count, int maxc, const MeVector3 on1, const MeVector3 on2,
+                    const MeVector3 n12, MeReal tol, int dims)
+{
+    MeVector3 normal;
+    MeVector3MultiplyScalar(normal, n12, -ME_R(1.0));
+    return McdNfAddPair(c, count, maxc, on1, on2, normal, tol, dims);
+}
 
 #define CLIP_MAX 32
 
@@ -48,7 +58,7 @@ static int emit(McdContact *c, int count, int maxc, const Side *ref, const MeVec
         MeVector3ScaleAndAdd(on2, a, -ref->s->radius, n);
     }
     (void)ref;
-    return McdNfAddPair(c, count, maxc, on1, on2, n, tol, dims);
+    return addAlong(c, count, maxc, on1, on2, n, tol, dims);
 }
 
 /* Clip the incident feature (segment or polygon) against the side planes of the reference polygon;
@@ -193,7 +203,7 @@ static int clipSegments(const Side *f1, const Side *f2, const MeVector3 n, MeRea
             MeVector3Copy(nk, n);
         MeVector3ScaleAndAdd(on1, a, f1->s->radius, nk);
         MeVector3ScaleAndAdd(on2, b, -f2->s->radius, nk);
-        count += McdNfAddPair(c, count, 2, on1, on2, nk, tol, 1);
+        count += addAlong(c, count, 2, on1, on2, nk, tol, 1);
         if (hi - lo <= ME_R(1e-4))
             break;
     }
@@ -211,7 +221,7 @@ static int singlePoint(const Side *f1, const Side *f2, const McdNfDistance *d, M
     if (f1->n == 1 && f2->n == 1) {
         MeVector3ScaleAndAdd(on1, f1->pts[0], f1->s->radius, n);
         MeVector3ScaleAndAdd(on2, f2->pts[0], -f2->s->radius, n);
-        return McdNfAddPair(c, 0, 1, on1, on2, n, tol, 0);
+        return addAlong(c, 0, 1, on1, on2, n, tol, 0);
     }
     if (f1->n == 1) {
         MeVector3ScaleAndAdd(on1, f1->pts[0], f1->s->radius, n);
@@ -237,12 +247,12 @@ static int singlePoint(const Side *f1, const Side *f2, const McdNfDistance *d, M
     } else {
         MeVector3ScaleAndAdd(on1, d->p1, f1->s->radius, n);
         MeVector3ScaleAndAdd(on2, d->p2, -f2->s->radius, n);
-        if (McdNfAddPair(c, 0, 1, on1, on2, n, tol, 0) == 0)
+        if (addAlong(c, 0, 1, on1, on2, n, tol, 0) == 0)
             return 0;
         c[0].separation = sep;
         return 1;
     }
-    return McdNfAddPair(c, 0, 1, on1, on2, n, tol, 0);
+    return addAlong(c, 0, 1, on1, on2, n, tol, 0);
 }
 
 int McdNfManifold(const McdNfShape *s1, const McdNfShape *s2, const McdNfDistance *d, MeReal tolerance,

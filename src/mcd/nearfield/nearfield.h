@@ -7,7 +7,10 @@
  * cores' features that face each other. Closed forms (sphere-sphere, box-box, ...-plane, ...) are in
  * their own files and share only the contact writer and the reduction to four points.
  *
- * Normals point from geometry 1 to geometry 2; separation < 0 means penetration. */
+ * Contact normals point from geometry 2 towards geometry 1 (as Karma's pair tests: the direction in
+ * which geometry 1 leaves); separation < 0 means penetration. The distance query (GJK/EPA,
+ * McdNfDistance) works with its own direction, from core 1 towards core 2, which is the opposite
+ * of the contact normal; the manifold turns it round when it writes contacts. */
 #ifndef MCD_NEARFIELD_H
 #define MCD_NEARFIELD_H
 
@@ -51,7 +54,7 @@ int McdNfCoreFeature(const McdNfShape *s, const MeVector3 n, const MeVector3 hin
 /** Result of the core distance / penetration query. */
 typedef struct McdNfDistance {
     MeReal distance;  /* signed distance between the cores (< 0: they overlap by -distance) */
-    MeVector3 normal; /* unit, core 1 -> core 2 */
+    MeVector3 normal; /* unit, core 1 -> core 2 (the query's direction: minus the contact normal) */
     MeVector3 p1, p2; /* witness points on the cores (p2 - p1 = distance * normal, approximately) */
 } McdNfDistance;
 
@@ -81,7 +84,8 @@ int McdNfConvexConvex(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g
 
 /* ---- contact writing (contact.c) ------------------------------------------------------------ */
 
-/** Write one contact from a point on surface 1 and one on surface 2 along the unit normal.
+/** Write one contact from a point on surface 1 and one on surface 2 along the unit normal (from
+ *  surface 2 towards surface 1: separation = (on1 - on2) . normal).
  *  Returns 1, or 0 when the separation exceeds the tolerance or no room is left. */
 int McdNfAddPair(McdContact *contacts, int count, int maxContacts, const MeVector3 on1, const MeVector3 on2,
                  const MeVector3 normal, MeReal tolerance, int dims);

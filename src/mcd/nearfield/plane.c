@@ -1,20 +1,20 @@
 /* plane.c -- every primitive against the plane (internal). The plane is z = 0 of its transform, solid
- * below, normal +z; geometry 1 is the primitive, geometry 2 the plane, so the contact normal is the
- * plane's -z. Each test lists the primitive's candidate lowest points (a vertex, a sphere's lowest
- * point, a few points of each rim) and keeps those within the tolerance: a face or a cap standing on
- * the plane gets several points, a body on an edge two, on a corner one. */
+ * below, normal +z; geometry 1 is the primitive, geometry 2 the plane, so the contact normal (from
+ * geometry 2 towards geometry 1) is the plane's normal. Each test lists the primitive's candidate
+ * lowest points (a vertex, a sphere's lowest point, a few points of each rim) and keeps those within
+ * the tolerance: a face or a cap standing on the plane gets several points, a body on an edge two, on
+ * a corner one. */
 #include "nearfield.h"
 
 /* Contact of a point of the primitive's surface with the plane. */
 static int planePoint(McdContact *c, int count, int maxc, MeMatrix4 plane, const MeVector3 p, MeReal tol)
 {
-    MeVector3 d, on2, n;
+    MeVector3 d, on2;
     MeReal h;
     MeVector3Subtract(d, p, plane[3]);
     h = MeVector3Dot(d, plane[2]);
     MeVector3ScaleAndAdd(on2, p, -h, plane[2]);
-    MeVector3MultiplyScalar(n, plane[2], -ME_R(1.0));
-    return McdNfAddPair(c, count, maxc, p, on2, n, tol, 0);
+    return McdNfAddPair(c, count, maxc, p, on2, plane[2], tol, 0);
 }
 
 static int finish(McdContact *c, int count, int maxContacts)

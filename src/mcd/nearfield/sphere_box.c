@@ -7,7 +7,7 @@ int McdNfSphereBox(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, 
 {
     const MeReal r = g1->u.sphere.radius;
     const MeReal *h = g2->u.box.radii;
-    MeVector3 p, q, u, ul, on1, on2, n;
+    MeVector3 p, q, ul, on1, on2, n;
     MeBool inside = METRUE;
     int i;
     (void)cache;
@@ -38,9 +38,8 @@ int McdNfSphereBox(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, 
         ul[k] = p[k] >= ME_R(0.0) ? ME_R(1.0) : -ME_R(1.0);
         q[k] = ul[k] * h[k];
     }
-    MeMatrix4TMRotate(u, tm2, ul);
-    MeVector3MultiplyScalar(n, u, -ME_R(1.0));
-    MeVector3ScaleAndAdd(on1, tm1[3], r, n);
+    MeMatrix4TMRotate(n, tm2, ul); /* box towards sphere */
+    MeVector3ScaleAndAdd(on1, tm1[3], -r, n);
     McdNfToWorld(on2, tm2, q);
     return McdNfAddPair(contacts, 0, maxContacts, on1, on2, n, tolerance, 0);
 }

@@ -6,7 +6,7 @@ int McdNfSphereCylinder(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry 
                         MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
     const MeReal r = g1->u.sphere.radius, R = g2->u.cylinder.radius, hh = g2->u.cylinder.halfHeight;
-    MeVector3 p, q, ul, u, n, on1, on2;
+    MeVector3 p, q, ul, n, on1, on2;
     MeReal rho, ux = ME_R(1.0), uy = ME_R(0.0);
     (void)cache;
     if (maxContacts <= 0)
@@ -33,9 +33,8 @@ int McdNfSphereCylinder(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry 
         if (dist - r > tolerance)
             return 0;
     }
-    MeMatrix4TMRotate(u, tm2, ul);
-    MeVector3MultiplyScalar(n, u, -ME_R(1.0));
-    MeVector3ScaleAndAdd(on1, tm1[3], r, n);
+    MeMatrix4TMRotate(n, tm2, ul); /* cylinder towards sphere */
+    MeVector3ScaleAndAdd(on1, tm1[3], -r, n);
     McdNfToWorld(on2, tm2, q);
     return McdNfAddPair(contacts, 0, maxContacts, on1, on2, n, tolerance, 0);
 }

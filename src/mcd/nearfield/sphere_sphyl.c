@@ -13,7 +13,7 @@ int McdNfSphereSphyl(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2
     MeMatrix4TMInverseTransform(p, tm2, tm1[3]);
     MeVector3Set(q, ME_R(0.0), ME_R(0.0), MeCLAMP(p[2], -hh, hh)); /* nearest segment point */
     McdNfToWorld(q, tm2, q);
-    MeVector3Subtract(n, q, tm1[3]);
+    MeVector3Subtract(n, tm1[3], q); /* sphyl's segment towards the centre */
     dist = MeVector3Magnitude(n);
     if (dist - r1 - r2 > tolerance)
         return 0;
@@ -21,7 +21,7 @@ int McdNfSphereSphyl(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2
         MeVector3Scale(n, ME_R(1.0) / dist);
     else /* centre on the segment: any direction across the axis */
         McdNfPerpendicular(n, tm2[2]);
-    MeVector3ScaleAndAdd(on1, tm1[3], r1, n);
-    MeVector3ScaleAndAdd(on2, q, -r2, n);
+    MeVector3ScaleAndAdd(on1, tm1[3], -r1, n);
+    MeVector3ScaleAndAdd(on2, q, r2, n);
     return McdNfAddPair(contacts, 0, maxContacts, on1, on2, n, tolerance, 0);
 }

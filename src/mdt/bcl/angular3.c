@@ -12,7 +12,7 @@ typedef struct Angular3Data {
 } Angular3Data;
 MDT_CONSTRAINT_DATA_FITS(Angular3Data);
 
-static void reset(MdtConstraint *c)
+static void reset(MdtConstraintData *c)
 {
     MdtConstraintResetFrames(c);
     Angular3Data *d = MDT_CONSTRAINT_DATA(c, Angular3Data);
@@ -21,12 +21,12 @@ static void reset(MdtConstraint *c)
     d->damping = 0; /* decision D3 */
 }
 
-static int rowCount(const MdtConstraint *c)
+static int rowCount(const MdtConstraintData *c)
 {
     return MDT_CONSTRAINT_DATA(c, const Angular3Data)->rotationEnabled ? 2 : 3;
 }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w)
+static void addRows(MdtConstraintData *c, MdtRowWriter *w)
 {
     const Angular3Data *d = MDT_CONSTRAINT_DATA(c, const Angular3Data);
     MdtBclRotation r;

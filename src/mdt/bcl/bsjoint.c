@@ -3,21 +3,21 @@
 
 #include "../constraint.h"
 
-static void reset(MdtConstraint *c) { MdtConstraintResetFrames(c); }
+static void reset(MdtConstraintData *c) { MdtConstraintResetFrames(c); }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w) { MdtBclAddPointRows(w, c); }
+static void addRows(MdtConstraintData *c, MdtRowWriter *w) { MdtBclAddPointRows(w, c); }
 
 static const MdtConstraintClass bsJointClass = {"BSJoint", 3, reset, NULL, addRows, NULL, NULL};
 
 MdtBSJointID MdtBSJointCreate(MdtWorldID w)
 {
-    MdtConstraint *c = MdtConstraintCreateInternal(w, MdtBclBSJOINT, &bsJointClass, __func__);
+    MdtConstraintData *c = MdtConstraintCreateInternal(w, MdtBclBSJOINT, &bsJointClass, __func__);
     return c ? (MdtBSJointID)c->id : NULL;
 }
 
 void MdtBSJointReset(MdtBSJointID j)
 {
-    MdtConstraint *c = MdtConstraintFromIDOfType(j, MdtBclBSJOINT, __func__);
+    MdtConstraintData *c = MdtConstraintFromIDOfType(j, MdtBclBSJOINT, __func__);
     if (c)
         reset(c);
 }

@@ -26,7 +26,7 @@ typedef struct Axes {
     MeVector3 s, h0, n0, h1, a1, a1xh1;
 } Axes;
 
-static void axes(const MdtConstraint *c, Axes *a)
+static void axes(const MdtConstraintData *c, Axes *a)
 {
     MdtConstraintWorldPrimary(c, 0, a->s);
     MdtConstraintWorldOrthogonal(c, 0, a->h0);
@@ -36,7 +36,7 @@ static void axes(const MdtConstraint *c, Axes *a)
     MeVector3Cross(a->a1xh1, a->a1, a->h1);
 }
 
-static void reset(MdtConstraint *c)
+static void reset(MdtConstraintData *c)
 {
     CarWheelData *d = MDT_CONSTRAINT_DATA(c, CarWheelData);
     for (int i = 0; i < 2; i++) {
@@ -54,34 +54,34 @@ static void reset(MdtConstraint *c)
     d->hi = ME_R(1e9);
 }
 
-static MeReal steeringRow(const MdtConstraint *c, const Axes *a, MdtRow *row)
+static MeReal steeringRow(const MdtConstraintData *c, const Axes *a, MdtRow *row)
 {
     (void)c;
     MdtRowInit(row);
     return MdtBclAngleRow(row, a->h0, a->n0, a->h1, 1);
 }
 
-static MeReal hingeRow(const MdtConstraint *c, const Axes *a, MdtRow *row)
+static MeReal hingeRow(const MdtConstraintData *c, const Axes *a, MdtRow *row)
 {
     (void)c;
     MdtRowInit(row);
     return MdtBclAngleRow(row, a->a1, a->a1xh1, a->s, 0);
 }
 
-static MeReal heightRow(const MdtConstraint *c, const Axes *a, MdtRow *row)
+static MeReal heightRow(const MdtConstraintData *c, const Axes *a, MdtRow *row)
 {
     MdtRowInit(row);
     return MdtBclSlideRow(row, c, a->s, 0);
 }
 
-static int rowCount(const MdtConstraint *c)
+static int rowCount(const MdtConstraintData *c)
 {
     const CarWheelData *d = MDT_CONSTRAINT_DATA(c, const CarWheelData);
     return 4 + ((d->steerLock || d->steerForce > 0) ? 1 : 0) + (d->hingeForce > 0 ? 1 : 0);
 }
 
 /* Suspension: a stop reached within the step (speculative, no bounce) holds; otherwise the spring. */
-static void addSuspensionRow(const MdtConstraint *c, const CarWheelData *d, MdtRowWriter *w, MdtRow *row, MeReal x)
+static void addSuspensionRow(const MdtConstraintData *c, const CarWheelData *d, MdtRowWriter *w, MdtRow *row, MeReal x)
 {
     const MeReal h = w->h, v0 = MdtRowVelocity(c, row), vstar = MdtRowPredictedVelocity(c, row);
     const MeBool spring = d->kp > 0 || d->kd > 0;
@@ -107,7 +107,7 @@ static void addSuspensionRow(const MdtConstraint *c, const CarWheelData *d, MdtR
     MdtRowWriterAdd(w, row);
 }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w)
+static void addRows(MdtConstraintData *c, MdtRowWriter *w)
 {
     const CarWheelData *d = MDT_CONSTRAINT_DATA(c, const CarWheelData);
     Axes a;
@@ -150,13 +150,13 @@ static void addRows(MdtConstraint *c, MdtRowWriter *w)
 static const MdtConstraintClass carWheelClass = {"CarWheel", 6, reset, rowCount, addRows, NULL, NULL};
 
 #define CARWHEEL_OR_RETURN(c, j, ret)                                                                \
-    MdtConstraint *c = MdtConstraintFromIDOfType((j), MdtBclCARWHEEL, __func__);                     \
+    MdtConstraintData *c = MdtConstraintFromIDOfType((j), MdtBclCARWHEEL, __func__);                     \
     if (!c)                                                                                          \
     return ret
 
 MdtCarWheelID MdtCarWheelCreate(MdtWorldID w)
 {
-    MdtConstraint *c = MdtConstraintCreateInternal(w, MdtBclCARWHEEL, &carWheelClass, __func__);
+    MdtConstraintData *c = MdtConstraintCreateInternal(w, MdtBclCARWHEEL, &carWheelClass, __func__);
     return c ? (MdtCarWheelID)c->id : NULL;
 }
 
@@ -192,7 +192,7 @@ void MdtCarWheelGetHingeAxis(MdtCarWheelID j, MeVector3 v)
 enum { STEERING, HINGE, HEIGHT };
 static MeReal reading(MdtCarWheelID j, int which, MeBool wantRate, const char *function)
 {
-    MdtConstraint *c = MdtConstraintFromIDOfType(j, MdtBclCARWHEEL, function);
+    MdtConstraintData *c = MdtConstraintFromIDOfType(j, MdtBclCARWHEEL, function);
     if (!c)
         return 0;
     if (!c->body[0]) {

@@ -10,7 +10,7 @@ typedef struct ConeLimitData {
 } ConeLimitData;
 MDT_CONSTRAINT_DATA_FITS(ConeLimitData);
 
-static void reset(MdtConstraint *c)
+static void reset(MdtConstraintData *c)
 {
     MdtConstraintResetFrames(c);
     ConeLimitData *d = MDT_CONSTRAINT_DATA(c, ConeLimitData);
@@ -20,7 +20,7 @@ static void reset(MdtConstraint *c)
 }
 
 /* Angle between the axes; `cross` = a0 × a1. */
-static MeReal coneAngle(const MdtConstraint *c, MeVector3 cross)
+static MeReal coneAngle(const MdtConstraintData *c, MeVector3 cross)
 {
     MeVector3 a0, a1;
     MdtConstraintWorldPrimary(c, 0, a0);
@@ -29,7 +29,7 @@ static MeReal coneAngle(const MdtConstraint *c, MeVector3 cross)
     return MeAtan2(MeVector3Magnitude(cross), MeVector3Dot(a0, a1));
 }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w)
+static void addRows(MdtConstraintData *c, MdtRowWriter *w)
 {
     const ConeLimitData *d = MDT_CONSTRAINT_DATA(c, const ConeLimitData);
     if (d->halfAngle >= ME_PI)

@@ -1,17 +1,22 @@
 /* contact.c -- MdtContact: its API and the rows of one contact (used alone and by contact groups).
  *
- * Rows of a contact at point p with unit normal n (body 0 → body 1), lever arms r0 = p − com0 and
- * r1 = p − com1. The constraint velocity of a direction d is the velocity of body 1's material point
- * relative to body 0's along d:  J v = d·(v1 + ω1 × r1 − v0 − ω0 × r0).
+ * Rows of a contact at point p with unit normal n (from body 1 towards body 0: the direction in
+ * which body 0 is pushed, as Karma), lever arms r0 = p − com0 and r1 = p − com1. The constraint
+ * velocity of a direction d is the velocity of body 0's material point relative to body 1's along d
+ * (Karma's sense):  J v = d·(v0 + ω0 × r0 − v1 − ω1 × r1).
  *   normal:   φ = −penetration (separation), impulse ≥ 0 (≥ −max adhesive force·h when adhesive);
  *             a separated contact (penetration < 0) may close its gap exactly (γ = 1: speculative);
  *             when approaching faster than the restitution threshold and touching within the step,
  *             the target separating speed is restitution × approach speed (no position correction
  *             on top); softness adds to the row's ε.
- *   friction: t1 = the primary direction (given, or chosen perpendicular to n), t2 = n × t1; target
- *             velocity = slide; ε += slip; bounds ±friction (Box) or |x| ≤ μ x_normal (NormalForce,
- *             a friction link the solver applies with the current normal impulse).
- * A world that moves under the contact (UseWorldVelocity) shifts each row's target by −d·v_world. */
+ *   friction: t1 = the primary direction (given, or chosen perpendicular to n), t2 = t1 × n; target
+ *             velocity = slide (body 0 relative to body 1); ε = slip / h instead of the world's ε
+ *             (slip is a compliance: sliding speed = slip × friction force, whatever the step, see
+ *             decision K28 in docs/decisions.md); bounds ±friction (Box) or
+ *             |x| ≤ μ x_normal (NormalForce, a friction link the solver applies with the current
+ *             normal impulse).
+ * A world that moves under the contact (UseWorldVelocity, body 1 NULL) is body 1 moving at
+ * v_world: each row's target shifts by +d·v_world. */
 #include <string.h>
 
 #include <karma/MdtContact.h>
@@ -30,10 +35,10 @@ static void resetData(ContactData *d)
     MdtContactParamsReset(&d->params);
 }
 
-static void reset(MdtConstraint *c)
+static void reset(MdtConstraintData *c)
 {
     ContactData *d = MDT_CONSTRAINT_DATA(c, ContactData);
-    MdtConstraint *group = d->group, *next = d->next;
+    MdtConstraintData *group = d->group, *next = d->next;
     resetData(d);
     d->group = group; /* membership survives a reset */
     d->next = next;
@@ -51,26 +56,25 @@ int MdtContactRowCount(const ContactData *d)
     }
 }
 
-int MdtContactStepRows(const MdtConstraint *c)
+int MdtContactStepRows(const MdtConstraintData *c)
 {
     const ContactData *d = MDT_CONSTRAINT_DATA(c, const ContactData);
     int full = MdtContactRowCount(d);
     return d->lodStamp == c->world->partitionStamp && d->lodRows < full ? d->lodRows : full;
 }
 
-static int rowCount(const MdtConstraint *c) { return MdtContactStepRows(c); }
+static int rowCount(const MdtConstraintData *c) { return MdtContactStepRows(c); }
 
-/* Fills lin/ang of both halves for direction dir: J v = dir·(v1p − v0p). */
+/* Fills lin/ang of both halves for direction dir: J v = dir·(v0p − v1p). */
 static void directionRow(MdtRow *row, const MeVector3 dir, const MeVector3 r0, const MeVector3 r1)
 {
-    MeVector3Copy(row->lin1, dir);
-    MeVector3MultiplyScalar(row->lin0, dir, -1);
-    MeVector3Cross(row->ang1, r1, dir);
+    MeVector3Copy(row->lin0, dir);
     MeVector3Cross(row->ang0, r0, dir);
-    MeVector3Scale(row->ang0, -1);
+    MeVector3MultiplyScalar(row->lin1, dir, -1);
+    MeVector3Cross(row->ang1, dir, r1); /* −(r1 × dir) */
 }
 
-static MeReal pointVelocityAlong(const MdtBody *b, const MeVector3 r, const MeVector3 dir)
+static MeReal pointVelocityAlong(const MdtBodyData *b, const MeVector3 r, const MeVector3 dir)
 {
     if (!b)
         return 0;
@@ -79,11 +83,11 @@ static MeReal pointVelocityAlong(const MdtBody *b, const MeVector3 r, const MeVe
     return MeVector3Dot(dir, b->vel) + MeVector3Dot(dir, wxr);
 }
 
-void MdtContactAddRows(const MdtConstraint *owner, MdtConstraint *contact, MdtRowWriter *w)
+void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contact, MdtRowWriter *w)
 {
     ContactData *d = MDT_CONSTRAINT_DATA(contact, ContactData);
     const MdtContactParams *p = &d->params;
-    const MdtBody *b0 = owner->body[0], *b1 = owner->body[1];
+    const MdtBodyData *b0 = owner->body[0], *b1 = owner->body[1];
     const MeReal h = w->h;
     MeVector3 r0, r1 = {0, 0, 0};
     MeVector3Set(r0, d->position[0] - b0->comTM[3][0], d->position[1] - b0->comTM[3][1],
@@ -103,9 +107,10 @@ void MdtContactAddRows(const MdtConstraint *owner, MdtConstraint *contact, MdtRo
     row.lo = (p->options & MdtBclContactOptionAdhesive) ? -p->max_adhesive_force : 0;
     row.hi = MEINFINITY;
     row.epsilon = (p->options & MdtBclContactOptionSoft) ? p->softness : 0;
-    MeReal vn = pointVelocityAlong(b1, r1, d->normal) - pointVelocityAlong(b0, r0, d->normal);
+    /* Separating speed of body 0 from body 1 (negative when approaching). */
+    MeReal vn = pointVelocityAlong(b0, r0, d->normal) - pointVelocityAlong(b1, r1, d->normal);
     if (movingWorld)
-        vn += MeVector3Dot(d->normal, d->worldVelocity);
+        vn -= MeVector3Dot(d->normal, d->worldVelocity);
     /* Restitution. A contact reported with a gap g that the bodies close within this step (at speed
      * v = −vn) bounces now if g is small (the bounce comes at most g early), or else lands exactly
      * this step and bounces at the start of the next with the remembered approach speed (at most
@@ -142,7 +147,7 @@ void MdtContactAddRows(const MdtConstraint *owner, MdtConstraint *contact, MdtRo
             row.gamma = 1;
     }
     if (movingWorld)
-        row.velocity -= MeVector3Dot(d->normal, d->worldVelocity);
+        row.velocity += MeVector3Dot(d->normal, d->worldVelocity);
     int normalRow = MdtRowWriterAdd(w, &row);
     if (!w->captured && normalRow >= 0)
         w->x0[w->first + normalRow] = d->impulse[0];
@@ -163,13 +168,17 @@ void MdtContactAddRows(const MdtConstraint *owner, MdtConstraint *contact, MdtRo
         MeVector3 other;
         MeVector3PlaneSpace(d->normal, t[0], other);
     }
-    MeVector3Cross(t[1], d->normal, t[0]);
+    MeVector3Cross(t[1], t[0], d->normal);
 
     const MdtFrictionModel model[2] = {p->model1, p->model2};
     const MeReal bound[2] = {p->friction1, p->friction2};
     const MeReal coefficient[2] = {p->frictioncoeff1, p->frictioncoeff2};
-    const MeReal slip[2] = {(p->options & MdtBclContactOptionSlip1) ? p->slip1 : 0,
-                            (p->options & MdtBclContactOptionSlip2) ? p->slip2 : 0};
+    /* Slip is a compliance in force units (User Guide: slip speed = slip × friction force, whatever
+     * the step); the row's ε is per impulse (force × h), hence slip / h. A slipping row has its own
+     * compliance: the world's ε (which would add ε₀ h × force) is left out but for a trace that keeps
+     * redundant rows regular, as for bouncing rows. */
+    const MeReal slip[2] = {(p->options & MdtBclContactOptionSlip1) ? p->slip1 / h : 0,
+                            (p->options & MdtBclContactOptionSlip2) ? p->slip2 / h : 0};
     const MeReal slide[2] = {(p->options & MdtBclContactOptionSlide1) ? p->slide1 : 0,
                              (p->options & MdtBclContactOptionSlide2) ? p->slide2 : 0};
     int directions = p->type == MdtContactTypeFriction2D ? 2 : 1;
@@ -178,8 +187,11 @@ void MdtContactAddRows(const MdtConstraint *owner, MdtConstraint *contact, MdtRo
         directionRow(&row, t[k], r0, r1);
         row.velocity = slide[k];
         if (movingWorld)
-            row.velocity -= MeVector3Dot(t[k], d->worldVelocity);
-        row.epsilon = slip[k];
+            row.velocity += MeVector3Dot(t[k], d->worldVelocity);
+        if (slip[k] > 0) {
+            row.epsilon = slip[k] + ME_R(1e-3) * w->epsilon0;
+            row.noWorldEpsilon = METRUE;
+        }
         if (model[k] == MdtFrictionModelNormalForce) {
             row.link = normalRow;
             row.mu = coefficient[k];
@@ -193,7 +205,7 @@ void MdtContactAddRows(const MdtConstraint *owner, MdtConstraint *contact, MdtRo
     }
 }
 
-void MdtContactUnpack(MdtConstraint *contact, const MeReal *impulses, int rows, MeReal h)
+void MdtContactUnpack(MdtConstraintData *contact, const MeReal *impulses, int rows, MeReal h)
 {
     ContactData *d = MDT_CONSTRAINT_DATA(contact, ContactData);
     for (int k = 0; k < 3; k++)
@@ -201,9 +213,9 @@ void MdtContactUnpack(MdtConstraint *contact, const MeReal *impulses, int rows, 
     d->normalForce = rows > 0 ? impulses[0] / h : 0;
 }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w) { MdtContactAddRows(c, c, w); }
+static void addRows(MdtConstraintData *c, MdtRowWriter *w) { MdtContactAddRows(c, c, w); }
 
-static void unpack(MdtConstraint *c, const MeReal *impulses, int rows, MeReal h)
+static void unpack(MdtConstraintData *c, const MeReal *impulses, int rows, MeReal h)
 {
     MdtContactUnpack(c, impulses, rows, h);
 }
@@ -211,20 +223,20 @@ static void unpack(MdtConstraint *c, const MeReal *impulses, int rows, MeReal h)
 const MdtConstraintClass MdtContactClass = {"Contact", 3, reset, rowCount, addRows, unpack, NULL};
 
 /* ---- API ---------------------------------------------------------------------------------- */
-static MdtConstraint *contactFromID(MdtContactID id, const char *function)
+static MdtConstraintData *contactFromID(MdtContactID id, const char *function)
 {
     return MdtConstraintFromIDOfType(id, MdtBclCONTACT, function);
 }
 
 #define CONTACT_OR_RETURN(c, d, id, ret)                                                             \
-    MdtConstraint *c = contactFromID((id), __func__);                                                \
+    MdtConstraintData *c = contactFromID((id), __func__);                                                \
     if (!c)                                                                                          \
         return ret;                                                                                  \
     ContactData *d = MDT_CONSTRAINT_DATA(c, ContactData)
 
 MdtContactID MdtContactCreate(MdtWorldID w)
 {
-    MdtConstraint *c = MdtConstraintCreateInternal(w, MdtBclCONTACT, &MdtContactClass, __func__);
+    MdtConstraintData *c = MdtConstraintCreateInternal(w, MdtBclCONTACT, &MdtContactClass, __func__);
     return c ? (MdtContactID)c->id : NULL;
 }
 
@@ -368,7 +380,7 @@ void MdtContactSetFromCollision(MdtContactID id, const MdtContactParams *params,
 {
     /* One handle check; each field then checked and set as its own setter would, a bad one skipped
      * and reported in that setter's name. */
-    MdtConstraint *c = contactFromID(id, "MdtContactSetParams");
+    MdtConstraintData *c = contactFromID(id, "MdtContactSetParams");
     if (!c)
         return;
     ContactData *d = MDT_CONSTRAINT_DATA(c, ContactData);
@@ -382,10 +394,10 @@ void MdtContactGetRelativeVelocity(MdtContactID id, MeVector3 v)
 {
     CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
     ME_CHECK_NOT_NULL(v, ME_NOTHING);
-    const MdtConstraint *owner = d->group ? d->group : c;
+    const MdtConstraintData *owner = d->group ? d->group : c;
     MeVector3 v0 = {0, 0, 0}, v1 = {0, 0, 0};
     for (int i = 0; i < 2; i++) {
-        const MdtBody *b = owner->body[i];
+        const MdtBodyData *b = owner->body[i];
         MeVector3 *out = i == 0 ? &v0 : &v1;
         if (!b) {
             if (d->params.options & MdtBclContactOptionUseWorldVelocity)
@@ -398,7 +410,7 @@ void MdtContactGetRelativeVelocity(MdtContactID id, MeVector3 v)
         MeVector3Cross(wxr, b->velrot, r);
         MeVector3Add(*out, b->vel, wxr);
     }
-    MeVector3Subtract(v, v1, v0);
+    MeVector3Subtract(v, v0, v1); /* body 0 relative to body 1, as Karma */
 }
 
 MeReal MdtContactGetNormalForce(MdtContactID id)

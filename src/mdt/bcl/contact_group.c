@@ -12,7 +12,7 @@
 #include "contact_internal.h"
 
 typedef struct GroupData {
-    MdtConstraint *first, *last;
+    MdtConstraintData *first, *last;
     int count;
     MeBool swapped;
     void *generator;
@@ -20,12 +20,12 @@ typedef struct GroupData {
 } GroupData;
 MDT_CONSTRAINT_DATA_FITS(GroupData);
 
-static void destroyContacts(MdtConstraint *g)
+static void destroyContacts(MdtConstraintData *g)
 {
     GroupData *d = MDT_CONSTRAINT_DATA(g, GroupData);
-    MdtConstraint *c = d->first;
+    MdtConstraintData *c = d->first;
     while (c) {
-        MdtConstraint *next = MDT_CONSTRAINT_DATA(c, ContactData)->next;
+        MdtConstraintData *next = MDT_CONSTRAINT_DATA(c, ContactData)->next;
         MdtConstraintRelease(c);
         c = next;
     }
@@ -33,7 +33,7 @@ static void destroyContacts(MdtConstraint *g)
     d->count = 0;
 }
 
-static void reset(MdtConstraint *g)
+static void reset(MdtConstraintData *g)
 {
     GroupData *d = MDT_CONSTRAINT_DATA(g, GroupData);
     if (d->count)
@@ -45,18 +45,18 @@ static void reset(MdtConstraint *g)
     d->normalForce = 0;
 }
 
-static int rowCount(const MdtConstraint *g)
+static int rowCount(const MdtConstraintData *g)
 {
     int rows = 0;
-    for (const MdtConstraint *c = MDT_CONSTRAINT_DATA(g, const GroupData)->first; c;
+    for (const MdtConstraintData *c = MDT_CONSTRAINT_DATA(g, const GroupData)->first; c;
          c = MDT_CONSTRAINT_DATA(c, const ContactData)->next)
         rows += MdtContactStepRows(c);
     return rows;
 }
 
-static void addRows(MdtConstraint *g, MdtRowWriter *w)
+static void addRows(MdtConstraintData *g, MdtRowWriter *w)
 {
-    for (MdtConstraint *c = MDT_CONSTRAINT_DATA(g, GroupData)->first; c; c = MDT_CONSTRAINT_DATA(c, ContactData)->next) {
+    for (MdtConstraintData *c = MDT_CONSTRAINT_DATA(g, GroupData)->first; c; c = MDT_CONSTRAINT_DATA(c, ContactData)->next) {
         c->body[0] = g->body[0];
         c->body[1] = g->body[1];
         c->rowStart = w->count;
@@ -65,13 +65,13 @@ static void addRows(MdtConstraint *g, MdtRowWriter *w)
     }
 }
 
-static void unpack(MdtConstraint *g, const MeReal *impulses, int rows, MeReal h)
+static void unpack(MdtConstraintData *g, const MeReal *impulses, int rows, MeReal h)
 {
     GroupData *d = MDT_CONSTRAINT_DATA(g, GroupData);
     int offset = 0;
     d->normalForce = 0;
     /* Every contact, also those capping dropped (rowCount 0): their warm starts go back to 0. */
-    for (MdtConstraint *c = d->first; c; c = MDT_CONSTRAINT_DATA(c, ContactData)->next) {
+    for (MdtConstraintData *c = d->first; c; c = MDT_CONSTRAINT_DATA(c, ContactData)->next) {
         int n = offset + c->rowCount <= rows ? c->rowCount : 0;
         MdtContactUnpack(c, impulses + offset, n, h);
         d->normalForce += MDT_CONSTRAINT_DATA(c, ContactData)->normalForce;
@@ -79,11 +79,11 @@ static void unpack(MdtConstraint *g, const MeReal *impulses, int rows, MeReal h)
     }
 }
 
-MdtConstraint *MdtContactGroupFirst(const MdtConstraint *g) { return MDT_CONSTRAINT_DATA(g, const GroupData)->first; }
+MdtConstraintData *MdtContactGroupFirst(const MdtConstraintData *g) { return MDT_CONSTRAINT_DATA(g, const GroupData)->first; }
 
-static void destroy(MdtConstraint *g)
+static void destroy(MdtConstraintData *g)
 {
-    MdtWorld *w = g->world;
+    MdtWorldData *w = g->world;
     destroyContacts(g);
     if (w->contactGroupDestroyCB)
         w->contactGroupDestroyCB((MdtContactGroupID)g->id, w->contactGroupDestroyData);
@@ -93,14 +93,14 @@ static const MdtConstraintClass groupClass = {"ContactGroup", 0, reset, rowCount
 
 /* ---- API ---------------------------------------------------------------------------------- */
 #define GROUP_OR_RETURN(g, d, id, ret)                                                               \
-    MdtConstraint *g = MdtConstraintFromIDOfType((id), MdtBclCONTACTGROUP, __func__);                \
+    MdtConstraintData *g = MdtConstraintFromIDOfType((id), MdtBclCONTACTGROUP, __func__);                \
     if (!g)                                                                                          \
         return ret;                                                                                  \
     GroupData *d = MDT_CONSTRAINT_DATA(g, GroupData)
 
 MdtContactGroupID MdtContactGroupCreate(MdtWorldID w)
 {
-    MdtConstraint *g = MdtConstraintCreateInternal(w, MdtBclCONTACTGROUP, &groupClass, __func__);
+    MdtConstraintData *g = MdtConstraintCreateInternal(w, MdtBclCONTACTGROUP, &groupClass, __func__);
     return g ? (MdtContactGroupID)g->id : NULL;
 }
 
@@ -132,12 +132,12 @@ MdtContactID MdtContactGroupGetFirstContact(MdtContactGroupID id)
 int MdtContactGroupGetContactsAndPositions(MdtContactGroupID id, MdtContactID *contacts, MeVector3 *positions,
                                            int max, const char *function)
 {
-    MdtConstraint *g = MdtConstraintFromIDOfType(id, MdtBclCONTACTGROUP, function);
+    MdtConstraintData *g = MdtConstraintFromIDOfType(id, MdtBclCONTACTGROUP, function);
     if (!g)
         return 0;
     const GroupData *d = MDT_CONSTRAINT_DATA(g, GroupData);
     int n = 0;
-    for (MdtConstraint *c = d->first; c && n < max; c = MDT_CONSTRAINT_DATA(c, ContactData)->next, ++n) {
+    for (MdtConstraintData *c = d->first; c && n < max; c = MDT_CONSTRAINT_DATA(c, ContactData)->next, ++n) {
         contacts[n] = (MdtContactID)c->id;
         MeVector3Copy(positions[n], MDT_CONSTRAINT_DATA(c, ContactData)->position);
     }
@@ -148,7 +148,7 @@ MdtContactID MdtContactGroupGetNextContact(MdtContactGroupID id, MdtContactID ci
 {
     GROUP_OR_RETURN(g, d, id, NULL);
     (void)d;
-    MdtConstraint *c = MdtConstraintFromIDOfType(cid, MdtBclCONTACT, __func__);
+    MdtConstraintData *c = MdtConstraintFromIDOfType(cid, MdtBclCONTACT, __func__);
     if (!c)
         return NULL;
     ContactData *cd = MDT_CONSTRAINT_DATA(c, ContactData);
@@ -159,7 +159,7 @@ MdtContactID MdtContactGroupGetNextContact(MdtContactGroupID id, MdtContactID ci
     return cd->next ? (MdtContactID)cd->next->id : NULL;
 }
 
-static void append(MdtConstraint *g, GroupData *d, MdtConstraint *c)
+static void append(MdtConstraintData *g, GroupData *d, MdtConstraintData *c)
 {
     ContactData *cd = MDT_CONSTRAINT_DATA(c, ContactData);
     if (c->enabled) {
@@ -183,7 +183,7 @@ static void append(MdtConstraint *g, GroupData *d, MdtConstraint *c)
 void MdtContactGroupAppendContact(MdtContactGroupID id, MdtContactID cid)
 {
     GROUP_OR_RETURN(g, d, id, ME_NOTHING);
-    MdtConstraint *c = MdtConstraintFromIDOfType(cid, MdtBclCONTACT, __func__);
+    MdtConstraintData *c = MdtConstraintFromIDOfType(cid, MdtBclCONTACT, __func__);
     if (!c)
         return;
     if (MDT_CONSTRAINT_DATA(c, ContactData)->group) {
@@ -198,13 +198,13 @@ void MdtContactGroupAppendContact(MdtContactGroupID id, MdtContactID cid)
 }
 
 /* Unlink c from g's list; returns METRUE if it was there. */
-static MeBool unlink(MdtConstraint *g, GroupData *d, MdtConstraint *c)
+static MeBool unlink(MdtConstraintData *g, GroupData *d, MdtConstraintData *c)
 {
-    MdtConstraint *prev = NULL;
-    for (MdtConstraint *it = d->first; it; prev = it, it = MDT_CONSTRAINT_DATA(it, ContactData)->next) {
+    MdtConstraintData *prev = NULL;
+    for (MdtConstraintData *it = d->first; it; prev = it, it = MDT_CONSTRAINT_DATA(it, ContactData)->next) {
         if (it != c)
             continue;
-        MdtConstraint *next = MDT_CONSTRAINT_DATA(c, ContactData)->next;
+        MdtConstraintData *next = MDT_CONSTRAINT_DATA(c, ContactData)->next;
         if (prev)
             MDT_CONSTRAINT_DATA(prev, ContactData)->next = next;
         else
@@ -225,14 +225,14 @@ static MeBool unlink(MdtConstraint *g, GroupData *d, MdtConstraint *c)
 void MdtContactGroupRemoveContact(MdtContactGroupID id, MdtContactID cid)
 {
     GROUP_OR_RETURN(g, d, id, ME_NOTHING);
-    MdtConstraint *c = MdtConstraintFromIDOfType(cid, MdtBclCONTACT, __func__);
+    MdtConstraintData *c = MdtConstraintFromIDOfType(cid, MdtBclCONTACT, __func__);
     if (!c)
         return;
     if (!unlink(g, d, c)) {
         ME_REPORT(ME_ERR_BAD_STATE, "the contact is not a member of this group");
         return;
     }
-    MdtBody *b0 = c->body[0], *b1 = c->body[1];
+    MdtBodyData *b0 = c->body[0], *b1 = c->body[1];
     c->body[0] = c->body[1] = NULL;
     MdtConstraintAttach(c, b0, b1); /* a stand-alone contact again, on the same bodies */
 }
@@ -240,7 +240,7 @@ void MdtContactGroupRemoveContact(MdtContactGroupID id, MdtContactID cid)
 MdtContactID MdtContactGroupCreateContact(MdtContactGroupID id)
 {
     GROUP_OR_RETURN(g, d, id, NULL);
-    MdtConstraint *c = MdtConstraintCreateInternal((MdtWorldID)g->world->id, MdtBclCONTACT, &MdtContactClass, __func__);
+    MdtConstraintData *c = MdtConstraintCreateInternal((MdtWorldID)g->world->id, MdtBclCONTACT, &MdtContactClass, __func__);
     if (!c)
         return NULL;
     append(g, d, c);
@@ -250,7 +250,7 @@ MdtContactID MdtContactGroupCreateContact(MdtContactGroupID id)
 void MdtContactGroupDestroyContact(MdtContactGroupID id, MdtContactID cid)
 {
     GROUP_OR_RETURN(g, d, id, ME_NOTHING);
-    MdtConstraint *c = MdtConstraintFromIDOfType(cid, MdtBclCONTACT, __func__);
+    MdtConstraintData *c = MdtConstraintFromIDOfType(cid, MdtBclCONTACT, __func__);
     if (!c)
         return;
     if (g->world->locked) {
@@ -304,7 +304,7 @@ void *MdtContactGroupGetGenerator(MdtContactGroupID id)
 /* ---- a body's contacts (D9) ---------------------------------------------------------------- */
 /* The first contact at or after constraint c in body b's list: a group's first contact or a
  * stand-alone contact. */
-static MdtConstraint *firstContactFrom(const MdtBody *b, MdtConstraint *c)
+static MdtConstraintData *firstContactFrom(const MdtBodyData *b, MdtConstraintData *c)
 {
     for (; c; c = c->nextForBody[c->body[0] == b ? 0 : 1]) {
         if (c->type == MdtBclCONTACT)
@@ -317,29 +317,29 @@ static MdtConstraint *firstContactFrom(const MdtBody *b, MdtConstraint *c)
 
 MdtContactID MdtBodyGetFirstContact(MdtBodyID bid)
 {
-    MdtBody *b = MdtBodyFromID(bid, __func__);
+    MdtBodyData *b = MdtBodyFromID(bid, __func__);
     if (!b)
         return NULL;
-    MdtConstraint *c = firstContactFrom(b, b->firstConstraint);
+    MdtConstraintData *c = firstContactFrom(b, b->firstConstraint);
     return c ? (MdtContactID)c->id : NULL;
 }
 
 MdtContactID MdtBodyGetNextContact(MdtBodyID bid, MdtContactID cid)
 {
-    MdtBody *b = MdtBodyFromID(bid, __func__);
+    MdtBodyData *b = MdtBodyFromID(bid, __func__);
     if (!b)
         return NULL;
-    MdtConstraint *c = MdtConstraintFromIDOfType(cid, MdtBclCONTACT, __func__);
+    MdtConstraintData *c = MdtConstraintFromIDOfType(cid, MdtBclCONTACT, __func__);
     if (!c)
         return NULL;
     ContactData *d = MDT_CONSTRAINT_DATA(c, ContactData);
-    MdtConstraint *owner = d->group ? d->group : c;
+    MdtConstraintData *owner = d->group ? d->group : c;
     if (owner->body[0] != b && owner->body[1] != b) {
         ME_REPORT(ME_ERR_BAD_STATE, "the contact does not touch this body");
         return NULL;
     }
     if (d->group && d->next)
         return (MdtContactID)d->next->id;
-    MdtConstraint *next = firstContactFrom(b, owner->nextForBody[owner->body[0] == b ? 0 : 1]);
+    MdtConstraintData *next = firstContactFrom(b, owner->nextForBody[owner->body[0] == b ? 0 : 1]);
     return next ? (MdtContactID)next->id : NULL;
 }

@@ -8,7 +8,7 @@
 
 typedef struct ContactData {
     MeVector3 position;       /* world */
-    MeVector3 normal;         /* unit, body 0 → body 1 */
+    MeVector3 normal;         /* unit, from body 1 towards body 0 (body 0 is pushed along it) */
     MeVector3 direction;      /* primary friction direction (with UseDirection) */
     MeVector3 worldVelocity;  /* surface velocity of the world (with UseWorldVelocity) */
     MeReal penetration;       /* > 0: overlap */
@@ -17,8 +17,8 @@ typedef struct ContactData {
     MeReal impulse[3];        /* last step's row impulses: normal, primary, secondary */
     MeReal normalForce;       /* last step, N */
     MeReal pendingBounce;     /* approach speed of a contact that landed last step and bounces now */
-    MdtConstraint *group;     /* owning group, or NULL */
-    MdtConstraint *next;      /* next contact of the group */
+    MdtConstraintData *group;     /* owning group, or NULL */
+    MdtConstraintData *next;      /* next contact of the group */
     unsigned long lodStamp;   /* matrix capping: lodRows holds for the step with this partition stamp */
     int lodRows;              /* rows capping left this contact (0: dropped, 1: frictionless) */
 } ContactData;
@@ -29,12 +29,12 @@ extern const MdtConstraintClass MdtContactClass;
 /* Rows of the contact's type (1, 2 or 3). */
 int MdtContactRowCount(const ContactData *d);
 /* Rows the contact writes in this step: its type's, or fewer when matrix capping dropped some. */
-int MdtContactStepRows(const MdtConstraint *contact);
+int MdtContactStepRows(const MdtConstraintData *contact);
 /* First contact of a group (NULL when empty); the others follow through ContactData.next. */
-MdtConstraint *MdtContactGroupFirst(const MdtConstraint *group);
+MdtConstraintData *MdtContactGroupFirst(const MdtConstraintData *group);
 /* Write one contact's rows for `owner` (the contact itself, or its group): bodies come from owner. */
-void MdtContactAddRows(const MdtConstraint *owner, MdtConstraint *contact, MdtRowWriter *w);
+void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contact, MdtRowWriter *w);
 /* Keep the contact's impulses (warm start) and its normal force. */
-void MdtContactUnpack(MdtConstraint *contact, const MeReal *impulses, int rows, MeReal h);
+void MdtContactUnpack(MdtConstraintData *contact, const MeReal *impulses, int rows, MeReal h);
 
 #endif

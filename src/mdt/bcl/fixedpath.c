@@ -12,7 +12,7 @@ typedef struct FixedPathData {
 } FixedPathData;
 MDT_CONSTRAINT_DATA_FITS(FixedPathData);
 
-static void reset(MdtConstraint *c)
+static void reset(MdtConstraintData *c)
 {
     MdtConstraintResetFrames(c);
     FixedPathData *d = MDT_CONSTRAINT_DATA(c, FixedPathData);
@@ -20,7 +20,7 @@ static void reset(MdtConstraint *c)
     MeVector3Set(d->velocity[1], 0, 0, 0);
 }
 
-static void worldVelocity(const MdtConstraint *c, int index, MeVector3 out)
+static void worldVelocity(const MdtConstraintData *c, int index, MeVector3 out)
 {
     const FixedPathData *d = MDT_CONSTRAINT_DATA(c, const FixedPathData);
     if (c->body[index])
@@ -29,7 +29,7 @@ static void worldVelocity(const MdtConstraint *c, int index, MeVector3 out)
         MeVector3Copy(out, d->velocity[index]);
 }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w)
+static void addRows(MdtConstraintData *c, MdtRowWriter *w)
 {
     MeVector3 v0, v1;
     worldVelocity(c, 0, v0);

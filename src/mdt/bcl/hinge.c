@@ -9,14 +9,14 @@ typedef struct HingeData {
 } HingeData;
 MDT_CONSTRAINT_DATA_FITS(HingeData);
 
-static void reset(MdtConstraint *c)
+static void reset(MdtConstraintData *c)
 {
     MdtConstraintResetFrames(c);
     MdtLimitInit(&MDT_CONSTRAINT_DATA(c, HingeData)->limit);
 }
 
 /* The hinge angle's Jacobian row: body 0's orthogonal axis measured in body 1's frame (o1, a1 × o1). */
-static MeReal angleRow(const MdtConstraint *c, MdtRow *row)
+static MeReal angleRow(const MdtConstraintData *c, MdtRow *row)
 {
     MeVector3 o0, a1, o1, n1;
     MdtConstraintWorldOrthogonal(c, 0, o0);
@@ -27,12 +27,12 @@ static MeReal angleRow(const MdtConstraint *c, MdtRow *row)
     return MdtBclAngleRow(row, o1, n1, o0, 0);
 }
 
-static int rowCount(const MdtConstraint *c)
+static int rowCount(const MdtConstraintData *c)
 {
     return 5 + (MdtLimitMayAddRow(&MDT_CONSTRAINT_DATA(c, const HingeData)->limit) ? 1 : 0);
 }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w)
+static void addRows(MdtConstraintData *c, MdtRowWriter *w)
 {
     MdtLimit *l = &MDT_CONSTRAINT_DATA(c, HingeData)->limit;
     MdtBclAddPointRows(w, c);
@@ -43,7 +43,7 @@ static void addRows(MdtConstraint *c, MdtRowWriter *w)
 }
 
 /* After the step: the angle and its rate at the new pose, then the motor's stall check. */
-static void unpack(MdtConstraint *c, const MeReal *impulses, int rows, MeReal h)
+static void unpack(MdtConstraintData *c, const MeReal *impulses, int rows, MeReal h)
 {
     MdtLimit *l = &MDT_CONSTRAINT_DATA(c, HingeData)->limit;
     MdtRow row;
@@ -52,19 +52,19 @@ static void unpack(MdtConstraint *c, const MeReal *impulses, int rows, MeReal h)
     MdtLimitUnpack(l, impulses, rows, h);
 }
 
-static void destroy(MdtConstraint *c) { MDT_CONSTRAINT_DATA(c, HingeData)->limit.magic = 0; }
+static void destroy(MdtConstraintData *c) { MDT_CONSTRAINT_DATA(c, HingeData)->limit.magic = 0; }
 
 static const MdtConstraintClass hingeClass = {"Hinge", 6, reset, rowCount, addRows, unpack, destroy};
 
 MdtHingeID MdtHingeCreate(MdtWorldID w)
 {
-    MdtConstraint *c = MdtConstraintCreateInternal(w, MdtBclHINGE, &hingeClass, __func__);
+    MdtConstraintData *c = MdtConstraintCreateInternal(w, MdtBclHINGE, &hingeClass, __func__);
     return c ? (MdtHingeID)c->id : NULL;
 }
 
 void MdtHingeReset(MdtHingeID j)
 {
-    MdtConstraint *c = MdtConstraintFromIDOfType(j, MdtBclHINGE, __func__);
+    MdtConstraintData *c = MdtConstraintFromIDOfType(j, MdtBclHINGE, __func__);
     if (c)
         reset(c);
 }
@@ -78,13 +78,13 @@ MdtHingeID MdtConstraintDCastHinge(MdtConstraintID c)
 
 MdtLimitID MdtHingeGetLimit(MdtHingeID j)
 {
-    MdtConstraint *c = MdtConstraintFromIDOfType(j, MdtBclHINGE, __func__);
+    MdtConstraintData *c = MdtConstraintFromIDOfType(j, MdtBclHINGE, __func__);
     return c ? &MDT_CONSTRAINT_DATA(c, HingeData)->limit : NULL;
 }
 
 void MdtHingeSetLimit(MdtHingeID j, const MdtLimit *limit)
 {
-    MdtConstraint *c = MdtConstraintFromIDOfType(j, MdtBclHINGE, __func__);
+    MdtConstraintData *c = MdtConstraintFromIDOfType(j, MdtBclHINGE, __func__);
     const MdtLimit *src = MdtLimitCheck(limit, __func__);
     if (c && src)
         MdtLimitCopySettings(&MDT_CONSTRAINT_DATA(c, HingeData)->limit, src);

@@ -12,27 +12,27 @@
 #include "../constraint.h"
 
 /** The axes of body `index`'s constraint frame in the world: primary, orthogonal, primary × orthogonal. */
-void MdtBclWorldFrame(const MdtConstraint *c, int index, MeVector3 f[3]);
+void MdtBclWorldFrame(const MdtConstraintData *c, int index, MeVector3 f[3]);
 
 /** J·v of a row at the bodies' velocities at the start of the step (for the world as body 1: the
  *  constraint's world velocities). */
-MeReal MdtBclRowVelocityNow(const MdtRow *row, const MdtConstraint *c);
+MeReal MdtBclRowVelocityNow(const MdtRow *row, const MdtConstraintData *c);
 
 /** Turn a row into a spring of stiffness k and damper d (units of the row: N/m and N·s/m, or N·m/rad
  *  and N·m·s/rad) acting on its error, with the SPOOK discretisation (docs/step.md, "Springs"). A row
  *  with k or d = MEINFINITY stays rigid (world ε and γ). Returns MEFALSE when k = d = 0: the row is
  *  free and must not be added. The damper acts on J·v − (the row's target velocity). */
-MeBool MdtBclRowSpring(MdtRow *row, const MdtConstraint *c, MeReal k, MeReal d, MeReal h);
+MeBool MdtBclRowSpring(MdtRow *row, const MdtConstraintData *c, MeReal k, MeReal d, MeReal h);
 
 /** Make `row` (error g, Jacobian dg/dt) a one-sided limit g ≤ 0: impulses only reduce g. Rigid (k or d
  *  infinite): added when at or past the limit, or about to reach it within the step (then with γ = 1,
  *  so it closes the gap exactly, like a speculative contact). Soft: a spring-damper past the limit
  *  only. Returns whether the row should be added. */
-MeBool MdtBclLimitRow(MdtRow *row, const MdtConstraint *c, MeReal g, MeReal k, MeReal d, MeReal h);
+MeBool MdtBclLimitRow(MdtRow *row, const MdtConstraintData *c, MeReal g, MeReal k, MeReal d, MeReal h);
 
 /** φ = (p0 − p1)·n for unit n: the attachment points' separation along n. `turnsWithBody1`: n is fixed
  *  in body 1 (a plane or line of body 1), else fixed in the world (as the ball-and-socket rows). */
-void MdtBclPointAlongRow(MdtRow *row, const MdtConstraint *c, const MeVector3 n, MeBool turnsWithBody1);
+void MdtBclPointAlongRow(MdtRow *row, const MdtConstraintData *c, const MeVector3 n, MeBool turnsWithBody1);
 
 /** φ = d0·d1 for unit directions d0 fixed in body 0 and d1 fixed in body 1 (0 when perpendicular). */
 void MdtBclPerpendicularRowFill(MdtRow *row, const MeVector3 d0, const MeVector3 d1);
@@ -43,7 +43,7 @@ typedef struct MdtBclRotation {
     MeVector4 q;
     MeVector3 t[3];
 } MdtBclRotation;
-void MdtBclRelativeRotation(const MdtConstraint *c, const MeVector4 target, MdtBclRotation *r);
+void MdtBclRelativeRotation(const MdtConstraintData *c, const MeVector4 target, MdtBclRotation *r);
 
 /** Row k of φ = 2·vec(q): for small angles the rotation of frame 0 about T's axis k, in radians
  *  (exactly 2 sin(θ/2) times the axis component). */
@@ -59,7 +59,7 @@ void MdtBclAxisFunctionRow(MdtRow *row, const MeVector3 a0, const MeReal *f1, co
 
 /** Set body `index`'s primary axis (world direction), keeping its orthogonal axis perpendicular;
  *  reports ME_ERR_ZERO_AXIS / ME_ERR_NONFINITE_ARGUMENT in `function`'s name. */
-MeBool MdtBclSetBodyAxis(MdtConstraint *c, int index, MeReal x, MeReal y, MeReal z, const char *function);
+MeBool MdtBclSetBodyAxis(MdtConstraintData *c, int index, MeReal x, MeReal y, MeReal z, const char *function);
 
 /** Argument checks shared by the joints' setters, reported in `function`'s name. */
 /** *v ≥ 0 and not NaN (+∞ is stored as MEINFINITY). */
@@ -68,16 +68,16 @@ MeBool MdtBclCheckAngle(MeReal v, MeReal lo, MeReal hi, const char *name, const 
 MeBool MdtBclCheckBodyIndex(unsigned int bodyindex, const char *function);
 
 /** Defines Mdt<T>Create, Reset, QuaConstraint and MdtConstraintDCast<T> for a type with class `cls`
- *  and a static `reset(MdtConstraint *)`. */
+ *  and a static `reset(MdtConstraintData *)`. */
 #define MDT_BCL_TYPE_FUNCTIONS(T, kind, cls)                                                         \
     Mdt##T##ID Mdt##T##Create(MdtWorldID w)                                                          \
     {                                                                                                \
-        MdtConstraint *c = MdtConstraintCreateInternal(w, kind, &cls, __func__);                    \
+        MdtConstraintData *c = MdtConstraintCreateInternal(w, kind, &cls, __func__);                    \
         return c ? (Mdt##T##ID)c->id : NULL;                                                         \
     }                                                                                                \
     void Mdt##T##Reset(Mdt##T##ID j)                                                                 \
     {                                                                                                \
-        MdtConstraint *c = MdtConstraintFromIDOfType(j, kind, __func__);                            \
+        MdtConstraintData *c = MdtConstraintFromIDOfType(j, kind, __func__);                            \
         if (c)                                                                                       \
             reset(c);                                                                                \
     }                                                                                                \
@@ -89,7 +89,7 @@ MeBool MdtBclCheckBodyIndex(unsigned int bodyindex, const char *function);
 
 /** In a function taking `j`: resolve it as a `kind` constraint into `c`, or return `ret`. */
 #define MDT_BCL_JOINT_OR_RETURN(c, j, kind, ret)                                                     \
-    MdtConstraint *c = MdtConstraintFromIDOfType((j), (kind), __func__);                            \
+    MdtConstraintData *c = MdtConstraintFromIDOfType((j), (kind), __func__);                            \
     if (!c)                                                                                          \
     return ret
 

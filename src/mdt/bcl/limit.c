@@ -428,9 +428,9 @@ void MdtLimitController(MdtLimitID l, MeReal desiredPos, MeReal gap, MeReal maxS
 /* ---- rows ------------------------------------------------------------------------------------- */
 static MeReal dot3(const MeReal *a, const MeReal *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-MeReal MdtRowVelocity(const MdtConstraint *c, const MdtRow *row)
+MeReal MdtRowVelocity(const MdtConstraintData *c, const MdtRow *row)
 {
-    const MdtBody *b0 = c->body[0], *b1 = c->body[1];
+    const MdtBodyData *b0 = c->body[0], *b1 = c->body[1];
     MeReal v = dot3(row->lin0, b0->vel) + dot3(row->ang0, b0->velrot);
     if (b1)
         v += dot3(row->lin1, b1->vel) + dot3(row->ang1, b1->velrot);
@@ -439,9 +439,9 @@ MeReal MdtRowVelocity(const MdtConstraint *c, const MdtRow *row)
     return v;
 }
 
-MeReal MdtRowPredictedVelocity(const MdtConstraint *c, const MdtRow *row)
+MeReal MdtRowPredictedVelocity(const MdtConstraintData *c, const MdtRow *row)
 {
-    const MdtBody *b0 = c->body[0], *b1 = c->body[1];
+    const MdtBodyData *b0 = c->body[0], *b1 = c->body[1];
     MeReal v = dot3(row->lin0, b0->velStar) + dot3(row->ang0, b0->velrotStar);
     if (b1)
         v += dot3(row->lin1, b1->velStar) + dot3(row->ang1, b1->velrotStar);
@@ -456,7 +456,7 @@ MeReal MdtRowPredictedVelocity(const MdtConstraint *c, const MdtRow *row)
  * i.e. ε = 1/(h D), γ = h k / D, target = Υ J v with Υ = θ h k / D (v: start-of-step velocities).
  * In equilibrium λ/h = −k φ exactly; undamped it oscillates without numerical damping at the
  * frequency 2 atan(ω h/2)/h (the trapezoidal rule's), for any k. */
-void MdtRowMakeSpring(MdtRow *row, const MdtConstraint *c, MeReal k, MeReal d, MeReal displacement, MeReal h)
+void MdtRowMakeSpring(MdtRow *row, const MdtConstraintData *c, MeReal k, MeReal d, MeReal displacement, MeReal h)
 {
     const MeReal theta = ME_R(0.25);
     MeReal D = theta * h * k + d;
@@ -506,7 +506,7 @@ static void hardStopRow(MdtLimit *l, MdtRowWriter *w, MdtRow *row, int side, MeR
 
 void MdtLimitAddRow(MdtLimit *l, MdtRowWriter *w, const MdtRow *jacobian, MeReal measured)
 {
-    MdtConstraint *c = w->constraint;
+    MdtConstraintData *c = w->constraint;
     const MeReal x = measured + l->offset, rate = MdtRowVelocity(c, jacobian), h = w->h;
     const MeBool capture = w->captured != NULL;
     if (!capture) {

@@ -25,14 +25,14 @@ void MdtLimitSetMeasured(MdtLimit *l, MeReal measured, MeReal rate);
 
 /** Constraint velocity J·v of `row` with the bodies' velocities at the start of the step (and the
  *  world's velocity when body 1 is the world). */
-MeReal MdtRowVelocity(const MdtConstraint *c, const MdtRow *row);
+MeReal MdtRowVelocity(const MdtConstraintData *c, const MdtRow *row);
 
 /** The same with the predicted velocities v* (this step's external forces applied). */
-MeReal MdtRowPredictedVelocity(const MdtConstraint *c, const MdtRow *row);
+MeReal MdtRowPredictedVelocity(const MdtConstraintData *c, const MdtRow *row);
 
 /** A spring-damper row (stiffness k ≥ 0, damping d ≥ 0, not both 0) on the row's coordinate, whose
  *  displacement from rest is `displacement`: sets the row's ε, γ and target velocity (SPOOK). */
-void MdtRowMakeSpring(MdtRow *row, const MdtConstraint *c, MeReal k, MeReal d, MeReal displacement, MeReal h);
+void MdtRowMakeSpring(MdtRow *row, const MdtConstraintData *c, MeReal k, MeReal d, MeReal displacement, MeReal h);
 
 /** Whether the limit may write a row this step (an upper bound for row counts). */
 MeBool MdtLimitMayAddRow(const MdtLimit *l);

@@ -4,9 +4,9 @@
 
 #include "joint_parts.h"
 
-static void reset(MdtConstraint *c) { MdtConstraintResetFrames(c); }
+static void reset(MdtConstraintData *c) { MdtConstraintResetFrames(c); }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w)
+static void addRows(MdtConstraintData *c, MdtRowWriter *w)
 {
     MdtRow row;
     MeVector3 n;

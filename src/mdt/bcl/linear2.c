@@ -4,9 +4,9 @@
 
 #include "joint_parts.h"
 
-static void reset(MdtConstraint *c) { MdtConstraintResetFrames(c); }
+static void reset(MdtConstraintData *c) { MdtConstraintResetFrames(c); }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w)
+static void addRows(MdtConstraintData *c, MdtRowWriter *w)
 {
     MeVector3 f[3];
     MdtBclWorldFrame(c, 1, f);

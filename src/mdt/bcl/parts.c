@@ -8,7 +8,7 @@
  * the world's velocity at the anchor (MdtConstraintSetWorldLinearVelocity) enters through lin1. */
 #include "../constraint.h"
 
-void MdtBclLeverArm(const MdtConstraint *c, int index, MeVector3 r)
+void MdtBclLeverArm(const MdtConstraintData *c, int index, MeVector3 r)
 {
     if (!c->body[index]) {
         MeVector3Set(r, 0, 0, 0);
@@ -16,12 +16,12 @@ void MdtBclLeverArm(const MdtConstraint *c, int index, MeVector3 r)
     }
     MeVector3 p;
     MdtConstraintWorldPosition(c, index, p);
-    const MdtBody *b = c->body[index];
+    const MdtBodyData *b = c->body[index];
     MeVector3Set(r, p[0] - b->comTM[3][0], p[1] - b->comTM[3][1], p[2] - b->comTM[3][2]);
 }
 
 /* φ_k = (p0 − p1)·e_k for the three world axes: the two attachment points coincide. */
-void MdtBclAddPointRows(MdtRowWriter *w, const MdtConstraint *c)
+void MdtBclAddPointRows(MdtRowWriter *w, const MdtConstraintData *c)
 {
     MeVector3 p0, p1, r0, r1;
     MdtConstraintWorldPosition(c, 0, p0);
@@ -44,7 +44,7 @@ void MdtBclAddPointRows(MdtRowWriter *w, const MdtConstraint *c)
 }
 
 /* φ = d0·d1 with d0 fixed in body 0 and d1 in body 1: dφ/dt = (ω0 − ω1)·(d0 × d1). */
-void MdtBclAddPerpendicularRow(MdtRowWriter *w, const MdtConstraint *c, const MeVector3 d0, const MeVector3 d1)
+void MdtBclAddPerpendicularRow(MdtRowWriter *w, const MdtConstraintData *c, const MeVector3 d0, const MeVector3 d1)
 {
     (void)c;
     MdtRow row;
@@ -58,7 +58,7 @@ void MdtBclAddPerpendicularRow(MdtRowWriter *w, const MdtConstraint *c, const Me
 
 /* Body 1's primary axis kept perpendicular to the two directions of body 0's frame that are
  * perpendicular to body 0's primary axis: the primary axes stay parallel (2 rows). */
-void MdtBclAddParallelAxisRows(MdtRowWriter *w, const MdtConstraint *c)
+void MdtBclAddParallelAxisRows(MdtRowWriter *w, const MdtConstraintData *c)
 {
     MeVector3 a0, o0, n0, a1;
     MdtConstraintWorldPrimary(c, 0, a0);
@@ -91,7 +91,7 @@ MeReal MdtBclAngleRow(MdtRow *row, const MeVector3 u, const MeVector3 v, const M
 /* φ = (p0 − p1)·d for the attachment points p0, p1 and a direction d fixed in body `dBody`:
  * dφ/dt = (ṗ0 − ṗ1)·d + (p0 − p1)·(ω_dBody × d), hence lin = ±d and the angular parts
  * r0 × d, −r1 × d plus d × (p0 − p1) on the body that carries d. */
-MeReal MdtBclSlideRow(MdtRow *row, const MdtConstraint *c, const MeVector3 d, int dBody)
+MeReal MdtBclSlideRow(MdtRow *row, const MdtConstraintData *c, const MeVector3 d, int dBody)
 {
     MeVector3 p0, p1, r0, r1, D, t;
     MdtConstraintWorldPosition(c, 0, p0);
@@ -112,16 +112,16 @@ MeReal MdtBclSlideRow(MdtRow *row, const MdtConstraint *c, const MeVector3 d, in
 #include "../../me/check.h"
 #include "joint_parts.h"
 
-void MdtBclWorldFrame(const MdtConstraint *c, int index, MeVector3 f[3])
+void MdtBclWorldFrame(const MdtConstraintData *c, int index, MeVector3 f[3])
 {
     MdtConstraintWorldPrimary(c, index, f[0]);
     MdtConstraintWorldOrthogonal(c, index, f[1]);
     MeVector3Cross(f[2], f[0], f[1]);
 }
 
-MeReal MdtBclRowVelocityNow(const MdtRow *row, const MdtConstraint *c)
+MeReal MdtBclRowVelocityNow(const MdtRow *row, const MdtConstraintData *c)
 {
-    const MdtBody *b0 = c->body[0], *b1 = c->body[1];
+    const MdtBodyData *b0 = c->body[0], *b1 = c->body[1];
     MeReal jv = MeVector3Dot(row->lin0, b0->vel) + MeVector3Dot(row->ang0, b0->velrot);
     if (b1)
         jv += MeVector3Dot(row->lin1, b1->vel) + MeVector3Dot(row->ang1, b1->velrot);
@@ -133,7 +133,7 @@ MeReal MdtBclRowVelocityNow(const MdtRow *row, const MdtConstraint *c)
 /* SPOOK (Lacoursière 2007): with τ = d/k and Υ = 1/(1 + 4τ/h) = hk/(hk + 4d) the row solves
  *   J v⁺ + ε x = −(4Υ/h) φ + Υ (J v − c) + c,   ε = 4Υ/(h²k) = 4/(h (hk + 4d)),
  * i.e. γ = 4Υ and no world ε. k = 0 gives a pure damper (ε = 1/(h d), γ = 0). See docs/step.md. */
-MeBool MdtBclRowSpring(MdtRow *row, const MdtConstraint *c, MeReal k, MeReal d, MeReal h)
+MeBool MdtBclRowSpring(MdtRow *row, const MdtConstraintData *c, MeReal k, MeReal d, MeReal h)
 {
     if (k >= MEINFINITY || d >= MEINFINITY)
         return METRUE;
@@ -148,7 +148,7 @@ MeBool MdtBclRowSpring(MdtRow *row, const MdtConstraint *c, MeReal k, MeReal d, 
     return METRUE;
 }
 
-MeBool MdtBclLimitRow(MdtRow *row, const MdtConstraint *c, MeReal g, MeReal k, MeReal d, MeReal h)
+MeBool MdtBclLimitRow(MdtRow *row, const MdtConstraintData *c, MeReal g, MeReal k, MeReal d, MeReal h)
 {
     row->error = g;
     row->lo = -MEINFINITY;
@@ -171,7 +171,7 @@ MeBool MdtBclLimitRow(MdtRow *row, const MdtConstraint *c, MeReal g, MeReal k, M
 
 /* φ = (p0 − p1)·n. dφ/dt = n·(v0 + ω0 × r0) − n·(v1 + ω1 × r1) + (p0 − p1)·(ω1 × n) when n turns with
  * body 1; the last two terms combine into the velocity of body 1's material point at p0. */
-void MdtBclPointAlongRow(MdtRow *row, const MdtConstraint *c, const MeVector3 n, MeBool turnsWithBody1)
+void MdtBclPointAlongRow(MdtRow *row, const MdtConstraintData *c, const MeVector3 n, MeBool turnsWithBody1)
 {
     MeVector3 p0, p1, r0, r1;
     MdtConstraintWorldPosition(c, 0, p0);
@@ -206,7 +206,7 @@ static void frameQuaternion(MeVector3 f[3], MeVector4 q)
     MeQuaternionFromR(q, R);
 }
 
-void MdtBclRelativeRotation(const MdtConstraint *c, const MeVector4 target, MdtBclRotation *r)
+void MdtBclRelativeRotation(const MdtConstraintData *c, const MeVector4 target, MdtBclRotation *r)
 {
     MeVector3 f0[3], f1[3];
     MeVector4 q0, q1, t, tc;
@@ -272,7 +272,7 @@ void MdtBclAxisFunctionRow(MdtRow *row, const MeVector3 a0, const MeReal *f1, co
     row->error = g;
 }
 
-MeBool MdtBclSetBodyAxis(MdtConstraint *c, int index, MeReal x, MeReal y, MeReal z, const char *function)
+MeBool MdtBclSetBodyAxis(MdtConstraintData *c, int index, MeReal x, MeReal y, MeReal z, const char *function)
 {
     if (!(ME_IS_FINITE(x) && ME_IS_FINITE(y) && ME_IS_FINITE(z))) {
         ME_REPORT_IN(function, ME_ERR_NONFINITE_ARGUMENT, "the axis (%g, %g, %g) is not finite; call ignored",

@@ -17,7 +17,7 @@ typedef struct PrismaticData {
 } PrismaticData;
 MDT_CONSTRAINT_DATA_FITS(PrismaticData);
 
-static void reset(MdtConstraint *c)
+static void reset(MdtConstraintData *c)
 {
     PrismaticData *d = MDT_CONSTRAINT_DATA(c, PrismaticData);
     MdtConstraintResetFrames(c);
@@ -26,7 +26,7 @@ static void reset(MdtConstraint *c)
 }
 
 /* Zero displacement here: body 1's attachment point goes where body 0's is now. */
-static void anchor(MdtConstraint *c)
+static void anchor(MdtConstraintData *c)
 {
     PrismaticData *d = MDT_CONSTRAINT_DATA(c, PrismaticData);
     MeVector3 p0;
@@ -38,7 +38,7 @@ static void anchor(MdtConstraint *c)
     d->limit.measured = 0;
 }
 
-static MeBool anchoredToCurrentBodies(const MdtConstraint *c)
+static MeBool anchoredToCurrentBodies(const MdtConstraintData *c)
 {
     const PrismaticData *d = MDT_CONSTRAINT_DATA(c, const PrismaticData);
     for (int i = 0; i < 2; i++)
@@ -47,7 +47,7 @@ static MeBool anchoredToCurrentBodies(const MdtConstraint *c)
     return d->anchored;
 }
 
-static MeReal displacementRow(const MdtConstraint *c, MdtRow *row)
+static MeReal displacementRow(const MdtConstraintData *c, MdtRow *row)
 {
     MeVector3 a1;
     MdtConstraintWorldPrimary(c, 1, a1);
@@ -55,12 +55,12 @@ static MeReal displacementRow(const MdtConstraint *c, MdtRow *row)
     return MdtBclSlideRow(row, c, a1, 1);
 }
 
-static int rowCount(const MdtConstraint *c)
+static int rowCount(const MdtConstraintData *c)
 {
     return 5 + (MdtLimitMayAddRow(&MDT_CONSTRAINT_DATA(c, const PrismaticData)->limit) ? 1 : 0);
 }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w)
+static void addRows(MdtConstraintData *c, MdtRowWriter *w)
 {
     PrismaticData *d = MDT_CONSTRAINT_DATA(c, PrismaticData);
     if (!w->captured && !anchoredToCurrentBodies(c))
@@ -84,7 +84,7 @@ static void addRows(MdtConstraint *c, MdtRowWriter *w)
     MdtLimitAddRow(&d->limit, w, &row, x);
 }
 
-static void unpack(MdtConstraint *c, const MeReal *impulses, int rows, MeReal h)
+static void unpack(MdtConstraintData *c, const MeReal *impulses, int rows, MeReal h)
 {
     MdtLimit *l = &MDT_CONSTRAINT_DATA(c, PrismaticData)->limit;
     MdtRow row;
@@ -93,19 +93,19 @@ static void unpack(MdtConstraint *c, const MeReal *impulses, int rows, MeReal h)
     MdtLimitUnpack(l, impulses, rows, h);
 }
 
-static void destroy(MdtConstraint *c) { MDT_CONSTRAINT_DATA(c, PrismaticData)->limit.magic = 0; }
+static void destroy(MdtConstraintData *c) { MDT_CONSTRAINT_DATA(c, PrismaticData)->limit.magic = 0; }
 
 static const MdtConstraintClass prismaticClass = {"Prismatic", 6, reset, rowCount, addRows, unpack, destroy};
 
 MdtPrismaticID MdtPrismaticCreate(MdtWorldID w)
 {
-    MdtConstraint *c = MdtConstraintCreateInternal(w, MdtBclPRISMATIC, &prismaticClass, __func__);
+    MdtConstraintData *c = MdtConstraintCreateInternal(w, MdtBclPRISMATIC, &prismaticClass, __func__);
     return c ? (MdtPrismaticID)c->id : NULL;
 }
 
 void MdtPrismaticReset(MdtPrismaticID j)
 {
-    MdtConstraint *c = MdtConstraintFromIDOfType(j, MdtBclPRISMATIC, __func__);
+    MdtConstraintData *c = MdtConstraintFromIDOfType(j, MdtBclPRISMATIC, __func__);
     if (c)
         reset(c);
 }
@@ -119,7 +119,7 @@ MdtPrismaticID MdtConstraintDCastPrismatic(MdtConstraintID c)
 
 void MdtPrismaticSetAxis(MdtPrismaticID j, MeReal x, MeReal y, MeReal z)
 {
-    MdtConstraint *c = MdtConstraintFromIDOfType(j, MdtBclPRISMATIC, __func__);
+    MdtConstraintData *c = MdtConstraintFromIDOfType(j, MdtBclPRISMATIC, __func__);
     if (!c)
         return;
     ME_CHECK_FINITE3(x, y, z, ME_NOTHING);
@@ -134,13 +134,13 @@ void MdtPrismaticSetAxis(MdtPrismaticID j, MeReal x, MeReal y, MeReal z)
 
 MdtLimitID MdtPrismaticGetLimit(MdtPrismaticID j)
 {
-    MdtConstraint *c = MdtConstraintFromIDOfType(j, MdtBclPRISMATIC, __func__);
+    MdtConstraintData *c = MdtConstraintFromIDOfType(j, MdtBclPRISMATIC, __func__);
     return c ? &MDT_CONSTRAINT_DATA(c, PrismaticData)->limit : NULL;
 }
 
 void MdtPrismaticSetLimit(MdtPrismaticID j, const MdtLimit *limit)
 {
-    MdtConstraint *c = MdtConstraintFromIDOfType(j, MdtBclPRISMATIC, __func__);
+    MdtConstraintData *c = MdtConstraintFromIDOfType(j, MdtBclPRISMATIC, __func__);
     const MdtLimit *src = MdtLimitCheck(limit, __func__);
     if (c && src)
         MdtLimitCopySettings(&MDT_CONSTRAINT_DATA(c, PrismaticData)->limit, src);

@@ -14,7 +14,7 @@ typedef struct RPROData {
 } RPROData;
 MDT_CONSTRAINT_DATA_FITS(RPROData);
 
-static void reset(MdtConstraint *c)
+static void reset(MdtConstraintData *c)
 {
     MdtConstraintResetFrames(c);
     RPROData *d = MDT_CONSTRAINT_DATA(c, RPROData);
@@ -24,7 +24,7 @@ static void reset(MdtConstraint *c)
         d->strength[k] = MEINFINITY;
 }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w)
+static void addRows(MdtConstraintData *c, MdtRowWriter *w)
 {
     const RPROData *d = MDT_CONSTRAINT_DATA(c, const RPROData);
     MeVector3 f[3], omega = {0, 0, 0};
@@ -142,7 +142,7 @@ void MdtRPROJointGetAngularStrength(MdtRPROJointID j, MeVector3 s)
     MeVector3Copy(s, d->strength + 3);
 }
 
-void MdtRPROJointSetAttachmentPosition(MdtRPROJointID j, unsigned int bodyindex, MeReal x, MeReal y, MeReal z)
+void MdtRPROJointSetAttachmentPosition(MdtRPROJointID j, MeReal x, MeReal y, MeReal z, unsigned int bodyindex)
 {
     MDT_BCL_JOINT_OR_RETURN(c, j, MdtBclRPROJOINT, ME_NOTHING);
     ME_CHECK_FINITE3(x, y, z, ME_NOTHING);
@@ -158,8 +158,8 @@ void MdtRPROJointGetAttachmentPosition(MdtRPROJointID j, unsigned int bodyindex,
         MeVector3Copy(p, c->position[bodyindex]);
 }
 
-void MdtRPROJointSetAttachmentQuaternion(MdtRPROJointID j, unsigned int bodyindex, MeReal q0, MeReal q1, MeReal q2,
-                                         MeReal q3)
+void MdtRPROJointSetAttachmentQuaternion(MdtRPROJointID j, MeReal q0, MeReal q1, MeReal q2, MeReal q3,
+                                         unsigned int bodyindex)
 {
     MDT_BCL_JOINT_OR_RETURN(c, j, MdtBclRPROJOINT, ME_NOTHING);
     MeVector4 q;

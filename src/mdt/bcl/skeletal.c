@@ -9,6 +9,7 @@
  * and the twist ψ (MdtBclTwistRow): Limited, |ψ| − α_t ≤ 0; Fixed, ψ = 0. Limits use
  * MdtBclLimitRow (hard, or a spring-damper past the limit); locked rows are springs when given a
  * finite stiffness. */
+#include <karma/MdtDefaults.h>
 #include <karma/MdtSkeletal.h>
 
 #include "joint_parts.h"
@@ -22,19 +23,21 @@ typedef struct SkeletalData {
 } SkeletalData;
 MDT_CONSTRAINT_DATA_FITS(SkeletalData);
 
-static void reset(MdtConstraint *c)
+static void reset(MdtConstraintData *c)
 {
     MdtConstraintResetFrames(c);
     SkeletalData *d = MDT_CONSTRAINT_DATA(c, SkeletalData);
     d->coneOption = MdtSkeletalConeOptionCone;
     d->twistOption = MdtSkeletalTwistOptionLimited;
-    d->primary = d->secondary = d->twist = ME_PI / 4; /* decision D6 */
+    d->primary = MDTSKELETAL_DEFAULT_PRI_ANGLE; /* decision D6 */
+    d->secondary = MDTSKELETAL_DEFAULT_SEC_ANGLE;
+    d->twist = MDTSKELETAL_DEFAULT_TWIST_ANGLE;
     d->coneK = d->twistK = MEINFINITY;
     d->coneD = d->twistD = 0;
     d->combined = MEFALSE;
 }
 
-static int rowCount(const MdtConstraint *c)
+static int rowCount(const MdtConstraintData *c)
 {
     const SkeletalData *d = MDT_CONSTRAINT_DATA(c, const SkeletalData);
     int cone = d->coneOption == MdtSkeletalConeOptionFree ? 0 : d->coneOption == MdtSkeletalConeOptionCone ? 1 : 2;
@@ -47,7 +50,7 @@ typedef struct Swing {
     MeVector3 a0, f1[3], u;
 } Swing;
 
-static void swingOf(const MdtConstraint *c, Swing *s)
+static void swingOf(const MdtConstraintData *c, Swing *s)
 {
     MdtConstraintWorldPrimary(c, 0, s->a0);
     MdtBclWorldFrame(c, 1, s->f1);
@@ -88,13 +91,13 @@ static MeBool slotLimitRow(MdtRow *row, const Swing *sw, MeReal ap)
 }
 
 /* A locked row: rigid, or a spring with the given stiffness and damping. */
-static void addLocked(MdtRowWriter *w, MdtConstraint *c, MdtRow *row, MeReal k, MeReal d)
+static void addLocked(MdtRowWriter *w, MdtConstraintData *c, MdtRow *row, MeReal k, MeReal d)
 {
     if (MdtBclRowSpring(row, c, k, d, w->h))
         MdtRowWriterAdd(w, row);
 }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w)
+static void addRows(MdtConstraintData *c, MdtRowWriter *w)
 {
     const SkeletalData *d = MDT_CONSTRAINT_DATA(c, const SkeletalData);
     MdtBclAddPointRows(w, c);
@@ -219,7 +222,7 @@ MeBool MdtSkeletalCombinedLimitsAreEnabled(MdtSkeletalID j)
     return d->combined;
 }
 
-static MeReal twistOf(const MdtConstraint *c)
+static MeReal twistOf(const MdtConstraintData *c)
 {
     MdtBclRotation r;
     MdtRow row;

@@ -16,7 +16,7 @@ typedef struct SpringData {
 } SpringData;
 MDT_CONSTRAINT_DATA_FITS(SpringData);
 
-static void reset(MdtConstraint *c)
+static void reset(MdtConstraintData *c)
 {
     SpringData *d = MDT_CONSTRAINT_DATA(c, SpringData);
     MdtConstraintResetFrames(c);
@@ -32,7 +32,7 @@ static void reset(MdtConstraint *c)
 }
 
 /* The distance row; returns |p0 − p1|. */
-static MeReal lengthRow(const MdtConstraint *c, MdtRow *row)
+static MeReal lengthRow(const MdtConstraintData *c, MdtRow *row)
 {
     const SpringData *d = MDT_CONSTRAINT_DATA(c, const SpringData);
     MeVector3 p0, p1, u, r0, r1;
@@ -54,7 +54,7 @@ static MeReal lengthRow(const MdtConstraint *c, MdtRow *row)
     return length;
 }
 
-static void measureSeparation(MdtConstraint *c)
+static void measureSeparation(MdtConstraintData *c)
 {
     SpringData *d = MDT_CONSTRAINT_DATA(c, SpringData);
     MdtRow row;
@@ -62,12 +62,12 @@ static void measureSeparation(MdtConstraint *c)
     d->measured = METRUE;
 }
 
-static int rowCount(const MdtConstraint *c)
+static int rowCount(const MdtConstraintData *c)
 {
     return MdtLimitMayAddRow(&MDT_CONSTRAINT_DATA(c, const SpringData)->limit) ? 1 : 0;
 }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w)
+static void addRows(MdtConstraintData *c, MdtRowWriter *w)
 {
     SpringData *d = MDT_CONSTRAINT_DATA(c, SpringData);
     if (!d->measured && !w->captured)
@@ -79,7 +79,7 @@ static void addRows(MdtConstraint *c, MdtRowWriter *w)
     MdtLimitAddRow(&d->limit, w, &row, length - d->separation);
 }
 
-static void unpack(MdtConstraint *c, const MeReal *impulses, int rows, MeReal h)
+static void unpack(MdtConstraintData *c, const MeReal *impulses, int rows, MeReal h)
 {
     SpringData *d = MDT_CONSTRAINT_DATA(c, SpringData);
     MdtRow row;
@@ -88,18 +88,18 @@ static void unpack(MdtConstraint *c, const MeReal *impulses, int rows, MeReal h)
     MdtLimitUnpack(&d->limit, impulses, rows, h);
 }
 
-static void destroy(MdtConstraint *c) { MDT_CONSTRAINT_DATA(c, SpringData)->limit.magic = 0; }
+static void destroy(MdtConstraintData *c) { MDT_CONSTRAINT_DATA(c, SpringData)->limit.magic = 0; }
 
 static const MdtConstraintClass springClass = {"Spring", 1, reset, rowCount, addRows, unpack, destroy};
 
 #define SPRING_OR_RETURN(c, j, ret)                                                                  \
-    MdtConstraint *c = MdtConstraintFromIDOfType((j), MdtBclSPRING, __func__);                       \
+    MdtConstraintData *c = MdtConstraintFromIDOfType((j), MdtBclSPRING, __func__);                       \
     if (!c)                                                                                          \
     return ret
 
 MdtSpringID MdtSpringCreate(MdtWorldID w)
 {
-    MdtConstraint *c = MdtConstraintCreateInternal(w, MdtBclSPRING, &springClass, __func__);
+    MdtConstraintData *c = MdtConstraintCreateInternal(w, MdtBclSPRING, &springClass, __func__);
     return c ? (MdtSpringID)c->id : NULL;
 }
 

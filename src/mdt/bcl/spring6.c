@@ -11,7 +11,7 @@ typedef struct Spring6Data {
 } Spring6Data;
 MDT_CONSTRAINT_DATA_FITS(Spring6Data);
 
-static void reset(MdtConstraint *c)
+static void reset(MdtConstraintData *c)
 {
     MdtConstraintResetFrames(c);
     Spring6Data *d = MDT_CONSTRAINT_DATA(c, Spring6Data);
@@ -21,7 +21,7 @@ static void reset(MdtConstraint *c)
     }
 }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w)
+static void addRows(MdtConstraintData *c, MdtRowWriter *w)
 {
     const Spring6Data *d = MDT_CONSTRAINT_DATA(c, const Spring6Data);
     MeVector3 f[3];
@@ -47,7 +47,7 @@ MDT_BCL_TYPE_FUNCTIONS(Spring6, MdtBclSPRING6, spring6Class)
 /* The data of j and the checked axis index, or NULL (reported). */
 static Spring6Data *axisData(MdtSpring6ID j, unsigned int axis, const char *function)
 {
-    MdtConstraint *c = MdtConstraintFromIDOfType(j, MdtBclSPRING6, function);
+    MdtConstraintData *c = MdtConstraintFromIDOfType(j, MdtBclSPRING6, function);
     if (!c)
         return NULL;
     if (axis > 2) {

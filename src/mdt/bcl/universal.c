@@ -4,14 +4,14 @@
 
 #include "joint_parts.h"
 
-static void reset(MdtConstraint *c)
+static void reset(MdtConstraintData *c)
 {
     MdtConstraintResetFrames(c);
     MeVector3Set(c->primary[1], 0, 1, 0);
     MeVector3Set(c->orthogonal[1], 0, 0, 1);
 }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w)
+static void addRows(MdtConstraintData *c, MdtRowWriter *w)
 {
     MeVector3 a0, a1;
     MdtBclAddPointRows(w, c);

@@ -8,14 +8,14 @@
 #include "joint_parts.h"
 
 typedef struct UserData {
-    MdtBclAddConstraintFn fn;
+    MdtUserConstraintRowsFn fn;
     void *constraintStruct;
     int maxRows;
     MeReal force[MDT_USER_CONSTRAINT_MAX_ROWS];
 } UserData;
 MDT_CONSTRAINT_DATA_FITS(UserData);
 
-static void reset(MdtConstraint *c)
+static void reset(MdtConstraintData *c)
 {
     MdtConstraintResetFrames(c);
     UserData *d = MDT_CONSTRAINT_DATA(c, UserData);
@@ -23,7 +23,7 @@ static void reset(MdtConstraint *c)
     d->maxRows = MDT_MAX_JOINT_ROWS;
 }
 
-static int rowCount(const MdtConstraint *c)
+static int rowCount(const MdtConstraintData *c)
 {
     const UserData *d = MDT_CONSTRAINT_DATA(c, const UserData);
     return d->fn ? d->maxRows : 0;
@@ -39,7 +39,7 @@ static MeBool rowIsValid(const MdtUserConstraintRow *u)
            !isnan(u->stiffness) && !isnan(u->damping);
 }
 
-static void addRows(MdtConstraint *c, MdtRowWriter *w)
+static void addRows(MdtConstraintData *c, MdtRowWriter *w)
 {
     UserData *d = MDT_CONSTRAINT_DATA(c, UserData);
     if (!d->fn)
@@ -84,7 +84,7 @@ static void addRows(MdtConstraint *c, MdtRowWriter *w)
     }
 }
 
-static void unpack(MdtConstraint *c, const MeReal *impulses, int rows, MeReal h)
+static void unpack(MdtConstraintData *c, const MeReal *impulses, int rows, MeReal h)
 {
     UserData *d = MDT_CONSTRAINT_DATA(c, UserData);
     for (int i = 0; i < MDT_USER_CONSTRAINT_MAX_ROWS; i++)
@@ -100,7 +100,7 @@ MDT_BCL_TYPE_FUNCTIONS(UserConstraint, MdtBclUSER, userClass)
     MDT_BCL_JOINT_OR_RETURN(c_, j, MdtBclUSER, ret);                                                 \
     UserData *d = MDT_CONSTRAINT_DATA(c_, UserData)
 
-void MdtUserConstraintSetAddConstraintFunction(MdtUserConstraintID j, MdtBclAddConstraintFn fn)
+void MdtUserConstraintSetAddConstraintFunction(MdtUserConstraintID j, MdtUserConstraintRowsFn fn)
 {
     DATA_OR_RETURN(d, j, ME_NOTHING);
     if (c_->world->locked) {
@@ -110,7 +110,7 @@ void MdtUserConstraintSetAddConstraintFunction(MdtUserConstraintID j, MdtBclAddC
     d->fn = fn;
 }
 
-MdtBclAddConstraintFn MdtUserConstraintGetAddConstraintFunction(MdtUserConstraintID j)
+MdtUserConstraintRowsFn MdtUserConstraintGetAddConstraintFunction(MdtUserConstraintID j)
 {
     DATA_OR_RETURN(d, j, NULL);
     return d->fn;

@@ -1,4 +1,4 @@
-/* integrate.c -- MdtKeaIntegrateSystem (MdtIntegrateStage): advance the bodies of the step by one
+/* integrate.c -- MdtKeaIntegrate (MdtIntegrateStage): advance the bodies of the step by one
  * time step.
  *
  * Karma's integrator is first order, velocities first and then positions ("symplectic Euler"):
@@ -21,7 +21,7 @@
 #include "kea_integrate.h"
 
 /* Orientation update: first order, with the fast-spin component (if any) integrated exactly. */
-static void integrateOrientation(MdtBody *b, MeReal h)
+static void integrateOrientation(MdtBodyData *b, MeReal h)
 {
     MeVector3 w;
     MeVector3Copy(w, b->velrot);
@@ -38,7 +38,7 @@ static void integrateOrientation(MdtBody *b, MeReal h)
     MeQuaternionNormalize(b->q);
 }
 
-static MeBool stateIsFinite(const MdtBody *b)
+static MeBool stateIsFinite(const MdtBodyData *b)
 {
     MeBool ok = METRUE;
     for (int k = 0; k < 3; k++)
@@ -48,7 +48,7 @@ static MeBool stateIsFinite(const MdtBody *b)
     return ok;
 }
 
-static void integrateBody(MdtBody *b, const MeReal *dv, const MeReal *dw, MeReal h)
+static void integrateBody(MdtBodyData *b, const MeReal *dv, const MeReal *dw, MeReal h)
 {
     MeVector3 oldVel, oldVelrot, com;
     MeVector3Copy(oldVel, b->vel);
@@ -65,9 +65,9 @@ static void integrateBody(MdtBody *b, const MeReal *dv, const MeReal *dw, MeReal
     b->enabledTime += h;
 }
 
-void MdtIntegrateStage(MdtWorld *w)
+void MdtIntegrateStage(MdtWorldData *w)
 {
-    MdtPartitionOutput *out = &w->partitions;
+    MdtPartitionLists *out = &w->partitions;
     const MeReal *deltaVelocities = w->rowsPacked ? (const MeReal *)w->rows.dv : NULL;
     static const MeReal zero[3] = {0, 0, 0};
     for (int p = 0; p < out->partitionCount; p++) {
@@ -76,7 +76,7 @@ void MdtIntegrateStage(MdtWorld *w)
         int start = out->partitionStart[p], end = out->partitionStart[p + 1];
         MeBool finite = METRUE;
         for (int i = start; i < end; i++) {
-            MdtBody *b = out->bodies[i];
+            MdtBodyData *b = out->bodies[i];
             const MeReal *dv = deltaVelocities ? deltaVelocities + 6 * (size_t)i : zero;
             const MeReal *dw = deltaVelocities ? deltaVelocities + 6 * (size_t)i + 3 : zero;
             integrateBody(b, dv, dw, w->stepSize);

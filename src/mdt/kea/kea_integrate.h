@@ -6,6 +6,6 @@
 
 /* v*, ω*: velocities after external forces, impulses, gyroscopic term and damping, before
  * constraints. Also records the start-of-step pose. For every body of the step's partitions. */
-void MdtKeaPredictVelocities(MdtWorld *w);
+void MdtKeaPredictVelocities(MdtWorldData *w);
 
 #endif

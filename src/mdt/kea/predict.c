@@ -18,7 +18,7 @@
  * rule keeps the quadratic invariants of Euler's equations, kinetic energy and |L|, exactly, where
  * explicit Euler gains energy without bound and backward Euler loses it (about 20 % in 10 s for a
  * tumbling box at 60 Hz). */
-static void gyroscopicStep(const MdtBody *b, MeReal h, MeVector3 w)
+static void gyroscopicStep(const MdtBodyData *b, MeReal h, MeVector3 w)
 {
     MeMatrix3 R, I;
     MeVector3 w1, w2;
@@ -58,7 +58,7 @@ static void gyroscopicStep(const MdtBody *b, MeReal h, MeVector3 w)
     MeMatrix3MultiplyVector(w, R, w2); /* body → world */
 }
 
-static void predictBody(MdtBody *b, const MdtWorld *w, MeReal h)
+static void predictBody(MdtBodyData *b, const MdtWorldData *w, MeReal h)
 {
     MeMatrix3 invI;
     MeVector3 dw, wg;
@@ -94,9 +94,9 @@ static void predictBody(MdtBody *b, const MdtWorld *w, MeReal h)
     }
 }
 
-void MdtKeaPredictVelocities(MdtWorld *w)
+void MdtKeaPredictVelocities(MdtWorldData *w)
 {
-    const MdtPartitionOutput *out = &w->partitions;
+    const MdtPartitionLists *out = &w->partitions;
     for (int i = 0; i < out->bodyCount; i++)
         predictBody(out->bodies[i], w, w->stepSize);
 }

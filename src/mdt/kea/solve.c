@@ -1,4 +1,4 @@
-/* solve.c -- MdtKeaAddConstraintForces (MdtSolveStage): run Kea on each partition of the step and
+/* solve.c -- MdtKeaSolve (MdtSolveStage): run Kea on each partition of the step and
  * collect its statistics.
  *
  * Each partition is an independent LCP over its slice of the step's rows. The world's KeaParameters
@@ -24,9 +24,9 @@ static MeBool allFinite(const MeReal *v, size_t n)
     return ok;
 }
 
-void MdtSolveStage(MdtWorld *w)
+void MdtSolveStage(MdtWorldData *w)
 {
-    const MdtPartitionOutput *out = &w->partitions;
+    const MdtPartitionLists *out = &w->partitions;
     MdtStepRows *r = &w->rows;
     MdtSolverStats *stats = &w->solverStats;
     memset(stats, 0, sizeof *stats);
