@@ -1,7 +1,8 @@
 # Karma: a thin wrapper around CMake for the README's commands.
 #
 #   make demo      build, then run the Topple scene headless (karma run topple)
-#   make test      build and test float (-O2, checks on), double, and ASan + UBSan; prints "N passed, N failed"
+#   make test      build and test float (-O2, checks on), double, ASan + UBSan and the thread tests under
+#                  ThreadSanitizer; prints "N passed, N failed"
 #   make build     build the float configuration (build/float)
 #   make install   install it (PREFIX=/usr/local by default)
 #   make deps      install missing Debian packages (as root), or print the apt-get line
@@ -48,7 +49,7 @@ build: deps
 	cmake --build $(BUILD) -j $(JOBS)
 
 test: deps
-	@JOBS=$(JOBS) bash tests/run_configs.sh float double asan
+	@JOBS=$(JOBS) bash tests/run_configs.sh float double asan tsan
 
 demo: build
 	$(BUILD)/tools/karma run topple

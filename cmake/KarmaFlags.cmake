@@ -15,3 +15,13 @@ endif()
 function(karma_apply_warnings target)
   target_compile_options(${target} PRIVATE ${KARMA_C_FLAGS} ${KARMA_WARNINGS})
 endfunction()
+
+# ThreadSanitizer (tests/run_configs.sh tsan): exclusive with KARMA_SANITIZE.
+option(KARMA_TSAN "Build with ThreadSanitizer" OFF)
+if(KARMA_TSAN)
+  if(KARMA_SANITIZE)
+    message(FATAL_ERROR "KARMA_TSAN and KARMA_SANITIZE cannot be combined")
+  endif()
+  add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=thread)
+endif()

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # run_configs.sh -- build and test Karma in several configurations; `make test` calls it.
 #
-#   tests/run_configs.sh [CONFIG...]        CONFIG: float | double | asan (default: all three)
+#   tests/run_configs.sh [CONFIG...]        CONFIG: float | double | asan | tsan (default: all four)
 #
 #   float   build/float   Release (-O3) with KARMA_CHECKS=ON: argument checks on in an optimised build
 #   double  build/double  Release, KARMA_DOUBLE=ON (MeReal = double)
 #   asan    build/asan    Debug, KARMA_SANITIZE=ON (AddressSanitizer + UBSan, no recovery)
+#   tsan    build/tsan    Debug, KARMA_TSAN=ON (ThreadSanitizer): only the library and the tests of
+#                         threads (tests/threads), to keep its time small
 #
 # Every configuration compiles with -std=c11 -Wall -Wextra -Werror -pedantic (and more; see
 # cmake/KarmaFlags.cmake) and runs the whole CTest suite. A configuration that fails to configure or
@@ -15,7 +17,7 @@ cd "$(dirname "$0")/.."
 
 JOBS=${JOBS:-2}
 configs=("$@")
-[ ${#configs[@]} -eq 0 ] && configs=(float double asan)
+[ ${#configs[@]} -eq 0 ] && configs=(float double asan tsan)
 
 total_passed=0
 total_failed=0
@@ -27,8 +29,17 @@ for config in "${configs[@]}"; do
         float)  options=(-DCMAKE_BUILD_TYPE=Release -DKARMA_CHECKS=ON -DKARMA_DOUBLE=OFF -DKARMA_SANITIZE=OFF) ;;
         double) options=(-DCMAKE_BUILD_TYPE=Release -DKARMA_DOUBLE=ON -DKARMA_SANITIZE=OFF) ;;
         asan)   options=(-DCMAKE_BUILD_TYPE=Debug -DKARMA_SANITIZE=ON -DKARMA_DOUBLE=OFF) ;;
-        *) echo "run_configs.sh: unknown configuration '$config' (float, double or asan)" >&2; exit 2 ;;
+        tsan)   options=(-DCMAKE_BUILD_TYPE=Debug -DKARMA_TSAN=ON -DKARMA_SANITIZE=OFF -DKARMA_DOUBLE=OFF
+                         -DKARMA_BUILD_TOOLS=OFF) ;;
+        *) echo "run_configs.sh: unknown configuration '$config' (float, double, asan or tsan)" >&2; exit 2 ;;
     esac
+    # The tsan configuration builds and runs only the thread tests; the others everything.
+    targets=()
+    select=()
+    if [ "$config" = tsan ]; then
+        targets=(--target test_threads)
+        select=(-R '^test_threads$')
+    fi
     dir=build/$config
     start=$(date +%s)
     echo "==== $config: configure and build in $dir"
@@ -40,7 +51,7 @@ for config in "${configs[@]}"; do
         summary+=("$config: configure failed")
         continue
     fi
-    if ! cmake --build "$dir" -j "$JOBS"; then
+    if ! cmake --build "$dir" -j "$JOBS" "${targets[@]}"; then
         echo "==== $config: BUILD FAILED"
         total_failed=$((total_failed + 1))
         summary+=("$config: build failed")
@@ -48,7 +59,7 @@ for config in "${configs[@]}"; do
     fi
     echo "==== $config: test"
     log=$dir/ctest.log
-    ctest --test-dir "$dir" --output-on-failure -j "$JOBS" 2>&1 | tee "$log"
+    ctest --test-dir "$dir" --output-on-failure -j "$JOBS" "${select[@]}" 2>&1 | tee "$log"
     line=$(grep -E 'tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -1)
     if [ -z "$line" ]; then
         echo "==== $config: ctest produced no result"

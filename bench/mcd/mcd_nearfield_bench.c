@@ -30,7 +30,7 @@ static MeReal uniform(MeReal lo, MeReal hi)
     return lo + (hi - lo) * (MeReal)(rngState >> 8) / (MeReal)16777216.0;
 }
 
-static void makeGeometry(McdGeometry *g, int type)
+static void makeGeometry(McdGeometryData *g, int type)
 {
     memset(g, 0, sizeof *g);
     g->type = type;
@@ -70,7 +70,7 @@ int main(int argc, char **argv)
     printf("| pair | ns/test (wall) | ns/test (CPU) | tests/s (CPU) | touching | contacts/test | "
            "contacts/touching test |\n|---|---|---|---|---|---|---|\n");
     for (k = 0; k < count; k++) {
-        McdGeometry g1, g2;
+        McdGeometryData g1, g2;
         McdContact c[4];
         long tests = 0, touching = 0, contacts = 0;
         double t0, t1;

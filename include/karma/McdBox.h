@@ -12,8 +12,13 @@ typedef McdGeometryID McdBoxID;
 
 /** A box of full edge lengths dx, dy, dz (each > 0, finite). */
 ME_API McdBoxID McdBoxCreate(McdFrameworkID fw, MeReal dx, MeReal dy, MeReal dz);
-/** Half edge lengths. */
-ME_API void McdBoxGetRadii(McdBoxID b, MeVector3 radii);
+/** Half edge lengths: a pointer to the box's own three (NULL for a bad ID). It stays valid, and
+ *  follows McdBoxSetDimensions, until the geometry is destroyed; read it, do not write it. */
+ME_API MeReal *McdBoxGetRadii(McdBoxID b);
+/** x and y extent of the box placed at `tm` (NULL: identity): {min x, max x, min y, max y}. */
+ME_API void McdBoxGetXYAABB(McdBoxID b, MeMatrix4 tm, MeReal bounds[4]);
+/** The box's point farthest along the local direction inDir, in the local frame. */
+ME_API void McdBoxMaximumPointLocal(McdBoxID b, MeReal *inDir, MeReal *outPoint);
 /** Full edge lengths. */
 ME_API void McdBoxGetDimensions(McdBoxID b, MeReal *dx, MeReal *dy, MeReal *dz);
 ME_API void McdBoxSetDimensions(McdBoxID b, MeReal dx, MeReal dy, MeReal dz);

@@ -22,6 +22,9 @@ ME_API MeReal McdConeGetUpperRadius(McdConeID c);
 /** z of the lower and upper discs in the cone's frame (origin at the centre of mass). */
 ME_API MeReal McdConeGetLowerZ(McdConeID c);
 ME_API MeReal McdConeGetUpperZ(McdConeID c);
+/** Karma's offset of the cone's frame: the z of the lower disc (-length/4 for a pointed cone), where
+ *  a viewer puts the base of the cone it draws. */
+ME_API MeReal McdConeGetZOffset(McdConeID c);
 
 ME_EXTERN_C_END
 

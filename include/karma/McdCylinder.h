@@ -15,6 +15,12 @@ ME_API void McdCylinderSetRadius(McdCylinderID c, MeReal radius);
 ME_API MeReal McdCylinderGetHeight(McdCylinderID c);
 ME_API void McdCylinderSetHeight(McdCylinderID c, MeReal height);
 ME_API MeReal McdCylinderGetHalfHeight(McdCylinderID c);
+/** Set radius and full height at once (both > 0, finite). */
+ME_API void McdCylinderSetGeometricalParameters(McdCylinderID c, MeReal inRadius, MeReal inHeight);
+/** x and y extent of the cylinder placed at `tm` (NULL: identity): {min x, max x, min y, max y}. */
+ME_API void McdCylinderGetXYAABB(McdCylinderID c, MeMatrix4 tm, MeReal bounds[4]);
+/** The cylinder's point farthest along the local direction inDir, in the local frame. */
+ME_API void McdCylinderMaximumPointLocal(McdCylinderID c, MeReal *inDir, MeReal *outPoint);
 
 ME_EXTERN_C_END
 

@@ -12,7 +12,9 @@
 #ifndef MCD_FRAME_H
 #define MCD_FRAME_H
 
+#include "McdLineSegment.h"
 #include "McdTypes.h"
+#include "MeMemory.h"
 
 ME_EXTERN_C_BEGIN
 
@@ -30,8 +32,14 @@ ME_API MeBool McdFrameworkIsValid(McdFrameworkID fw);
 
 /** Called by McdTerm before anything is freed (spaces, bridges and user code tidy up here). */
 typedef void (*McdFrameworkTermActionFn)(McdFrameworkID fw, void *data);
-/** Register a term action; at most 16 per framework. Returns METRUE when registered. */
-ME_API MeBool McdFrameworkRegisterTermAction(McdFrameworkID fw, McdFrameworkTermActionFn fn, void *data);
+/** Karma's form: register `action` (McdTermAction: the framework only) to run at McdTerm; at most
+ *  16 term actions of either form per framework (reported when full). */
+ME_API void McdFrameworkRegisterTermAction(McdFrameworkID fw, McdTermAction action);
+/** Our form, with a pointer handed back to `fn`. Returns METRUE when registered. */
+ME_API MeBool McdFrameworkAddTermAction(McdFrameworkID fw, McdFrameworkTermActionFn fn, void *data);
+/** Destroy every model (taking it out of its space first: its pairs say Goodbye at the space's next
+ *  McdSpaceEndChanges) and then every geometry of the framework, whatever references they hold. */
+ME_API void McdFrameworkDestroyAllModelsAndGeometries(McdFrameworkID fw);
 
 ME_API MeReal McdFrameworkGetLengthScale(McdFrameworkID fw);
 /** Contact tolerance given to new models (>= 0, finite). */
@@ -39,6 +47,9 @@ ME_API void McdFrameworkSetDefaultContactTolerance(McdFrameworkID fw, MeReal tol
 ME_API MeReal McdFrameworkGetDefaultContactTolerance(McdFrameworkID fw);
 /** The request used by pairs whose `request` is NULL; the application may change it in place. */
 ME_API McdRequest *McdFrameworkGetDefaultRequestPtr(McdFrameworkID fw);
+/** Make `request` (the application's; it must outlive its use) the default request; NULL restores
+ *  the framework's own. */
+ME_API void McdFrameworkSetDefaultRequestPtr(McdFrameworkID fw, McdRequest *request);
 ME_API int McdFrameworkGetModelCount(McdFrameworkID fw);
 ME_API int McdFrameworkGetGeometryCount(McdFrameworkID fw);
 ME_API int McdFrameworkGetInstanceMaxCount(McdFrameworkID fw);
@@ -70,13 +81,32 @@ typedef struct McdGeometryTypeDesc {
     void (*debugDraw)(McdGeometryID g, void *data, MeMatrix4 tm, const float colour[3]);
 } McdGeometryTypeDesc;
 
-/** Register a user geometry type. Returns its type number (>= kMcdGeometryBuiltInTypes), or -1
- *  (reported) when `geoTypeMaxCount` types are already registered or a required function is NULL. */
-ME_API int McdFrameworkRegisterGeometryType(McdFrameworkID fw, const McdGeometryTypeDesc *desc);
-/** Number of geometry types known (built-in and user). */
-ME_API int McdFrameworkGetGeometryTypeCount(McdFrameworkID fw);
-/** Name of a type number, or NULL when unknown. */
-ME_API const char *McdFrameworkGetGeometryTypeName(McdFrameworkID fw, int type);
+/** Register a user geometry type (Karma's McdFrameworkRegisterGeometryType took nine arguments and
+ *  a struct embedded in the user's; see docs/api_changes.md). Returns its type number
+ *  (>= kMcdGeometryBuiltInTypes), or -1 (reported) when `geoTypeMaxCount` types are already
+ *  registered or a required function is NULL. */
+ME_API int McdFrameworkRegisterUserGeometryType(McdFrameworkID fw, const McdGeometryTypeDesc *desc);
+/** Number of geometry type numbers in use (built-in and user; kMcdGeometryBuiltInTypes with no
+ *  user type, the unregistered TriangleList, ConvexMesh and Aggregate numbers included). */
+ME_API MeI16 McdFrameworkGetRegisteredTypeCount(McdFrameworkID fw);
+/** Name of a registered type number, or NULL when unknown. */
+ME_API const char *McdFrameworkGetTypeName(McdFrameworkID fw, int typeId);
+/** Whether `typeId` names a registered type. */
+ME_API MeBool McdFrameworkTypeIsRegistered(McdFrameworkID fw, int typeId);
+/** Whether `typeId` is a number the framework has room for (registered or not). */
+ME_API MeBool McdFrameworkTypeIsValid(McdFrameworkID fw, int typeId);
+/** List the registered types through MeInfo. */
+ME_API void McdFrameworkShowTypes(McdFrameworkID fw);
+/** Print which pairs of types have a test, through MeInfo. */
+ME_API void McdFrameworkPrintInteractionTable(McdFramework *fw);
+/** Whether "no test for this pair of types" has been reported (non-zero) and set it (0: report
+ *  again at the next such pair). The order of the two types does not matter. */
+ME_API void McdFrameworkSetInteractionsWarned(McdFramework *fw, int geoType1, int geoType2, int count);
+ME_API int McdFrameworkGetInteractionsWarned(McdFramework *fw, int geoType1, int geoType2);
+/** Replace the segment test of a type (NULL: back to the built-in one). */
+ME_API void McdFrameworkSetLineSegInteraction(McdFramework *fw, int geoType, McdLineSegIntersectFnPtr isectfn);
+/** The segment test of a type: the one set, the built-in one, or NULL when the type has none. */
+ME_API McdLineSegIntersectFnPtr McdFrameworkGetLineSegInteraction(McdFramework *fw, int geoType);
 
 /** A pair test written by the application (for user types): contacts between g1 at tm1 and g2 at
  *  tm2 (world), normals from g2 towards g1, separation < 0 when overlapping, only contacts with

@@ -9,6 +9,7 @@
 #ifndef MCD_GEOMETRY_H
 #define MCD_GEOMETRY_H
 
+#include "McdFrame.h"
 #include "McdTypes.h"
 
 ME_EXTERN_C_BEGIN
@@ -18,9 +19,20 @@ ME_API void McdGeometryDestroy(McdGeometryID g);
 ME_API MeBool McdGeometryIsValid(McdGeometryID g);
 /** The type number (McdGeometryType or a user type), or -1 for a bad ID. */
 ME_API int McdGeometryGetTypeId(McdGeometryID g);
+/** Karma's second name for McdGeometryGetTypeId. */
+ME_API int McdGeometryGetType(McdGeometryID g);
 ME_API const char *McdGeometryGetTypeName(McdGeometryID g);
-/** Models (and aggregates) using the geometry. */
+/** Holds on the geometry: models (and aggregates) using it plus references the application took.
+ *  McdGeometryDestroy is refused while it is above 0. */
 ME_API int McdGeometryGetReferenceCount(McdGeometryID g);
+/** Take and release a reference of the application's (models take theirs themselves). Releasing
+ *  one that was not taken is refused (ME_ERR_ARGUMENT_RANGE). */
+ME_API void McdGeometryIncrementReferenceCount(McdGeometryID g);
+ME_API void McdGeometryDecrementReferenceCount(McdGeometryID g);
+/** Set the count (the models' holds plus the application's); below the models' holds is refused. */
+ME_API void McdGeometrySetReferenceCount(McdGeometryID g, int refCount);
+/** The segment test of the geometry's type in Karma's form, or NULL when the type has none. */
+ME_API McdLineSegIntersectFnPtr McdGeometryGetLineSegIntersectFnPtr(McdGeometryID g);
 ME_API McdFrameworkID McdGeometryGetFramework(McdGeometryID g);
 
 /** The tightest world axis-aligned box of the geometry placed at `tm` (NULL: identity). Unbounded
@@ -33,13 +45,13 @@ ME_API void McdGeometryGetBSphere(McdGeometryID g, MeVector3 centre, MeReal *rad
 ME_API void McdGeometryMaximumPoint(McdGeometryID g, MeMatrix4 tm, const MeVector3 dir, MeVector3 point);
 /** Unit-density mass properties: `relTM` (may be NULL) receives the centre-of-mass frame in the
  *  local frame (identity for the primitives: their origin is their centre of mass), `inertia` the
- *  tensor about the centre of mass, `volume` the volume. Planes are infinite: METRUE only for finite
- *  geometries. */
-ME_API MeBool McdGeometryGetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume);
+ *  tensor about the centre of mass, `volume` the volume. Returns 0 on success (Karma's convention);
+ *  non-zero for geometries without finite mass (planes, null) or bad arguments. */
+ME_API MeI16 McdGeometryGetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume);
 /** Draw through the type's debugDraw, if it has one. */
 ME_API void McdGeometryDebugDraw(McdGeometryID g, MeMatrix4 tm, const float colour[3]);
 
-/* ---- user geometry types (see McdFrameworkRegisterGeometryType in McdFrame.h) ------------------ */
+/* ---- user geometry types (see McdFrameworkRegisterUserGeometryType in McdFrame.h) ------------------ */
 
 /** Create a geometry of a registered user type holding the application's shape `data`. */
 ME_API McdGeometryID McdUserGeometryCreate(McdFrameworkID fw, int type, void *data);

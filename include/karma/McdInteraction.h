@@ -9,6 +9,7 @@
 #ifndef MCD_INTERACTION_H
 #define MCD_INTERACTION_H
 
+#include "McdSpace.h"
 #include "McdTypes.h"
 
 ME_EXTERN_C_BEGIN
@@ -19,6 +20,19 @@ ME_API int McdIntersect(McdModelPairID pair, McdIntersectResult *result);
 ME_API void McdGoodbye(McdModelPairID pair);
 /** Whether the two models' AABBs (of their last update) overlap. */
 ME_API MeBool McdNearby(McdModelPairID pair);
+
+/** Called by McdHello after the test is chosen (e.g. McduHelloRequestTableCB); NULL: none. */
+ME_API void McdSetHelloCallback(McdFramework *fw, McdHelloCallbackFnPtr fn);
+ME_API McdHelloCallbackFnPtr McdGetHelloCallback(McdFramework *fw);
+/** McdHello on each hello pair of the container, McdGoodbye on each goodbye pair. */
+ME_API void McdHelloEach(McdModelPairContainer *pairs);
+ME_API void McdGoodbyeEach(McdModelPairContainer *pairs);
+/** McdIntersect on the container's hello and staying pairs from `pairsIter` on, one result each,
+ *  their contacts packed into contactArray (each pair is given its request's contactMaxCount).
+ *  Stops when either array is full: returns METRUE ("call again") when pairs remain. */
+ME_API MeBool McdIntersectEach(McdModelPairContainer *pairs, McdModelPairContainerIterator *pairsIter,
+                               McdIntersectResult *resultArray, int resultArraySize, int *resultCount,
+                               McdContact *contactArray, int contactArraySize, int *contactCount);
 
 ME_EXTERN_C_END
 

@@ -18,6 +18,11 @@ typedef struct McdLineSegIntersectResult {
     MeReal distance;    /**< from p0 to position */
 } McdLineSegIntersectResult;
 
+/** A per-type segment test (Karma's McdFrameworkSetLineSegInteraction): non-zero and `outOverlap`
+ *  filled when the world segment inOrig -> inDest meets the model. */
+typedef int (*McdLineSegIntersectFnPtr)(const McdModelID cm, MeReal *const inOrig, MeReal *const inDest,
+                                        McdLineSegIntersectResult *outOverlap);
+
 /** Returns 1 and fills `result` when the segment meets the model, else 0. */
 ME_API int McdLineSegIntersect(McdModelID m, const MeVector3 p0, const MeVector3 p1, McdLineSegIntersectResult *result);
 

@@ -25,7 +25,8 @@ ME_API McdModelID McdModelCreate(McdGeometryID geometry);
 /** Destroy a model that is in no space (refused with ME_ERR_MCD_IN_USE otherwise). */
 ME_API void McdModelDestroy(McdModelID m);
 /** Restore every setting to its default (own identity transform, no relative transform, default
- *  tolerance, material 0, sort key 0, no user data, no body); keeps the geometry and the space. */
+ *  tolerance, material 0, sort key 0, no user data, no body, no callbacks or velocity pointers,
+ *  request ID 0); keeps the geometry and the space. */
 ME_API void McdModelReset(McdModelID m);
 ME_API MeBool McdModelIsValid(McdModelID m);
 ME_API McdFrameworkID McdModelGetFramework(McdModelID m);
@@ -39,8 +40,18 @@ ME_API void McdModelSetTransformPtr(McdModelID m, MeMatrix4Ptr tm);
 ME_API MeMatrix4Ptr McdModelGetTransformPtr(McdModelID m);
 /** Place the geometry at `relTM` (a rigid transform) in the model's transform; NULL: none. */
 ME_API void McdModelSetRelativeTransform(McdModelID m, MeMatrix4 relTM);
-/** The relative transform (identity when none); returns METRUE when one is set. */
-ME_API MeBool McdModelGetRelativeTransform(McdModelID m, MeMatrix4 relTM);
+/** The relative transform, or NULL when none is set. The pointer is into the model (models do not
+ *  move) or the one given to McdModelSetRelativeTransformPtrs; it is valid until the model is
+ *  destroyed or its relative transform changed. */
+ME_API MeMatrix4Ptr McdModelGetRelativeTransform(McdModelID m);
+/** Karma's pointer form: the model follows `refTM` (as McdModelSetTransformPtr), reads its relative
+ *  transform from `relTM` at each update (NULL: none) and writes the geometry-to-world transform
+ *  into `compoundTM` at each update (NULL: nowhere). The matrices stay the caller's (`own` is
+ *  accepted and ignored: nothing is freed with the model). */
+ME_API void McdModelSetRelativeTransformPtrs(McdModelID m, MeMatrix4 relTM, MeMatrix4 refTM, MeMatrix4 compoundTM,
+                                             MeBool own);
+/** The relative transform followed (NULL when none) and the transform followed. */
+ME_API void McdModelGetRelativeTransformPtrs(McdModelID m, MeMatrix4Ptr *relTM, MeMatrix4Ptr *refTM);
 /** Geometry-to-world transform of the last update. */
 ME_API void McdModelGetWorldTransform(McdModelID m, MeMatrix4 tm);
 
@@ -55,6 +66,31 @@ ME_API void McdModelSetUserData(McdModelID m, void *data);
 ME_API void *McdModelGetUserData(McdModelID m);
 /* The model's dynamics body: McdModelSetBody / McdModelGetBody belong to the bridge (MstBridge.h),
  * since Mcd knows nothing of Mdt. */
+/** Karma's raw body slot (the bridge's McdModelSetBody fills it too): an untyped pointer that Mcd
+ *  stores and never follows. */
+ME_API void *McdModelGetBodyData(McdModelID m);
+ME_API void McdModelSetBodyData(McdModelID m, void *body);
+
+/** The type number of the model's geometry. */
+ME_API McdGeometryType McdModelGetGeometryType(McdModelID m);
+/** Called first by each update of the model (McdModelUpdate, McdSpaceUpdateAll...); an update the
+ *  callback itself makes does not call it again. NULL: none (the default). */
+ME_API void McdModelSetUpdateCallback(McdModelID m, McdModelUpdateFnPtr fn);
+ME_API McdModelUpdateFnPtr McdModelGetUpdateCallback(McdModelID m);
+/** Called by McdIntersect, for each model of the pair that has one, with the pair's result. */
+ME_API void McdModelSetIntersectCallback(McdModelID m, McdModelIntersectFnPtr fn);
+ME_API McdModelIntersectFnPtr McdModelGetIntersectCallback(McdModelID m);
+/** The model's class for McduRequestTable (>= 0; McdModelGetDefaultRequestID() at creation). */
+ME_API void McdModelSetRequestID(McdModelID m, int requestId);
+ME_API int McdModelGetRequestID(McdModelID m);
+/** The request ID models start with. */
+#define McdModelGetDefaultRequestID() (0)
+/** Where the model's velocities live (e.g. a body's): kept for the safe-time queries to come;
+ *  NULL (the default) means at rest. Mcd stores the pointers and does not read them yet. */
+ME_API void McdModelSetLinearVelocityPtr(McdModelID m, MeReal *velocity);
+ME_API MeReal *McdModelGetLinearVelocityPtr(McdModelID m);
+ME_API void McdModelSetAngularVelocityPtr(McdModelID m, MeReal *velocity);
+ME_API MeReal *McdModelGetAngularVelocityPtr(McdModelID m);
 
 /** Compound the relative transform with the transform (the geometry-to-world transform). */
 ME_API void McdModelCompoundTransforms(McdModelID m);

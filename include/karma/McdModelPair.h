@@ -16,6 +16,17 @@ ME_API McdModelPairID McdModelPairCreate(McdModelID model1, McdModelID model2);
 ME_API void McdModelPairDestroy(McdModelPairID pair);
 /** Set the models and clear everything else (request NULL, user data NULL, no test chosen). */
 ME_API void McdModelPairReset(McdModelPairID pair, McdModelID model1, McdModelID model2);
+/** The pair's two models. */
+ME_API void McdModelPairGetModels(McdModelPairID pair, McdModelID *model1, McdModelID *model2);
+/** Type names of the two models' geometries (for messages). */
+ME_API void McdModelPairGetGeometryNames(McdModelPairID pair, const char **name1, const char **name2);
+/** The request the pair's tests use: the one set, else the framework's default request. */
+ME_API McdRequest *McdModelPairGetRequestPtr(const McdModelPairID pair);
+/** Use `request` (the caller's; NULL: the framework's default) for this pair. */
+ME_API void McdModelPairSetRequestPtr(McdModelPairID pair, McdRequest *request);
+/** The application's pointer for the pair (the bridge keeps its contact group here). */
+ME_API void *McdModelPairGetUserData(McdModelPairID pair);
+ME_API void McdModelPairSetUserData(McdModelPairID pair, void *data);
 
 ME_EXTERN_C_END
 

@@ -64,6 +64,12 @@ typedef struct McdModelPairContainer {
     int helloFirst, helloEndStayingFirst, stayingEnd;
 } McdModelPairContainer;
 
+/** Position in a container for McdIntersectEach (McdModelPairContainerIteratorInit). */
+typedef struct McdModelPairContainerIterator {
+    McdModelPairContainer *container;
+    int count; /**< next entry */
+} McdModelPairContainerIterator;
+
 /** Position in a space's report for McdSpaceGetPairs / McdSpaceGetTransitions. */
 typedef struct McdSpacePairIterator {
     MeU32 report; /**< which report it walks (a later McdSpaceEndChanges makes it stale) */
@@ -77,14 +83,22 @@ typedef struct McdSpaceModelIterator {
 } McdSpaceModelIterator;
 
 /** A culling table: a symmetric size x size bit matrix. Models inserted with the same table and the
- *  same id never pair when the bit of their two indices is set (e.g. the parts of one ragdoll). */
-typedef struct McdCullingTable *McdCullingTableID;
+ *  same id never pair when the bit of their two indices is set (e.g. the parts of one ragdoll).
+ *  Karma's programs hold a `McdCullingTable *`; the struct is opaque. */
+typedef struct McdCullingTable McdCullingTable;
+typedef McdCullingTable *McdCullingTableID;
 
 /** Filter of McdSpaceGetLineSegFirstEnabledIntersection: non-zero when `model` may be hit. */
-typedef MeBool (*McdSpaceLineSegFilterFn)(McdModelID model, void *data);
+typedef int (*McdLineSegIntersectEnableCallback)(McdModelID model, void *filterData);
 
-/** Called for each overlapping pair that a full pair pool could not record. */
-typedef void (*McdSpacePoolFullHandler)(McdModelID model1, McdModelID model2);
+/** Called for each overlapping pair that a full pair pool could not record (Karma's
+ *  McdSpacePoolErrorFnPtr, McdTypes.h). */
+typedef McdSpacePoolErrorFnPtr McdSpacePoolFullHandler;
+
+/** Replaces McdModelUpdate as the space's per-model update in McdSpaceUpdateAll (Karma's hook for
+ *  swept boxes): it must leave the model updated (e.g. by calling McdModelUpdate). `duration` is 0
+ *  here (no safe time yet). */
+typedef void (*McdSpaceUpdateAABBFnPtr)(McdModelID model, MeReal duration);
 
 /* ---- space ------------------------------------------------------------------------------- */
 
@@ -123,8 +137,9 @@ ME_API MeBool McdSpaceModelIsFrozen(McdModelID model);
 
 /** Pair filtering: a disabled pair is not reported (a reported one says Goodbye once). The setting
  *  lasts while both models stay in the space, overlapping or not, and takes a pair-pool entry. */
-ME_API void McdSpaceDisablePair(McdModelID model1, McdModelID model2);
-ME_API void McdSpaceEnablePair(McdModelID model1, McdModelID model2);
+/** Return METRUE when the setting was recorded. */
+ME_API MeBool McdSpaceDisablePair(McdModelID model1, McdModelID model2);
+ME_API MeBool McdSpaceEnablePair(McdModelID model1, McdModelID model2);
 ME_API MeBool McdSpacePairIsEnabled(McdModelID model1, McdModelID model2);
 
 ME_API int McdSpaceGetModelCount(McdSpaceID space);
@@ -132,8 +147,19 @@ ME_API void McdSpaceModelIteratorBegin(McdSpaceID space, McdSpaceModelIterator *
 /** Next model in slot order into *model; returns MEFALSE when there are no more. */
 ME_API MeBool McdSpaceGetModel(McdSpaceID space, McdSpaceModelIterator *iter, McdModelID *model);
 
-/** Sets the handler called for each pair lost to a full pool (NULL: none); returns the old one. */
-ME_API McdSpacePoolFullHandler McdSpaceSetPoolFullHandler(McdSpaceID space, McdSpacePoolFullHandler handler);
+/** Sets the handler called for each pair lost to a full pool (NULL: none). */
+ME_API void McdSpaceSetPoolFullHandler(McdSpaceID space, McdSpacePoolErrorFnPtr handler);
+/** The handler set by McdSpaceSetPoolFullHandler, or NULL. */
+ME_API McdSpacePoolErrorFnPtr McdSpaceGetPoolFullHandler(McdSpaceID space);
+/** The application's pointer for the space (NULL at creation). */
+ME_API void McdSpaceSetUserData(McdSpaceID space, void *data);
+ME_API void *McdSpaceGetUserData(McdSpaceID space);
+/** The per-model update of McdSpaceUpdateAll (NULL: McdModelUpdate). */
+ME_API void McdSpaceSetAABBFn(McdSpaceID space, McdSpaceUpdateAABBFnPtr updateAABBFn);
+/** Change the culling table, index and group id of a model already in `space` (inside a change
+ *  block; table NULL: no culling). Takes effect at McdSpaceEndChanges. */
+ME_API void McdSpaceSetModelCullingParameters(McdSpaceID space, McdModelID model, McdCullingTable *table, int index,
+                                              int id);
 /** Pairs held now (live, goodbye and disabled records) and the pool size. */
 ME_API int McdSpaceGetPairCount(McdSpaceID space);
 ME_API int McdSpaceGetPairCapacity(McdSpaceID space);
@@ -171,14 +197,23 @@ ME_API int McdSpaceGetLineSegFirstIntersection(McdSpaceID space, const MeVector3
 ME_API int McdSpaceGetLineSegIntersections(McdSpaceID space, const MeVector3 orig, const MeVector3 dest,
                                            McdLineSegIntersectResult *results, int maxCount);
 /** As McdSpaceGetLineSegFirstIntersection, among the models for which filterCB(model, data) is
- *  non-zero (filterCB NULL: every model). */
+ *  non-zero (filterCB NULL: every model). Karma's argument order: the filter before the result. */
 ME_API int McdSpaceGetLineSegFirstEnabledIntersection(McdSpaceID space, const MeVector3 orig, const MeVector3 dest,
-                                                      McdLineSegIntersectResult *result,
-                                                      McdSpaceLineSegFilterFn filterCB, void *data);
+                                                      McdLineSegIntersectEnableCallback filterCB, void *data,
+                                                      McdLineSegIntersectResult *result);
 
 /* ---- containers -------------------------------------------------------------------------- */
 
 ME_API McdModelPairContainer *McdModelPairContainerCreate(int size);
+/** Make `c` an empty container over the application's `array` of `size` entries (not freed here:
+ *  do not McdModelPairContainerDestroy such a container). */
+ME_API void McdModelPairContainerInit(McdModelPairContainer *c, McdModelPair **array, int size);
+/** Remove the pair at `entry` (a pointer into the container's array); the ranges keep their order. */
+ME_API void McdModelPairContainerRemovePair(McdModelPairContainer *c, McdModelPairID *entry);
+/** Print the three counts through MeInfo. */
+ME_API void McdModelPairContainerPrintStats(McdModelPairContainer *c);
+/** Start `iter` at the first hello pair of `c` (for McdIntersectEach). */
+ME_API void McdModelPairContainerIteratorInit(McdModelPairContainerIterator *iter, McdModelPairContainer *c);
 ME_API void McdModelPairContainerDestroy(McdModelPairContainer *container);
 ME_API void McdModelPairContainerReset(McdModelPairContainer *container);
 ME_API McdModelPairID *McdModelPairContainerGetGoodbyeArray(McdModelPairContainer *container, int *count);

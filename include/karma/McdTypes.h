@@ -15,10 +15,19 @@
 
 ME_EXTERN_C_BEGIN
 
-typedef struct McdFrameworkHandle_ *McdFrameworkID; /**< the collision framework (McdInit) */
-typedef struct McdGeometryHandle_ *McdGeometryID;   /**< a shape, shareable by many models */
-typedef struct McdModelHandle_ *McdModelID;         /**< a geometry placed in the world */
-typedef struct McdSpaceHandle_ *McdSpaceID;         /**< a farfield space (axis sort) */
+/* Karma's struct names, usable in declarations (`McdFramework *fw`). The structs stay incomplete:
+ * an ID is an encoded, checked handle, never a pointer to be followed. */
+typedef struct McdFramework McdFramework; /**< the collision framework (McdInit) */
+typedef struct McdGeometry McdGeometry;   /**< a shape, shareable by many models */
+typedef struct McdModel McdModel;         /**< a geometry placed in the world */
+typedef struct McdSpace McdSpace;         /**< a farfield space (axis sort) */
+typedef McdFramework *McdFrameworkID;
+typedef McdGeometry *McdGeometryID;
+typedef McdModel *McdModelID;
+typedef McdSpace *McdSpaceID;
+/** Karma's name for a model standing for several (same type as McdModelID). */
+typedef McdModelID McdCompositeModelID;
+typedef McdContact *McdContactID;
 
 /** Geometry type numbers (Karma's; Cone, which Karma left unnumbered, gets 9). User types
  *  registered with McdFrameworkRegisterGeometryType get the numbers after the built-in ones. */
@@ -41,6 +50,7 @@ typedef struct McdRequest {
     int contactMaxCount;   /**< contacts wanted at most for the pair */
     int faceNormalsFirst;  /**< prefer face normals over edge normals where both are valid */
 } McdRequest;
+typedef McdRequest *McdRequestID;
 
 /** A pair of models that the farfield found overlapping (or that the application made). */
 typedef struct McdModelPair {
@@ -66,6 +76,25 @@ typedef struct McdIntersectResult {
     MeVector3 normal;      /**< representative normal, model 2 -> model 1 */
     void *data;            /**< test-specific extra data, or NULL */
 } McdIntersectResult;
+
+/* ---- Karma 1.2's callback types ------------------------------------------------------------ */
+
+/** Called by McdTerm before anything is freed (McdFrameworkRegisterTermAction). */
+typedef void (*McdTermAction)(McdFrameworkID frame);
+/** Called by McdModelUpdate (and the space's update) before the model's transforms are compounded:
+ *  the place to move a model that follows something else. */
+typedef void (*McdModelUpdateFnPtr)(McdModel *model);
+/** Called by McdIntersect for each model of the pair that has one, after the contacts are made. */
+typedef void (*McdModelIntersectFnPtr)(McdModel *model, McdIntersectResult *result);
+/** Called by McdHello (Karma's hook that chooses a pair's request). */
+typedef void (*McdHelloCallbackFnPtr)(McdModelPair *pair);
+/** Called for each overlapping pair that a full pair pool could not record. */
+typedef void (*McdSpacePoolErrorFnPtr)(McdModelID model1, McdModelID model2);
+
+/** Debug drawing options (McdFrameworkSetDebugDrawing). */
+typedef enum McdDebugDrawOptions {
+    kMcdDebugDrawAABB = 0x001 /**< draw the models' AABBs */
+} McdDebugDrawOptions;
 
 ME_EXTERN_C_END
 

@@ -13,6 +13,12 @@
 
 ME_EXTERN_C_BEGIN
 
+/** What MeChunkPutMem does with the block (MeChunkSetMode). */
+typedef enum {
+    kMeChunkModeKeepOnPut = 1, /**< keep it for the next MeChunkGetMem (the default) */
+    kMeChunkModeFreeOnPut = 2  /**< free it; the next MeChunkGetMem allocates again */
+} kMeChunkMode;
+
 typedef struct MeChunk {
     void *memory;
     size_t size;         /**< bytes currently allocated */
@@ -20,15 +26,25 @@ typedef struct MeChunk {
     int inUse;           /**< between GetMem and PutMem */
     int growthCount;     /**< how many times the block grew */
     const char *name;    /**< for messages, e.g. "Kea workspace" (string literal) */
+    int alignment;       /**< of the block, in bytes (a power of two) */
+    kMeChunkMode mode;
 } MeChunk;
 
 /** Default initial size of a chunk, in bytes. */
 #define ME_CHUNK_DEFAULT_SIZE 1024
 
-ME_API void MeChunkInit(MeChunk *chunk, const char *name);
+/** Karma's form: an empty chunk whose blocks are aligned to `alignment` bytes (a power of two; 0 or
+ *  less means 64). */
+ME_API void MeChunkInit(MeChunk *chunk, int alignment);
+/** An empty chunk with 64-byte blocks, called `name` in its messages (a string literal). */
+ME_API void MeChunkInitNamed(MeChunk *chunk, const char *name);
 ME_API void MeChunkTerm(MeChunk *chunk);
-/** A block of at least `bytes` bytes, 64-byte aligned (contents undefined), or NULL when memory ran
- *  out or the chunk is already in use. */
+/** Keep the block on MeChunkPutMem (default) or free it. */
+ME_API void MeChunkSetMode(MeChunk *chunk, kMeChunkMode mode);
+/** The alignment of the chunk's blocks, in bytes. */
+ME_API int MeChunkGetAlignment(const MeChunk *chunk);
+/** A block of at least `bytes` bytes, aligned as the chunk says (contents undefined), or NULL when
+ *  memory ran out or the chunk is already in use. */
 ME_API void *MeChunkGetMem(MeChunk *chunk, size_t bytes);
 ME_API void MeChunkPutMem(MeChunk *chunk, void *memory);
 /** Grow now to at least `bytes`, so that later requests up to that size allocate nothing. */

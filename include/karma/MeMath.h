@@ -28,52 +28,24 @@
 #define ME_MATH_H
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
-#include <karma/MePrecision.h>
+#include "MeAssert.h"
+#include "MeInline.h"
+#include "MeMessage.h"
+#include "MePrecision.h"
 
 ME_EXTERN_C_BEGIN
 
 /* ====================================================================================== scalars */
 
-/* The libm function of the configured precision: sqrtf for float, sqrt for double. */
-#if KARMA_DOUBLE
-#  define ME_LIBM_(fn) fn
-#else
-#  define ME_LIBM_(fn) fn##f
-#endif
+/* MeSqrt, MeRecip, MeSin... and the ME_IS_ZERO / ME_ARE_EQUAL macros live in MePrecision.h, as in
+ * Karma 1.2. */
 
-/** Square root. */
-static inline MeReal MeSqrt(MeReal x) { return ME_LIBM_(sqrt)(x); }
-/** 1 / x (no check for zero; see MeSafeRecip). */
-static inline MeReal MeRecip(MeReal x) { return ME_R(1.0) / x; }
-/** 1 / sqrt(x). */
-static inline MeReal MeRecipSqrt(MeReal x) { return ME_R(1.0) / ME_LIBM_(sqrt)(x); }
 /** 1 / x, or 0 when x is exactly 0. */
 static inline MeReal MeSafeRecip(MeReal x) { return x != ME_R(0.0) ? ME_R(1.0) / x : ME_R(0.0); }
-/** Sine of x radians. */
-static inline MeReal MeSin(MeReal x) { return ME_LIBM_(sin)(x); }
-/** Cosine of x radians. */
-static inline MeReal MeCos(MeReal x) { return ME_LIBM_(cos)(x); }
-/** Tangent of x radians. */
-static inline MeReal MeTan(MeReal x) { return ME_LIBM_(tan)(x); }
-/** Arc cosine in [0, pi]; the argument is clamped to [-1, 1] so rounding never yields NaN. */
-static inline MeReal MeAcos(MeReal x)
-{
-    return ME_LIBM_(acos)(x > ME_R(1.0) ? ME_R(1.0) : (x < ME_R(-1.0) ? ME_R(-1.0) : x));
-}
-/** Arc sine in [-pi/2, pi/2]; the argument is clamped to [-1, 1]. */
-static inline MeReal MeAsin(MeReal x)
-{
-    return ME_LIBM_(asin)(x > ME_R(1.0) ? ME_R(1.0) : (x < ME_R(-1.0) ? ME_R(-1.0) : x));
-}
-/** Angle of the point (x, y) in (-pi, pi]: atan2(y, x). */
-static inline MeReal MeAtan2(MeReal y, MeReal x) { return ME_LIBM_(atan2)(y, x); }
-/** Absolute value. */
-static inline MeReal MeFabs(MeReal x) { return ME_LIBM_(fabs)(x); }
-/** x squared. */
-static inline MeReal MeSqr(MeReal x) { return x * x; }
-/** METRUE when x is finite (neither NaN nor infinite). Uses isfinite(), valid without fast-math. */
-static inline MeBool MeRealIsValid(MeReal x) { return isfinite(x) ? METRUE : MEFALSE; }
 /** Exchange *a and *b. */
 static inline void MeRealSwap(MeReal *a, MeReal *b)
 {
@@ -93,24 +65,9 @@ static inline void MeRealSwap(MeReal *a, MeReal *b)
 /** a clamped to [lo, hi]. */
 #define MeCLAMP(a, lo, hi) (MeMAX(MeMIN((a), (hi)), (lo)))
 
-/** |x| < e. */
-#define ME_IS_ZERO_TOL(x, e) (MeFabs((x)) < (e))
-/** |x| < ME_SMALL_EPSILON. */
-#define ME_IS_ZERO(x) ME_IS_ZERO_TOL((x), ME_SMALL_EPSILON)
-/** x equals y to relative tolerance e (absolute tolerance e when y is near zero). */
-#define ME_ARE_EQUAL_TOL(x, y, e)                                                                    \
-    (ME_IS_ZERO_TOL((y), (e)) ? ME_IS_ZERO_TOL((x), (e)) : MeFabs(((x) - (y)) / (y)) < (e))
-/** ME_ARE_EQUAL_TOL with ME_SMALL_EPSILON. */
-#define ME_ARE_EQUAL(x, y) ME_ARE_EQUAL_TOL((x), (y), ME_SMALL_EPSILON)
-/** Every element of the 3-vector x is within e of zero. */
-#define ME_IS_ZERO_3VEC_TOL(x, e) (ME_IS_ZERO_TOL((x)[0], (e)) && ME_IS_ZERO_TOL((x)[1], (e)) && ME_IS_ZERO_TOL((x)[2], (e)))
-/** The 3-vectors x and y are element-wise ME_ARE_EQUAL_TOL. */
-#define ME_ARE_EQUAL_3VEC_TOL(x, y, e)                                                               \
-    (ME_ARE_EQUAL_TOL((x)[0], (y)[0], (e)) && ME_ARE_EQUAL_TOL((x)[1], (y)[1], (e)) &&                \
-     ME_ARE_EQUAL_TOL((x)[2], (y)[2], (e)))
-
 /** Seed the library's own pseudo-random generator (used by MeRealRandomInRange). The generator is
- * deterministic and independent of rand(); its state is global (not thread-safe). Default seed 0. */
+ * deterministic and independent of rand(); its state is global and safe to draw from on several
+ * threads (each number goes to one caller). Default seed 0. */
 ME_API void MeRealRandomSeed(MeU32 seed);
 /** Pseudo-random MeReal uniformly distributed in [start, end), from the generator seeded by
  * MeRealRandomSeed: the same seed gives the same sequence on every platform. */
@@ -471,11 +428,20 @@ static inline MeReal MeMatrix3Trace(MeMatrix3 m) { return m[0][0] + m[1][1] + m[
 static inline MeReal MeMatrix3Determinant(MeMatrix3 m) { return MeVector3ScalarTripleProduct(m[0], m[1], m[2]); }
 /** S = the cross-product matrix of v: MeMatrix3MultiplyVector(out, S, u) gives out = v x u.
  * (In row-vector storage S[0] = (0, v2, -v1), S[1] = (-v2, 0, v0), S[2] = (v1, -v0, 0).) */
-static inline void MeMatrix3CrossFromVector(MeMatrix3 S, const MeVector3 v)
+static inline void MeMatrix3MakeCrossProduct(MeMatrix3 S, const MeVector3 v)
 {
     MeVector3Set(S[0], ME_R(0.0), v[2], -v[1]);
     MeVector3Set(S[1], -v[2], ME_R(0.0), v[0]);
     MeVector3Set(S[2], v[1], -v[0], ME_R(0.0));
+}
+/** Karma's form: the rows A0, A1, A2 of the cross-product matrix of a (as MeMatrix3MakeCrossProduct),
+ * each scaled by factor. */
+static inline void MeMatrix3CrossFromVector(MeVector3 A0, MeVector3 A1, MeVector3 A2, const MeVector3 a,
+                                            MeReal factor)
+{
+    MeVector3Set(A0, ME_R(0.0), a[2] * factor, -a[1] * factor);
+    MeVector3Set(A1, -a[2] * factor, ME_R(0.0), a[0] * factor);
+    MeVector3Set(A2, a[1] * factor, -a[0] * factor, ME_R(0.0));
 }
 /** METRUE when m is a multiple of the identity (exact comparison, as Karma). */
 static inline MeBool MeMatrix3IsIsotropic(MeMatrix3 m)
@@ -775,6 +741,71 @@ ME_API void MeQuaternionSlerp(MeVector4 q, const MeVector4 from, const MeVector4
 /** axis, return value = the unit axis and the angle in [0, pi] of the rotation q (the sign of q is
  * chosen so that the angle is at most pi). The identity gives axis (1, 0, 0) and angle 0. */
 ME_API MeReal MeQuaternionGetAngleAxis(MeVector3 axis, const MeVector4 q);
+
+/* ============================================================== general matrices and indexing */
+
+/** Least multiple of 4 <= n, and the least multiple of 4, 12, 16, 64 or c that is >= n (n >= 0). */
+#define MeMathFLOOR4(n) ((n) - (n) % 4)
+#define MeMathCEILN(c, n) (((n) % (c)) == 0 ? (n) : (n) - (n) % (c) + (c))
+#define MeMathCEIL4(n) MeMathCEILN(4, n)
+#define MeMathCEIL12(n) MeMathCEILN(12, n)
+#define MeMathCEIL16(n) MeMathCEILN(16, n)
+#define MeMathCEIL64(n) MeMathCEILN(64, n)
+
+/** A (n x m) = the transpose of B (m x n). Matrices here are dense column-major arrays, as Karma's:
+ * element (i, j) of a p-row matrix is at [i + j * p]. A must not alias B. */
+ME_API void MeMatrixTranspose(MeReal *A, int n, int m, const MeReal *B);
+/** A (p x r) = B (p x q) * C (q x r), column-major; A must not alias B or C. */
+ME_API void MeMatrixMultiply(MeReal *A, int p, int q, int r, const MeReal *B, const MeReal *C);
+/** A (p x r) = transpose(B) * C, where B is q x p and C is q x r, column-major. */
+ME_API void MeMatrixMultiplyT1(MeReal *A, int p, int q, int r, const MeReal *B, const MeReal *C);
+/** Print the n x m column-major matrix A, one row a line, each element with the printf format
+ * (NULL: "%10.4f "), to file or to stdout. */
+ME_API void MeMatrixFPrint(FILE *file, const MeReal *A, int n, int m, const char *format);
+ME_API void MeMatrixPrint(const MeReal *A, int n, int m, const char *format);
+/** Exchange columns col1 and col2 (0..2) of a. */
+ME_API void MeMatrix3SwapColumns(MeMatrix3 a, unsigned int col1, unsigned int col2);
+/** METRUE when the first `elements` entries of v are all exactly zero. */
+ME_API MeBool MeRealArrayIsZero(MeReal *v, int elements);
+
+/** Packed triangular storage of an inNCols x inNCols matrix, row by row: the upper triangle with
+ * its diagonal (UpperDiagonal) or without it (SuperDiagonal). Index of (inRow, inCol), which must be
+ * in the stored triangle; the Sym forms accept either triangle of a symmetric matrix. Size = the
+ * number of stored elements. */
+ME_API int MeUpperDiagonalIndex(int inRow, int inCol, int inNCols);
+ME_API int MeUpperDiagonalSize(int inNCols);
+ME_API int MeSymUpperDiagonalIndex(int inRow, int inCol, int inNCols);
+ME_API int MeSuperDiagonalIndex(int inRow, int inCol, int inNCols);
+ME_API int MeSuperDiagonalSize(int inNCols);
+ME_API int MeSymSuperDiagonalIndex(int inRow, int inCol, int inNCols);
+
+/** Index (0..2) of the smallest of a[0..2] (the first one on ties). */
+static inline MeI32 MinIndex(const MeReal a[3])
+{
+    MeI32 k = a[1] < a[0] ? 1 : 0;
+    return a[2] < a[k] ? 2 : k;
+}
+/** index = the permutation that sorts a ascending: a[index[0]] <= a[index[1]] <= a[index[2]]
+ * (stable). */
+static inline void Sort3(MeI32 index[3], const MeReal a[3])
+{
+    MeI32 i0 = 0, i1 = 1, i2 = 2, t;
+    if (a[i1] < a[i0]) { t = i0; i0 = i1; i1 = t; }
+    if (a[i2] < a[i1]) { t = i1; i1 = i2; i2 = t; }
+    if (a[i1] < a[i0]) { t = i0; i0 = i1; i1 = t; }
+    index[0] = i0;
+    index[1] = i1;
+    index[2] = i2;
+}
+/** The next and the previous integer modulo 2, 3, 4 or N, for i in 0..N-1. */
+static inline int NextMod2(int i) { return i ^ 1; }
+static inline int NextMod3(int i) { return i == 2 ? 0 : i + 1; }
+static inline int NextMod4(int i) { return (i + 1) & 3; }
+static inline int NextModN(int i, int N) { return i + 1 == N ? 0 : i + 1; }
+static inline int PrevMod2(int i) { return i ^ 1; }
+static inline int PrevMod3(int i) { return i == 0 ? 2 : i - 1; }
+static inline int PrevMod4(int i) { return (i - 1) & 3; }
+static inline int PrevModN(int i, int N) { return i == 0 ? N - 1 : i - 1; }
 
 ME_EXTERN_C_END
 

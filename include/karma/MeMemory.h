@@ -1,35 +1,78 @@
 /* MeMemory.h -- the replaceable memory API through which Karma allocates everything.
  *
+ * MeMemoryAPI is Karma 1.2's global table of allocation functions. Every allocation the library
+ * makes calls through it at that moment, so a program replaces the allocator by assigning its
+ * fields (or the whole struct, or calling MeMemorySetAPI) *before any other Karma call*, and may
+ * call it itself: `p = MeMemoryAPI.create(n); MeMemoryAPI.destroy(p);`. Blocks must be freed by the
+ * API that allocated them. Replacing it is not thread-safe: do it before starting threads.
+ *
  * Karma allocates its pools when objects are created (worlds, spaces, bridges) and otherwise only
- * grows scratch chunks (MeChunk), which it reports. Replace the API with MeMemorySetAPI *before any
- * other Karma call*; blocks must be freed by the API that allocated them. */
+ * grows scratch chunks (MeChunk), which it reports. */
 #ifndef ME_MEMORY_H
 #define ME_MEMORY_H
 
 #include <stddef.h>
+#include <stdlib.h>
 
+#include "MeAssert.h"
+#include "MeCall.h"
 #include "MePrecision.h"
+
+/* Stack allocation (freed on return from the calling function; MeMemoryFREEA does nothing). */
+#if defined(__GNUC__) || defined(__clang__)
+#  define MeMemoryALLOCA(n) (__builtin_alloca(n))
+#  define MeMemoryFREEA(b) ((void)0)
+#elif defined(_MSC_VER)
+#  include <malloc.h>
+#  define MeMemoryALLOCA(n) (_alloca(n))
+#  define MeMemoryFREEA(b) ((void)0)
+#else
+#  define MeMemoryALLOCA(n) (MeMemoryAPI.create(n))
+#  define MeMemoryFREEA(b) (MeMemoryAPI.destroy(b))
+#endif
+
+/** Assert (under _MECHECK) that n is a multiple of 16. */
+#define MeMemoryQUADALIGNED(n) MEASSERT((((MeUintPtr)(n)) % 16) == 0)
+/** Address a rounded up to a multiple of 16 (quad-word) or of 64 bytes. */
+#define MeMemoryQUADALIGN(a) ((void *)((((MeUintPtr)(void *)(a)) + 15) & ~(MeUintPtr)15))
+#define MeMemory64ALIGN(a) ((void *)((((MeUintPtr)(void *)(a)) + 63) & ~(MeUintPtr)63))
+/** Declare `type *name` pointing to n 16-byte-aligned elements on the stack (a declaration: put it
+ *  with the others), and release it. */
+#define MeMemoryQUADALIGNEDALLOCA(name, type, n)                                                     \
+    void *name##Addr = MeMemoryALLOCA(((n) * sizeof(type)) + 16);                                    \
+    type *name = (type *)MeMemoryQUADALIGN(name##Addr);
+#define MeMemoryQUADALIGNEDFREEA(name) MeMemoryFREEA(name##Addr)
 
 ME_EXTERN_C_BEGIN
 
+typedef void *(MEAPI *MeMemoryFuncPtrCreate)(size_t bytes);
+typedef void *(MEAPI *MeMemoryFuncPtrCreateAligned)(size_t bytes, unsigned int alignment);
+typedef void(MEAPI *MeMemoryFuncPtrDestroy)(void *const block);
+typedef void *(MEAPI *MeMemoryFuncPtrResize)(void *const block, size_t bytes);
+
 /** Function table of an allocator. All members are required. */
-typedef struct MeMemoryAPI {
-    void *(*create)(size_t bytes);                          /**< like malloc */
-    void *(*createZeroed)(size_t bytes);                    /**< like calloc(1, bytes) */
-    void *(*createAligned)(size_t bytes, size_t alignment); /**< alignment: a power of two */
-    void (*destroy)(void *block);                           /**< frees create/createZeroed blocks */
-    void (*destroyAligned)(void *block);                    /**< frees createAligned blocks */
-    void *(*resize)(void *block, size_t bytes);             /**< like realloc (create blocks only) */
-} MeMemoryAPI;
+typedef struct MeMemoryAPIStruct {
+    MeMemoryFuncPtrCreate create;               /**< like malloc */
+    MeMemoryFuncPtrCreate createZeroed;         /**< like calloc(1, bytes) */
+    MeMemoryFuncPtrCreateAligned createAligned; /**< alignment: a power of two */
+    MeMemoryFuncPtrDestroy destroy;             /**< frees create/createZeroed/resize blocks */
+    MeMemoryFuncPtrDestroy destroyAligned;      /**< frees createAligned blocks */
+    MeMemoryFuncPtrResize resize;               /**< like realloc (create blocks only) */
+} MeMemoryAPIStruct;
 
-/** Replace the allocator (NULL restores the default, built on malloc). Process-wide. */
-ME_API void MeMemorySetAPI(const MeMemoryAPI *api);
-/** The allocator in use. */
-ME_API const MeMemoryAPI *MeMemoryGetAPI(void);
+/** The allocator in use (Karma 1.2's global). */
+ME_API extern MeMemoryAPIStruct MeMemoryAPI;
+
+/** Replace the whole allocator (NULL restores the default, built on malloc); a table with a NULL
+ *  member is refused with ME_ERR_NULL_ARGUMENT. The same as assigning MeMemoryAPI, checked. */
+ME_API void MeMemorySetAPI(const MeMemoryAPIStruct *api);
+/** The allocator in use (&MeMemoryAPI). */
+ME_API const MeMemoryAPIStruct *MeMemoryGetAPI(void);
 /** The default allocator, for chaining. */
-ME_API const MeMemoryAPI *MeMemoryGetDefaultAPI(void);
+ME_API const MeMemoryAPIStruct *MeMemoryGetDefaultAPI(void);
 
-/* Allocation through the current API; these also count blocks and bytes. */
+/* Allocation through MeMemoryAPI that also counts blocks (thread-safe counters) and reports
+ * ME_ERR_OUT_OF_MEMORY; the library allocates only through these. */
 ME_API void *MeMemoryCreate(size_t bytes);
 ME_API void *MeMemoryCreateZeroed(size_t bytes);
 ME_API void *MeMemoryCreateAligned(size_t bytes, size_t alignment);

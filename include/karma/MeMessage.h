@@ -7,13 +7,19 @@
  * the call changes nothing. Only ME_LEVEL_FATAL (an internal inconsistency) aborts by default, and
  * a handler may replace even that (for instance with longjmp).
  *
- * Karma's printf-style entry points (MeFatalError, MeWarning, MeInfo, MeDebug) are kept for
- * applications; their messages arrive with code ME_ERR_USER_MESSAGE. */
+ * Karma 1.2's printf-style entry points (MeFatalError, MeWarning, MeInfo, MeDebug, MeLog) are kept
+ * for applications, with 1.2's per-kind handler and output hooks (MeSetInfoHandler, MeSetInfoShow...)
+ * mapped onto the one handler: MeInfo calls MeInfoHandler, whose default (MeHandlerInfo) formats the
+ * text and reports it with code ME_ERR_USER_MESSAGE; the default message handler writes every
+ * message through the output function of its level (MeInfoShow, MeWarningShow...). Handlers, output
+ * functions and levels are process-wide and are set before threads start (as in 1.2); reporting and
+ * the counters are thread-safe. */
 #ifndef ME_MESSAGE_H
 #define ME_MESSAGE_H
 
 #include <stdarg.h>
 
+#include "MeCall.h"
 #include "MeErrorCodes.h"
 #include "MePrecision.h"
 
@@ -75,11 +81,85 @@ ME_API void MeMessageResetCounts(void);
 /** The code of the most recent message at warning level or above (ME_ERR_NONE if none). */
 ME_API MeErrorCode MeMessageGetLastCode(void);
 
-/* Karma's printf-style functions. `level` is Karma's verbosity number, passed through in the text. */
-ME_API void MeFatalError(int level, const char *format, ...);
-ME_API void MeWarning(int level, const char *format, ...);
-ME_API void MeInfo(int level, const char *format, ...);
-ME_API void MeDebug(int level, const char *format, ...);
+/* ------------------------------------------------------------- Karma 1.2's printf-style messages */
+
+/** Longest text of one message, in characters (longer texts are cut). */
+#define MeMAXMESSAGE 5000
+
+/** Verbosity cut-offs of the default kind handlers: MeInfo(level, ...) with level > MeInfoLevel is
+ *  dropped (fatal errors always pass). Default: INT_MAX (everything passes). */
+ME_API extern int MeInfoLevel;
+ME_API extern int MeLogLevel;
+ME_API extern int MeWarningLevel;
+ME_API extern int MeFatalErrorLevel;
+ME_API extern int MeDebugLevel;
+
+/** An output function: writes one finished message (no trailing newline in `string`). */
+typedef void(MEAPI *MeShow)(const int level, const char *const string);
+/** The output function of each kind, used by the default message handler (warnings and fatal errors:
+ *  MeShowStderr; the others: MeShowStdout). Assign directly or through MeSet...Show. */
+ME_API extern MeShow MeInfoShow;
+ME_API extern MeShow MeLogShow;
+ME_API extern MeShow MeWarningShow;
+ME_API extern MeShow MeFatalErrorShow;
+ME_API extern MeShow MeDebugShow;
+
+/** Write string and a newline to stdout / stderr. */
+ME_API void MEAPI MeShowStdout(const int level, const char *const string);
+ME_API void MEAPI MeShowStderr(const int level, const char *const string);
+
+/** A kind handler: receives MeInfo's (or MeWarning's...) level, format and arguments. */
+typedef void(MEAPI *MeHandler)(const int level, const char *const format, va_list ap);
+/** The handler each kind of message goes to (defaults: MeHandlerInfo...). */
+ME_API extern MeHandler MeInfoHandler;
+ME_API extern MeHandler MeLogHandler;
+ME_API extern MeHandler MeWarningHandler;
+ME_API extern MeHandler MeFatalErrorHandler;
+ME_API extern MeHandler MeDebugHandler;
+
+/** The default kind handlers: drop the message when level exceeds the kind's cut-off, else format it
+ *  and report it with ME_ERR_USER_MESSAGE at the kind's level (log messages at info level). */
+ME_API void MEAPI MeHandlerInfo(const int level, const char *const format, va_list ap);
+ME_API void MEAPI MeHandlerLog(const int level, const char *const format, va_list ap);
+ME_API void MEAPI MeHandlerWarning(const int level, const char *const format, va_list ap);
+ME_API void MEAPI MeHandlerFatalError(const int level, const char *const format, va_list ap);
+ME_API void MEAPI MeHandlerDebug(const int level, const char *const format, va_list ap);
+
+/** Replace a kind's output function or handler (NULL restores the default); returns the previous. */
+ME_API MeShow MEAPI MeSetInfoShow(MeShow n);
+ME_API MeShow MEAPI MeSetLogShow(MeShow n);
+ME_API MeShow MEAPI MeSetWarningShow(MeShow n);
+ME_API MeShow MEAPI MeSetFatalErrorShow(MeShow n);
+ME_API MeShow MEAPI MeSetDebugShow(MeShow n);
+ME_API MeHandler MEAPI MeSetInfoHandler(MeHandler n);
+ME_API MeHandler MEAPI MeSetLogHandler(MeHandler n);
+ME_API MeHandler MEAPI MeSetWarningHandler(MeHandler n);
+ME_API MeHandler MEAPI MeSetFatalErrorHandler(MeHandler n);
+ME_API MeHandler MEAPI MeSetDebugHandler(MeHandler n);
+
+/* Karma's printf-style functions: each calls its kind's handler. `level` is the verbosity number. */
+ME_API void MEAPI MeInfo(const int level, const char *const format, ...);
+ME_API void MEAPI MeLog(const int level, const char *const format, ...);
+ME_API void MEAPI MeWarning(const int level, const char *const format, ...);
+ME_API void MEAPI MeFatalError(const int level, const char *const format, ...);
+ME_API void MEAPI MeDebug(const int level, const char *const format, ...);
+
+/** The file name part of path (a pointer into it). */
+ME_API char *MEAPI MeShortenPath(char *path);
+
+/** ME_REPORT(statement): run a reporting statement, prefixed by an information line giving the
+ *  source place, in checking builds (_MECHECK defined); nothing otherwise. */
+#ifdef _MECHECK
+#  define ME_REPORT(x)                                                                               \
+      do {                                                                                           \
+          MeInfo(0, "(%s line %d):", __FILE__, __LINE__);                                            \
+          x;                                                                                         \
+      } while (0)
+#else
+#  define ME_REPORT(x)                                                                               \
+      do {                                                                                           \
+      } while (0)
+#endif
 
 /** Report a message with a code. Used by the library (through macros that add the function and
  *  place) and available to extensions such as user geometry types. `function` names the API call. */

@@ -14,7 +14,12 @@
 
 ME_EXTERN_C_BEGIN
 
+/** What kind of pool a MePool is (Karma 1.2's names): MePoolInit makes MePoolFIXED pools;
+ *  MePoolMallocAPI.init makes MePoolMALLOC ones, whose structures are allocated one by one. */
+enum MePoolType { MePoolNULL, MePoolFIXED, MePoolMALLOC };
+
 typedef struct MePool {
+    enum MePoolType type;
     unsigned char *memory; /**< capacity * stride bytes, aligned */
     size_t stride;         /**< bytes between slots (structure size rounded up to the alignment) */
     int capacity;          /**< number of slots, fixed at init */
@@ -24,6 +29,7 @@ typedef struct MePool {
     int *freeStack;        /**< indices of free slots; top is reused first */
     int freeCount;
     const char *sizeName;  /**< the creation parameter that sets `capacity`, for "pool full" messages */
+    size_t alignment;      /**< of each structure (MePoolMALLOC pools) */
 } MePool;
 
 /** Make a pool of `poolSize` structures of `structSize` bytes aligned to `alignment` (power of two;
@@ -51,6 +57,28 @@ ME_API void *MePoolSlot(const MePool *pool, int index);
 /** Whether slot `index` is in use, and its current generation. */
 ME_API MeBool MePoolSlotIsLive(const MePool *pool, int index);
 ME_API MeU32 MePoolSlotGeneration(const MePool *pool, int index);
+
+/* ------------------------------------------------------------------ Karma 1.2's pool tables */
+
+/** A pool implementation as a table of functions. poolSize and structSize count structures and
+ *  bytes; alignment is a power of two or 0 (natural). getStruct returns a zeroed structure or NULL
+ *  when poolSize are in use. */
+struct MePoolAPI {
+    void(MEAPI *init)(MePool *pool, int poolSize, int structSize, int alignment);
+    void(MEAPI *destroy)(MePool *pool);
+    void(MEAPI *deset)(MePool *pool);
+    void *(MEAPI *getStruct)(MePool *pool);
+    void(MEAPI *putStruct)(MePool *pool, void *s);
+    int(MEAPI *getUsed)(MePool *pool);
+    int(MEAPI *getUnused)(MePool *pool);
+};
+
+/** Fixed pools: all memory at init (the MePool* functions above). */
+ME_API extern struct MePoolAPI MePoolFixedAPI;
+/** Malloc pools: each structure from MeMemoryAPI when it is taken, freed when it is put back. */
+ME_API extern struct MePoolAPI MePoolMallocAPI;
+/** Any pool: init makes a fixed pool; the other members act on either kind. */
+ME_API extern struct MePoolAPI MePoolAPI;
 
 ME_EXTERN_C_END
 

@@ -1,10 +1,12 @@
 /* framework.c -- McdInit / McdTerm, the geometry type table and the interaction table. */
 #include <string.h>
 
+#include <karma/McdInteraction.h>
 #include <karma/MeMemory.h>
 
 #include "../me/check.h"
 #include "../me/handle.h"
+
 #include "framework.h"
 #include "geometry/geometry.h"
 
@@ -13,17 +15,17 @@
 /* Default request: four contacts are enough to hold a box face on a plane. */
 #define DEFAULT_CONTACT_MAX_COUNT 4
 
-McdFramework *McdFrameworkFromID(McdFrameworkID id, const char *function)
+McdFrameworkData *McdFrameworkFromID(McdFrameworkID id, const char *function)
 {
     return MeHandleResolveOwner((uintptr_t)id, ME_HANDLE_FRAMEWORK, function, "fw");
 }
 
 #define FW_OR_RETURN(fw, id, ret)                                                                    \
-    McdFramework *fw = McdFrameworkFromID((id), __func__);                                           \
+    McdFrameworkData *fw = McdFrameworkFromID((id), __func__);                                           \
     if (!fw)                                                                                         \
     return ret
 
-static void installBuiltInTypes(McdFramework *fw)
+static void installBuiltInTypes(McdFrameworkData *fw)
 {
     fw->types[kMcdGeometryTypeNull] = McdNullTypeDesc;
     fw->types[kMcdGeometryTypeSphere] = McdSphereTypeDesc;
@@ -36,8 +38,9 @@ static void installBuiltInTypes(McdFramework *fw)
     fw->typeCount = kMcdGeometryBuiltInTypes;
 }
 
-static void freeFramework(McdFramework *fw)
+static void freeFramework(McdFrameworkData *fw)
 {
+    MeMemoryDestroy(fw->lineSegFns);
     MePoolDestroy(&fw->geometryPool);
     MePoolDestroy(&fw->modelPool);
     MeMemoryDestroy(fw->types);
@@ -60,7 +63,7 @@ McdFrameworkID McdInit(int geoTypeMaxCount, int modelCount, int instanceCount, M
                   geoTypeMaxCount, modelCount, (long)ME_HANDLE_MAX_INDEX, instanceCount);
         return NULL;
     }
-    McdFramework *fw = MeMemoryCreateZeroed(sizeof *fw);
+    McdFrameworkData *fw = MeMemoryCreateZeroed(sizeof *fw);
     if (!fw)
         return NULL;
     fw->typeCapacity = kMcdGeometryBuiltInTypes + geoTypeMaxCount;
@@ -68,12 +71,13 @@ McdFrameworkID McdInit(int geoTypeMaxCount, int modelCount, int instanceCount, M
     fw->types = MeMemoryCreateZeroed(sizeof *fw->types * (size_t)fw->typeCapacity);
     fw->interactions = MeMemoryCreateZeroed(sizeof *fw->interactions * cells);
     fw->warnedPairs = MeMemoryCreateZeroed(cells);
+    fw->lineSegFns = MeMemoryCreateZeroed(sizeof *fw->lineSegFns * (size_t)fw->typeCapacity);
     /* Geometries come from a pool as large as the model pool: shapes are at most one per model
      * unless shared, and aggregate children count against instanceCount. */
     int geometryCount = modelCount + instanceCount;
-    if (!fw->types || !fw->interactions || !fw->warnedPairs ||
-        !MePoolInit(&fw->geometryPool, geometryCount, sizeof(McdGeometry), 16, "modelCount", 0) ||
-        !MePoolInit(&fw->modelPool, modelCount, sizeof(McdModel), 16, "modelCount", 0)) {
+    if (!fw->types || !fw->interactions || !fw->warnedPairs || !fw->lineSegFns ||
+        !MePoolInit(&fw->geometryPool, geometryCount, sizeof(McdGeometryData), 16, "modelCount", 0) ||
+        !MePoolInit(&fw->modelPool, modelCount, sizeof(McdModelData), 16, "modelCount", 0)) {
         freeFramework(fw);
         return NULL;
     }
@@ -90,6 +94,7 @@ McdFrameworkID McdInit(int geoTypeMaxCount, int modelCount, int instanceCount, M
     fw->defaultContactTolerance = DEFAULT_TOLERANCE_FRACTION * lengthScale;
     fw->defaultRequest.contactMaxCount = DEFAULT_CONTACT_MAX_COUNT;
     fw->defaultRequest.faceNormalsFirst = 0;
+    fw->defaultRequestPtr = &fw->defaultRequest;
     fw->nextPairId = 1;
     installBuiltInTypes(fw);
     return (McdFrameworkID)fw->id;
@@ -100,17 +105,20 @@ void McdTerm(McdFrameworkID id)
     FW_OR_RETURN(fw, id, ME_NOTHING);
     /* Term actions may still use the framework's objects: run them first, newest first. */
     while (fw->termActionCount > 0) {
-        McdTermAction a = fw->termActions[--fw->termActionCount];
-        a.fn(id, a.data);
+        McdTermActionEntry a = fw->termActions[--fw->termActionCount];
+        if (a.karmaFn)
+            a.karmaFn(id);
+        else
+            a.fn(id, a.data);
     }
     /* User geometries release their data; slots go in index order (deterministic). */
     for (int i = 0; i < fw->geometryPool.capacity; i++) {
         if (!MePoolSlotIsLive(&fw->geometryPool, i))
             continue;
-        McdGeometry *g = MePoolSlot(&fw->geometryPool, i);
+        McdGeometryData *g = MePoolSlot(&fw->geometryPool, i);
         const McdGeometryTypeDesc *t = McdGeometryTypeOf(g);
         if (t->destroy)
-            t->destroy(McdGeometryToID(g), McdGeometryData(g));
+            t->destroy(McdGeometryToID(g), McdGeometryShapeData(g));
     }
     MeHandleUnregisterOwner(fw->ownerSlot);
     freeFramework(fw);
@@ -118,18 +126,32 @@ void McdTerm(McdFrameworkID id)
 
 MeBool McdFrameworkIsValid(McdFrameworkID fw) { return MeHandleIsValid((uintptr_t)fw, ME_HANDLE_FRAMEWORK); }
 
-MeBool McdFrameworkRegisterTermAction(McdFrameworkID id, McdFrameworkTermActionFn fn, void *data)
+static MeBool addTermAction(McdFrameworkData *fw, McdFrameworkTermActionFn fn, McdTermAction karmaFn, void *data,
+                            const char *function)
+{
+    if (fw->termActionCount == MCD_TERM_ACTION_MAX) {
+        ME_REPORT_IN(function, ME_ERR_POOL_FULL, "a framework holds at most %d term actions", MCD_TERM_ACTION_MAX);
+        return MEFALSE;
+    }
+    McdTermActionEntry *e = &fw->termActions[fw->termActionCount++];
+    e->fn = fn;
+    e->karmaFn = karmaFn;
+    e->data = data;
+    return METRUE;
+}
+
+MeBool McdFrameworkAddTermAction(McdFrameworkID id, McdFrameworkTermActionFn fn, void *data)
 {
     FW_OR_RETURN(fw, id, MEFALSE);
     ME_CHECK_NOT_NULL(fn, MEFALSE);
-    if (fw->termActionCount == MCD_TERM_ACTION_MAX) {
-        ME_REPORT(ME_ERR_POOL_FULL, "a framework holds at most %d term actions", MCD_TERM_ACTION_MAX);
-        return MEFALSE;
-    }
-    fw->termActions[fw->termActionCount].fn = fn;
-    fw->termActions[fw->termActionCount].data = data;
-    fw->termActionCount++;
-    return METRUE;
+    return addTermAction(fw, fn, NULL, data, __func__);
+}
+
+void McdFrameworkRegisterTermAction(McdFrameworkID id, McdTermAction action)
+{
+    FW_OR_RETURN(fw, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(action, ME_NOTHING);
+    (void)addTermAction(fw, NULL, action, NULL, __func__);
 }
 
 MeReal McdFrameworkGetLengthScale(McdFrameworkID id)
@@ -165,7 +187,13 @@ MeReal McdFrameworkGetDefaultContactTolerance(McdFrameworkID id)
 McdRequest *McdFrameworkGetDefaultRequestPtr(McdFrameworkID id)
 {
     FW_OR_RETURN(fw, id, NULL);
-    return &fw->defaultRequest;
+    return fw->defaultRequestPtr;
+}
+
+void McdFrameworkSetDefaultRequestPtr(McdFrameworkID id, McdRequest *request)
+{
+    FW_OR_RETURN(fw, id, ME_NOTHING);
+    fw->defaultRequestPtr = request ? request : &fw->defaultRequest;
 }
 
 int McdFrameworkGetModelCount(McdFrameworkID id)
@@ -187,7 +215,7 @@ int McdFrameworkGetInstanceMaxCount(McdFrameworkID id)
 }
 
 /* ---- geometry types ------------------------------------------------------------------------ */
-int McdFrameworkRegisterGeometryType(McdFrameworkID id, const McdGeometryTypeDesc *desc)
+int McdFrameworkRegisterUserGeometryType(McdFrameworkID id, const McdGeometryTypeDesc *desc)
 {
     FW_OR_RETURN(fw, id, -1);
     ME_CHECK_NOT_NULL(desc, -1);
@@ -205,18 +233,130 @@ int McdFrameworkRegisterGeometryType(McdFrameworkID id, const McdGeometryTypeDes
     return fw->typeCount++;
 }
 
-int McdFrameworkGetGeometryTypeCount(McdFrameworkID id)
+MeI16 McdFrameworkGetRegisteredTypeCount(McdFrameworkID id)
 {
     FW_OR_RETURN(fw, id, 0);
-    return fw->typeCount;
+    return (MeI16)fw->typeCount;
 }
 
-const char *McdFrameworkGetGeometryTypeName(McdFrameworkID id, int type)
+static MeBool typeKnown(const McdFrameworkData *fw, int type)
+{
+    return type >= 0 && type < fw->typeCount && fw->types[type].typeName != NULL;
+}
+
+const char *McdFrameworkGetTypeName(McdFrameworkID id, int type)
 {
     FW_OR_RETURN(fw, id, NULL);
-    if (type < 0 || type >= fw->typeCount)
+    return typeKnown(fw, type) ? fw->types[type].typeName : NULL;
+}
+
+MeBool McdFrameworkTypeIsRegistered(McdFrameworkID id, int type)
+{
+    FW_OR_RETURN(fw, id, MEFALSE);
+    return typeKnown(fw, type);
+}
+
+MeBool McdFrameworkTypeIsValid(McdFrameworkID id, int type)
+{
+    FW_OR_RETURN(fw, id, MEFALSE);
+    return type >= 0 && type < fw->typeCapacity;
+}
+
+void McdFrameworkShowTypes(McdFrameworkID id)
+{
+    FW_OR_RETURN(fw, id, ME_NOTHING);
+    MeInfo(0, "Mcd geometry types registered: %d", fw->typeCount);
+    for (int t = 0; t < fw->typeCount; t++)
+        if (typeKnown(fw, t))
+            MeInfo(0, "   type %d: %s", t, fw->types[t].typeName);
+}
+
+void McdFrameworkPrintInteractionTable(McdFrameworkID id)
+{
+    FW_OR_RETURN(fw, id, ME_NOTHING);
+    MeInfo(0, "Mcd pair tests (x: a test exists, either way round):");
+    for (int a = 0; a < fw->typeCount; a++) {
+        if (!typeKnown(fw, a))
+            continue;
+        char row[256];
+        size_t n = 0;
+        for (int b = 0; b < fw->typeCount && n + 2 < sizeof row; b++)
+            if (typeKnown(fw, b))
+                row[n++] = McdFrameworkHasInteraction(fw, a, b) ? 'x' : '.';
+        row[n] = '\0';
+        MeInfo(0, "   %-14s %s", fw->types[a].typeName, row);
+    }
+}
+
+/* The cell of a type pair in the n x n tables, or -1 (reported) when a type is out of range. */
+static int pairCell(const McdFrameworkData *fw, int type1, int type2, const char *function)
+{
+    if (type1 < 0 || type2 < 0 || type1 >= fw->typeCapacity || type2 >= fw->typeCapacity) {
+        ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE, "geometry types (%d, %d) must be in [0, %d); call ignored", type1,
+                     type2, fw->typeCapacity);
+        return -1;
+    }
+    int lo = type1 < type2 ? type1 : type2, hi = type1 < type2 ? type2 : type1;
+    return lo * fw->typeCapacity + hi;
+}
+
+void McdFrameworkSetInteractionsWarned(McdFramework *id, int type1, int type2, int count)
+{
+    FW_OR_RETURN(fw, id, ME_NOTHING);
+    int cell = pairCell(fw, type1, type2, __func__);
+    if (cell >= 0)
+        fw->warnedPairs[cell] = count != 0;
+}
+
+int McdFrameworkGetInteractionsWarned(McdFramework *id, int type1, int type2)
+{
+    FW_OR_RETURN(fw, id, 0);
+    int cell = pairCell(fw, type1, type2, __func__);
+    return cell >= 0 ? fw->warnedPairs[cell] : 0;
+}
+
+void McdFrameworkSetLineSegInteraction(McdFramework *id, int type, McdLineSegIntersectFnPtr fn)
+{
+    FW_OR_RETURN(fw, id, ME_NOTHING);
+    if (!typeKnown(fw, type)) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "geometry type %d is not registered; call ignored", type);
+        return;
+    }
+    fw->lineSegFns[type] = fn;
+}
+
+/* The built-in segment test in Karma's function-pointer form. */
+static int lineSegBuiltIn(const McdModelID cm, MeReal *const inOrig, MeReal *const inDest,
+                          McdLineSegIntersectResult *outOverlap)
+{
+    return McdLineSegIntersect(cm, inOrig, inDest, outOverlap);
+}
+
+McdLineSegIntersectFnPtr McdFrameworkLineSegFn(const McdFrameworkData *fw, int type)
+{
+    if (!typeKnown(fw, type))
         return NULL;
-    return fw->types[type].typeName;
+    if (fw->lineSegFns[type])
+        return fw->lineSegFns[type];
+    return fw->types[type].lineSegIntersect ? lineSegBuiltIn : NULL;
+}
+
+McdLineSegIntersectFnPtr McdFrameworkGetLineSegInteraction(McdFramework *id, int type)
+{
+    FW_OR_RETURN(fw, id, NULL);
+    return McdFrameworkLineSegFn(fw, type);
+}
+
+void McdSetHelloCallback(McdFramework *id, McdHelloCallbackFnPtr fn)
+{
+    FW_OR_RETURN(fw, id, ME_NOTHING);
+    fw->helloCallback = fn;
+}
+
+McdHelloCallbackFnPtr McdGetHelloCallback(McdFramework *id)
+{
+    FW_OR_RETURN(fw, id, NULL);
+    return fw->helloCallback;
 }
 
 MeBool McdPrimitivesRegisterTypes(McdFrameworkID id)
@@ -236,12 +376,8 @@ MeBool McdPrimitivesRegisterInteractions(McdFrameworkID id)
 int McdPrimitivesGetTypeCount(void) { return 7; }
 
 /* ---- the interaction table ------------------------------------------------------------------- */
-static MeBool typeKnown(const McdFramework *fw, int type)
-{
-    return type >= 0 && type < fw->typeCount && fw->types[type].typeName != NULL;
-}
 
-MeBool McdFrameworkSetInteractionWithCache(McdFramework *fw, int type1, int type2, McdNearfieldFn fn,
+MeBool McdFrameworkSetInteractionWithCache(McdFrameworkData *fw, int type1, int type2, McdNearfieldFn fn,
                                            void (*releaseCache)(void *cache))
 {
     if (!typeKnown(fw, type1) || !typeKnown(fw, type2)) {
@@ -256,19 +392,19 @@ MeBool McdFrameworkSetInteractionWithCache(McdFramework *fw, int type1, int type
     return METRUE;
 }
 
-MeBool McdFrameworkSetInteraction(McdFramework *fw, int type1, int type2, McdNearfieldFn fn)
+MeBool McdFrameworkSetInteraction(McdFrameworkData *fw, int type1, int type2, McdNearfieldFn fn)
 {
     return McdFrameworkSetInteractionWithCache(fw, type1, type2, fn, NULL);
 }
 
 /* Calls an application's pair test: the entry is found from the two types, in the table's order. */
-static int userTrampoline(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+static int userTrampoline(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                           MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
     (void)cache;
-    const McdFramework *fw = g1->framework;
+    const McdFrameworkData *fw = g1->framework;
     McdUserIntersectFn fn = fw->interactions[g1->type * fw->typeCapacity + g2->type].userFn;
-    return fn(McdGeometryToID(g1), McdGeometryData(g1), tm1, McdGeometryToID(g2), McdGeometryData(g2), tm2,
+    return fn(McdGeometryToID(g1), McdGeometryShapeData(g1), tm1, McdGeometryToID(g2), McdGeometryShapeData(g2), tm2,
               tolerance, contacts, maxContacts);
 }
 
@@ -281,14 +417,14 @@ MeBool McdFrameworkSetUserInteraction(McdFrameworkID id, int type1, int type2, M
     return METRUE;
 }
 
-McdNearfieldFn McdFrameworkGetInteraction(const McdFramework *fw, int type1, int type2)
+McdNearfieldFn McdFrameworkGetInteraction(const McdFrameworkData *fw, int type1, int type2)
 {
     if (type1 < 0 || type2 < 0 || type1 >= fw->typeCount || type2 >= fw->typeCount)
         return NULL;
     return fw->interactions[type1 * fw->typeCapacity + type2].fn;
 }
 
-MeBool McdFrameworkHasInteraction(const McdFramework *fw, int type1, int type2)
+MeBool McdFrameworkHasInteraction(const McdFrameworkData *fw, int type1, int type2)
 {
     return McdFrameworkGetInteraction(fw, type1, type2) != NULL || McdFrameworkGetInteraction(fw, type2, type1) != NULL;
 }

@@ -20,10 +20,11 @@
 
 #define MCD_TERM_ACTION_MAX 16
 
-typedef struct McdTermAction {
-    McdFrameworkTermActionFn fn;
+typedef struct McdTermActionEntry {
+    McdFrameworkTermActionFn fn; /* our form (with data), or NULL */
+    McdTermAction karmaFn;       /* Karma's form (McdFrameworkRegisterTermAction), or NULL */
     void *data;
-} McdTermAction;
+} McdTermActionEntry;
 
 /** One entry of the interaction table: the test for (type1, type2) in that order. */
 typedef struct McdInteraction {
@@ -32,7 +33,7 @@ typedef struct McdInteraction {
     McdUserIntersectFn userFn;         /* an application's test, called through `fn` */
 } McdInteraction;
 
-typedef struct McdFramework {
+typedef struct McdFrameworkData {
     int ownerSlot;                 /* registry slot behind the McdFrameworkID */
     uintptr_t id;
     MePool geometryPool;
@@ -41,23 +42,26 @@ typedef struct McdFramework {
     MeReal lengthScale;
     MeReal defaultContactTolerance;
     McdRequest defaultRequest;
+    McdRequest *defaultRequestPtr; /* the request pairs use (&defaultRequest unless the user set one) */
+    McdHelloCallbackFnPtr helloCallback; /* McdSetHelloCallback, or NULL */
+    McdLineSegIntersectFnPtr *lineSegFns; /* typeCapacity entries: McdFrameworkSetLineSegInteraction */
     int typeCount;                 /* built-in + registered user types */
     int typeCapacity;              /* kMcdGeometryBuiltInTypes + geoTypeMaxCount */
     McdGeometryTypeDesc *types;    /* typeCapacity entries */
     McdInteraction *interactions;  /* typeCapacity^2: [type1 * typeCapacity + type2] */
     unsigned char *warnedPairs;    /* typeCapacity^2 flags: "no test" already reported */
-    McdTermAction termActions[MCD_TERM_ACTION_MAX];
+    McdTermActionEntry termActions[MCD_TERM_ACTION_MAX];
     int termActionCount;
     MeU32 nextPairId;              /* identities of pairs made by McdModelPairCreate */
-} McdFramework;
+} McdFrameworkData;
 
 /* ---- resolving IDs (report in the caller's name; NULL when invalid) ------------------------- */
-McdFramework *McdFrameworkFromID(McdFrameworkID id, const char *function);
-McdGeometry *McdGeometryFromID(McdGeometryID id, const char *function);
-McdModel *McdModelFromID(McdModelID id, const char *function);
-static inline McdGeometryID McdGeometryToID(const McdGeometry *g) { return (McdGeometryID)g->id; }
-static inline McdModelID McdModelToID(const McdModel *m) { return (McdModelID)m->id; }
-static inline McdFrameworkID McdFrameworkToID(const McdFramework *fw) { return (McdFrameworkID)fw->id; }
+McdFrameworkData *McdFrameworkFromID(McdFrameworkID id, const char *function);
+McdGeometryData *McdGeometryFromID(McdGeometryID id, const char *function);
+McdModelData *McdModelFromID(McdModelID id, const char *function);
+static inline McdGeometryID McdGeometryToID(const McdGeometryData *g) { return (McdGeometryID)g->id; }
+static inline McdModelID McdModelToID(const McdModelData *m) { return (McdModelID)m->id; }
+static inline McdFrameworkID McdFrameworkToID(const McdFrameworkData *fw) { return (McdFrameworkID)fw->id; }
 
 /** A contact tolerance must be finite and >= 0; reports in `function`'s name. */
 MeBool McdCheckTolerance(MeReal tolerance, const char *function);
@@ -65,47 +69,50 @@ MeBool McdCheckTolerance(MeReal tolerance, const char *function);
 /* ---- the interaction table ------------------------------------------------------------------ */
 /** Register `fn` as the test of (type1, type2) in that order (replacing any); NULL removes it.
  *  Types must be known to the framework; returns MEFALSE (reported) otherwise. */
-MeBool McdFrameworkSetInteraction(McdFramework *fw, int type1, int type2, McdNearfieldFn fn);
+MeBool McdFrameworkSetInteraction(McdFrameworkData *fw, int type1, int type2, McdNearfieldFn fn);
 /** As above, with a function that frees the pair cache the test allocates. */
-MeBool McdFrameworkSetInteractionWithCache(McdFramework *fw, int type1, int type2, McdNearfieldFn fn,
+MeBool McdFrameworkSetInteractionWithCache(McdFrameworkData *fw, int type1, int type2, McdNearfieldFn fn,
                                            void (*releaseCache)(void *cache));
 /** The test registered for (type1, type2) in exactly that order, or NULL. */
-McdNearfieldFn McdFrameworkGetInteraction(const McdFramework *fw, int type1, int type2);
+McdNearfieldFn McdFrameworkGetInteraction(const McdFrameworkData *fw, int type1, int type2);
 /** Whether a test exists for the pair either way round. */
-MeBool McdFrameworkHasInteraction(const McdFramework *fw, int type1, int type2);
+MeBool McdFrameworkHasInteraction(const McdFrameworkData *fw, int type1, int type2);
+/** The segment test of a type in Karma's form: the user's (McdFrameworkSetLineSegInteraction), the
+ *  built-in one, or NULL when the type has none. */
+McdLineSegIntersectFnPtr McdFrameworkLineSegFn(const McdFrameworkData *fw, int type);
 /** Register every primitive pair test (nearfield/register.c). */
-void McdNearfieldRegisterPrimitives(McdFramework *fw);
+void McdNearfieldRegisterPrimitives(McdFrameworkData *fw);
 
 /* ---- geometry protocol (dispatch through the type's McdGeometryTypeDesc) ------------------- */
-const McdGeometryTypeDesc *McdGeometryTypeOf(const McdGeometry *g);
+const McdGeometryTypeDesc *McdGeometryTypeOf(const McdGeometryData *g);
 /** The `data` argument the type's functions receive: the shape data (&g->u) or the user's pointer. */
-void *McdGeometryData(const McdGeometry *g);
+void *McdGeometryShapeData(const McdGeometryData *g);
 /** Support point in the local frame for a local direction. */
-void McdGeometrySupportLocal(const McdGeometry *g, const MeVector3 dir, MeVector3 point);
+void McdGeometrySupportLocal(const McdGeometryData *g, const MeVector3 dir, MeVector3 point);
 /** Support point in the world for a world direction, the geometry placed at tm. */
-void McdGeometrySupportWorld(const McdGeometry *g, MeMatrix4 tm, const MeVector3 dir, MeVector3 point);
-void McdGeometryAABBInternal(const McdGeometry *g, MeMatrix4 tm, MeVector3 minCorner, MeVector3 maxCorner);
+void McdGeometrySupportWorld(const McdGeometryData *g, MeMatrix4 tm, const MeVector3 dir, MeVector3 point);
+void McdGeometryAABBInternal(const McdGeometryData *g, MeMatrix4 tm, MeVector3 minCorner, MeVector3 maxCorner);
 /** Local segment test: first entry parameter t in [0,1] and local outward normal. */
-MeBool McdGeometryLineSegInternal(const McdGeometry *g, const MeVector3 p0, const MeVector3 p1, MeReal *t,
+MeBool McdGeometryLineSegInternal(const McdGeometryData *g, const MeVector3 p0, const MeVector3 p1, MeReal *t,
                                   MeVector3 normal);
 
 /* ---- models ----------------------------------------------------------------------------------- */
 /** The transform the model follows (the pointer given or its own). */
-MeMatrix4Ptr McdModelTransformInternal(McdModel *m);
-void McdModelUpdateInternal(McdModel *m);
+MeMatrix4Ptr McdModelTransformInternal(McdModelData *m);
+void McdModelUpdateInternal(McdModelData *m);
 /** Record the space a model is in (space NULL, index -1 when removed). */
-void McdModelSetSpaceInternal(McdModel *m, struct McdSpace *space, McdSpaceID spaceID, int index);
+void McdModelSetSpaceInternal(McdModelData *m, struct McdSpaceData *space, McdSpaceID spaceID, int index);
 /** Segment query against one model (world segment, model's last update); fills result->model too. */
-int McdModelLineSegIntersectInternal(const McdModel *m, const MeVector3 p0, const MeVector3 p1,
+int McdModelLineSegIntersectInternal(const McdModelData *m, const MeVector3 p0, const MeVector3 p1,
                                      McdLineSegIntersectResult *result);
 
 /* ---- pairs ------------------------------------------------------------------------------------ */
 /** McdHello / McdGoodbye on resolved models (the space calls these for its pairs). */
-void McdHelloInternal(McdModelPair *pair, McdModel *m1, McdModel *m2, const char *function);
-void McdGoodbyeInternal(McdModelPair *pair, McdModel *m1);
+void McdHelloInternal(McdModelPair *pair, McdModelData *m1, McdModelData *m2, const char *function);
+void McdGoodbyeInternal(McdModelPair *pair, McdModelData *m1);
 /** McdIntersect on the pair's resolved models (the bridge has them already); result not NULL;
  *  reports in `function`, the caller's public entry point. */
-int McdIntersectModels(McdModelPair *pair, McdModel *m1, McdModel *m2, McdIntersectResult *result,
+int McdIntersectModels(McdModelPair *pair, McdModelData *m1, McdModelData *m2, McdIntersectResult *result,
                        const char *function);
 
 #endif /* MCD_FRAMEWORK_H */

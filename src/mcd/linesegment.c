@@ -7,9 +7,14 @@
 #include "../me/check.h"
 #include "framework.h"
 
-int McdModelLineSegIntersectInternal(const McdModel *m, const MeVector3 p0, const MeVector3 p1,
+int McdModelLineSegIntersectInternal(const McdModelData *m, const MeVector3 p0, const MeVector3 p1,
                                      McdLineSegIntersectResult *result)
 {
+    McdLineSegIntersectFnPtr user = m->framework->lineSegFns[m->geometry->type];
+    if (user) { /* the application's test for this type (McdFrameworkSetLineSegInteraction) */
+        MeVector3 a = {p0[0], p0[1], p0[2]}, b = {p1[0], p1[1], p1[2]};
+        return user(McdModelToID(m), a, b, result) != 0;
+    }
     MeMatrix4Ptr tm = (MeMatrix4Ptr)m->worldTransform;
     MeVector3 a, b, n;
     MeReal t;
@@ -28,7 +33,7 @@ int McdModelLineSegIntersectInternal(const McdModel *m, const MeVector3 p0, cons
 
 int McdLineSegIntersect(McdModelID id, const MeVector3 p0, const MeVector3 p1, McdLineSegIntersectResult *result)
 {
-    McdModel *m = McdModelFromID(id, __func__);
+    McdModelData *m = McdModelFromID(id, __func__);
     if (!m)
         return 0;
     ME_CHECK_NOT_NULL(p0, 0);

@@ -13,8 +13,8 @@
 #include <karma/McdTypes.h>
 #include <karma/MeMath.h>
 
-struct McdFramework;
-struct McdSpace;
+struct McdFrameworkData;
+struct McdSpaceData;
 
 /** Per-type shape data. Only the fields of the geometry's own type are meaningful. */
 typedef struct McdSphereData { MeReal radius; } McdSphereData;
@@ -25,11 +25,12 @@ typedef struct McdSphylData { MeReal radius, halfHeight; } McdSphylData;       /
  * (0 for a pointed cone) at z = zUpper > zLower; the origin is the centre of mass. */
 typedef struct McdConeData { MeReal lowerRadius, upperRadius, zLower, zUpper; } McdConeData;
 
-typedef struct McdGeometry {
+typedef struct McdGeometryData {
     uintptr_t id;
-    struct McdFramework *framework;
+    struct McdFrameworkData *framework;
     int type;             /* McdGeometryType or a user type number */
     int refCount;         /* models and aggregates using it; destroy is refused while > 0 */
+    int userRefCount;     /* holds taken by McdGeometryIncrementReferenceCount; also refuse destroy */
     union {
         McdSphereData sphere;
         McdBoxData box;
@@ -38,12 +39,12 @@ typedef struct McdGeometry {
         McdConeData cone;
         void *user;       /* user-registered types */
     } u;
-} McdGeometry;
+} McdGeometryData;
 
-typedef struct McdModel {
+typedef struct McdModelData {
     uintptr_t id;
-    struct McdFramework *framework;
-    McdGeometry *geometry;         /* NULL until set */
+    struct McdFrameworkData *framework;
+    McdGeometryData *geometry;         /* NULL until set */
     MeReal (*transform)[4];        /* world TM pointer (shared with a body's by the bridge), or NULL */
     MeMatrix4 ownTransform;        /* used when no pointer was given */
     MeMatrix4 relativeTransform;   /* geometry relative to `transform` (identity by default) */
@@ -55,17 +56,26 @@ typedef struct McdModel {
     MeI32 sortKey;                 /* 0 ... 2^15 - 1; orders pairs deterministically */
     void *userData;
     void *body;                    /* MdtBodyID set by the bridge (Mcd never looks inside) */
-    struct McdSpace *space;        /* the space it is in, or NULL */
+    struct McdSpaceData *space;        /* the space it is in, or NULL */
     McdSpaceID spaceID;            /* its ID (McdModelGetSpace), NULL when in no space */
     int spaceIndex;                /* its slot in that space */
     MeBool frozen;
-} McdModel;
+    /* Karma's hooks and pointers (McdModel.h); none is followed by Mcd itself except as noted. */
+    MeReal (*relativePtr)[4];          /* McdModelSetRelativeTransformPtrs: read at each update, or NULL */
+    MeReal (*compoundPtr)[4];          /* receives the geometry-to-world transform at each update, or NULL */
+    MeReal *linearVelocity;            /* kept for safe time (later work) */
+    MeReal *angularVelocity;
+    int requestID;                     /* McduRequestTable's class of the model */
+    McdModelUpdateFnPtr updateFn;      /* called first by each update */
+    McdModelIntersectFnPtr intersectFn; /* called by McdIntersect after the contacts are made */
+    MeBool inUpdateFn;                 /* updateFn is running (an update it calls does not call it again) */
+} McdModelData;
 
 /** A pair test: contacts (world frame, normal from g2 towards g1, separation < 0 when overlapping) for g1
  *  at world transform tm1 and g2 at tm2, reporting only contacts with separation <= tolerance (the
  *  sum of the models' contact tolerances). Writes at most maxContacts; returns the count written.
  *  `cache` is the pair's McdModelPair.cache slot (may be NULL). */
-typedef int (*McdNearfieldFn)(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+typedef int (*McdNearfieldFn)(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                               MeReal tolerance, McdContact *contacts, int maxContacts, void **cache);
 
 #endif /* MCD_INTERNAL_H */

@@ -1,26 +1,28 @@
 /* model.c -- models: a geometry placed in the world (see McdModel.h). */
 #include <string.h>
 
+#include <karma/McdGeometry.h>
 #include <karma/McdModel.h>
 
 #include "../me/check.h"
 #include "../me/handle.h"
 #include "framework.h"
+#include "space.h"
 
 /* A relative transform must be rigid to this tolerance. */
 #define TM_TOLERANCE ME_R(1e-3)
 
-McdModel *McdModelFromID(McdModelID id, const char *function)
+McdModelData *McdModelFromID(McdModelID id, const char *function)
 {
     return MeHandleResolve((uintptr_t)id, ME_HANDLE_MODEL, function, "m", NULL);
 }
 
 #define MODEL_OR_RETURN(m, id, ret)                                                                  \
-    McdModel *m = McdModelFromID((id), __func__);                                                    \
+    McdModelData *m = McdModelFromID((id), __func__);                                                    \
     if (!m)                                                                                          \
     return ret
 
-static void setDefaults(McdModel *m)
+static void setDefaults(McdModelData *m)
 {
     m->transform = NULL;
     MeMatrix4TMMakeIdentity(m->ownTransform);
@@ -32,13 +34,25 @@ static void setDefaults(McdModel *m)
     m->sortKey = 0;
     m->userData = NULL;
     m->body = NULL;
+    m->relativePtr = NULL;
+    m->compoundPtr = NULL;
+    m->linearVelocity = NULL;
+    m->angularVelocity = NULL;
+    m->requestID = McdModelGetDefaultRequestID();
+    m->updateFn = NULL;
+    m->intersectFn = NULL;
+    m->inUpdateFn = MEFALSE;
 }
 
-MeMatrix4Ptr McdModelTransformInternal(McdModel *m) { return m->transform ? m->transform : m->ownTransform; }
+MeMatrix4Ptr McdModelTransformInternal(McdModelData *m) { return m->transform ? m->transform : m->ownTransform; }
 
-static void compound(McdModel *m)
+static void compound(McdModelData *m)
 {
     MeMatrix4Ptr tm = McdModelTransformInternal(m);
+    if (m->relativePtr) { /* followed, as Karma's relative-transform pointers are */
+        MeMatrix4Copy(m->relativeTransform, m->relativePtr);
+        m->hasRelative = METRUE;
+    }
     if (m->hasRelative)
         MeMatrix4TMCompound(m->worldTransform, m->relativeTransform, tm);
     else
@@ -55,8 +69,13 @@ static MeBool transformIsFinite(MeMatrix4 tm)
 }
 
 /* Update in the name of `function`: a non-finite transform is reported and the last AABB kept. */
-static void update(McdModel *m, const char *function)
+static void update(McdModelData *m, const char *function)
 {
+    if (m->updateFn && !m->inUpdateFn) { /* Karma's update callback runs first */
+        m->inUpdateFn = METRUE;
+        m->updateFn((McdModel *)McdModelToID(m));
+        m->inUpdateFn = MEFALSE;
+    }
     MeMatrix4 previous;
     MeMatrix4Copy(previous, m->worldTransform);
     compound(m);
@@ -66,6 +85,8 @@ static void update(McdModel *m, const char *function)
         MeMatrix4Copy(m->worldTransform, previous);
         return;
     }
+    if (m->compoundPtr)
+        MeMatrix4Copy(m->compoundPtr, m->worldTransform);
     McdGeometryAABBInternal(m->geometry, m->worldTransform, m->aabbMin, m->aabbMax);
     for (int j = 0; j < 3; j++) {
         m->aabbMin[j] -= m->contactTolerance;
@@ -73,9 +94,9 @@ static void update(McdModel *m, const char *function)
     }
 }
 
-void McdModelUpdateInternal(McdModel *m) { update(m, "McdSpaceUpdateAll"); }
+void McdModelUpdateInternal(McdModelData *m) { update(m, "McdSpaceUpdateAll"); }
 
-void McdModelSetSpaceInternal(McdModel *m, struct McdSpace *space, McdSpaceID spaceID, int index)
+void McdModelSetSpaceInternal(McdModelData *m, struct McdSpaceData *space, McdSpaceID spaceID, int index)
 {
     m->space = space;
     m->spaceID = spaceID;
@@ -83,9 +104,9 @@ void McdModelSetSpaceInternal(McdModel *m, struct McdSpace *space, McdSpaceID sp
 }
 
 /* Take a geometry of the model's framework (reported otherwise). */
-static McdGeometry *geometryFor(McdFramework *fw, McdGeometryID id, const char *function)
+static McdGeometryData *geometryFor(McdFrameworkData *fw, McdGeometryID id, const char *function)
 {
-    McdGeometry *g = McdGeometryFromID(id, function);
+    McdGeometryData *g = McdGeometryFromID(id, function);
     if (g && fw && g->framework != fw) {
         ME_REPORT_IN(function, ME_ERR_FOREIGN_HANDLE, "the geometry belongs to another framework; call ignored");
         return NULL;
@@ -95,11 +116,11 @@ static McdGeometry *geometryFor(McdFramework *fw, McdGeometryID id, const char *
 
 McdModelID McdModelCreate(McdGeometryID geometry)
 {
-    McdGeometry *g = geometryFor(NULL, geometry, __func__);
+    McdGeometryData *g = geometryFor(NULL, geometry, __func__);
     if (!g)
         return NULL;
-    McdFramework *fw = g->framework;
-    McdModel *m = MePoolGetStruct(&fw->modelPool);
+    McdFrameworkData *fw = g->framework;
+    McdModelData *m = MePoolGetStruct(&fw->modelPool);
     if (!m) {
         ME_REPORT(ME_ERR_POOL_FULL, "all %d models are in use; raise modelCount in McdInit", fw->modelPool.capacity);
         return NULL;
@@ -146,7 +167,7 @@ McdFrameworkID McdModelGetFramework(McdModelID id)
 void McdModelSetGeometry(McdModelID id, McdGeometryID geometry)
 {
     MODEL_OR_RETURN(m, id, ME_NOTHING);
-    McdGeometry *g = geometryFor(m->framework, geometry, __func__);
+    McdGeometryData *g = geometryFor(m->framework, geometry, __func__);
     if (!g)
         return;
     g->refCount++;
@@ -175,6 +196,7 @@ MeMatrix4Ptr McdModelGetTransformPtr(McdModelID id)
 void McdModelSetRelativeTransform(McdModelID id, MeMatrix4 relTM)
 {
     MODEL_OR_RETURN(m, id, ME_NOTHING);
+    m->relativePtr = NULL;
     if (!relTM) {
         m->hasRelative = MEFALSE;
         MeMatrix4TMMakeIdentity(m->relativeTransform);
@@ -189,12 +211,38 @@ void McdModelSetRelativeTransform(McdModelID id, MeMatrix4 relTM)
     m->hasRelative = METRUE;
 }
 
-MeBool McdModelGetRelativeTransform(McdModelID id, MeMatrix4 relTM)
+MeMatrix4Ptr McdModelGetRelativeTransform(McdModelID id)
 {
-    MODEL_OR_RETURN(m, id, MEFALSE);
-    ME_CHECK_NOT_NULL(relTM, MEFALSE);
-    MeMatrix4Copy(relTM, m->relativeTransform);
-    return m->hasRelative;
+    MODEL_OR_RETURN(m, id, NULL);
+    if (m->relativePtr)
+        return m->relativePtr;
+    return m->hasRelative ? m->relativeTransform : NULL;
+}
+
+void McdModelSetRelativeTransformPtrs(McdModelID id, MeMatrix4 relTM, MeMatrix4 refTM, MeMatrix4 compoundTM, MeBool own)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    (void)own; /* Karma's "free them with the model": the pointers here always stay the caller's */
+    if (relTM && !MeMatrix4IsTM(relTM, TM_TOLERANCE)) {
+        ME_REPORT(ME_ERR_NOT_ROTATION, "argument 'relTM' is not a rigid transform; call ignored");
+        return;
+    }
+    m->relativePtr = relTM;
+    if (!relTM) {
+        m->hasRelative = MEFALSE;
+        MeMatrix4TMMakeIdentity(m->relativeTransform);
+    }
+    m->transform = refTM;
+    m->compoundPtr = compoundTM;
+}
+
+void McdModelGetRelativeTransformPtrs(McdModelID id, MeMatrix4Ptr *relTM, MeMatrix4Ptr *refTM)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    if (relTM)
+        *relTM = m->relativePtr ? m->relativePtr : (m->hasRelative ? m->relativeTransform : NULL);
+    if (refTM)
+        *refTM = McdModelTransformInternal(m);
 }
 
 void McdModelGetWorldTransform(McdModelID id, MeMatrix4 tm)
@@ -289,7 +337,7 @@ void McdModelGetBSphere(McdModelID id, MeVector3 centre, MeReal *radius)
     ME_CHECK_NOT_NULL(centre, ME_NOTHING);
     ME_CHECK_NOT_NULL(radius, ME_NOTHING);
     MeVector3 local;
-    McdGeometryTypeOf(m->geometry)->getBSphere(McdGeometryToID(m->geometry), McdGeometryData(m->geometry), local,
+    McdGeometryTypeOf(m->geometry)->getBSphere(McdGeometryToID(m->geometry), McdGeometryShapeData(m->geometry), local,
                                                 radius);
     MeMatrix4TMTransform(centre, m->worldTransform, local);
 }
@@ -302,7 +350,7 @@ MeBool McdModelGetMassProperties(McdModelID id, MeVector3 com, MeMatrix3 inertia
     ME_CHECK_NOT_NULL(volume, MEFALSE);
     MeMatrix4 massTM, comTM;
     MeMatrix3 local;
-    McdGeometryTypeOf(m->geometry)->getMassProperties(McdGeometryToID(m->geometry), McdGeometryData(m->geometry),
+    McdGeometryTypeOf(m->geometry)->getMassProperties(McdGeometryToID(m->geometry), McdGeometryShapeData(m->geometry),
                                                        massTM, local, volume);
     /* The centre-of-mass frame in the model's frame: mass frame, then the relative transform. */
     MeMatrix4TMCompound(comTM, massTM, m->relativeTransform);
@@ -323,4 +371,114 @@ McdSpaceID McdModelGetSpace(McdModelID id)
 {
     MODEL_OR_RETURN(m, id, NULL);
     return m->space ? m->spaceID : NULL;
+}
+
+/* ---- Karma's hooks and accessors ---------------------------------------------------------------- */
+
+McdGeometryType McdModelGetGeometryType(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, kMcdGeometryTypeNull);
+    return (McdGeometryType)m->geometry->type;
+}
+
+void McdModelSetUpdateCallback(McdModelID id, McdModelUpdateFnPtr fn)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    m->updateFn = fn;
+}
+
+McdModelUpdateFnPtr McdModelGetUpdateCallback(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, NULL);
+    return m->updateFn;
+}
+
+void McdModelSetIntersectCallback(McdModelID id, McdModelIntersectFnPtr fn)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    m->intersectFn = fn;
+}
+
+McdModelIntersectFnPtr McdModelGetIntersectCallback(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, NULL);
+    return m->intersectFn;
+}
+
+void McdModelSetRequestID(McdModelID id, int requestId)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    if (requestId < 0) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "requestId (%d) must not be negative; call ignored", requestId);
+        return;
+    }
+    m->requestID = requestId;
+}
+
+int McdModelGetRequestID(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, 0);
+    return m->requestID;
+}
+
+void McdModelSetLinearVelocityPtr(McdModelID id, MeReal *velocity)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    m->linearVelocity = velocity;
+}
+
+MeReal *McdModelGetLinearVelocityPtr(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, NULL);
+    return m->linearVelocity;
+}
+
+void McdModelSetAngularVelocityPtr(McdModelID id, MeReal *velocity)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    m->angularVelocity = velocity;
+}
+
+MeReal *McdModelGetAngularVelocityPtr(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, NULL);
+    return m->angularVelocity;
+}
+
+void *McdModelGetBodyData(McdModelID id)
+{
+    MODEL_OR_RETURN(m, id, NULL);
+    return m->body;
+}
+
+void McdModelSetBodyData(McdModelID id, void *body)
+{
+    MODEL_OR_RETURN(m, id, ME_NOTHING);
+    m->body = body;
+}
+
+void McdFrameworkDestroyAllModelsAndGeometries(McdFrameworkID id)
+{
+    McdFrameworkData *fw = McdFrameworkFromID(id, __func__);
+    if (!fw)
+        return;
+    /* Models first (in slot order: deterministic), taken out of their spaces; then the geometries,
+     * whatever holds the application took on them. */
+    for (int i = 0; i < fw->modelPool.capacity; i++) {
+        if (!MePoolSlotIsLive(&fw->modelPool, i))
+            continue;
+        McdModelData *m = MePoolSlot(&fw->modelPool, i);
+        if (m->space)
+            McdSpaceForgetModel(m);
+        m->geometry->refCount--;
+        MePoolPutStruct(&fw->modelPool, m);
+    }
+    for (int i = 0; i < fw->geometryPool.capacity; i++) {
+        if (!MePoolSlotIsLive(&fw->geometryPool, i))
+            continue;
+        McdGeometryData *g = MePoolSlot(&fw->geometryPool, i);
+        g->userRefCount = 0;
+        g->refCount = 0;
+        McdGeometryDestroy(McdGeometryToID(g));
+    }
 }

@@ -8,6 +8,7 @@
 
 #include <karma/McdInteraction.h>
 #include <karma/McdModelPair.h>
+#include <karma/McdSpace.h>
 #include <karma/MeMemory.h>
 
 #include "../me/check.h"
@@ -15,7 +16,7 @@
 
 McdModelPairID McdModelPairCreate(McdModelID model1, McdModelID model2)
 {
-    McdModel *m1 = McdModelFromID(model1, __func__), *m2 = McdModelFromID(model2, __func__);
+    McdModelData *m1 = McdModelFromID(model1, __func__), *m2 = McdModelFromID(model2, __func__);
     if (!m1 || !m2)
         return NULL;
     if (m1->framework != m2->framework) {
@@ -48,7 +49,7 @@ void McdModelPairReset(McdModelPairID pair, McdModelID model1, McdModelID model2
 }
 
 /* Resolve both models of a pair in the caller's name. */
-static MeBool pairModels(const McdModelPair *pair, McdModel **m1, McdModel **m2, const char *function)
+static MeBool pairModels(const McdModelPair *pair, McdModelData **m1, McdModelData **m2, const char *function)
 {
     if (!pair) {
         MeReport(ME_ERR_NULL_ARGUMENT, function, __FILE__, __LINE__, "argument 'pair' is NULL; call ignored");
@@ -59,9 +60,9 @@ static MeBool pairModels(const McdModelPair *pair, McdModel **m1, McdModel **m2,
     return *m1 && *m2;
 }
 
-void McdHelloInternal(McdModelPair *pair, McdModel *m1, McdModel *m2, const char *function)
+void McdHelloInternal(McdModelPair *pair, McdModelData *m1, McdModelData *m2, const char *function)
 {
-    McdFramework *fw = m1->framework;
+    McdFrameworkData *fw = m1->framework;
     int t1 = m1->geometry->type, t2 = m2->geometry->type;
     pair->cache = NULL;
     pair->swapped = 0;
@@ -87,7 +88,7 @@ void McdHelloInternal(McdModelPair *pair, McdModel *m1, McdModel *m2, const char
 
 void McdHello(McdModelPairID pair)
 {
-    McdModel *m1, *m2;
+    McdModelData *m1, *m2;
     if (!pairModels(pair, &m1, &m2, __func__))
         return;
     if (m1->framework != m2->framework) {
@@ -95,11 +96,13 @@ void McdHello(McdModelPairID pair)
         return;
     }
     McdHelloInternal(pair, m1, m2, __func__);
+    if (m1->framework->helloCallback) /* Karma's hook, e.g. McduHelloRequestTableCB */
+        m1->framework->helloCallback(pair);
 }
 
-void McdGoodbyeInternal(McdModelPair *pair, McdModel *m1)
+void McdGoodbyeInternal(McdModelPair *pair, McdModelData *m1)
 {
-    McdFramework *fw = m1->framework;
+    McdFrameworkData *fw = m1->framework;
     if (pair->cache && pair->testIndex >= 0 && fw->interactions[pair->testIndex].releaseCache)
         fw->interactions[pair->testIndex].releaseCache(pair->cache);
     pair->cache = NULL;
@@ -109,7 +112,7 @@ void McdGoodbyeInternal(McdModelPair *pair, McdModel *m1)
 
 void McdGoodbye(McdModelPairID pair)
 {
-    McdModel *m1, *m2;
+    McdModelData *m1, *m2;
     if (pairModels(pair, &m1, &m2, __func__))
         McdGoodbyeInternal(pair, m1);
 }
@@ -143,7 +146,7 @@ static void clearResult(McdModelPair *pair, McdIntersectResult *result)
 int McdIntersect(McdModelPairID pair, McdIntersectResult *result)
 {
     ME_CHECK_NOT_NULL(result, 0);
-    McdModel *m1, *m2;
+    McdModelData *m1, *m2;
     if (!pairModels(pair, &m1, &m2, __func__)) {
         clearResult(pair, result);
         return 0;
@@ -151,7 +154,7 @@ int McdIntersect(McdModelPairID pair, McdIntersectResult *result)
     return McdIntersectModels(pair, m1, m2, result, __func__); /* which clears the result first */
 }
 
-int McdIntersectModels(McdModelPair *pair, McdModel *m1, McdModel *m2, McdIntersectResult *result,
+int McdIntersectModels(McdModelPair *pair, McdModelData *m1, McdModelData *m2, McdIntersectResult *result,
                        const char *function)
 {
     clearResult(pair, result);
@@ -161,7 +164,7 @@ int McdIntersectModels(McdModelPair *pair, McdModel *m1, McdModel *m2, McdInters
                   result->contactMaxCount);
         return 0;
     }
-    McdFramework *fw = m1->framework;
+    McdFrameworkData *fw = m1->framework;
     if (pair->testIndex < 0)
         return 0;
     const McdRequest *request = pair->request ? pair->request : &fw->defaultRequest;
@@ -194,16 +197,125 @@ int McdIntersectModels(McdModelPair *pair, McdModel *m1, McdModel *m2, McdInters
     result->touch = n > 0;
     if (n > 0)
         representativeNormal(c, n, result->normal);
+    /* Karma's per-model intersect callbacks see the finished result. */
+    if (m1->intersectFn)
+        m1->intersectFn((McdModel *)McdModelToID(m1), result);
+    if (m2->intersectFn)
+        m2->intersectFn((McdModel *)McdModelToID(m2), result);
     return result->touch;
 }
 
 MeBool McdNearby(McdModelPairID pair)
 {
-    McdModel *m1, *m2;
+    McdModelData *m1, *m2;
     if (!pairModels(pair, &m1, &m2, __func__))
         return MEFALSE;
     for (int j = 0; j < 3; j++)
         if (m1->aabbMax[j] < m2->aabbMin[j] || m2->aabbMax[j] < m1->aabbMin[j])
             return MEFALSE;
     return METRUE;
+}
+
+/* ---- Karma's pair accessors ------------------------------------------------------------------- */
+
+void McdModelPairGetModels(McdModelPairID pair, McdModelID *model1, McdModelID *model2)
+{
+    ME_CHECK_NOT_NULL(pair, ME_NOTHING);
+    if (model1)
+        *model1 = pair->model1;
+    if (model2)
+        *model2 = pair->model2;
+}
+
+void McdModelPairGetGeometryNames(McdModelPairID pair, const char **name1, const char **name2)
+{
+    McdModelData *m1, *m2;
+    ME_CHECK_NOT_NULL(name1, ME_NOTHING);
+    ME_CHECK_NOT_NULL(name2, ME_NOTHING);
+    *name1 = *name2 = NULL;
+    if (!pairModels(pair, &m1, &m2, __func__))
+        return;
+    *name1 = McdGeometryTypeOf(m1->geometry)->typeName;
+    *name2 = McdGeometryTypeOf(m2->geometry)->typeName;
+}
+
+McdRequest *McdModelPairGetRequestPtr(const McdModelPairID pair)
+{
+    ME_CHECK_NOT_NULL(pair, NULL);
+    if (pair->request)
+        return (McdRequest *)pair->request;
+    McdModelData *m1 = McdModelFromID(pair->model1, __func__);
+    return m1 ? m1->framework->defaultRequestPtr : NULL;
+}
+
+void McdModelPairSetRequestPtr(McdModelPairID pair, McdRequest *request)
+{
+    ME_CHECK_NOT_NULL(pair, ME_NOTHING);
+    pair->request = request;
+}
+
+void *McdModelPairGetUserData(McdModelPairID pair)
+{
+    ME_CHECK_NOT_NULL(pair, NULL);
+    return pair->userData;
+}
+
+void McdModelPairSetUserData(McdModelPairID pair, void *data)
+{
+    ME_CHECK_NOT_NULL(pair, ME_NOTHING);
+    pair->userData = data;
+}
+
+/* ---- the ...Each helpers over a container ------------------------------------------------------ */
+
+void McdHelloEach(McdModelPairContainer *pairs)
+{
+    ME_CHECK_NOT_NULL(pairs, ME_NOTHING);
+    for (int i = pairs->helloFirst; i < pairs->helloEndStayingFirst; i++)
+        McdHello(pairs->array[i]);
+}
+
+void McdGoodbyeEach(McdModelPairContainer *pairs)
+{
+    ME_CHECK_NOT_NULL(pairs, ME_NOTHING);
+    for (int i = pairs->goodbyeFirst; i < pairs->goodbyeEnd; i++)
+        McdGoodbye(pairs->array[i]);
+}
+
+MeBool McdIntersectEach(McdModelPairContainer *pairs, McdModelPairContainerIterator *iter,
+                        McdIntersectResult *resultArray, int resultArraySize, int *resultCount,
+                        McdContact *contactArray, int contactArraySize, int *contactCount)
+{
+    ME_CHECK_NOT_NULL(pairs, MEFALSE);
+    ME_CHECK_NOT_NULL(iter, MEFALSE);
+    ME_CHECK_NOT_NULL(resultCount, MEFALSE);
+    ME_CHECK_NOT_NULL(contactCount, MEFALSE);
+    *resultCount = *contactCount = 0;
+    if ((resultArraySize > 0 && !resultArray) || (contactArraySize > 0 && !contactArray)) {
+        ME_REPORT(ME_ERR_NULL_ARGUMENT, "a result or contact array is NULL for a size above 0; call ignored");
+        return MEFALSE;
+    }
+    if (iter->container != pairs) {
+        ME_REPORT(ME_ERR_BAD_STATE, "the iterator was not initialised on this container "
+                                    "(McdModelPairContainerIteratorInit); call ignored");
+        return MEFALSE;
+    }
+    /* Hellos and stayings in container order; a pair is taken only when its request's contacts fit. */
+    if (iter->count < pairs->helloFirst)
+        iter->count = pairs->helloFirst;
+    while (iter->count < pairs->stayingEnd) {
+        McdModelPair *pair = pairs->array[iter->count];
+        const McdRequest *request = McdModelPairGetRequestPtr(pair);
+        int want = request ? request->contactMaxCount : 0;
+        if (*resultCount == resultArraySize || *contactCount + want > contactArraySize)
+            return METRUE; /* more pairs remain: call again */
+        McdIntersectResult *r = &resultArray[*resultCount];
+        r->contacts = contactArray + *contactCount;
+        r->contactMaxCount = want;
+        McdIntersect(pair, r);
+        *contactCount += r->contactCount;
+        (*resultCount)++;
+        iter->count++;
+    }
+    return MEFALSE;
 }

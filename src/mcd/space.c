@@ -8,17 +8,17 @@
 #include "../me/handle.h"
 #include "space.h"
 
-McdSpace *McdSpaceFromID(McdSpaceID id, const char *function)
+McdSpaceData *McdSpaceFromID(McdSpaceID id, const char *function)
 {
     return MeHandleResolveOwner((uintptr_t)id, ME_HANDLE_SPACE, function, "space");
 }
 
 #define SPACE_OR_RETURN(s, id, ret)                                                                  \
-    McdSpace *s = McdSpaceFromID((id), __func__);                                                    \
+    McdSpaceData *s = McdSpaceFromID((id), __func__);                                                    \
     if (!s)                                                                                          \
     return ret
 
-McdSpace *McdSpaceCreateInternal(struct McdFramework *fw, int axes, int objectCount, int pairCount, const char *function)
+McdSpaceData *McdSpaceCreateInternal(struct McdFrameworkData *fw, int axes, int objectCount, int pairCount, const char *function)
 {
     if (axes <= 0 || axes > McdAllAxes) {
         ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE,
@@ -32,7 +32,7 @@ McdSpace *McdSpaceCreateInternal(struct McdFramework *fw, int axes, int objectCo
                      pairCount, (long)ME_HANDLE_MAX_INDEX);
         return NULL;
     }
-    McdSpace *s = MeMemoryCreateZeroed(sizeof *s);
+    McdSpaceData *s = MeMemoryCreateZeroed(sizeof *s);
     if (!s)
         return NULL;
     s->framework = fw;
@@ -54,7 +54,7 @@ McdSpace *McdSpaceCreateInternal(struct McdFramework *fw, int axes, int objectCo
     return s;
 }
 
-void McdSpaceDestroyInternal(McdSpace *s)
+void McdSpaceDestroyInternal(McdSpaceData *s)
 {
     for (int slot = 0; slot < s->maxObjects; slot++) /* release the culling tables */
         if (s->obj[slot].flags & MCD_OBJ_LIVE)
@@ -104,7 +104,7 @@ void McdSpaceBuild(McdSpaceID space)
         McdSpaceRebuild(s, __func__);
 }
 
-MeBool McdSpaceCheckChanging(const McdSpace *s, MeBool wanted, const char *function)
+MeBool McdSpaceCheckChanging(const McdSpaceData *s, MeBool wanted, const char *function)
 {
     if (s->changing == wanted)
         return METRUE;
@@ -117,12 +117,34 @@ MeBool McdSpaceCheckChanging(const McdSpace *s, MeBool wanted, const char *funct
     return MEFALSE;
 }
 
-McdSpacePoolFullHandler McdSpaceSetPoolFullHandler(McdSpaceID space, McdSpacePoolFullHandler handler)
+void McdSpaceSetPoolFullHandler(McdSpaceID space, McdSpacePoolErrorFnPtr handler)
+{
+    SPACE_OR_RETURN(s, space, ME_NOTHING);
+    s->poolFull = handler;
+}
+
+McdSpacePoolErrorFnPtr McdSpaceGetPoolFullHandler(McdSpaceID space)
 {
     SPACE_OR_RETURN(s, space, NULL);
-    McdSpacePoolFullHandler old = s->poolFull;
-    s->poolFull = handler;
-    return old;
+    return s->poolFull;
+}
+
+void McdSpaceSetUserData(McdSpaceID space, void *data)
+{
+    SPACE_OR_RETURN(s, space, ME_NOTHING);
+    s->userData = data;
+}
+
+void *McdSpaceGetUserData(McdSpaceID space)
+{
+    SPACE_OR_RETURN(s, space, NULL);
+    return s->userData;
+}
+
+void McdSpaceSetAABBFn(McdSpaceID space, McdSpaceUpdateAABBFnPtr updateAABBFn)
+{
+    SPACE_OR_RETURN(s, space, ME_NOTHING);
+    s->updateAABBFn = updateAABBFn;
 }
 
 int McdSpaceGetPairCount(McdSpaceID space)
@@ -158,7 +180,7 @@ void McdSpacePairIteratorBegin(McdSpaceID space, McdSpacePairIterator *iter)
 static MeBool fill(McdSpaceID space, McdSpacePairIterator *iter, McdModelPairContainer *c, MeBool all,
                    const char *function)
 {
-    McdSpace *s = McdSpaceFromID(space, function);
+    McdSpaceData *s = McdSpaceFromID(space, function);
     if (!s)
         return MEFALSE;
     if (!iter || !c) {
@@ -295,4 +317,53 @@ MeBool McdModelPairContainerInsertStayingPair(McdModelPairContainer *c, McdModel
         return MEFALSE;
     c->stayingEnd++;
     return METRUE;
+}
+
+void McdModelPairContainerInit(McdModelPairContainer *c, McdModelPair **array, int size)
+{
+    ME_CHECK_NOT_NULL(c, ME_NOTHING);
+    if (size < 0 || (size > 0 && !array)) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "size (%d) must be >= 0 with an array of that many entries; call ignored",
+                  size);
+        return;
+    }
+    c->array = array;
+    c->size = size;
+    McdModelPairContainerReset(c);
+}
+
+void McdModelPairContainerRemovePair(McdModelPairContainer *c, McdModelPairID *entry)
+{
+    ME_CHECK_NOT_NULL(c, ME_NOTHING);
+    ME_CHECK_NOT_NULL(entry, ME_NOTHING);
+    ptrdiff_t at = entry - c->array;
+    if (at < c->goodbyeFirst || at >= c->stayingEnd) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "the entry is not one of the container's pairs; call ignored");
+        return;
+    }
+    /* Close the gap, keeping the order of every range; the ranges after it move down by one. */
+    memmove(&c->array[at], &c->array[at + 1], (size_t)(c->stayingEnd - at - 1) * sizeof *c->array);
+    if (at < c->goodbyeEnd)
+        c->goodbyeEnd--;
+    if (at < c->helloFirst)
+        c->helloFirst--;
+    if (at < c->helloEndStayingFirst)
+        c->helloEndStayingFirst--;
+    c->stayingEnd--;
+}
+
+void McdModelPairContainerPrintStats(McdModelPairContainer *c)
+{
+    ME_CHECK_NOT_NULL(c, ME_NOTHING);
+    MeInfo(0, "McdModelPairContainer (size %d): %d hello, %d staying, %d goodbye", c->size,
+           McdModelPairContainerGetHelloCount(c), McdModelPairContainerGetStayingCount(c),
+           McdModelPairContainerGetGoodbyeCount(c));
+}
+
+void McdModelPairContainerIteratorInit(McdModelPairContainerIterator *iter, McdModelPairContainer *c)
+{
+    ME_CHECK_NOT_NULL(iter, ME_NOTHING);
+    ME_CHECK_NOT_NULL(c, ME_NOTHING);
+    iter->container = c;
+    iter->count = c->helloFirst;
 }

@@ -15,8 +15,8 @@
 
 #include <karma/McdSpace.h>
 
-struct McdModel;
-struct McdFramework;
+struct McdModelData;
+struct McdFrameworkData;
 
 #define MCD_BOX_LO(s, slot) (&(s)->box[6 * (slot)])
 #define MCD_BOX_HI(s, slot) (&(s)->box[6 * (slot) + 3])
@@ -37,7 +37,7 @@ struct McdFramework;
 typedef struct McdSpaceEndpoint {
     MeReal value;
     MeU32 tag; /* (isMax << 30) | slot: at equal values starts sort before ends, so touching boxes overlap */
-    MeReal lo, hi; /* an end's object's interval on the list's filter axis (McdSpace.filterAxis); a
+    MeReal lo, hi; /* an end's object's interval on the list's filter axis (McdSpaceData.filterAxis); a
                     * start holds the empty interval (+inf, -inf), which no interval overlaps */
 } McdSpaceEndpoint;
 
@@ -56,7 +56,7 @@ typedef struct McdSpaceObject {
     McdCullingTable *cull; /* or NULL */
     int cullIndex, cullId;
     uintptr_t handle; /* the model's ID, copied into the pairs */
-    struct McdModel *model; /* NULL when the engine is driven directly (tests) */
+    struct McdModelData *model; /* NULL when the engine is driven directly (tests) */
     MeI32 key;        /* sort key */
     int pairHead;     /* first pair record of this object, or -1 */
     unsigned flags;
@@ -79,10 +79,10 @@ typedef struct McdSpaceOverlap {
     int pair, a, b;
 } McdSpaceOverlap;
 
-typedef struct McdSpace {
+typedef struct McdSpaceData {
     uintptr_t id;
     int ownerSlot;
-    struct McdFramework *framework;
+    struct McdFrameworkData *framework;
     int axes;          /* McdXAxis | ... */
     int axis[3];       /* the sorted axes, in x, y, z order */
     int axisCount;
@@ -126,64 +126,71 @@ typedef struct McdSpace {
     MeBool changing;
     MeU32 reportNumber;
     McdSpacePoolFullHandler poolFull;
+    McdSpaceUpdateAABBFnPtr updateAABBFn; /* NULL: McdModelUpdate */
+    void *userData;
     int lostTotal, lostNow;
     MeBool lostPending;
-} McdSpace;
+} McdSpaceData;
+
+/* ---- space_model.c ------------------------------------------------------------------------ */
+/* Take a model out of its space whatever the space's state (McdFrameworkDestroyAllModelsAndGeometries):
+ * its pairs say Goodbye at the next McdSpaceEndChanges. */
+void McdSpaceForgetModel(struct McdModelData *m);
 
 /* ---- space.c ------------------------------------------------------------------------------ */
 /* Resolve a space ID (reported in `function`'s name; NULL when invalid). */
-McdSpace *McdSpaceFromID(McdSpaceID id, const char *function);
+McdSpaceData *McdSpaceFromID(McdSpaceID id, const char *function);
 /* A space with no models (framework may be NULL when the engine is driven directly). */
-McdSpace *McdSpaceCreateInternal(struct McdFramework *fw, int axes, int objectCount, int pairCount, const char *function);
-void McdSpaceDestroyInternal(McdSpace *s);
+McdSpaceData *McdSpaceCreateInternal(struct McdFrameworkData *fw, int axes, int objectCount, int pairCount, const char *function);
+void McdSpaceDestroyInternal(McdSpaceData *s);
 /* MEFALSE (reported as ME_ERR_BAD_STATE) unless the space's changing state is `wanted`. */
-MeBool McdSpaceCheckChanging(const McdSpace *s, MeBool wanted, const char *function);
+MeBool McdSpaceCheckChanging(const McdSpaceData *s, MeBool wanted, const char *function);
 
 /* ---- space_sort.c ------------------------------------------------------------------------- */
 /* Allocation of every array (sizes from the space's fields); MEFALSE when memory ran out. */
-MeBool McdSpaceEngineInit(McdSpace *s, int axes, int maxObjects, int maxPairs);
-void McdSpaceEngineTerm(McdSpace *s);
+MeBool McdSpaceEngineInit(McdSpaceData *s, int axes, int maxObjects, int maxPairs);
+void McdSpaceEngineTerm(McdSpaceData *s);
 /* A new object (pending until the next sort or sync); returns its slot, or -1 when full. */
-int McdSpaceObjectAdd(McdSpace *s, uintptr_t handle, struct McdModel *model, MeI32 key, const MeReal lo[3], const MeReal hi[3]);
+int McdSpaceObjectAdd(McdSpaceData *s, uintptr_t handle, struct McdModelData *model, MeI32 key, const MeReal lo[3], const MeReal hi[3]);
 /* Removes an object: its pairs are detached (live ones say Goodbye at the next report). */
-void McdSpaceObjectRemove(McdSpace *s, int slot);
+void McdSpaceObjectRemove(McdSpaceData *s, int slot);
 /* New box for an object; used at the next sort. Non-finite (NaN) bounds are refused (MEFALSE). */
-MeBool McdSpaceObjectSetAABB(McdSpace *s, int slot, const MeReal lo[3], const MeReal hi[3]);
+MeBool McdSpaceObjectSetAABB(McdSpaceData *s, int slot, const MeReal lo[3], const MeReal hi[3]);
 /* Brings the lists up to date: drops removed objects, merges pending ones (finding their pairs),
  * runs an insertion sort on every axis when `sort` is set, and looks again for pairs lost to a full
  * pool. `function` names the API call for the pool-full warning. */
-void McdSpaceSort(McdSpace *s, MeBool sort, const char *function);
+void McdSpaceSort(McdSpaceData *s, MeBool sort, const char *function);
 /* Re-sorts from scratch and re-derives every overlap (McdSpaceBuild). */
-void McdSpaceRebuild(McdSpace *s, const char *function);
+void McdSpaceRebuild(McdSpaceData *s, const char *function);
 /* Gives an object a culling table (NULL: none), its index in it and its group id. */
-void McdSpaceObjectSetCulling(McdSpace *s, int slot, McdCullingTable *table, int index, int id);
+void McdSpaceObjectSetCulling(McdSpaceData *s, int slot, McdCullingTable *table, int index, int id);
 /* Whether the culling tables keep objects a and b apart. */
-MeBool McdSpaceObjectsCulled(const McdSpace *s, int a, int b);
+MeBool McdSpaceObjectsCulled(const McdSpaceData *s, int a, int b);
 /* Freezes or unfreezes an object (unfreezing re-examines its pairs at the next report). */
-void McdSpaceObjectSetFrozen(McdSpace *s, int slot, MeBool frozen);
+void McdSpaceObjectSetFrozen(McdSpaceData *s, int slot, MeBool frozen);
 /* Whether two objects' boxes overlap on every sorted axis (closed intervals). */
-MeBool McdSpaceObjectsOverlap(const McdSpace *s, int a, int b);
+MeBool McdSpaceObjectsOverlap(const McdSpaceData *s, int a, int b);
 
 /* ---- space_pairs.c ------------------------------------------------------------------------ */
-MeBool McdSpacePairsInit(McdSpace *s);
-void McdSpacePairsTerm(McdSpace *s);
+MeBool McdSpacePairsInit(McdSpaceData *s);
+void McdSpacePairsTerm(McdSpaceData *s);
 /* The record of objects a and b, or -1. */
-int McdSpacePairFind(const McdSpace *s, int a, int b);
+int McdSpacePairFind(const McdSpaceData *s, int a, int b);
 /* Records that objects a and b now overlap (on) or not (off). */
-void McdSpacePairSetOverlap(McdSpace *s, int a, int b, MeBool on);
+void McdSpacePairSetOverlap(McdSpaceData *s, int a, int b, MeBool on);
 /* Sets or clears the user's disable flag; MEFALSE when a record was needed and the pool is full. */
-MeBool McdSpacePairSetDisabled(McdSpace *s, int a, int b, MeBool disabled);
+MeBool McdSpacePairSetDisabled(McdSpaceData *s, int a, int b, MeBool disabled);
 /* Detaches and (unless live) frees every pair of an object (it is leaving the space). */
-void McdSpacePairDetachObject(McdSpace *s, int slot);
+void McdSpacePairDetachObject(McdSpaceData *s, int slot);
 /* Marks an object's pairs for re-examination at the next report (unfreeze). */
-void McdSpacePairTouchObject(McdSpace *s, int slot);
+void McdSpacePairTouchObject(McdSpaceData *s, int slot);
 /* Clears the overlap of every overlapping record whose boxes no longer overlap (after a sort). */
-void McdSpacePairDropApart(McdSpace *s);
+void McdSpacePairDropApart(McdSpaceData *s);
 /* Clears the overlap of every recorded pair whose boxes no longer overlap (McdSpaceRebuild). */
-void McdSpacePairRecheckAll(McdSpace *s);
+void McdSpacePairRecheckAll(McdSpaceData *s);
 /* End of a change block: decides Hello/Staying/Goodbye and fills s->report. */
-void McdSpacePairReport(McdSpace *s);
+void McdSpacePairReport(McdSpaceData *s);
 /* Start of a change block: frees the records of the last report's goodbyes. */
-void McdSpacePairReleaseGoodbyes(McdSpace *s);
+void McdSpacePairReleaseGoodbyes(McdSpaceData *s);
 
 #endif /* MCD_SPACE_INTERNAL_H */

@@ -53,7 +53,7 @@ static MeBool hitBefore(const Hit *x, const Hit *y)
 }
 
 typedef struct Query {
-    McdSpace *s;
+    McdSpaceData *s;
     MeReal p0[3], p1[3], d[3];
 } Query;
 
@@ -97,7 +97,7 @@ static MeBool queryModel(const Query *q, int slot, Hit *h)
 }
 
 static int firstHit(McdSpaceID space, const MeVector3 orig, const MeVector3 dest, McdLineSegIntersectResult *result,
-                    McdSpaceLineSegFilterFn filter, void *data, const char *function)
+                    McdLineSegIntersectEnableCallback filter, void *data, const char *function)
 {
     Query q;
     if (!queryStart(&q, space, orig, dest, result, function))
@@ -126,8 +126,8 @@ int McdSpaceGetLineSegFirstIntersection(McdSpaceID space, const MeVector3 orig, 
 }
 
 int McdSpaceGetLineSegFirstEnabledIntersection(McdSpaceID space, const MeVector3 orig, const MeVector3 dest,
-                                               McdLineSegIntersectResult *result, McdSpaceLineSegFilterFn filterCB,
-                                               void *data)
+                                               McdLineSegIntersectEnableCallback filterCB, void *data,
+                                               McdLineSegIntersectResult *result)
 {
     return firstHit(space, orig, dest, result, filterCB, data, __func__);
 }
@@ -153,7 +153,7 @@ int McdSpaceGetLineSegIntersections(McdSpaceID space, const MeVector3 orig, cons
         while (at > 0) {
             Hit prev;
             prev.r = results[at - 1];
-            McdModel *pm = McdModelFromID(prev.r.model, __func__);
+            McdModelData *pm = McdModelFromID(prev.r.model, __func__);
             prev.slot = pm ? pm->spaceIndex : 0;
             prev.key = q.s->obj[prev.slot].key;
             if (!hitBefore(&h, &prev))

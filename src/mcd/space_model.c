@@ -6,16 +6,16 @@
 #include "space.h"
 
 #define SPACE_OR_RETURN(s, id, ret)                                                                  \
-    McdSpace *s = McdSpaceFromID((id), __func__);                                                    \
+    McdSpaceData *s = McdSpaceFromID((id), __func__);                                                    \
     if (!s)                                                                                          \
     return ret
 
 McdSpaceID McdSpaceAxisSortCreate(McdFrameworkID fw, int axes, int objectCount, int pairCount)
 {
-    McdFramework *f = McdFrameworkFromID(fw, __func__);
+    McdFrameworkData *f = McdFrameworkFromID(fw, __func__);
     if (!f)
         return NULL;
-    McdSpace *s = McdSpaceCreateInternal(f, axes, objectCount, pairCount, __func__);
+    McdSpaceData *s = McdSpaceCreateInternal(f, axes, objectCount, pairCount, __func__);
     return s ? (McdSpaceID)s->id : NULL;
 }
 
@@ -23,7 +23,7 @@ void McdSpaceDestroy(McdSpaceID space)
 {
     SPACE_OR_RETURN(s, space, ME_NOTHING);
     for (int slot = 0; slot < s->maxObjects; slot++) {
-        McdModel *m = s->obj[slot].model;
+        McdModelData *m = s->obj[slot].model;
         if ((s->obj[slot].flags & MCD_OBJ_LIVE) && m) {
             m->frozen = MEFALSE;
             McdModelSetSpaceInternal(m, NULL, NULL, -1);
@@ -34,12 +34,12 @@ void McdSpaceDestroy(McdSpaceID space)
 
 /* The model and its space, with the change-block rule applied: NULL (reported) when the model is
  * invalid, in no space, or the space is in the wrong state (`changing` < 0: any state). */
-static McdSpace *modelSpace(McdModelID model, McdModel **out, int changing, const char *function)
+static McdSpaceData *modelSpace(McdModelID model, McdModelData **out, int changing, const char *function)
 {
-    McdModel *m = McdModelFromID(model, function);
+    McdModelData *m = McdModelFromID(model, function);
     if (!m)
         return NULL;
-    McdSpace *s = m->space;
+    McdSpaceData *s = m->space;
     if (!s) {
         ME_REPORT_IN(function, ME_ERR_BAD_STATE, "the model is in no space (McdSpaceInsertModel); call ignored");
         return NULL;
@@ -51,7 +51,7 @@ static McdSpace *modelSpace(McdModelID model, McdModel **out, int changing, cons
 }
 
 /* Copies a freshly updated model's box and sort key into its object. */
-static void takeModel(McdSpace *s, int slot, const McdModel *m, const char *function)
+static void takeModel(McdSpaceData *s, int slot, const McdModelData *m, const char *function)
 {
     McdSpaceObject *o = &s->obj[slot];
     if (!McdSpaceObjectSetAABB(s, slot, m->aabbMin, m->aabbMax))
@@ -66,10 +66,10 @@ static void takeModel(McdSpace *s, int slot, const McdModel *m, const char *func
 static MeBool insert(McdSpaceID space, McdModelID model, McdCullingTable *table, int index, int id,
                      const char *function)
 {
-    McdSpace *s = McdSpaceFromID(space, function);
+    McdSpaceData *s = McdSpaceFromID(space, function);
     if (!s)
         return MEFALSE;
-    McdModel *m = McdModelFromID(model, function);
+    McdModelData *m = McdModelFromID(model, function);
     if (!m || !McdSpaceCheckChanging(s, METRUE, function))
         return MEFALSE;
     if (m->framework != s->framework) {
@@ -107,16 +107,41 @@ MeBool McdSpaceInsertModel(McdSpaceID space, McdModelID model)
     return insert(space, model, NULL, 0, 0, __func__);
 }
 
+void McdSpaceSetModelCullingParameters(McdSpaceID space, McdModelID model, McdCullingTable *table, int index, int id)
+{
+    McdModelData *m;
+    McdSpaceData *s = modelSpace(model, &m, 1, __func__);
+    if (!s)
+        return;
+    if (m->space != McdSpaceFromID(space, __func__)) {
+        ME_REPORT(ME_ERR_FOREIGN_HANDLE, "the model is in another space; call ignored");
+        return;
+    }
+    if (table && (index < 0 || index >= table->size)) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "index (%d) must be in [0, %d) (the table's size); call ignored", index,
+                  table->size);
+        return;
+    }
+    McdSpaceObjectSetCulling(s, m->spaceIndex, table, index, id);
+}
+
 MeBool McdSpaceInsertModelWithCulling(McdSpaceID space, McdModelID model, McdCullingTableID table, int index, int id)
 {
     ME_CHECK_NOT_NULL(table, MEFALSE);
     return insert(space, model, (McdCullingTable *)table, index, id, __func__);
 }
 
+void McdSpaceForgetModel(struct McdModelData *m)
+{
+    McdSpaceObjectRemove(m->space, m->spaceIndex);
+    m->frozen = MEFALSE;
+    McdModelSetSpaceInternal(m, NULL, NULL, -1);
+}
+
 MeBool McdSpaceRemoveModel(McdModelID model)
 {
-    McdModel *m;
-    McdSpace *s = modelSpace(model, &m, 1, __func__);
+    McdModelData *m;
+    McdSpaceData *s = modelSpace(model, &m, 1, __func__);
     if (!s)
         return MEFALSE;
     McdSpaceObjectRemove(s, m->spaceIndex);
@@ -135,7 +160,10 @@ void McdSpaceUpdateAll(McdSpaceID space)
         if (!(o->flags & MCD_OBJ_LIVE) || !o->model)
             continue;
         if (!(o->flags & MCD_OBJ_FROZEN)) {
-            McdModelUpdateInternal(o->model);
+            if (s->updateAABBFn)
+                s->updateAABBFn((McdModelID)o->handle, 0);
+            else
+                McdModelUpdateInternal(o->model);
             takeModel(s, slot, o->model, __func__);
         } else if (o->key != o->model->sortKey) {
             o->key = o->model->sortKey;
@@ -147,8 +175,8 @@ void McdSpaceUpdateAll(McdSpaceID space)
 
 void McdSpaceUpdateModel(McdModelID model)
 {
-    McdModel *m;
-    McdSpace *s = modelSpace(model, &m, 1, __func__);
+    McdModelData *m;
+    McdSpaceData *s = modelSpace(model, &m, 1, __func__);
     if (!s)
         return;
     McdModelUpdateInternal(m);
@@ -166,8 +194,8 @@ void McdSpaceUpdateModel(McdModelID model)
 
 static MeBool setFrozen(McdModelID model, MeBool frozen, const char *function)
 {
-    McdModel *m;
-    McdSpace *s = modelSpace(model, &m, -1, function);
+    McdModelData *m;
+    McdSpaceData *s = modelSpace(model, &m, -1, function);
     if (!s)
         return MEFALSE;
     McdSpaceObjectSetFrozen(s, m->spaceIndex, frozen);
@@ -180,15 +208,15 @@ MeBool McdSpaceUnfreezeModel(McdModelID model) { return setFrozen(model, MEFALSE
 
 MeBool McdSpaceModelIsFrozen(McdModelID model)
 {
-    McdModel *m = McdModelFromID(model, __func__);
+    McdModelData *m = McdModelFromID(model, __func__);
     return m && m->space && (m->space->obj[m->spaceIndex].flags & MCD_OBJ_FROZEN) != 0;
 }
 
 /* Both models, in the same space, in the right state. */
-static McdSpace *pairSpace(McdModelID model1, McdModelID model2, int *a, int *b, int changing, const char *function)
+static McdSpaceData *pairSpace(McdModelID model1, McdModelID model2, int *a, int *b, int changing, const char *function)
 {
-    McdModel *m1, *m2;
-    McdSpace *s = modelSpace(model1, &m1, changing, function);
+    McdModelData *m1, *m2;
+    McdSpaceData *s = modelSpace(model1, &m1, changing, function);
     if (!s || !modelSpace(model2, &m2, -1, function))
         return NULL;
     if (m2->space != s) {
@@ -204,27 +232,34 @@ static McdSpace *pairSpace(McdModelID model1, McdModelID model2, int *a, int *b,
     return s;
 }
 
-void McdSpaceDisablePair(McdModelID model1, McdModelID model2)
+MeBool McdSpaceDisablePair(McdModelID model1, McdModelID model2)
 {
     int a, b;
-    McdSpace *s = pairSpace(model1, model2, &a, &b, 1, __func__);
-    if (s && !McdSpacePairSetDisabled(s, a, b, METRUE))
+    McdSpaceData *s = pairSpace(model1, model2, &a, &b, 1, __func__);
+    if (!s)
+        return MEFALSE;
+    if (!McdSpacePairSetDisabled(s, a, b, METRUE)) {
         ME_REPORT(ME_ERR_POOL_FULL, "the space's pair pool is full (pairCount = %d): the pair was not disabled; "
                   "raise pairCount in McdSpaceAxisSortCreate", s->maxPairs);
+        return MEFALSE;
+    }
+    return METRUE;
 }
 
-void McdSpaceEnablePair(McdModelID model1, McdModelID model2)
+MeBool McdSpaceEnablePair(McdModelID model1, McdModelID model2)
 {
     int a, b;
-    McdSpace *s = pairSpace(model1, model2, &a, &b, 1, __func__);
-    if (s)
-        McdSpacePairSetDisabled(s, a, b, MEFALSE);
+    McdSpaceData *s = pairSpace(model1, model2, &a, &b, 1, __func__);
+    if (!s)
+        return MEFALSE;
+    McdSpacePairSetDisabled(s, a, b, MEFALSE);
+    return METRUE;
 }
 
 MeBool McdSpacePairIsEnabled(McdModelID model1, McdModelID model2)
 {
     int a, b;
-    McdSpace *s = pairSpace(model1, model2, &a, &b, -1, __func__);
+    McdSpaceData *s = pairSpace(model1, model2, &a, &b, -1, __func__);
     if (!s)
         return MEFALSE;
     int p = McdSpacePairFind(s, a, b);

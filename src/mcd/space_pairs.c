@@ -13,7 +13,7 @@
 
 #include "space.h"
 
-MeBool McdSpacePairsInit(McdSpace *s)
+MeBool McdSpacePairsInit(McdSpaceData *s)
 {
     size_t n = (size_t)(s->maxPairs > 0 ? s->maxPairs : 1);
     MeU32 cap = 16;
@@ -43,7 +43,7 @@ MeBool McdSpacePairsInit(McdSpace *s)
     return METRUE;
 }
 
-void McdSpacePairsTerm(McdSpace *s)
+void McdSpacePairsTerm(McdSpaceData *s)
 {
     MeMemoryDestroy(s->pairs);
     MeMemoryDestroy(s->freePair);
@@ -58,7 +58,7 @@ void McdSpacePairsTerm(McdSpace *s)
 
 /* ---- hash table --------------------------------------------------------------------------- */
 
-static MeU32 hashHome(const McdSpace *s, int a, int b)
+static MeU32 hashHome(const McdSpaceData *s, int a, int b)
 {
     MeU32 h = (MeU32)a * 0x9E3779B1u ^ ((MeU32)b * 0x85EBCA77u + 0x165667B1u);
     h ^= h >> 15;
@@ -67,7 +67,7 @@ static MeU32 hashHome(const McdSpace *s, int a, int b)
     return h & s->hashMask;
 }
 
-int McdSpacePairFind(const McdSpace *s, int a, int b)
+int McdSpacePairFind(const McdSpaceData *s, int a, int b)
 {
     if (a > b) {
         int t = a;
@@ -83,7 +83,7 @@ int McdSpacePairFind(const McdSpace *s, int a, int b)
     }
 }
 
-static void hashInsert(McdSpace *s, int p)
+static void hashInsert(McdSpaceData *s, int p)
 {
     MeU32 i = hashHome(s, s->pairs[p].a, s->pairs[p].b);
     while (s->hash[i] >= 0)
@@ -92,7 +92,7 @@ static void hashInsert(McdSpace *s, int p)
 }
 
 /* Deletion by backward shift (no tombstones, so probes stay short). */
-static void hashDelete(McdSpace *s, int p)
+static void hashDelete(McdSpaceData *s, int p)
 {
     MeU32 i = hashHome(s, s->pairs[p].a, s->pairs[p].b);
     while (s->hash[i] != p)
@@ -112,9 +112,9 @@ static void hashDelete(McdSpace *s, int p)
 
 /* ---- per-object lists ---------------------------------------------------------------------- */
 
-static int sideOf(const McdSpace *s, int p, int slot) { return s->pairs[p].a == slot ? 0 : 1; }
+static int sideOf(const McdSpaceData *s, int p, int slot) { return s->pairs[p].a == slot ? 0 : 1; }
 
-static void linkInto(McdSpace *s, int p, int slot)
+static void linkInto(McdSpaceData *s, int p, int slot)
 {
     int side = sideOf(s, p, slot);
     int head = s->obj[slot].pairHead;
@@ -125,7 +125,7 @@ static void linkInto(McdSpace *s, int p, int slot)
     s->obj[slot].pairHead = p;
 }
 
-static void unlinkFrom(McdSpace *s, int p, int slot)
+static void unlinkFrom(McdSpaceData *s, int p, int slot)
 {
     int side = sideOf(s, p, slot);
     int next = s->pairs[p].next[side], prev = s->pairs[p].prev[side];
@@ -139,7 +139,7 @@ static void unlinkFrom(McdSpace *s, int p, int slot)
 
 /* ---- records ------------------------------------------------------------------------------ */
 
-static void touch(McdSpace *s, int p)
+static void touch(McdSpaceData *s, int p)
 {
     if (s->pairs[p].touched < 0) {
         s->pairs[p].touched = s->touchedCount;
@@ -147,7 +147,7 @@ static void touch(McdSpace *s, int p)
     }
 }
 
-static void untouch(McdSpace *s, int p)
+static void untouch(McdSpaceData *s, int p)
 {
     int i = s->pairs[p].touched;
     if (i < 0)
@@ -159,7 +159,7 @@ static void untouch(McdSpace *s, int p)
 }
 
 /* Sets or clears MCD_PAIR_OVERLAP, keeping the overlap list. */
-static void setOverlapFlag(McdSpace *s, int p, MeBool on)
+static void setOverlapFlag(McdSpaceData *s, int p, MeBool on)
 {
     McdSpacePair *r = &s->pairs[p];
     if (on) {
@@ -182,7 +182,7 @@ static void setOverlapFlag(McdSpace *s, int p, MeBool on)
 }
 
 /* Takes a record out of the hash table and both objects' lists; it keeps a and b for the report. */
-static void detach(McdSpace *s, int p)
+static void detach(McdSpaceData *s, int p)
 {
     McdSpacePair *r = &s->pairs[p];
     if (!(r->flags & MCD_PAIR_INMAP))
@@ -194,7 +194,7 @@ static void detach(McdSpace *s, int p)
     r->flags &= ~(MCD_PAIR_INMAP | MCD_PAIR_DISABLED);
 }
 
-static void freeRecord(McdSpace *s, int p)
+static void freeRecord(McdSpaceData *s, int p)
 {
     untouch(s, p);
     McdSpacePair *r = &s->pairs[p];
@@ -205,7 +205,7 @@ static void freeRecord(McdSpace *s, int p)
 }
 
 /* Frees a record that nothing needs any more. */
-static void release(McdSpace *s, int p)
+static void release(McdSpaceData *s, int p)
 {
     if (!(s->pairs[p].flags & (MCD_PAIR_OVERLAP | MCD_PAIR_DISABLED | MCD_PAIR_LIVE))) {
         detach(s, p);
@@ -213,7 +213,7 @@ static void release(McdSpace *s, int p)
     }
 }
 
-static int create(McdSpace *s, int a, int b)
+static int create(McdSpaceData *s, int a, int b)
 {
     if (s->freePairCount == 0) {
         s->lostNow++;
@@ -240,7 +240,7 @@ static int create(McdSpace *s, int a, int b)
     return p;
 }
 
-void McdSpacePairSetOverlap(McdSpace *s, int a, int b, MeBool on)
+void McdSpacePairSetOverlap(McdSpaceData *s, int a, int b, MeBool on)
 {
     if (a > b) {
         int t = a;
@@ -262,7 +262,7 @@ void McdSpacePairSetOverlap(McdSpace *s, int a, int b, MeBool on)
     }
 }
 
-void McdSpacePairDropApart(McdSpace *s)
+void McdSpacePairDropApart(McdSpaceData *s)
 {
     /* Backwards: removing entry i moves the last entry (already looked at) into its place. */
     for (int i = s->overlapCount - 1; i >= 0; i--) {
@@ -276,7 +276,7 @@ void McdSpacePairDropApart(McdSpace *s)
     }
 }
 
-MeBool McdSpacePairSetDisabled(McdSpace *s, int a, int b, MeBool disabled)
+MeBool McdSpacePairSetDisabled(McdSpaceData *s, int a, int b, MeBool disabled)
 {
     if (a > b) {
         int t = a;
@@ -304,7 +304,7 @@ MeBool McdSpacePairSetDisabled(McdSpace *s, int a, int b, MeBool disabled)
     return METRUE;
 }
 
-void McdSpacePairDetachObject(McdSpace *s, int slot)
+void McdSpacePairDetachObject(McdSpaceData *s, int slot)
 {
     int p = s->obj[slot].pairHead;
     while (p >= 0) {
@@ -317,13 +317,13 @@ void McdSpacePairDetachObject(McdSpace *s, int slot)
     s->obj[slot].pairHead = -1;
 }
 
-void McdSpacePairTouchObject(McdSpace *s, int slot)
+void McdSpacePairTouchObject(McdSpaceData *s, int slot)
 {
     for (int p = s->obj[slot].pairHead; p >= 0; p = s->pairs[p].next[sideOf(s, p, slot)])
         touch(s, p);
 }
 
-void McdSpacePairRecheckAll(McdSpace *s)
+void McdSpacePairRecheckAll(McdSpaceData *s)
 {
     for (int p = 0; p < s->maxPairs; p++) {
         const McdSpacePair *r = &s->pairs[p];
@@ -334,21 +334,21 @@ void McdSpacePairRecheckAll(McdSpace *s)
 
 /* ---- the report --------------------------------------------------------------------------- */
 
-static MeBool exists(const McdSpace *s, int p)
+static MeBool exists(const McdSpaceData *s, int p)
 {
     unsigned f = s->pairs[p].flags;
     return (f & MCD_PAIR_INMAP) && (f & MCD_PAIR_OVERLAP) && !(f & MCD_PAIR_DISABLED) &&
            !(s->cullingObjects > 0 && McdSpaceObjectsCulled(s, s->pairs[p].a, s->pairs[p].b));
 }
 
-static MeBool bothFrozen(const McdSpace *s, int p)
+static MeBool bothFrozen(const McdSpaceData *s, int p)
 {
     const McdSpacePair *r = &s->pairs[p];
     return s->frozenObjects >= 2 && r->a >= 0 && (s->obj[r->a].flags & s->obj[r->b].flags & MCD_OBJ_FROZEN);
 }
 
 /* The report order of a pair: (sort key, slot) of its lower model, then of its higher one. */
-static void computeOrder(McdSpace *s, int p, int *lower, int *higher)
+static void computeOrder(McdSpaceData *s, int p, int *lower, int *higher)
 {
     McdSpacePair *r = &s->pairs[p];
     int x = r->a, y = r->b; /* a < b */
@@ -364,7 +364,7 @@ static void computeOrder(McdSpace *s, int p, int *lower, int *higher)
     *higher = y;
 }
 
-static MeBool orderLess(const McdSpace *s, int p, int q)
+static MeBool orderLess(const McdSpaceData *s, int p, int q)
 {
     const MeI32 *x = s->pairs[p].order, *y = s->pairs[q].order;
     for (int i = 0; i < 4; i++)
@@ -374,7 +374,7 @@ static MeBool orderLess(const McdSpace *s, int p, int q)
 }
 
 /* Stable bottom-up merge sort of record indices by report order (tmp holds count ints). */
-static void sortByOrder(const McdSpace *s, int *list, int count, int *tmp)
+static void sortByOrder(const McdSpaceData *s, int *list, int count, int *tmp)
 {
     int *src = list, *dst = tmp;
     for (int width = 1; width < count; width *= 2) {
@@ -393,7 +393,7 @@ static void sortByOrder(const McdSpace *s, int *list, int count, int *tmp)
         memcpy(list, src, (size_t)count * sizeof(int));
 }
 
-void McdSpacePairReport(McdSpace *s)
+void McdSpacePairReport(McdSpaceData *s)
 {
     if (s->keysChanged) { /* sort keys changed: live pairs take their new order */
         int lower, higher; /* model1 and model2 stay as they were at Hello: only the order changes */
@@ -471,7 +471,7 @@ void McdSpacePairReport(McdSpace *s)
     s->reportNumber++;
 }
 
-void McdSpacePairReleaseGoodbyes(McdSpace *s)
+void McdSpacePairReleaseGoodbyes(McdSpaceData *s)
 {
     for (int i = 0; i < s->goodbyeCount; i++) {
         int p = s->report[i];

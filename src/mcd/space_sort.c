@@ -46,7 +46,7 @@ static void sortEndpoints(McdSpaceEndpoint *list, int n, McdSpaceEndpoint *tmp)
         memcpy(list, src, (size_t)n * sizeof *list);
 }
 
-MeBool McdSpaceEngineInit(McdSpace *s, int axes, int maxObjects, int maxPairs)
+MeBool McdSpaceEngineInit(McdSpaceData *s, int axes, int maxObjects, int maxPairs)
 {
     s->axes = axes;
     s->axisCount = 0;
@@ -82,7 +82,7 @@ MeBool McdSpaceEngineInit(McdSpace *s, int axes, int maxObjects, int maxPairs)
     return McdSpacePairsInit(s);
 }
 
-void McdSpaceEngineTerm(McdSpace *s)
+void McdSpaceEngineTerm(McdSpaceData *s)
 {
     McdSpacePairsTerm(s);
     MeMemoryDestroy(s->obj);
@@ -107,7 +107,7 @@ static MeBool boxIsValid(const MeReal lo[3], const MeReal hi[3])
     return METRUE;
 }
 
-int McdSpaceObjectAdd(McdSpace *s, uintptr_t handle, struct McdModel *model, MeI32 key, const MeReal lo[3], const MeReal hi[3])
+int McdSpaceObjectAdd(McdSpaceData *s, uintptr_t handle, struct McdModelData *model, MeI32 key, const MeReal lo[3], const MeReal hi[3])
 {
     if (s->freeObjCount == 0)
         return -1;
@@ -127,7 +127,7 @@ int McdSpaceObjectAdd(McdSpace *s, uintptr_t handle, struct McdModel *model, MeI
     return slot;
 }
 
-void McdSpaceObjectRemove(McdSpace *s, int slot)
+void McdSpaceObjectRemove(McdSpaceData *s, int slot)
 {
     McdSpaceObject *o = &s->obj[slot];
     McdSpaceObjectSetCulling(s, slot, NULL, 0, 0);
@@ -151,7 +151,7 @@ void McdSpaceObjectRemove(McdSpace *s, int slot)
     s->objectCount--;
 }
 
-MeBool McdSpaceObjectSetAABB(McdSpace *s, int slot, const MeReal lo[3], const MeReal hi[3])
+MeBool McdSpaceObjectSetAABB(McdSpaceData *s, int slot, const MeReal lo[3], const MeReal hi[3])
 {
     if (!boxIsValid(lo, hi))
         return MEFALSE;
@@ -163,7 +163,7 @@ MeBool McdSpaceObjectSetAABB(McdSpace *s, int slot, const MeReal lo[3], const Me
     return METRUE;
 }
 
-void McdSpaceObjectSetCulling(McdSpace *s, int slot, McdCullingTable *table, int index, int id)
+void McdSpaceObjectSetCulling(McdSpaceData *s, int slot, McdCullingTable *table, int index, int id)
 {
     McdSpaceObject *o = &s->obj[slot];
     if (o->cull) {
@@ -179,7 +179,7 @@ void McdSpaceObjectSetCulling(McdSpace *s, int slot, McdCullingTable *table, int
     }
 }
 
-MeBool McdSpaceObjectsCulled(const McdSpace *s, int a, int b)
+MeBool McdSpaceObjectsCulled(const McdSpaceData *s, int a, int b)
 {
     const McdSpaceObject *p = &s->obj[a], *q = &s->obj[b];
     if (!p->cull || p->cull != q->cull || p->cullId != q->cullId)
@@ -188,7 +188,7 @@ MeBool McdSpaceObjectsCulled(const McdSpace *s, int a, int b)
     return (p->cull->bits[bit >> 3] >> (bit & 7)) & 1;
 }
 
-void McdSpaceObjectSetFrozen(McdSpace *s, int slot, MeBool frozen)
+void McdSpaceObjectSetFrozen(McdSpaceData *s, int slot, MeBool frozen)
 {
     McdSpaceObject *o = &s->obj[slot];
     if (frozen) {
@@ -202,7 +202,7 @@ void McdSpaceObjectSetFrozen(McdSpace *s, int slot, MeBool frozen)
     }
 }
 
-MeBool McdSpaceObjectsOverlap(const McdSpace *s, int a, int b)
+MeBool McdSpaceObjectsOverlap(const McdSpaceData *s, int a, int b)
 {
     const MeReal *p = &s->box[6 * a], *q = &s->box[6 * b];
     for (int i = 0; i < s->axisCount; i++) {
@@ -216,7 +216,7 @@ MeBool McdSpaceObjectsOverlap(const McdSpace *s, int a, int b)
 /* ---- list maintenance --------------------------------------------------------------------- */
 
 /* Drops the end points of objects that left the lists. */
-static void compactLists(McdSpace *s)
+static void compactLists(McdSpaceData *s)
 {
     int n = 0;
     for (int k = 0; k < s->axisCount; k++) {
@@ -235,7 +235,7 @@ static const MeReal emptyBox[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INF
 
 /* Sets an end point's value and filter interval (empty for a start) from its object's box. Starts
  * and ends alternate at random in a list: selects, not branches. */
-static void setEndpoint(const McdSpace *s, int axisIndex, McdSpaceEndpoint *e)
+static void setEndpoint(const McdSpaceData *s, int axisIndex, McdSpaceEndpoint *e)
 {
     const MeReal *b = &s->box[6 * MCD_EP_SLOT(e->tag)];
     unsigned isMax = MCD_EP_IS_MAX(e->tag) ? 1u : 0u;
@@ -246,7 +246,7 @@ static void setEndpoint(const McdSpace *s, int axisIndex, McdSpaceEndpoint *e)
 }
 
 /* Rewrites the lists' values from the objects' boxes (they change between sorts). */
-static void refreshValues(McdSpace *s)
+static void refreshValues(McdSpaceData *s)
 {
     for (int i = 0; i < s->axisCount; i++) {
         McdSpaceEndpoint *ep = s->ep[i];
@@ -259,7 +259,7 @@ static void refreshValues(McdSpace *s)
  * those events test every axis and record the new overlaps. An end passing a start is ignored here:
  * McdSpacePairDropApart then looks at the recorded overlaps (about one per object, against two or
  * more such events per object and axis when many objects move). */
-static void insertionSort(McdSpace *s, int axisIndex)
+static void insertionSort(McdSpaceData *s, int axisIndex)
 {
     McdSpaceEndpoint *ep = s->ep[axisIndex];
     const MeReal *box = s->box;
@@ -322,7 +322,7 @@ static void activeRemove(int *list, int *pos, int *count, int slot)
 /* Sweep along the first sorted axis finding the overlaps that involve at least one object marked
  * MCD_OBJ_NEW (every pair when all are marked). Objects are tested against those whose interval is
  * open when theirs starts, so each overlapping pair is found once. */
-static void sweepNew(McdSpace *s)
+static void sweepNew(McdSpaceData *s)
 {
     const McdSpaceEndpoint *ep = s->ep[0];
     int nAll = 0, nNew = 0;
@@ -347,7 +347,7 @@ static void sweepNew(McdSpace *s)
 }
 
 /* Merges the pending objects' end points into the lists and finds their pairs. */
-static void mergePending(McdSpace *s)
+static void mergePending(McdSpaceData *s)
 {
     int k2 = 2 * s->pendingCount;
     for (int i = 0; i < s->axisCount; i++) {
@@ -383,7 +383,7 @@ static void mergePending(McdSpace *s)
 }
 
 /* Looks for every overlap again (after pairs were lost to a full pool). */
-static void sweepAll(McdSpace *s)
+static void sweepAll(McdSpaceData *s)
 {
     for (int i = 0; i < s->epCount; i++)
         if (!MCD_EP_IS_MAX(s->ep[0][i].tag))
@@ -393,7 +393,7 @@ static void sweepAll(McdSpace *s)
         s->obj[MCD_EP_SLOT(s->ep[0][i].tag)].flags &= ~MCD_OBJ_NEW;
 }
 
-static void reportLost(McdSpace *s, const char *function)
+static void reportLost(McdSpaceData *s, const char *function)
 {
     if (s->lostNow > 0)
         ME_REPORT_IN(function, ME_ERR_POOL_FULL,
@@ -403,7 +403,7 @@ static void reportLost(McdSpace *s, const char *function)
     s->lostNow = 0;
 }
 
-void McdSpaceSort(McdSpace *s, MeBool sort, const char *function)
+void McdSpaceSort(McdSpaceData *s, MeBool sort, const char *function)
 {
     /* Lost pairs are looked for again at updates only (not at EndChanges: once per step is enough). */
     MeBool retry = sort && s->lostPending;
@@ -424,7 +424,7 @@ void McdSpaceSort(McdSpace *s, MeBool sort, const char *function)
     reportLost(s, function);
 }
 
-void McdSpaceRebuild(McdSpace *s, const char *function)
+void McdSpaceRebuild(McdSpaceData *s, const char *function)
 {
     s->lostPending = MEFALSE;
     /* Every object becomes pending again; the merge then sorts and sweeps them all. */

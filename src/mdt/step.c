@@ -56,13 +56,13 @@ static MeBool beginStep(MdtWorldData *w, MeReal stepSize, const char *function)
     w->stepSize = stepSize;
     w->droppedRows = w->cappedPartitions = w->simErrors = 0;
     MeProfileFrameStart(&w->profile);
-    MeProfileStartSection(&w->profile, MDT_SECTION_STEP);
+    MeProfileSectionStart(&w->profile, MDT_SECTION_STEP);
     return METRUE;
 }
 
 static void endStep(MdtWorldData *w)
 {
-    MeProfileEndSection(&w->profile, MDT_SECTION_STEP);
+    MeProfileSectionEnd(&w->profile, MDT_SECTION_STEP);
     MeProfileFrameEnd(&w->profile);
     w->steps++;
     w->time += w->stepSize;
@@ -91,9 +91,9 @@ static const StageDef stages[] = {
 /* One stage, timed in its profile section. */
 static void runStage(MdtWorldData *w, const StageDef *stage)
 {
-    MeProfileStartSection(&w->profile, stage->section);
+    MeProfileSectionStart(&w->profile, stage->section);
     stage->run(w);
-    MeProfileEndSection(&w->profile, stage->section);
+    MeProfileSectionEnd(&w->profile, stage->section);
     w->stage = stage->done;
 }
 

@@ -88,10 +88,10 @@ MdtWorldID MdtWorldCreate(unsigned int maxBodies, unsigned int maxConstraints, M
     MeHandleSetOwnerPool(w->ownerSlot, ME_HANDLE_BODY, &w->bodyPool);
     MeHandleSetOwnerPool(w->ownerSlot, ME_HANDLE_CONSTRAINT, &w->constraintPool);
     w->id = MeHandleOfOwner(w->ownerSlot);
-    MeChunkInit(&w->partitionChunk, "partition output");
-    MeChunkInit(&w->keaChunk, "Kea workspace");
-    MeChunkInit(&w->rowChunk, "constraint rows");
-    MeChunkInit(&w->lodChunk, "matrix capping");
+    MeChunkInitNamed(&w->partitionChunk, "partition output");
+    MeChunkInitNamed(&w->keaChunk, "Kea workspace");
+    MeChunkInitNamed(&w->rowChunk, "constraint rows");
+    MeChunkInitNamed(&w->lodChunk, "matrix capping");
     MeProfileInit(&w->profile);
     MdtWorldSetDefaults(w);
     return (MdtWorldID)w->id;

@@ -149,11 +149,6 @@ void MdtUnpackStage(MdtWorldData *w);
 void MdtWorldDebugDefaults(MdtWorldData *w);
 /* Count a solved partition of `rows` rows in the matrix-size log, if one is set. */
 void MdtWorldLogMatrixSize(MdtWorldData *w, int rows);
-/* The line-drawing hook debug drawing goes through. Until the Me layer's MeDebugDrawAPI is in this
- * tree, an internal function pointer (NULL: draw nothing) that the tests set. */
-typedef void (*MdtDebugLineFn)(const MeVector3 start, const MeVector3 end, MeReal r, MeReal g, MeReal b);
-extern MdtDebugLineFn MdtDebugLineHook;
-void MdtDebugDrawLine(const MeVector3 start, const MeVector3 end, MeReal r, MeReal g, MeReal b);
 /* Draw what MdtWorldSetDebugDrawing asked for, after the unpack stage. */
 void MdtWorldDebugDraw(MdtWorldData *w);
 /* Add one constraint to Karma 1.2's counts of a partition (partition_info.c). */

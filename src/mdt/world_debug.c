@@ -5,6 +5,7 @@
 #include <karma/MdtContact.h>
 #include <karma/MdtContactGroup.h>
 #include <karma/MdtPartition.h>
+#include <karma/MeDebugDraw.h>
 
 #include "../me/check.h"
 #include "bcl/contact_internal.h"
@@ -15,14 +16,6 @@
     MdtWorldData *w = MdtWorldFromID((id), __func__);                                                \
     if (!w)                                                                                          \
     return ret
-
-MdtDebugLineFn MdtDebugLineHook;
-
-void MdtDebugDrawLine(const MeVector3 start, const MeVector3 end, MeReal r, MeReal g, MeReal b)
-{
-    if (MdtDebugLineHook)
-        MdtDebugLineHook(start, end, r, g, b);
-}
 
 void MdtWorldDebugDefaults(MdtWorldData *w)
 {
@@ -67,12 +60,12 @@ static void drawContact(const MdtWorldData *w, const MdtConstraintData *c)
         MdtContactGetNormal(id, end);
         MeVector3Scale(end, 1 + 50 * MdtContactGetPenetration(id));
         MeVector3Add(end, start, end);
-        MdtDebugDrawLine(start, end, 1, 0, 0);
+        MeDebugDrawAPI.line(start, end, 1, 0, 0);
     }
     if (w->debugOptions & MdtDebugDrawContactForce) {
         contactForce(w, c, end);
         MeVector3Add(end, start, end);
-        MdtDebugDrawLine(start, end, 0, 1, 0);
+        MeDebugDrawAPI.line(start, end, 0, 1, 0);
     }
 }
 

@@ -13,6 +13,8 @@
 
 #include <karma/MeMessage.h>
 
+/* The library's ME_REPORT (a coded report) replaces Karma's statement wrapper of MeMessage.h. */
+#undef ME_REPORT
 #define ME_REPORT(code, ...) MeReport((code), __func__, __FILE__, __LINE__, __VA_ARGS__)
 #define ME_REPORT_IN(function, code, ...) MeReport((code), (function), __FILE__, __LINE__, __VA_ARGS__)
 

@@ -1,4 +1,14 @@
-/* handle.c -- the owner registry and ID encoding (see handle.h). */
+/* handle.c -- the owner registry and ID encoding (see handle.h).
+ *
+ * Threads: worlds, spaces and universes may be created, used and destroyed on several threads at
+ * once. Registering and unregistering an owner scan and write the shared registry, so they hold
+ * registryLock; resolving an ID reads only the slot of the owner it names, which no other thread
+ * writes while that owner exists (using an ID after destroying its owner on another thread is the
+ * application's race, as with any object). The lock is a spin lock on a C11 atomic flag: it is
+ * held for a short scan a few times per world's life, needs no thread library, and is understood by
+ * ThreadSanitizer. */
+#include <stdatomic.h>
+
 #include "handle.h"
 
 #include "check.h"
@@ -15,7 +25,16 @@ static MeHandleOwner registry[ME_HANDLE_MAX_OWNERS + 1];
 /* Registry slots are handed out round-robin so a freed slot is reused as late as possible. */
 static int nextOwnerSlot = 1;
 /* Seed for pool generations: advances per owner so that two owners' slots rarely share values. */
-static MeU32 generationSeed = 2;
+static atomic_uint generationSeed = 2;
+static atomic_flag registryLock = ATOMIC_FLAG_INIT;
+
+static void lockRegistry(void)
+{
+    while (atomic_flag_test_and_set_explicit(&registryLock, memory_order_acquire))
+        ; /* another thread is creating or destroying an owner: a few hundred cycles at most */
+}
+
+static void unlockRegistry(void) { atomic_flag_clear_explicit(&registryLock, memory_order_release); }
 
 static const char *kindName(MeHandleKind kind)
 {
@@ -32,6 +51,7 @@ static uintptr_t encode(MeHandleKind kind, int owner, MeU32 generation, int inde
 
 int MeHandleRegisterOwner(void *object, MeHandleKind ownerKind, const char *function)
 {
+    lockRegistry();
     for (int tries = 0; tries < ME_HANDLE_MAX_OWNERS; tries++) {
         int slot = nextOwnerSlot;
         nextOwnerSlot = nextOwnerSlot % ME_HANDLE_MAX_OWNERS + 1;
@@ -42,9 +62,11 @@ int MeHandleRegisterOwner(void *object, MeHandleKind ownerKind, const char *func
             o->generation = (o->generation + 1) & (MeU32)FIELD_MASK(ME_HANDLE_GEN_BITS);
             for (int k = 0; k < ME_HANDLE_KIND_COUNT; k++)
                 o->pools[k] = NULL;
+            unlockRegistry();
             return slot;
         }
     }
+    unlockRegistry();
     ME_REPORT_IN(function, ME_ERR_TOO_MANY_OWNERS, "at most %d worlds, frameworks and spaces may exist at once",
                  ME_HANDLE_MAX_OWNERS);
     return 0;
@@ -52,22 +74,24 @@ int MeHandleRegisterOwner(void *object, MeHandleKind ownerKind, const char *func
 
 void MeHandleSetOwnerPool(int ownerSlot, MeHandleKind kind, MePool *pool)
 {
-    registry[ownerSlot].pools[kind] = pool;
     /* Give this owner's slots a generation base of their own (see generationSeed). */
+    MeU32 seed = (MeU32)atomic_fetch_add(&generationSeed, 2u * 7919u);
+    registry[ownerSlot].pools[kind] = pool;
     if (pool)
         for (int i = 0; i < pool->capacity; i++)
-            pool->generation[i] = (pool->generation[i] + generationSeed) & ~1u;
-    generationSeed += 2u * 7919u;
+            pool->generation[i] = (pool->generation[i] + seed) & ~1u;
 }
 
 void MeHandleUnregisterOwner(int ownerSlot)
 {
     if (ownerSlot <= 0 || ownerSlot > ME_HANDLE_MAX_OWNERS)
         return;
+    lockRegistry();
     registry[ownerSlot].object = NULL;
     registry[ownerSlot].generation++;
     for (int k = 0; k < ME_HANDLE_KIND_COUNT; k++)
         registry[ownerSlot].pools[k] = NULL;
+    unlockRegistry();
 }
 
 uintptr_t MeHandleOfOwner(int ownerSlot)

@@ -1,4 +1,10 @@
-/* memory.c -- the default allocator and the counting wrappers around the current one. */
+/* memory.c -- the default allocator, Karma's global MeMemoryAPI and the counting wrappers around it.
+ *
+ * The counters are atomic (relaxed: they are statistics, not synchronisation), so worlds stepping on
+ * several threads count correctly; MeMemoryAPI itself is read at every call and written only by the
+ * application before it starts threads. */
+#include <stdatomic.h>
+#include <limits.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,7 +15,7 @@
 
 /* Aligned blocks over-allocate and keep the original pointer just below the returned address, so the
  * default API needs nothing beyond C11's malloc family (aligned_alloc has size restrictions). */
-static void *defaultCreateAligned(size_t bytes, size_t alignment)
+static void *MEAPI defaultCreateAligned(size_t bytes, unsigned int alignment)
 {
     if (alignment < sizeof(void *))
         alignment = sizeof(void *);
@@ -22,7 +28,7 @@ static void *defaultCreateAligned(size_t bytes, size_t alignment)
     return (void *)aligned;
 }
 
-static void defaultDestroyAligned(void *block)
+static void MEAPI defaultDestroyAligned(void *const block)
 {
     if (!block)
         return;
@@ -31,27 +37,33 @@ static void defaultDestroyAligned(void *block)
     free(raw);
 }
 
-static void *defaultCreateZeroed(size_t bytes) { return calloc(1, bytes ? bytes : 1); }
-static void *defaultCreate(size_t bytes) { return malloc(bytes ? bytes : 1); }
+static void *MEAPI defaultCreateZeroed(size_t bytes) { return calloc(1, bytes ? bytes : 1); }
+static void *MEAPI defaultCreate(size_t bytes) { return malloc(bytes ? bytes : 1); }
+static void MEAPI defaultDestroy(void *const block) { free(block); }
+static void *MEAPI defaultResize(void *const block, size_t bytes) { return realloc(block, bytes); }
 
-static const MeMemoryAPI defaultAPI = {defaultCreate,  defaultCreateZeroed,   defaultCreateAligned,
-                                       free,           defaultDestroyAligned, realloc};
-static MeMemoryAPI currentAPI = {defaultCreate, defaultCreateZeroed, defaultCreateAligned,
-                                 free,          defaultDestroyAligned, realloc};
-static MeMemoryStats stats;
+#define DEFAULT_API_INITIALISER                                                                      \
+    {defaultCreate, defaultCreateZeroed, defaultCreateAligned, defaultDestroy, defaultDestroyAligned, defaultResize}
 
-void MeMemorySetAPI(const MeMemoryAPI *api)
+static const MeMemoryAPIStruct defaultAPI = DEFAULT_API_INITIALISER;
+MeMemoryAPIStruct MeMemoryAPI = DEFAULT_API_INITIALISER;
+
+static atomic_ulong allocationCount;
+static atomic_ulong freeCount;
+static atomic_ulong liveBlockCount;
+
+void MeMemorySetAPI(const MeMemoryAPIStruct *api)
 {
     if (api && !(api->create && api->createZeroed && api->createAligned && api->destroy && api->destroyAligned &&
                  api->resize)) {
         ME_REPORT(ME_ERR_NULL_ARGUMENT, "argument 'api' has a NULL member; the allocator was not changed");
         return;
     }
-    currentAPI = api ? *api : defaultAPI;
+    MeMemoryAPI = api ? *api : defaultAPI;
 }
 
-const MeMemoryAPI *MeMemoryGetAPI(void) { return &currentAPI; }
-const MeMemoryAPI *MeMemoryGetDefaultAPI(void) { return &defaultAPI; }
+const MeMemoryAPIStruct *MeMemoryGetAPI(void) { return &MeMemoryAPI; }
+const MeMemoryAPIStruct *MeMemoryGetDefaultAPI(void) { return &defaultAPI; }
 
 static void *counted(void *block, size_t bytes, const char *function)
 {
@@ -59,13 +71,13 @@ static void *counted(void *block, size_t bytes, const char *function)
         ME_REPORT_IN(function, ME_ERR_OUT_OF_MEMORY, "could not allocate %lu bytes", (unsigned long)bytes);
         return NULL;
     }
-    stats.allocations++;
-    stats.liveBlocks++;
+    atomic_fetch_add_explicit(&allocationCount, 1, memory_order_relaxed);
+    atomic_fetch_add_explicit(&liveBlockCount, 1, memory_order_relaxed);
     return block;
 }
 
-void *MeMemoryCreate(size_t bytes) { return counted(currentAPI.create(bytes), bytes, __func__); }
-void *MeMemoryCreateZeroed(size_t bytes) { return counted(currentAPI.createZeroed(bytes), bytes, __func__); }
+void *MeMemoryCreate(size_t bytes) { return counted(MeMemoryAPI.create(bytes), bytes, __func__); }
+void *MeMemoryCreateZeroed(size_t bytes) { return counted(MeMemoryAPI.createZeroed(bytes), bytes, __func__); }
 
 void *MeMemoryCreateAligned(size_t bytes, size_t alignment)
 {
@@ -73,42 +85,50 @@ void *MeMemoryCreateAligned(size_t bytes, size_t alignment)
         ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'alignment' (%lu) is not a power of two", (unsigned long)alignment);
         return NULL;
     }
-    return counted(currentAPI.createAligned(bytes, alignment), bytes, __func__);
+    if (alignment > UINT_MAX) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'alignment' (%lu) is too large", (unsigned long)alignment);
+        return NULL;
+    }
+    return counted(MeMemoryAPI.createAligned(bytes, (unsigned int)alignment), bytes, __func__);
 }
 
 void MeMemoryDestroy(void *block)
 {
     if (!block)
         return;
-    stats.frees++;
-    stats.liveBlocks--;
-    currentAPI.destroy(block);
+    atomic_fetch_add_explicit(&freeCount, 1, memory_order_relaxed);
+    atomic_fetch_sub_explicit(&liveBlockCount, 1, memory_order_relaxed);
+    MeMemoryAPI.destroy(block);
 }
 
 void MeMemoryDestroyAligned(void *block)
 {
     if (!block)
         return;
-    stats.frees++;
-    stats.liveBlocks--;
-    currentAPI.destroyAligned(block);
+    atomic_fetch_add_explicit(&freeCount, 1, memory_order_relaxed);
+    atomic_fetch_sub_explicit(&liveBlockCount, 1, memory_order_relaxed);
+    MeMemoryAPI.destroyAligned(block);
 }
 
 void *MeMemoryResize(void *block, size_t bytes)
 {
-    void *grown = currentAPI.resize(block, bytes ? bytes : 1);
+    void *grown = MeMemoryAPI.resize(block, bytes ? bytes : 1);
     if (!grown) {
         ME_REPORT(ME_ERR_OUT_OF_MEMORY, "could not resize a block to %lu bytes", (unsigned long)bytes);
         return NULL;
     }
-    stats.allocations++;
+    /* A resize counts as an allocation; only a resize of NULL adds a live block. */
+    atomic_fetch_add_explicit(&allocationCount, 1, memory_order_relaxed);
     if (!block)
-        stats.liveBlocks++;
+        atomic_fetch_add_explicit(&liveBlockCount, 1, memory_order_relaxed);
     return grown;
 }
 
 void MeMemoryGetStats(MeMemoryStats *out)
 {
-    if (out)
-        *out = stats;
+    if (!out)
+        return;
+    out->allocations = atomic_load_explicit(&allocationCount, memory_order_relaxed);
+    out->frees = atomic_load_explicit(&freeCount, memory_order_relaxed);
+    out->liveBlocks = atomic_load_explicit(&liveBlockCount, memory_order_relaxed);
 }

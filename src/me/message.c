@@ -1,9 +1,15 @@
-/* message.c -- the message hook: codes, levels, counters and the default handler.
+/* message.c -- the message hook: codes, levels, counters, the default handler and Karma 1.2's
+ * per-kind handlers and output functions.
  *
- * State is process-wide (handler, level, counters): Karma is not thread-safe, and an application
- * that runs worlds on several threads installs a handler that is. */
+ * Reporting may happen on several threads at once (worlds stepping in parallel): the counters and
+ * the last code are atomic, and the default handler formats into a buffer of its own call. The
+ * handler, the level and the 1.2 hooks are written only by the application, before threads start;
+ * a handler installed for threaded use must itself be thread-safe. */
+#include <limits.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <karma/MeMessage.h>
 
@@ -25,9 +31,9 @@ static MeMessageHandler currentHandler = MeDefaultMessageHandler;
 static void *currentUser = NULL;
 /* Information (a chunk grew) is counted but not shown unless asked for: a quiet default run. */
 static MeMessageLevel minimumLevel = ME_LEVEL_WARNING;
-static unsigned long counts[ME_ERR_CODE_LIMIT_];
-static unsigned long levelCounts[ME_LEVEL_FATAL + 1];
-static MeErrorCode lastCode = ME_ERR_NONE;
+static atomic_ulong counts[ME_ERR_CODE_LIMIT_];
+static atomic_ulong levelCounts[ME_LEVEL_FATAL + 1];
+static atomic_int lastCode = ME_ERR_NONE;
 
 static const MeErrorEntry *findEntry(MeErrorCode code)
 {
@@ -70,36 +76,85 @@ MeMessageLevel MeErrorCodeLevel(MeErrorCode code)
 
 unsigned long MeMessageGetCount(MeErrorCode code)
 {
-    return ((int)code >= 0 && code < ME_ERR_CODE_LIMIT_) ? counts[code] : 0;
+    return ((int)code >= 0 && code < ME_ERR_CODE_LIMIT_) ? atomic_load(&counts[code]) : 0;
 }
 
 unsigned long MeMessageGetTotalCount(MeMessageLevel level)
 {
     unsigned long total = 0;
     for (int l = (int)level; l <= ME_LEVEL_FATAL; l++)
-        total += levelCounts[l];
+        total += atomic_load(&levelCounts[l]);
     return total;
 }
 
 void MeMessageResetCounts(void)
 {
     for (int i = 0; i < ME_ERR_CODE_LIMIT_; i++)
-        counts[i] = 0;
+        atomic_store(&counts[i], 0);
     for (int l = 0; l <= ME_LEVEL_FATAL; l++)
-        levelCounts[l] = 0;
-    lastCode = ME_ERR_NONE;
+        atomic_store(&levelCounts[l], 0);
+    atomic_store(&lastCode, ME_ERR_NONE);
 }
 
-MeErrorCode MeMessageGetLastCode(void) { return lastCode; }
+MeErrorCode MeMessageGetLastCode(void) { return (MeErrorCode)atomic_load(&lastCode); }
+
+/* ------------------------------------------------------------------ Karma 1.2's output functions */
+
+MeShow MeInfoShow = MeShowStdout;
+MeShow MeLogShow = MeShowStdout;
+MeShow MeWarningShow = MeShowStderr;
+MeShow MeFatalErrorShow = MeShowStderr;
+MeShow MeDebugShow = MeShowStdout;
+
+void MEAPI MeShowStdout(const int level, const char *const string)
+{
+    (void)level;
+    fprintf(stdout, "%s\n", string);
+    fflush(stdout);
+}
+
+void MEAPI MeShowStderr(const int level, const char *const string)
+{
+    (void)level;
+    fprintf(stderr, "%s\n", string);
+    fflush(stderr);
+}
+
+/* A 1.2 setter: install n (NULL: the default) and return what was there. */
+#define ME_SETTER_(type, fnName, variable, fallback)                                                   \
+    type MEAPI fnName(type n)                                                                          \
+    {                                                                                                  \
+        type previous = variable;                                                                      \
+        variable = n ? n : fallback;                                                                   \
+        return previous;                                                                               \
+    }
+ME_SETTER_(MeShow, MeSetInfoShow, MeInfoShow, MeShowStdout)
+ME_SETTER_(MeShow, MeSetLogShow, MeLogShow, MeShowStdout)
+ME_SETTER_(MeShow, MeSetWarningShow, MeWarningShow, MeShowStderr)
+ME_SETTER_(MeShow, MeSetFatalErrorShow, MeFatalErrorShow, MeShowStderr)
+ME_SETTER_(MeShow, MeSetDebugShow, MeDebugShow, MeShowStdout)
+
+/* The function name the log kind reports under; the default handler routes it to MeLogShow. */
+static const char logFunctionName[] = "MeLog";
+
+static MeShow showFor(const MeMessageInfo *info)
+{
+    switch (info->level) {
+    case ME_LEVEL_DEBUG: return MeDebugShow;
+    case ME_LEVEL_INFO: return info->function == logFunctionName ? MeLogShow : MeInfoShow;
+    case ME_LEVEL_WARNING: return MeWarningShow;
+    default: return MeFatalErrorShow;
+    }
+}
 
 void MeDefaultMessageHandler(const MeMessageInfo *info, void *user)
 {
     static const char *const levelNames[] = {"debug", "info", "warning", "FATAL"};
+    char line[MeMAXMESSAGE + 128];
     (void)user;
-    FILE *out = info->level >= ME_LEVEL_WARNING ? stderr : stdout;
-    fprintf(out, "Karma %s [%s] in %s: %s\n", levelNames[info->level], MeErrorCodeName(info->code),
-            info->function ? info->function : "?", info->text);
-    fflush(out);
+    snprintf(line, sizeof line, "Karma %s [%s] in %s: %s", levelNames[info->level], MeErrorCodeName(info->code),
+             info->function ? info->function : "?", info->text);
+    showFor(info)(0, line);
     if (info->level == ME_LEVEL_FATAL)
         abort();
 }
@@ -107,12 +162,12 @@ void MeDefaultMessageHandler(const MeMessageInfo *info, void *user)
 static void dispatch(MeErrorCode code, MeMessageLevel level, const char *function, const char *file, int line,
                      const char *format, va_list args)
 {
-    char text[512];
+    char text[MeMAXMESSAGE];
     if ((int)code >= 0 && code < ME_ERR_CODE_LIMIT_)
-        counts[code]++;
-    levelCounts[level]++;
+        atomic_fetch_add(&counts[code], 1);
+    atomic_fetch_add(&levelCounts[level], 1);
     if (level >= ME_LEVEL_WARNING)
-        lastCode = code;
+        atomic_store(&lastCode, (int)code);
     if (level < minimumLevel && level != ME_LEVEL_FATAL)
         return;
     vsnprintf(text, sizeof text, format, args);
@@ -134,17 +189,62 @@ void MeReport(MeErrorCode code, const char *function, const char *file, int line
     va_end(args);
 }
 
-#define ME_USER_MESSAGE_(fnName, lvl)                                                                  \
-    void fnName(int level, const char *format, ...)                                                    \
+/* ---------------------------------------------------------------- Karma 1.2's kind handlers */
+
+int MeInfoLevel = INT_MAX;
+int MeLogLevel = INT_MAX;
+int MeWarningLevel = INT_MAX;
+int MeFatalErrorLevel = INT_MAX;
+int MeDebugLevel = INT_MAX;
+
+#define ME_KIND_HANDLER_(fnName, cutoff, lvl, name, alwaysShown)                                       \
+    void MEAPI fnName(const int level, const char *const format, va_list ap)                          \
+    {                                                                                                  \
+        if (level > (cutoff) && !(alwaysShown))                                                        \
+            return;                                                                                    \
+        dispatch(ME_ERR_USER_MESSAGE, lvl, name, "application", 0, format, ap);                       \
+    }
+ME_KIND_HANDLER_(MeHandlerInfo, MeInfoLevel, ME_LEVEL_INFO, "MeInfo", 0)
+ME_KIND_HANDLER_(MeHandlerLog, MeLogLevel, ME_LEVEL_INFO, logFunctionName, 0)
+ME_KIND_HANDLER_(MeHandlerWarning, MeWarningLevel, ME_LEVEL_WARNING, "MeWarning", 0)
+ME_KIND_HANDLER_(MeHandlerFatalError, MeFatalErrorLevel, ME_LEVEL_FATAL, "MeFatalError", 1)
+ME_KIND_HANDLER_(MeHandlerDebug, MeDebugLevel, ME_LEVEL_DEBUG, "MeDebug", 0)
+
+MeHandler MeInfoHandler = MeHandlerInfo;
+MeHandler MeLogHandler = MeHandlerLog;
+MeHandler MeWarningHandler = MeHandlerWarning;
+MeHandler MeFatalErrorHandler = MeHandlerFatalError;
+MeHandler MeDebugHandler = MeHandlerDebug;
+
+ME_SETTER_(MeHandler, MeSetInfoHandler, MeInfoHandler, MeHandlerInfo)
+ME_SETTER_(MeHandler, MeSetLogHandler, MeLogHandler, MeHandlerLog)
+ME_SETTER_(MeHandler, MeSetWarningHandler, MeWarningHandler, MeHandlerWarning)
+ME_SETTER_(MeHandler, MeSetFatalErrorHandler, MeFatalErrorHandler, MeHandlerFatalError)
+ME_SETTER_(MeHandler, MeSetDebugHandler, MeDebugHandler, MeHandlerDebug)
+
+#define ME_USER_MESSAGE_(fnName, handler)                                                              \
+    void MEAPI fnName(const int level, const char *const format, ...)                                 \
     {                                                                                                  \
         va_list args;                                                                                  \
-        (void)level;                                                                                   \
         va_start(args, format);                                                                        \
-        dispatch(ME_ERR_USER_MESSAGE, lvl, #fnName, "application", 0, format, args);                  \
+        (handler)(level, format, args);                                                                \
         va_end(args);                                                                                  \
     }
 
-ME_USER_MESSAGE_(MeFatalError, ME_LEVEL_FATAL)
-ME_USER_MESSAGE_(MeWarning, ME_LEVEL_WARNING)
-ME_USER_MESSAGE_(MeInfo, ME_LEVEL_INFO)
-ME_USER_MESSAGE_(MeDebug, ME_LEVEL_DEBUG)
+ME_USER_MESSAGE_(MeInfo, MeInfoHandler)
+ME_USER_MESSAGE_(MeLog, MeLogHandler)
+ME_USER_MESSAGE_(MeWarning, MeWarningHandler)
+ME_USER_MESSAGE_(MeFatalError, MeFatalErrorHandler)
+ME_USER_MESSAGE_(MeDebug, MeDebugHandler)
+
+char *MEAPI MeShortenPath(char *path)
+{
+    char *slash, *backslash;
+    if (!path)
+        return path;
+    slash = strrchr(path, '/');
+    backslash = strrchr(path, '\\');
+    if (backslash > slash)
+        slash = backslash;
+    return slash ? slash + 1 : path;
+}

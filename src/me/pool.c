@@ -10,6 +10,7 @@ MeBool MePoolInit(MePool *pool, int poolSize, size_t structSize, size_t alignmen
                   MeU32 firstGeneration)
 {
     memset(pool, 0, sizeof *pool);
+    pool->type = MePoolFIXED;
     if (poolSize < 0 || structSize == 0)
         return MEFALSE;
     if (alignment == 0)

@@ -64,7 +64,7 @@ static int findSection(const MeProfile *profile, const char *name)
     return -1;
 }
 
-void MeProfileStartSection(MeProfile *profile, const char *name)
+void MeProfileSectionStart(MeProfile *profile, const char *name)
 {
     if (!profile->enabled)
         return;
@@ -86,7 +86,7 @@ void MeProfileStartSection(MeProfile *profile, const char *name)
     profile->depth++;
 }
 
-void MeProfileEndSection(MeProfile *profile, const char *name)
+void MeProfileSectionEnd(MeProfile *profile, const char *name)
 {
     if (!profile->enabled || profile->depth == 0)
         return;
@@ -109,7 +109,7 @@ const MeProfileSection *MeProfileGetSection(const MeProfile *profile, const char
     return i < 0 ? NULL : &profile->sections[i];
 }
 
-double MeProfileGetSectionTime(const MeProfile *profile, const char *name)
+double MeProfileGetSectionFrameTime(const MeProfile *profile, const char *name)
 {
     const MeProfileSection *s = MeProfileGetSection(profile, name);
     return s ? s->lastFrameTime : 0.0;

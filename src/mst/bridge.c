@@ -223,8 +223,8 @@ static int matchContacts(MdtContactGroupID g, const McdContact *in, int n, MdtCo
 /* Test one pair and convert its contacts; returns the number of dynamics contacts made. */
 static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
 {
-    McdModel *m1 = McdModelFromID(pair->model1, __func__);
-    McdModel *m2 = McdModelFromID(pair->model2, __func__);
+    McdModelData *m1 = McdModelFromID(pair->model1, __func__);
+    McdModelData *m2 = McdModelFromID(pair->model2, __func__);
     if (!m1 || !m2)
         return 0;
     MdtBodyID b1 = (MdtBodyID)m1->body, b2 = (MdtBodyID)m2->body;
@@ -318,7 +318,7 @@ void MstBridgeUpdateContacts(MstBridgeID id, McdSpaceID space, MdtWorldID world)
 /* ---- linking models and bodies -------------------------------------------------------------- */
 
 /* The model the bridge linked to a body, or NULL (quietly: the model may have been destroyed). */
-static McdModel *linkedModel(MdtBodyID body)
+static McdModelData *linkedModel(MdtBodyID body)
 {
     MdtBodyData *bd = MdtBodyFromID(body, "MstSetWorldHandlers");
     if (!bd || !bd->bridgeModel || !MeHandleIsValid(bd->bridgeModel, ME_HANDLE_MODEL))
@@ -329,7 +329,7 @@ static McdModel *linkedModel(MdtBodyID body)
 static void onBodyEnabled(MdtBodyID body, void *data)
 {
     (void)data;
-    McdModel *m = linkedModel(body);
+    McdModelData *m = linkedModel(body);
     if (m && m->space && m->frozen)
         McdSpaceUnfreezeModel((McdModelID)m->id);
 }
@@ -337,7 +337,7 @@ static void onBodyEnabled(MdtBodyID body, void *data)
 static void onBodyDisabled(MdtBodyID body, void *data)
 {
     (void)data;
-    McdModel *m = linkedModel(body);
+    McdModelData *m = linkedModel(body);
     if (m && m->space && !m->frozen) {
         /* A frozen model's box is not updated again: take the body's pose now, for a body placed and
          * disabled by the application before the space saw it move (auto-disable, inside the step,
@@ -365,7 +365,7 @@ void MstSetWorldHandlers(MdtWorldID world)
 
 void McdModelSetBody(McdModelID id, MdtBodyID body)
 {
-    McdModel *m = McdModelFromID(id, __func__);
+    McdModelData *m = McdModelFromID(id, __func__);
     if (!m)
         return;
     MdtBodyData *bd = NULL;
@@ -388,6 +388,6 @@ void McdModelSetBody(McdModelID id, MdtBodyID body)
 
 MdtBodyID McdModelGetBody(McdModelID id)
 {
-    McdModel *m = McdModelFromID(id, __func__);
+    McdModelData *m = McdModelFromID(id, __func__);
     return m ? (MdtBodyID)m->body : NULL;
 }

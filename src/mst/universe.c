@@ -237,14 +237,14 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
         return;
     MeProfile *prof = &u->profile;
     MeProfileFrameStart(prof);
-    MeProfileStartSection(prof, MST_SECTION_COLLISION);
-    MeProfileStartSection(prof, MST_SECTION_FARFIELD);
+    MeProfileSectionStart(prof, MST_SECTION_COLLISION);
+    MeProfileSectionStart(prof, MST_SECTION_FARFIELD);
     McdSpaceUpdateAll(u->space);
-    MeProfileEndSection(prof, MST_SECTION_FARFIELD);
-    MeProfileStartSection(prof, MST_SECTION_NEARFIELD);
+    MeProfileSectionEnd(prof, MST_SECTION_FARFIELD);
+    MeProfileSectionStart(prof, MST_SECTION_NEARFIELD);
     MstBridgeUpdateContacts(u->bridge, u->space, u->world);
-    MeProfileEndSection(prof, MST_SECTION_NEARFIELD);
-    MeProfileEndSection(prof, MST_SECTION_COLLISION);
+    MeProfileSectionEnd(prof, MST_SECTION_NEARFIELD);
+    MeProfileSectionEnd(prof, MST_SECTION_COLLISION);
     MeProfileFrameEnd(prof);
     MdtWorldStep(u->world, stepSize);
 }

@@ -31,8 +31,7 @@ static inline TestShape test_shape_of(McdGeometryID g)
         s.radius = McdSphereGetRadius(g);
         break;
     case kMcdGeometryTypeBox: {
-        MeVector3 r;
-        McdBoxGetRadii(g, r);
+        const MeReal *r = McdBoxGetRadii(g);
         s.radii[0] = r[0], s.radii[1] = r[1], s.radii[2] = r[2];
         break;
     }

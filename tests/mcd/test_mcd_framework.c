@@ -11,7 +11,7 @@
 /* ---- a fake pair test: one contact at the midpoint of the two origins, normal 2 -> 1 ------------ */
 static int fakeCalls;
 static int fakeFirstType;
-static int fakeTest(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2, MeReal tolerance,
+static int fakeTest(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2, MeReal tolerance,
                     McdContact *contacts, int maxContacts, void **cache)
 {
     (void)g2, (void)tolerance, (void)maxContacts;
@@ -52,9 +52,9 @@ static void term_actions(void **state)
     static int tags[17];
     for (int i = 0; i < 16; i++) {
         tags[i] = i;
-        assert_true(McdFrameworkRegisterTermAction(fw, termAction, &tags[i]));
+        assert_true(McdFrameworkAddTermAction(fw, termAction, &tags[i]));
     }
-    assert_reports(ME_ERR_POOL_FULL, assert_false(McdFrameworkRegisterTermAction(fw, termAction, &tags[16])));
+    assert_reports(ME_ERR_POOL_FULL, assert_false(McdFrameworkAddTermAction(fw, termAction, &tags[16])));
     termCount = 0;
     McdTerm(fw);
     assert_int_equal(termCount, 16);
@@ -74,9 +74,9 @@ static void init_defaults_and_term(void **state)
     printf("default contact tolerance at lengthScale 2: %g\n", (double)McdFrameworkGetDefaultContactTolerance(fw));
     McdRequest *rq = McdFrameworkGetDefaultRequestPtr(fw);
     assert_int_equal(rq->contactMaxCount, 4);
-    assert_int_equal(McdFrameworkGetGeometryTypeCount(fw), kMcdGeometryBuiltInTypes);
-    assert_string_equal(McdFrameworkGetGeometryTypeName(fw, kMcdGeometryTypeCone), "Cone");
-    assert_null(McdFrameworkGetGeometryTypeName(fw, kMcdGeometryTypeConvexMesh)); /* not yet registered */
+    assert_int_equal(McdFrameworkGetRegisteredTypeCount(fw), kMcdGeometryBuiltInTypes);
+    assert_string_equal(McdFrameworkGetTypeName(fw, kMcdGeometryTypeCone), "Cone");
+    assert_null(McdFrameworkGetTypeName(fw, kMcdGeometryTypeConvexMesh)); /* not yet registered */
     assert_true(McdPrimitivesRegisterTypes(fw));
     assert_int_equal(McdPrimitivesGetTypeCount(), 7);
     McdGeometryID s = McdSphereCreate(fw, 1);
@@ -191,20 +191,20 @@ static void user_geometry_type(void **state)
     karma_capture_messages();
     McdFrameworkID fw = McdInit(2, 5, 0, 1);
     McdGeometryTypeDesc desc = {"Cube", cubeDestroy, cubeAABB, cubeBSphere, cubeSupport, cubeMass, NULL, NULL};
-    int type = McdFrameworkRegisterGeometryType(fw, &desc);
+    int type = McdFrameworkRegisterUserGeometryType(fw, &desc);
     assert_int_equal(type, kMcdGeometryBuiltInTypes);
-    assert_string_equal(McdFrameworkGetGeometryTypeName(fw, type), "Cube");
+    assert_string_equal(McdFrameworkGetTypeName(fw, type), "Cube");
     /* The same cube with the protocol's line-segment test. */
     McdGeometryTypeDesc segDesc = desc;
     segDesc.typeName = "SegCube";
     segDesc.lineSegIntersect = cubeLineSeg;
-    int segType = McdFrameworkRegisterGeometryType(fw, &segDesc);
+    int segType = McdFrameworkRegisterUserGeometryType(fw, &segDesc);
     assert_int_equal(segType, kMcdGeometryBuiltInTypes + 1);
     /* Room for two user types only. */
-    assert_reports(ME_ERR_POOL_FULL, assert_int_equal(McdFrameworkRegisterGeometryType(fw, &desc), -1));
+    assert_reports(ME_ERR_POOL_FULL, assert_int_equal(McdFrameworkRegisterUserGeometryType(fw, &desc), -1));
     McdGeometryTypeDesc bad = desc;
     bad.maximumPoint = NULL;
-    assert_reports(ME_ERR_NULL_ARGUMENT, assert_int_equal(McdFrameworkRegisterGeometryType(fw, &bad), -1));
+    assert_reports(ME_ERR_NULL_ARGUMENT, assert_int_equal(McdFrameworkRegisterUserGeometryType(fw, &bad), -1));
 
     MeReal half = ME_R(0.5);
     McdGeometryID g = McdUserGeometryCreate(fw, type, &half);
@@ -226,7 +226,7 @@ static void user_geometry_type(void **state)
     assert_near(p[1], 1.5, 1e-6);
     MeMatrix3 I;
     MeReal v;
-    assert_true(McdGeometryGetMassProperties(g, NULL, I, &v));
+    assert_int_equal(McdGeometryGetMassProperties(g, NULL, I, &v), 0);
     assert_near(v, 1, 1e-6);
     assert_near(I[1][1], 1.0 / 6, 1e-6);
     /* A model of a user geometry: updates use its AABB; segments never hit (no function given). */
@@ -314,7 +314,7 @@ static void interaction_table_one_way_and_swap(void **state)
     (void)state;
     karma_capture_messages();
     McdFrameworkID fwId = McdInit(0, 8, 0, 1);
-    McdFramework *fw = McdFrameworkFromID(fwId, "test");
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, "test");
     /* Registered for (Box, Sphere) only. */
     assert_true(McdFrameworkSetInteractionWithCache(fw, kMcdGeometryTypeBox, kMcdGeometryTypeSphere, fakeTest,
                                                     fakeRelease));
@@ -415,7 +415,7 @@ static void every_primitive_pair_has_a_test(void **state)
 {
     (void)state;
     McdFrameworkID fwId = McdInit(0, 1, 0, 1);
-    McdFramework *fw = McdFrameworkFromID(fwId, "test");
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, "test");
     McdPrimitivesRegisterInteractions(fwId);
     static const int prims[] = {kMcdGeometryTypeSphere, kMcdGeometryTypeBox, kMcdGeometryTypePlane,
                                 kMcdGeometryTypeCylinder, kMcdGeometryTypeSphyl, kMcdGeometryTypeCone};

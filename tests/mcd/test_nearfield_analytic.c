@@ -17,7 +17,7 @@ static const double S3 = 0.57735026918962576; /* 1/sqrt 3 */
 
 typedef struct Case {
     const char *name;
-    McdGeometry g1, g2;
+    McdGeometryData g1, g2;
     MeMatrix4 tm1, tm2;
     int minCount, maxCount;
     double n[3], sep, tol;
@@ -309,7 +309,7 @@ static void plane_cases(void **state)
 /* ---- every pair, systematically -------------------------------------------------------------- */
 typedef struct AxisShape {
     const char *name;
-    McdGeometry g;
+    McdGeometryData g;
     double top, bottom;      /* extent above and below the origin along z */
     int flatTop, flatBottom; /* a face there (box, cylinder cap, cone base, plane) */
     double e[3];             /* half extents along x, y, z (symmetric shapes) */
@@ -369,7 +369,7 @@ static void every_pair_stacked_on_axis(void **state)
 }
 
 /* Deepest contact of g1 at the origin and g2 at the origin (turned by tm2's rotation only). */
-static void coincident(const char *name, const McdGeometry *g1, const McdGeometry *g2, double depth, int axis)
+static void coincident(const char *name, const McdGeometryData *g1, const McdGeometryData *g2, double depth, int axis)
 {
     Case c;
     const double e = ME_TOL(1e-7, 2e-5);
@@ -444,7 +444,7 @@ static void every_pair_coincident_centres(void **state)
 /* Four contacts on a face are its corners (well spread), not four points bunched together. */
 static void face_contacts_are_the_corners(void **state)
 {
-    McdGeometry box, plane, base;
+    McdGeometryData box, plane, base;
     MeMatrix4 tb, tp, t0;
     McdContact k[4];
     int n, i, j, corner;
@@ -494,7 +494,7 @@ static void face_contacts_are_the_corners(void **state)
 /* maxContacts is respected, and zero room gives zero contacts. */
 static void max_contacts(void **state)
 {
-    McdGeometry a, b;
+    McdGeometryData a, b;
     MeMatrix4 t1, t2;
     McdContact k[4];
     int m;

@@ -25,7 +25,7 @@ typedef struct Stats {
     double worstRef, worstDeep;
 } Stats;
 
-static void randomGeometry(RefRng *r, McdGeometry *g, int type)
+static void randomGeometry(RefRng *r, McdGeometryData *g, int type)
 {
     switch (type) {
     case kMcdGeometryTypeSphere:
@@ -54,7 +54,7 @@ static void randomGeometry(RefRng *r, McdGeometry *g, int type)
 static double maxd(double a, double b) { return a > b ? a : b; }
 
 /* Check one contact set against the references; returns the deepest separation (or 1e300). */
-static double checkContacts(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+static double checkContacts(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                             const McdContact *c, int n, Stats *st, double *nDeep)
 {
     double deepest = 1e300;
@@ -92,7 +92,7 @@ static void run_pair(void **state)
     int pose;
     MeBool generic = e->fn == McdNfConvexConvex || e->type1 == e->type2;
     for (pose = 0; pose < POSES; pose++) {
-        McdGeometry g1, g2;
+        McdGeometryData g1, g2;
         MeMatrix4 tm1, tm2;
         McdContact c[8], cs[8];
         /* n1: the deepest contact's normal (2 -> 1); m1 = -n1, the direction the references measure

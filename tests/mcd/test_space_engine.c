@@ -31,7 +31,7 @@ typedef struct LiveEntry {
 } LiveEntry;
 
 typedef struct Sim {
-    McdSpace *s;
+    McdSpaceData *s;
     McdSpaceID id;
     int axes;
     int nextId;
@@ -441,7 +441,7 @@ static void pool_full(void **state)
 {
     (void)state;
     karma_capture_messages();
-    McdSpace *s = McdSpaceCreateInternal(NULL, McdAllAxes, 20, 50, "test");
+    McdSpaceData *s = McdSpaceCreateInternal(NULL, McdAllAxes, 20, 50, "test");
     McdSpaceID id = (McdSpaceID)s->id;
     McdSpaceSetPoolFullHandler(id, onPoolFull);
     int slot[20];
@@ -501,7 +501,7 @@ static void change_block_misuse(void **state)
 {
     (void)state;
     karma_capture_messages();
-    McdSpace *s = McdSpaceCreateInternal(NULL, McdAllAxes, 4, 4, "test");
+    McdSpaceData *s = McdSpaceCreateInternal(NULL, McdAllAxes, 4, 4, "test");
     McdSpaceID id = (McdSpaceID)s->id;
     McdModelPairContainer *c = McdModelPairContainerCreate(4);
     McdSpacePairIterator it;

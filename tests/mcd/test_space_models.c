@@ -443,7 +443,7 @@ static void misuse_and_full_pools(void **state)
     McdTerm(fw);
 }
 
-static MeBool even(McdModelID m, void *data)
+static int even(McdModelID m, void *data)
 {
     (void)data;
     return McdModelGetSortKey(m) % 2 == 0;
@@ -499,7 +499,7 @@ static void line_segments(void **state)
             assert_true(first.distance == all[0].distance);
         }
         /* Only models with even sort keys. */
-        got = McdSpaceGetLineSegFirstEnabledIntersection(s.space, p0, p1, &first, even, NULL);
+        got = McdSpaceGetLineSegFirstEnabledIntersection(s.space, p0, p1, even, NULL, &first);
         assert_int_equal(got, bestEven >= 0);
         if (got)
             assert_true(first.distance == dist[bestEven]);

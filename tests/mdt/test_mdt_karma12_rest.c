@@ -12,9 +12,9 @@
 #include <karma/MdtCheckMacros.h>
 #include <karma/MdtKea.h>
 #include <karma/MdtPartition.h>
+#include <karma/MeDebugDraw.h>
 
 #include "mdt/constraint.h"
-#include "mdt/world.h"
 
 /* The contacts of a group, in list order; returns how many. */
 static int groupList(MdtContactGroupID g, MdtContactID *out, int max)
@@ -269,7 +269,7 @@ typedef struct Line {
 static Line lines[8];
 static int lineCount;
 
-static void recordLine(const MeVector3 start, const MeVector3 end, MeReal r, MeReal g, MeReal b)
+static void MEAPI recordLine(MeVector3 start, MeVector3 end, MeReal r, MeReal g, MeReal b)
 {
     if (lineCount < 8) {
         Line *l = &lines[lineCount];
@@ -296,7 +296,8 @@ static void debug_drawing_draws_contacts_and_forces(void **state)
     MdtContactSetNormal(c, 0, 1, 0);
     MdtContactSetPenetration(c, 0.01f);
     MdtContactGroupEnable(g);
-    MdtDebugLineHook = recordLine;
+    MeDebugLineFuncPtr previous = MeDebugDrawAPI.line;
+    MeDebugDrawAPI.line = recordLine;
     lineCount = 0;
     MdtWorldStep(w, 0.01f);
     assert_int_equal(lineCount, 0); /* off by default */
@@ -337,7 +338,7 @@ static void debug_drawing_draws_contacts_and_forces(void **state)
     lineCount = 0;
     MdtWorldStep(w, 0.01f);
     assert_int_equal(lineCount, 0);
-    MdtDebugLineHook = NULL;
+    MeDebugDrawAPI.line = previous;
     MdtWorldDestroy(w);
 }
 

@@ -294,7 +294,7 @@ static void test_cross_from_vector(void **state)
         MeVector3 v, u, a, b;
         RandomVector(v, 3);
         RandomVector(u, 3);
-        MeMatrix3CrossFromVector(S, v);
+        MeMatrix3MakeCrossProduct(S, v);
         MeMatrix3MultiplyVector(a, S, u);
         MeVector3Cross(b, v, u);
         assert_vec3_near(a, b, TOL_CHAIN);

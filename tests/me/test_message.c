@@ -134,7 +134,7 @@ static void *failingCreate(size_t n)
 static void replaced_allocator_is_used(void **state)
 {
     (void)state;
-    MeMemoryAPI api = *MeMemoryGetDefaultAPI();
+    MeMemoryAPIStruct api = *MeMemoryGetDefaultAPI();
     api.create = failingCreate;
     MeMemorySetAPI(&api);
     karma_capture_messages();

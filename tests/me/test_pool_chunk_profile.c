@@ -55,7 +55,7 @@ static void chunk_doubles_and_reports(void **state)
     (void)state;
     karma_capture_messages();
     MeChunk chunk;
-    MeChunkInit(&chunk, "test");
+    MeChunkInitNamed(&chunk, "test");
     void *m = MeChunkGetMem(&chunk, 100);
     assert_non_null(m);
     assert_int_equal(MeChunkGetCurrentSize(&chunk), ME_CHUNK_DEFAULT_SIZE);
@@ -87,28 +87,28 @@ static void profile_times_sections(void **state)
     MeProfileSetTimer(&p, fakeTimer);
     fakeNow = 10;
     MeProfileFrameStart(&p);
-    MeProfileStartSection(&p, "Dynamics");
+    MeProfileSectionStart(&p, "Dynamics");
     fakeNow = 10.5;
-    MeProfileStartSection(&p, "Solve");
+    MeProfileSectionStart(&p, "Solve");
     fakeNow = 10.75;
-    MeProfileEndSection(&p, "Solve");
-    MeProfileStartSection(&p, "Solve");
+    MeProfileSectionEnd(&p, "Solve");
+    MeProfileSectionStart(&p, "Solve");
     fakeNow = 11.0;
-    MeProfileEndSection(&p, "Solve");
-    MeProfileEndSection(&p, "Dynamics");
+    MeProfileSectionEnd(&p, "Solve");
+    MeProfileSectionEnd(&p, "Dynamics");
     MeProfileFrameEnd(&p);
     MeProfileFrameStart(&p); /* the frame just ended becomes "last frame" */
-    assert_near(MeProfileGetSectionTime(&p, "Dynamics"), 1.0, 1e-12);
-    assert_near(MeProfileGetSectionTime(&p, "Solve"), 0.5, 1e-12);
+    assert_near(MeProfileGetSectionFrameTime(&p, "Dynamics"), 1.0, 1e-12);
+    assert_near(MeProfileGetSectionFrameTime(&p, "Solve"), 0.5, 1e-12);
     assert_int_equal(MeProfileGetSection(&p, "Solve")->calls, 2);
     assert_near(MeProfileGetSectionTotal(&p, "Solve"), 0.5, 1e-12);
     assert_int_equal(MeProfileGetSectionCount(&p), 2);
     assert_null(MeProfileGetSection(&p, "Nope"));
 
     karma_capture_messages();
-    MeProfileStartSection(&p, "A");
-    assert_reports(ME_ERR_PROFILE_NESTING, MeProfileEndSection(&p, "B"));
-    MeProfileEndSection(&p, "A");
+    MeProfileSectionStart(&p, "A");
+    assert_reports(ME_ERR_PROFILE_NESTING, MeProfileSectionEnd(&p, "B"));
+    MeProfileSectionEnd(&p, "A");
 }
 
 int main(void)

@@ -6,19 +6,19 @@
 
 #define REF_PI 3.14159265358979323846
 
-static void zeroGeometry(McdGeometry *g, int type)
+static void zeroGeometry(McdGeometryData *g, int type)
 {
     memset(g, 0, sizeof *g);
     g->type = type;
 }
 
-void ref_make_sphere(McdGeometry *g, double r)
+void ref_make_sphere(McdGeometryData *g, double r)
 {
     zeroGeometry(g, kMcdGeometryTypeSphere);
     g->u.sphere.radius = (MeReal)r;
 }
 
-void ref_make_box(McdGeometry *g, double dx, double dy, double dz)
+void ref_make_box(McdGeometryData *g, double dx, double dy, double dz)
 {
     zeroGeometry(g, kMcdGeometryTypeBox);
     g->u.box.radii[0] = (MeReal)(0.5 * dx);
@@ -26,21 +26,21 @@ void ref_make_box(McdGeometry *g, double dx, double dy, double dz)
     g->u.box.radii[2] = (MeReal)(0.5 * dz);
 }
 
-void ref_make_cylinder(McdGeometry *g, double r, double height)
+void ref_make_cylinder(McdGeometryData *g, double r, double height)
 {
     zeroGeometry(g, kMcdGeometryTypeCylinder);
     g->u.cylinder.radius = (MeReal)r;
     g->u.cylinder.halfHeight = (MeReal)(0.5 * height);
 }
 
-void ref_make_sphyl(McdGeometry *g, double r, double height)
+void ref_make_sphyl(McdGeometryData *g, double r, double height)
 {
     zeroGeometry(g, kMcdGeometryTypeSphyl);
     g->u.sphyl.radius = (MeReal)r;
     g->u.sphyl.halfHeight = (MeReal)(0.5 * height);
 }
 
-void ref_make_cone(McdGeometry *g, double a, double b, double h)
+void ref_make_cone(McdGeometryData *g, double a, double b, double h)
 {
     /* centroid of a frustum with radii a (z = 0) and b (z = h): h (a^2 + 2ab + 3b^2) / (4 (a^2 + ab + b^2)) */
     double zc = h * (a * a + 2 * a * b + 3 * b * b) / (4 * (a * a + a * b + b * b));
@@ -51,7 +51,7 @@ void ref_make_cone(McdGeometry *g, double a, double b, double h)
     g->u.cone.zUpper = (MeReal)(h - zc);
 }
 
-void ref_make_plane(McdGeometry *g) { zeroGeometry(g, kMcdGeometryTypePlane); }
+void ref_make_plane(McdGeometryData *g) { zeroGeometry(g, kMcdGeometryTypePlane); }
 
 double ref_uniform(RefRng *r, double lo, double hi)
 {
@@ -148,7 +148,7 @@ static double revolvedSdf(double rho, double z, double rl, double ru, double zl,
     return inside ? -d : d;
 }
 
-double ref_sdf(const McdGeometry *g, MeMatrix4 tm, const double p[3])
+double ref_sdf(const McdGeometryData *g, MeMatrix4 tm, const double p[3])
 {
     double l[3];
     toLocal(tm, p, l);
@@ -185,7 +185,7 @@ double ref_sdf(const McdGeometry *g, MeMatrix4 tm, const double p[3])
     }
 }
 
-double ref_support(const McdGeometry *g, MeMatrix4 tm, const double d[3])
+double ref_support(const McdGeometryData *g, MeMatrix4 tm, const double d[3])
 {
     double c = tm[3][0] * d[0] + tm[3][1] * d[1] + tm[3][2] * d[2];
     double a[3];
@@ -212,13 +212,13 @@ double ref_support(const McdGeometry *g, MeMatrix4 tm, const double d[3])
     }
 }
 
-double ref_overlap(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2, const double n[3])
+double ref_overlap(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2, const double n[3])
 {
     double m[3] = {-n[0], -n[1], -n[2]};
     return ref_support(g1, tm1, n) + ref_support(g2, tm2, m);
 }
 
-static double planeSigned(const McdGeometry *g, MeMatrix4 tm, MeMatrix4 plane, double nOut[3])
+static double planeSigned(const McdGeometryData *g, MeMatrix4 tm, MeMatrix4 plane, double nOut[3])
 {
     double N[3] = {plane[2][0], plane[2][1], plane[2][2]}, m[3] = {-N[0], -N[1], -N[2]};
     double lowest = -ref_support(g, tm, m); /* min over the shape of x . N */
@@ -233,7 +233,7 @@ static double planeSigned(const McdGeometry *g, MeMatrix4 tm, MeMatrix4 plane, d
 
 /* Overlap along the unit direction n(u, v) = normalize(n0 + u e1 + v e2). */
 typedef struct Local {
-    const McdGeometry *g1, *g2;
+    const McdGeometryData *g1, *g2;
     MeReal (*tm1)[4];
     MeReal (*tm2)[4];
     double n0[3], e1[3], e2[3];
@@ -252,7 +252,7 @@ static double localOverlap(const Local *L, const double x[2], double n[3])
 }
 
 /* Nelder-Mead in the tangent plane of n (restarted: the overlap has ridges where features change). */
-static double refine(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2, double n[3])
+static double refine(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2, double n[3])
 {
     double f = ref_overlap(g1, tm1, g2, tm2, n);
     int restart;
@@ -336,7 +336,7 @@ static double refine(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2
     return f;
 }
 
-double ref_signed_distance(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+double ref_signed_distance(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                            double nOut[3])
 {
     enum { K = 1200, KEEP = 4, SEEDS = KEEP + 30 };
@@ -416,7 +416,7 @@ double ref_signed_distance(const McdGeometry *g1, MeMatrix4 tm1, const McdGeomet
     return -result;
 }
 
-double ref_box_box_sat(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2)
+double ref_box_box_sat(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2)
 {
     double axes[15][3], T[3], best = 1e300;
     int n = 0, i, j, k;
@@ -456,7 +456,7 @@ double ref_box_box_sat(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *
     return best;
 }
 
-double ref_size(const McdGeometry *g)
+double ref_size(const McdGeometryData *g)
 {
     switch (g->type) {
     case kMcdGeometryTypeSphere:

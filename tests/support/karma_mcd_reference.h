@@ -8,14 +8,14 @@
 
 #include "mcd/mcd_internal.h"
 
-void ref_make_sphere(McdGeometry *g, double r);
-void ref_make_box(McdGeometry *g, double dx, double dy, double dz); /* full edge lengths */
-void ref_make_cylinder(McdGeometry *g, double r, double height);
-void ref_make_sphyl(McdGeometry *g, double r, double height);       /* height of the cylinder part */
+void ref_make_sphere(McdGeometryData *g, double r);
+void ref_make_box(McdGeometryData *g, double dx, double dy, double dz); /* full edge lengths */
+void ref_make_cylinder(McdGeometryData *g, double r, double height);
+void ref_make_sphyl(McdGeometryData *g, double r, double height);       /* height of the cylinder part */
 /* a cone along z, lower radius at the base, upper radius (0: pointed) at height above the base;
  * the origin is its centre of mass */
-void ref_make_cone(McdGeometry *g, double lowerRadius, double upperRadius, double height);
-void ref_make_plane(McdGeometry *g);
+void ref_make_cone(McdGeometryData *g, double lowerRadius, double upperRadius, double height);
+void ref_make_plane(McdGeometryData *g);
 
 /** xorshift generator, deterministic on every platform. */
 typedef struct RefRng { uint64_t s; } RefRng;
@@ -26,20 +26,20 @@ void ref_random_tm(RefRng *r, MeMatrix4 tm, double x, double y, double z);
 void ref_tm_axis_angle(MeMatrix4 tm, double ax, double ay, double az, double angle, double x, double y, double z);
 
 /** Signed distance from the world point p to the surface of g at tm (< 0 inside). Plane: height. */
-double ref_sdf(const McdGeometry *g, MeMatrix4 tm, const double p[3]);
+double ref_sdf(const McdGeometryData *g, MeMatrix4 tm, const double p[3]);
 /** Support value max over the shape of x . d (world, d unit). */
-double ref_support(const McdGeometry *g, MeMatrix4 tm, const double d[3]);
+double ref_support(const McdGeometryData *g, MeMatrix4 tm, const double d[3]);
 /** Overlap extent along the unit n (1 -> 2): h1(n) + h2(-n). */
-double ref_overlap(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2, const double n[3]);
+double ref_overlap(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2, const double n[3]);
 /** Signed distance between two convex shapes (< 0: penetration depth) = -min_n overlap(n), with the
  *  minimising direction in nOut (may be NULL). Plane as geometry 2: exact. */
-double ref_signed_distance(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+double ref_signed_distance(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                            double nOut[3]);
 /** Box-box penetration by the fifteen separating axes (> 0 overlap, < 0 a separating gap along the
  *  best axis; a lower bound of the distance when apart). */
-double ref_box_box_sat(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2);
+double ref_box_box_sat(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2);
 /** A size of the shape (for relative tolerances). */
-double ref_size(const McdGeometry *g);
+double ref_size(const McdGeometryData *g);
 const char *ref_type_name(int type);
 
 #endif

@@ -62,29 +62,39 @@ static MeBool checkDimensions(MeReal dx, MeReal dy, MeReal dz, const char *funct
 
 McdBoxID McdBoxCreate(McdFrameworkID fwId, MeReal dx, MeReal dy, MeReal dz)
 {
-    McdFramework *fw = McdFrameworkFromID(fwId, __func__);
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
     if (!fw || !checkDimensions(dx, dy, dz, __func__))
         return NULL;
-    McdGeometry *g = McdGeometryNew(fw, kMcdGeometryTypeBox, __func__);
+    McdGeometryData *g = McdGeometryNew(fw, kMcdGeometryTypeBox, __func__);
     if (!g)
         return NULL;
     MeVector3Set(g->u.box.radii, ME_R(0.5) * dx, ME_R(0.5) * dy, ME_R(0.5) * dz);
     return McdGeometryToID(g);
 }
 
-void McdBoxGetRadii(McdBoxID id, MeVector3 radii)
+MeReal *McdBoxGetRadii(McdBoxID id)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
-    ME_CHECK_NOT_NULL(radii, ME_NOTHING);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
+    return g ? g->u.box.radii : NULL; /* geometries live in a pool slot: the pointer stays valid */
+}
+
+void McdBoxGetXYAABB(McdBoxID id, MeMatrix4 tm, MeReal bounds[4])
+{
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
     if (g)
-        MeVector3Copy(radii, g->u.box.radii);
-    else
-        MeVector3Set(radii, 0, 0, 0);
+        McdGeometryXYAABB(g, tm, bounds, __func__);
+}
+
+void McdBoxMaximumPointLocal(McdBoxID id, MeReal *inDir, MeReal *outPoint)
+{
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
+    if (g)
+        McdGeometryMaximumPointLocalChecked(g, inDir, outPoint, __func__);
 }
 
 void McdBoxGetDimensions(McdBoxID id, MeReal *dx, MeReal *dy, MeReal *dz)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
     ME_CHECK_NOT_NULL(dx, ME_NOTHING);
     ME_CHECK_NOT_NULL(dy, ME_NOTHING);
     ME_CHECK_NOT_NULL(dz, ME_NOTHING);
@@ -95,7 +105,7 @@ void McdBoxGetDimensions(McdBoxID id, MeReal *dx, MeReal *dy, MeReal *dz)
 
 void McdBoxSetDimensions(McdBoxID id, MeReal dx, MeReal dy, MeReal dz)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
     if (g && checkDimensions(dx, dy, dz, __func__))
         MeVector3Set(g->u.box.radii, ME_R(0.5) * dx, ME_R(0.5) * dy, ME_R(0.5) * dz);
 }

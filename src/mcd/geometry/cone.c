@@ -115,10 +115,10 @@ static MeBool checkParameters(MeReal length, MeReal lower, MeReal upper, const c
 
 McdConeID McdConeCreate(McdFrameworkID fwId, MeReal length, MeReal lowerRadius)
 {
-    McdFramework *fw = McdFrameworkFromID(fwId, __func__);
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
     if (!fw || !checkParameters(length, lowerRadius, 0, __func__))
         return NULL;
-    McdGeometry *g = McdGeometryNew(fw, kMcdGeometryTypeCone, __func__);
+    McdGeometryData *g = McdGeometryNew(fw, kMcdGeometryTypeCone, __func__);
     if (!g)
         return NULL;
     setParameters(&g->u.cone, length, lowerRadius, 0);
@@ -127,7 +127,7 @@ McdConeID McdConeCreate(McdFrameworkID fwId, MeReal length, MeReal lowerRadius)
 
 void McdConeSetGeometricalParameters(McdConeID id, MeReal length, MeReal lowerRadius, MeReal upperRadius)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeCone, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCone, __func__);
     if (g && checkParameters(length, lowerRadius, upperRadius, __func__))
         setParameters(&g->u.cone, length, lowerRadius, upperRadius);
 }
@@ -135,7 +135,7 @@ void McdConeSetGeometricalParameters(McdConeID id, MeReal length, MeReal lowerRa
 #define CONE_GETTER(name, expr)                                                                      \
     MeReal name(McdConeID id)                                                                        \
     {                                                                                                \
-        McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeCone, __func__);                      \
+        McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCone, __func__);                      \
         return g ? (expr) : 0;                                                                       \
     }
 CONE_GETTER(McdConeGetLength, g->u.cone.zUpper - g->u.cone.zLower)
@@ -143,3 +143,4 @@ CONE_GETTER(McdConeGetLowerRadius, g->u.cone.lowerRadius)
 CONE_GETTER(McdConeGetUpperRadius, g->u.cone.upperRadius)
 CONE_GETTER(McdConeGetLowerZ, g->u.cone.zLower)
 CONE_GETTER(McdConeGetUpperZ, g->u.cone.zUpper)
+CONE_GETTER(McdConeGetZOffset, g->u.cone.zLower)

@@ -57,11 +57,11 @@ const McdGeometryTypeDesc McdCylinderTypeDesc = {"Cylinder", NULL, cylinderAABB,
 
 McdCylinderID McdCylinderCreate(McdFrameworkID fwId, MeReal radius, MeReal height)
 {
-    McdFramework *fw = McdFrameworkFromID(fwId, __func__);
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
     if (!fw || !McdCheckDimension(radius, "radius", MEFALSE, __func__) ||
         !McdCheckDimension(height, "height", MEFALSE, __func__))
         return NULL;
-    McdGeometry *g = McdGeometryNew(fw, kMcdGeometryTypeCylinder, __func__);
+    McdGeometryData *g = McdGeometryNew(fw, kMcdGeometryTypeCylinder, __func__);
     if (!g)
         return NULL;
     g->u.cylinder.radius = radius;
@@ -71,32 +71,56 @@ McdCylinderID McdCylinderCreate(McdFrameworkID fwId, MeReal radius, MeReal heigh
 
 MeReal McdCylinderGetRadius(McdCylinderID id)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
     return g ? g->u.cylinder.radius : 0;
 }
 
 void McdCylinderSetRadius(McdCylinderID id, MeReal radius)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
     if (g && McdCheckDimension(radius, "radius", MEFALSE, __func__))
         g->u.cylinder.radius = radius;
 }
 
 MeReal McdCylinderGetHeight(McdCylinderID id)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
     return g ? 2 * g->u.cylinder.halfHeight : 0;
 }
 
 void McdCylinderSetHeight(McdCylinderID id, MeReal height)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
     if (g && McdCheckDimension(height, "height", MEFALSE, __func__))
         g->u.cylinder.halfHeight = ME_R(0.5) * height;
 }
 
 MeReal McdCylinderGetHalfHeight(McdCylinderID id)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
     return g ? g->u.cylinder.halfHeight : 0;
+}
+
+void McdCylinderSetGeometricalParameters(McdCylinderID id, MeReal inRadius, MeReal inHeight)
+{
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
+    if (g && McdCheckDimension(inRadius, "inRadius", MEFALSE, __func__) &&
+        McdCheckDimension(inHeight, "inHeight", MEFALSE, __func__)) {
+        g->u.cylinder.radius = inRadius;
+        g->u.cylinder.halfHeight = ME_R(0.5) * inHeight;
+    }
+}
+
+void McdCylinderGetXYAABB(McdCylinderID id, MeMatrix4 tm, MeReal bounds[4])
+{
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
+    if (g)
+        McdGeometryXYAABB(g, tm, bounds, __func__);
+}
+
+void McdCylinderMaximumPointLocal(McdCylinderID id, MeReal *inDir, MeReal *outPoint)
+{
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
+    if (g)
+        McdGeometryMaximumPointLocalChecked(g, inDir, outPoint, __func__);
 }

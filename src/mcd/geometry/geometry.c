@@ -5,19 +5,19 @@
 #include "../../me/handle.h"
 #include "geometry.h"
 
-McdGeometry *McdGeometryFromID(McdGeometryID id, const char *function)
+McdGeometryData *McdGeometryFromID(McdGeometryID id, const char *function)
 {
     return MeHandleResolve((uintptr_t)id, ME_HANDLE_GEOMETRY, function, "g", NULL);
 }
 
 #define GEOMETRY_OR_RETURN(g, id, ret)                                                               \
-    McdGeometry *g = McdGeometryFromID((id), __func__);                                              \
+    McdGeometryData *g = McdGeometryFromID((id), __func__);                                              \
     if (!g)                                                                                          \
     return ret
 
-McdGeometry *McdGeometryNew(McdFramework *fw, int type, const char *function)
+McdGeometryData *McdGeometryNew(McdFrameworkData *fw, int type, const char *function)
 {
-    McdGeometry *g = MePoolGetStruct(&fw->geometryPool);
+    McdGeometryData *g = MePoolGetStruct(&fw->geometryPool);
     if (!g) {
         ME_REPORT_IN(function, ME_ERR_POOL_FULL,
                      "the framework's %d geometries are in use; raise modelCount (+ instanceCount) in McdInit",
@@ -31,9 +31,9 @@ McdGeometry *McdGeometryNew(McdFramework *fw, int type, const char *function)
     return g;
 }
 
-McdGeometry *McdGeometryOfType(McdGeometryID id, int type, const char *function)
+McdGeometryData *McdGeometryOfType(McdGeometryID id, int type, const char *function)
 {
-    McdGeometry *g = McdGeometryFromID(id, function);
+    McdGeometryData *g = McdGeometryFromID(id, function);
     if (g && g->type != type) {
         ME_REPORT_IN(function, ME_ERR_WRONG_HANDLE_KIND, "argument is a %s geometry, not a %s; call ignored",
                      McdGeometryTypeOf(g)->typeName, g->framework->types[type].typeName);
@@ -51,19 +51,19 @@ MeBool McdCheckDimension(MeReal value, const char *name, MeBool zeroAllowed, con
     return MEFALSE;
 }
 
-const McdGeometryTypeDesc *McdGeometryTypeOf(const McdGeometry *g) { return &g->framework->types[g->type]; }
+const McdGeometryTypeDesc *McdGeometryTypeOf(const McdGeometryData *g) { return &g->framework->types[g->type]; }
 
-void *McdGeometryData(const McdGeometry *g)
+void *McdGeometryShapeData(const McdGeometryData *g)
 {
-    return g->type >= kMcdGeometryBuiltInTypes ? g->u.user : (void *)&((McdGeometry *)g)->u;
+    return g->type >= kMcdGeometryBuiltInTypes ? g->u.user : (void *)&((McdGeometryData *)g)->u;
 }
 
-void McdGeometrySupportLocal(const McdGeometry *g, const MeVector3 dir, MeVector3 point)
+void McdGeometrySupportLocal(const McdGeometryData *g, const MeVector3 dir, MeVector3 point)
 {
-    McdGeometryTypeOf(g)->maximumPoint(McdGeometryToID(g), McdGeometryData(g), dir, point);
+    McdGeometryTypeOf(g)->maximumPoint(McdGeometryToID(g), McdGeometryShapeData(g), dir, point);
 }
 
-void McdGeometrySupportWorld(const McdGeometry *g, MeMatrix4 tm, const MeVector3 dir, MeVector3 point)
+void McdGeometrySupportWorld(const McdGeometryData *g, MeMatrix4 tm, const MeVector3 dir, MeVector3 point)
 {
     MeVector3 dLocal, pLocal;
     MeMatrix4TMInverseRotate(dLocal, tm, dir);
@@ -71,32 +71,32 @@ void McdGeometrySupportWorld(const McdGeometry *g, MeMatrix4 tm, const MeVector3
     MeMatrix4TMTransform(point, tm, pLocal);
 }
 
-void McdGeometryAABBInternal(const McdGeometry *g, MeMatrix4 tm, MeVector3 minCorner, MeVector3 maxCorner)
+void McdGeometryAABBInternal(const McdGeometryData *g, MeMatrix4 tm, MeVector3 minCorner, MeVector3 maxCorner)
 {
-    McdGeometryTypeOf(g)->getAABB(McdGeometryToID(g), McdGeometryData(g), tm, minCorner, maxCorner);
+    McdGeometryTypeOf(g)->getAABB(McdGeometryToID(g), McdGeometryShapeData(g), tm, minCorner, maxCorner);
 }
 
-MeBool McdGeometryLineSegInternal(const McdGeometry *g, const MeVector3 p0, const MeVector3 p1, MeReal *t,
+MeBool McdGeometryLineSegInternal(const McdGeometryData *g, const MeVector3 p0, const MeVector3 p1, MeReal *t,
                                   MeVector3 normal)
 {
     const McdGeometryTypeDesc *type = McdGeometryTypeOf(g);
     if (!type->lineSegIntersect)
         return MEFALSE;
-    return type->lineSegIntersect(McdGeometryToID(g), McdGeometryData(g), p0, p1, t, normal) != 0;
+    return type->lineSegIntersect(McdGeometryToID(g), McdGeometryShapeData(g), p0, p1, t, normal) != 0;
 }
 
 /* ---- public API ----------------------------------------------------------------------------- */
 void McdGeometryDestroy(McdGeometryID id)
 {
     GEOMETRY_OR_RETURN(g, id, ME_NOTHING);
-    if (g->refCount > 0) {
-        ME_REPORT(ME_ERR_MCD_IN_USE, "the geometry is used by %d model(s); destroy or re-point them first; call ignored",
-                  g->refCount);
+    if (g->refCount > 0 || g->userRefCount > 0) {
+        ME_REPORT(ME_ERR_MCD_IN_USE, "the geometry is used by %d model(s) and holds %d reference(s) taken by "
+                  "McdGeometryIncrementReferenceCount; release them first; call ignored", g->refCount, g->userRefCount);
         return;
     }
     const McdGeometryTypeDesc *t = McdGeometryTypeOf(g);
     if (t->destroy)
-        t->destroy(id, McdGeometryData(g));
+        t->destroy(id, McdGeometryShapeData(g));
     MePoolPutStruct(&g->framework->geometryPool, g);
 }
 
@@ -114,10 +114,81 @@ const char *McdGeometryGetTypeName(McdGeometryID id)
     return McdGeometryTypeOf(g)->typeName;
 }
 
+static MeMatrix4Ptr identityIfNull(MeMatrix4 tm, MeMatrix4 storage);
+
 int McdGeometryGetReferenceCount(McdGeometryID id)
 {
     GEOMETRY_OR_RETURN(g, id, 0);
-    return g->refCount;
+    return g->refCount + g->userRefCount;
+}
+
+void McdGeometryIncrementReferenceCount(McdGeometryID id)
+{
+    GEOMETRY_OR_RETURN(g, id, ME_NOTHING);
+    g->userRefCount++;
+}
+
+void McdGeometryDecrementReferenceCount(McdGeometryID id)
+{
+    GEOMETRY_OR_RETURN(g, id, ME_NOTHING);
+    if (g->userRefCount == 0) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "the geometry holds no reference taken by McdGeometryIncrementReferenceCount "
+                                         "(its %d models hold theirs until destroyed); call ignored", g->refCount);
+        return;
+    }
+    g->userRefCount--;
+}
+
+void McdGeometrySetReferenceCount(McdGeometryID id, int refCount)
+{
+    GEOMETRY_OR_RETURN(g, id, ME_NOTHING);
+    if (refCount < g->refCount) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "refCount (%d) is below the %d models that use the geometry; call ignored",
+                  refCount, g->refCount);
+        return;
+    }
+    g->userRefCount = refCount - g->refCount;
+}
+
+int McdGeometryGetType(McdGeometryID id)
+{
+    GEOMETRY_OR_RETURN(g, id, -1);
+    return g->type;
+}
+
+McdLineSegIntersectFnPtr McdGeometryGetLineSegIntersectFnPtr(McdGeometryID id)
+{
+    GEOMETRY_OR_RETURN(g, id, NULL);
+    return McdFrameworkLineSegFn(g->framework, g->type);
+}
+
+void McdGeometryXYAABB(const McdGeometryData *g, MeMatrix4 tm, MeReal bounds[4], const char *function)
+{
+    if (!bounds) {
+        ME_REPORT_IN(function, ME_ERR_NULL_ARGUMENT, "argument 'bounds' is NULL; call ignored");
+        return;
+    }
+    MeMatrix4 identity;
+    MeVector3 lo, hi;
+    McdGeometryAABBInternal(g, identityIfNull(tm, identity), lo, hi);
+    bounds[0] = lo[0];
+    bounds[1] = hi[0];
+    bounds[2] = lo[1];
+    bounds[3] = hi[1];
+}
+
+void McdGeometryMaximumPointLocalChecked(const McdGeometryData *g, const MeReal *dir, MeReal *point,
+                                         const char *function)
+{
+    if (!dir || !point) {
+        ME_REPORT_IN(function, ME_ERR_NULL_ARGUMENT, "argument 'inDir' or 'outPoint' is NULL; call ignored");
+        return;
+    }
+    if (!(ME_IS_FINITE(dir[0]) && ME_IS_FINITE(dir[1]) && ME_IS_FINITE(dir[2]))) {
+        ME_REPORT_IN(function, ME_ERR_NONFINITE_ARGUMENT, "argument 'inDir' holds NaN or infinity; call ignored");
+        return;
+    }
+    McdGeometrySupportLocal(g, dir, point);
 }
 
 McdFrameworkID McdGeometryGetFramework(McdGeometryID id)
@@ -148,7 +219,7 @@ void McdGeometryGetBSphere(McdGeometryID id, MeVector3 centre, MeReal *radius)
     GEOMETRY_OR_RETURN(g, id, ME_NOTHING);
     ME_CHECK_NOT_NULL(centre, ME_NOTHING);
     ME_CHECK_NOT_NULL(radius, ME_NOTHING);
-    McdGeometryTypeOf(g)->getBSphere(id, McdGeometryData(g), centre, radius);
+    McdGeometryTypeOf(g)->getBSphere(id, McdGeometryShapeData(g), centre, radius);
 }
 
 void McdGeometryMaximumPoint(McdGeometryID id, MeMatrix4 tm, const MeVector3 dir, MeVector3 point)
@@ -161,16 +232,16 @@ void McdGeometryMaximumPoint(McdGeometryID id, MeMatrix4 tm, const MeVector3 dir
     McdGeometrySupportWorld(g, identityIfNull(tm, identity), dir, point);
 }
 
-MeBool McdGeometryGetMassProperties(McdGeometryID id, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume)
+MeI16 McdGeometryGetMassProperties(McdGeometryID id, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume)
 {
-    GEOMETRY_OR_RETURN(g, id, MEFALSE);
-    ME_CHECK_NOT_NULL(inertia, MEFALSE);
-    ME_CHECK_NOT_NULL(volume, MEFALSE);
+    GEOMETRY_OR_RETURN(g, id, 1);
+    ME_CHECK_NOT_NULL(inertia, 1);
+    ME_CHECK_NOT_NULL(volume, 1);
     MeMatrix4 rel;
-    McdGeometryTypeOf(g)->getMassProperties(id, McdGeometryData(g), rel, inertia, volume);
+    McdGeometryTypeOf(g)->getMassProperties(id, McdGeometryShapeData(g), rel, inertia, volume);
     if (relTM)
         MeMatrix4Copy(relTM, rel);
-    return ME_IS_FINITE(*volume) && *volume > 0;
+    return ME_IS_FINITE(*volume) && *volume > 0 ? 0 : 1; /* Karma's convention: 0 means success */
 }
 
 void McdGeometryDebugDraw(McdGeometryID id, MeMatrix4 tm, const float colour[3])
@@ -179,12 +250,12 @@ void McdGeometryDebugDraw(McdGeometryID id, MeMatrix4 tm, const float colour[3])
     const McdGeometryTypeDesc *t = McdGeometryTypeOf(g);
     MeMatrix4 identity;
     if (t->debugDraw)
-        t->debugDraw(id, McdGeometryData(g), identityIfNull(tm, identity), colour);
+        t->debugDraw(id, McdGeometryShapeData(g), identityIfNull(tm, identity), colour);
 }
 
 McdGeometryID McdUserGeometryCreate(McdFrameworkID fwId, int type, void *data)
 {
-    McdFramework *fw = McdFrameworkFromID(fwId, __func__);
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
     if (!fw)
         return NULL;
     if (type < kMcdGeometryBuiltInTypes || type >= fw->typeCount) {
@@ -192,7 +263,7 @@ McdGeometryID McdUserGeometryCreate(McdFrameworkID fwId, int type, void *data)
                   type);
         return NULL;
     }
-    McdGeometry *g = McdGeometryNew(fw, type, __func__);
+    McdGeometryData *g = McdGeometryNew(fw, type, __func__);
     if (!g)
         return NULL;
     g->u.user = data;

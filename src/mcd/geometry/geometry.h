@@ -16,9 +16,14 @@ extern const McdGeometryTypeDesc McdSphylTypeDesc;
 extern const McdGeometryTypeDesc McdConeTypeDesc;
 
 /** A new geometry of `type` from the framework's pool (reported in `function`'s name when full). */
-McdGeometry *McdGeometryNew(McdFramework *fw, int type, const char *function);
+McdGeometryData *McdGeometryNew(McdFrameworkData *fw, int type, const char *function);
 /** Resolve a geometry ID that must be of `type` (reported otherwise). */
-McdGeometry *McdGeometryOfType(McdGeometryID id, int type, const char *function);
+McdGeometryData *McdGeometryOfType(McdGeometryID id, int type, const char *function);
+/** The x and y extent {min x, max x, min y, max y} of the geometry placed at tm (NULL: identity). */
+void McdGeometryXYAABB(const McdGeometryData *g, MeMatrix4 tm, MeReal bounds[4], const char *function);
+/** The local support point, arguments checked in `function`'s name. */
+void McdGeometryMaximumPointLocalChecked(const McdGeometryData *g, const MeReal *dir, MeReal *point,
+                                         const char *function);
 /** A dimension must be finite and > 0 (or >= 0 when zeroAllowed); reports in `function`'s name. */
 MeBool McdCheckDimension(MeReal value, const char *name, MeBool zeroAllowed, const char *function);
 

@@ -35,9 +35,9 @@ const McdGeometryTypeDesc McdNullTypeDesc = {"Null", NULL, nullAABB, nullBSphere
 
 McdNullID McdNullCreate(McdFrameworkID fwId)
 {
-    McdFramework *fw = McdFrameworkFromID(fwId, __func__);
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
     if (!fw)
         return NULL;
-    McdGeometry *g = McdGeometryNew(fw, kMcdGeometryTypeNull, __func__);
+    McdGeometryData *g = McdGeometryNew(fw, kMcdGeometryTypeNull, __func__);
     return g ? McdGeometryToID(g) : NULL;
 }

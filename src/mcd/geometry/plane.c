@@ -65,16 +65,16 @@ const McdGeometryTypeDesc McdPlaneTypeDesc = {"Plane", NULL, planeAABB, planeBSp
 
 McdPlaneID McdPlaneCreate(McdFrameworkID fwId)
 {
-    McdFramework *fw = McdFrameworkFromID(fwId, __func__);
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
     if (!fw)
         return NULL;
-    McdGeometry *g = McdGeometryNew(fw, kMcdGeometryTypePlane, __func__);
+    McdGeometryData *g = McdGeometryNew(fw, kMcdGeometryTypePlane, __func__);
     return g ? McdGeometryToID(g) : NULL;
 }
 
 void McdPlaneGetNormal(McdPlaneID id, MeMatrix4 tm, MeVector3 normal)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypePlane, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypePlane, __func__);
     ME_CHECK_NOT_NULL(normal, ME_NOTHING);
     if (!g || !tm)
         MeVector3Set(normal, 0, 0, 1);
@@ -84,7 +84,7 @@ void McdPlaneGetNormal(McdPlaneID id, MeMatrix4 tm, MeVector3 normal)
 
 MeReal McdPlaneGetDistanceToPoint(McdPlaneID id, MeMatrix4 tm, const MeVector3 point)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypePlane, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypePlane, __func__);
     ME_CHECK_NOT_NULL(point, 0);
     if (!g)
         return 0;

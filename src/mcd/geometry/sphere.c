@@ -57,10 +57,10 @@ const McdGeometryTypeDesc McdSphereTypeDesc = {"Sphere", NULL, sphereAABB, spher
 
 McdSphereID McdSphereCreate(McdFrameworkID fwId, MeReal radius)
 {
-    McdFramework *fw = McdFrameworkFromID(fwId, __func__);
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
     if (!fw || !McdCheckDimension(radius, "radius", MEFALSE, __func__))
         return NULL;
-    McdGeometry *g = McdGeometryNew(fw, kMcdGeometryTypeSphere, __func__);
+    McdGeometryData *g = McdGeometryNew(fw, kMcdGeometryTypeSphere, __func__);
     if (!g)
         return NULL;
     g->u.sphere.radius = radius;
@@ -69,13 +69,13 @@ McdSphereID McdSphereCreate(McdFrameworkID fwId, MeReal radius)
 
 MeReal McdSphereGetRadius(McdSphereID id)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeSphere, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeSphere, __func__);
     return g ? g->u.sphere.radius : 0;
 }
 
 void McdSphereSetRadius(McdSphereID id, MeReal radius)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeSphere, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeSphere, __func__);
     if (g && McdCheckDimension(radius, "radius", MEFALSE, __func__))
         g->u.sphere.radius = radius;
 }

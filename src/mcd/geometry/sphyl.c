@@ -83,11 +83,11 @@ const McdGeometryTypeDesc McdSphylTypeDesc = {"Sphyl", NULL, sphylAABB, sphylBSp
 
 McdSphylID McdSphylCreate(McdFrameworkID fwId, MeReal radius, MeReal height)
 {
-    McdFramework *fw = McdFrameworkFromID(fwId, __func__);
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
     if (!fw || !McdCheckDimension(radius, "radius", MEFALSE, __func__) ||
         !McdCheckDimension(height, "height", METRUE, __func__))
         return NULL;
-    McdGeometry *g = McdGeometryNew(fw, kMcdGeometryTypeSphyl, __func__);
+    McdGeometryData *g = McdGeometryNew(fw, kMcdGeometryTypeSphyl, __func__);
     if (!g)
         return NULL;
     g->u.sphyl.radius = radius;
@@ -97,32 +97,32 @@ McdSphylID McdSphylCreate(McdFrameworkID fwId, MeReal radius, MeReal height)
 
 MeReal McdSphylGetRadius(McdSphylID id)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeSphyl, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeSphyl, __func__);
     return g ? g->u.sphyl.radius : 0;
 }
 
 void McdSphylSetRadius(McdSphylID id, MeReal radius)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeSphyl, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeSphyl, __func__);
     if (g && McdCheckDimension(radius, "radius", MEFALSE, __func__))
         g->u.sphyl.radius = radius;
 }
 
 MeReal McdSphylGetHeight(McdSphylID id)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeSphyl, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeSphyl, __func__);
     return g ? 2 * g->u.sphyl.halfHeight : 0;
 }
 
 void McdSphylSetHeight(McdSphylID id, MeReal height)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeSphyl, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeSphyl, __func__);
     if (g && McdCheckDimension(height, "height", METRUE, __func__))
         g->u.sphyl.halfHeight = ME_R(0.5) * height;
 }
 
 MeReal McdSphylGetHalfHeight(McdSphylID id)
 {
-    McdGeometry *g = McdGeometryOfType(id, kMcdGeometryTypeSphyl, __func__);
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeSphyl, __func__);
     return g ? g->u.sphyl.halfHeight : 0;
 }

@@ -103,7 +103,7 @@ static void supportEdge(const Box *b, int i, const MeVector3 d, MeVector3 e0, Me
     MeVector3MultiplyAdd(e1, b->h[i], b->ax[i]);
 }
 
-int McdNfBoxBox(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2, MeReal tolerance,
+int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2, MeReal tolerance,
                 McdContact *contacts, int maxContacts, void **cache)
 {
     Box A, B;

@@ -37,14 +37,14 @@
 
 /** A geometry placed in the world, as the general path sees it. */
 typedef struct McdNfShape {
-    const McdGeometry *g;
+    const McdGeometryData *g;
     MeReal (*tm)[4];
     int type;
     MeReal radius; /* rounding radius around the core (sphere, sphyl), else 0 */
     MeReal size;   /* a length of the shape's size, for relative tolerances */
 } McdNfShape;
 
-void McdNfShapeInit(McdNfShape *s, const McdGeometry *g, MeMatrix4 tm);
+void McdNfShapeInit(McdNfShape *s, const McdGeometryData *g, MeMatrix4 tm);
 /** The core's support point (world) in world direction d (need not be unit). */
 void McdNfCoreSupport(const McdNfShape *s, const MeVector3 d, MeVector3 out);
 /** The core's feature (world points: 1 vertex, 2 segment, >= 3 convex polygon, ordered) facing the
@@ -79,7 +79,7 @@ int McdNfManifold(const McdNfShape *s1, const McdNfShape *s2, const McdNfDistanc
                   McdContact *contacts, int maxContacts);
 
 /** The general pair test: GJK/EPA on the cores and the clipped contact set. */
-int McdNfConvexConvex(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+int McdNfConvexConvex(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                       MeReal tolerance, McdContact *contacts, int maxContacts, void **cache);
 
 /* ---- contact writing (contact.c) ------------------------------------------------------------ */
@@ -100,18 +100,18 @@ void McdNfSegmentSegment(const MeVector3 p0, const MeVector3 p1, const MeVector3
                          MeReal *s, MeReal *t);
 
 /* ---- the pair tests (one file per family) ------------------------------------------------- */
-int McdNfSphereSphere(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
-int McdNfSphereBox(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
-int McdNfSphereSphyl(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
-int McdNfSphereCylinder(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
-int McdNfSphylSphyl(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
-int McdNfBoxBox(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfSphereSphere(const McdGeometryData *, MeMatrix4, const McdGeometryData *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfSphereBox(const McdGeometryData *, MeMatrix4, const McdGeometryData *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfSphereSphyl(const McdGeometryData *, MeMatrix4, const McdGeometryData *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfSphereCylinder(const McdGeometryData *, MeMatrix4, const McdGeometryData *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfSphylSphyl(const McdGeometryData *, MeMatrix4, const McdGeometryData *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfBoxBox(const McdGeometryData *, MeMatrix4, const McdGeometryData *, MeMatrix4, MeReal, McdContact *, int, void **);
 /* geometry 1 is the shape, geometry 2 the plane */
-int McdNfSpherePlane(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
-int McdNfBoxPlane(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
-int McdNfCylinderPlane(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
-int McdNfSphylPlane(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
-int McdNfConePlane(const McdGeometry *, MeMatrix4, const McdGeometry *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfSpherePlane(const McdGeometryData *, MeMatrix4, const McdGeometryData *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfBoxPlane(const McdGeometryData *, MeMatrix4, const McdGeometryData *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfCylinderPlane(const McdGeometryData *, MeMatrix4, const McdGeometryData *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfSphylPlane(const McdGeometryData *, MeMatrix4, const McdGeometryData *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfConePlane(const McdGeometryData *, MeMatrix4, const McdGeometryData *, MeMatrix4, MeReal, McdContact *, int, void **);
 
 /* ---- the table (table.c) ------------------------------------------------------------------ */
 
@@ -126,7 +126,7 @@ const McdNfPairEntry *McdNfPairTable(int *count);
 /** The test for (type1, type2), or NULL; *swapped says that it takes them as (type2, type1). */
 McdNearfieldFn McdNfFind(int type1, int type2, int *swapped);
 /** Run the built-in test for any order of the two geometries (swapping contacts back if needed). */
-int McdNfCollide(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2, MeReal tolerance,
+int McdNfCollide(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2, MeReal tolerance,
                  McdContact *contacts, int maxContacts);
 
 #endif /* MCD_NEARFIELD_H */

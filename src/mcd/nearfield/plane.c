@@ -31,7 +31,7 @@ static int finish(McdContact *c, int count, int maxContacts)
     return count;
 }
 
-int McdNfSpherePlane(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+int McdNfSpherePlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                      MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
     MeVector3 p;
@@ -43,7 +43,7 @@ int McdNfSpherePlane(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2
     return planePoint(contacts, 0, maxContacts, tm2, p, tolerance);
 }
 
-int McdNfBoxPlane(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+int McdNfBoxPlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                   MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
     McdContact buf[8];
@@ -87,7 +87,7 @@ static int rimPoints(McdContact *c, int count, int maxc, MeMatrix4 plane, const 
     return count;
 }
 
-int McdNfCylinderPlane(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+int McdNfCylinderPlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                        MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
     McdContact buf[8];
@@ -107,7 +107,7 @@ int McdNfCylinderPlane(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *
     return count;
 }
 
-int McdNfConePlane(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+int McdNfConePlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                    MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
     const McdConeData *cd = &g1->u.cone;
@@ -131,7 +131,7 @@ int McdNfConePlane(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, 
     return count;
 }
 
-int McdNfSphylPlane(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+int McdNfSphylPlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                     MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
     McdContact buf[2];

@@ -3,7 +3,7 @@
 #include "../framework.h"
 #include "nearfield.h"
 
-void McdNearfieldRegisterPrimitives(McdFramework *fw)
+void McdNearfieldRegisterPrimitives(McdFrameworkData *fw)
 {
     int count, k;
     const McdNfPairEntry *table = McdNfPairTable(&count);

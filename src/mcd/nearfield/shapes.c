@@ -2,7 +2,7 @@
  * (internal). Sphere = point + r, sphyl = segment + r; box, cylinder and cone are their own cores. */
 #include "nearfield.h"
 
-void McdNfShapeInit(McdNfShape *s, const McdGeometry *g, MeMatrix4 tm)
+void McdNfShapeInit(McdNfShape *s, const McdGeometryData *g, MeMatrix4 tm)
 {
     s->g = g;
     s->tm = tm;
@@ -47,7 +47,7 @@ static void discSupport(MeReal r, MeReal z, const MeVector3 d, MeVector3 out)
     out[2] = z;
 }
 
-static void localCoreSupport(const McdGeometry *g, const MeVector3 d, MeVector3 out)
+static void localCoreSupport(const McdGeometryData *g, const MeVector3 d, MeVector3 out)
 {
     switch (g->type) {
     case kMcdGeometryTypeSphyl:
@@ -110,7 +110,7 @@ static int discPolygon(MeReal r, MeReal z, MeReal dx, MeReal dy, MeVector3 *pts)
 
 /* The local feature of a core facing the local unit direction n; h orients discs when n has no
  * radial part. */
-static int localFeature(const McdGeometry *g, const MeVector3 n, const MeVector3 h, MeVector3 *pts)
+static int localFeature(const McdGeometryData *g, const MeVector3 n, const MeVector3 h, MeVector3 *pts)
 {
     const MeReal sinTol = MCD_NF_FEATURE_SIN;
     MeReal rho = MeSqrt(n[0] * n[0] + n[1] * n[1]);

@@ -2,7 +2,7 @@
  * the box, the nearest face (internal). */
 #include "nearfield.h"
 
-int McdNfSphereBox(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+int McdNfSphereBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                    MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
     const MeReal r = g1->u.sphere.radius;

@@ -2,7 +2,7 @@
  * centre inside it, the nearest of the side and the caps (internal). */
 #include "nearfield.h"
 
-int McdNfSphereCylinder(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+int McdNfSphereCylinder(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                         MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
     const MeReal r = g1->u.sphere.radius, R = g2->u.cylinder.radius, hh = g2->u.cylinder.halfHeight;

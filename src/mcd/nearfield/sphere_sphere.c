@@ -1,7 +1,7 @@
 /* sphere_sphere.c -- sphere against sphere: the line of centres (internal). */
 #include "nearfield.h"
 
-int McdNfSphereSphere(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+int McdNfSphereSphere(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                       MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
     const MeReal r1 = g1->u.sphere.radius, r2 = g2->u.sphere.radius;

@@ -1,7 +1,7 @@
 /* sphere_sphyl.c -- sphere against sphyl (capsule): the centre against the capsule's segment. */
 #include "nearfield.h"
 
-int McdNfSphereSphyl(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+int McdNfSphereSphyl(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                      MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
     const MeReal r1 = g1->u.sphere.radius, r2 = g2->u.sphyl.radius, hh = g2->u.sphyl.halfHeight;

@@ -2,7 +2,7 @@
  * the two ends of their common part (internal). */
 #include "nearfield.h"
 
-int McdNfSphylSphyl(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2,
+int McdNfSphylSphyl(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                     MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
     McdNfShape s1, s2;

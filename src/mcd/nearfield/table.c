@@ -49,7 +49,7 @@ McdNearfieldFn McdNfFind(int type1, int type2, int *swapped)
     return NULL;
 }
 
-int McdNfCollide(const McdGeometry *g1, MeMatrix4 tm1, const McdGeometry *g2, MeMatrix4 tm2, MeReal tolerance,
+int McdNfCollide(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2, MeReal tolerance,
                  McdContact *contacts, int maxContacts)
 {
     int swapped, n, k;

@@ -41,10 +41,10 @@ static void gyroscopicStep(const MdtBodyData *b, MeReal h, MeVector3 w)
         for (int k = 0; k < 3; k++)
             F[k] = Idw[k] + h * F[k];
         /* dF/dω₂ = I + (h/2)(S(ω_m) I − S(I ω_m)), S(v) u = v × u as column matrices;
-         * MeMatrix3CrossFromVector stores the transpose of S(v), which is −S(v). */
-        MeMatrix3CrossFromVector(S, wm);
+         * MeMatrix3MakeCrossProduct stores the transpose of S(v), which is −S(v). */
+        MeMatrix3MakeCrossProduct(S, wm);
         MeMatrix3MultiplyMatrix(SI, S, I);
-        MeMatrix3CrossFromVector(SIw, Iwm);
+        MeMatrix3MakeCrossProduct(SIw, Iwm);
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++)
                 J[i][j] = I[i][j] + ME_R(0.5) * h * (SIw[i][j] - SI[i][j]);
