@@ -30,6 +30,11 @@ ME_API MdtBodyID MdtBodyCopy(MdtBodyID b, MdtWorldID w);
 ME_API void MdtBodyEnable(MdtBodyID b);
 ME_API void MdtBodyDisable(MdtBodyID b);
 ME_API MeBool MdtBodyIsEnabled(MdtBodyID b);
+/** Whether the body counts as moving for auto-disable under `params`' thresholds (MdtPartition.h):
+ *  its squared speed, angular speed, acceleration or angular acceleration (of the last step) is above
+ *  its threshold, or it has been enabled for less than alive_time_thresh (unless the partitioner
+ *  woke it this step). MdtWorldGetPartitionParams gives the world's thresholds. */
+ME_API MeBool MdtBodyIsMovingTest(MdtBodyID b, const MdtPartitionParams *params);
 /** Whether `b` is a live body ID (no message). */
 ME_API MeBool MdtBodyIsValid(MdtBodyID b);
 /** Print the body's state through MeInfo. */

@@ -53,6 +53,11 @@ ME_API void MdtContactSetImportance(MdtContactID c, MeReal importance);
 ME_API MeReal MdtContactGetImportance(MdtContactID c);
 /** Next contact in the same group, or NULL. */
 ME_API MdtContactID MdtContactGetNext(MdtContactID c);
+/** Karma 1.2's link setter (deprecated in 1.2), on the list of c's contact group: nc (a stand-alone
+ *  contact, or one of the same group) is placed just after c, the contacts that followed c now
+ *  following nc; NULL makes c the group's last contact, the ones after it leaving the group as
+ *  disabled stand-alone contacts. Refused for a stand-alone c (ME_ERR_BAD_STATE). */
+ME_API void MdtContactSetNext(MdtContactID c, MdtContactID nc);
 /** The group the contact belongs to, or NULL. */
 ME_API MdtContactGroupID MdtContactGetContactGroup(MdtContactID c);
 

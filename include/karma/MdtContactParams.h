@@ -46,26 +46,29 @@ typedef enum MdtFrictionModel {
 #define MdtBclContactOptionSlide2 0x80
 #define MdtBclContactOptionUseWorldVelocity 0x100 /**< the world at this contact moves (body 1 NULL) */
 
-typedef struct MdtContactParams {
+/** A contact's parameters. The struct is Karma 1.2's `struct MdtBclContactParams`, with its fields in
+ *  1.2's order; MdtContactParams and MdtBclContactParams name the same type. */
+struct MdtBclContactParams {
     MdtContactType type;
-    MeU32 options;
     MdtFrictionModel model1, model2;   /**< primary, secondary direction */
-    MeReal friction1, friction2;       /**< Box model bounds, N (MEINFINITY: no sliding) */
-    MeReal frictioncoeff1, frictioncoeff2; /**< NormalForce model coefficients */
+    MeU32 options;                     /**< MdtBclContactOption... bits */
     MeReal restitution;                /**< 0 ... 1 */
     MeReal velThreshold;               /**< restitution only above this approach speed, m/s */
     MeReal softness;                   /**< added to the normal row's ε (velocity per impulse, 1/kg) */
     MeReal max_adhesive_force;         /**< N */
-    MeReal slip1, slip2;               /**< tangential compliance: slip speed per friction force, s/kg (m/s per N) */
+    MeReal friction1;                  /**< Box model bound along the primary direction, N (MEINFINITY: no sliding) */
+    MeReal frictioncoeff1;             /**< NormalForce model coefficient along the primary direction */
+    MeReal slip1;                      /**< tangential compliance: slip speed per friction force, s/kg (m/s per N) */
+    MeReal friction2, frictioncoeff2, slip2; /**< the same along the secondary direction */
     MeReal slide1, slide2;             /**< surface velocity along the directions, m/s: the contact drives the
                                             velocity of body 0 relative to body 1 at the contact along the
                                             direction to it (a body on the world moves at +slide) */
-} MdtContactParams;
+};
+typedef struct MdtBclContactParams MdtContactParams;
+typedef struct MdtBclContactParams MdtBclContactParams; /**< Karma 1.2's name for the type */
 
 /** Parameters are addressed through a plain pointer (inside a contact or a material table). */
 typedef MdtContactParams *MdtContactParamsID;
-/* Karma's name for the struct. */
-typedef MdtContactParams MdtBclContactParams;
 
 ME_API void MdtContactParamsReset(MdtContactParamsID p);
 

@@ -55,13 +55,19 @@ ME_API void MdtUnpack(MdtWorldID w);
 /** End the step: counts it, adds its time, unlocks the world. */
 ME_API void MdtWorldStepEnd(MdtWorldID w);
 
-/** What the last MdtWorldUpdatePartitions found, as later stages left it. */
-typedef struct MdtPartitionInfo {
-    int bodies;      /**< bodies in the partition */
-    int constraints; /**< enabled constraints (a contact group counts once) */
-    int rows;        /**< solver rows (after MdtPack; 0 before) */
-    int droppedRows; /**< rows removed by matrix capping (MdtLODPartitions) */
-} MdtPartitionInfo;
+/** What the last MdtWorldUpdatePartitions found, as later stages left it. The first three fields are
+ *  Karma 1.2's (also filled by MdtPartInfoReset / MdtPartInfoAddConstraint, MdtPartition.h); the
+ *  others are this library's. */
+struct MdtPartitionInfo {
+    int rowCount;     /**< rows the partition's constraints may write this step (an upper bound: a
+                           contact group counts its contacts' rows) */
+    int contactCount; /**< contacts: those of its contact groups and its stand-alone contacts */
+    int jointCount;   /**< the other constraints */
+    int bodies;       /**< bodies in the partition */
+    int constraints;  /**< enabled constraints (a contact group counts once) */
+    int rows;         /**< solver rows (after MdtPack; 0 before) */
+    int droppedRows;  /**< rows removed by matrix capping (MdtLODPartitions) */
+};
 /** Partitions of the current or last step (after auto-disable has removed the sleeping ones). */
 ME_API int MdtWorldGetPartitionCount(MdtWorldID w);
 /** Counts of partition `partition` (0 ... count−1); zeros and ME_ERR_ARGUMENT_RANGE otherwise. */

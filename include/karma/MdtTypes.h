@@ -6,10 +6,11 @@
 #ifndef MDT_TYPES_H
 #define MDT_TYPES_H
 
+#include "MdtBcl.h"
+#include "MdtDefaults.h"
 #include "MeChunk.h"
 #include "MePool.h"
 #include "MePrecision.h"
-#include "MdtDefaults.h"
 
 ME_EXTERN_C_BEGIN
 
@@ -36,6 +37,10 @@ typedef struct MdtConeLimit MdtConeLimit;
 typedef struct MdtContact MdtContact;
 typedef struct MdtContactGroup MdtContactGroup;
 typedef struct MdtUserConstraint MdtUserConstraint;
+
+/* Plain structs of Karma 1.2's, defined in MdtMainLoop.h and MdtPartition.h. */
+typedef struct MdtPartitionInfo MdtPartitionInfo;
+typedef struct MdtPartitionParams MdtPartitionParams;
 
 typedef MdtWorld *MdtWorldID;                   /**< a dynamics world */
 typedef MdtBody *MdtBodyID;                     /**< a rigid body of a world */
@@ -82,6 +87,16 @@ typedef enum MdtBclJointType {
     MdtBclUSER,
     MdtBclJOINT_TYPE_COUNT
 } MdtBclJointType;
+
+/** What MdtWorldSetDebugDrawing draws through MeDebugDrawAPI.line after each step (bits). */
+typedef enum MdtDebugDrawOptions {
+    MdtDebugDrawContacts = 0x001,    /**< red: each contact's normal from its position, lengthened by its
+                                          penetration (1 + 50·penetration long) */
+    MdtDebugDrawContactForce = 0x002 /**< green: the force each contact applied to its body 0 (1 m per N) */
+} MdtDebugDrawOptions;
+
+/** Flag of a body index meaning "no body" (the world), as Karma 1.2's constraint rows used it. */
+#define MdtBclNO_BODY (-1)
 
 /** Called when the world enables or disables a body (the bridge freezes/unfreezes its model). */
 typedef void (*MdtBodyEnableCBPtr)(MdtBodyID body, void *userData);

@@ -177,6 +177,27 @@ ME_API MdtSimErrorHandlerPtr MdtWorldGetSimErrorHandler(MdtWorldID w, void **use
 /** A callback that prints the failed partition's bodies (state, forces) at info level. */
 ME_API void MdtDefaultSimErrorHandler(MdtWorldID w, const MdtSimError *error, void *userData);
 
+/* ---- Karma 1.2's debugging aids ------------------------------------------------------------ */
+/** After each step, draw the contacts (MdtDebugDrawContacts) and their forces
+ *  (MdtDebugDrawContactForce) through MeDebugDrawAPI.line; 0 (the default) draws nothing. */
+ME_API void MdtWorldSetDebugDrawing(MdtWorldID w, MdtDebugDrawOptions drawOptions);
+/** Keep Karma 1.2's request for Kea's data files. This solver writes and reads no such files: a
+ *  request for any is reported (ME_ERR_ARGUMENT_RANGE) and has no effect. */
+ME_API void MdtWorldSetKeaDebugRequest(MdtWorldID w, MdtKeaDebugDataRequest debugDataRequest);
+/** Count the partitions the world solves by size from now on: sizeLog[k] (zeroed here) counts those
+ *  of 4k−3 ... 4k rows (sizeLog[0] those without rows), the last entry also every larger one, as in
+ *  Karma 1.2. The array must outlive the log; (NULL, 0) stops logging. */
+ME_API void MdtWorldSetMatrixSizeLog(MdtWorldID w, int *const sizeLog, int logSize);
+/** The world's scratch chunks (read them with MeChunkGetMaxSize...; the world owns them): the solver's
+ *  workspace ("Kea pool"), the partition lists ("partition output") and the solver rows, which hold
+ *  what 1.2 kept in its Kea constraints and Kea transforms chunks (both getters return that chunk). */
+ME_API MeChunk *MdtWorldGetKeaPoolChunk(MdtWorldID w);
+ME_API MeChunk *MdtWorldGetPartitionOutputChunk(MdtWorldID w);
+ME_API MeChunk *MdtWorldGetKeaTMChunk(MdtWorldID w);
+ME_API MeChunk *MdtWorldGetKeaConstraintsChunk(MdtWorldID w);
+/** The largest solver workspace any step has used, bytes (MeChunkGetMaxSize of the Kea pool chunk). */
+ME_API int MdtWorldGetMaxMemoryPoolUsed(MdtWorldID w);
+
 /** Whether `w` is a live world ID (no message). */
 ME_API MeBool MdtWorldIsValid(MdtWorldID w);
 

@@ -32,8 +32,8 @@ ME_API MeBool MstBridgeIsValid(MstBridgeID b);
 
 /** The default material (0): every model starts with it. */
 ME_API MstMaterialID MstBridgeGetDefaultMaterial(void);
-/** A new material whose pairs start with the default contact parameters (frictionless), or -1
- *  when the table is full (reported, naming the size to raise). */
+/** A new material whose pairs start with the default contact parameters (frictionless), or
+ *  MST_MATERIAL_INVALID when the table is full (reported, naming the size to raise). */
 ME_API MstMaterialID MstBridgeGetNewMaterial(MstBridgeID b);
 ME_API int MstBridgeGetMaterialCount(MstBridgeID b);
 ME_API int MstBridgeGetMaxMaterials(MstBridgeID b);
@@ -73,6 +73,11 @@ ME_API void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, 
 ME_API void MstBridgeUpdateTransitions(MstBridgeID b, McdSpaceID s, MdtWorldID w);
 /** The User Guide's name for the collisions stage on one container (decision D7). */
 #define MstBridgeUpdateCollisions(b, s, w, pairs) MstHandleCollisions((pairs), (s), (w), (b))
+
+/** Karma 1.2's whole step for a bridge made by MstUniverseCreate: MstUniverseStep of its universe
+ *  (collision, contacts, then MdtWorldStep(world, stepSize)). A bridge made by MstBridgeCreate knows
+ *  no space or world: the call is refused (ME_ERR_BAD_STATE). */
+ME_API void MstBridgeStepAll(MstBridgeID bridge, MeReal stepSize);
 
 /** Install the world handlers that keep models and bodies in step: a disabled body's models are
  *  frozen, an enabled body's unfrozen, and a destroyed contact group is unlinked from its pair.

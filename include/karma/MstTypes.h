@@ -23,8 +23,11 @@ typedef struct MstMaterialPair MstMaterialPair; /**< never defined here: use the
 
 typedef MstUniverse *MstUniverseID;
 typedef MstBridge *MstBridgeID;
-/** A material: an index into the bridge's table. 0 is the default material. */
-typedef int MstMaterialID;
+/** A material: an index into the bridge's table, unsigned as in Karma 1.2. 0 is the default
+ *  material; MST_MATERIAL_INVALID is what MstBridgeGetNewMaterial returns when the table is full. */
+typedef unsigned int MstMaterialID;
+/** No material: returned when a material cannot be made; refused by every bridge function. */
+#define MST_MATERIAL_INVALID ((MstMaterialID)~0u)
 
 /** Called once per colliding pair, after the nearfield test and before conversion (edit or cull
  *  result->contacts / contactCount here). */

@@ -6,10 +6,13 @@
  * (bodies woken by the partitioner this step are exempt from the window: a resting stack that a
  * constraint touched goes back to sleep at once). Disabling calls the world's disable callback, which
  * the bridge uses to freeze the collision models. Forces do not wake bodies; constraints do. */
+#include <karma/MdtPartition.h>
+
+#include "../me/check.h"
 #include "constraint.h"
 #include "world.h"
 
-static MeBool bodyIsAtRest(const MdtBodyData *b, const MdtAutoDisableParams *p)
+MeBool MdtBodyAtRest(const MdtBodyData *b, const MdtAutoDisableParams *p)
 {
     return MeVector3MagnitudeSqr(b->vel) < p->velocity && MeVector3MagnitudeSqr(b->velrot) < p->angularVelocity &&
            MeVector3MagnitudeSqr(b->accel) < p->acceleration &&
@@ -28,7 +31,7 @@ void MdtAutoDisableStage(MdtWorldData *w)
         int cStart = out->constraintStart[p], cEnd = out->constraintStart[p + 1];
         MeBool rest = METRUE;
         for (int i = start; i < end && rest; i++)
-            rest = bodyIsAtRest(out->bodies[i], &w->autoDisable);
+            rest = MdtBodyAtRest(out->bodies[i], &w->autoDisable);
         if (rest) {
             for (int i = start; i < end; i++) {
                 MdtBodyData *b = out->bodies[i];
@@ -62,4 +65,19 @@ void MdtAutoDisableStage(MdtWorldData *w)
     out->bodyCount = kept;
     out->constraintCount = keptConstraints;
     out->partitionCount = keptPartitions;
+}
+
+MeBool MdtBodyIsMovingTest(MdtBodyID id, const MdtPartitionParams *params)
+{
+    const MdtBodyData *b = MdtBodyFromID(id, __func__);
+    if (!b)
+        return MEFALSE;
+    ME_CHECK_NOT_NULL(params, MEFALSE);
+    const MdtAutoDisableParams p = {.enabled = params->autoDisable,
+                                    .velocity = params->vel_thresh,
+                                    .angularVelocity = params->velrot_thresh,
+                                    .acceleration = params->acc_thresh,
+                                    .angularAcceleration = params->accrot_thresh,
+                                    .aliveTime = params->alive_time_thresh};
+    return !MdtBodyAtRest(b, &p);
 }

@@ -449,6 +449,8 @@ MeI32 MdtConstraintGetSortKey(MdtConstraintID id)
     return c->sortKey;
 }
 
+int MdtConstraintRowBound(const MdtConstraintData *c) { return c->cls->rowCount ? c->cls->rowCount(c) : c->cls->maxRows; }
+
 int MdtConstraintGetRowCount(MdtConstraintID id)
 {
     CONSTRAINT_OR_RETURN(c, id, 0);

@@ -103,6 +103,8 @@ MdtConstraintData *MdtConstraintCreateInternal(MdtWorldID wid, MdtBclJointType t
 MdtConstraintData *MdtConstraintFromID(MdtConstraintID id, const char *function);
 /** Resolve an ID that must be of `type`; NULL (reported) if invalid or of another type. */
 MdtConstraintData *MdtConstraintFromIDOfType(const void *id, MdtBclJointType type, const char *function);
+/** Rows the constraint may write this step: its class's count (a group's sum) or its maximum. */
+int MdtConstraintRowBound(const MdtConstraintData *c);
 /** Release the slot (after the class's destroy hook), unlinking from the bodies. */
 void MdtConstraintRelease(MdtConstraintData *c);
 /** Attach to bodies (NULL body1 = world); relinks the bodies' constraint lists. */

@@ -36,7 +36,6 @@ static int compareEntries(const void *pa, const void *pb)
     return (a->contact->slot > b->contact->slot) - (a->contact->slot < b->contact->slot);
 }
 
-static int constraintRows(const MdtConstraintData *c) { return c->cls->rowCount ? c->cls->rowCount(c) : c->cls->maxRows; }
 
 /* Speed at which the two bodies approach each other at the contact (0 when separating). */
 static MeReal approachSpeed(const MdtConstraintData *owner, const ContactData *d)
@@ -76,7 +75,7 @@ static MeReal formulaImportance(const MdtWorldData *w, const MdtConstraintData *
 static int listContacts(MdtWorldData *w, MdtConstraintData *c, LODEntry *list, int n, int partitionRows)
 {
     MdtConstraintData *first = c->type == MdtBclCONTACTGROUP ? MdtContactGroupFirst(c) : c;
-    int ownerRows = constraintRows(c), start = n;
+    int ownerRows = MdtConstraintRowBound(c), start = n;
     for (MdtConstraintData *k = first; k; k = k == c ? NULL : MDT_CONSTRAINT_DATA(k, ContactData)->next) {
         const ContactData *d = MDT_CONSTRAINT_DATA(k, const ContactData);
         LODEntry *e = &list[n++];
@@ -175,7 +174,7 @@ void MdtLODStage(MdtWorldData *w)
     for (int p = 0; p < out->partitionCount; p++) {
         int rows = 0;
         for (int i = out->constraintStart[p]; i < out->constraintStart[p + 1]; i++)
-            rows += constraintRows(out->constraints[i]);
+            rows += MdtConstraintRowBound(out->constraints[i]);
         if (rows <= w->maxMatrixSize)
             continue;
         int dropped = capPartition(w, p, rows);

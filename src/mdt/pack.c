@@ -66,11 +66,6 @@ int MdtRowWriterAdd(MdtRowWriter *w, const MdtRow *row)
     return local;
 }
 
-static int rowCountOf(const MdtConstraintData *c)
-{
-    return c->cls->rowCount ? c->cls->rowCount(c) : c->cls->maxRows;
-}
-
 /* Lay out the step's row arrays for `rows` rows and `bodies` bodies in the row chunk. */
 static MeBool allocateRows(MdtWorldData *w, int rows, int bodies, int partitions)
 {
@@ -110,7 +105,7 @@ void MdtPackStage(MdtWorldData *w)
 
     int total = 0;
     for (int i = 0; i < out->constraintCount; i++)
-        total += rowCountOf(out->constraints[i]);
+        total += MdtConstraintRowBound(out->constraints[i]);
     r->count = 0;
     if (!allocateRows(w, total, out->bodyCount, out->partitionCount)) {
         /* No memory for rows: the constraints are skipped this step (reported by the chunk). */
@@ -150,13 +145,14 @@ void MdtPackStage(MdtWorldData *w)
             MdtConstraintData *c = out->constraints[i];
             writer.constraint = c;
             writer.first = writer.count;
-            writer.capacity = writer.count + rowCountOf(c);
+            writer.capacity = writer.count + MdtConstraintRowBound(c);
             writer.localBody[0] = c->body[0]->stepIndex - bodyBase;
             writer.localBody[1] = c->body[1] ? c->body[1]->stepIndex - bodyBase : KEA_WORLD;
             c->cls->addRows(c, &writer);
             c->rowStart = writer.first;
             c->rowCount = writer.count - writer.first;
         }
+        MdtWorldLogMatrixSize(w, writer.count - r->partitionRowStart[p]);
     }
     r->partitionRowStart[out->partitionCount] = writer.count;
     r->count = writer.count;

@@ -15,6 +15,8 @@
  * pointers that are only valid within the step that built them. */
 #include <karma/MdtMainLoop.h>
 
+#include <string.h>
+
 #include "../me/check.h"
 #include "world.h"
 
@@ -158,13 +160,14 @@ int MdtWorldGetPartitionCount(MdtWorldID id)
 void MdtWorldGetPartitionInfo(MdtWorldID id, int partition, MdtPartitionInfo *info)
 {
     ME_CHECK_NOT_NULL(info, ME_NOTHING);
-    info->bodies = info->constraints = info->rows = info->droppedRows = 0;
+    memset(info, 0, sizeof *info);
     MdtWorldData *w = partitionWorld(id, partition, __func__);
     if (!w)
         return;
     const MdtPartitionLists *out = &w->partitions;
     info->bodies = out->partitionStart[partition + 1] - out->partitionStart[partition];
-    info->constraints = out->constraintStart[partition + 1] - out->constraintStart[partition];
+    for (int i = out->constraintStart[partition]; i < out->constraintStart[partition + 1]; i++)
+        MdtPartitionInfoAdd(info, out->constraints[i]);
     info->droppedRows = out->droppedRows[partition];
     if (w->rowsPacked)
         info->rows = w->rows.partitionRowStart[partition + 1] - w->rows.partitionRowStart[partition];

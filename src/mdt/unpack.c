@@ -65,4 +65,6 @@ void MdtUnpackStage(MdtWorldData *w)
             c->cls->unpack(c, r->x + c->rowStart, c->rowCount, w->stepSize);
     }
     clearAccumulators(w);
+    if (w->debugOptions)
+        MdtWorldDebugDraw(w);
 }

@@ -50,6 +50,7 @@ void MdtWorldSetDefaults(MdtWorldData *w)
     w->checkSim = METRUE;
     w->maxMatrixSize = MDT_MATRIX_SIZE_UNCAPPED;
     MdtLODParamsSetDefaults(&w->lod);
+    MdtWorldDebugDefaults(w);
 }
 
 MdtWorldID MdtWorldCreate(unsigned int maxBodies, unsigned int maxConstraints, MeReal lengthScale, MeReal massScale)

@@ -8,6 +8,7 @@
 #include <karma/MeChunk.h>
 #include <karma/MePool.h>
 #include <karma/MeProfile.h>
+#include <karma/MdtKea.h>
 #include <karma/MdtLOD.h>
 #include <karma/MdtWorld.h>
 
@@ -104,6 +105,12 @@ typedef struct MdtWorldData {
     MeChunk lodChunk;        /* the capped partition's contact list */
     int droppedRows, cappedPartitions, simErrors; /* of the last step */
 
+    /* debugging (world_debug.c) */
+    MdtDebugDrawOptions debugOptions;   /* MdtWorldSetDebugDrawing */
+    MdtKeaDebugDataRequest keaDebug;    /* MdtWorldSetKeaDebugRequest: kept, not acted on */
+    int *matrixSizeLog;                 /* MdtWorldSetMatrixSizeLog: counts of partitions by rows */
+    int matrixSizeLogSize;
+
     /* step state */
     MeBool locked;           /* inside MdtWorldStep, or between MdtWorldStepBegin and End */
     MdtStage stage;
@@ -138,6 +145,16 @@ void MdtPackStage(MdtWorldData *w);
 void MdtSolveStage(MdtWorldData *w);
 void MdtIntegrateStage(MdtWorldData *w);
 void MdtUnpackStage(MdtWorldData *w);
+/* Debugging settings to their defaults (none), and their per-step work (world_debug.c). */
+void MdtWorldDebugDefaults(MdtWorldData *w);
+/* Count a solved partition of `rows` rows in the matrix-size log, if one is set. */
+void MdtWorldLogMatrixSize(MdtWorldData *w, int rows);
+/* Draw what MdtWorldSetDebugDrawing asked for, after the unpack stage. */
+void MdtWorldDebugDraw(MdtWorldData *w);
+/* Add one constraint to Karma 1.2's counts of a partition (partition_info.c). */
+void MdtPartitionInfoAdd(MdtPartitionInfo *info, const struct MdtConstraintData *c);
+/* Whether a body counts as at rest for auto-disable under `p` (autodisable.c). */
+MeBool MdtBodyAtRest(const MdtBodyData *b, const MdtAutoDisableParams *p);
 /* Restore, stop and disable the partitions marked in simError; report each and call the callback. */
 void MdtSimErrorHandlePartitions(MdtWorldData *w);
 

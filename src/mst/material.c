@@ -10,14 +10,15 @@
 
 MstMaterialPairData *MstBridgeMaterialPair(MstBridgeData *b, MstMaterialID m1, MstMaterialID m2, const char *function)
 {
-    if (m1 < 0 || m1 >= b->materialCount || m2 < 0 || m2 >= b->materialCount) {
+    /* Unsigned: a negative index a program computed arrives as a huge one and is refused here. */
+    unsigned int count = (unsigned int)b->materialCount;
+    if (m1 >= count || m2 >= count) {
         ME_REPORT_IN(function, ME_ERR_MST_MATERIAL,
-                     "material pair (%d, %d) is out of range: the bridge has %d material(s)", m1, m2,
-                     b->materialCount);
+                     "material pair (%u, %u) is out of range: the bridge has %u material(s)", m1, m2, count);
         return NULL;
     }
-    int lo = m1 < m2 ? m1 : m2, hi = m1 < m2 ? m2 : m1;
-    return &b->table[lo * b->maxMaterials + hi];
+    size_t lo = m1 < m2 ? m1 : m2, hi = m1 < m2 ? m2 : m1;
+    return &b->table[lo * (size_t)b->maxMaterials + hi];
 }
 
 MstMaterialID MstBridgeGetDefaultMaterial(void) { return 0; }
@@ -26,13 +27,13 @@ MstMaterialID MstBridgeGetNewMaterial(MstBridgeID id)
 {
     MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
-        return -1;
+        return MST_MATERIAL_INVALID;
     if (b->materialCount >= b->maxMaterials) {
         ME_REPORT(ME_ERR_POOL_FULL, "the material table is full (%d materials): raise maxMaterials "
                   "(MstBridgeCreate, or MstUniverseSizes.materialsMaxCount)", b->maxMaterials);
-        return -1;
+        return MST_MATERIAL_INVALID;
     }
-    return b->materialCount++;
+    return (MstMaterialID)b->materialCount++;
 }
 
 int MstBridgeGetMaterialCount(MstBridgeID id)

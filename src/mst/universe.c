@@ -11,8 +11,10 @@
 
 #include "../mcd/framework.h"
 #include "../me/check.h"
+#include "bridge.h"
 
 #include <limits.h>
+#include <stdatomic.h>
 
 /* A universe's record. Karma 1.2's programs read the public struct (MstTypes.h) through the ID, so
  * the ID is a real pointer: to an entry of `universes` below. The record keeps its own copy of the
@@ -36,6 +38,22 @@ typedef struct MstUniverseData {
 static MstUniverse universes[MST_MAX_UNIVERSES];
 static MstUniverseData *records[MST_MAX_UNIVERSES];
 static int nextUniverse;
+
+/* Threads: universes may be created and destroyed on several threads at once (each used by one
+ * thread at a time). Claiming an entry, publishing a record and releasing it scan and write the
+ * shared table, so they hold tableLock: a spin lock on a C11 atomic flag, as the handle registry
+ * (src/me/handle.c) does, held for a short scan and understood by ThreadSanitizer. Resolving an ID
+ * reads only its own entry, which no other thread writes while the universe exists (using an ID
+ * after destroying it on another thread is the application's race, as with any object). */
+static atomic_flag tableLock = ATOMIC_FLAG_INIT;
+
+static void lockTable(void)
+{
+    while (atomic_flag_test_and_set_explicit(&tableLock, memory_order_acquire))
+        ; /* another thread is creating or destroying a universe: a short scan at most */
+}
+
+static void unlockTable(void) { atomic_flag_clear_explicit(&tableLock, memory_order_release); }
 
 /* The entry an ID names, or -1 when it names none (not in the table, or misaligned). */
 static int universeIndex(MstUniverseID id)
@@ -61,17 +79,32 @@ static MstUniverseData *universeFromID(MstUniverseID id, const char *function)
     return records[i];
 }
 
-/* A free entry for a new universe, or -1 (reported) when every entry is in use. */
-static int claimUniverse(const char *function)
+/* Claim a free entry for the new record `u` (not yet valid to other threads' lookups: its
+ * universe's fields are still empty), or return -1 (reported) when every entry is in use. */
+static int claimUniverse(MstUniverseData *u, const char *function)
 {
+    lockTable();
     for (int tries = 0; tries < MST_MAX_UNIVERSES; tries++) {
         int i = nextUniverse;
         nextUniverse = (nextUniverse + 1) % MST_MAX_UNIVERSES;
-        if (!records[i])
+        if (!records[i]) {
+            records[i] = u;
+            unlockTable();
             return i;
+        }
     }
+    unlockTable();
     ME_REPORT_IN(function, ME_ERR_TOO_MANY_OWNERS, "at most %d universes may exist at once", MST_MAX_UNIVERSES);
     return -1;
+}
+
+/* Give the entry back (creation failed, or the universe is destroyed). */
+static void releaseUniverse(int index)
+{
+    lockTable();
+    records[index] = NULL;
+    universes[index] = (MstUniverse){.sizes = {0}};
+    unlockTable();
 }
 
 const MstUniverseSizes MstUniverseDefaultSizes = {
@@ -130,9 +163,6 @@ MstUniverseID MstUniverseCreate(const MstUniverseSizes *sizes)
     ME_CHECK_NOT_NULL(sizes, NULL);
     if (!sizesValid(sizes, __func__))
         return NULL;
-    int index = claimUniverse(__func__);
-    if (index < 0)
-        return NULL;
     MstUniverseData *u = MeMemoryCreateZeroed(sizeof *u);
     if (!u)
         return NULL;
@@ -150,14 +180,15 @@ MstUniverseID MstUniverseCreate(const MstUniverseSizes *sizes)
                                   sizes->lengthScale, sizes->massScale);
     if (u->world)
         u->bridge = MstBridgeCreate(u->framework, (int)sizes->materialsMaxCount);
-    if (!u->bridge) {
+    int index = u->bridge ? claimUniverse(u, __func__) : -1;
+    if (index < 0) {
         destroyParts(u);
         MeMemoryDestroy(u);
         return NULL;
     }
     MeProfileInit(&u->profile);
     MstSetWorldHandlers(u->world);
-    records[index] = u;
+    /* The entry is this thread's from the claim on; the ID is handed out only after this. */
     universes[index] = (MstUniverse){.sizes = u->sizes, .world = u->world, .frame = u->framework,
                                      .space = u->space, .bridge = u->bridge};
     return &universes[index];
@@ -168,9 +199,7 @@ void MstUniverseDestroy(MstUniverseID id)
     MstUniverseData *u = universeFromID(id, __func__);
     if (!u)
         return;
-    int index = universeIndex(id);
-    records[index] = NULL;
-    universes[index] = (MstUniverse){.sizes = {0}};
+    releaseUniverse(universeIndex(id));
     /* Models first (they hold references to geometries and sit in the space); the world takes its
      * bodies and constraints with it, the framework its geometries. */
     if (McdSpaceIsChanging(u->space) == MEFALSE)
@@ -218,6 +247,24 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
     MeProfileSectionEnd(prof, MST_SECTION_COLLISION);
     MeProfileFrameEnd(prof);
     MdtWorldStep(u->world, stepSize);
+}
+
+void MstBridgeStepAll(MstBridgeID bridge, MeReal stepSize)
+{
+    if (!MstBridgeFromID(bridge, __func__))
+        return;
+    MstUniverseID owner = NULL;
+    lockTable();
+    for (int i = 0; i < MST_MAX_UNIVERSES && !owner; i++)
+        if (records[i] && records[i]->bridge == bridge)
+            owner = &universes[i];
+    unlockTable();
+    if (!owner) {
+        ME_REPORT(ME_ERR_BAD_STATE, "the bridge was not made by MstUniverseCreate, so it knows no space or world: "
+                  "call McdSpaceUpdateAll, MstBridgeUpdateContacts and MdtWorldStep yourself");
+        return;
+    }
+    MstUniverseStep(owner, stepSize);
 }
 
 const MeProfile *MstUniverseGetProfile(MstUniverseID id)

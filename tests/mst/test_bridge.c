@@ -78,10 +78,10 @@ static void material_table_is_symmetric(void **state)
     assert_int_equal(MdtContactParamsGetType(p), MdtContactTypeFrictionZero);
     karma_capture_messages();
     assert_reports(ME_ERR_MST_MATERIAL, assert_null(MstBridgeGetContactParams(s.b, 0, 3)));
-    assert_reports(ME_ERR_MST_MATERIAL, assert_null(MstBridgeGetContactParams(s.b, -1, 0)));
+    assert_reports(ME_ERR_MST_MATERIAL, assert_null(MstBridgeGetContactParams(s.b, MST_MATERIAL_INVALID, 0)));
     for (int i = 3; i < 10; i++)
         assert_int_equal(MstBridgeGetNewMaterial(s.b), i);
-    assert_reports(ME_ERR_POOL_FULL, assert_int_equal(MstBridgeGetNewMaterial(s.b), -1));
+    assert_reports(ME_ERR_POOL_FULL, assert_int_equal(MstBridgeGetNewMaterial(s.b), MST_MATERIAL_INVALID));
     MstUniverseDestroy(s.u);
     assert_reports(ME_ERR_INVALID_HANDLE, MstUniverseStep(s.u, 0.01f));
 }

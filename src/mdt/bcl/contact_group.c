@@ -159,9 +159,9 @@ MdtContactID MdtContactGroupGetNextContact(MdtContactGroupID id, MdtContactID ci
     return cd->next ? (MdtContactID)cd->next->id : NULL;
 }
 
-static void append(MdtConstraintData *g, GroupData *d, MdtConstraintData *c)
+/* Make stand-alone contact c a member of g (not yet linked into its list). */
+static void adopt(MdtConstraintData *g, MdtConstraintData *c)
 {
-    ContactData *cd = MDT_CONSTRAINT_DATA(c, ContactData);
     if (c->enabled) {
         c->enabled = MEFALSE;
         c->world->enabledConstraintCount--;
@@ -170,7 +170,13 @@ static void append(MdtConstraintData *g, GroupData *d, MdtConstraintData *c)
     c->inGroup = METRUE;
     c->body[0] = g->body[0];
     c->body[1] = g->body[1];
-    cd->group = g;
+    MDT_CONSTRAINT_DATA(c, ContactData)->group = g;
+}
+
+static void append(MdtConstraintData *g, GroupData *d, MdtConstraintData *c)
+{
+    ContactData *cd = MDT_CONSTRAINT_DATA(c, ContactData);
+    adopt(g, c);
     cd->next = NULL;
     if (d->last)
         MDT_CONSTRAINT_DATA(d->last, ContactData)->next = c;
@@ -195,6 +201,14 @@ void MdtContactGroupAppendContact(MdtContactGroupID id, MdtContactID cid)
         return;
     }
     append(g, d, c);
+}
+
+/* A contact just unlinked from its group: a stand-alone contact again, on the group's bodies. */
+static void release(MdtConstraintData *c)
+{
+    MdtBodyData *b0 = c->body[0], *b1 = c->body[1];
+    c->body[0] = c->body[1] = NULL;
+    MdtConstraintAttach(c, b0, b1);
 }
 
 /* Unlink c from g's list; returns METRUE if it was there. */
@@ -232,9 +246,58 @@ void MdtContactGroupRemoveContact(MdtContactGroupID id, MdtContactID cid)
         ME_REPORT(ME_ERR_BAD_STATE, "the contact is not a member of this group");
         return;
     }
-    MdtBodyData *b0 = c->body[0], *b1 = c->body[1];
-    c->body[0] = c->body[1] = NULL;
-    MdtConstraintAttach(c, b0, b1); /* a stand-alone contact again, on the same bodies */
+    release(c);
+}
+
+/* Karma 1.2 set the link field itself (the function was marked deprecated); here the group's list,
+ * count and last contact stay consistent: nc is moved (or, stand-alone, adopted) to just after c, and
+ * NULL makes c the last contact, the ones after it leaving the group as stand-alone contacts. */
+void MdtContactSetNext(MdtContactID cid, MdtContactID nid)
+{
+    MdtConstraintData *c = MdtConstraintFromIDOfType(cid, MdtBclCONTACT, __func__);
+    if (!c)
+        return;
+    ContactData *cd = MDT_CONSTRAINT_DATA(c, ContactData);
+    MdtConstraintData *g = cd->group;
+    if (!g) {
+        ME_REPORT(ME_ERR_BAD_STATE, "argument 'c' is a stand-alone contact: only a contact group's contacts "
+                  "are linked (MdtContactGroupAppendContact)");
+        return;
+    }
+    GroupData *d = MDT_CONSTRAINT_DATA(g, GroupData);
+    if (!nid) {
+        while (cd->next) {
+            MdtConstraintData *k = cd->next;
+            unlink(g, d, k);
+            release(k);
+        }
+        return;
+    }
+    MdtConstraintData *n = MdtConstraintFromIDOfType(nid, MdtBclCONTACT, __func__);
+    if (!n)
+        return;
+    ContactData *nd = MDT_CONSTRAINT_DATA(n, ContactData);
+    if (n == c || cd->next == n) {
+        if (n == c)
+            ME_REPORT(ME_ERR_ARGUMENT_RANGE, "a contact cannot follow itself");
+        return;
+    }
+    if (n->world != c->world) {
+        ME_REPORT(ME_ERR_FOREIGN_HANDLE, "argument 'nc' belongs to another world than 'c'");
+        return;
+    }
+    if (nd->group && nd->group != g) {
+        ME_REPORT(ME_ERR_BAD_STATE, "argument 'nc' belongs to another contact group; remove it first");
+        return;
+    }
+    if (nd->group)
+        unlink(g, d, n);
+    adopt(g, n);
+    nd->next = cd->next;
+    cd->next = n;
+    if (d->last == c)
+        d->last = n;
+    d->count++;
 }
 
 MdtContactID MdtContactGroupCreateContact(MdtContactGroupID id)
