@@ -22,6 +22,16 @@ typedef struct McdContact {
     void *element2;     /**< sub-element of model 2, or NULL */
 } McdContact;
 
+/** Karma 1.2's contact reduction: write to contacts_dst at most nContacts_dest (>= 0) of the
+ *  nContacts_src contacts of contacts_src (the arrays must not overlap) and return how many. The
+ *  deepest contact comes first, then each next one is the farthest from those already kept
+ *  (distances measured in the plane perpendicular to avgNormal; NULL: in space), so the kept points
+ *  spread over the contact area. Contacts closer than 0.001 x scale to a kept one are duplicates and
+ *  dropped. With faceNormalsFirst non-zero, face contacts (dims 2) are taken before the others. */
+ME_API int MEAPI McdContactSimplify(const MeReal *avgNormal, McdContact *contacts_src, const int nContacts_src,
+                                   McdContact *contacts_dst, const int nContacts_dest, const int faceNormalsFirst,
+                                   const MeReal scale);
+
 ME_EXTERN_C_END
 
 #endif /* MCD_CONTACT_H */

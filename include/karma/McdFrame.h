@@ -103,6 +103,9 @@ ME_API void McdFrameworkPrintInteractionTable(McdFramework *fw);
  *  again at the next such pair). The order of the two types does not matter. */
 ME_API void McdFrameworkSetInteractionsWarned(McdFramework *fw, int geoType1, int geoType2, int count);
 ME_API int McdFrameworkGetInteractionsWarned(McdFramework *fw, int geoType1, int geoType2);
+/** The table's entry for (geoType1, geoType2), refreshed at each call (see McdInteractions in
+ *  McdTypes.h); the pointer stays valid until McdTerm. NULL (reported) for unknown types. */
+ME_API McdInteractions *McdFrameworkGetInteractions(McdFramework *fw, int geoType1, int geoType2);
 /** Replace the segment test of a type (NULL: back to the built-in one). */
 ME_API void McdFrameworkSetLineSegInteraction(McdFramework *fw, int geoType, McdLineSegIntersectFnPtr isectfn);
 /** The segment test of a type: the one set, the built-in one, or NULL when the type has none. */

@@ -18,6 +18,10 @@ ME_API void McdHello(McdModelPairID pair);
 /** Fill `result` (its contacts array and contactMaxCount set by the caller). Returns `touch`. */
 ME_API int McdIntersect(McdModelPairID pair, McdIntersectResult *result);
 ME_API void McdGoodbye(McdModelPairID pair);
+/** McdIntersect with both models moved on by `time` at their velocities (McdModelSetLinearVelocityPtr,
+ *  McdModelSetAngularVelocityPtr; a NULL pointer is at rest) from the transforms they follow now;
+ *  their relative transforms apply. The models themselves are not moved. Returns `touch`. */
+ME_API MeBool McdIntersectAt(McdModelPairID pair, McdIntersectResult *result, MeReal time);
 /** Whether the two models' AABBs (of their last update) overlap. */
 ME_API MeBool McdNearby(McdModelPairID pair);
 

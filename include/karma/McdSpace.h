@@ -212,6 +212,8 @@ ME_API void McdModelPairContainerInit(McdModelPairContainer *c, McdModelPair **a
 ME_API void McdModelPairContainerRemovePair(McdModelPairContainer *c, McdModelPairID *entry);
 /** Print the three counts through MeInfo. */
 ME_API void McdModelPairContainerPrintStats(McdModelPairContainer *c);
+/** Karma 1.2's second name for McdModelPairContainerPrintStats. */
+ME_API void McdPairContainerPrintStats(McdModelPairContainer *c);
 /** Start `iter` at the first hello pair of `c` (for McdIntersectEach). */
 ME_API void McdModelPairContainerIteratorInit(McdModelPairContainerIterator *iter, McdModelPairContainer *c);
 ME_API void McdModelPairContainerDestroy(McdModelPairContainer *container);

@@ -28,6 +28,11 @@ typedef McdSpace *McdSpaceID;
 /** Karma's name for a model standing for several (same type as McdModelID). */
 typedef McdModelID McdCompositeModelID;
 typedef McdContact *McdContactID;
+/** IDs of the geometry types still to come (1.2's McdGeometryTypes.h declared them with the others);
+ *  McduDebugDraw.h names the first two. Declared once, here, for every later header. */
+typedef McdGeometryID McdTriangleListID;
+typedef McdGeometryID McdConvexMeshID;
+typedef McdGeometryID McdAggregateID;
 
 /** Geometry type numbers (Karma's; Cone, which Karma left unnumbered, gets 9). User types
  *  registered with McdFrameworkRegisterGeometryType get the numbers after the built-in ones. */
@@ -90,6 +95,34 @@ typedef void (*McdModelIntersectFnPtr)(McdModel *model, McdIntersectResult *resu
 typedef void (*McdHelloCallbackFnPtr)(McdModelPair *pair);
 /** Called for each overlapping pair that a full pair pool could not record. */
 typedef void (*McdSpacePoolErrorFnPtr)(McdModelID model1, McdModelID model2);
+
+/* ---- Karma 1.2's interaction table entry (McdFrameworkGetInteractions, McdFrame.h) ------------- */
+
+/** Safe-time results: safe time is still to come; the struct is defined with it (write
+ *  `struct McdSafeTimeResult { ... };` there, this typedef stays). */
+typedef struct McdSafeTimeResult McdSafeTimeResult;
+typedef MeBool (*McdHelloFn)(McdModelPair *pair);
+typedef void (*McdGoodbyeFn)(McdModelPair *pair);
+/** A pair test in 1.2's form: fills result (contacts array and contactMaxCount set by the caller),
+ *  normals from model 2 towards model 1; returns touch. */
+typedef int (*McdIntersectFn)(McdModelPair *pair, McdIntersectResult *result);
+typedef int (*McdSafeTimeFn)(McdModelPair *pair, MeReal maxTime, McdSafeTimeResult *result);
+
+/** What the framework does for a pair of geometry types (1.2's fields). Here a view of the table:
+ *  intersectFn runs the registered test (NULL when the pair of types has none), swap says the test
+ *  was registered for the types in the other order (the view's intersectFn handles either order),
+ *  warned mirrors McdFrameworkGetInteractionsWarned; helloFn, goodbyeFn and safetimeFn are NULL and
+ *  cull is 0 (no per-pair hooks, no safe time yet). Writing the fields changes nothing: register
+ *  tests with McdFrameworkSetUserInteraction. */
+typedef struct McdInteractions {
+    McdHelloFn helloFn;
+    McdGoodbyeFn goodbyeFn;
+    McdIntersectFn intersectFn;
+    McdSafeTimeFn safetimeFn;
+    MeBool swap;
+    MeBool cull;
+    MeBool warned;
+} McdInteractions;
 
 /** Debug drawing options (McdFrameworkSetDebugDrawing). */
 typedef enum McdDebugDrawOptions {

@@ -46,6 +46,7 @@ static void freeFramework(McdFrameworkData *fw)
     MeMemoryDestroy(fw->types);
     MeMemoryDestroy(fw->interactions);
     MeMemoryDestroy(fw->warnedPairs);
+    MeMemoryDestroy(fw->interactionViews);
     MeMemoryDestroy(fw);
 }
 

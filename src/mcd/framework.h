@@ -52,6 +52,7 @@ typedef struct McdFrameworkData {
     unsigned char *warnedPairs;    /* typeCapacity^2 flags: "no test" already reported */
     McdTermActionEntry termActions[MCD_TERM_ACTION_MAX];
     int termActionCount;
+    McdInteractions *interactionViews; /* typeCapacity^2 entries of McdFrameworkGetInteractions, or NULL */
     MeU32 nextPairId;              /* identities of pairs made by McdModelPairCreate */
 } McdFrameworkData;
 

@@ -360,6 +360,8 @@ void McdModelPairContainerPrintStats(McdModelPairContainer *c)
            McdModelPairContainerGetGoodbyeCount(c));
 }
 
+void McdPairContainerPrintStats(McdModelPairContainer *c) { McdModelPairContainerPrintStats(c); }
+
 void McdModelPairContainerIteratorInit(McdModelPairContainerIterator *iter, McdModelPairContainer *c)
 {
     ME_CHECK_NOT_NULL(iter, ME_NOTHING);
