@@ -17,8 +17,9 @@ foreach(level O0 O2)
   target_compile_options(${lib} PRIVATE -${level})
   target_link_libraries(${lib} PUBLIC m)
 
-  # One program per scene file: determinism_scene.c (bodies), determinism_joints.c (constraints).
-  foreach(scene scene joints)
+  # One program per scene file: determinism_scene.c (bodies), determinism_joints.c (constraints),
+  # determinism_iterative.c (a pile and a pyramid forced onto the iterative solver).
+  foreach(scene scene joints iterative)
     set(exe test_determinism_${scene}_${level})
     if(scene STREQUAL "scene")
       set(exe test_determinism_${level})
