@@ -1,8 +1,10 @@
 # Karma: a thin wrapper around CMake for the README's commands.
 #
 #   make demo      build, then run the Topple scene headless (karma run topple)
-#   make test      build and test float (-O2, checks on), double, ASan + UBSan and the thread tests under
-#                  ThreadSanitizer; prints "N passed, N failed"
+#   make test      build and test float (-O2, checks on), double, ASan + UBSan, the thread tests under
+#                  ThreadSanitizer and the coverage floor of the Kea solver; prints "N passed, N failed"
+#   make coverage  only the coverage configuration: gcov build, the solver's tests, gcovr fails below the
+#                  Kea line-coverage floor (tests/run_configs.sh, docs/kea.md)
 #   make build     build the float configuration (build/float)
 #   make install   install it (PREFIX=/usr/local by default)
 #   make deps      install missing Debian packages (as root), or print the apt-get line
@@ -16,9 +18,9 @@
 BUILD   ?= build/float
 PREFIX  ?= /usr/local
 JOBS    ?= 2
-DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config
+DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config gcovr
 
-.PHONY: all deps build test demo install bench bench-scenes clean
+.PHONY: all deps build test coverage demo install bench bench-scenes clean
 
 all: build
 
@@ -49,7 +51,10 @@ build: deps
 	cmake --build $(BUILD) -j $(JOBS)
 
 test: deps
-	@JOBS=$(JOBS) bash tests/run_configs.sh float double asan tsan
+	@JOBS=$(JOBS) bash tests/run_configs.sh float double asan tsan coverage
+
+coverage: deps
+	@JOBS=$(JOBS) bash tests/run_configs.sh coverage
 
 demo: build
 	$(BUILD)/tools/karma run topple

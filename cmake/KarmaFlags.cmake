@@ -25,3 +25,14 @@ if(KARMA_TSAN)
   add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
   add_link_options(-fsanitize=thread)
 endif()
+
+# Line coverage (tests/run_configs.sh coverage, `make coverage`): gcc's --coverage on every target;
+# tests/scripts/kea_coverage.sh reads the counts with gcovr and enforces the Kea floor.
+option(KARMA_COVERAGE "Build with gcov instrumentation (--coverage)" OFF)
+if(KARMA_COVERAGE)
+  if(KARMA_SANITIZE OR KARMA_TSAN)
+    message(FATAL_ERROR "KARMA_COVERAGE cannot be combined with a sanitizer")
+  endif()
+  add_compile_options(--coverage)
+  add_link_options(--coverage)
+endif()

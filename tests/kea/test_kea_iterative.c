@@ -177,6 +177,84 @@ static void one_contact_block_is_exact_in_one_sweep(void **state)
     assert_true(opened > 10 && sliding > 10);
 }
 
+/* The contact's LCP conditions at x, in double from the test's own A: n >= 0 and w_n >= 0 with
+ * n w_n = 0; each friction impulse within +-mu n, with w_f = 0 when strictly inside and w_f pushing
+ * against the bound it sits at. Returns the largest violation, relative to max(1, |r|). */
+static double contact_lcp_violation(const KtProblem *t, const MeReal *x)
+{
+    double A[9], w[3], scale = 1.0, worst = 0.0;
+    int r, c;
+    kt_dense_matrix(&t->p, A);
+    for (r = 0; r < 3; ++r) {
+        w[r] = -(double)t->rhs[r];
+        for (c = 0; c < 3; ++c)
+            w[r] += A[r * 3 + c] * (double)x[c];
+        scale = fmax(scale, fabs((double)t->rhs[r]));
+    }
+    worst = fmax(worst, fmax(-(double)x[0], -w[0]));
+    worst = fmax(worst, fabs((double)x[0] * w[0]));
+    for (r = 1; r < 3; ++r) {
+        const double bound = (double)t->mu[r] * (double)x[0], f = (double)x[r];
+        worst = fmax(worst, fabs(f) - bound);
+        if (fabs(f) < bound * (1 - 1e-4))
+            worst = fmax(worst, fabs(w[r]));
+        else if (bound > 0)
+            worst = fmax(worst, f > 0 ? w[r] : -w[r]); /* sliding: w_f opposes the impulse */
+    }
+    return worst / scale;
+}
+
+/* The generic contact path: a contact written with the world as its first body is not the plain
+ * contact block's layout (KeaIsPlainContact), so the sweep solves it with the general block step
+ * (KeaBlockStep: the all-free shortcut, KeaContactSolve's active sets, or the dense solver). One
+ * sweep must give the exact LCP solution (the block is the whole problem), equal to the direct path's,
+ * opening, sticking and sliding. */
+static void generic_contact_path_is_exact_in_one_sweep(void **state)
+{
+    static const double mus[3] = {0.2, 0.6, 1.0};
+    double worst = 0.0, worstLcp = 0.0;
+    int seed, opened = 0, sliding = 0, sticking = 0;
+    (void)state;
+    for (seed = 0; seed < 300; ++seed) {
+        KtRng rng = kt_rng((uint64_t)(5100 + seed));
+        KtProblem t;
+        MeReal xd[3], xi[3];
+        KeaStats st;
+        double err, lcp;
+        int i, k;
+        kt_random_contacts(&t, &rng, 1, 0, 1, mus[seed % 3], 1e-2);
+        for (i = 0; i < 3; ++i) { /* the world first: the body's half moves to the second slot */
+            t.rowBodies[i][1] = t.rowBodies[i][0];
+            t.rowBodies[i][0] = KEA_WORLD;
+            for (k = 0; k < 3; ++k) {
+                t.J[i].lin1[k] = t.J[i].lin0[k];
+                t.J[i].ang1[k] = t.J[i].ang0[k];
+                t.J[i].lin0[k] = t.J[i].ang0[k] = ME_R(0.0);
+            }
+        }
+        if (seed % 4 == 0)
+            t.rhs[0] = (MeReal)-kt_range(&rng, 0.1, 1.0); /* some contacts pull apart */
+        err = iterative_vs_direct(&t, 1, xd, xi, &st);
+        lcp = contact_lcp_violation(&t, xi);
+        worst = fmax(worst, err);
+        worstLcp = fmax(worstLcp, lcp);
+        if (xd[0] == ME_R(0.0))
+            opened++;
+        else if (fabs((double)xd[1]) >= (double)(t.mu[1] * xd[0]) * (1 - 1e-5) ||
+                 fabs((double)xd[2]) >= (double)(t.mu[2] * xd[0]) * (1 - 1e-5))
+            sliding++;
+        else
+            sticking++;
+        assert_near(err, 0.0, ME_TOL(1e-9, 1e-4));
+        assert_near(lcp, 0.0, ME_TOL(1e-9, 1e-4));
+        kt_free(&t);
+    }
+    print_message("generic contact path, one sweep vs direct: 300 contacts (%d opening, %d sticking, %d sliding), "
+                  "max relative error %.3g, largest LCP violation %.3g\n",
+                  opened, sticking, sliding, worst, worstLcp);
+    assert_true(opened > 10 && sliding > 10 && sticking > 10);
+}
+
 /* Over-relaxation changes the path, not the limit. */
 static void sor_converges_to_the_same_solution(void **state)
 {
@@ -320,6 +398,7 @@ int main(void)
         cmocka_unit_test(error_does_not_grow_with_iteration_cap),
         cmocka_unit_test(friction_links_converge_to_direct),
         cmocka_unit_test(one_contact_block_is_exact_in_one_sweep),
+        cmocka_unit_test(generic_contact_path_is_exact_in_one_sweep),
         cmocka_unit_test(sor_converges_to_the_same_solution),
         cmocka_unit_test(tolerance_stops_early),
         cmocka_unit_test(warm_start_at_solution_stays),
