@@ -1,58 +1,23 @@
 /* Pendulums on a ball and socket joint: the small-angle period 2π√(L/g) within 1 %, at two steps. */
 #include "karma_test.h"
 #include "karma_jacobian.h"
+#include "karma_pendulum.h"
 
 #include <karma/MdtBSJoint.h>
 #include <karma/Mdt.h>
 
-/* Period from the times the bob crosses the vertical (linear interpolation between steps). */
-static double measurePeriod(double h, double L, double theta0, double *drift)
-{
-    const double g = 9.81;
-    MdtWorldID w = MdtWorldCreate(4, 4, 1, 1);
-    MdtWorldSetGravity(w, 0, 0, (MeReal)-g);
-    MdtWorldSetAutoDisable(w, MEFALSE);
-    MdtBodyID bob = MdtBodyCreate(w);
-    MdtBodySetSphericalInertiaTensor(bob, 1e-3f);
-    MdtBodySetPosition(bob, (MeReal)(L * sin(theta0)), 0, (MeReal)(-L * cos(theta0)));
-    MdtBodyEnable(bob);
-    MdtBSJointID j = MdtBSJointCreate(w);
-    MdtBSJointSetBodies(j, bob, NULL);
-    MdtBSJointSetPosition(j, 0, 0, 0);
-    MdtBSJointEnable(j);
-    double lastX = L * sin(theta0), t = 0, crossings[8];
-    int n = 0;
-    *drift = 0;
-    while (n < 8 && t < 60) {
-        MdtWorldStep(w, (MeReal)h);
-        t += h;
-        MeVector3 p;
-        MdtBodyGetPosition(bob, p);
-        double r = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-        *drift = fmax(*drift, fabs(r - L));
-        if ((lastX > 0) != (p[0] > 0))
-            crossings[n++] = t - h * p[0] / (p[0] - lastX);
-        lastX = p[0];
-    }
-    MdtWorldDestroy(w);
-    assert_int_equal(n, 8);
-    return (crossings[7] - crossings[1]) / 3; /* three full periods */
-}
-
 static void bsjoint_pendulum_period(void **state)
 {
     (void)state;
-    const double L = 1, g = 9.81, theta0 = 0.05;
-    /* The small-angle period, corrected for the bob's own inertia (1e-3, 0.1 %) and the amplitude. */
-    const double expected = 2 * 3.14159265358979323846 * sqrt((L * L + 1e-3) / (g * L)) * (1 + theta0 * theta0 / 16);
+    const double L = 1, theta0 = 0.05;
+    const double expected = karma_pendulum_expected_period(L, theta0);
     double steps[2] = {1.0 / 60, 1.0 / 240};
     for (int i = 0; i < 2; i++) {
-        double drift;
-        double T = measurePeriod(steps[i], L, theta0, &drift);
-        print_message("BS pendulum h=%.5f: period %.5f s vs %.5f s (%.3f %%), length drift %.2e m\n", steps[i], T,
-                      expected, 100 * fabs(T - expected) / expected, drift);
-        assert_rel(T, expected, 0.01);
-        assert_true(drift < 1e-3);
+        KarmaPendulum swing = karma_pendulum_swing(KARMA_PENDULUM_BALL, steps[i], L, theta0);
+        print_message("BS pendulum h=%.5f: period %.5f s vs %.5f s (%.3f %%), length drift %.2e m\n", steps[i],
+                      swing.period, expected, 100 * fabs(swing.period - expected) / expected, swing.lengthDrift);
+        assert_rel(swing.period, expected, 0.01);
+        assert_true(swing.lengthDrift < 1e-3);
     }
 }
 
