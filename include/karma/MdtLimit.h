@@ -40,6 +40,15 @@ typedef struct MdtBclSingleLimit {
     MeReal restitution; /**< 0 ... 1, hard stops only; default 1 */
 } MdtBclSingleLimit;
 
+/** The library's own bookkeeping of a limit (the unwrapped measured coordinate, a pending bounce,
+ *  this step's row and its kind, the motor's stall, the mark MdtLimitReset sets): no part of the API,
+ *  read and written by the library only; its layout may change between releases. */
+typedef struct MdtLimitPrivate {
+    MeReal reals_[2];
+    int ints_[3];
+    MeU32 word_;
+} MdtLimitPrivate;
+
 /** A joint coordinate's limits, motor and lock, and its measured state. */
 typedef struct MdtBclLimit {
     MdtBclSingleLimit limit[2]; /**< [0] lower, [1] upper stop */
@@ -56,13 +65,7 @@ typedef struct MdtBclLimit {
     MeBool calculate_position;  /**< track the coordinate (always done here; kept for Karma) */
     MeBool powered;             /**< motor active */
     MeBool locked;              /**< lock active */
-    /* Internal state: do not touch. */
-    MeReal measured;            /* the joint's measured coordinate, unwrapped (multi-turn angles) */
-    MeReal pendingBounce;       /* arrival speed to bounce with at the next step */
-    int row;                    /* index of this step's limit row within the joint's rows, or −1 */
-    int rowKind;                /* what that row was (see limit.c) */
-    MeBool stalled;             /* the motor could not lift off the stop it pushes away from */
-    MeU32 magic;                /* set by MdtLimitReset */
+    MdtLimitPrivate private_;   /**< the library's bookkeeping (MdtLimitPrivate): do not touch */
 } MdtBclLimit;
 
 typedef MdtBclLimit MdtLimit;

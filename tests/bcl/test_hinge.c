@@ -5,6 +5,7 @@
 #include <karma/Mdt.h>
 
 #include "karma_pendulum.h"
+#include "mdt/bcl/limit_internal.h"
 #include "karma_rotor.h"
 
 #define PI 3.14159265358979323846
@@ -262,9 +263,9 @@ static void hinge_motor_lifts_off_stop_only_when_strong_enough(void **state)
         worst = fmax(worst, fabs(MdtLimitGetPosition(l)));
     }
     print_message("motor of 8 N m against 9.81 N m: stays on the stop within %.2e rad (stalled: %d)\n", worst,
-                  l->stalled);
+                  MDT_LIMIT_STALLED(l));
     assert_true(worst < 1e-3);
-    assert_true(l->stalled); /* the stop row carries the motor's 8 N m (limit.c) */
+    assert_true(MDT_LIMIT_STALLED(l)); /* the stop row carries the motor's 8 N m (limit.c) */
     MdtLimitSetLimitedForceMotor(l, 1, 20);
     for (int i = 0; i < 20; i++)
         MdtWorldStep(w, 1.0f / 60);

@@ -52,7 +52,7 @@ static void unpack(MdtConstraintData *c, const MeReal *impulses, int rows, MeRea
     MdtLimitUnpack(l, impulses, rows, h);
 }
 
-static void destroy(MdtConstraintData *c) { MDT_CONSTRAINT_DATA(c, HingeData)->limit.magic = 0; }
+static void destroy(MdtConstraintData *c) { MDT_LIMIT_MAGIC(&MDT_CONSTRAINT_DATA(c, HingeData)->limit) = 0; }
 
 static const MdtConstraintClass hingeClass = {"Hinge", 6, reset, rowCount, addRows, unpack, destroy};
 

@@ -144,14 +144,14 @@ void MdtSingleLimitSetRestitution(MdtSingleLimitID sl, MeReal restitution)
 /* ---- limits: state ---------------------------------------------------------------------------- */
 static void clearState(MdtLimit *l)
 {
-    l->measured = 0;
+    MDT_LIMIT_MEASURED(l) = 0;
     l->position = l->offset;
     l->velocity = 0;
     l->overshoot = 0;
-    l->pendingBounce = 0;
-    l->row = -1;
-    l->rowKind = ROW_NONE;
-    l->stalled = MEFALSE;
+    MDT_LIMIT_PENDING_BOUNCE(l) = 0;
+    MDT_LIMIT_ROW(l) = -1;
+    MDT_LIMIT_ROW_KIND(l) = ROW_NONE;
+    MDT_LIMIT_STALLED(l) = MEFALSE;
 }
 
 void MdtLimitInit(MdtLimit *l)
@@ -162,7 +162,7 @@ void MdtLimitInit(MdtLimit *l)
     l->stiffness_threshold = MEINFINITY;
     l->fmax_lock = MEINFINITY;
     clearState(l);
-    l->magic = LIMIT_MAGIC;
+    MDT_LIMIT_MAGIC(l) = LIMIT_MAGIC;
 }
 
 MdtLimit *MdtLimitCheck(const MdtLimit *l, const char *function)
@@ -171,7 +171,7 @@ MdtLimit *MdtLimitCheck(const MdtLimit *l, const char *function)
         ME_REPORT_IN(function, ME_ERR_NULL_ARGUMENT, "argument 'l' (the limit) is NULL; call ignored");
         return NULL;
     }
-    if (l->magic != LIMIT_MAGIC) {
+    if (MDT_LIMIT_MAGIC(l) != LIMIT_MAGIC) {
         ME_REPORT_IN(function, ME_ERR_BAD_STATE,
                      "the limit was not initialised by MdtLimitReset (or its joint was destroyed); call ignored");
         return NULL;
@@ -197,14 +197,14 @@ void MdtLimitCopySettings(MdtLimit *dst, const MdtLimit *src)
 MeReal MdtLimitUnwrap(const MdtLimit *l, MeReal angle)
 {
     const MeReal twoPi = 2 * ME_PI;
-    MeReal d = angle - l->measured;
+    MeReal d = angle - MDT_LIMIT_MEASURED(l);
     d -= twoPi * ME_LIBM_(floor)(d / twoPi + ME_R(0.5));
-    return l->measured + d;
+    return MDT_LIMIT_MEASURED(l) + d;
 }
 
 void MdtLimitSetMeasured(MdtLimit *l, MeReal measured, MeReal rate)
 {
-    l->measured = measured;
+    MDT_LIMIT_MEASURED(l) = measured;
     l->position = measured + l->offset;
     l->velocity = rate;
     l->overshoot = 0;
@@ -324,7 +324,7 @@ void MdtLimitSetPosition(MdtLimitID l, MeReal position)
 {
     LIMIT_OR_RETURN(m, l, ME_NOTHING);
     ME_CHECK_FINITE(position, ME_NOTHING);
-    m->offset = position - m->measured;
+    m->offset = position - MDT_LIMIT_MEASURED(m);
     m->position = position;
 }
 
@@ -483,10 +483,10 @@ static void hardStopRow(MdtLimit *l, MdtRowWriter *w, MdtRow *row, int side, MeR
     const MeReal sigma = side == 0 ? 1 : -1, h = w->h, e = l->limit[side].restitution;
     const MeReal phi = sigma * (x - l->limit[side].stop); /* ≥ 0 inside the range */
     MeReal u = -sigma * rate;                             /* arrival speed */
-    if (l->pendingBounce > u)
-        u = l->pendingBounce;
+    if (MDT_LIMIT_PENDING_BOUNCE(l) > u)
+        u = MDT_LIMIT_PENDING_BOUNCE(l);
     if (!w->captured)
-        l->pendingBounce = 0;
+        MDT_LIMIT_PENDING_BOUNCE(l) = 0;
     row->error = x - l->limit[side].stop;
     row->gamma = phi > 0 ? 1 : -1; /* close a gap exactly; correct a penetration at the world's rate */
     if (e > 0 && u > BOUNCE_THRESHOLD && u * h >= phi) {
@@ -497,7 +497,7 @@ static void hardStopRow(MdtLimit *l, MdtRowWriter *w, MdtRow *row, int side, MeR
             row->noWorldEpsilon = METRUE; /* the world's softness would absorb part of the bounce */
             row->epsilon = ME_R(1e-3) * w->epsilon0;
         } else if (!w->captured) {
-            l->pendingBounce = u;
+            MDT_LIMIT_PENDING_BOUNCE(l) = u;
         }
     }
     row->lo = side == 0 ? 0 : -MEINFINITY;
@@ -511,8 +511,8 @@ void MdtLimitAddRow(MdtLimit *l, MdtRowWriter *w, const MdtRow *jacobian, MeReal
     const MeBool capture = w->captured != NULL;
     if (!capture) {
         MdtLimitSetMeasured(l, measured, rate);
-        l->row = -1;
-        l->rowKind = ROW_NONE;
+        MDT_LIMIT_ROW(l) = -1;
+        MDT_LIMIT_ROW_KIND(l) = ROW_NONE;
     }
     MdtRow row = *jacobian;
     row.error = x; /* rows without a position error still carry x, so Jacobian checks see dx/dt */
@@ -561,7 +561,7 @@ void MdtLimitAddRow(MdtLimit *l, MdtRowWriter *w, const MdtRow *jacobian, MeReal
                 row.lo = s == 0 ? 0 : -MEINFINITY;
                 row.hi = s == 0 ? MEINFINITY : 0;
                 kind = ROW_STOP;
-            } else if (motor && sigma * l->desired_velocity > 0 && !l->stalled) {
+            } else if (motor && sigma * l->desired_velocity > 0 && !MDT_LIMIT_STALLED(l)) {
                 /* The motor drives away from the stop: let it, unless it stalled there last step. */
                 row.velocity = l->desired_velocity;
                 row.lo = -l->fmax;
@@ -592,31 +592,31 @@ void MdtLimitAddRow(MdtLimit *l, MdtRowWriter *w, const MdtRow *jacobian, MeReal
             kind = ROW_MOTOR;
         }
         if (!capture && !need[0] && !need[1])
-            l->stalled = MEFALSE;
+            MDT_LIMIT_STALLED(l) = MEFALSE;
     }
     if (kind == ROW_NONE)
         return;
     int index = MdtRowWriterAdd(w, &row);
     if (!capture) {
-        l->row = index;
-        l->rowKind = kind;
+        MDT_LIMIT_ROW(l) = index;
+        MDT_LIMIT_ROW_KIND(l) = kind;
     }
 }
 
 void MdtLimitUnpack(MdtLimit *l, const MeReal *impulses, int rows, MeReal h)
 {
-    if (l->row < 0 || l->row >= rows)
+    if (MDT_LIMIT_ROW(l) < 0 || MDT_LIMIT_ROW(l) >= rows)
         return;
-    const int kind = l->rowKind;
+    const int kind = MDT_LIMIT_ROW_KIND(l);
     const MeReal sigma = (kind == ROW_MOTOR_AT_STOP1 || kind == ROW_STALLED1) ? -1 : 1;
-    const MeReal x = sigma * impulses[l->row], cap = l->fmax * h; /* x: pushing away from the stop */
+    const MeReal x = sigma * impulses[MDT_LIMIT_ROW(l)], cap = l->fmax * h; /* x: pushing away from the stop */
     if (kind == ROW_MOTOR_AT_STOP0 || kind == ROW_MOTOR_AT_STOP1) {
         /* saturated and still sinking into the stop */
         if (x >= cap * ME_R(0.999) && sigma * l->velocity < 0)
-            l->stalled = METRUE;
+            MDT_LIMIT_STALLED(l) = METRUE;
     } else if (kind == ROW_STALLED0 || kind == ROW_STALLED1) {
         /* the stop no longer had to add to the motor */
         if (x <= cap * ME_R(1.001))
-            l->stalled = MEFALSE;
+            MDT_LIMIT_STALLED(l) = MEFALSE;
     }
 }

@@ -7,6 +7,14 @@
 
 #include "../constraint.h"
 
+/* The fields of a limit's private bookkeeping (MdtLimitPrivate in MdtLimit.h), by name. */
+#define MDT_LIMIT_MEASURED(l) ((l)->private_.reals_[0])       /* the measured coordinate, unwrapped */
+#define MDT_LIMIT_PENDING_BOUNCE(l) ((l)->private_.reals_[1]) /* arrival speed to bounce with next step */
+#define MDT_LIMIT_ROW(l) ((l)->private_.ints_[0])             /* this step's limit row in the joint, or -1 */
+#define MDT_LIMIT_ROW_KIND(l) ((l)->private_.ints_[1])        /* what that row was (limit.c) */
+#define MDT_LIMIT_STALLED(l) ((l)->private_.ints_[2])         /* the motor cannot lift off its stop */
+#define MDT_LIMIT_MAGIC(l) ((l)->private_.word_)              /* set by MdtLimitReset */
+
 /** Reject (report in `function`'s name) a NaN or negative `x` named `name`, or an infinite one unless
  *  `infiniteAllowed` (MEINFINITY = no bound). */
 MeBool MdtCheckNonNegative(MeReal x, const char *name, MeBool infiniteAllowed, const char *function);

@@ -35,7 +35,7 @@ static void anchor(MdtConstraintData *c)
     d->anchored = METRUE;
     for (int i = 0; i < 2; i++)
         d->anchoredTo[i] = c->body[i] ? c->body[i]->id : 0;
-    d->limit.measured = 0;
+    MDT_LIMIT_MEASURED(&d->limit) = 0;
 }
 
 static MeBool anchoredToCurrentBodies(const MdtConstraintData *c)
@@ -93,7 +93,7 @@ static void unpack(MdtConstraintData *c, const MeReal *impulses, int rows, MeRea
     MdtLimitUnpack(l, impulses, rows, h);
 }
 
-static void destroy(MdtConstraintData *c) { MDT_CONSTRAINT_DATA(c, PrismaticData)->limit.magic = 0; }
+static void destroy(MdtConstraintData *c) { MDT_LIMIT_MAGIC(&MDT_CONSTRAINT_DATA(c, PrismaticData)->limit) = 0; }
 
 static const MdtConstraintClass prismaticClass = {"Prismatic", 6, reset, rowCount, addRows, unpack, destroy};
 

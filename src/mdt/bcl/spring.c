@@ -88,7 +88,7 @@ static void unpack(MdtConstraintData *c, const MeReal *impulses, int rows, MeRea
     MdtLimitUnpack(&d->limit, impulses, rows, h);
 }
 
-static void destroy(MdtConstraintData *c) { MDT_CONSTRAINT_DATA(c, SpringData)->limit.magic = 0; }
+static void destroy(MdtConstraintData *c) { MDT_LIMIT_MAGIC(&MDT_CONSTRAINT_DATA(c, SpringData)->limit) = 0; }
 
 static const MdtConstraintClass springClass = {"Spring", 1, reset, rowCount, addRows, unpack, destroy};
 
