@@ -12,7 +12,7 @@
  * function's value, in the row's units), a relaxation γ (share of φ removed per step), an extra
  * softness ε and force bounds. It computes the solver's right-hand side
  *
- *     r = c − γ φ / h − J v*       (v*: velocities after external forces; see predict.c)
+ *     r = c − γ φ / h − J v*       (v*: velocities after external forces; see predict_velocities.c)
  *
  * and Kea finds impulses x with  J v⁺ + ε x = c − γ φ / h  inside the bounds (bounds are given as
  * forces and become impulses f·h). See docs/step.md for the derivation and the meaning of ε and γ. */

@@ -16,7 +16,7 @@ static const struct MeCPUResourcesData portableC = {"portable C"};
 MeCPUResources MdtKeaQueryCPUResources(void) { return (MeCPUResources)(uintptr_t)&portableC; }
 
 /* The world solves its partitions one after the other in one workspace, sized for the largest
- * (src/mdt/kea/solve.c), each by the method its size gets under the default solver settings. */
+ * (src/mdt/solve_partitions.c), each by the method its size gets under the default solver settings. */
 int MdtKeaMemoryRequired(const int num_rows_exc_padding[], int num_partitions, int max_rows, int max_bodies)
 {
     if (num_partitions < 0 || max_rows < 0 || max_bodies < 0) {

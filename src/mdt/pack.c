@@ -1,6 +1,6 @@
 /* pack.c -- MdtPack (MdtPackStage): turn the step's partitions into solver input (Karma's BCL stage).
  *
- * First the bodies' velocities are predicted with the external forces (predict.c); then, partition
+ * First the bodies' velocities are predicted with the external forces (predict_velocities.c); then, partition
  * by partition, every enabled constraint writes its rows through the row writer below, which turns
  * each MdtRow (Jacobian, desired velocity, position error, softness, force bounds) into the solver's
  * arrays:  r = c − γ φ / h − J v*,  ε = ε_world + ε_row,  bounds·h,  and the warm start x0 from the
@@ -10,7 +10,7 @@
 
 #include "../me/check.h"
 #include "constraint.h"
-#include "kea/kea_integrate.h"
+#include "predict_velocities.h"
 #include "world.h"
 
 static MeReal dot3(const MeReal *a, const MeReal *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -101,7 +101,7 @@ void MdtPackStage(MdtWorldData *w)
 {
     MdtPartitionLists *out = &w->partitions;
     MdtStepRows *r = &w->rows;
-    MdtKeaPredictVelocities(w);
+    MdtPredictVelocities(w);
 
     int total = 0;
     for (int i = 0; i < out->constraintCount; i++)

@@ -1,6 +1,6 @@
 /* simerror.c -- the simulation check: containing a partition that produced NaN or infinity.
  *
- * The solver (solve.c) and the integrator (kea/integrate.c) mark a partition failed when its solve or
+ * The solver (solve_partitions.c) and the integrator (integrate_bodies.c) mark a partition failed when its solve or
  * its new state is not finite. Here each failed partition is reported (ME_ERR_NONFINITE_STATE, once
  * per partition and step), handed to the application's callback while its bodies still hold the bad
  * values, and then put back to its pose at the start of the step, stopped and disabled. Its

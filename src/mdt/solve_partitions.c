@@ -1,4 +1,4 @@
-/* solve.c -- MdtKeaSolve (MdtSolveStage): run Kea on each partition of the step and
+/* solve_partitions.c -- MdtKeaSolve (MdtSolveStage): run Kea on each partition of the step and
  * collect its statistics.
  *
  * Each partition is an independent LCP over its slice of the step's rows. The world's KeaParameters
@@ -13,8 +13,8 @@
  * disables it instead of integrating it. Other partitions are not touched. */
 #include <string.h>
 
-#include "../../me/check.h"
-#include "../world.h"
+#include "../me/check.h"
+#include "world.h"
 
 static MeBool allFinite(const MeReal *v, size_t n)
 {

@@ -1,11 +1,11 @@
-/* integrate.c -- MdtKeaIntegrate (MdtIntegrateStage): advance the bodies of the step by one
+/* integrate_bodies.c -- MdtKeaIntegrate (MdtIntegrateStage): advance the bodies of the step by one
  * time step.
  *
  * Karma's integrator is first order, velocities first and then positions ("symplectic Euler"):
  *
  *     v⁺ = v* + Δv_c          x⁺ = x + h v⁺          q⁺ = q + (h/2) (0, ω⁺) q, renormalised
  *
- * where v* (see predict.c) already holds the external forces, impulses and damping, and Δv_c is the
+ * where v* (see predict_velocities.c) already holds the external forces, impulses and damping, and Δv_c is the
  * velocity change from the constraint impulses the solver found. A fast-spin axis (wheels) splits ω
  * into its component along the axis, which is integrated exactly (a rotation by |ω_a| h), and the
  * rest, integrated to first order: a wheel spinning at 100 rad/s then turns at its true rate, which
@@ -16,9 +16,8 @@
  * partitions are then reported (ME_ERR_NONFINITE_STATE), passed to the world's sim-error callback,
  * and their bodies put back to their pose at the start of the step, stopped and disabled, so that
  * the error cannot spread to other partitions (simerror.c). */
-#include "../../me/check.h"
-#include "../world.h"
-#include "kea_integrate.h"
+#include "../me/check.h"
+#include "world.h"
 
 /* Orientation update: first order, with the fast-spin component (if any) integrated exactly. */
 static void integrateOrientation(MdtBodyData *b, MeReal h)

@@ -1,4 +1,4 @@
-/* predict.c -- velocities of the bodies before constraints act (the first half of the integrator).
+/* predict_velocities.c -- velocities of the bodies before constraints act (the first half of the integrator).
  *
  *     v* = (v + h (f/m + g) + j/m) / (1 + h c_lin/m)                          (c: drag coefficient)
  *     ω* = (I_w + h c_ang)⁻¹ I_w (ω_g + I_w⁻¹ (h τ + j_ang))
@@ -9,8 +9,8 @@
  * Constraints are then solved against v*, ω*. */
 #include <string.h>
 
-#include "../../me/check.h"
-#include "kea_integrate.h"
+#include "../me/check.h"
+#include "predict_velocities.h"
 
 /* The gyroscopic term, by the implicit midpoint rule in the body frame:
  *     I (ω₂ − ω₁) + h ω_m × I ω_m = 0,   ω_m = (ω₁ + ω₂)/2,
@@ -94,7 +94,7 @@ static void predictBody(MdtBodyData *b, const MdtWorldData *w, MeReal h)
     }
 }
 
-void MdtKeaPredictVelocities(MdtWorldData *w)
+void MdtPredictVelocities(MdtWorldData *w)
 {
     const MdtPartitionLists *out = &w->partitions;
     for (int i = 0; i < out->bodyCount; i++)
