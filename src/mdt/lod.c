@@ -7,15 +7,15 @@
  *            important frictionRatio share of the friction contacts keeps its friction);
  *   phase 2  whole contacts are dropped, except each group's most important one ("keeper").
  * Joints are never touched. The result is a per-contact row limit stamped with this step's partition
- * stamp (ContactData.lodRows), which the contact's row writer honours in the pack stage; the next step
- * starts from full rows again. The list lives in the world's LOD chunk. */
+ * stamp (MdtContactCapRows), which the contact's row writer honours in the pack stage; the next step
+ * starts from full rows again. Contacts are seen through bcl/contact_lod.h only, not their struct. The list lives in the world's LOD chunk. */
 
 #include <karma/MdtDefaults.h>
 #include <karma/MdtContact.h>
 
 #include "../me/check.h"
 #include "../me/sort.h"
-#include "bcl/contact_internal.h"
+#include "bcl/contact_lod.h"
 #include "constraint.h"
 #include "world.h"
 
@@ -38,7 +38,7 @@ static int compareEntries(const void *pa, const void *pb)
 
 
 /* Speed at which the two bodies approach each other at the contact (0 when separating). */
-static MeReal approachSpeed(const MdtConstraintData *owner, const ContactData *d)
+static MeReal approachSpeed(const MdtConstraintData *owner, const MdtContactLODInputs *d)
 {
     MeReal vn = 0;
     for (int i = 0; i < 2; i++) {
@@ -55,8 +55,8 @@ static MeReal approachSpeed(const MdtConstraintData *owner, const ContactData *d
     return vn < 0 ? -vn : 0;
 }
 
-static MeReal formulaImportance(const MdtWorldData *w, const MdtConstraintData *owner, const ContactData *d, int ownerRows,
-                                int partitionRows)
+static MeReal formulaImportance(const MdtWorldData *w, const MdtConstraintData *owner, const MdtContactLODInputs *d,
+                                int ownerRows, int partitionRows)
 {
     const MdtLODParams *p = &w->lod;
     MeReal s = p->penetrationBias * d->penetration / w->lengthScale +
@@ -76,15 +76,19 @@ static int listContacts(MdtWorldData *w, MdtConstraintData *c, LODEntry *list, i
 {
     MdtConstraintData *first = c->type == MdtBclCONTACTGROUP ? MdtContactGroupFirst(c) : c;
     int ownerRows = MdtConstraintRowBound(c), start = n;
-    for (MdtConstraintData *k = first; k; k = k == c ? NULL : MDT_CONSTRAINT_DATA(k, ContactData)->next) {
-        const ContactData *d = MDT_CONSTRAINT_DATA(k, const ContactData);
+    for (MdtConstraintData *k = first; k; k = k == c ? NULL : MdtContactNextInGroup(k)) {
         LODEntry *e = &list[n++];
         e->contact = k;
         e->owner = c;
-        e->full = e->rows = MdtContactRowCount(d);
+        e->full = e->rows = MdtContactFullRowCount(k);
         e->keeper = MEFALSE;
-        e->importance = w->importanceCB ? w->importanceCB((MdtContactID)k->id, w->importanceData)
-                                        : formulaImportance(w, c, d, ownerRows, partitionRows);
+        if (w->importanceCB) {
+            e->importance = w->importanceCB((MdtContactID)k->id, w->importanceData);
+        } else {
+            MdtContactLODInputs d;
+            MdtContactGetLODInputs(k, &d);
+            e->importance = formulaImportance(w, c, &d, ownerRows, partitionRows);
+        }
         if (!ME_IS_FINITE(e->importance))
             e->importance = 0; /* a NaN would make the order depend on the sort */
     }
@@ -106,7 +110,7 @@ static int countContacts(const MdtConstraintData *c)
     if (c->type == MdtBclCONTACT)
         return 1;
     int n = 0;
-    for (const MdtConstraintData *k = MdtContactGroupFirst(c); k; k = MDT_CONSTRAINT_DATA(k, const ContactData)->next)
+    for (const MdtConstraintData *k = MdtContactGroupFirst(c); k; k = MdtContactNextInGroup(k))
         n++;
     return n;
 }
@@ -157,9 +161,7 @@ static int capPartition(MdtWorldData *w, int p, int rows)
     for (int i = 0; i < n; i++) {
         if (list[i].rows == list[i].full)
             continue;
-        ContactData *d = MDT_CONSTRAINT_DATA(list[i].contact, ContactData);
-        d->lodRows = list[i].rows;
-        d->lodStamp = w->partitionStamp;
+        MdtContactCapRows(list[i].contact, list[i].rows, w->partitionStamp);
         dropped += list[i].full - list[i].rows;
     }
     MeChunkPutMem(&w->lodChunk, list);

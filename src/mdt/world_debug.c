@@ -8,7 +8,7 @@
 #include <karma/MeDebugDraw.h>
 
 #include "../me/check.h"
-#include "bcl/contact_internal.h"
+#include "bcl/contact_lod.h"
 #include "constraint.h"
 #include "world.h"
 
@@ -77,8 +77,7 @@ void MdtWorldDebugDraw(MdtWorldData *w)
         if (c->type == MdtBclCONTACT)
             drawContact(w, c);
         else if (c->type == MdtBclCONTACTGROUP)
-            for (const MdtConstraintData *k = MdtContactGroupFirst(c); k;
-                 k = MDT_CONSTRAINT_DATA(k, const ContactData)->next)
+            for (const MdtConstraintData *k = MdtContactGroupFirst(c); k; k = MdtContactNextInGroup(k))
                 drawContact(w, k);
     }
 }

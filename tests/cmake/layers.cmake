@@ -8,4 +8,4 @@ add_test(NAME layers_include_rules_catch_violations
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_layers.cmake)
 # Every rule must be reported: one line per violating include in the fixture.
 set_tests_properties(layers_include_rules_catch_violations PROPERTIES
-  PASS_REGULAR_EXPRESSION "kea_world_stage.c: #include ../world.h: Kea includes only.*kea_world_stage.c: #include karma/MdtBody.h: Kea includes no.*bcl_sees_mcd.c: #include karma/McdModel.h: Mdt includes no.*mcd_sees_mdt.c: #include ../mdt/body.h: Mcd includes no")
+  PASS_REGULAR_EXPRESSION "kea_world_stage.c: #include ../world.h: Kea includes only.*kea_world_stage.c: #include karma/MdtBody.h: Kea includes no.*mdt_stage_sees_mcd.c: #include karma/McdModel.h: Mdt includes no.*mdt_stage_sees_mcd.c: #include bcl/contact_internal.h: Mdt.s stages see contacts.*mcd_sees_mdt.c: #include ../mdt/body.h: Mcd includes no")

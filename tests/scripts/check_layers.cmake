@@ -5,6 +5,7 @@
 # Kea (src/mdt/kea) is a solver library: it includes its own headers, Me's (<karma/Me*.h>,
 # src/me/) and the C library, never Mdt, BCL, Mcd or Mst. Mdt (src/mdt, BCL included) never
 # includes Mcd or Mst; Mcd (src/mcd) never includes Mdt, Kea, BCL or Mst. Only Mst joins them.
+# Mdt's stages (src/mdt/*.c: LOD, debug drawing) do not include the contact's struct.
 # Each #include line is read as text; a violation names the file, the line and the rule.
 cmake_minimum_required(VERSION 3.20)
 if(NOT SRC)
@@ -44,6 +45,10 @@ check_includes("Kea includes no Mdt, BCL, Mcd or Mst header" "${kea}"
 
 file(GLOB_RECURSE mdt ${SRC}/mdt/*.c ${SRC}/mdt/*.h)
 check_includes("Mdt includes no Mcd or Mst header" "${mdt}" "(^|/)(Mcd|Mst)[A-Za-z0-9]*\\.h$|(^|/)(mcd|mst)/" "")
+
+# Mdt's stages outside BCL reach contacts through bcl/contact_lod.h, not the contact's struct.
+file(GLOB mdtStages ${SRC}/mdt/*.c ${SRC}/mdt/*.h)
+check_includes("Mdt's stages see contacts through bcl/contact_lod.h only" "${mdtStages}" "contact_internal\\.h$" "")
 
 file(GLOB_RECURSE mcd ${SRC}/mcd/*.c ${SRC}/mcd/*.h)
 check_includes("Mcd includes no Mdt, Kea, BCL or Mst header" "${mcd}"

@@ -65,6 +65,29 @@ int MdtContactStepRows(const MdtConstraintData *c)
 
 static int rowCount(const MdtConstraintData *c) { return MdtContactStepRows(c); }
 
+MdtConstraintData *MdtContactNextInGroup(const MdtConstraintData *c)
+{
+    return MDT_CONSTRAINT_DATA(c, const ContactData)->next;
+}
+
+int MdtContactFullRowCount(const MdtConstraintData *c) { return MdtContactRowCount(MDT_CONSTRAINT_DATA(c, const ContactData)); }
+
+void MdtContactGetLODInputs(const MdtConstraintData *c, MdtContactLODInputs *out)
+{
+    const ContactData *d = MDT_CONSTRAINT_DATA(c, const ContactData);
+    out->position = d->position;
+    out->normal = d->normal;
+    out->penetration = d->penetration;
+    out->importance = d->importance;
+}
+
+void MdtContactCapRows(MdtConstraintData *c, int rows, unsigned long stamp)
+{
+    ContactData *d = MDT_CONSTRAINT_DATA(c, ContactData);
+    d->lodRows = rows;
+    d->lodStamp = stamp;
+}
+
 /* Fills lin/ang of both halves for direction dir: J v = dir·(v0p − v1p). */
 static void directionRow(MdtRow *row, const MeVector3 dir, const MeVector3 r0, const MeVector3 r1)
 {

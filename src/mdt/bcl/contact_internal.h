@@ -5,6 +5,7 @@
 #include <karma/MdtContactParams.h>
 
 #include "../constraint.h"
+#include "contact_lod.h"
 
 typedef struct ContactData {
     MeVector3 position;       /* world */
@@ -30,8 +31,6 @@ extern const MdtConstraintClass MdtContactClass;
 int MdtContactRowCount(const ContactData *d);
 /* Rows the contact writes in this step: its type's, or fewer when matrix capping dropped some. */
 int MdtContactStepRows(const MdtConstraintData *contact);
-/* First contact of a group (NULL when empty); the others follow through ContactData.next. */
-MdtConstraintData *MdtContactGroupFirst(const MdtConstraintData *group);
 /* Write one contact's rows for `owner` (the contact itself, or its group): bodies come from owner. */
 void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contact, MdtRowWriter *w);
 /* Keep the contact's impulses (warm start) and its normal force. */
