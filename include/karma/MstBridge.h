@@ -52,7 +52,8 @@ ME_API MstPerPairCBPtr MstBridgeGetPerPairCB(MstBridgeID b, MstMaterialID m1, Ms
 /** Size of the pair container read from the space per chunk (default 128). */
 ME_API void MstBridgeSetModelPairBufferSize(MstBridgeID b, int size);
 ME_API int MstBridgeGetModelPairBufferSize(MstBridgeID b);
-/** Size of the McdContact buffer one pair test may fill (default 32). */
+/** Size of the McdContact buffer one pair test may fill (default 32; at least 1): the only limit on
+ *  the contacts one pair makes in a step, an intersect callback's included. */
 ME_API void MstBridgeSetContactBufferSize(MstBridgeID b, int size);
 ME_API int MstBridgeGetContactBufferSize(MstBridgeID b);
 

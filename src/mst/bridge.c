@@ -30,6 +30,43 @@
 #define DEFAULT_PAIR_BUFFER 128
 #define DEFAULT_CONTACT_BUFFER 32
 
+/* Make room for `count` contacts in the scratch of matchContacts; 0 (reported by MeMemory) if
+ * memory runs out, the old scratch kept. */
+static MeBool reserveMatchScratch(MstBridgeData *b, int count)
+{
+    if (count <= b->matchCapacity)
+        return METRUE;
+    MdtContactID *oldContacts = MeMemoryCreate(sizeof *oldContacts * (size_t)count);
+    MdtContactID *newContacts = MeMemoryCreate(sizeof *newContacts * (size_t)count);
+    MeVector3 *oldPositions = MeMemoryCreate(sizeof *oldPositions * (size_t)count);
+    MeBool *oldUsed = MeMemoryCreate(sizeof *oldUsed * (size_t)count);
+    if (!oldContacts || !newContacts || !oldPositions || !oldUsed) {
+        MeMemoryDestroy(oldContacts);
+        MeMemoryDestroy(newContacts);
+        MeMemoryDestroy(oldPositions);
+        MeMemoryDestroy(oldUsed);
+        return MEFALSE;
+    }
+    MeMemoryDestroy(b->oldContacts);
+    MeMemoryDestroy(b->newContacts);
+    MeMemoryDestroy(b->oldPositions);
+    MeMemoryDestroy(b->oldUsed);
+    b->oldContacts = oldContacts;
+    b->newContacts = newContacts;
+    b->oldPositions = oldPositions;
+    b->oldUsed = oldUsed;
+    b->matchCapacity = count;
+    return METRUE;
+}
+
+static void freeMatchScratch(MstBridgeData *b)
+{
+    MeMemoryDestroy(b->oldContacts);
+    MeMemoryDestroy(b->newContacts);
+    MeMemoryDestroy(b->oldPositions);
+    MeMemoryDestroy(b->oldUsed);
+}
+
 MstBridgeData *MstBridgeFromID(MstBridgeID id, const char *function)
 {
     return MeHandleResolveOwner((uintptr_t)id, ME_HANDLE_BRIDGE, function, "b");
@@ -52,12 +89,15 @@ MstBridgeID MstBridgeCreate(McdFrameworkID frame, int maxMaterials)
     b->pairs = McdModelPairContainerCreate(b->pairBufferSize);
     b->contactBufferSize = DEFAULT_CONTACT_BUFFER;
     b->contacts = MeMemoryCreate(sizeof *b->contacts * (size_t)b->contactBufferSize);
-    b->ownerSlot = (b->table && b->pairs && b->contacts) ? MeHandleRegisterOwner(b, ME_HANDLE_BRIDGE, __func__) : 0;
+    const MeBool scratch = reserveMatchScratch(b, b->contactBufferSize);
+    b->ownerSlot = (b->table && b->pairs && b->contacts && scratch) ? MeHandleRegisterOwner(b, ME_HANDLE_BRIDGE, __func__)
+                                                                    : 0;
     if (!b->ownerSlot) {
         MeMemoryDestroy(b->table);
         if (b->pairs)
             McdModelPairContainerDestroy(b->pairs);
         MeMemoryDestroy(b->contacts);
+        freeMatchScratch(b);
         MeMemoryDestroy(b);
         return NULL;
     }
@@ -75,6 +115,7 @@ void MstBridgeDestroy(MstBridgeID id)
     MeHandleUnregisterOwner(b->ownerSlot);
     McdModelPairContainerDestroy(b->pairs);
     MeMemoryDestroy(b->contacts);
+    freeMatchScratch(b);
     MeMemoryDestroy(b->table);
     MeMemoryDestroy(b);
 }
@@ -114,8 +155,10 @@ void MstBridgeSetContactBufferSize(MstBridgeID id, int size)
         return;
     }
     McdContact *c = MeMemoryCreate(sizeof *c * (size_t)size);
-    if (!c)
+    if (!c || !reserveMatchScratch(b, size)) {
+        MeMemoryDestroy(c);
         return;
+    }
     MeMemoryDestroy(b->contacts);
     b->contacts = c;
     b->contactBufferSize = size;
@@ -185,21 +228,27 @@ void MstHandleTransitions(McdModelPairContainer *pairs, McdSpaceID space, MdtWor
 }
 
 /* The group's existing contacts are reused for the new ones; a new contact takes the old contact
- * nearest to it (greedy, in the test's order), so that warm-start impulses follow the points. */
-static int matchContacts(MdtContactGroupID g, const McdContact *in, int n, MdtContactID *out)
+ * nearest to it (greedy, in the test's order), so that warm-start impulses follow the points. The
+ * bridge's scratch holds every old contact, however many the group has. Returns how many of the n
+ * new contacts have a dynamics contact in b->newContacts. */
+static int matchContacts(MstBridgeData *b, MdtContactGroupID g, const McdContact *in, int n)
 {
-    enum { MAX_OLD = 64 };
-    MdtContactID old[MAX_OLD];
-    MeVector3 oldPos[MAX_OLD];
-    const int oldCount = MdtContactGroupGetContactsAndPositions(g, old, oldPos, MAX_OLD, "MstHandleCollisions");
-    MeBool used[MAX_OLD] = {0};
+    const int groupCount = MdtContactGroupGetCount(g);
+    if (!reserveMatchScratch(b, groupCount > n ? groupCount : n))
+        return 0; /* out of memory: reported by MeMemory; the group keeps last step's contacts */
+    MdtContactID *old = b->oldContacts, *out = b->newContacts;
+    MeBool *used = b->oldUsed;
+    const int oldCount =
+        MdtContactGroupGetContactsAndPositions(g, old, b->oldPositions, b->matchCapacity, "MstHandleCollisions");
+    for (int k = 0; k < oldCount; k++)
+        used[k] = MEFALSE;
     for (int i = 0; i < n; i++) {
         int best = -1;
         MeReal bestD = MEINFINITY;
         for (int k = 0; k < oldCount; k++) {
             if (used[k])
                 continue;
-            MeReal d = MeVector3DistanceSqr(oldPos[k], in[i].position);
+            MeReal d = MeVector3DistanceSqr(b->oldPositions[k], in[i].position);
             if (d < bestD) {
                 bestD = d;
                 best = k;
@@ -210,8 +259,10 @@ static int matchContacts(MdtContactGroupID g, const McdContact *in, int n, MdtCo
             out[i] = old[best];
         } else {
             out[i] = MdtContactGroupCreateContact(g);
-            if (!out[i])
-                return i; /* constraint pool full: reported by Mdt */
+            if (!out[i]) {
+                n = i; /* constraint pool full: reported by Mdt */
+                break;
+            }
         }
     }
     for (int k = 0; k < oldCount; k++)
@@ -262,11 +313,10 @@ static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
         MdtContactGroupSetGenerator(g, pair);
         pair->userData = g;
     }
-    int n = result.contactCount;
-    MdtContactID dyn[DEFAULT_CONTACT_BUFFER * 8];
-    if (n > (int)(sizeof dyn / sizeof dyn[0]))
-        n = (int)(sizeof dyn / sizeof dyn[0]);
-    n = matchContacts(g, result.contacts, n, dyn);
+    /* An intersect callback may have set a count beyond the buffer it was given. */
+    int n = result.contactCount < b->contactBufferSize ? result.contactCount : b->contactBufferSize;
+    n = matchContacts(b, g, result.contacts, n);
+    MdtContactID *dyn = b->newContacts;
     int kept = 0;
     for (int i = 0; i < n; i++) {
         const McdContact *c = &result.contacts[i];

@@ -24,6 +24,13 @@ typedef struct MstBridgeData {
     int pairBufferSize;
     McdContact *contacts;              /* buffer for one pair test */
     int contactBufferSize;
+    /* Scratch of one group's refresh (matchContacts), room for matchCapacity contacts: the group's
+     * old contacts, their positions and whether a new one took them, and the new contacts. It grows
+     * with the contact buffer and with a group that holds more contacts than that. */
+    MdtContactID *oldContacts, *newContacts;
+    MeVector3 *oldPositions;
+    MeBool *oldUsed;
+    int matchCapacity;
     int lastPairCount, lastContactCount;
 } MstBridgeData;
 

@@ -321,6 +321,68 @@ static void callbacks_and_parameters(void **state)
     MstUniverseDestroy(s.u);
 }
 
+/* An intersect callback may hand the bridge as many contacts as the buffer the user set: here a
+ * 17 x 17 grid (289 contacts, more than any fixed inner limit the bridge once had: 64 old contacts
+ * matched per group, 256 converted per pair) spread over the lower face of a box resting on the
+ * ground, the face's corners taken from the box-plane test's own contacts. Every step must convert
+ * all of them into one group of exactly that many contacts (the old ones reused, none left over),
+ * and together they must carry the box's weight. */
+#define GRID 17
+static void contactGrid(McdIntersectResult *r)
+{
+    if (r->contactCount < 4 || r->contactMaxCount < GRID * GRID)
+        return;
+    MeReal lo[2] = {MEINFINITY, MEINFINITY}, hi[2] = {-MEINFINITY, -MEINFINITY};
+    for (int i = 0; i < r->contactCount; i++)
+        for (int k = 0; k < 2; k++) {
+            const MeReal x = r->contacts[i].position[k];
+            lo[k] = x < lo[k] ? x : lo[k];
+            hi[k] = x > hi[k] ? x : hi[k];
+        }
+    const McdContact corner = r->contacts[0];
+    for (int i = 0; i < GRID; i++)
+        for (int j = 0; j < GRID; j++) {
+            McdContact *c = &r->contacts[i * GRID + j];
+            *c = corner;
+            c->position[0] = lo[0] + (hi[0] - lo[0]) * (MeReal)i / (GRID - 1);
+            c->position[1] = lo[1] + (hi[1] - lo[1]) * (MeReal)j / (GRID - 1);
+        }
+    r->contactCount = GRID * GRID;
+}
+
+static void contact_buffer_size_is_the_only_limit(void **state)
+{
+    (void)state;
+    Scene s;
+    sceneInit(&s);
+    MdtWorldSetAutoDisable(s.w, MEFALSE); /* the pair is tested every step */
+    MstBridgeSetContactBufferSize(s.b, GRID * GRID);
+    MstBridgeSetIntersectCB(s.b, 0, 0, contactGrid);
+    McdModelID box = MstModelAndBodyCreate(s.u, McdBoxCreate(s.fw, 1, 1, 0.2f), 500);
+    assert_non_null(box);
+    MdtBodyID body = McdModelGetBody(box);
+    MdtBodySetPosition(body, 0, 0, 0.0995f); /* resting, half a millimetre into the ground */
+    const double weight = (double)MdtBodyGetMass(body) * 9.81;
+    karma_capture_messages();
+    double force = 0;
+    for (int step = 0; step < 60; step++) {
+        MstUniverseStep(s.u, 1.0f / 60);
+        MdtContactGroupID g = groupOf(body);
+        assert_non_null(g);
+        assert_int_equal(MstBridgeGetLastContactCount(s.b), GRID * GRID);
+        assert_int_equal(MdtContactGroupGetCount(g), GRID * GRID);
+        force = (double)MdtContactGroupGetNormalForce(g);
+    }
+    MeVector3 v;
+    MdtBodyGetLinearVelocity(body, v);
+    print_message("%d contacts on one pair: normal force %.2f N for a weight of %.2f N, |v| %.2e m/s\n", GRID * GRID,
+                  force, weight, (double)MeVector3Magnitude(v));
+    assert_int_equal(karma_warning_count(), 0);
+    assert_rel(force, weight, 0.02);
+    assert_true(MeVector3Magnitude(v) < 1e-2f);
+    MstUniverseDestroy(s.u);
+}
+
 /* A ball that comes to rest is disabled and its model frozen; a push wakes both. */
 static void freeze_follows_disable(void **state)
 {
@@ -541,6 +603,7 @@ int main(void)
         cmocka_unit_test(empty_group_neither_joins_nor_wakes),
         cmocka_unit_test(collision_update_skips_bad_fields_one_by_one),
         cmocka_unit_test(callbacks_and_parameters),
+        cmocka_unit_test(contact_buffer_size_is_the_only_limit),
         cmocka_unit_test(freeze_follows_disable),
         cmocka_unit_test(model_and_body_helpers),
     };
