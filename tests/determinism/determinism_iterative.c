@@ -1,6 +1,6 @@
-/* determinism_iterative.c -- golden hashes of two scenes that run Kea's iterative path (kea_iterative.c),
- * the safety net for restructuring it: a change that claims unchanged trajectories must keep both
- * hashes bit-identical.
+/* determinism_iterative.c -- golden hashes of two scenes that run Kea's iterative path
+ * (src/mdt/kea/kea_iterative.h and the files it lists), the safety net for restructuring it: a
+ * change that claims unchanged trajectories must keep both hashes bit-identical.
  *
  * - pile: 120 bodies (spheres, boxes, capsules, cylinders) dropped in a loose lattice onto a ground
  *   plane and onto each other;

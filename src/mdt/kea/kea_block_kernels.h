@@ -1,0 +1,162 @@
+/* kea_block_kernels.h -- the block kernels the iterative path's parts share (kea_iterative.h): a
+ * block's product with a symmetric matrix, J_b dv (gather), dv += B_b d (scatter), applying a
+ * block's impulse changes, and the dense solver on a block's small LCP. Static inline: each part
+ * that includes this gets its own inlined copy, the same arithmetic everywhere. */
+#ifndef KEA_BLOCK_KERNELS_H
+#define KEA_BLOCK_KERNELS_H
+
+#include <string.h>
+
+#include "kea_iterative.h"
+
+/* out = M in for a symmetric m x m block M (out and in distinct): KeaColumnsApply (kea_rows.c); a
+ * contact's 3 x 3, the most common block, inline with the same sums. */
+static inline void KeaBlockSymmetricApply(int m, const MeReal *M, const MeReal *in, MeReal *out)
+{
+    int r;
+    if (m != 3) {
+        KeaColumnsApply(m, m, M, in, out);
+        return;
+    }
+    for (r = 0; r < 3; ++r)
+        out[r] = (M[r] * in[0] + M[3 + r] * in[1]) + M[6 + r] * in[2];
+}
+
+/* out = J_b (v0, v1) for the block of m rows from s (all on the same two bodies): a block of more
+ * than 4 rows from its transpose JT (12 x m), column by column, each out[r] its own running sum
+ * over the 12 components in order; a smaller one row by row. */
+static inline void KeaBlockGatherSmall(const KeaIterativeWork *w, int s, int m, const KeaVel4 *v0, const KeaVel4 *v1,
+                                MeReal *out)
+{
+    /* written out: a loop over so few rows is "vectorised" across them, at a high price */
+    out[0] = KeaRowVel4(&w->J[s], v0, v1);
+    if (m > 1)
+        out[1] = KeaRowVel4(&w->J[s + 1], v0, v1);
+    if (m > 2)
+        out[2] = KeaRowVel4(&w->J[s + 2], v0, v1);
+    if (m > 3)
+        out[3] = KeaRowVel4(&w->J[s + 3], v0, v1);
+}
+
+static inline void KeaBlockGather(const KeaIterativeWork *w, int s, int m, const KeaVel4 *v0, const KeaVel4 *v1,
+                                  MeReal *out)
+{
+    if (m <= 4) { /* a ball joint, a one-point contact: row by row */
+        KeaBlockGatherSmall(w, s, m, v0, v1, out);
+        return;
+    }
+    KeaColumnsApplyPair(m, w->JT + 12 * s, v0->lin, v0->ang, v1->lin, v1->ang, out);
+}
+
+/* (v0, v1) += sum_r B_r d_r over a block's m rows (rows with d_r = 0 skipped), in row order: the
+ * same operations as row-by-row updates, on local copies of the two bodies (v0 != v1). v1 NULL: the
+ * second half is the world's (all zero: nothing to add). */
+static inline void KeaBlockScatterSized(const int m, const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
+{
+    KeaLanes aLin = KeaLanesLoad(v0->lin), aAng = KeaLanesLoad(v0->ang), bLin = aLin, bAng = aAng;
+    int r;
+    if (v1) {
+        bLin = KeaLanesLoad(v1->lin);
+        bAng = KeaLanesLoad(v1->ang);
+    }
+    for (r = 0; r < m; ++r) {
+        KeaLanes dr;
+        if (d[r] == ME_R(0.0))
+            continue;
+        dr = KeaLanesSplat(d[r]);
+        aLin = KeaLanesAdd(aLin, KeaLanesMul(KeaLanesLoad(B[r].lin0), dr));
+        aAng = KeaLanesAdd(aAng, KeaLanesMul(KeaLanesLoad(B[r].ang0), dr));
+        if (v1) {
+            bLin = KeaLanesAdd(bLin, KeaLanesMul(KeaLanesLoad(B[r].lin1), dr));
+            bAng = KeaLanesAdd(bAng, KeaLanesMul(KeaLanesLoad(B[r].ang1), dr));
+        }
+    }
+    KeaLanesStore(v0->lin, aLin);
+    KeaLanesStore(v0->ang, aAng);
+    if (v1) {
+        KeaLanesStore(v1->lin, bLin);
+        KeaLanesStore(v1->ang, bAng);
+    }
+}
+
+/* v += sum_r B_r d_r over a contact's three rows, on body half `half` of B. */
+static inline void KeaContactScatterHalf(const KeaJacobianRow *B, const MeReal *d, int half, KeaVel4 *v)
+{
+    KeaLanes lin = KeaLanesLoad(v->lin), ang = KeaLanesLoad(v->ang);
+    int r;
+    for (r = 0; r < 3; ++r) {
+        const KeaLanes dr = KeaLanesSplat(d[r]);
+        lin = KeaLanesAdd(lin, KeaLanesMul(KeaLanesLoad(half ? B[r].lin1 : B[r].lin0), dr));
+        ang = KeaLanesAdd(ang, KeaLanesMul(KeaLanesLoad(half ? B[r].ang1 : B[r].ang0), dr));
+    }
+    KeaLanesStore(v->lin, lin);
+    KeaLanesStore(v->ang, ang);
+}
+
+/* KeaBlockScatterSized for a contact's three rows (v0 != v1; v1 NULL on the world) without its
+ * test per row: a row with d_r = 0 adds B_r 0, zeros (the same values; only a -0 in dv may become
+ * +0, which no later comparison or product tells apart). */
+static inline void KeaContactScatter(const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
+{
+    KeaContactScatterHalf(B, d, 0, v0);
+    if (v1)
+        KeaContactScatterHalf(B, d, 1, v1);
+}
+
+static inline void KeaBlockScatter(int m, const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
+{
+    int r;
+    if (v0 == v1) { /* a block whose halves are the same body: one update after the other */
+        for (r = 0; r < m; ++r)
+            if (d[r] != ME_R(0.0))
+                KeaRowApply4(&B[r], d[r], v0, v1);
+    } else if (m == 3) { /* a contact */
+        KeaBlockScatterSized(3, B, d, v0, v1);
+    } else if (m == 12) {
+        KeaBlockScatterSized(12, B, d, v0, v1);
+    } else {
+        KeaBlockScatterSized(m, B, d, v0, v1);
+    }
+}
+
+/* Apply the deltas localX - x of the block's m rows from s (all on the same two bodies) to dv and
+ * x, in row order; localW holds the block's w before the step. */
+static inline void KeaBlockApplyDeltas(KeaIterativeWork *w, int s, int m, MeReal *x)
+{
+    int r;
+    for (r = 0; r < m; ++r) {
+        w->localD[r] = w->localX[r] - x[s + r];
+        w->sweepDecrease -= ME_R(0.5) * w->localD[r] * w->localW[r];
+    }
+    KeaBlockScatter(m, &w->B[s], w->localD, &w->dv[w->body[s][0]], &w->dv[w->body[s][1]]);
+    for (r = 0; r < m; ++r)
+        if (w->localD[r] != ME_R(0.0))
+            x[s + r] = w->localX[r];
+}
+
+/* The box-LCP of n rows (matrix A, r, own bounds lo/hi, links local to these rows or -1) with the
+ * dense solver; x is the warm start on entry and the solution on return. */
+static inline void KeaSmallLcp(const KeaProblem *problem, KeaIterativeWork *w, int n, const MeReal *A, const MeReal *r,
+                        const MeReal *lo, const MeReal *hi, const int *link, const MeReal *mu, int maxPasses,
+                        MeReal *x, KeaStats *stats)
+{
+    KeaDenseLcp lcp;
+    KeaStats local;
+    lcp.n = n;
+    lcp.A = A;
+    lcp.r = r;
+    lcp.lo = lo;
+    lcp.hi = hi;
+    lcp.link = problem->mu ? link : NULL;
+    lcp.mu = problem->mu ? mu : NULL;
+    lcp.order = NULL;
+    lcp.patternStart = lcp.pattern = NULL;
+    lcp.rows = NULL;
+    lcp.velocity = NULL;
+    memset(&local, 0, sizeof local);
+    (void)KeaDenseLcpSolve(&lcp, 0, maxPasses, w->dense, x, &local);
+    stats->pivots += local.pivots;
+    stats->regularised += local.regularised;
+}
+
+#endif

@@ -1,0 +1,215 @@
+/* kea_blocks.c -- block set-up of Kea's iterative path (kea_iterative.h): the workspace layout, the
+ * split of the rows into blocks (a constraint's rows on one body pair, a contact point with its
+ * friction rows), each block's matrix A_bb = J_b M^-1 J_b^T + diag(eps), its factor and inverse, and
+ * which blocks are plain contacts (the sweep's contact kernel). */
+#include "kea_block_kernels.h"
+
+void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIterativeWork *w)
+{
+    const int cap = KeaBlockCap(n, maxBlockRows);
+    w->B = KEA_ALLOC(arena, KeaJacobianRow, n);
+    w->invDiag = KEA_ALLOC(arena, MeReal, n);
+    w->diag = KEA_ALLOC(arena, MeReal, n);
+    w->blockStart = KEA_ALLOC(arena, int, n + 1);
+    w->blockMatrix = KEA_ALLOC(arena, int, n);
+    w->blockA = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)cap);
+    w->blockL = KEA_ALLOC(arena, MeReal, (size_t)cap * (size_t)cap);
+    w->blockInv = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)cap);
+    w->blockFactored = KEA_ALLOC(arena, unsigned char, n);
+    w->blockContact = KEA_ALLOC(arena, unsigned char, n);
+    w->wasFree = KEA_ALLOC(arena, unsigned char, n);
+    w->localW = KEA_ALLOC(arena, MeReal, cap);
+    w->rowBlock = KEA_ALLOC(arena, int, n);
+    w->segmentPos = KEA_ALLOC(arena, int, n);
+    w->segmentBlock = KEA_ALLOC(arena, int, n);
+    w->pieces = KEA_ALLOC(arena, KeaFreePiece, n);
+    w->localR = KEA_ALLOC(arena, MeReal, cap);
+    w->localLo = KEA_ALLOC(arena, MeReal, cap);
+    w->localHi = KEA_ALLOC(arena, MeReal, cap);
+    w->localX = KEA_ALLOC(arena, MeReal, cap);
+    w->localLink = KEA_ALLOC(arena, int, cap);
+    w->dense = KeaDenseWorkCreate(arena, cap);
+    w->freeRows = KEA_ALLOC(arena, int, n);
+    w->lo = KEA_ALLOC(arena, MeReal, n);
+    w->hi = KEA_ALLOC(arena, MeReal, n);
+    w->grad = KEA_ALLOC(arena, MeReal, n);
+    w->epsFree = KEA_ALLOC(arena, MeReal, n);
+    w->step = KEA_ALLOC(arena, MeReal, n);
+    w->res = KEA_ALLOC(arena, MeReal, n);
+    w->z = KEA_ALLOC(arena, MeReal, n);
+    w->dir = KEA_ALLOC(arena, MeReal, n);
+    w->q = KEA_ALLOC(arena, MeReal, n);
+    w->J = KEA_ALLOC(arena, KeaJacobianRow, n);
+    w->JT = KEA_ALLOC(arena, MeReal, (size_t)n * 12);
+    w->localD = KEA_ALLOC(arena, MeReal, cap);
+    w->body = (int(*)[2])KeaArenaAlloc(arena, sizeof(int[2]) * (size_t)n);
+    w->eps = KEA_ALLOC(arena, MeReal, n);
+    w->dv = KEA_ALLOC(arena, KeaVel4, nb + 1);
+    w->dvTmp = KEA_ALLOC(arena, KeaVel4, nb + 1);
+    w->bodyColumns = KEA_ALLOC(arena, KeaBodyColumns, nb);
+}
+
+size_t KeaIterativeWorkspaceBytes(int nRows, int nBodies)
+{
+    KeaArena counter = {NULL, 0, 0};
+    KeaIterativeWork w;
+    KeaIterativeLayout(&counter, nRows, nBodies, KEA_MAX_BLOCK_ROWS, &w);
+    return counter.used;
+}
+
+/* inv = (L L^T)^-1 = L^-T L^-1 (about m^3 / 3 multiply-adds, once per block and step): first
+ * R = L^-1 (lower triangular) row by row, row r = -(sum_{j<r} L_rj R_j) / L_rr over its columns
+ * c < r, then the upper triangle of R^T R, inv_rc = sum_{k>=c} R_kr R_kc, mirrored. Every sum runs
+ * over its index in increasing order; the inner loops are contiguous rows of R. */
+static inline void KeaBlockInvert(int m, const MeReal *L, MeReal *inv)
+{
+    MeReal R[KEA_MAX_BLOCK_ROWS * KEA_MAX_BLOCK_ROWS], acc[KEA_MAX_BLOCK_ROWS];
+    int r, c, j, k;
+    for (r = 0; r < m; ++r) {
+        const MeReal invDiag = ME_R(1.0) / L[r * m + r];
+        MeReal *Rr = R + r * m;
+        for (c = 0; c < r; ++c)
+            acc[c] = ME_R(0.0);
+        for (j = 0; j < r; ++j) { /* R_jc = 0 for c > j */
+            const MeReal l = L[r * m + j];
+            const MeReal *Rj = R + j * m;
+            for (c = 0; c <= j; ++c)
+                acc[c] += l * Rj[c];
+        }
+        for (c = 0; c < r; ++c)
+            Rr[c] = -acc[c] * invDiag;
+        Rr[r] = invDiag;
+    }
+    for (r = 0; r < m; ++r) {
+        for (c = r; c < m; ++c)
+            acc[c] = ME_R(0.0);
+        for (k = r; k < m; ++k) { /* R_kc = 0 for c > k */
+            const MeReal a = R[k * m + r];
+            const MeReal *Rk = R + k * m;
+            for (c = r; c <= k; ++c)
+                acc[c] += a * Rk[c];
+        }
+        for (c = r; c < m; ++c)
+            inv[r * m + c] = inv[c * m + r] = acc[c];
+    }
+}
+
+/* Row i begins a contact with friction: it has no link and the next row is linked to it. */
+static int KeaContactStart(const KeaProblem *problem, int i)
+{
+    return problem->link && problem->link[i] < 0 && i + 1 < problem->nRows && problem->link[i + 1] == i;
+}
+
+/* A plain contact block, the pile's every block: three rows on two different bodies (the second
+ * may be the world), a normal row with bounds [0, inf) and no link, two friction rows linked to it
+ * with no bounds of their own (KeaContactSolve's case), each touching something, and the block's
+ * inverse exists. The sweep solves it with that layout known (KeaContactBlockStep). Returns its
+ * KEA_CONTACT_* kind, or 0. */
+static unsigned char KeaIsPlainContact(const KeaProblem *problem, const KeaIterativeWork *w, int s, int m)
+{
+    const int block = w->rowBlock[s];
+    int k;
+    if (m != 3 || !problem->mu || !w->blockFactored[block] || w->body[s][0] == w->body[s][1] ||
+        !KeaContactStart(problem, s) || problem->link[s + 2] != s)
+        return 0;
+    if (problem->lo[s] != ME_R(0.0) || KeaIsFinite(problem->hi[s]))
+        return 0;
+    for (k = 0; k < 3; ++k)
+        if (w->invDiag[s + k] == ME_R(0.0) || (k > 0 && (KeaIsFinite(problem->lo[s + k]) || KeaIsFinite(problem->hi[s + k]))))
+            return 0;
+    if (w->body[s][0] == problem->nBodies)
+        return 0;
+    return w->body[s][1] == problem->nBodies ? KEA_CONTACT_WORLD : KEA_CONTACT_BODIES;
+}
+
+/* Split the rows into blocks and form each block's matrix A_bb = J_b M^-1 J_b^T + diag(eps) from the
+ * rows' B = M^-1 J^T. A block is a run of rows on the same body pair, at most cap rows, except that a
+ * contact with friction (its normal row and the rows linked to it) is a block of its own. */
+void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
+{
+    const int n = problem->nRows;
+    int i = 0, offset = 0;
+    w->nBlocks = 0;
+    w->nContactBlocks = 0;
+    while (i < n) {
+        const int *b = problem->rowBodies[i];
+        const int contact = KeaContactStart(problem, i);
+        int m = 1, r, c, h, g;
+        while (i + m < n && m < cap && problem->rowBodies[i + m][0] == b[0] && problem->rowBodies[i + m][1] == b[1]) {
+            if (contact ? problem->link[i + m] != i
+                        : KeaContactStart(problem, i + m) || (problem->link && problem->link[i + m] >= 0))
+                break; /* a contact is a block of its own */
+            ++m;
+        }
+        w->blockStart[w->nBlocks] = i;
+        w->blockMatrix[w->nBlocks] = offset;
+        for (r = 0; r < m; ++r)
+            w->rowBlock[i + r] = w->nBlocks;
+        for (r = 0; r < m && m > 4; ++r) { /* only KeaBlockGather's large blocks read JT */
+            MeReal *JT = w->JT + 12 * i + r;
+            for (c = 0; c < 3; ++c) {
+                JT[c * m] = w->J[i + r].lin0[c];
+                JT[(3 + c) * m] = w->J[i + r].ang0[c];
+                JT[(6 + c) * m] = w->J[i + r].lin1[c];
+                JT[(9 + c) * m] = w->J[i + r].ang1[c];
+            }
+        }
+        if (m > 1 && b[0] != b[1]) { /* column c of A_bb = J_b B_c, from the transpose */
+            MeReal *A = w->blockA + offset, column[KEA_MAX_BLOCK_ROWS];
+            for (c = 0; c < m; ++c) {
+                const KeaJacobianRow *Bc = &w->B[i + c];
+                if (m <= 4) { /* KeaBlockGatherSmall's sums, reading B_c's halves in place */
+                    for (r = 0; r < m; ++r)
+                        A[r * m + c] = KeaRowDot4(&w->J[i + r], Bc);
+                } else {
+                    KeaVel4 v0, v1;
+                    for (h = 0; h < 4; ++h) {
+                        v0.lin[h] = Bc->lin0[h];
+                        v0.ang[h] = Bc->ang0[h];
+                        v1.lin[h] = Bc->lin1[h];
+                        v1.ang[h] = Bc->ang1[h];
+                    }
+                    KeaBlockGather(w, i, m, &v0, &v1, column);
+                    for (r = 0; r < m; ++r)
+                        A[r * m + c] = column[r];
+                }
+                if (problem->epsilon)
+                    A[c * m + c] += problem->epsilon[i + c];
+            }
+        } else if (m > 1) { /* both halves on one body: the cross terms count too */
+            MeReal *A = w->blockA + offset;
+            for (r = 0; r < m; ++r)
+                for (c = 0; c < m; ++c) {
+                    const KeaJacobianRow *Jr = &problem->J[i + r], *Bc = &w->B[i + c];
+                    MeReal v = ME_R(0.0);
+                    for (h = 0; h < 2; ++h)
+                        for (g = 0; g < 2; ++g) {
+                            if (b[h] < 0 || b[h] != b[g])
+                                continue;
+                            v += KeaDot3(h ? Jr->lin1 : Jr->lin0, g ? Bc->lin1 : Bc->lin0) +
+                                 KeaDot3(h ? Jr->ang1 : Jr->ang0, g ? Bc->ang1 : Bc->ang0);
+                        }
+                    if (r == c && problem->epsilon)
+                        v += problem->epsilon[i + r];
+                    A[r * m + c] = v;
+                }
+        }
+        w->blockFactored[w->nBlocks] = 0;
+        if (m == 3) { /* a contact or a ball joint: the same arithmetic, unrolled */
+            w->blockFactored[w->nBlocks] = (unsigned char)KeaCholeskyDenseInline(3, w->blockA + offset, w->blockL);
+            if (w->blockFactored[w->nBlocks])
+                KeaBlockInvert(3, w->blockL, w->blockInv + offset);
+            offset += 9;
+        } else if (m > 1) {
+            w->blockFactored[w->nBlocks] = (unsigned char)KeaCholeskyDense(m, w->blockA + offset, w->blockL);
+            if (w->blockFactored[w->nBlocks])
+                KeaBlockInvert(m, w->blockL, w->blockInv + offset);
+            offset += m * m;
+        }
+        w->blockContact[w->nBlocks] = KeaIsPlainContact(problem, w, i, m);
+        w->nContactBlocks += w->blockContact[w->nBlocks] != 0;
+        ++w->nBlocks;
+        i += m;
+    }
+    w->blockStart[w->nBlocks] = n;
+}

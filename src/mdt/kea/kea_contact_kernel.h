@@ -1,0 +1,187 @@
+/* kea_contact_kernel.h -- the contact kernel of the iterative path (kea_iterative.h): one contact
+ * with friction solved exactly by its few active sets, and the plain contact block's step of the
+ * sweep. Included by kea_iterative.c alone, so that the step is inlined into the sweep, its one
+ * call site. */
+#ifndef KEA_CONTACT_KERNEL_H
+#define KEA_CONTACT_KERNEL_H
+
+#include "kea_block_kernels.h"
+
+/* One active set of KeaContactActiveSets (below): friction row k free (sigk 0) or sliding at
+ * sigk mu_k n. Returns 1, with the solution in out, if it is valid. */
+static inline int KeaContactTry(const MeReal *A, const MeReal *r, const MeReal *mu, const int sig1, const int sig2,
+                                MeReal *out)
+{
+    const int sig[3] = {0, sig1, sig2};
+    const int free = sig1 == 0 ? 1 : (sig2 == 0 ? 2 : -1);
+    MeReal an[3], x[3], wv;
+    int k;
+    for (k = 0; k < 3; ++k) /* the column of n with the sliding rows substituted */
+        an[k] = A[k * 3 + 0] + (MeReal)sig[1] * mu[1] * A[k * 3 + 1] + (MeReal)sig[2] * mu[2] * A[k * 3 + 2];
+    if (free < 0) {
+        if (!(an[0] > ME_R(0.0)))
+            return 0;
+        x[0] = r[0] / an[0];
+    } else {
+        const MeReal det = an[0] * A[free * 3 + free] - A[0 * 3 + free] * an[free];
+        if (!(det > ME_R(0.0)))
+            return 0;
+        x[0] = (r[0] * A[free * 3 + free] - A[0 * 3 + free] * r[free]) / det;
+        x[free] = (an[0] * r[free] - an[free] * r[0]) / det;
+        if (!(KeaFabs(x[free]) <= mu[free] * x[0]))
+            return 0;
+    }
+    if (!(x[0] > ME_R(0.0)))
+        return 0;
+    for (k = 1; k < 3; ++k)
+        if (sig[k] != 0)
+            x[k] = (MeReal)sig[k] * mu[k] * x[0];
+    for (k = 1; k < 3; ++k) {
+        if (sig[k] == 0)
+            continue;
+        wv = A[k * 3 + 0] * x[0] + A[k * 3 + 1] * x[1] + A[k * 3 + 2] * x[2] - r[k];
+        if (sig[k] > 0 ? wv > ME_R(0.0) : wv < ME_R(0.0))
+            return 0; /* the row would rather slide less */
+    }
+    out[0] = x[0];
+    out[1] = x[1];
+    out[2] = x[2];
+    return 1;
+}
+
+/* One contact with friction (a normal row with bounds [0, inf) and two rows linked to it with no
+ * bounds of their own), solved exactly by trying its few active sets, x = (n, f1, f2):
+ *   n = 0 (the contact opens; the friction rows are pinned at 0): valid if w_n >= 0;
+ *   n > 0 with each friction row free or sliding at +-mu n, not both free: the rows that are free
+ *   (and the normal) have w = 0, a 1x1 or 2x2 system in n and the free friction impulse; valid if
+ *   n > 0, a free friction row stays within +-mu n, and a sliding one's w pushes against its bound.
+ * A is the contact's 3 x 3 matrix, r its r_loc = A x - w, mu its rows' friction coefficients.
+ * The all-free case is KeaBlockAllFree's (with the block's precomputed inverse).
+ * The first valid set in that fixed order is taken (with mu small enough the solution is unique).
+ * Exact comparisons: a set valid only within rounding is left to the general solver. Returns 1 if
+ * solved (out holds the solution). */
+static inline int KeaContactActiveSets(const MeReal *A, const MeReal *r, const MeReal *mu, MeReal *out)
+{
+    if (-r[0] >= ME_R(0.0)) { /* n = 0: w = A 0 - r */
+        out[0] = out[1] = out[2] = ME_R(0.0);
+        return 1;
+    }
+    /* Each friction row free (0) or sliding (+1, -1), not both free, in this order; one call per set
+     * (constants: each test its own branch, which predicts better than one loop's). */
+    return KeaContactTry(A, r, mu, 0, 1, out) || KeaContactTry(A, r, mu, 0, -1, out) ||
+           KeaContactTry(A, r, mu, 1, 0, out) || KeaContactTry(A, r, mu, 1, 1, out) ||
+           KeaContactTry(A, r, mu, 1, -1, out) || KeaContactTry(A, r, mu, -1, 0, out) ||
+           KeaContactTry(A, r, mu, -1, 1, out) || KeaContactTry(A, r, mu, -1, -1, out);
+}
+
+/* KeaContactActiveSets for a block given by its local bounds and links: 0 unless it is a contact
+ * (normal row with bounds [0, inf) and no link, two rows linked to it with no bounds of their own). */
+static inline int KeaContactSolve(const MeReal *A, const MeReal *r, const MeReal *lo, const MeReal *hi, const int *link,
+                           const MeReal *mu, MeReal *out)
+{
+    int k;
+    if (link[0] >= 0 || lo[0] != ME_R(0.0) || KeaIsFinite(hi[0]))
+        return 0;
+    for (k = 1; k < 3; ++k)
+        if (link[k] != 0 || KeaIsFinite(lo[k]) || KeaIsFinite(hi[k]))
+            return 0;
+    return KeaContactActiveSets(A, r, mu, out);
+}
+
+/* A plain contact's rows free now (KeaRowIsFree: its normal row's bounds [0, hi), its friction
+ * rows' +-mu n) into was, from its impulses xb; returns how many of the three changed. The sweep
+ * calls it after each contact's step, which is that block's last change before the next SM
+ * chance (a contact's bounds depend on its own rows only). */
+static inline int KeaContactFreeRows(const MeReal *mu, MeReal hi, const MeReal *xb, unsigned char *was)
+{
+    const MeReal n = xb[0], bound1 = KeaFrictionBound(mu[1], n), bound2 = KeaFrictionBound(mu[2], n);
+    const unsigned char f0 = (unsigned char)(ME_R(0.0) < n && n < hi);
+    const unsigned char f1 = (unsigned char)(-bound1 < xb[1] && xb[1] < bound1);
+    const unsigned char f2 = (unsigned char)(-bound2 < xb[2] && xb[2] < bound2);
+    const int changed = (f0 != was[0]) + (f1 != was[1]) + (f2 != was[2]);
+    was[0] = f0;
+    was[1] = f1;
+    was[2] = f2;
+    return changed;
+}
+
+/* KeaBlockStep for a plain contact block (KeaIsPlainContact), with the same arithmetic in the same
+ * order (so the same values; on the world the exact zeros of its half are not computed), its three
+ * rows held in locals: the normal row's bounds are [0, inf), the friction rows' [-mu n, mu n] for
+ * the normal impulse n. */
+static inline MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, int maxPasses, MeReal *x,
+                                  KeaStats *stats, int onWorld, int measure, int tally, MeReal *decrease,
+                                  int *changed)
+{
+    const int s = w->blockStart[block];
+    KeaVel4 *v0 = &w->dv[w->body[s][0]], *v1 = &w->dv[w->body[s][1]];
+    const MeReal *mu = problem->mu + s, *inv = w->blockInv + w->blockMatrix[block];
+    MeReal wb[3], xb[3], xn[3], d[3], t[3], bound, bound2, worst;
+    int r;
+    for (r = 0; r < 3; ++r)
+        wb[r] = onWorld ? KeaRowVel4World(&w->J[s + r], v0) : KeaRowVel4(&w->J[s + r], v0, v1);
+    for (r = 0; r < 3; ++r) {
+        xb[r] = x[s + r];
+        wb[r] = wb[r] + w->eps[s + r] * xb[r] - problem->rhs[s + r];
+    }
+    /* the residual before the step (when the sweep still measures): normal row in [0, inf), friction
+     * rows in [-mu n, mu n] */
+    worst = ME_R(0.0);
+    if (measure) {
+        worst = KeaMax(worst, w->diag[s] * KeaFabs(xb[0] - KeaClamp(xb[0] - wb[0] * w->invDiag[s], ME_R(0.0),
+                                                                     problem->hi[s])));
+        for (r = 1; r < 3; ++r) {
+            bound = KeaFrictionBound(mu[r], xb[0]);
+            worst = KeaMax(worst, w->diag[s + r] *
+                                      KeaFabs(xb[r] - KeaClamp(xb[r] - wb[r] * w->invDiag[s + r], -bound, bound)));
+        }
+    }
+    /* every row free: x_b - A_bb^-1 w_b, if it keeps within the bounds its own normal gives */
+    for (r = 0; r < 3; ++r)
+        t[r] = (inv[r] * wb[0] + inv[3 + r] * wb[1]) + inv[6 + r] * wb[2];
+    for (r = 0; r < 3; ++r)
+        xn[r] = xb[r] - t[r];
+    bound = KeaFrictionBound(mu[1], xn[0]);
+    bound2 = KeaFrictionBound(mu[2], xn[0]);
+    if (!(xn[0] >= ME_R(0.0) && xn[0] <= problem->hi[s] && xn[1] >= -bound && xn[1] <= bound && xn[2] >= -bound2 &&
+          xn[2] <= bound2)) {
+        const MeReal *A = w->blockA + w->blockMatrix[block];
+        MeReal rl[3];
+        for (r = 0; r < 3; ++r) /* r_loc = A_bb x_b - w_b */
+            rl[r] = ((A[r] * xb[0] + A[3 + r] * xb[1]) + A[6 + r] * xb[2]) - wb[r];
+        /* the set the contact was in, tried first: a sliding contact usually keeps sliding the same
+         * way (the solution, when unique, is the same whichever valid set is found first) */
+        const MeReal was1Bound = KeaFrictionBound(mu[1], xb[0]), was2Bound = KeaFrictionBound(mu[2], xb[0]);
+        const int was1 = xb[1] >= was1Bound ? 1 : (xb[1] <= -was1Bound ? -1 : 0);
+        const int was2 = xb[2] >= was2Bound ? 1 : (xb[2] <= -was2Bound ? -1 : 0);
+        if (!((was1 | was2) != 0 && xb[0] > ME_R(0.0) && KeaContactTry(A, rl, mu, was1, was2, xn)) &&
+            !KeaContactActiveSets(A, rl, mu, xn)) { /* within rounding: the general solver */
+            for (r = 0; r < 3; ++r) {
+                w->localW[r] = wb[r];
+                w->localX[r] = xb[r];
+                w->localLo[r] = problem->lo[s + r];
+                w->localHi[r] = problem->hi[s + r];
+                w->localLink[r] = r == 0 ? -1 : 0;
+            }
+            KeaSmallLcp(problem, w, 3, A, rl, w->localLo, w->localHi, w->localLink, mu, maxPasses, w->localX, stats);
+            w->sweepDecrease = *decrease;
+            KeaBlockApplyDeltas(w, s, 3, x);
+            *decrease = w->sweepDecrease;
+            *changed += KeaContactFreeRows(mu, problem->hi[s], x + s, w->wasFree + s);
+            return worst;
+        }
+    }
+    for (r = 0; r < 3; ++r)
+        d[r] = xn[r] - xb[r];
+    if (tally) /* only the sweep after an SM step is asked how much it lowered the objective */
+        for (r = 0; r < 3; ++r)
+            *decrease -= ME_R(0.5) * d[r] * wb[r];
+    if (d[0] != ME_R(0.0) || d[1] != ME_R(0.0) || d[2] != ME_R(0.0))
+        KeaContactScatter(&w->B[s], d, v0, onWorld ? NULL : v1);
+    for (r = 0; r < 3; ++r) /* d_r = 0: xn_r is x_r */
+        x[s + r] = xn[r];
+    *changed += KeaContactFreeRows(mu, problem->hi[s], xn, w->wasFree + s);
+    return worst;
+}
+
+#endif

@@ -1,0 +1,209 @@
+/* kea_iterative.h -- Kea's iterative path (internal to it): projected Gauss-Seidel (PGS) on the
+ * sparse rows, with subspace minimisation (SM) steps between sweeps, for partitions too large for
+ * the direct path. Its files, one job each:
+ *   kea_blocks.c          block set-up: the workspace layout, the blocks and their inverses
+ *   kea_block_kernels.h   the block kernels every part shares (gather, scatter, a block's deltas)
+ *   kea_contact_kernel.h  the contact kernel: one contact block's exact step (KeaContactBlockStep)
+ *   kea_iterative.c       the sweep, the general block step and the driver (KeaSolveIterative)
+ *   kea_subspace.c        subspace minimisation and its schedule (KeaSubspaceMinimise)
+ * This header holds the padded data, the work struct, the row kernels and the tuning constants.
+ *
+ * Data: per row B_i = M^-1 J_i^T (a padded row, like J_i) and the diagonal d_i = J_i B_i + eps_i;
+ * per body the velocity change dv = M^-1 J^T x, kept up to date, so that a row needs only its own
+ * two bodies: w_i = J_i . dv + eps_i x_i - r_i is O(1) and so is the update dv += B_i delta_i.
+ *
+ * PGS sweep (rows in index order on odd sweeps, in reverse order on even ones: a one-way sweep moves
+ * information quickly one way along a chain of bodies and slowly the other, and the alternating
+ * (symmetric) order is what lets a tall pyramid of boxes stand at the default 10 sweeps,
+ * tests/mst/test_stacking.c):
+ *   x_i <- mid(lo_i, x_i - omega w_i / d_i, hi_i), with lo_i, hi_i
+ * the effective bounds at that moment (a friction row reads the current impulse of its normal row),
+ * omega the SOR factor. A sweep costs O(n). The sweep also measures the natural-map residual of
+ * each row just before its update; the largest is the sweep's residual, compared with the
+ * tolerance. PGS converges for A positive definite (0 < omega < 2) but slowly when information must
+ * travel along a chain of bodies (a stack of k boxes needs of the order of k^2 sweeps) and on the
+ * near-null directions that redundant contacts create (eps small).
+ *
+ * Block solves: a block of m rows (a constraint's rows on one body pair, or one contact point with
+ * its friction rows) is solved exactly with the rest of x fixed. Most blocks at rest have every row
+ * strictly inside its bounds: one product with the block's inverse (KeaBlockAllFree). Each contact
+ * point with its friction rows is a block of its own (not its whole contact group: docs/kea.md),
+ * which otherwise tries its few active sets in closed form (opening, or one or both friction rows
+ * sliding: KeaContactActiveSets); anything else (a constraint's rows at a limit) goes to the dense
+ * box-LCP solver (kea_dense_lcp.c). A plain contact block (a normal row and its two friction rows)
+ * has its own step (KeaContactBlockStep) with its rows in locals, which on the world skips the
+ * world's half (exact zeros).
+ *
+ * Subspace minimisation (after the idea of Silcowitz, Niebe and Erleben, "Interactive rigid body
+ * dynamics using a projected Gauss-Seidel subspace minimization method", 2010): see kea_subspace.c.
+ *
+ * Warm start: x0 is clamped to its bounds and dv computed from it before the first sweep.
+ *
+ * Data layout (for the cost per row; the arithmetic is the above): dv lives in a padded per-body
+ * copy (KeaVel4, 3-vectors padded to 4, plus an all-zero body standing for the world), rows read it
+ * through a copy of J with zero pads and zero world halves, so a row kernel has no branch per body
+ * half. A block of m > 4 rows (a joint's: a fixed joint has 6) computes its w_b = J_b dv from a 12 x m
+ * transpose of its J (KeaColumnsApply, one vectorised column kernel for all block products: w_b
+ * through KeaColumnsApplyPair, which reads the two bodies in place,
+ * A_bb^-1 w_b, the preconditioner, forming A_bb) and applies its deltas to local copies of its two
+ * bodies; SM's matrix-free products go through the free list a piece (a free row on its own, or a
+ * block whose rows are all free) at a time the same way, each piece's rows and bodies listed once
+ * per SM step (KeaFreePiece). */
+#ifndef KEA_ITERATIVE_H
+#define KEA_ITERATIVE_H
+
+#include "kea_internal.h"
+#include "kea_lanes.h"
+
+/* ---- tuning constants of the SM schedule (kea_subspace.c), gathered here --------------------- */
+
+/** An SM step is skipped when more rows than this (and than the fraction below) went from free to
+ *  bound or back since the last SM chance: a small problem's CG is cheap, and a lone box's four
+ *  corners need it to share their load, so a few changes never skip it. */
+#define KEA_SM_SKIP_MIN_CHANGED 16
+/** ... and more than 1/KEA_SM_SKIP_FRACTION of the rows changed: CG on a free set that the next
+ *  sweep changes again is mostly thrown away (a pile whose contacts keep opening and slipping). This
+ *  rule never skips twice in a row, so a moving pile still gets an SM step every other sweep. */
+#define KEA_SM_SKIP_FRACTION 20
+/** When the last SM step lowered the QP objective less than the sweep after it ("did not pay"), the
+ *  next one waits until at most 1/KEA_SM_UNPAID_FRACTION of the rows (or KEA_SM_SKIP_MIN_CHANGED)
+ *  change between chances; this rule may skip any number of chances in a row, until the active set
+ *  settles, so a solve run to convergence keeps its SM steps. */
+#define KEA_SM_UNPAID_FRACTION 100
+/** Halvings of the SM step tried by its projected line search (1, 1/2, 1/4, 1/8) before it is
+ *  rejected: a rejected step costs a sweep's worth of work, more halvings rarely find a decrease. */
+#define KEA_SM_LINE_SEARCH_TRIES 4
+
+/** A body's velocity change with each 3-vector padded to 4 (pad 0). */
+typedef struct KeaVel4 {
+    MeReal lin[4];
+    MeReal ang[4];
+} KeaVel4;
+
+/** J . (v0, v1) on padded rows: lane k sums component k of the four parts, then the three lanes
+ *  are added in a fixed order (kea_lanes.h: the same bits with or without SSE). No branch per body
+ *  half. */
+static inline MeReal KeaRowVel4(const KeaJacobianRow *J, const KeaVel4 *v0, const KeaVel4 *v1)
+{
+    return KeaLanesSum3(KeaLanesAdd(KeaLanesDot2(J->lin0, v0->lin, J->ang0, v0->ang),
+                                    KeaLanesDot2(J->lin1, v1->lin, J->ang1, v1->ang)));
+}
+
+/* J . (v0, world) on padded rows: KeaRowVel4 without the world's half, which adds exact zeros. */
+static inline MeReal KeaRowVel4World(const KeaJacobianRow *J, const KeaVel4 *v0)
+{
+    return KeaLanesSum3(KeaLanesDot2(J->lin0, v0->lin, J->ang0, v0->ang));
+}
+
+/** J_r . B_c of two padded rows: KeaRowVel4 with B_c's halves as the two bodies' velocities. */
+static inline MeReal KeaRowDot4(const KeaJacobianRow *J, const KeaJacobianRow *B)
+{
+    return KeaLanesSum3(KeaLanesAdd(KeaLanesDot2(J->lin0, B->lin0, J->ang0, B->ang0),
+                                    KeaLanesDot2(J->lin1, B->lin1, J->ang1, B->ang1)));
+}
+
+/** v += B s for one body half (padded; the pads stay 0). */
+static inline void KeaHalfApply4(const MeReal *lin, const MeReal *ang, MeReal s, KeaVel4 *v)
+{
+    const KeaLanes scale = KeaLanesSplat(s);
+    KeaLanesAddScaled(v->lin, lin, scale);
+    KeaLanesAddScaled(v->ang, ang, scale);
+}
+
+/** (v0, v1) += B s (v0 first, then v1, so that v0 == v1 is handled as two updates). */
+static inline void KeaRowApply4(const KeaJacobianRow *B, MeReal s, KeaVel4 *v0, KeaVel4 *v1)
+{
+    KeaHalfApply4(B->lin0, B->ang0, s, v0);
+    KeaHalfApply4(B->lin1, B->ang1, s, v1);
+}
+
+enum { KEA_CONTACT_BODIES = 1, KEA_CONTACT_WORLD = 2 }; /* a plain contact between two bodies, or on the world */
+
+/** SM: one piece of the free list for its matrix-free products, everything they read about it in
+ *  one place: a free row on its own, or a segment (a block whose rows are all free). */
+typedef struct KeaFreePiece {
+    int pos;      /**< its first position in the free list */
+    int row;      /**< its first row */
+    int rows;     /**< 1 for a row on its own, else the block's size */
+    int kind;     /**< 0, or the segment's KEA_CONTACT_* kind when it is a plain contact */
+    int body[2];  /**< the row halves' bodies (the world: nb) */
+} KeaFreePiece;
+
+typedef struct KeaIterativeWork {
+    KeaBodyColumns *bodyColumns; /**< nb: inverse masses and inertia columns, for B */
+    KeaJacobianRow *B;     /**< M^-1 J^T per row */
+    MeReal *invDiag;       /**< 1 / d_i (0 for a row that touches nothing and has eps 0) */
+    MeReal *diag;          /**< d_i */
+    /* Blocks: runs of consecutive rows on the same two bodies, solved together exactly. */
+    int nBlocks;
+    int *blockStart;       /**< nBlocks + 1 row offsets */
+    int *blockMatrix;      /**< offset of each block's m x m matrix in blockA */
+    MeReal *blockA;        /**< the blocks' A_bb, at most n * maxBlockRows reals */
+    MeReal *blockL;        /**< scratch: one block's Cholesky factor, read only to form its inverse */
+    MeReal *blockInv;      /**< their inverses A_bb^-1 (same offsets): a block solve in a sweep or
+                                a preconditioner step is then one small matrix-vector product,
+                                no divisions (each block is solved ~50 times a step, factored once) */
+    unsigned char *blockFactored; /**< the factor exists (A_bb safely positive definite) */
+    unsigned char *blockContact;  /**< KEA_CONTACT_* kind of a plain contact block (KeaIsPlainContact), else 0 */
+    unsigned char *wasFree;       /**< SM: the row was free at the last SM step (or the warm start) */
+    int skippedLast;              /**< SM: the last SM step was skipped */
+    MeReal sweepDecrease;         /**< estimated decrease of the QP objective by the current sweep
+                                       (its contacts tallied only in a sweep after an SM step, the
+                                       one whose figure is read) */
+    MeReal smDecrease;            /**< decrease of the objective by that SM step (0 if rejected) */
+    int smRan;                    /**< an SM step ran since the last sweep */
+    int smUnpaid;                 /**< SM: the last SM step did less than the sweep after it */
+    int nContactBlocks;           /**< blocks that are plain contacts (blockContact) */
+    int sweepChanged;             /**< plain contacts' rows that went between free and a bound in
+                                       the last sweep (tallied by its steps) */
+    MeReal *localW;        /**< a block's w */
+    int *rowBlock;         /**< block of each row */
+    int *segmentPos, *segmentBlock, nSegments; /**< SM: free blocks preconditioned by their factor */
+    KeaFreePiece *pieces;  /**< SM: the free list as rows on their own and segments, in order */
+    int nPieces;
+    MeReal *localR, *localLo, *localHi, *localX; /**< a block's LCP (maxBlockRows each) */
+    int *localLink;
+    KeaDenseWork *dense;   /**< the dense solver, sized for maxBlockRows */
+    /* Subspace minimisation: */
+    int *freeRows;         /**< rows strictly inside their bounds */
+    MeReal *lo, *hi;       /**< bounds frozen for the SM step (by row) */
+    MeReal *grad;          /**< w on the free rows (by position) */
+    MeReal *epsFree;       /**< eps of the free rows (by position) */
+    MeReal *step;          /**< CG solution delta */
+    MeReal *res, *z, *dir, *q; /**< CG vectors */
+    /* Row kernels on padded data: J_i . dv and dv += B_i s as four-wide operations with no branch
+     * per body half. Bodies are KeaVel4 (4-padded 3-vectors, pads 0) with one extra all-zero body
+     * at index nb that stands for the world; the rows' copies of J have zero pads and zero halves
+     * on the world, so that the extra body contributes exact zeros. */
+    KeaJacobianRow *J;     /**< J_i with pads and world halves zeroed */
+    MeReal *JT;            /**< per block of m rows from s, its 12 x m transpose J_b^T (pads
+                                dropped) at JT + 12 s: J_b v is then a sum of 12 columns */
+    MeReal *localD;        /**< a block's impulse changes */
+    int (*body)[2];        /**< row halves' bodies, KEA_WORLD mapped to nb */
+    MeReal *eps;           /**< eps_i (0 when the problem has none) */
+    KeaVel4 *dv;           /**< the solve's dv (nb + 1), copied out at the end */
+    KeaVel4 *dvTmp;        /**< per-body scratch for A_FF p and for the trial step (nb + 1) */
+} KeaIterativeWork;
+
+/* Rows per block at most: maxBlockRows within 1 ... KEA_MAX_BLOCK_ROWS and the problem size. */
+static inline int KeaBlockCap(int n, int maxBlockRows)
+{
+    const int cap = maxBlockRows < KEA_MAX_BLOCK_ROWS ? maxBlockRows : KEA_MAX_BLOCK_ROWS;
+    return cap < 1 ? 1 : (cap < n ? cap : (n > 0 ? n : 1));
+}
+
+/* Row i is free: strictly inside its bounds lo, hi (and not a row that touches nothing). */
+static inline unsigned char KeaRowIsFree(const KeaIterativeWork *w, int i, MeReal xi, MeReal lo, MeReal hi)
+{
+    return (unsigned char)(w->invDiag[i] != ME_R(0.0) && lo < xi && xi < hi);
+}
+
+/* kea_blocks.c: lay the work struct out in the arena (n rows, nb bodies, blocks of at most
+ * maxBlockRows rows), then split the rows into blocks and form and invert each block's matrix. */
+void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIterativeWork *w);
+void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap);
+
+/* kea_subspace.c: one SM chance after a sweep; returns the CG steps taken, -1 if skipped. */
+int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x);
+
+#endif

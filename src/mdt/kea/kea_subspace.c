@@ -1,0 +1,267 @@
+/* kea_subspace.c -- subspace minimisation (SM) of Kea's iterative path (kea_iterative.h), with its
+ * schedule, after the idea of Silcowitz, Niebe and Erleben, "Interactive rigid body dynamics using a
+ * projected Gauss-Seidel subspace minimization method", 2010.
+ *
+ * A PGS sweep is good at finding which rows sit at a bound, poor at solving the linear system on the
+ * rows that do not. So between two sweeps, with the bounds frozen at their current values, the free
+ * rows F (strictly inside their bounds) take a few conjugate-gradient steps on A_FF delta = -w_F
+ * (block-Jacobi preconditioned, matrix-free: A_FF p = J_F M^-1 J_F^T p + eps p costs two passes over
+ * F through the per-body scratch), then a projected backtracking line search
+ * x_F <- mid(lo, x_F + a delta, hi), a = 1, 1/2, ... (KEA_SM_LINE_SEARCH_TRIES), accepts the first
+ * step that lowers the QP objective
+ *   f(x) = 1/2 x^T A x - r^T x;   f(x + s) - f(x) = s . (w + 1/2 (J M^-1 J^T s + eps s))
+ * (computed from the step alone, free of cancellation). A rejected step leaves x as PGS made it, so
+ * SM never makes the QP worse; the next sweep re-applies the friction links and the active set.
+ * Each CG step costs about half a sweep; KeaStats.subspaceSteps counts them.
+ *
+ * The schedule (KeaSubspaceMinimise; its thresholds are the KEA_SM_* constants of kea_iterative.h).
+ * SM pays when the sweeps have (nearly) settled which rows sit at a bound: CG on a free set that the
+ * next sweep changes again is mostly thrown away. So an SM chance is skipped when many rows went
+ * from free to bound or back since the last chance (KEA_SM_SKIP_MIN_CHANGED, KEA_SM_SKIP_FRACTION),
+ * but this rule never skips two chances in a row (skipping at any change without that rule let the
+ * pyramids fall). And SM must pay for itself: when the sweep after an SM step lowers the objective
+ * more than that step did (the sweep's decrease estimated as 1/2 delta . w per updated row, exact
+ * for an unclamped block step, low for a clamped one, so the estimate favours SM), later chances
+ * wait until few rows change (KEA_SM_UNPAID_FRACTION); that rule can skip several chances in a row.
+ * A settling or resting stack's SM steps lower the objective far more than the next sweep and all
+ * run; once a pile's active set settles, SM runs again, so a solve run to convergence keeps it.
+ * KeaStats.subspaceSkipped counts the skips. Figures: bench/RESULTS.md. */
+#include "kea_block_kernels.h"
+
+/* dvTmp = M^-1 J_F^T v (v by position in the free list), a piece (KeaFindSegments) at a time in
+ * free-list order: a segment through the sweep's block kernels (a contact's world half not
+ * written), a row on its own by itself. */
+static void KeaScatter(const KeaProblem *problem, const KeaIterativeWork *w, const MeReal *v)
+{
+    int k;
+    memset(w->dvTmp, 0, sizeof(KeaVel4) * (size_t)(problem->nBodies + 1));
+    for (k = 0; k < w->nPieces; ++k) {
+        const KeaFreePiece *piece = &w->pieces[k];
+        KeaVel4 *v0 = &w->dvTmp[piece->body[0]], *v1 = &w->dvTmp[piece->body[1]];
+        const MeReal *vp = v + piece->pos;
+        if (piece->rows == 1) {
+            if (vp[0] != ME_R(0.0))
+                KeaRowApply4(&w->B[piece->row], vp[0], v0, v1);
+        } else if (piece->kind) {
+            KeaContactScatter(&w->B[piece->row], vp, v0, piece->kind == KEA_CONTACT_WORLD ? NULL : v1);
+        } else {
+            KeaBlockScatter(piece->rows, &w->B[piece->row], vp, v0, v1);
+        }
+    }
+}
+
+/* out[p] = J_i . dv of the free rows (a piece at a time, as KeaScatter). */
+static void KeaGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out)
+{
+    int k;
+    for (k = 0; k < w->nPieces; ++k) {
+        const KeaFreePiece *piece = &w->pieces[k];
+        const KeaVel4 *v0 = &dv[piece->body[0]], *v1 = &dv[piece->body[1]];
+        const KeaJacobianRow *J = &w->J[piece->row];
+        MeReal *o = out + piece->pos;
+        if (piece->rows == 1) {
+            o[0] = KeaRowVel4(J, v0, v1);
+        } else if (piece->kind == KEA_CONTACT_WORLD) { /* as the sweep's contact step gathers */
+            o[0] = KeaRowVel4World(&J[0], v0);
+            o[1] = KeaRowVel4World(&J[1], v0);
+            o[2] = KeaRowVel4World(&J[2], v0);
+        } else if (piece->kind) {
+            o[0] = KeaRowVel4(&J[0], v0, v1);
+            o[1] = KeaRowVel4(&J[1], v0, v1);
+            o[2] = KeaRowVel4(&J[2], v0, v1);
+        } else {
+            KeaBlockGather(w, piece->row, piece->rows, v0, v1, o);
+        }
+    }
+}
+
+/* The blocks whose rows are all free (and whose factor exists) become segments of the free list,
+ * preconditioned by their exact inverse A_bb^-1; the other free rows by 1 / d_i. */
+static void KeaFindSegments(KeaIterativeWork *w, int nFree)
+{
+    int p = 0;
+    w->nSegments = 0;
+    w->nPieces = 0;
+    while (p < nFree) {
+        const int i = w->freeRows[p], b = w->rowBlock[i];
+        const int m = w->blockStart[b + 1] - w->blockStart[b];
+        KeaFreePiece *piece = &w->pieces[w->nPieces++];
+        piece->pos = p;
+        piece->row = i;
+        piece->body[0] = w->body[i][0];
+        piece->body[1] = w->body[i][1];
+        if (m > 1 && i == w->blockStart[b] && w->blockFactored[b] && p + m <= nFree &&
+            w->freeRows[p + m - 1] == i + m - 1) {
+            w->segmentPos[w->nSegments] = p;
+            w->segmentBlock[w->nSegments++] = b;
+            piece->rows = m;
+            piece->kind = w->blockContact[b];
+            p += m;
+        } else {
+            piece->rows = 1;
+            piece->kind = 0;
+            ++p;
+        }
+    }
+}
+
+/* z = P^-1 res (block-Jacobi preconditioner of the free rows). */
+static void KeaPrecondition(const KeaIterativeWork *w, int nFree, const MeReal *res, MeReal *z)
+{
+    int p = 0, k;
+    for (k = 0; k < w->nSegments; ++k) { /* Jacobi up to the segment, then the segment's block */
+        const int b = w->segmentBlock[k], m = w->blockStart[b + 1] - w->blockStart[b], start = w->segmentPos[k];
+        for (; p < start; ++p)
+            z[p] = res[p] * w->invDiag[w->freeRows[p]];
+        KeaBlockSymmetricApply(m, w->blockInv + w->blockMatrix[b], res + start, z + start);
+        p = start + m;
+    }
+    for (; p < nFree; ++p)
+        z[p] = res[p] * w->invDiag[w->freeRows[p]];
+}
+
+/* q += eps p, returning p . q (the new q) in one pass: the sums of KeaDotN4, in its order. */
+static MeReal KeaAddEpsDot(MeReal *q, const MeReal *eps, const MeReal *p, int n)
+{
+    MeReal s0 = ME_R(0.0), s1 = ME_R(0.0), s2 = ME_R(0.0), s3 = ME_R(0.0);
+    int m = 0;
+    for (; m + 4 <= n; m += 4) {
+        const MeReal q0 = q[m] + eps[m] * p[m], q1 = q[m + 1] + eps[m + 1] * p[m + 1];
+        const MeReal q2 = q[m + 2] + eps[m + 2] * p[m + 2], q3 = q[m + 3] + eps[m + 3] * p[m + 3];
+        q[m] = q0;
+        q[m + 1] = q1;
+        q[m + 2] = q2;
+        q[m + 3] = q3;
+        s0 += p[m] * q0;
+        s1 += p[m + 1] * q1;
+        s2 += p[m + 2] * q2;
+        s3 += p[m + 3] * q3;
+    }
+    for (; m < n; ++m) {
+        q[m] = q[m] + eps[m] * p[m];
+        s0 += p[m] * q[m];
+    }
+    return (s0 + s1) + (s2 + s3);
+}
+
+/* Set wasFree to which rows are free now (KeaRowIsFree); returns how many rows changed. Every
+ * chance of an SM step does this, skipped or not, so it is kept cheaper than the bounds and the
+ * free list, which only a step that runs needs: the plain contacts, a pile's every block, were
+ * tallied by the sweep just before (KeaContactFreeRows), only the other blocks are visited here
+ * (their friction bounds can follow a row that a later block of the sweep changed). */
+static int KeaUpdateFreeRows(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x)
+{
+    unsigned char *was = w->wasFree;
+    int b, i, changed = w->sweepChanged;
+    if (w->nContactBlocks == w->nBlocks)
+        return changed;
+    for (b = 0; b < w->nBlocks; ++b) {
+        const int s = w->blockStart[b];
+        if (w->blockContact[b])
+            continue; /* the sweep has tallied it (KeaContactFreeRows) */
+        for (i = s; i < w->blockStart[b + 1]; ++i) {
+            MeReal lo, hi;
+            unsigned char isFree;
+            KeaRowBoundsInline(problem, x, i, &lo, &hi);
+            isFree = KeaRowIsFree(w, i, x[i], lo, hi);
+            changed += isFree != was[i];
+            was[i] = isFree;
+        }
+    }
+    return changed;
+}
+
+/* Subspace minimisation on the rows strictly inside their bounds; returns the CG steps taken, -1 if
+ * skipped because the active set is still moving (top comment). */
+int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x)
+{
+    const int n = problem->nRows, nb = problem->nBodies;
+    MeReal rz, rz0, scale;
+    int i, p, b, k, nFree = 0, changed = 0, steps = 0, tries;
+
+    changed = KeaUpdateFreeRows(problem, w, x);
+    if (changed > KEA_SM_SKIP_MIN_CHANGED && (long)changed * KEA_SM_SKIP_FRACTION > (long)n && !w->skippedLast) {
+        w->skippedLast = 1;
+        return -1;
+    }
+    w->skippedLast = 0;
+    if (w->smUnpaid && changed > KEA_SM_SKIP_MIN_CHANGED && (long)changed * KEA_SM_UNPAID_FRACTION > (long)n)
+        return -1; /* it did not pay: wait until the active set has settled */
+    for (i = 0; i < n; ++i) /* the step runs: list the free rows, freeze their bounds */
+        if (w->wasFree[i]) {
+            KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
+            w->freeRows[nFree++] = i;
+        }
+    if (nFree == 0)
+        return 0;
+
+    /* Preconditioned CG on A_FF step = -w_F from step = 0. */
+    KeaFindSegments(w, nFree);
+    KeaGather(w, w->dv, w->grad);
+    for (p = 0; p < nFree; ++p) {
+        i = w->freeRows[p];
+        w->epsFree[p] = w->eps[i];
+        w->grad[p] = w->grad[p] + w->eps[i] * x[i] - problem->rhs[i];
+        w->step[p] = ME_R(0.0);
+        w->res[p] = -w->grad[p];
+    }
+    KeaPrecondition(w, nFree, w->res, w->z);
+    for (p = 0; p < nFree; ++p)
+        w->dir[p] = w->z[p];
+    rz = rz0 = KeaDotN4(w->res, w->z, nFree);
+    if (!(rz0 > ME_R(0.0)))
+        return 0;
+    w->smRan = 1;
+    w->smDecrease = ME_R(0.0);
+    while (steps < maxSteps) {
+        MeReal pq, a, rzNew, beta;
+        KeaScatter(problem, w, w->dir);
+        KeaGather(w, w->dvTmp, w->q);
+        pq = KeaAddEpsDot(w->q, w->epsFree, w->dir, nFree);
+        if (!(pq > ME_R(0.0)))
+            break;
+        a = rz / pq;
+        for (p = 0; p < nFree; ++p) {
+            w->step[p] += a * w->dir[p];
+            w->res[p] -= a * w->q[p];
+        }
+        KeaPrecondition(w, nFree, w->res, w->z);
+        ++steps;
+        rzNew = KeaDotN4(w->res, w->z, nFree);
+        if (!(rzNew > ME_SMALL_EPSILON * ME_SMALL_EPSILON * rz0))
+            break;
+        beta = rzNew / rz;
+        for (p = 0; p < nFree; ++p)
+            w->dir[p] = w->z[p] + beta * w->dir[p];
+        rz = rzNew;
+    }
+    if (steps == 0)
+        return 0;
+
+    /* Projected backtracking line search on the QP objective (bounds frozen). */
+    for (tries = 0, scale = ME_R(1.0); tries < KEA_SM_LINE_SEARCH_TRIES; ++tries, scale *= ME_R(0.5)) {
+        MeReal df = ME_R(0.0);
+        for (p = 0; p < nFree; ++p) { /* z holds the trial step s */
+            i = w->freeRows[p];
+            w->z[p] = KeaClamp(x[i] + scale * w->step[p], w->lo[i], w->hi[i]) - x[i];
+        }
+        KeaScatter(problem, w, w->z);
+        KeaGather(w, w->dvTmp, w->q); /* q is free after CG */
+        for (p = 0; p < nFree; ++p) {
+            const MeReal As = w->q[p] + w->epsFree[p] * w->z[p];
+            df += w->z[p] * (w->grad[p] + ME_R(0.5) * As);
+        }
+        if (df < ME_R(0.0)) {
+            w->smDecrease = -df;
+            for (p = 0; p < nFree; ++p)
+                x[w->freeRows[p]] += w->z[p];
+            for (b = 0; b < nb; ++b)
+                for (k = 0; k < 4; ++k) {
+                    w->dv[b].lin[k] += w->dvTmp[b].lin[k];
+                    w->dv[b].ang[k] += w->dvTmp[b].ang[k];
+                }
+            break;
+        }
+    }
+    return steps;
+}
