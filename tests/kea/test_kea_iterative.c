@@ -255,6 +255,47 @@ static void generic_contact_path_is_exact_in_one_sweep(void **state)
     assert_true(opened > 10 && sliding > 10 && sticking > 10);
 }
 
+/* Contacts whose exact solution sits on the edge of the friction cone (the primary friction
+ * impulse at exactly mu n, the secondary inside): the plain contact step's closed forms (all rows
+ * free, or the primary sliding) then hold only within rounding, about half the time neither passes
+ * its exact test, and the step falls back to the dense box-LCP solver. Whichever way each contact
+ * goes, one sweep must meet the contact's LCP conditions. (Not compared with the direct path: with
+ * friction, such a contact's LCP may have more than one solution, and the two paths may find
+ * different ones.) */
+static void contacts_on_the_cone_edge_meet_the_lcp_conditions(void **state)
+{
+    static const double mus[3] = {0.3, 0.6, 1.0};
+    double worstLcp = 0.0;
+    int seed;
+    (void)state;
+    for (seed = 0; seed < 400; ++seed) {
+        KtRng rng = kt_rng((uint64_t)(7100 + seed));
+        KtProblem t;
+        MeReal xd[3], xi[3];
+        KeaStats st;
+        double A[9], x[3], lcp; /* x: a solution (with friction there may be others) */
+        int r, c;
+        kt_random_contacts(&t, &rng, 1, 0, 2, mus[seed % 3], 1e-2);
+        /* the solution chosen: n > 0, f1 = mu n on the edge, |f2| < mu n; r = A x */
+        kt_dense_matrix(&t.p, A);
+        x[0] = kt_range(&rng, 0.2, 1.0);
+        x[1] = (double)t.mu[1] * x[0];
+        x[2] = kt_range(&rng, -0.5, 0.5) * (double)t.mu[2] * x[0];
+        for (r = 0; r < 3; ++r) {
+            double sum = 0.0;
+            for (c = 0; c < 3; ++c)
+                sum += A[r * 3 + c] * x[c];
+            t.rhs[r] = (MeReal)sum;
+        }
+        (void)iterative_vs_direct(&t, 1, xd, xi, &st);
+        lcp = contact_lcp_violation(&t, xi);
+        worstLcp = fmax(worstLcp, lcp);
+        assert_near(lcp, 0.0, ME_TOL(1e-9, 1e-4));
+        kt_free(&t);
+    }
+    print_message("400 contacts on the friction cone's edge, one sweep: largest LCP violation %.3g\n", worstLcp);
+}
+
 /* Over-relaxation changes the path, not the limit. */
 static void sor_converges_to_the_same_solution(void **state)
 {
@@ -399,6 +440,7 @@ int main(void)
         cmocka_unit_test(friction_links_converge_to_direct),
         cmocka_unit_test(one_contact_block_is_exact_in_one_sweep),
         cmocka_unit_test(generic_contact_path_is_exact_in_one_sweep),
+        cmocka_unit_test(contacts_on_the_cone_edge_meet_the_lcp_conditions),
         cmocka_unit_test(sor_converges_to_the_same_solution),
         cmocka_unit_test(tolerance_stops_early),
         cmocka_unit_test(warm_start_at_solution_stays),
