@@ -4,7 +4,7 @@
 #   make test      build and test float (-O2, checks on), double, ASan + UBSan and the thread tests under
 #                  ThreadSanitizer; prints "N passed, N failed"
 #   make build     build the float configuration (build/float)
-#   make install   install it (PREFIX=/usr/local by default)
+#   make install   install it (PREFIX=/usr/local by default) and run ldconfig when that is needed
 #   make deps      install missing Debian packages (as root), or print the apt-get line
 #   make bench     build Release with -DKARMA_BUILD_BENCH=ON (build/bench) and run the benchmarks:
 #                  dynamics on hand-made contacts, the collision space and the pair tests (bench/mcd),
@@ -54,8 +54,13 @@ test: deps
 demo: build
 	$(BUILD)/tools/karma run topple
 
+# After installing, tools/install_ldconfig.sh runs ldconfig when root and the library's directory is one
+# the loader searches (the default prefix on Debian), else prints the line to use (`sudo ldconfig`, or an
+# rpath for a custom prefix). A staged install (DESTDIR=...) is left alone.
 install: build
-	cmake --install $(BUILD) --prefix $(PREFIX)
+	DESTDIR="$(DESTDIR)" cmake --install $(BUILD) --prefix $(PREFIX)
+	@DESTDIR="$(DESTDIR)" sh tools/install_ldconfig.sh \
+	  "$(PREFIX)/$$(sed -n 's/^CMAKE_INSTALL_LIBDIR:PATH=//p' $(BUILD)/CMakeCache.txt)"
 
 # BENCH_ARGS is passed to the runner, e.g. make bench BENCH_ARGS="--scenes=chain --steps=100".
 bench: deps
