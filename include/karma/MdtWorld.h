@@ -167,6 +167,12 @@ typedef void (*MdtSimErrorHandlerPtr)(MdtWorldID w, const MdtSimError *error, vo
  *  disabled, reported with ME_ERR_NONFINITE_STATE and passed to the callback; other partitions are
  *  not affected. With the check off a bad solve is caught by the state check after integration. */
 ME_API void MdtWorldSetCheckSim(MdtWorldID w, MeBool check);
+/** One-time hints when a step can move nothing (default on): a world stepped with bodies of which none
+ *  was ever enabled (ME_ERR_NO_BODY_ENABLED), or with zero gravity and enabled bodies on which nothing
+ *  acts (no velocity, force or enabled constraint: ME_ERR_NOTHING_ACTS). Each is a warning, reported at
+ *  most once per world, naming the call to make. MEFALSE silences them (a scene that means it). */
+ME_API void MdtWorldSetHints(MdtWorldID w, MeBool hints);
+ME_API MeBool MdtWorldGetHints(MdtWorldID w);
 ME_API MeBool MdtWorldGetCheckSim(MdtWorldID w);
 /** Callback for failed partitions (NULL: none; the ME_ERR_NONFINITE_STATE report is always made).
  *  Karma 1.2's MdtWorldSetSimErrorCB passed Kea's internal arrays, which this library does not have:

@@ -51,6 +51,7 @@ static MeBool beginStep(MdtWorldData *w, MeReal stepSize, const char *function)
         ME_REPORT_IN(function, ME_ERR_WORLD_LOCKED, "the world is already stepping; %s refused", function);
         return MEFALSE;
     }
+    MdtWorldHintIfNothingMoves(w, function);
     w->locked = METRUE;
     w->stage = MdtStageBegun;
     w->stepSize = stepSize;

@@ -72,8 +72,9 @@ MdtWorldID MdtWorldCreate(unsigned int maxBodies, unsigned int maxConstraints, M
     w->maxConstraints = maxConstraints;
     w->lengthScale = lengthScale;
     w->massScale = massScale;
-    if (!MePoolInit(&w->bodyPool, (int)maxBodies, sizeof(MdtBodyData), 16, "maxBodies", 0) ||
-        !MePoolInit(&w->constraintPool, (int)maxConstraints, CONSTRAINT_SLOT_BYTES, 16, "maxConstraints", 0)) {
+    w->massScaleName = "massScale (MdtWorldCreate's fourth argument)";
+    if (!MePoolInit(&w->bodyPool, (int)maxBodies, sizeof(MdtBodyData), 16, "maxBodies in MdtWorldCreate", 0) ||
+        !MePoolInit(&w->constraintPool, (int)maxConstraints, CONSTRAINT_SLOT_BYTES, 16, "maxConstraints in MdtWorldCreate", 0)) {
         MePoolDestroy(&w->bodyPool);
         MeMemoryDestroy(w);
         return NULL;

@@ -20,6 +20,7 @@
 #include <karma/MdtWorld.h>
 
 #include "../mcd/mcd_internal.h"
+#include "../mdt/bcl/contact_internal.h"
 #include "../mcd/framework.h"
 #include "../mdt/bcl/contact_batch.h"
 #include "../mdt/body.h"
@@ -46,6 +47,7 @@ MstBridgeID MstBridgeCreate(McdFrameworkID frame, int maxMaterials)
         return NULL;
     b->framework = frame;
     b->maxMaterials = maxMaterials;
+    b->materialsSizeName = "maxMaterials in MstBridgeCreate";
     b->materialCount = 1; /* the default material */
     b->table = MeMemoryCreateZeroed(sizeof *b->table * (size_t)maxMaterials * (size_t)maxMaterials);
     b->pairBufferSize = DEFAULT_PAIR_BUFFER;
@@ -186,7 +188,7 @@ void MstHandleTransitions(McdModelPairContainer *pairs, McdSpaceID space, MdtWor
 
 /* The group's existing contacts are reused for the new ones; a new contact takes the old contact
  * nearest to it (greedy, in the test's order), so that warm-start impulses follow the points. */
-static int matchContacts(MdtContactGroupID g, const McdContact *in, int n, MdtContactID *out)
+static int matchContacts(MdtContactGroupID g, const McdContact *in, int n, MdtContactID *out, const char *caller)
 {
     enum { MAX_OLD = 64 };
     MdtContactID old[MAX_OLD];
@@ -209,9 +211,9 @@ static int matchContacts(MdtContactGroupID g, const McdContact *in, int n, MdtCo
             used[best] = METRUE;
             out[i] = old[best];
         } else {
-            out[i] = MdtContactGroupCreateContact(g);
+            out[i] = MdtContactGroupCreateContactForStep(g, caller);
             if (!out[i])
-                return i; /* constraint pool full: reported by Mdt */
+                return i; /* constraint pool full: reported once by Mdt */
         }
     }
     for (int k = 0; k < oldCount; k++)
@@ -254,9 +256,9 @@ static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
     MeBool swapped = !b1;
     MeReal sign = swapped ? -1 : 1;
     if (!g) {
-        g = MdtContactGroupCreate(world);
+        g = MdtContactGroupCreateForStep(world, b->caller ? b->caller : "MstHandleCollisions");
         if (!g)
-            return 0; /* pool full: reported by Mdt */
+            return 0; /* pool full: reported once by Mdt */
         MdtConstraintSetBodies(MdtContactGroupQuaConstraint(g), swapped ? b2 : b1, swapped ? NULL : b2);
         MdtContactGroupSetSwapped(g, swapped);
         MdtContactGroupSetGenerator(g, pair);
@@ -266,7 +268,7 @@ static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
     MdtContactID dyn[DEFAULT_CONTACT_BUFFER * 8];
     if (n > (int)(sizeof dyn / sizeof dyn[0]))
         n = (int)(sizeof dyn / sizeof dyn[0]);
-    n = matchContacts(g, result.contacts, n, dyn);
+    n = matchContacts(g, result.contacts, n, dyn, b->caller ? b->caller : "MstHandleCollisions");
     int kept = 0;
     for (int i = 0; i < n; i++) {
         const McdContact *c = &result.contacts[i];
@@ -312,7 +314,11 @@ void MstBridgeUpdateContacts(MstBridgeID id, McdSpaceID space, MdtWorldID world)
     if (!b)
         return;
     b->lastPairCount = b->lastContactCount = 0;
+    const char *caller = b->caller;
+    if (!caller)
+        b->caller = __func__; /* else MstUniverseStep, which called this */
     MstBridgeReadPairs(b, space, world, METRUE);
+    b->caller = caller;
 }
 
 /* ---- linking models and bodies -------------------------------------------------------------- */

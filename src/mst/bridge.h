@@ -25,6 +25,8 @@ typedef struct MstBridgeData {
     McdContact *contacts;              /* buffer for one pair test */
     int contactBufferSize;
     int lastPairCount, lastContactCount;
+    const char *caller;                /* the API function stepping the bridge, for messages (NULL: none) */
+    const char *materialsSizeName;     /* what sets maxMaterials, for "pool full" messages */
 } MstBridgeData;
 
 MstBridgeData *MstBridgeFromID(MstBridgeID id, const char *function);

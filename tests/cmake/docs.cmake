@@ -4,3 +4,7 @@ add_test(NAME docs_readme_example_is_hello_c
          COMMAND ${CMAKE_COMMAND} -DSOURCE=${PROJECT_SOURCE_DIR} -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/readme_example.cmake)
 add_test(NAME docs_error_codes_listed
          COMMAND ${CMAKE_COMMAND} -DSOURCE=${PROJECT_SOURCE_DIR} -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/error_codes_doc.cmake)
+# docs/errors.md promises that a message names the API function the application called: no ME_REPORT or
+# ME_CHECK_* (reporting in __func__) sits in an internal function (scripts/check_message_functions.sh).
+add_test(NAME messages_name_public_functions
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_message_functions.sh ${PROJECT_SOURCE_DIR})
