@@ -16,7 +16,7 @@
 BUILD   ?= build/float
 PREFIX  ?= /usr/local
 JOBS    ?= 2
-DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config
+DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config gnuplot-nox
 
 .PHONY: all deps build test demo install bench bench-scenes clean
 
