@@ -9,7 +9,7 @@
 #include "constraint.h"
 #include "world.h"
 
-/* Karma's defaults (KARMA.md §5.1, decision D1 for auto-disable). */
+/* Karma's defaults (docs/karma12.md §5.1, decision D1 for auto-disable). */
 #define DEFAULT_EPSILON MDTWORLD_DEFAULT_EPSILON
 #define DEFAULT_GAMMA MDTWORLD_DEFAULT_GAMMA
 #define DEFAULT_LCP_ITERATIONS 10

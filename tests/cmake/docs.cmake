@@ -8,3 +8,7 @@ add_test(NAME docs_error_codes_listed
 # ME_CHECK_* (reporting in __func__) sits in an internal function (scripts/check_message_functions.sh).
 add_test(NAME messages_name_public_functions
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_message_functions.sh ${PROJECT_SOURCE_DIR})
+# No document refers to a file outside the repository or to one that does not exist
+# (scripts/check_doc_references.sh).
+add_test(NAME docs_references_resolve
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_doc_references.sh ${PROJECT_SOURCE_DIR})
