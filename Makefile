@@ -5,6 +5,8 @@
 #                  ThreadSanitizer; prints "N passed, N failed"
 #   make build     build the float configuration (build/float)
 #   make install   install it (PREFIX=/usr/local by default) and run ldconfig when that is needed
+#   make docs      the API reference from the headers (Doxygen): build/docs/html/index.html, and the
+#                  check that every public function has its comment
 #   make deps      install missing Debian packages (as root), or print the apt-get line
 #   make bench     build Release with -DKARMA_BUILD_BENCH=ON (build/bench) and run the benchmarks:
 #                  dynamics on hand-made contacts, the collision space and the pair tests (bench/mcd),
@@ -16,9 +18,9 @@
 BUILD   ?= build/float
 PREFIX  ?= /usr/local
 JOBS    ?= 2
-DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config gnuplot-nox
+DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config gnuplot-nox doxygen
 
-.PHONY: all deps build test demo install bench bench-scenes clean
+.PHONY: all deps build test demo install docs bench bench-scenes clean
 
 all: build
 
@@ -61,6 +63,11 @@ install: build
 	DESTDIR="$(DESTDIR)" cmake --install $(BUILD) --prefix $(PREFIX)
 	@DESTDIR="$(DESTDIR)" sh tools/install_ldconfig.sh \
 	  "$(PREFIX)/$$(sed -n 's/^CMAKE_INSTALL_LIBDIR:PATH=//p' $(BUILD)/CMakeCache.txt)"
+
+docs: deps
+	doxygen docs/Doxyfile
+	bash tests/scripts/check_api_comments.sh .
+	@echo "API reference: build/docs/html/index.html (the user guide is its main page)"
 
 # BENCH_ARGS is passed to the runner, e.g. make bench BENCH_ARGS="--scenes=chain --steps=100".
 bench: deps

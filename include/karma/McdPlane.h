@@ -22,6 +22,7 @@ ME_EXTERN_C_BEGIN
 
 typedef McdGeometryID McdPlaneID;
 
+/** A plane geometry (see above for y up); NULL (reported) when the framework's geometry pool is full. */
 ME_API McdPlaneID McdPlaneCreate(McdFrameworkID fw);
 /** The plane's unit normal in the world for the plane placed at `tm` (NULL: local, (0, 0, 1)). */
 ME_API void McdPlaneGetNormal(McdPlaneID p, MeMatrix4 tm, MeVector3 normal);

@@ -73,6 +73,7 @@ typedef struct MdtWorldCounters {
     unsigned long steps;      /**< completed calls to MdtWorldStep */
     MeReal time;              /**< simulated seconds */
 } MdtWorldCounters;
+/** Fill `counters` with the world's counts and step totals (NULL refused). */
 ME_API void MdtWorldGetCounters(MdtWorldID w, MdtWorldCounters *counters);
 
 /** Which LCP method solves a partition. */
@@ -97,6 +98,8 @@ typedef struct MdtSolverStats {
     MeReal maxResidual;      /**< largest residual (m/s: how far a row's velocity is from what the
                                   constraint asks), over partitions */
 } MdtSolverStats;
+/** Fill `stats` with what the last step's solver did (partitions, rows, iterations); then the
+ *  solver settings: method, largest direct partition (rows), tolerance. */
 ME_API void MdtWorldGetSolverStats(MdtWorldID w, MdtSolverStats *stats);
 ME_API MdtLCPSolver MdtWorldGetLCPSolver(MdtWorldID w);
 ME_API int MdtWorldGetMaxDirectRows(MdtWorldID w);
