@@ -113,6 +113,8 @@ typedef struct MdtWorldData {
     MeBool nothingMovesHinted;          /* the one-time "nothing will move" hint was given */
     MeBool hasMoved;                    /* a step had something acting: no more hints to look for */
     const char *massScaleName;          /* what sets massScale, for the mass-range warning */
+    const char *stepCaller;             /* the API function stepping the world when not MdtWorldStep
+                                           (MstUniverseStep), for the step's messages; else NULL */
 
     /* debugging (world_debug.c) */
     MdtDebugDrawOptions debugOptions;   /* MdtWorldSetDebugDrawing */

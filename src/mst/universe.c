@@ -274,7 +274,10 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
     MeProfileSectionEnd(prof, MST_SECTION_NEARFIELD);
     MeProfileSectionEnd(prof, MST_SECTION_COLLISION);
     MeProfileFrameEnd(prof);
+    MdtWorldData *world = MdtWorldFromID(u->world, __func__);
+    world->stepCaller = __func__;
     MdtWorldStep(u->world, stepSize);
+    world->stepCaller = NULL;
 }
 
 void MstBridgeStepAll(MstBridgeID bridge, MeReal stepSize)

@@ -208,6 +208,15 @@ static void hint_when_gravity_is_zero_and_nothing_acts(void **state)
     assert_int_equal(seenCount, 1);
     MdtWorldDestroy(w);
 
+    /* In a universe, the hint names the call the application made. */
+    MstUniverseID u = MstUniverseCreate(&MstUniverseDefaultSizes);
+    assert_non_null(MstModelAndBodyCreate(u, McdSphereCreate(MstUniverseGetFramework(u), 1), 1));
+    seenCount = 0;
+    MstUniverseStep(u, STEP);
+    assert_int_equal(shown(ME_ERR_NOTHING_ACTS, &last), 1);
+    assert_string_equal(seen[last].function, "MstUniverseStep");
+    MstUniverseDestroy(u);
+
     for (int variant = 0; variant < 4; variant++) {
         seenCount = 0;
         w = MdtWorldCreate(4, 4, 1, 1);
