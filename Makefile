@@ -6,7 +6,9 @@
 #   make coverage  only the coverage configuration: gcov build, the solver's tests, gcovr fails below the
 #                  Kea line-coverage floor (tests/run_configs.sh, docs/kea.md)
 #   make build     build the float configuration (build/float)
-#   make install   install it (PREFIX=/usr/local by default)
+#   make install   install it (PREFIX=/usr/local by default) and run ldconfig when that is needed
+#   make docs      the API reference from the headers (Doxygen): build/docs/html/index.html, and the
+#                  check that every public function has its comment
 #   make deps      install missing Debian packages (as root), or print the apt-get line
 #   make bench     build Release with -DKARMA_BUILD_BENCH=ON (build/bench) and run the benchmarks:
 #                  dynamics on hand-made contacts, the collision space and the pair tests (bench/mcd),
@@ -18,9 +20,9 @@
 BUILD   ?= build/float
 PREFIX  ?= /usr/local
 JOBS    ?= 2
-DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config gcovr
+DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config gcovr gnuplot-nox doxygen
 
-.PHONY: all deps build test coverage demo install bench bench-scenes clean
+.PHONY: all deps build test coverage demo install docs bench bench-scenes clean
 
 all: build
 
@@ -59,8 +61,18 @@ coverage: deps
 demo: build
 	$(BUILD)/tools/karma run topple
 
+# After installing, tools/install_ldconfig.sh runs ldconfig when root and the library's directory is one
+# the loader searches (the default prefix on Debian), else prints the line to use (`sudo ldconfig`, or an
+# rpath for a custom prefix). A staged install (DESTDIR=...) is left alone.
 install: build
-	cmake --install $(BUILD) --prefix $(PREFIX)
+	DESTDIR="$(DESTDIR)" cmake --install $(BUILD) --prefix $(PREFIX)
+	@DESTDIR="$(DESTDIR)" sh tools/install_ldconfig.sh \
+	  "$(PREFIX)/$$(sed -n 's/^CMAKE_INSTALL_LIBDIR:PATH=//p' $(BUILD)/CMakeCache.txt)"
+
+docs: deps
+	doxygen docs/Doxyfile
+	bash tests/scripts/check_api_comments.sh .
+	@echo "API reference: build/docs/html/index.html (the user guide is its main page)"
 
 # BENCH_ARGS is passed to the runner, e.g. make bench BENCH_ARGS="--scenes=chain --steps=100".
 bench: deps

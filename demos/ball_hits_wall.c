@@ -5,9 +5,9 @@
 
 #define ROWS 5
 #define COLUMNS 6
-#define BRICK_X ME_R(0.6)
-#define BRICK_Y ME_R(0.3)
-#define BRICK_Z ME_R(0.3)
+#define BRICK_X ME_R(0.6) /* length */
+#define BRICK_Y ME_R(0.3) /* height (y is up) */
+#define BRICK_Z ME_R(0.3) /* depth */
 
 static MeBool create(DemoInstance *demo)
 {
@@ -22,16 +22,16 @@ static MeBool create(DemoInstance *demo)
     for (int r = 0; r < ROWS; r++)
         for (int c = 0; c < COLUMNS; c++) {
             MeReal x = ((MeReal)c - (COLUMNS - 1) / ME_R(2.0) + (r % 2 ? ME_R(0.25) : 0)) * BRICK_X;
-            if (!DemoAddModel(demo, brick, 600, x, 0, BRICK_Z / 2 + (MeReal)r * BRICK_Z))
+            if (!DemoAddModel(demo, brick, 600, x, BRICK_Y / 2 + (MeReal)r * BRICK_Y, 0))
                 return MEFALSE;
         }
-    McdModelID ball = DemoAddModel(demo, McdSphereCreate(fw, ME_R(0.3)), 3000, 0, -6, ME_R(0.6));
+    McdModelID ball = DemoAddModel(demo, McdSphereCreate(fw, ME_R(0.3)), 3000, 0, ME_R(0.6), 6);
     if (!ball)
         return MEFALSE;
     demo->named[0] = McdModelGetBody(ball);
     demo->names[0] = "ball";
     demo->namedCount = 1;
-    MdtBodySetLinearVelocity(demo->named[0], 0, 15, ME_R(1.5));
+    MdtBodySetLinearVelocity(demo->named[0], 0, ME_R(1.5), -15); /* at the wall (-z), a little upwards */
     return METRUE;
 }
 
@@ -39,7 +39,7 @@ static void report(const DemoInstance *demo, FILE *out)
 {
     MeVector3 p;
     MdtBodyGetPosition(demo->named[0], p);
-    fprintf(out, "  ball ended at (%.2f, %.2f, %.2f); %d of %d bodies still moving\n", (double)p[0], (double)p[1],
+    fprintf(out, "  ball ended at x %.2f, height y %.2f, z %.2f; %d of %d bodies still awake\n", (double)p[0], (double)p[1],
             (double)p[2], MdtWorldGetEnabledBodies(demo->world), MdtWorldGetTotalBodies(demo->world));
 }
 

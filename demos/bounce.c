@@ -9,7 +9,7 @@
 #define MAX_APEXES 8
 
 typedef struct Bounce {
-    MeReal lastZ, lastVz;
+    MeReal lastY, lastVy; /* height and vertical speed (y is up) */
     int apexCount;
     MeReal apex[MAX_APEXES];
 } Bounce;
@@ -25,14 +25,14 @@ static MeBool create(DemoInstance *demo)
     McdFrameworkID fw = MstUniverseGetFramework(demo->universe);
     MdtContactParamsID p = MstBridgeGetContactParams(MstUniverseGetBridge(demo->universe), 0, 0);
     MdtContactParamsSetRestitution(p, RESTITUTION);
-    McdModelID ball = DemoAddModel(demo, McdSphereCreate(fw, 0.25f), 1000, 0, 0, DROP_HEIGHT + ME_R(0.25));
+    McdModelID ball = DemoAddModel(demo, McdSphereCreate(fw, 0.25f), 1000, 0, DROP_HEIGHT + ME_R(0.25), 0);
     if (!ball)
         return MEFALSE;
     demo->named[0] = McdModelGetBody(ball);
     demo->names[0] = "ball";
     demo->namedCount = 1;
     MdtWorldSetAutoDisable(demo->world, MEFALSE);
-    s->lastZ = DROP_HEIGHT;
+    s->lastY = DROP_HEIGHT;
     return METRUE;
 }
 
@@ -43,9 +43,9 @@ static void afterStep(DemoInstance *demo, MeReal h)
     MeVector3 p, v;
     MdtBodyGetPosition(demo->named[0], p);
     MdtBodyGetLinearVelocity(demo->named[0], v);
-    if (s->lastVz > 0 && v[2] <= 0 && s->apexCount < MAX_APEXES)
-        s->apex[s->apexCount++] = p[2] - ME_R(0.25);
-    s->lastVz = v[2];
+    if (s->lastVy > 0 && v[1] <= 0 && s->apexCount < MAX_APEXES)
+        s->apex[s->apexCount++] = p[1] - ME_R(0.25);
+    s->lastVy = v[1];
 }
 
 static void report(const DemoInstance *demo, FILE *out)

@@ -33,12 +33,12 @@ static MeBool create(DemoInstance *demo)
     McdGeometryID ball = McdSphereCreate(MstUniverseGetFramework(demo->universe), RADIUS);
     for (int i = 0; i < BALLS; i++) {
         MeReal x = (MeReal)i * (2 * RADIUS + GAP);
-        MeReal bx = x, bz = 2 - LENGTH;
+        MeReal bx = x, by = 2 - LENGTH; /* hung 1 m below hinges 2 m up */
         if (i == 0) {
             bx = x - LENGTH * MeSin(LIFT);
-            bz = 2 - LENGTH * MeCos(LIFT);
+            by = 2 - LENGTH * MeCos(LIFT);
         }
-        McdModelID m = DemoAddModel(demo, ball, 7850, bx, 0, bz);
+        McdModelID m = DemoAddModel(demo, ball, 7850, bx, by, 0);
         if (!m)
             return MEFALSE;
         McdModelSetSortKey(m, i + 1);
@@ -47,8 +47,8 @@ static MeBool create(DemoInstance *demo)
         s->ball[i] = McdModelGetBody(m);
         MdtHingeID j = MdtHingeCreate(demo->world);
         MdtHingeSetBodies(j, s->ball[i], NULL);
-        MdtHingeSetPosition(j, x, 0, 2);
-        MdtHingeSetAxis(j, 0, 1, 0);
+        MdtHingeSetPosition(j, x, 2, 0);
+        MdtHingeSetAxis(j, 0, 0, 1);
         MdtHingeEnable(j);
         demo->named[i] = s->ball[i];
         demo->names[i] = "ball";

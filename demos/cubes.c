@@ -20,8 +20,8 @@ static MeBool create(DemoInstance *demo)
     for (int i = 0; i < GRID; i++)
         for (int j = 0; j < GRID; j++)
             for (int k = 0; k < LAYERS; k++) {
-                MeReal x = (MeReal)(i - 1.5) * ME_R(0.7), y = (MeReal)(j - 1.5) * ME_R(0.7);
-                McdModelID m = DemoAddModel(demo, cube, 1000, x, y, SIZE / 2 + (MeReal)k * (SIZE + ME_R(0.05)));
+                MeReal x = (MeReal)(i - 1.5) * ME_R(0.7), z = (MeReal)(j - 1.5) * ME_R(0.7);
+                McdModelID m = DemoAddModel(demo, cube, 1000, x, SIZE / 2 + (MeReal)k * (SIZE + ME_R(0.05)), z);
                 if (!m)
                     return MEFALSE;
                 if (demo->namedCount == 0) {
@@ -35,7 +35,7 @@ static MeBool create(DemoInstance *demo)
 
 static void report(const DemoInstance *demo, FILE *out)
 {
-    fprintf(out, "  %d cubes, %d still moving\n", MdtWorldGetTotalBodies(demo->world),
+    fprintf(out, "  %d cubes, %d still awake\n", MdtWorldGetTotalBodies(demo->world),
             MdtWorldGetEnabledBodies(demo->world));
 }
 

@@ -59,8 +59,8 @@ const DemoScene *DemoSceneFind(const char *name);
 
 /** Build `scene` into `demo`. Returns MEFALSE (and leaves `demo` empty) when the scene fails. */
 MeBool DemoCreate(const DemoScene *scene, DemoInstance *demo);
-/** Make the scene's universe (and set demo->world to its world) with `sizes`, gravity (0, 0, −g) and,
- *  when groundFriction ≥ 0, a ground plane z = 0 (frictionless at 0; above 0 the default material pair
+/** Make the scene's universe (and set demo->world to its world) with `sizes`, gravity (0, −g, 0) (y is up) and,
+ *  when groundFriction ≥ 0, a ground plane y = 0 (frictionless at 0; above 0 the default material pair
  *  gets 2D friction with that NormalForce coefficient). Returns MEFALSE when the universe cannot be made. */
 MeBool DemoUniverseCreate(DemoInstance *demo, const MstUniverseSizes *sizes, MeReal g, MeReal groundFriction);
 /** A model with an enabled body at (x, y, z) in the demo's universe (density in kg/m³); NULL on failure. */

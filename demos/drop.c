@@ -18,13 +18,18 @@ static MeBool create(DemoInstance *demo)
         McdCylinderCreate(fw, ME_R(0.3), ME_R(0.5)), McdSphylCreate(fw, ME_R(0.2), ME_R(0.5)),
         McdConeCreate(fw, ME_R(0.6), ME_R(0.3))};
     static const char *const names[SHAPES] = {"sphere", "box", "cylinder", "sphyl", "cone"};
+    /* Mcd's cylinders, sphyls and cones lie along their own z axis: turn it up to y (-90° about x),
+     * then tilt each shape a little more about a horizontal axis so that it lands on an edge. */
+    MeVector4 upright;
+    MeQuaternionMake(upright, (MeVector3){1, 0, 0}, -ME_PI / 2);
     for (int i = 0; i < SHAPES; i++) {
-        McdModelID m = DemoAddModel(demo, shapes[i], 800, (MeReal)(i - 2) * ME_R(1.5), 0, ME_R(1.5));
+        McdModelID m = DemoAddModel(demo, shapes[i], 800, (MeReal)(i - 2) * ME_R(1.5), ME_R(1.5), 0);
         if (!m)
             return MEFALSE;
         MdtBodyID b = McdModelGetBody(m);
-        MeVector4 q;
-        MeQuaternionMake(q, (MeVector3){ME_R(0.958), ME_R(0.287), 0}, ME_R(0.5) + ME_R(0.2) * (MeReal)i);
+        MeVector4 tilt, q;
+        MeQuaternionMake(tilt, (MeVector3){ME_R(0.958), 0, ME_R(-0.287)}, ME_R(0.5) + ME_R(0.2) * (MeReal)i);
+        MeQuaternionProduct(q, tilt, upright);
         MdtBodySetQuaternion(b, q[0], q[1], q[2], q[3]);
         demo->named[i] = b;
         demo->names[i] = names[i];
@@ -38,8 +43,8 @@ static void report(const DemoInstance *demo, FILE *out)
     for (int i = 0; i < demo->namedCount; i++) {
         MeVector3 p;
         MdtBodyGetPosition(demo->named[i], p);
-        fprintf(out, "  %-8s rests at height %.3f m, %s\n", demo->names[i], (double)p[2],
-                MdtBodyIsEnabled(demo->named[i]) ? "still moving" : "asleep (disabled, model frozen)");
+        fprintf(out, "  %-8s rests at height %.3f m, %s\n", demo->names[i], (double)p[1],
+                MdtBodyIsEnabled(demo->named[i]) ? "still awake" : "asleep (disabled, model frozen)");
     }
 }
 

@@ -17,8 +17,8 @@ typedef struct FixedPathDemo {
 
 static void pivotAt(MeReal t, MeVector3 p, MeVector3 v)
 {
-    MeVector3Set(p, RADIUS * MeCos(OMEGA * t), RADIUS * MeSin(OMEGA * t), 2);
-    MeVector3Set(v, -RADIUS * OMEGA * MeSin(OMEGA * t), RADIUS * OMEGA * MeCos(OMEGA * t), 0);
+    MeVector3Set(p, RADIUS * MeCos(OMEGA * t), 2, -RADIUS * MeSin(OMEGA * t)); /* a horizontal circle 2 m up */
+    MeVector3Set(v, -RADIUS * OMEGA * MeSin(OMEGA * t), 0, -RADIUS * OMEGA * MeCos(OMEGA * t));
 }
 
 static MeBool create(DemoInstance *demo)
@@ -31,13 +31,13 @@ static MeBool create(DemoInstance *demo)
     demo->data = s;
     MdtWorldSetAutoDisable(demo->world, MEFALSE);
     McdModelID m = DemoAddModel(demo, McdSphereCreate(MstUniverseGetFramework(demo->universe), ME_R(0.1)), 955,
-                                RADIUS, 0, 2 - LENGTH);
+                                RADIUS, 2 - LENGTH, 0);
     if (!m)
         return MEFALSE;
     s->bob = McdModelGetBody(m);
     s->path = MdtFixedPathCreate(demo->world);
     MdtConstraintSetBodies(MdtFixedPathQuaConstraint(s->path), s->bob, NULL);
-    MdtFixedPathSetPosition(s->path, 0, RADIUS, 0, 2); /* world point now: the rod's top on the bob */
+    MdtFixedPathSetPosition(s->path, 0, RADIUS, 2, 0); /* world point now: the rod's top on the bob */
     MeVector3 p, v;
     pivotAt(0, p, v);
     MdtFixedPathSetPosition(s->path, 1, p[0], p[1], p[2]);
@@ -68,7 +68,7 @@ static void afterStep(DemoInstance *demo, MeReal h)
     MeReal r = MeVector3Distance(p, b);
     if (MeFabs(r - LENGTH) > s->worstLengthError)
         s->worstLengthError = MeFabs(r - LENGTH);
-    MeReal swing = MeSqrt((b[0] - p[0]) * (b[0] - p[0]) + (b[1] - p[1]) * (b[1] - p[1]));
+    MeReal swing = MeSqrt((b[0] - p[0]) * (b[0] - p[0]) + (b[2] - p[2]) * (b[2] - p[2])); /* horizontal */
     if (swing > s->widestSwing)
         s->widestSwing = swing;
 }

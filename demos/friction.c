@@ -32,11 +32,12 @@ static MeBool create(DemoInstance *demo)
     McdFrameworkID fw = MstUniverseGetFramework(demo->universe);
     MstBridgeID bridge = MstUniverseGetBridge(demo->universe);
     MeReal c = MeCos(TILT), sn = MeSin(TILT);
-    /* Rows: local axes in world. The incline's top face passes through the origin. */
-    MeMatrix4 tm = {{1, 0, 0, 0}, {0, c, sn, 0}, {0, -sn, c, 0}, {0, sn * ME_R(0.5), -c * ME_R(0.5), 1}};
+    /* Rows: the incline's axes in the world (y, its 1 m thickness, is the surface normal: up, tilted
+     * towards +z; z, its 40 m length, runs downhill). Its top face passes through the origin. */
+    MeMatrix4 tm = {{1, 0, 0, 0}, {0, c, sn, 0}, {0, -sn, c, 0}, {0, -c * ME_R(0.5), -sn * ME_R(0.5), 1}};
     MeMatrix4Copy(s->inclineTM, tm);
-    MeVector3Set(s->downhill, 0, -c, -sn);
-    if (!MstFixedModelCreate(demo->universe, McdBoxCreate(fw, 12, 40, 1), s->inclineTM))
+    MeVector3Set(s->downhill, 0, -sn, c);
+    if (!MstFixedModelCreate(demo->universe, McdBoxCreate(fw, 12, 1, 40), s->inclineTM))
         return MEFALSE;
     McdGeometryID cube = McdBoxCreate(fw, BLOCK, BLOCK, BLOCK);
     MeVector4 q;
@@ -53,8 +54,8 @@ static MeBool create(DemoInstance *demo)
             MdtContactParamsSetFrictionCoeffecient(p, i == 2 ? ME_R(0.2) : ME_R(0.6));
         }
         MeReal x = (MeReal)(i - 1.5) * ME_R(1.5);
-        /* centre: x along row 0, half a block above the surface along row 2 */
-        MeVector3 pos = {x, tm[2][1] * BLOCK / 2, tm[2][2] * BLOCK / 2};
+        /* centre: x along row 0, half a block above the surface along the normal (row 1) */
+        MeVector3 pos = {x, tm[1][1] * BLOCK / 2, tm[1][2] * BLOCK / 2};
         McdModelID m = DemoAddModel(demo, cube, DENSITY, pos[0], pos[1], pos[2]);
         if (!m)
             return MEFALSE;

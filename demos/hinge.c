@@ -24,14 +24,14 @@ static MeBool create(DemoInstance *demo)
     demo->data = s;
     MdtWorldSetAutoDisable(demo->world, MEFALSE);
     McdFrameworkID fw = MstUniverseGetFramework(demo->universe);
-    /* The door: 1 m wide, 2 m high, hinged at its left edge about z, above the ground. */
-    McdModelID door = DemoAddModel(demo, McdBoxCreate(fw, 1, ME_R(0.05), 2), 400, ME_R(0.5), 0, ME_R(1.05));
+    /* The door: 1 m wide, 2 m high (y), hinged at its left edge about y, above the ground. */
+    McdModelID door = DemoAddModel(demo, McdBoxCreate(fw, 1, 2, ME_R(0.05)), 400, ME_R(0.5), ME_R(1.05), 0);
     if (!door)
         return MEFALSE;
     s->door = MdtHingeCreate(demo->world);
     MdtHingeSetBodies(s->door, McdModelGetBody(door), NULL);
-    MdtHingeSetPosition(s->door, 0, 0, ME_R(1.05));
-    MdtHingeSetAxis(s->door, 0, 0, 1);
+    MdtHingeSetPosition(s->door, 0, ME_R(1.05), 0);
+    MdtHingeSetAxis(s->door, 0, 1, 0);
     MdtLimitID l = MdtHingeGetLimit(s->door);
     MdtSingleLimitSetStop(MdtLimitGetLowerLimit(l), -DOOR_STOP);
     MdtSingleLimitSetStop(MdtLimitGetUpperLimit(l), DOOR_STOP);
@@ -40,8 +40,8 @@ static MeBool create(DemoInstance *demo)
     MdtLimitActivateLimits(l, METRUE);
     MdtLimitSetLimitedForceMotor(l, 2, 200);
     MdtHingeEnable(s->door);
-    /* The paddle: a bar on a horizontal axle at (4, 0, 2), a 20 kg weight bolted 0.4 m out. */
-    McdModelID paddle = DemoAddModel(demo, McdBoxCreate(fw, ME_R(0.8), ME_R(0.1), ME_R(0.1)), 250, ME_R(4.4), 0, 2);
+    /* The paddle: a bar on a horizontal axle (along z) at (4, 2, 0), a 20 kg weight bolted 0.4 m out. */
+    McdModelID paddle = DemoAddModel(demo, McdBoxCreate(fw, ME_R(0.8), ME_R(0.1), ME_R(0.1)), 250, ME_R(4.4), 2, 0);
     if (!paddle)
         return MEFALSE;
     MdtBodyID pb = McdModelGetBody(paddle);
@@ -50,8 +50,8 @@ static MeBool create(DemoInstance *demo)
     MdtBodySetCenterOfMassRelativePosition(pb, com);
     s->paddle = MdtHingeCreate(demo->world);
     MdtHingeSetBodies(s->paddle, pb, NULL);
-    MdtHingeSetPosition(s->paddle, 4, 0, 2);
-    MdtHingeSetAxis(s->paddle, 0, 1, 0);
+    MdtHingeSetPosition(s->paddle, 4, 2, 0);
+    MdtHingeSetAxis(s->paddle, 0, 0, 1);
     MdtLimitSetLimitedForceMotor(MdtHingeGetLimit(s->paddle), PADDLE_SPEED, PADDLE_TORQUE);
     MdtHingeEnable(s->paddle);
     demo->named[0] = McdModelGetBody(door);

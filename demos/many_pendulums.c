@@ -34,14 +34,14 @@ static MeBool create(DemoInstance *demo)
     for (int i = 0; i < COUNT; i++) {
         MeReal period = CYCLE / (MeReal)(FIRST_SWINGS + i);
         MeReal L = G * period * period / (4 * ME_PI * ME_PI);
-        MeReal y = (MeReal)i * ME_R(0.25);
-        McdModelID m = DemoAddModel(demo, ball, 955, L * MeSin(AMPLITUDE), y, 3 - L * MeCos(AMPLITUDE));
+        MeReal z = (MeReal)i * ME_R(0.25); /* side by side along z; pivots 3 m up */
+        McdModelID m = DemoAddModel(demo, ball, 955, L * MeSin(AMPLITUDE), 3 - L * MeCos(AMPLITUDE), z);
         if (!m)
             return MEFALSE;
         MdtBodyID b = McdModelGetBody(m);
         MdtBSJointID j = MdtBSJointCreate(demo->world);
         MdtBSJointSetBodies(j, b, NULL);
-        MdtBSJointSetPosition(j, 0, y, 3);
+        MdtBSJointSetPosition(j, 0, 3, z);
         MdtBSJointEnable(j);
         s->bob[i] = b;
         s->length[i] = L;

@@ -24,7 +24,7 @@ static MeBool create(DemoInstance *demo)
     demo->data = s;
     MdtWorldSetAutoDisable(demo->world, MEFALSE);
     McdFrameworkID fw = MstUniverseGetFramework(demo->universe);
-    McdModelID cart = DemoAddModel(demo, McdBoxCreate(fw, ME_R(0.6), ME_R(0.4), ME_R(0.3)), 200, 0, -2, 1);
+    McdModelID cart = DemoAddModel(demo, McdBoxCreate(fw, ME_R(0.6), ME_R(0.3), ME_R(0.4)), 200, 0, 1, 2);
     if (!cart)
         return MEFALSE;
     s->rail = MdtPrismaticCreate(demo->world);
@@ -37,15 +37,15 @@ static MeBool create(DemoInstance *demo)
     MdtSingleLimitSetRestitution(MdtLimitGetUpperLimit(l), ME_R(0.5));
     MdtLimitActivateLimits(l, METRUE);
     MdtPrismaticEnable(s->rail);
-    /* The lift: a 1 × 1 × 0.1 m platform on a vertical axis, its cargo a box resting on it. */
-    McdModelID platform = DemoAddModel(demo, McdBoxCreate(fw, 1, 1, ME_R(0.1)), 500, 0, 2, ME_R(0.3));
-    McdModelID cargo = DemoAddModel(demo, McdBoxCreate(fw, ME_R(0.4), ME_R(0.4), ME_R(0.4)), 300, 0, 2, ME_R(0.55));
+    /* The lift: a 1 × 0.1 × 1 m platform on a vertical axis (y), its cargo a box resting on it. */
+    McdModelID platform = DemoAddModel(demo, McdBoxCreate(fw, 1, ME_R(0.1), 1), 500, 0, ME_R(0.3), -2);
+    McdModelID cargo = DemoAddModel(demo, McdBoxCreate(fw, ME_R(0.4), ME_R(0.4), ME_R(0.4)), 300, 0, ME_R(0.55), -2);
     if (!platform || !cargo)
         return MEFALSE;
     s->cargo = McdModelGetBody(cargo);
     s->lift = MdtPrismaticCreate(demo->world);
     MdtPrismaticSetBodies(s->lift, McdModelGetBody(platform), NULL);
-    MdtPrismaticSetAxis(s->lift, 0, 0, 1);
+    MdtPrismaticSetAxis(s->lift, 0, 1, 0);
     MdtLimitID ll = MdtPrismaticGetLimit(s->lift);
     MdtSingleLimitSetStop(MdtLimitGetLowerLimit(ll), 0);
     MdtSingleLimitSetStop(MdtLimitGetUpperLimit(ll), LIFT_TOP);
@@ -91,7 +91,7 @@ static void report(const DemoInstance *demo, FILE *out)
     fprintf(out, "  cart stayed in [%.4f, %.4f] m (stops at ±%.1f)\n", (double)s->cartMin, (double)s->cartMax,
             (double)RAIL_STOP);
     fprintf(out, "  lift at %.4f m (top stop %.1f); cargo resting on it at height %.3f m\n",
-            (double)MdtLimitGetPosition(MdtPrismaticGetLimit(s->lift)), (double)LIFT_TOP, (double)p[2]);
+            (double)MdtLimitGetPosition(MdtPrismaticGetLimit(s->lift)), (double)LIFT_TOP, (double)p[1]);
 }
 
 const DemoScene DemoScenePrismatic = {"prismatic", "a motor-driven cart between hard stops; a lift carrying a box",

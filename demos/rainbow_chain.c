@@ -27,14 +27,14 @@ static MeBool create(DemoInstance *demo)
     McdModelID previousModel = NULL;
     for (int i = 0; i < LINKS; i++) {
         MeReal x = (MeReal)i * SPACING;
-        McdModelID m = DemoAddModel(demo, ball, 1000, x, 0, 4);
+        McdModelID m = DemoAddModel(demo, ball, 1000, x, 4, 0);
         if (!m)
             return MEFALSE;
         McdModelSetSortKey(m, i + 1);
         s->ball[i] = McdModelGetBody(m);
         s->joint[i] = MdtBSJointCreate(demo->world);
         MdtBSJointSetBodies(s->joint[i], s->ball[i], previous);
-        MdtBSJointSetPosition(s->joint[i], x - SPACING / 2 * (i > 0), 0, 4);
+        MdtBSJointSetPosition(s->joint[i], x - SPACING / 2 * (i > 0), 4, 0);
         MdtBSJointEnable(s->joint[i]);
         /* Neighbours touch along the chain: leave their collisions to the joints. */
         if (previousModel)

@@ -77,7 +77,9 @@ void DemoDestroy(DemoInstance *demo)
 }
 
 /* The plane's transform must outlive its model: one per process is enough (it never changes). */
-static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+/* The ground: McdPlaneCreate's plane is z = 0 with its normal +z in its own frame; this transform's
+ * rows (the plane's axes in the world) turn the normal to +y, for y up: local z -> (0, 1, 0). */
+static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 0, -1, 0}, {0, 1, 0, 0}, {0, 0, 0, 1}};
 
 MeBool DemoUniverseCreate(DemoInstance *demo, const MstUniverseSizes *sizes, MeReal g, MeReal groundFriction)
 {
@@ -85,7 +87,7 @@ MeBool DemoUniverseCreate(DemoInstance *demo, const MstUniverseSizes *sizes, MeR
     if (!demo->universe)
         return MEFALSE;
     demo->world = MstUniverseGetWorld(demo->universe);
-    MdtWorldSetGravity(demo->world, 0, 0, -g);
+    MdtWorldSetGravity(demo->world, 0, -g, 0);
     if (groundFriction >= 0) { /* a ground plane; friction only when > 0 */
         McdFrameworkID fw = MstUniverseGetFramework(demo->universe);
         if (!MstFixedModelCreate(demo->universe, McdPlaneCreate(fw), groundTM))

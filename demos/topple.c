@@ -6,8 +6,8 @@
 
 #define STACKS 6
 #define BLOCK_X ME_R(0.4)
-#define BLOCK_Y ME_R(0.4)
-#define BLOCK_Z ME_R(0.6)
+#define BLOCK_Y ME_R(0.6) /* height (y is up) */
+#define BLOCK_Z ME_R(0.4)
 #define SHOT_TIME ME_R(2.0)     /* first ball at 2 s, then one each second */
 #define SHOT_SPEED ME_R(12.0)
 #define BALLS 4
@@ -37,17 +37,17 @@ static MeBool create(DemoInstance *demo)
         s->height[k] = 3 + k % 4;
         MeReal x = (MeReal)(k - (STACKS - 1) / 2.0) * ME_R(1.2);
         for (int i = 0; i < s->height[k]; i++) {
-            MeReal z = BLOCK_Z / 2 + (MeReal)i * BLOCK_Z;
-            McdModelID m = DemoAddModel(demo, block, 500, x, 0, z);
+            MeReal y = BLOCK_Y / 2 + (MeReal)i * BLOCK_Y;
+            McdModelID m = DemoAddModel(demo, block, 500, x, y, 0);
             if (!m)
                 return MEFALSE;
             s->blocks[k][i] = McdModelGetBody(m);
-            MeVector3Set(s->start[k][i], x, 0, z);
+            MeVector3Set(s->start[k][i], x, y, 0);
         }
     }
     McdGeometryID ball = McdSphereCreate(fw, ME_R(0.2));
     for (int i = 0; i < BALLS; i++) {
-        s->balls[i] = DemoAddModel(demo, ball, 2000, (MeReal)(i * 2 - 3), -10 - (MeReal)i, ME_R(0.2));
+        s->balls[i] = DemoAddModel(demo, ball, 2000, (MeReal)(i * 2 - 3), ME_R(0.2), 10 + (MeReal)i);
         if (!s->balls[i])
             return MEFALSE;
         MdtBodyDisable(McdModelGetBody(s->balls[i]));
@@ -79,14 +79,14 @@ static void beforeStep(DemoInstance *demo, MeReal h)
     if (s->shot < BALLS && demo->time >= SHOT_TIME + (MeReal)s->shot) {
         if (s->shot == 0)
             s->driftBeforeShot = stackDrift(s);
-        /* Aim along +y at one stack's middle block. */
+        /* Aim along -z at one stack's middle block, from 6 m in front of it. */
         MdtBodyID b = McdModelGetBody(s->balls[s->shot]);
         int target = (s->shot * 2 + 1) % STACKS;
         MeVector3 aim;
         MdtBodyGetPosition(s->blocks[target][1], aim);
-        MdtBodySetPosition(b, aim[0], aim[1] - 6, aim[2]);
+        MdtBodySetPosition(b, aim[0], aim[1], aim[2] + 6);
         MdtBodyEnable(b);
-        MdtBodySetLinearVelocity(b, 0, SHOT_SPEED, ME_R(1.5));
+        MdtBodySetLinearVelocity(b, 0, ME_R(1.5), -SHOT_SPEED);
         s->shot++;
     }
 }
@@ -100,7 +100,7 @@ static void report(const DemoInstance *demo, FILE *out)
     for (int k = 0; k < STACKS; k++) {
         MeVector3 p;
         MdtBodyGetPosition(s->blocks[k][s->height[k] - 1], p);
-        if (p[2] < s->start[k][s->height[k] - 1][2] - BLOCK_Z / 2)
+        if (p[1] < s->start[k][s->height[k] - 1][1] - BLOCK_Y / 2)
             fallen++;
     }
     fprintf(out, "  balls shot: %d; stacks whose top block fell: %d of %d\n", s->shot, fallen, STACKS);

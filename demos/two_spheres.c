@@ -1,4 +1,4 @@
-/* two_spheres.c -- the guide's chapter 2 example: two spheres meet head-on in a world without
+/* two_spheres.c -- Karma 1.2's TwoSpheres sample: two spheres meet head-on in a world without
  * gravity, through the whole pipeline (farfield pair, nearfield contact, contact group, solver).
  * The report checks momentum conservation and the restitution set in the material table. */
 #include <stdlib.h>
@@ -52,5 +52,5 @@ static void report(const DemoInstance *demo, FILE *out)
 }
 
 const DemoScene DemoSceneTwoSpheres = {
-    "twospheres", "two spheres collide head-on (the guide's chapter 2 example)", 180, ME_R(1.0) / 60, create,
+    "twospheres", "two spheres collide head-on (Karma's TwoSpheres sample)", 180, ME_R(1.0) / 60, create,
     NULL, NULL, report};

@@ -1,14 +1,16 @@
 /* karma.c -- the karma command-line tool: list the demo scenes and run one headless.
  *
  *     karma list
- *     karma run SCENE [--steps N] [--dt H] [--csv FILE]
+ *     karma run SCENE [--steps N] [--dt H] [--csv FILE [--long]]
+ *     karma plot SCENE [--steps N] [--dt H] [--csv FILE] [--png FILE]
  *     karma version
  *     karma --help
  *
  * `run` builds the scene from the registry (demos/), steps it and prints what happened: body
  * counts, the time spent in each stage of the step (from the world's MeProfile), energy and momenta
- * before and after, final positions and the scene's own report. `--csv` writes every body's state
- * at every step. Exit status: 0 on success, 1 when the run reported a Karma warning or the scene
+ * before and after, final positions and the scene's own report. `--csv` writes the run for plotting: one row per step
+ * with columns per body (or, with --long, one row per body and step); `plot` also writes a gnuplot
+ * script of the bodies' heights and runs gnuplot when it is installed. Exit status: 0 on success, 1 when the run reported a Karma warning or the scene
  * could not be built, 2 on a bad command line. */
 #include <errno.h>
 #include <limits.h>
@@ -34,7 +36,13 @@ static void printUsage(FILE *out)
             "  run SCENE [options]       run SCENE headless and print what happened\n"
             "      --steps N             number of steps (default: the scene's)\n"
             "      --dt H                step size in seconds (default: the scene's)\n"
-            "      --csv FILE            write every body's state at every step to FILE\n"
+            "      --csv FILE            write the run to FILE: one row per step, columns per body\n"
+            "                            (BODY.x, BODY.y_up, BODY.z, BODY.speed, BODY.awake; y is up)\n"
+            "      --long                with --csv: one row per body and step, with its whole state\n"
+            "  plot SCENE [options]      run SCENE, write SCENE.csv and SCENE.gp (a gnuplot script of\n"
+            "                            each body's height over time) and draw it if gnuplot is installed\n"
+            "      --steps N, --dt H, --csv FILE   as for run\n"
+            "      --png FILE            draw into FILE instead of the terminal\n"
             "  version                   print the library version and precision\n"
             "  help, --help, -h          print this help\n"
             "\n"
@@ -126,14 +134,54 @@ static void printVector(const char *label, const double v[3], const char *unit)
     printf("%s(%.4f, %.4f, %.4f)%s%s", label, v[0], v[1], v[2], *unit ? " " : "", unit);
 }
 
-static void writeCsvHeader(FILE *csv)
+/* ---- CSV ------------------------------------------------------------------------------------ */
+
+/* A body's column label: its scene name, with its index when the name is shared or missing
+ * ("door", "ball3", "body12"); labels hold no comma or space, so plotting tools take them as is. */
+static void bodyLabel(const DemoInstance *demo, MdtBodyID body, int index, char *label, size_t size)
 {
-    fprintf(csv, "step,time,body,name,enabled,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz\n");
+    const char *name = DemoBodyName(demo, body);
+    int sharing = 0;
+    if (name)
+        for (MdtBodyID b = MdtBodyGetFirst(demo->world); b; b = MdtBodyGetNext(b)) {
+            const char *other = DemoBodyName(demo, b);
+            sharing += other && strcmp(other, name) == 0;
+        }
+    if (!name)
+        snprintf(label, size, "body%d", index);
+    else if (sharing > 1)
+        snprintf(label, size, "%s%d", name, index);
+    else
+        snprintf(label, size, "%s", name);
+    for (char *c = label; *c; c++)
+        if (*c == ',' || *c == ' ')
+            *c = '_';
 }
 
-static void writeCsvRows(FILE *csv, const DemoInstance *demo)
+/* Wide (default): one row per step, `step,time` then x, y_up, z, speed and awake per body, so a
+ * column is one quantity of one body over time. Long (--long): one row per body and step with its
+ * whole state. The height column is y_up: every scene is y-up (docs/decisions.md K30). */
+static void writeCsvHeader(FILE *csv, const DemoInstance *demo, MeBool longForm)
+{
+    if (longForm) {
+        fprintf(csv, "step,time,body,name,awake,x,y_up,z,qw,qx,qy,qz,vx,vy_up,vz,wx,wy_up,wz\n");
+        return;
+    }
+    fprintf(csv, "step,time");
+    int index = 0;
+    for (MdtBodyID b = MdtBodyGetFirst(demo->world); b; b = MdtBodyGetNext(b), index++) {
+        char label[64];
+        bodyLabel(demo, b, index, label, sizeof label);
+        fprintf(csv, ",%s.x,%s.y_up,%s.z,%s.speed,%s.awake", label, label, label, label, label);
+    }
+    fprintf(csv, "\n");
+}
+
+static void writeCsvRows(FILE *csv, const DemoInstance *demo, MeBool longForm)
 {
     int index = 0;
+    if (!longForm)
+        fprintf(csv, "%lu,%.9g", demo->steps, (double)demo->time);
     for (MdtBodyID b = MdtBodyGetFirst(demo->world); b; b = MdtBodyGetNext(b), index++) {
         MeVector3 x, v, w;
         MeVector4 q;
@@ -142,36 +190,90 @@ static void writeCsvRows(FILE *csv, const DemoInstance *demo)
         MdtBodyGetQuaternion(b, q);
         MdtBodyGetLinearVelocity(b, v);
         MdtBodyGetAngularVelocity(b, w);
+        int awake = MdtBodyIsEnabled(b) ? 1 : 0;
+        if (!longForm) {
+            fprintf(csv, ",%.9g,%.9g,%.9g,%.9g,%d", (double)x[0], (double)x[1], (double)x[2],
+                    (double)MeVector3Magnitude(v), awake);
+            continue;
+        }
         fprintf(csv, "%lu,%.9g,%d,%s,%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
-                demo->steps, (double)demo->time, index, name ? name : "", MdtBodyIsEnabled(b) ? 1 : 0,
+                demo->steps, (double)demo->time, index, name ? name : "", awake,
                 (double)x[0], (double)x[1], (double)x[2], (double)q[0], (double)q[1], (double)q[2], (double)q[3],
                 (double)v[0], (double)v[1], (double)v[2], (double)w[0], (double)w[1], (double)w[2]);
     }
+    if (!longForm)
+        fprintf(csv, "\n");
+}
+
+/* ---- karma plot: a gnuplot script of every named body's height over time ------------------- */
+
+/* Writes `script` to plot the wide CSV `csvPath` of `demo` (heights of the named bodies, or of the
+ * first eight): to the terminal as text, or to `png` when not NULL. */
+static MeBool writePlotScript(const char *script, const char *csvPath, const DemoInstance *demo, const char *png)
+{
+    FILE *gp = fopen(script, "w");
+    if (!gp)
+        return MEFALSE;
+    fprintf(gp, "# karma plot %s: height (y_up) of the scene's bodies over time, from %s\n", demo->scene->name,
+            csvPath);
+    if (png)
+        fprintf(gp, "set terminal png size 1000,600\nset output '%s'\n", png);
+    else
+        fprintf(gp, "set terminal dumb size 120,32\n");
+    fprintf(gp, "set datafile separator ','\nset title '%s: height of each body'\n"
+                "set xlabel 'time (s)'\nset ylabel 'y_up (m)'\nset key outside right\nplot",
+            demo->scene->name);
+    int index = 0, plotted = 0;
+    for (MdtBodyID b = MdtBodyGetFirst(demo->world); b; b = MdtBodyGetNext(b), index++) {
+        if (DemoBodyName(demo, b) == NULL && (demo->namedCount > 0 || index >= 8))
+            continue;
+        if (plotted >= 12)
+            break;
+        char label[64];
+        bodyLabel(demo, b, index, label, sizeof label);
+        /* columns: step, time, then five per body; y_up is the body's second */
+        fprintf(gp, "%s '%s' using 2:%d every ::1 with lines title '%s'", plotted ? ", \\\n    " : " ", csvPath,
+                3 + 5 * index + 1, label);
+        plotted++;
+    }
+    fprintf(gp, "\n");
+    return fclose(gp) == 0;
 }
 
 /* ---- karma run ------------------------------------------------------------------------------ */
 
-static int runScene(int argc, char **argv)
+/* `karma run` (plot = MEFALSE) and `karma plot` (METRUE: writes SCENE.csv and SCENE.gp, then draws
+ * them with gnuplot when it is installed). */
+static int runScene(int argc, char **argv, MeBool plot)
 {
     if (argc < 1)
-        return usageError("%s", "`run` needs a scene name; `karma list` shows them");
+        return usageError("%s", plot ? "`plot` needs a scene name; `karma list` shows them"
+                                     : "`run` needs a scene name; `karma list` shows them");
     const DemoScene *scene = DemoSceneFind(argv[0]);
     if (!scene)
         return usageError("no scene called '%s'; `karma list` shows the scenes", argv[0]);
 
     long steps = scene->defaultSteps;
     MeReal h = scene->defaultStepSize;
-    const char *csvPath = NULL;
+    const char *csvPath = NULL, *png = NULL;
+    MeBool longForm = MEFALSE;
     for (int i = 1; i < argc; i++) {
         const char *option = argv[i];
         const char *value = i + 1 < argc ? argv[i + 1] : NULL;
-        if (strcmp(option, "--steps") == 0 || strcmp(option, "--dt") == 0 || strcmp(option, "--csv") == 0) {
+        if (!plot && strcmp(option, "--long") == 0) {
+            longForm = METRUE;
+            continue;
+        }
+        if (strcmp(option, "--steps") == 0 || strcmp(option, "--dt") == 0 || strcmp(option, "--csv") == 0 ||
+            (plot && strcmp(option, "--png") == 0)) {
             if (!value)
                 return usageError("option %s needs a value", option);
             i++;
         } else {
-            return usageError("unknown option '%s' for `run`", option);
+            return usageError(plot ? "unknown option '%s' for `plot`" : "unknown option '%s' for `run`", option);
         }
+        if (strcmp(option, "--png") == 0)
+            png = value;
         if (strcmp(option, "--steps") == 0 && !parseSteps(value, &steps))
             return usageError("--steps takes a whole number from 0 to 2147483647, not '%s'", value);
         if (strcmp(option, "--dt") == 0 && !parseStepSize(value, &h))
@@ -180,35 +282,38 @@ static int runScene(int argc, char **argv)
             csvPath = value;
     }
 
+    char defaultCsv[96], script[96];
+    if (plot && !csvPath) {
+        snprintf(defaultCsv, sizeof defaultCsv, "%s.csv", scene->name);
+        csvPath = defaultCsv;
+    }
+    unsigned long warningsBefore = MeMessageGetTotalCount(ME_LEVEL_WARNING);
+    DemoInstance demo;
+    if (!DemoCreate(scene, &demo)) {
+        fprintf(stderr, "karma: scene '%s' could not be built (see the messages above)\n", scene->name);
+        return EXIT_FAILURE;
+    }
     FILE *csv = NULL;
     if (csvPath) {
         csv = fopen(csvPath, "w");
         if (!csv) {
             fprintf(stderr, "karma: cannot write '%s': %s\n", csvPath, strerror(errno));
+            DemoDestroy(&demo);
             return EXIT_FAILURE;
         }
-        writeCsvHeader(csv);
-    }
-
-    unsigned long warningsBefore = MeMessageGetTotalCount(ME_LEVEL_WARNING);
-    DemoInstance demo;
-    if (!DemoCreate(scene, &demo)) {
-        fprintf(stderr, "karma: scene '%s' could not be built (see the messages above)\n", scene->name);
-        if (csv)
-            fclose(csv);
-        return EXIT_FAILURE;
+        writeCsvHeader(csv, &demo, longForm);
     }
 
     Totals before, after;
     measure(demo.world, &before);
     if (csv)
-        writeCsvRows(csv, &demo);
+        writeCsvRows(csv, &demo, longForm);
     double sumPartitions = 0, sumRows = 0, sumPairs = 0, sumContacts = 0;
     int maxRows = 0;
     for (long i = 0; i < steps; i++) {
         DemoStep(&demo, h);
         if (csv)
-            writeCsvRows(csv, &demo);
+            writeCsvRows(csv, &demo, longForm);
         MdtSolverStats stats;
         MdtWorldGetSolverStats(demo.world, &stats);
         sumPartitions += stats.partitions;
@@ -226,7 +331,7 @@ static int runScene(int argc, char **argv)
     printf("karma run %s: %s\n", scene->name, scene->description);
     printf("  %s; %ld steps of %.6g s = %.4g s simulated\n", MeToolkitVersionString(), steps, (double)h,
            (double)demo.time);
-    printf("  bodies: %d, enabled %d at the start and %d at the end; constraints: %d\n", after.bodies,
+    printf("  bodies: %d, awake %d at the start and %d at the end; constraints: %d\n", after.bodies,
            before.enabled, after.enabled, MdtWorldGetTotalConstraints(demo.world));
 
     double perStep = steps > 0 ? 1e6 / (double)steps : 0, mean = steps > 0 ? 1.0 / (double)steps : 0;
@@ -260,7 +365,7 @@ static int runScene(int argc, char **argv)
     printVector(", after ", after.angularMomentum, "kg·m²/s");
     printf("\n");
 
-    printf("  final positions (m)%s:\n", after.bodies > 12 ? ", named bodies and the first few" : "");
+    printf("  final positions (m; x, y up, z)%s:\n", after.bodies > 12 ? ", named bodies and the first few" : "");
     int index = 0, shown = 0;
     for (MdtBodyID b = MdtBodyGetFirst(demo.world); b; b = MdtBodyGetNext(b), index++) {
         MeVector3 x;
@@ -275,7 +380,7 @@ static int runScene(int argc, char **argv)
         }
         MdtBodyGetPosition(b, x);
         printf("    %-12s (%10.4f, %10.4f, %10.4f)%s\n", name, (double)x[0], (double)x[1], (double)x[2],
-               MdtBodyIsEnabled(b) ? "" : "  disabled");
+               MdtBodyIsEnabled(b) ? "" : "  asleep");
     }
     if (shown < after.bodies)
         printf("    ... and %d more\n", after.bodies - shown);
@@ -285,10 +390,33 @@ static int runScene(int argc, char **argv)
     }
     printf("  Karma warnings during the run: %lu\n", warnings);
 
+    if (plot) {
+        snprintf(script, sizeof script, "%s.gp", scene->name);
+        if (!writePlotScript(script, csvPath, &demo, png)) {
+            fprintf(stderr, "karma: cannot write '%s': %s\n", script, strerror(errno));
+            warnings++;
+        }
+    }
     DemoDestroy(&demo);
     if (csv && fclose(csv) != 0) {
         fprintf(stderr, "karma: error writing '%s'\n", csvPath);
         return EXIT_FAILURE;
+    }
+    if (plot) {
+        printf("  wrote %s (one row per step) and %s (a gnuplot script of each body's height)\n", csvPath, script);
+        fflush(stdout); /* the report before gnuplot's drawing */
+        if (system("command -v gnuplot >/dev/null 2>&1") == 0) {
+            char command[256];
+            snprintf(command, sizeof command, "gnuplot '%s'", script);
+            if (system(command) != 0) {
+                fprintf(stderr, "karma: gnuplot failed on '%s'\n", script);
+                return EXIT_FAILURE;
+            }
+            if (png)
+                printf("  drew %s\n", png);
+        } else {
+            printf("  gnuplot is not installed: `apt-get install gnuplot-nox`, then `gnuplot %s`\n", script);
+        }
     }
     return warnings ? EXIT_FAILURE : EXIT_SUCCESS;
 }
@@ -314,6 +442,8 @@ int main(int argc, char **argv)
         return EXIT_SUCCESS;
     }
     if (strcmp(command, "run") == 0)
-        return runScene(argc - 2, argv + 2);
+        return runScene(argc - 2, argv + 2, MEFALSE);
+    if (strcmp(command, "plot") == 0)
+        return runScene(argc - 2, argv + 2, METRUE);
     return usageError("unknown command '%s'", command);
 }

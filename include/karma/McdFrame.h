@@ -41,6 +41,7 @@ ME_API MeBool McdFrameworkAddTermAction(McdFrameworkID fw, McdFrameworkTermActio
  *  McdSpaceEndChanges) and then every geometry of the framework, whatever references they hold. */
 ME_API void McdFrameworkDestroyAllModelsAndGeometries(McdFrameworkID fw);
 
+/** The framework's lengthScale (metres), as given to McdInit. */
 ME_API MeReal McdFrameworkGetLengthScale(McdFrameworkID fw);
 /** Contact tolerance given to new models (>= 0, finite). */
 ME_API void McdFrameworkSetDefaultContactTolerance(McdFrameworkID fw, MeReal tolerance);

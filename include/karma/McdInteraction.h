@@ -14,6 +14,8 @@
 
 ME_EXTERN_C_BEGIN
 
+/** Prepare a new pair for McdIntersect (orders its models for the registered pair test); McdGoodbye
+ *  releases what the test cached for the pair. */
 ME_API void McdHello(McdModelPairID pair);
 /** Fill `result` (its contacts array and contactMaxCount set by the caller). Returns `touch`. */
 ME_API int McdIntersect(McdModelPairID pair, McdIntersectResult *result);

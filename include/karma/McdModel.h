@@ -31,6 +31,7 @@ ME_API void McdModelReset(McdModelID m);
 ME_API MeBool McdModelIsValid(McdModelID m);
 ME_API McdFrameworkID McdModelGetFramework(McdModelID m);
 
+/** The model's shape: set (the geometry's reference count follows; NULL refused) and get. */
 ME_API void McdModelSetGeometry(McdModelID m, McdGeometryID geometry);
 ME_API McdGeometryID McdModelGetGeometry(McdModelID m);
 
@@ -55,6 +56,7 @@ ME_API void McdModelGetRelativeTransformPtrs(McdModelID m, MeMatrix4Ptr *relTM, 
 /** Geometry-to-world transform of the last update. */
 ME_API void McdModelGetWorldTransform(McdModelID m, MeMatrix4 tm);
 
+/** Distance (metres, >= 0, finite) within which the pair tests report contacts for this model. */
 ME_API void McdModelSetContactTolerance(McdModelID m, MeReal tolerance);
 ME_API MeReal McdModelGetContactTolerance(McdModelID m);
 /** Material index (>= 0) for the bridge's material table. */

@@ -8,6 +8,8 @@ ME_EXTERN_C_BEGIN
 
 typedef McdGeometryID McdNullID;
 
+/** A geometry that touches nothing (a model kept in the space without collisions); NULL (reported)
+ *  when the framework's geometry pool is full. */
 ME_API McdNullID McdNullCreate(McdFrameworkID fw);
 
 ME_EXTERN_C_END

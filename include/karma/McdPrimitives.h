@@ -27,6 +27,7 @@ ME_EXTERN_C_BEGIN
  * number; T##RegisterType(fw) has nothing to do (built in); T##Destroy is McdGeometryDestroy; the
  * others are the generic calls. Each refuses (ME_ERR_WRONG_HANDLE_KIND) a geometry of another type. */
 
+/** The null type's number and its per-type functions (Karma 1.2's names; the generic calls do the same). */
 ME_API MeI16 McdNullGetTypeId(void);
 ME_API void McdNullRegisterType(McdFramework *frame);
 ME_API void McdNullDestroy(McdGeometryID g);
@@ -35,6 +36,7 @@ ME_API MeI16 McdNullGetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMatrix
 ME_API char *McdNullGetTypeName(McdGeometryID g);
 ME_API void McdNullDebugDraw(const McdGeometryID g, MeMatrix4 tm, const MeReal colour[3]);
 
+/** The sphere type's number and its per-type functions (Karma 1.2's names; the generic calls do the same). */
 ME_API MeI16 McdSphereGetTypeId(void);
 ME_API void McdSphereRegisterType(McdFramework *frame);
 ME_API void McdSphereDestroy(McdGeometryID g);
@@ -43,6 +45,7 @@ ME_API MeI16 McdSphereGetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMatr
 ME_API char *McdSphereGetTypeName(McdGeometryID g);
 ME_API void McdSphereDebugDraw(const McdGeometryID g, MeMatrix4 tm, const MeReal colour[3]);
 
+/** The box type's number and its per-type functions (Karma 1.2's names; the generic calls do the same). */
 ME_API MeI16 McdBoxGetTypeId(void);
 ME_API void McdBoxRegisterType(McdFramework *frame);
 ME_API void McdBoxDestroy(McdGeometryID g);
@@ -51,6 +54,7 @@ ME_API MeI16 McdBoxGetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMatrix3
 ME_API char *McdBoxGetTypeName(McdGeometryID g);
 ME_API void McdBoxDebugDraw(const McdGeometryID g, MeMatrix4 tm, const MeReal colour[3]);
 
+/** The plane type's number and its per-type functions (Karma 1.2's names; the generic calls do the same). */
 ME_API MeI16 McdPlaneGetTypeId(void);
 ME_API void McdPlaneRegisterType(McdFramework *frame);
 ME_API void McdPlaneDestroy(McdGeometryID g);
@@ -59,6 +63,7 @@ ME_API MeI16 McdPlaneGetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMatri
 ME_API char *McdPlaneGetTypeName(McdGeometryID g);
 ME_API void McdPlaneDebugDraw(const McdGeometryID g, MeMatrix4 tm, const MeReal colour[3]);
 
+/** The cylinder type's number and its per-type functions (Karma 1.2's names; the generic calls do the same). */
 ME_API MeI16 McdCylinderGetTypeId(void);
 ME_API void McdCylinderRegisterType(McdFramework *frame);
 ME_API void McdCylinderDestroy(McdGeometryID g);
@@ -67,6 +72,7 @@ ME_API MeI16 McdCylinderGetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMa
 ME_API char *McdCylinderGetTypeName(McdGeometryID g);
 ME_API void McdCylinderDebugDraw(const McdGeometryID g, MeMatrix4 tm, const MeReal colour[3]);
 
+/** The sphyl type's number and its per-type functions (Karma 1.2's names; the generic calls do the same). */
 ME_API MeI16 McdSphylGetTypeId(void);
 ME_API void McdSphylRegisterType(McdFramework *frame);
 ME_API void McdSphylDestroy(McdGeometryID g);
@@ -75,6 +81,7 @@ ME_API MeI16 McdSphylGetMassProperties(McdGeometryID g, MeMatrix4 relTM, MeMatri
 ME_API char *McdSphylGetTypeName(McdGeometryID g);
 ME_API void McdSphylDebugDraw(const McdGeometryID g, MeMatrix4 tm, const MeReal colour[3]);
 
+/** The cone type's number and its per-type functions (Karma 1.2's names; the generic calls do the same). */
 ME_API MeI16 McdConeGetTypeId(void);
 ME_API void McdConeRegisterType(McdFramework *frame);
 ME_API void McdConeDestroy(McdGeometryID g);

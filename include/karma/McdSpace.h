@@ -112,6 +112,8 @@ ME_API void McdSpaceDestroy(McdSpaceID space);
 /** Whether `space` is a live space ID (no message). */
 ME_API MeBool McdSpaceIsValid(McdSpaceID space);
 
+/** The change block: models are inserted, removed, frozen and updated between BeginChanges and
+ *  EndChanges, which decides the pairs' hello, staying and goodbye; misuse is ME_ERR_BAD_STATE. */
 ME_API void McdSpaceBeginChanges(McdSpaceID space);
 ME_API void McdSpaceEndChanges(McdSpaceID space);
 ME_API MeBool McdSpaceIsChanging(McdSpaceID space);
@@ -131,6 +133,8 @@ ME_API void McdSpaceUpdateAll(McdSpaceID space);
 /** Updates one model (frozen or not) and its place in the sort. */
 ME_API void McdSpaceUpdateModel(McdModelID model);
 
+/** A frozen model keeps its box and pairs without being updated (its body asleep); MEFALSE
+ *  (reported) for a model in no space. */
 ME_API MeBool McdSpaceFreezeModel(McdModelID model);
 ME_API MeBool McdSpaceUnfreezeModel(McdModelID model);
 ME_API MeBool McdSpaceModelIsFrozen(McdModelID model);
@@ -142,6 +146,7 @@ ME_API MeBool McdSpaceDisablePair(McdModelID model1, McdModelID model2);
 ME_API MeBool McdSpaceEnablePair(McdModelID model1, McdModelID model2);
 ME_API MeBool McdSpacePairIsEnabled(McdModelID model1, McdModelID model2);
 
+/** Models in the space, and the iterator over them (McdSpaceGetModel, below). */
 ME_API int McdSpaceGetModelCount(McdSpaceID space);
 ME_API void McdSpaceModelIteratorBegin(McdSpaceID space, McdSpaceModelIterator *iter);
 /** Next model in slot order into *model; returns MEFALSE when there are no more. */
@@ -178,6 +183,7 @@ ME_API MeBool McdCullingTableGet(McdCullingTableID table, int i, int j);
 
 /* ---- reading the pairs ------------------------------------------------------------------- */
 
+/** Start reading the pairs of the last update (McdSpaceGetPairs, below). */
 ME_API void McdSpacePairIteratorBegin(McdSpaceID space, McdSpacePairIterator *iter);
 /** Resets `container` and fills it with the next goodbyes, hellos and stayings, in that order.
  *  Returns METRUE ("overflow") when pairs remain: empty the container's work and call again. */
@@ -204,6 +210,7 @@ ME_API int McdSpaceGetLineSegFirstEnabledIntersection(McdSpaceID space, const Me
 
 /* ---- containers -------------------------------------------------------------------------- */
 
+/** A container for `size` pairs (>= 1), allocated here: free it with McdModelPairContainerDestroy. */
 ME_API McdModelPairContainer *McdModelPairContainerCreate(int size);
 /** Make `c` an empty container over the application's `array` of `size` entries (not freed here:
  *  do not McdModelPairContainerDestroy such a container). */

@@ -15,7 +15,7 @@
  *  - Steering angle: rotation of the wheel about s relative to the chassis (rad, in (−π, π]).
  *  - Hinge angle: rotation of the wheel about its hinge axis relative to the chassis, in [0, 2π).
  *  - Rates: (ω1 − ω0)·s, (ω1 − ω0)·hinge axis, d(height)/dt.
- * Defaults (KARMA.md §5.4): steering axis (0,0,1) and hinge axis (0,1,0) in both bodies' frames;
+ * Defaults (docs/karma12.md §5.4): steering axis (0,0,1) and hinge axis (0,1,0) in both bodies' frames;
  * steering motor desired velocity 0 with max force 1e9 (holds the steering); steering not locked;
  * hinge motor 0, max force 0 (free); suspension Kp 0, Kd 0, softness 0, lo −1e9, hi 1e9, ref 0. */
 #ifndef MDT_CARWHEEL_H

@@ -24,6 +24,7 @@ ME_API void MdtContactGroupReset(MdtContactGroupID g);
 ME_API MdtConstraintID MdtContactGroupQuaConstraint(MdtContactGroupID g);
 ME_API MdtContactGroupID MdtConstraintDCastContactGroup(MdtConstraintID c);
 
+/** The group's contacts in order: the first, and the one after `c` (NULL after the last). */
 ME_API MdtContactID MdtContactGroupGetFirstContact(MdtContactGroupID g);
 ME_API MdtContactID MdtContactGroupGetNextContact(MdtContactGroupID g, MdtContactID c);
 /** Add a stand-alone (disabled) contact to the end of the group; it takes the group's bodies. */

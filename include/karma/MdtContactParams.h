@@ -70,8 +70,10 @@ typedef struct MdtBclContactParams MdtBclContactParams; /**< Karma 1.2's name fo
 /** Parameters are addressed through a plain pointer (inside a contact or a material table). */
 typedef MdtContactParams *MdtContactParamsID;
 
+/** Back to the defaults: frictionless (MdtContactTypeFrictionZero), no restitution, softness 0. */
 ME_API void MdtContactParamsReset(MdtContactParamsID p);
 
+/** The parameters' values (see the setters below for their meaning and units). */
 ME_API MdtContactType MdtContactParamsGetType(MdtContactParamsID p);
 ME_API MdtFrictionModel MdtContactParamsGetPrimaryFrictionModel(MdtContactParamsID p);
 ME_API MdtFrictionModel MdtContactParamsGetSecondaryFrictionModel(MdtContactParamsID p);
@@ -88,6 +90,8 @@ ME_API MeReal MdtContactParamsGetSecondaryFrictionCoeffecient(MdtContactParamsID
 ME_API MeReal MdtContactParamsGetSecondarySlip(MdtContactParamsID p);
 ME_API MeReal MdtContactParamsGetSecondarySlide(MdtContactParamsID p);
 
+/** Friction: none, one direction or two (MdtContactTypeFrictionZero/1D/2D), and the friction
+ *  model of each direction (box: a force cap; normal force: Coulomb, a coefficient). */
 ME_API void MdtContactParamsSetType(MdtContactParamsID p, MdtContactType t);
 ME_API void MdtContactParamsSetPrimaryFrictionModel(MdtContactParamsID p, MdtFrictionModel m);
 ME_API void MdtContactParamsSetSecondaryFrictionModel(MdtContactParamsID p, MdtFrictionModel m);

@@ -1,5 +1,5 @@
 /* MdtDefaults.h -- the default values of Karma Dynamics, under Karma 1.2's macro names. The library
- * itself takes its defaults from here (tests/mdt/test_mdt_compat.c compares them with new objects).
+ * itself takes its defaults from here (tests/mdt/test_mdt_karma12.c compares them with new objects).
  * Scaled values: epsilon by 1/massScale, body mass by massScale, inertia by massScale·lengthScale²,
  * the speed and acceleration thresholds of auto-disable by lengthScale² (decision D1). */
 #ifndef MDT_DEFAULTS_H

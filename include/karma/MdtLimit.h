@@ -23,7 +23,7 @@
  * Change them through the functions below, which check their arguments; a limit that was not
  * initialised by MdtLimitReset is refused (ME_ERR_BAD_STATE). A limit obtained from a joint lives as
  * long as the joint. Defaults (MdtLimitReset): stops 0, stiffness MEINFINITY, damping 0,
- * restitution 1, limits inactive, motor off with desired velocity 0 and maximum force 0 (KARMA.md
+ * restitution 1, limits inactive, motor off with desired velocity 0 and maximum force 0 (docs/karma12.md
  * decision D4), not locked, offset 0. */
 #ifndef MDT_LIMIT_H
 #define MDT_LIMIT_H

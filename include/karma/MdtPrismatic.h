@@ -5,7 +5,7 @@
  * travel of body 0's attachment point relative to body 1's along the axis (metres), zero at the
  * relative position the bodies had when the axis was set (MdtPrismaticSetAxis), or when the joint
  * was first stepped if the axis was never set. Rate: the relative velocity along the axis.
- * Defaults: axis (1,0,0) (KARMA.md decision D2); the limit's defaults (MdtLimit.h). */
+ * Defaults: axis (1,0,0) (docs/karma12.md decision D2); the limit's defaults (MdtLimit.h). */
 #ifndef MDT_PRISMATIC_H
 #define MDT_PRISMATIC_H
 

@@ -73,6 +73,7 @@ typedef struct MdtWorldCounters {
     unsigned long steps;      /**< completed calls to MdtWorldStep */
     MeReal time;              /**< simulated seconds */
 } MdtWorldCounters;
+/** Fill `counters` with the world's counts and step totals (NULL refused). */
 ME_API void MdtWorldGetCounters(MdtWorldID w, MdtWorldCounters *counters);
 
 /** Which LCP method solves a partition. */
@@ -97,6 +98,8 @@ typedef struct MdtSolverStats {
     MeReal maxResidual;      /**< largest residual (m/s: how far a row's velocity is from what the
                                   constraint asks), over partitions */
 } MdtSolverStats;
+/** Fill `stats` with what the last step's solver did (partitions, rows, iterations); then the
+ *  solver settings: method, largest direct partition (rows), tolerance. */
 ME_API void MdtWorldGetSolverStats(MdtWorldID w, MdtSolverStats *stats);
 ME_API MdtLCPSolver MdtWorldGetLCPSolver(MdtWorldID w);
 ME_API int MdtWorldGetMaxDirectRows(MdtWorldID w);
@@ -167,6 +170,12 @@ typedef void (*MdtSimErrorHandlerPtr)(MdtWorldID w, const MdtSimError *error, vo
  *  disabled, reported with ME_ERR_NONFINITE_STATE and passed to the callback; other partitions are
  *  not affected. With the check off a bad solve is caught by the state check after integration. */
 ME_API void MdtWorldSetCheckSim(MdtWorldID w, MeBool check);
+/** One-time hints when a step can move nothing (default on): a world stepped with bodies of which none
+ *  was ever enabled (ME_ERR_NO_BODY_ENABLED), or with zero gravity and enabled bodies on which nothing
+ *  acts (no velocity, force or enabled constraint: ME_ERR_NOTHING_ACTS). Each is a warning, reported at
+ *  most once per world, naming the call to make. MEFALSE silences them (a scene that means it). */
+ME_API void MdtWorldSetHints(MdtWorldID w, MeBool hints);
+ME_API MeBool MdtWorldGetHints(MdtWorldID w);
 ME_API MeBool MdtWorldGetCheckSim(MdtWorldID w);
 /** Callback for failed partitions (NULL: none; the ME_ERR_NONFINITE_STATE report is always made).
  *  Karma 1.2's MdtWorldSetSimErrorCB passed Kea's internal arrays, which this library does not have:

@@ -38,8 +38,11 @@
     X(ME_ERR_NEGATIVE_VALUE,        108, ME_LEVEL_WARNING, "a value that must be zero or positive is negative") \
     X(ME_ERR_NOT_ROTATION,          109, ME_LEVEL_WARNING, "a matrix is not a rotation (orthonormal, right-handed) within tolerance") \
     X(ME_ERR_WORLD_LOCKED,          110, ME_LEVEL_WARNING, "the world is stepping; this change is not allowed from a callback") \
-    X(ME_ERR_MASS_RATIO,            111, ME_LEVEL_INFO,    "a mass or inertia is far (over 100x) from the world's massScale; expect poor accuracy") \
-    X(ME_ERR_BODY_INDEX,            112, ME_LEVEL_WARNING, "a body index must be 0 or 1")
+    X(ME_ERR_MASS_RATIO,            111, ME_LEVEL_INFO,    "an inertia is far (over 100x) from the world's scale (0.4 massScale lengthScale^2); expect poor accuracy (reported once per world)") \
+    X(ME_ERR_BODY_INDEX,            112, ME_LEVEL_WARNING, "a body index must be 0 or 1") \
+    X(ME_ERR_NO_BODY_ENABLED,       130, ME_LEVEL_WARNING, "hint: the world has bodies but none is enabled (bodies are created disabled), so nothing moves; once per world, MdtWorldSetHints silences it") \
+    X(ME_ERR_NOTHING_ACTS,          131, ME_LEVEL_WARNING, "hint: gravity is zero and nothing acts on the enabled bodies, so nothing moves (and they fall asleep); once per world, MdtWorldSetHints silences it") \
+    X(ME_ERR_MASS_SCALE,            132, ME_LEVEL_WARNING, "a mass is far (over 100x) from the world's massScale: contacts and joints turn soft; set massScale to a typical mass (reported once per world)")
 
 #define ME_ERROR_LIST_KEA(X) \
     X(ME_ERR_KEA_MAX_ITERATIONS,    300, ME_LEVEL_DEBUG,   "the LCP solver stopped at its iteration cap; the result is approximate") \

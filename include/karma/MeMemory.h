@@ -87,6 +87,7 @@ typedef struct MeMemoryStats {
     unsigned long frees;         /**< destroy and destroyAligned calls */
     unsigned long liveBlocks;    /**< allocations minus frees */
 } MeMemoryStats;
+/** Fill `stats` with the counts of the memory API's allocations and frees since the start. */
 ME_API void MeMemoryGetStats(MeMemoryStats *stats);
 
 ME_EXTERN_C_END

@@ -47,6 +47,8 @@ typedef struct MeProfile {
 /** The default clock (C11 timespec_get, wall time, seconds). */
 ME_API double MeProfileDefaultTimer(void);
 
+/** Set up an empty profile (no sections, timing on, the default timer); Reset clears its times;
+ *  SetTimer replaces its clock (NULL: the default). */
 ME_API void MeProfileInit(MeProfile *profile);
 ME_API void MeProfileReset(MeProfile *profile);
 ME_API void MeProfileSetTimer(MeProfile *profile, MeProfileTimerFn timer);
@@ -129,6 +131,8 @@ ME_API void MEAPI MeProfileEndFrame(void);
 #  define MeProfileStartSection(x, y) MeProfileStartSectionFn((x), (y))
 #  define MeProfileEndSection(x) MeProfileEndSectionFn(x)
 #endif
+/** Start the section called codeSection (a literal: its address is kept). With autoStop set, the
+ *  section ends by itself when the next section starts or the frame ends. */
 ME_API void MEAPI MeProfileStartSectionFn(const char *codeSection, unsigned char autoStop);
 /** End the running section called codeSection (a warning if it is not running). */
 ME_API void MEAPI MeProfileEndSectionFn(const char *codeSection);

@@ -42,6 +42,8 @@ ME_API int MstBridgeGetMaxMaterials(MstBridgeID b);
  *  through the MdtContactParams functions. NULL (reported) for a bad material. */
 ME_API MdtContactParamsID MstBridgeGetContactParams(MstBridgeID b, MstMaterialID m1, MstMaterialID m2);
 
+/** Callbacks of a material pair (NULL: none): after a pair test (intersect), per contact made (a
+ *  zero return drops the contact) and per pair (a zero return drops the pair's contacts). */
 ME_API void MstBridgeSetIntersectCB(MstBridgeID b, MstMaterialID m1, MstMaterialID m2, MstIntersectCBPtr cb);
 ME_API MstIntersectCBPtr MstBridgeGetIntersectCB(MstBridgeID b, MstMaterialID m1, MstMaterialID m2);
 ME_API void MstBridgeSetPerContactCB(MstBridgeID b, MstMaterialID m1, MstMaterialID m2, MstPerContactCBPtr cb);

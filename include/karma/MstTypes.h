@@ -51,7 +51,7 @@ struct MstUniverseSizes {
     MeReal massScale;                                /**< 1 */
 };
 
-/** Karma's defaults (KARMA.md §8): `MstUniverseSizes s = MstUniverseDefaultSizes;` */
+/** Karma's defaults (docs/karma12.md §8): `MstUniverseSizes s = MstUniverseDefaultSizes;` */
 ME_API extern const MstUniverseSizes MstUniverseDefaultSizes;
 
 /** What a program may read of a universe (Karma 1.2's fields, in its order). */

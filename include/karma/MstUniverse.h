@@ -37,8 +37,10 @@ ME_API void MstUniverseStep(MstUniverseID u, MeReal stepSize);
 #define MST_SECTION_COLLISION "Collision"
 #define MST_SECTION_FARFIELD "Farfield"
 #define MST_SECTION_NEARFIELD "Nearfield"
+/** The collision half's profile (the sections above). */
 ME_API const MeProfile *MstUniverseGetProfile(MstUniverseID u);
 
+/** The universe's parts (owned by it: do not destroy them; NULL, reported, for a bad ID). */
 ME_API MdtWorldID MstUniverseGetWorld(MstUniverseID u);
 ME_API McdSpaceID MstUniverseGetSpace(MstUniverseID u);
 ME_API MstBridgeID MstUniverseGetBridge(MstUniverseID u);

@@ -1,8 +1,8 @@
 /* karma.h -- the whole Karma SDK in one include: every public header of every layer.
  *
  * Layers (each usable alone): Me (common: maths, memory, messages, profiling, files, debug drawing),
- * Mdt (dynamics), Mcd (collision, with the Mcdu utilities), Mst (the bridge joining them). See docs/
- * for the user guide. McdCoreErrorList.h comes through McdMessage.h (it is also 1.2's ERR X-macro
+ * Mdt (dynamics), Mcd (collision, with the Mcdu utilities), Mst (the bridge joining them). The user
+ * guide is docs/guide/README.md in the source repository. McdCoreErrorList.h comes through McdMessage.h (it is also 1.2's ERR X-macro
  * list, which must not be expanded here). */
 #ifndef KARMA_H
 #define KARMA_H

@@ -77,8 +77,9 @@ McdFrameworkID McdInit(int geoTypeMaxCount, int modelCount, int instanceCount, M
      * unless shared, and aggregate children count against instanceCount. */
     int geometryCount = modelCount + instanceCount;
     if (!fw->types || !fw->interactions || !fw->warnedPairs || !fw->lineSegFns ||
-        !MePoolInit(&fw->geometryPool, geometryCount, sizeof(McdGeometryData), 16, "modelCount", 0) ||
-        !MePoolInit(&fw->modelPool, modelCount, sizeof(McdModelData), 16, "modelCount", 0)) {
+        !MePoolInit(&fw->geometryPool, geometryCount, sizeof(McdGeometryData), 16,
+                    "modelCount (+ instanceCount) in McdInit", 0) ||
+        !MePoolInit(&fw->modelPool, modelCount, sizeof(McdModelData), 16, "modelCount in McdInit", 0)) {
         freeFramework(fw);
         return NULL;
     }
@@ -91,6 +92,7 @@ McdFrameworkID McdInit(int geoTypeMaxCount, int modelCount, int instanceCount, M
     MeHandleSetOwnerPool(fw->ownerSlot, ME_HANDLE_MODEL, &fw->modelPool);
     fw->id = MeHandleOfOwner(fw->ownerSlot);
     fw->instanceMaxCount = instanceCount;
+    fw->typesSizeName = "geoTypeMaxCount in McdInit";
     fw->lengthScale = lengthScale;
     fw->defaultContactTolerance = DEFAULT_TOLERANCE_FRACTION * lengthScale;
     fw->defaultRequest.contactMaxCount = DEFAULT_CONTACT_MAX_COUNT;
@@ -226,8 +228,8 @@ int McdFrameworkRegisterUserGeometryType(McdFrameworkID id, const McdGeometryTyp
         return -1;
     }
     if (fw->typeCount == fw->typeCapacity) {
-        ME_REPORT(ME_ERR_POOL_FULL, "%d user geometry types are registered already; raise geoTypeMaxCount in McdInit",
-                  fw->typeCapacity - kMcdGeometryBuiltInTypes);
+        ME_REPORT(ME_ERR_POOL_FULL, "%d user geometry types are registered already; raise %s",
+                  fw->typeCapacity - kMcdGeometryBuiltInTypes, fw->typesSizeName);
         return -1;
     }
     fw->types[fw->typeCount] = *desc;
@@ -379,10 +381,10 @@ int McdPrimitivesGetTypeCount(void) { return 7; }
 /* ---- the interaction table ------------------------------------------------------------------- */
 
 MeBool McdFrameworkSetInteractionWithCache(McdFrameworkData *fw, int type1, int type2, McdNearfieldFn fn,
-                                           void (*releaseCache)(void *cache))
+                                           void (*releaseCache)(void *cache), const char *function)
 {
     if (!typeKnown(fw, type1) || !typeKnown(fw, type2)) {
-        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "geometry types %d and %d must both be registered before their pair test",
+        ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE, "geometry types %d and %d must both be registered before their pair test",
                   type1, type2);
         return MEFALSE;
     }
@@ -393,9 +395,9 @@ MeBool McdFrameworkSetInteractionWithCache(McdFrameworkData *fw, int type1, int 
     return METRUE;
 }
 
-MeBool McdFrameworkSetInteraction(McdFrameworkData *fw, int type1, int type2, McdNearfieldFn fn)
+MeBool McdFrameworkSetInteraction(McdFrameworkData *fw, int type1, int type2, McdNearfieldFn fn, const char *function)
 {
-    return McdFrameworkSetInteractionWithCache(fw, type1, type2, fn, NULL);
+    return McdFrameworkSetInteractionWithCache(fw, type1, type2, fn, NULL, function);
 }
 
 /* Calls an application's pair test: the entry is found from the two types, in the table's order. */
@@ -412,7 +414,7 @@ static int userTrampoline(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeo
 MeBool McdFrameworkSetUserInteraction(McdFrameworkID id, int type1, int type2, McdUserIntersectFn fn)
 {
     FW_OR_RETURN(fw, id, MEFALSE);
-    if (!McdFrameworkSetInteraction(fw, type1, type2, fn ? userTrampoline : NULL))
+    if (!McdFrameworkSetInteraction(fw, type1, type2, fn ? userTrampoline : NULL, __func__))
         return MEFALSE;
     fw->interactions[type1 * fw->typeCapacity + type2].userFn = fn;
     return METRUE;

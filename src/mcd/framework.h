@@ -47,6 +47,7 @@ typedef struct McdFrameworkData {
     McdLineSegIntersectFnPtr *lineSegFns; /* typeCapacity entries: McdFrameworkSetLineSegInteraction */
     int typeCount;                 /* built-in + registered user types */
     int typeCapacity;              /* kMcdGeometryBuiltInTypes + geoTypeMaxCount */
+    const char *typesSizeName;     /* what sets geoTypeMaxCount, for "pool full" messages */
     McdGeometryTypeDesc *types;    /* typeCapacity entries */
     McdInteraction *interactions;  /* typeCapacity^2: [type1 * typeCapacity + type2] */
     unsigned char *warnedPairs;    /* typeCapacity^2 flags: "no test" already reported */
@@ -69,11 +70,11 @@ MeBool McdCheckTolerance(MeReal tolerance, const char *function);
 
 /* ---- the interaction table ------------------------------------------------------------------ */
 /** Register `fn` as the test of (type1, type2) in that order (replacing any); NULL removes it.
- *  Types must be known to the framework; returns MEFALSE (reported) otherwise. */
-MeBool McdFrameworkSetInteraction(McdFrameworkData *fw, int type1, int type2, McdNearfieldFn fn);
+ *  Types must be known to the framework; returns MEFALSE (reported in `function`'s name) otherwise. */
+MeBool McdFrameworkSetInteraction(McdFrameworkData *fw, int type1, int type2, McdNearfieldFn fn, const char *function);
 /** As above, with a function that frees the pair cache the test allocates. */
 MeBool McdFrameworkSetInteractionWithCache(McdFrameworkData *fw, int type1, int type2, McdNearfieldFn fn,
-                                           void (*releaseCache)(void *cache));
+                                           void (*releaseCache)(void *cache), const char *function);
 /** The test registered for (type1, type2) in exactly that order, or NULL. */
 McdNearfieldFn McdFrameworkGetInteraction(const McdFrameworkData *fw, int type1, int type2);
 /** Whether a test exists for the pair either way round. */

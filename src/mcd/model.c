@@ -122,7 +122,8 @@ McdModelID McdModelCreate(McdGeometryID geometry)
     McdFrameworkData *fw = g->framework;
     McdModelData *m = MePoolGetStruct(&fw->modelPool);
     if (!m) {
-        ME_REPORT(ME_ERR_POOL_FULL, "all %d models are in use; raise modelCount in McdInit", fw->modelPool.capacity);
+        ME_REPORT(ME_ERR_POOL_FULL, "all %d models are in use; raise %s", fw->modelPool.capacity,
+                  fw->modelPool.sizeName);
         return NULL;
     }
     m->id = MeHandleOfSlot(fw->ownerSlot, ME_HANDLE_MODEL, MePoolIndexOf(&fw->modelPool, m));

@@ -283,7 +283,9 @@ static MeBool insertAt(McdModelPairContainer *c, int at, McdModelPairID pair, co
         return MEFALSE;
     }
     if (c->stayingEnd >= c->size) {
-        ME_REPORT_IN(function, ME_ERR_POOL_FULL, "the container is full (size = %d); pair not added", c->size);
+        ME_REPORT_IN(function, ME_ERR_POOL_FULL,
+                     "the container is full (%d pairs); pair not added: raise size in McdModelPairContainerCreate",
+                     c->size);
         return MEFALSE;
     }
     memmove(c->array + at + 1, c->array + at, (size_t)(c->stayingEnd - at) * sizeof *c->array);

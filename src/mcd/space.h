@@ -130,6 +130,10 @@ typedef struct McdSpaceData {
     void *userData;
     int lostTotal, lostNow;
     MeBool lostPending;
+    MeBool lostReported;          /* pairs lost to a full pool: reported once, counted after */
+    const char *objectsSizeName;  /* what sets maxObjects and maxPairs, for "pool full" messages */
+    const char *pairsSizeName;
+    const char *caller;           /* the API function updating the space, when not the space's own */
 } McdSpaceData;
 
 /* ---- space_model.c ------------------------------------------------------------------------ */

@@ -91,8 +91,8 @@ static MeBool insert(McdSpaceID space, McdModelID model, McdCullingTable *table,
     int slot = McdSpaceObjectAdd(s, m->id, m, m->sortKey, m->aabbMin, m->aabbMax);
     if (slot < 0) {
         ME_REPORT_IN(function, ME_ERR_POOL_FULL,
-                     "the space is full (objectCount = %d); raise objectCount in McdSpaceAxisSortCreate; model not "
-                     "inserted", s->maxObjects);
+                     "the space is full (%d models); raise %s; model not inserted", s->maxObjects,
+                     s->objectsSizeName);
         return MEFALSE;
     }
     takeModel(s, slot, m, function);
@@ -239,8 +239,8 @@ MeBool McdSpaceDisablePair(McdModelID model1, McdModelID model2)
     if (!s)
         return MEFALSE;
     if (!McdSpacePairSetDisabled(s, a, b, METRUE)) {
-        ME_REPORT(ME_ERR_POOL_FULL, "the space's pair pool is full (pairCount = %d): the pair was not disabled; "
-                  "raise pairCount in McdSpaceAxisSortCreate", s->maxPairs);
+        ME_REPORT(ME_ERR_POOL_FULL, "the space's pair pool is full (%d pairs): the pair was not disabled; "
+                  "raise %s", s->maxPairs, s->pairsSizeName);
         return MEFALSE;
     }
     return METRUE;

@@ -57,6 +57,8 @@ MeBool McdSpaceEngineInit(McdSpaceData *s, int axes, int maxObjects, int maxPair
         s->filterAxis[i] = s->axis[(i + 1) % s->axisCount];
     s->maxObjects = maxObjects;
     s->maxPairs = maxPairs;
+    s->objectsSizeName = "objectCount in McdSpaceAxisSortCreate";
+    s->pairsSizeName = "pairCount in McdSpaceAxisSortCreate";
     size_t n = (size_t)(maxObjects > 0 ? maxObjects : 1);
     s->obj = MeMemoryCreateZeroed(n * sizeof *s->obj);
     s->freeObj = MeMemoryCreate(n * sizeof(int));
@@ -396,10 +398,10 @@ static void sweepAll(McdSpaceData *s)
 static void reportLost(McdSpaceData *s, const char *function)
 {
     if (s->lostNow > 0)
-        ME_REPORT_IN(function, ME_ERR_POOL_FULL,
-                     "the space's pair pool is full (pairCount = %d): %d overlapping pairs were not recorded "
-                     "(%d so far); raise pairCount in McdSpaceAxisSortCreate",
-                     s->maxPairs, s->lostNow, s->lostTotal);
+        ME_REPORT_ONCE_IN(&s->lostReported, s->caller ? s->caller : function, ME_ERR_POOL_FULL,
+                          "the space's pair pool is full (%d pairs): %d overlapping pairs were not recorded, so "
+                          "their models may pass through each other; raise %s (later losses are counted, not "
+                          "reported)", s->maxPairs, s->lostNow, s->pairsSizeName);
     s->lostNow = 0;
 }
 

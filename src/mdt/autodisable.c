@@ -1,6 +1,6 @@
 /* autodisable.c -- MdtAutoDisablePartitions (MdtAutoDisableStage): put partitions at rest to sleep.
  *
- * Karma's rule (KARMA.md §5.1, decision D1): a partition is disabled only when every one of its
+ * Karma's rule (docs/karma12.md §5.1, decision D1): a partition is disabled only when every one of its
  * bodies has squared speed, squared angular speed, squared acceleration and squared angular
  * acceleration below the world's thresholds, and has been enabled for longer than the alive window
  * (bodies woken by the partitioner this step are exempt from the window: a resting stack that a

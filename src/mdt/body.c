@@ -158,7 +158,7 @@ MdtBodyID MdtBodyCreate(MdtWorldID wid)
     }
     MdtBodyData *b = MePoolGetStruct(&w->bodyPool);
     if (!b) {
-        ME_REPORT(ME_ERR_POOL_FULL, "the world's body pool is full (%d bodies); raise %s in MdtWorldCreate",
+        ME_REPORT(ME_ERR_POOL_FULL, "the world's body pool is full (%d bodies); raise %s",
                   w->bodyPool.capacity, w->bodyPool.sizeName);
         return NULL;
     }
@@ -506,15 +506,34 @@ void MdtBodySetTransform(MdtBodyID id, MeMatrix4 tm)
     setOrientation(b, R);
 }
 
-static MeBool checkMassRange(const MdtBodyData *b, MeReal value, MeReal scale, const char *what)
+/* A mass far from the world's massScale makes contacts and joints soft (their ε scales with it): warn
+ * once per world, in the name of the function the application called, saying what to set. A slender
+ * body's inertia is far from the scale more often, and matters less: information only. */
+static void checkMassRange(MdtBodyData *b, MeReal value, MeReal scale, MeBool isMass, const char *function)
 {
-    if (value > MASS_RANGE_LIMIT * scale || value * MASS_RANGE_LIMIT < scale) {
-        ME_REPORT(ME_ERR_MASS_RATIO, "%s %g is over %g times away from the world's scale %g", what, (double)value,
-                  (double)MASS_RANGE_LIMIT, (double)scale);
-        return MEFALSE;
-    }
-    (void)b;
-    return METRUE;
+    MdtWorldData *w = b->world;
+    MeBool *reported = isMass ? &w->massRangeReported : &w->inertiaRangeReported;
+    if (*reported || !(value > MASS_RANGE_LIMIT * scale || value * MASS_RANGE_LIMIT < scale))
+        return;
+    *reported = METRUE;
+    if (isMass)
+        ME_REPORT_IN(function, ME_ERR_MASS_SCALE,
+                     "mass %g kg is over %g times away from the world's massScale %g kg: contacts and joints "
+                     "will be soft and bodies sink into what they rest on; set %s to a typical mass of the "
+                     "scene (reported once per world)", (double)value, (double)MASS_RANGE_LIMIT, (double)scale,
+                     w->massScaleName);
+    else
+        ME_REPORT_IN(function, ME_ERR_MASS_RATIO,
+                     "inertia %g is over %g times away from the world's scale %g (0.4 massScale lengthScale²): "
+                     "expect poor accuracy; set %s to a typical mass of the scene (reported once per world)",
+                     (double)value, (double)MASS_RANGE_LIMIT, (double)scale, w->massScaleName);
+}
+
+void MdtBodyCheckMassScale(MdtBodyID id, MeReal mass, const char *function)
+{
+    MdtBodyData *b = MdtBodyFromID(id, function);
+    if (b && mass > 0)
+        checkMassRange(b, mass, b->world->massScale, METRUE, function);
 }
 
 void MdtBodySetMass(MdtBodyID id, MeReal mass)
@@ -525,7 +544,7 @@ void MdtBodySetMass(MdtBodyID id, MeReal mass)
         ME_REPORT(ME_ERR_MASS_NOT_POSITIVE, "argument 'mass' (%g) must be positive; call ignored", (double)mass);
         return;
     }
-    checkMassRange(b, mass, b->world->massScale, "mass");
+    checkMassRange(b, mass, b->world->massScale, METRUE, __func__);
     b->mass = mass;
     b->invMass = 1 / mass;
 }
@@ -559,7 +578,8 @@ void MdtBodySetInertiaTensor(MdtBodyID id, MeMatrix3 i)
         return;
     }
     MeReal l = b->world->lengthScale;
-    checkMassRange(b, (i[0][0] + i[1][1] + i[2][2]) / 3, ME_R(0.4) * b->world->massScale * l * l, "inertia");
+    checkMassRange(b, (i[0][0] + i[1][1] + i[2][2]) / 3, ME_R(0.4) * b->world->massScale * l * l, MEFALSE,
+                   __func__);
     /* Store it exactly symmetric. */
     for (int r = 0; r < 3; r++)
         for (int c = 0; c < 3; c++)

@@ -66,6 +66,9 @@ typedef struct MdtBodyData {
 
 /* Resolve an ID or report in the caller's name; NULL when invalid. */
 MdtBodyData *MdtBodyFromID(MdtBodyID id, const char *function);
+/** The warning of a mass far from the world's massScale (once per world), in `function`'s name: for
+ *  helpers that set a mass for the application (MstModelAndBodyCreate). */
+void MdtBodyCheckMassScale(MdtBodyID id, MeReal mass, const char *function);
 /* Recompute bodyTM and comTM from q, the COM position and the offset. */
 void MdtBodyUpdateTransforms(MdtBodyData *b, const MeVector3 comPosition);
 /* World-frame inverse inertia tensor (symmetric) of the body's current orientation. */

@@ -91,8 +91,10 @@ void MdtConstraintResetFrames(MdtConstraintData *c)
     }
 }
 
-MdtConstraintData *MdtConstraintCreateInternal(MdtWorldID wid, MdtBclJointType type, const MdtConstraintClass *cls,
-                                           const char *function)
+/* `once`: NULL reports every full pool (a call of the application's); else the flag of a cause that
+ * recurs every step (the bridge's contacts), reported once and counted after. */
+static MdtConstraintData *create(MdtWorldID wid, MdtBclJointType type, const MdtConstraintClass *cls,
+                                 const char *function, MeBool *once)
 {
     MdtWorldData *w = MdtWorldFromID(wid, function);
     if (!w)
@@ -102,10 +104,16 @@ MdtConstraintData *MdtConstraintCreateInternal(MdtWorldID wid, MdtBclJointType t
         return NULL;
     }
     MdtConstraintData *c = MePoolGetStruct(&w->constraintPool);
+    if (!c && once) {
+        ME_REPORT_ONCE_IN(once, function, ME_ERR_POOL_FULL,
+                          "the world's constraint pool is full (%d joints, contacts and groups): contacts are "
+                          "being dropped, so bodies may pass through each other; raise %s (later drops are "
+                          "counted, not reported)", w->constraintPool.capacity, w->constraintPool.sizeName);
+        return NULL;
+    }
     if (!c) {
         ME_REPORT_IN(function, ME_ERR_POOL_FULL,
-                     "the world's constraint pool is full (%d joints, contacts and groups); raise %s in "
-                     "MdtWorldCreate",
+                     "the world's constraint pool is full (%d joints, contacts and groups); raise %s",
                      w->constraintPool.capacity, w->constraintPool.sizeName);
         return NULL;
     }
@@ -119,6 +127,19 @@ MdtConstraintData *MdtConstraintCreateInternal(MdtWorldID wid, MdtBclJointType t
     MdtConstraintResetFrames(c);
     cls->reset(c);
     return c;
+}
+
+MdtConstraintData *MdtConstraintCreateInternal(MdtWorldID wid, MdtBclJointType type, const MdtConstraintClass *cls,
+                                           const char *function)
+{
+    return create(wid, type, cls, function, NULL);
+}
+
+MdtConstraintData *MdtConstraintCreateForContacts(MdtWorldID wid, MdtBclJointType type, const MdtConstraintClass *cls,
+                                              const char *function)
+{
+    MdtWorldData *w = MdtWorldFromID(wid, function);
+    return w ? create(wid, type, cls, function, &w->contactPoolFullReported) : NULL;
 }
 
 void MdtConstraintRelease(MdtConstraintData *c)

@@ -99,6 +99,10 @@ typedef struct MdtConstraintData {
  *  NULL (reported in `function`'s name) when the ID is bad or the pool is full. */
 MdtConstraintData *MdtConstraintCreateInternal(MdtWorldID wid, MdtBclJointType type, const MdtConstraintClass *cls,
                                            const char *function);
+/** The same for contacts made while stepping (the bridge): a full pool is reported once per world,
+ *  naming `function` (what the application called, e.g. MstUniverseStep), and counted after. */
+MdtConstraintData *MdtConstraintCreateForContacts(MdtWorldID wid, MdtBclJointType type, const MdtConstraintClass *cls,
+                                              const char *function);
 /** Resolve an ID of any constraint type; NULL (reported) if invalid. */
 MdtConstraintData *MdtConstraintFromID(MdtConstraintID id, const char *function);
 /** Resolve an ID that must be of `type`; NULL (reported) if invalid or of another type. */

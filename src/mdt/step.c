@@ -51,6 +51,7 @@ static MeBool beginStep(MdtWorldData *w, MeReal stepSize, const char *function)
         ME_REPORT_IN(function, ME_ERR_WORLD_LOCKED, "the world is already stepping; %s refused", function);
         return MEFALSE;
     }
+    MdtWorldHintIfNothingMoves(w, function);
     w->locked = METRUE;
     w->stage = MdtStageBegun;
     w->stepSize = stepSize;
@@ -130,7 +131,7 @@ void MdtWorldStepEnd(MdtWorldID id)
 void MdtWorldStep(MdtWorldID id, MeReal stepSize)
 {
     MdtWorldData *w = MdtWorldFromID(id, __func__);
-    if (!w || !beginStep(w, stepSize, __func__))
+    if (!w || !beginStep(w, stepSize, w->stepCaller ? w->stepCaller : __func__))
         return;
     for (size_t i = 0; i < sizeof stages / sizeof stages[0]; i++)
         runStage(w, &stages[i]);

@@ -9,7 +9,7 @@
 #include "constraint.h"
 #include "world.h"
 
-/* Karma's defaults (KARMA.md §5.1, decision D1 for auto-disable). */
+/* Karma's defaults (docs/karma12.md §5.1, decision D1 for auto-disable). */
 #define DEFAULT_EPSILON MDTWORLD_DEFAULT_EPSILON
 #define DEFAULT_GAMMA MDTWORLD_DEFAULT_GAMMA
 #define DEFAULT_LCP_ITERATIONS 10
@@ -72,8 +72,9 @@ MdtWorldID MdtWorldCreate(unsigned int maxBodies, unsigned int maxConstraints, M
     w->maxConstraints = maxConstraints;
     w->lengthScale = lengthScale;
     w->massScale = massScale;
-    if (!MePoolInit(&w->bodyPool, (int)maxBodies, sizeof(MdtBodyData), 16, "maxBodies", 0) ||
-        !MePoolInit(&w->constraintPool, (int)maxConstraints, CONSTRAINT_SLOT_BYTES, 16, "maxConstraints", 0)) {
+    w->massScaleName = "massScale (MdtWorldCreate's fourth argument)";
+    if (!MePoolInit(&w->bodyPool, (int)maxBodies, sizeof(MdtBodyData), 16, "maxBodies in MdtWorldCreate", 0) ||
+        !MePoolInit(&w->constraintPool, (int)maxConstraints, CONSTRAINT_SLOT_BYTES, 16, "maxConstraints in MdtWorldCreate", 0)) {
         MePoolDestroy(&w->bodyPool);
         MeMemoryDestroy(w);
         return NULL;

@@ -105,6 +105,17 @@ typedef struct MdtWorldData {
     MeChunk lodChunk;        /* the capped partition's contact list */
     int droppedRows, cappedPartitions, simErrors; /* of the last step */
 
+    /* messages reported once per world (the rest are counted) */
+    MeBool contactPoolFullReported;     /* the bridge could not make a contact */
+    MeBool massRangeReported;           /* a mass far from massScale */
+    MeBool inertiaRangeReported;        /* an inertia far from its scale */
+    MeBool hintsDisabled;               /* MdtWorldSetHints(world, MEFALSE) */
+    MeBool nothingMovesHinted;          /* the one-time "nothing will move" hint was given */
+    MeBool hasMoved;                    /* a step had something acting: no more hints to look for */
+    const char *massScaleName;          /* what sets massScale, for the mass-range warning */
+    const char *stepCaller;             /* the API function stepping the world when not MdtWorldStep
+                                           (MstUniverseStep), for the step's messages; else NULL */
+
     /* debugging (world_debug.c) */
     MdtDebugDrawOptions debugOptions;   /* MdtWorldSetDebugDrawing */
     MdtKeaDebugDataRequest keaDebug;    /* MdtWorldSetKeaDebugRequest: kept, not acted on */
@@ -134,6 +145,8 @@ typedef struct MdtWorldData {
 
 /* Resolve an ID or report in the caller's name; NULL when invalid. */
 MdtWorldData *MdtWorldFromID(MdtWorldID id, const char *function);
+/** hints.c: at the start of a step, the one-time hint when nothing can move (MdtWorldSetHints). */
+void MdtWorldHintIfNothingMoves(MdtWorldData *w, const char *function);
 /* Set every setting to its default for the world's scales. */
 void MdtWorldSetDefaults(MdtWorldData *w);
 

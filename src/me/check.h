@@ -18,6 +18,19 @@
 #define ME_REPORT(code, ...) MeReport((code), __func__, __FILE__, __LINE__, __VA_ARGS__)
 #define ME_REPORT_IN(function, code, ...) MeReport((code), (function), __FILE__, __LINE__, __VA_ARGS__)
 
+/* A cause that recurs every step (a pool full while stepping) is reported once: the first time
+ * `*reported` is false (then set); afterwards the message is only counted (MeMessageGetCount). */
+void MeMessageCountRepeat(MeErrorCode code);
+#define ME_REPORT_ONCE_IN(reported, function, code, ...)                                               \
+    do {                                                                                               \
+        if (*(reported)) {                                                                             \
+            MeMessageCountRepeat(code);                                                                \
+        } else {                                                                                       \
+            *(reported) = 1;                                                                           \
+            ME_REPORT_IN(function, code, __VA_ARGS__);                                                 \
+        }                                                                                              \
+    } while (0)
+
 #if defined(ME_ENABLE_CHECKS) || !defined(NDEBUG)
 #  define ME_CHECKS_ON 1
 #else

@@ -13,6 +13,8 @@
 
 #include <karma/MeMessage.h>
 
+#include "check.h"
+
 typedef struct MeErrorEntry {
     MeErrorCode code;
     const char *name;
@@ -94,6 +96,15 @@ void MeMessageResetCounts(void)
     for (int l = 0; l <= ME_LEVEL_FATAL; l++)
         atomic_store(&levelCounts[l], 0);
     atomic_store(&lastCode, ME_ERR_NONE);
+}
+
+/* A repeat of a message already reported once (check.h, ME_REPORT_ONCE_IN): counted, not shown. */
+void MeMessageCountRepeat(MeErrorCode code)
+{
+    if ((int)code >= 0 && code < ME_ERR_CODE_LIMIT_) {
+        atomic_fetch_add(&counts[code], 1);
+        atomic_fetch_add(&levelCounts[MeErrorCodeLevel(code)], 1);
+    }
 }
 
 MeErrorCode MeMessageGetLastCode(void) { return (MeErrorCode)atomic_load(&lastCode); }

@@ -12,13 +12,13 @@
 static void MEAPI fixedInit(MePool *pool, int poolSize, int structSize, int alignment)
 {
     if (structSize <= 0 || alignment < 0 || (alignment & (alignment - 1)) != 0) {
-        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "pool init: structSize %d must be > 0 and alignment %d a power of two or 0",
+        ME_REPORT_IN("MePoolAPI.init", ME_ERR_ARGUMENT_RANGE, "pool init: structSize %d must be > 0 and alignment %d a power of two or 0",
                   structSize, alignment);
         memset(pool, 0, sizeof *pool);
         return;
     }
     if (!MePoolInit(pool, poolSize, (size_t)structSize, (size_t)alignment, "poolSize", 0))
-        ME_REPORT(ME_ERR_OUT_OF_MEMORY, "no memory for a pool of %d structures of %d bytes", poolSize, structSize);
+        ME_REPORT_IN("MePoolAPI.init", ME_ERR_OUT_OF_MEMORY, "no memory for a pool of %d structures of %d bytes", poolSize, structSize);
 }
 static void MEAPI fixedDestroy(MePool *pool) { MePoolDestroy(pool); }
 static void MEAPI fixedDeset(MePool *pool) { MePoolDeset(pool); }
@@ -36,7 +36,7 @@ static void MEAPI mallocInit(MePool *pool, int poolSize, int structSize, int ali
 {
     memset(pool, 0, sizeof *pool);
     if (poolSize < 0 || structSize <= 0 || alignment < 0 || (alignment & (alignment - 1)) != 0) {
-        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "pool init: poolSize %d, structSize %d, alignment %d are not valid",
+        ME_REPORT_IN("MePoolAPI.init", ME_ERR_ARGUMENT_RANGE, "pool init: poolSize %d, structSize %d, alignment %d are not valid",
                   poolSize, structSize, alignment);
         return;
     }

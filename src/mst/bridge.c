@@ -20,6 +20,7 @@
 #include <karma/MdtWorld.h>
 
 #include "../mcd/mcd_internal.h"
+#include "../mdt/bcl/contact_internal.h"
 #include "../mcd/framework.h"
 #include "../mdt/bcl/contact_batch.h"
 #include "../mdt/body.h"
@@ -83,6 +84,7 @@ MstBridgeID MstBridgeCreate(McdFrameworkID frame, int maxMaterials)
         return NULL;
     b->framework = frame;
     b->maxMaterials = maxMaterials;
+    b->materialsSizeName = "maxMaterials in MstBridgeCreate";
     b->materialCount = 1; /* the default material */
     b->table = MeMemoryCreateZeroed(sizeof *b->table * (size_t)maxMaterials * (size_t)maxMaterials);
     b->pairBufferSize = DEFAULT_PAIR_BUFFER;
@@ -258,9 +260,9 @@ static int matchContacts(MstBridgeData *b, MdtContactGroupID g, const McdContact
             used[best] = METRUE;
             out[i] = old[best];
         } else {
-            out[i] = MdtContactGroupCreateContact(g);
+            out[i] = MdtContactGroupCreateContactForStep(g, b->caller ? b->caller : "MstHandleCollisions");
             if (!out[i]) {
-                n = i; /* constraint pool full: reported by Mdt */
+                n = i; /* constraint pool full: reported once by Mdt */
                 break;
             }
         }
@@ -305,9 +307,9 @@ static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
     MeBool swapped = !b1;
     MeReal sign = swapped ? -1 : 1;
     if (!g) {
-        g = MdtContactGroupCreate(world);
+        g = MdtContactGroupCreateForStep(world, b->caller ? b->caller : "MstHandleCollisions");
         if (!g)
-            return 0; /* pool full: reported by Mdt */
+            return 0; /* pool full: reported once by Mdt */
         MdtConstraintSetBodies(MdtContactGroupQuaConstraint(g), swapped ? b2 : b1, swapped ? NULL : b2);
         MdtContactGroupSetSwapped(g, swapped);
         MdtContactGroupSetGenerator(g, pair);
@@ -362,7 +364,11 @@ void MstBridgeUpdateContacts(MstBridgeID id, McdSpaceID space, MdtWorldID world)
     if (!b)
         return;
     b->lastPairCount = b->lastContactCount = 0;
+    const char *caller = b->caller;
+    if (!caller)
+        b->caller = __func__; /* else MstUniverseStep, which called this */
     MstBridgeReadPairs(b, space, world, METRUE);
+    b->caller = caller;
 }
 
 /* ---- linking models and bodies -------------------------------------------------------------- */

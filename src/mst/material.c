@@ -29,8 +29,8 @@ MstMaterialID MstBridgeGetNewMaterial(MstBridgeID id)
     if (!b)
         return MST_MATERIAL_INVALID;
     if (b->materialCount >= b->maxMaterials) {
-        ME_REPORT(ME_ERR_POOL_FULL, "the material table is full (%d materials): raise maxMaterials "
-                  "(MstBridgeCreate, or MstUniverseSizes.materialsMaxCount)", b->maxMaterials);
+        ME_REPORT(ME_ERR_POOL_FULL, "the material table is full (%d materials): raise %s", b->maxMaterials,
+                  b->materialsSizeName);
         return MST_MATERIAL_INVALID;
     }
     return (MstMaterialID)b->materialCount++;

@@ -10,6 +10,9 @@
 #include <karma/MstUniverse.h>
 
 #include "../mcd/framework.h"
+#include "../mcd/space.h"
+#include "../mdt/body.h"
+#include "../mdt/world.h"
 #include "../me/check.h"
 #include "bridge.h"
 
@@ -158,6 +161,25 @@ static void destroyParts(MstUniverseData *u)
         McdTerm(u->framework);
 }
 
+/* The application sized the universe's pools with MstUniverseSizes, not with the calls the universe
+ * made: "pool full" messages name the field to raise. */
+static void nameSizes(MstUniverseData *u)
+{
+    McdFrameworkData *fw = McdFrameworkFromID(u->framework, "MstUniverseCreate");
+    McdSpaceData *space = McdSpaceFromID(u->space, "MstUniverseCreate");
+    MdtWorldData *world = MdtWorldFromID(u->world, "MstUniverseCreate");
+    MstBridgeData *bridge = MstBridgeFromID(u->bridge, "MstUniverseCreate");
+    fw->modelPool.sizeName = "MstUniverseSizes.collisionModelsMaxCount";
+    fw->geometryPool.sizeName = "MstUniverseSizes.collisionModelsMaxCount (+ collisionGeometryInstancesMaxCount)";
+    fw->typesSizeName = "MstUniverseSizes.collisionUserGeometryTypesMaxCount";
+    space->objectsSizeName = "MstUniverseSizes.collisionModelsMaxCount";
+    space->pairsSizeName = "MstUniverseSizes.collisionPairsMaxCount";
+    world->bodyPool.sizeName = "MstUniverseSizes.dynamicBodiesMaxCount";
+    world->constraintPool.sizeName = "MstUniverseSizes.dynamicConstraintsMaxCount";
+    world->massScaleName = "MstUniverseSizes.massScale";
+    bridge->materialsSizeName = "MstUniverseSizes.materialsMaxCount";
+}
+
 MstUniverseID MstUniverseCreate(const MstUniverseSizes *sizes)
 {
     ME_CHECK_NOT_NULL(sizes, NULL);
@@ -188,6 +210,7 @@ MstUniverseID MstUniverseCreate(const MstUniverseSizes *sizes)
     }
     MeProfileInit(&u->profile);
     MstSetWorldHandlers(u->world);
+    nameSizes(u);
     /* The entry is this thread's from the claim on; the ID is handed out only after this. */
     universes[index] = (MstUniverse){.sizes = u->sizes, .world = u->world, .frame = u->framework,
                                      .space = u->space, .bridge = u->bridge};
@@ -239,14 +262,22 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
     MeProfileFrameStart(prof);
     MeProfileSectionStart(prof, MST_SECTION_COLLISION);
     MeProfileSectionStart(prof, MST_SECTION_FARFIELD);
+    /* Messages of the parts name what the application called: this function. */
+    McdSpaceData *space = McdSpaceFromID(u->space, __func__);
+    MstBridgeData *bridge = MstBridgeFromID(u->bridge, __func__);
+    space->caller = bridge->caller = __func__;
     McdSpaceUpdateAll(u->space);
     MeProfileSectionEnd(prof, MST_SECTION_FARFIELD);
     MeProfileSectionStart(prof, MST_SECTION_NEARFIELD);
     MstBridgeUpdateContacts(u->bridge, u->space, u->world);
+    space->caller = bridge->caller = NULL;
     MeProfileSectionEnd(prof, MST_SECTION_NEARFIELD);
     MeProfileSectionEnd(prof, MST_SECTION_COLLISION);
     MeProfileFrameEnd(prof);
+    MdtWorldData *world = MdtWorldFromID(u->world, __func__);
+    world->stepCaller = __func__;
     MdtWorldStep(u->world, stepSize);
+    world->stepCaller = NULL;
 }
 
 void MstBridgeStepAll(MstBridgeID bridge, MeReal stepSize)
@@ -302,8 +333,10 @@ static MeBool setMassProperties(MdtBodyID body, McdModelID model, MeReal density
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             inertia[i][j] *= scale;
-    if (!keepMass)
+    if (!keepMass) {
+        MdtBodyCheckMassScale(body, mass, function);
         MdtBodySetMass(body, mass);
+    }
     MdtBodySetInertiaTensor(body, inertia);
     MdtBodySetCenterOfMassRelativePosition(body, com);
     return METRUE;

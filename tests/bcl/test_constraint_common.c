@@ -1,4 +1,4 @@
-/* The common constraint API of KARMA.md §5.3 that the joint tests do not reach: user data, world, sort
+/* The common constraint API of docs/karma12.md §5.3 that the joint tests do not reach: user data, world, sort
  * key, validity, enable/disable, iteration over a world's and a body's constraints, frames set in
  * world coordinates per body, moving world attachments (MdtConstraintSetWorldLinearVelocity /
  * AngularVelocity); and the parts of MdtLimit (§5.5) beyond stops and motors: the lock, the position

@@ -1,4 +1,4 @@
-/* Every contact parameter of KARMA.md §5.6 on hand-made contacts, each against its closed-form answer:
+/* Every contact parameter of docs/karma12.md §5.6 on hand-made contacts, each against its closed-form answer:
  * Friction1D and an explicit primary direction (anisotropic Box friction), the restitution velocity
  * threshold, softness (rest penetration and contact forces), adhesion, slip, slide, and the world
  * velocity (a moving surface). A unit box (1 kg) rests on the plane z = 0 on four corner contacts

@@ -13,7 +13,7 @@ static void limit_defaults_and_bad_values(void **state)
     MdtLimit limit;
     MdtLimitReset(&limit);
     MdtSingleLimitID lo = MdtLimitGetLowerLimit(&limit);
-    /* Karma's defaults (KARMA.md §5.5, decision D4: motor off). */
+    /* Karma's defaults (docs/karma12.md §5.5, decision D4: motor off). */
     assert_true(MdtSingleLimitGetStop(lo) == 0 && MdtSingleLimitGetRestitution(lo) == 1);
     assert_true(MdtSingleLimitGetStiffness(lo) == MEINFINITY && MdtSingleLimitGetDamping(lo) == 0);
     assert_false(MdtLimitIsActive(&limit));

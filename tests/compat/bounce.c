@@ -1,6 +1,6 @@
 /*
   bounce.c -- a ball dropped on the ground bounces, with contacts made by hand (after Karma 1.2's
-  Bounce tutorial and the user guide's description of it).
+  Bounce tutorial and the Karma 1.2 User Guide's description of it).
 
   The ball is body 0 of its contact and the world (static environment) body 1, given as 0; y is up
   and the ground is the plane y = 0, so the contact normal is (0, 1, 0): the direction in which

@@ -1,6 +1,6 @@
 /*
   cradle.c -- Newton's cradle on contacts made by hand (after Karma 1.2's Cradle example and the
-  user guide's account of it).
+  Karma 1.2 User Guide's account of it).
 
   Five balls hang from ball-and-socket joints on the static environment, in a row along x with a
   small gap. The first is pulled aside and let go; every tick each pair of balls is tested and, if

@@ -96,8 +96,9 @@ static void masses_and_inertia(void **state)
     assert_int_equal(karma_warning_count(), warnings);
     MdtBodyGetInertiaTensor(body, after);
     assert_near(after[1][0], 0.1, 1e-6);
-    /* A mass 1000 times the world's massScale is accepted with an info-level hint. */
-    assert_reports(ME_ERR_MASS_RATIO, MdtBodySetMass(body, 2000));
+    /* A mass 1000 times the world's massScale is accepted with a warning saying what to set, once. */
+    assert_reports(ME_ERR_MASS_SCALE, MdtBodySetMass(body, 2000));
+    assert_non_null(strstr(karma_last_text(), "set massScale (MdtWorldCreate's fourth argument)"));
     assert_near(MdtBodyGetMass(body), 2000, 0);
     MdtBodySetMass(body, 2);
     assertUnchanged();

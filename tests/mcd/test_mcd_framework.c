@@ -317,11 +317,11 @@ static void interaction_table_one_way_and_swap(void **state)
     McdFrameworkData *fw = McdFrameworkFromID(fwId, "test");
     /* Registered for (Box, Sphere) only. */
     assert_true(McdFrameworkSetInteractionWithCache(fw, kMcdGeometryTypeBox, kMcdGeometryTypeSphere, fakeTest,
-                                                    fakeRelease));
+                                                    fakeRelease, "test"));
     assert_non_null(McdFrameworkGetInteraction(fw, kMcdGeometryTypeBox, kMcdGeometryTypeSphere));
     assert_null(McdFrameworkGetInteraction(fw, kMcdGeometryTypeSphere, kMcdGeometryTypeBox));
     assert_true(McdFrameworkHasInteraction(fw, kMcdGeometryTypeSphere, kMcdGeometryTypeBox));
-    assert_reports(ME_ERR_ARGUMENT_RANGE, assert_false(McdFrameworkSetInteraction(fw, kMcdGeometryTypeBox, 99, fakeTest)));
+    assert_reports(ME_ERR_ARGUMENT_RANGE, assert_false(McdFrameworkSetInteraction(fw, kMcdGeometryTypeBox, 99, fakeTest, "test")));
 
     McdModelID sphere = placedModel(McdSphereCreate(fwId, 1), 0, 0, 0);
     McdModelID box = placedModel(McdBoxCreate(fwId, 1, 1, 1), 3, 0, 0);

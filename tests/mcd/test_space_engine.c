@@ -451,7 +451,8 @@ static void pool_full(void **state)
     unsigned long before = MeMessageGetCount(ME_ERR_POOL_FULL);
     McdSpaceEndChanges(id);
     assert_int_equal(MeMessageGetCount(ME_ERR_POOL_FULL) - before, 1);
-    assert_non_null(strstr(karma_last_text(), "pairCount = 50"));
+    assert_non_null(strstr(karma_last_text(), "(50 pairs)"));
+    assert_non_null(strstr(karma_last_text(), "raise pairCount in McdSpaceAxisSortCreate"));
     assert_string_equal(karma_last_function(), "McdSpaceEndChanges");
     assert_int_equal(lostCalls, 140);
     assert_int_equal(McdSpaceGetLostPairCount(id), 140);

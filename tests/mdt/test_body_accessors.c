@@ -1,4 +1,4 @@
-/* Body and world accessors of KARMA.md §5.1–5.2 that the other tests do not reach: user data, sort key,
+/* Body and world accessors of docs/karma12.md §5.1–5.2 that the other tests do not reach: user data, sort key,
  * accelerations over the last step, clearing forces and impulses (per body and for the world), reset
  * to the creation defaults, γ from a reference step, the auto-disable thresholds stored. */
 #include "karma_test.h"
@@ -86,7 +86,7 @@ static void world_settings_stored(void **state)
 {
     (void)state;
     MdtWorldID w = MdtWorldCreate(2, 2, 1, 1);
-    /* Karma's auto-disable defaults (KARMA.md §5.1, D1), then each setter stores its value. */
+    /* Karma's auto-disable defaults (docs/karma12.md §5.1, D1), then each setter stores its value. */
     assert_true(MdtWorldGetAutoDisable(w));
     assert_near(MdtWorldGetAutoDisableVelocityThreshold(w), 0.02, 1e-7);
     assert_near(MdtWorldGetAutoDisableAngularVelocityThreshold(w), 0.001, 1e-9);

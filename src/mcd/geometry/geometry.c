@@ -20,8 +20,8 @@ McdGeometryData *McdGeometryNew(McdFrameworkData *fw, int type, const char *func
     McdGeometryData *g = MePoolGetStruct(&fw->geometryPool);
     if (!g) {
         ME_REPORT_IN(function, ME_ERR_POOL_FULL,
-                     "the framework's %d geometries are in use; raise modelCount (+ instanceCount) in McdInit",
-                     fw->geometryPool.capacity);
+                     "the framework's %d geometries are in use; raise %s", fw->geometryPool.capacity,
+                     fw->geometryPool.sizeName);
         return NULL;
     }
     g->id = MeHandleOfSlot(fw->ownerSlot, ME_HANDLE_GEOMETRY, MePoolIndexOf(&fw->geometryPool, g));

@@ -8,5 +8,5 @@ void McdNearfieldRegisterPrimitives(McdFrameworkData *fw)
     int count, k;
     const McdNfPairEntry *table = McdNfPairTable(&count);
     for (k = 0; k < count; k++)
-        McdFrameworkSetInteraction(fw, table[k].type1, table[k].type2, table[k].fn);
+        McdFrameworkSetInteraction(fw, table[k].type1, table[k].type2, table[k].fn, "McdPrimitivesRegisterInteractions");
 }

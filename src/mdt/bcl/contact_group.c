@@ -104,6 +104,12 @@ MdtContactGroupID MdtContactGroupCreate(MdtWorldID w)
     return g ? (MdtContactGroupID)g->id : NULL;
 }
 
+MdtContactGroupID MdtContactGroupCreateForStep(MdtWorldID w, const char *function)
+{
+    MdtConstraintData *g = MdtConstraintCreateForContacts(w, MdtBclCONTACTGROUP, &groupClass, function);
+    return g ? (MdtContactGroupID)g->id : NULL;
+}
+
 void MdtContactGroupDestroy(MdtContactGroupID id)
 {
     MdtConstraintDestroy((MdtConstraintID)id);
@@ -307,6 +313,18 @@ MdtContactID MdtContactGroupCreateContact(MdtContactGroupID id)
     if (!c)
         return NULL;
     append(g, d, c);
+    return (MdtContactID)c->id;
+}
+
+MdtContactID MdtContactGroupCreateContactForStep(MdtContactGroupID id, const char *function)
+{
+    MdtConstraintData *g = MdtConstraintFromIDOfType(id, MdtBclCONTACTGROUP, function);
+    if (!g)
+        return NULL;
+    MdtConstraintData *c = MdtConstraintCreateForContacts((MdtWorldID)g->world->id, MdtBclCONTACT, &MdtContactClass, function);
+    if (!c)
+        return NULL;
+    append(g, MDT_CONSTRAINT_DATA(g, GroupData), c);
     return (MdtContactID)c->id;
 }
 

@@ -54,18 +54,18 @@ static void addRows(MdtConstraintData *c, MdtRowWriter *w)
     MdtBclSolverParameters params = {w->h, w->epsilon0, w->gamma};
     int n = d->fn((MdtUserConstraintID)c->id, rows, d->maxRows, &params, d->constraintStruct);
     if (n < 0 || n > d->maxRows) {
-        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "the %s's function returned %d rows; it may write 0 ... %d (rows dropped)",
+        ME_REPORT_IN("MdtWorldStep", ME_ERR_ARGUMENT_RANGE, "the %s's function returned %d rows; it may write 0 ... %d (rows dropped)",
                   c->cls->name, n, d->maxRows);
         n = n < 0 ? 0 : d->maxRows;
     }
     for (int i = 0; i < n; i++) {
         const MdtUserConstraintRow *u = &rows[i];
         if (!rowIsValid(u)) {
-            ME_REPORT(ME_ERR_NONFINITE_ARGUMENT, "row %d of the user constraint is not finite; row left out", i);
+            ME_REPORT_IN("MdtWorldStep", ME_ERR_NONFINITE_ARGUMENT, "row %d of the user constraint is not finite; row left out", i);
             continue;
         }
         if (u->lo > u->hi || u->stiffness < 0 || u->damping < 0) {
-            ME_REPORT(ME_ERR_ARGUMENT_RANGE,
+            ME_REPORT_IN("MdtWorldStep", ME_ERR_ARGUMENT_RANGE,
                       "row %d of the user constraint has lo > hi or a negative stiffness or damping; row left out", i);
             continue;
         }
@@ -104,7 +104,7 @@ void MdtUserConstraintSetAddConstraintFunction(MdtUserConstraintID j, MdtUserCon
 {
     DATA_OR_RETURN(d, j, ME_NOTHING);
     if (c_->world->locked) {
-        ME_REPORT(ME_ERR_WORLD_LOCKED, "the function of a user constraint cannot change during the step");
+        ME_REPORT_IN("MdtWorldStep", ME_ERR_WORLD_LOCKED, "the function of a user constraint cannot change during the step");
         return;
     }
     d->fn = fn;
@@ -132,12 +132,12 @@ void MdtUserConstraintSetMaxRows(MdtUserConstraintID j, int maxRows)
 {
     DATA_OR_RETURN(d, j, ME_NOTHING);
     if (maxRows < 1 || maxRows > MDT_USER_CONSTRAINT_MAX_ROWS) {
-        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'maxRows' (%d) must lie in 1 ... %d", maxRows,
+        ME_REPORT_IN("MdtWorldStep", ME_ERR_ARGUMENT_RANGE, "argument 'maxRows' (%d) must lie in 1 ... %d", maxRows,
                   MDT_USER_CONSTRAINT_MAX_ROWS);
         return;
     }
     if (c_->world->locked) {
-        ME_REPORT(ME_ERR_WORLD_LOCKED, "the row count of a user constraint cannot change during the step");
+        ME_REPORT_IN("MdtWorldStep", ME_ERR_WORLD_LOCKED, "the row count of a user constraint cannot change during the step");
         return;
     }
     d->maxRows = maxRows;
@@ -153,7 +153,7 @@ MeReal MdtUserConstraintGetRowForce(MdtUserConstraintID j, int row)
 {
     DATA_OR_RETURN(d, j, 0);
     if (row < 0 || row >= MDT_USER_CONSTRAINT_MAX_ROWS) {
-        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'row' (%d) must lie in 0 ... %d", row,
+        ME_REPORT_IN("MdtWorldStep", ME_ERR_ARGUMENT_RANGE, "argument 'row' (%d) must lie in 0 ... %d", row,
                   MDT_USER_CONSTRAINT_MAX_ROWS - 1);
         return 0;
     }
