@@ -62,6 +62,7 @@ typedef struct MdtBclLimit {
     int row;                    /* index of this step's limit row within the joint's rows, or −1 */
     int rowKind;                /* what that row was (see limit.c) */
     MeBool stalled;             /* the motor could not lift off the stop it pushes away from */
+    MeBool orderReported;       /* its stops were found crossed (lower above upper) and reported */
     MeU32 magic;                /* set by MdtLimitReset */
 } MdtBclLimit;
 

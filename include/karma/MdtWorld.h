@@ -72,6 +72,8 @@ typedef struct MdtWorldCounters {
     int bodyPoolHighWater, constraintPoolHighWater;
     unsigned long steps;      /**< completed calls to MdtWorldStep */
     MeReal time;              /**< simulated seconds */
+    unsigned long speedWarnings;  /**< ME_ERR_SPEED_LIMIT reports since the world was created */
+    unsigned long energyWarnings; /**< ME_ERR_ENERGY_JUMP reports since the world was created */
 } MdtWorldCounters;
 ME_API void MdtWorldGetCounters(MdtWorldID w, MdtWorldCounters *counters);
 
@@ -167,6 +169,25 @@ typedef void (*MdtSimErrorHandlerPtr)(MdtWorldID w, const MdtSimError *error, vo
  *  disabled, reported with ME_ERR_NONFINITE_STATE and passed to the callback; other partitions are
  *  not affected. With the check off a bad solve is caught by the state check after integration. */
 ME_API void MdtWorldSetCheckSim(MdtWorldID w, MeBool check);
+
+/** The smallest step MdtWorldStep (and MstUniverseStep) accepts, in seconds: a shorter one is
+ *  refused with ME_ERR_STEP_SIZE and changes nothing (docs/step.md). */
+#define MDT_MIN_STEP_SIZE ME_R(1e-6)
+
+/** Speed (m/s) above which a body is reported once with ME_ERR_SPEED_LIMIT (again only after it
+ *  has been back under both limits); the step does not slow it. > 0, MEINFINITY turns the report
+ *  off; NaN or ≤ 0 is refused. Default 1000·lengthScale (MDTWORLD_DEFAULT_SPEED_LIMIT). */
+ME_API void MdtWorldSetSpeedLimit(MdtWorldID w, MeReal speed);
+ME_API MeReal MdtWorldGetSpeedLimit(MdtWorldID w);
+/** Angular speed (rad/s) above which a body is reported, as MdtWorldSetSpeedLimit. Default 1000
+ *  (MDTWORLD_DEFAULT_ANGULAR_SPEED_LIMIT). */
+ME_API void MdtWorldSetAngularSpeedLimit(MdtWorldID w, MeReal angularSpeed);
+ME_API MeReal MdtWorldGetAngularSpeedLimit(MdtWorldID w);
+/** Largest speed (m/s) at which a contact's penetration is corrected (the γ·depth/h term of its
+ *  normal row; a bounce is not limited), as ODE's contact_max_correcting_vel. > 0, MEINFINITY: no
+ *  bound; NaN or ≤ 0 is refused. Default 10·lengthScale (MDTWORLD_DEFAULT_MAX_CORRECTING_VEL). */
+ME_API void MdtWorldSetMaxCorrectingVelocity(MdtWorldID w, MeReal speed);
+ME_API MeReal MdtWorldGetMaxCorrectingVelocity(MdtWorldID w);
 ME_API MeBool MdtWorldGetCheckSim(MdtWorldID w);
 /** Callback for failed partitions (NULL: none; the ME_ERR_NONFINITE_STATE report is always made).
  *  Karma 1.2's MdtWorldSetSimErrorCB passed Kea's internal arrays, which this library does not have:

@@ -144,6 +144,8 @@ static void setDefaults(MdtBodyData *b)
     b->enabledTime = 0;
     b->partition = -1;
     b->stepIndex = -1;
+    b->speedWarned = MEFALSE;
+    b->energyWarned = MEFALSE;
 }
 
 /* ---- lifecycle ---------------------------------------------------------------------------- */

@@ -59,6 +59,8 @@ typedef struct MdtBodyData {
     MeVector3 velStar, velrotStar; /* velocities with external forces applied, before constraints */
     MeVector3 stepStartCom;        /* pose at the start of the step, restored if the step fails */
     MeVector4 stepStartQ;
+    MeBool speedWarned;            /* reported over a speed limit, not yet back under both */
+    MeBool energyWarned;           /* in a partition reported for an energy jump that has not calmed */
 
     /* constraints attached to this body: a singly linked list through the constraints (later) */
     void *firstConstraint;

@@ -235,6 +235,12 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
     MstUniverseData *u = universeFromID(id, __func__);
     if (!u)
         return;
+    /* Refused before collision runs, so that a refused step changes nothing (MdtWorldStep's rule). */
+    if (!(ME_IS_FINITE(stepSize) && stepSize >= MDT_MIN_STEP_SIZE)) {
+        ME_REPORT(ME_ERR_STEP_SIZE, "argument 'stepSize' (%g) must be finite and at least MDT_MIN_STEP_SIZE (%g s); "
+                  "step skipped", (double)stepSize, (double)MDT_MIN_STEP_SIZE);
+        return;
+    }
     MeProfile *prof = &u->profile;
     MeProfileFrameStart(prof);
     MeProfileSectionStart(prof, MST_SECTION_COLLISION);

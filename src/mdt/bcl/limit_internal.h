@@ -15,6 +15,9 @@ void MdtLimitInit(MdtLimit *l);
 /** Resolve a limit passed by the application: NULL or uninitialised ones are reported (in
  *  `function`'s name) and give NULL. */
 MdtLimit *MdtLimitCheck(const MdtLimit *l, const char *function);
+/** Whether stops `lower` and `upper` may be set on `l`: refused (ME_ERR_LIMIT_ORDER, reported in
+ *  `function`'s name) when l is active and lower > upper. */
+MeBool MdtLimitCheckOrder(const MdtLimit *l, MeReal lower, MeReal upper, const char *function);
 /** Copy settings (stops, threshold, motor, lock, activation) from `src` into `dst`, keeping dst's state. */
 void MdtLimitCopySettings(MdtLimit *dst, const MdtLimit *src);
 
