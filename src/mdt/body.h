@@ -70,6 +70,10 @@ typedef struct MdtBodyData {
 MdtBodyData *MdtBodyFromID(MdtBodyID id, const char *function);
 /* Recompute bodyTM and comTM from q, the COM position and the offset. */
 void MdtBodyUpdateTransforms(MdtBodyData *b, const MeVector3 comPosition);
+/* Whether I is finite, symmetric (to a relative tolerance) and positive definite (Sylvester's
+ * criterion, in MeReal: a tensor whose determinant underflows is refused): what
+ * MdtBodySetInertiaTensor accepts. */
+MeBool MdtInertiaTensorIsValid(MeMatrix3 I);
 /* World-frame inverse inertia tensor (symmetric) of the body's current orientation. */
 void MdtBodyWorldInverseInertia(const MdtBodyData *b, MeMatrix3 out);
 /* World-frame inertia tensor. */

@@ -10,6 +10,7 @@
 #include <karma/MstUniverse.h>
 
 #include "../mcd/framework.h"
+#include "../mdt/body.h"
 #include "../me/check.h"
 #include "bridge.h"
 
@@ -308,6 +309,14 @@ static MeBool setMassProperties(MdtBodyID body, McdModelID model, MeReal density
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             inertia[i][j] *= scale;
+    /* All or nothing: a mass or an inertia the body would refuse (out of MeReal's range: a density of
+     * 1e-20 gives a tensor whose determinant is 0 in float) leaves everything as it was. */
+    if (!(ME_IS_FINITE(mass) && mass > 0) || !MdtInertiaTensorIsValid(inertia)) {
+        ME_REPORT_IN(function, ME_ERR_INERTIA_INVALID,
+                     "density %g gives a mass (%g) or an inertia tensor out of MeReal's range; mass properties "
+                     "unchanged", (double)density, (double)mass);
+        return MEFALSE;
+    }
     if (!keepMass)
         MdtBodySetMass(body, mass);
     MdtBodySetInertiaTensor(body, inertia);
