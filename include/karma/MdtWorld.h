@@ -33,7 +33,8 @@ ME_API void MdtWorldReset(MdtWorldID w);
 /** Restore every setting to its default (keeps bodies and constraints). */
 ME_API void MdtWorldReCreate(MdtWorldID w);
 
-/** Advance every enabled body by `stepSize` seconds (> 0, finite). */
+/** Advance every enabled body by `stepSize` seconds (finite, at least MDT_MIN_STEP_SIZE = 1e-6 s; else
+ *  refused with ME_ERR_STEP_SIZE, nothing changed). */
 ME_API void MdtWorldStep(MdtWorldID w, MeReal stepSize);
 
 /* ---- accessors ---------------------------------------------------------------------------- */
