@@ -197,6 +197,17 @@ static void consistent_chain_not_reported(void **state)
 
 /* ---- gyroscopic term at any spin ---------------------------------------------------------- */
 
+/* One step, then the body's angular velocity in its own frame. */
+static void stepAndGetBodyOmega(MdtWorldID w, MeReal h, MdtBodyID b, MeVector3 wb)
+{
+    MeVector3 wv;
+    MeMatrix3 R;
+    MdtWorldStep(w, h);
+    MdtBodyGetAngularVelocity(b, wv);
+    MdtBodyGetOrientation(b, R);
+    MeMatrix3TransposeMultiplyVector(wb, R, wv);
+}
+
 /* A 0.2 × 0.6 × 1.2 m box of 3 kg: principal moments 0.45, 0.37, 0.1 kg·m² (all distinct; y is the
  * intermediate axis). Spun torque-free for 10 s at 1/60 s with the gyroscopic term on. */
 static void spinBox(const MeReal axis[3], MeReal spin, double *worstEnergyGain, double *worstMomentumGain,
@@ -225,12 +236,8 @@ static void spinBox(const MeReal axis[3], MeReal spin, double *worstEnergyGain, 
     *finite = METRUE;
     double Eprev = E0;
     for (int n = 0; n < 600; n++) {
-        MdtWorldStep(w, h);
-        MeVector3 wv, wb;
-        MeMatrix3 R;
-        MdtBodyGetAngularVelocity(b, wv);
-        MdtBodyGetOrientation(b, R);
-        MeMatrix3TransposeMultiplyVector(wb, R, wv);
+        MeVector3 wb;
+        stepAndGetBodyOmega(w, h, b, wb);
         double L = sqrt(pow(I[0][0] * wb[0], 2) + pow(I[1][1] * wb[1], 2) + pow(I[2][2] * wb[2], 2));
         double E = (double)MdtBodyGetKineticEnergy(b);
         *finite &= isfinite(E) && isfinite(L);
@@ -282,12 +289,8 @@ static void slow_symmetric_top_precesses_at_analytic_rate(void **state)
     const int steps = 300;
     double worstPhase = 0;
     for (int n = 1; n <= steps; n++) {
-        MdtWorldStep(w, h);
-        MeVector3 wv, wb;
-        MeMatrix3 R;
-        MdtBodyGetAngularVelocity(b, wv);
-        MdtBodyGetOrientation(b, R);
-        MeMatrix3TransposeMultiplyVector(wb, R, wv);
+        MeVector3 wb;
+        stepAndGetBodyOmega(w, h, b, wb);
         /* Euler: dω1/dt = −Ω ω2, dω2/dt = Ω ω1 with Ω = (I3 − I1)/I1 ω3 = ω3: the phase of (ω1, ω2)
          * in the body frame is Ω t. */
         double t = n * (double)h, expected = (double)w3 * t;
