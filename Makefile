@@ -15,9 +15,13 @@
 #                  then the scenes against ODE and Bullet (bench/run.sh, which writes bench/RESULTS.md;
 #                  installs libode-dev and libbullet-dev as root)
 #   make bench-scenes  only the scenes against ODE and Bullet
+#   make soak      build, then run the soak (tests/soak/soak.c: random creation and destruction through
+#                  MstUniverse, checked for messages, memory, speed and determinism) for SOAK_SECONDS
+#                  (default 300); make test runs a short one (soak_short)
 #   make clean     remove build/
 
 BUILD   ?= build/float
+SOAK_SECONDS ?= 300
 PREFIX  ?= /usr/local
 JOBS    ?= 2
 DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config gcovr gnuplot-nox doxygen
@@ -85,6 +89,10 @@ bench: deps
 
 clean:
 	rm -rf build
+
+.PHONY: soak
+soak: build
+	SOAK_SECONDS=$(SOAK_SECONDS) $(BUILD)/tests/karma_soak
 
 # Scene benchmarks (issue 5): builds build/bench, runs Karma (when bench/karma/karma_scenes.c exists),
 # ODE and Bullet on every scene and writes bench/RESULTS.md. Installs libode-dev and libbullet-dev

@@ -20,6 +20,12 @@
 #define MDTWORLD_DEFAULT_ACCROT_THRESH ME_R(0.05)
 #define MDTWORLD_DEFAULT_ALIVE_TIME_THRESH ME_R(0.2)
 
+/* Runaway reports and the contacts' correction speed (not in Karma 1.2; docs/step.md): m/s scaled by
+ * lengthScale, rad/s unscaled. */
+#define MDTWORLD_DEFAULT_SPEED_LIMIT 1000
+#define MDTWORLD_DEFAULT_ANGULAR_SPEED_LIMIT 1000
+#define MDTWORLD_DEFAULT_MAX_CORRECTING_VEL 10
+
 /* Matrix capping weights (MdtLODParams, decision K15). */
 #define MDTWORLD_DEFAULT_FRICTION_RATIO 0
 #define MDTWORLD_DEFAULT_ZERO_ROW_BONUS 150

@@ -45,7 +45,7 @@ typedef struct MdtBclSingleLimit {
  *  read and written by the library only; its layout may change between releases. */
 typedef struct MdtLimitPrivate {
     MeReal reals_[2];
-    int ints_[3];
+    int ints_[4];
     MeU32 word_;
 } MdtLimitPrivate;
 

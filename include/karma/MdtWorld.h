@@ -33,7 +33,8 @@ ME_API void MdtWorldReset(MdtWorldID w);
 /** Restore every setting to its default (keeps bodies and constraints). */
 ME_API void MdtWorldReCreate(MdtWorldID w);
 
-/** Advance every enabled body by `stepSize` seconds (> 0, finite). */
+/** Advance every enabled body by `stepSize` seconds (finite, at least MDT_MIN_STEP_SIZE = 1e-6 s; else
+ *  refused with ME_ERR_STEP_SIZE, nothing changed). */
 ME_API void MdtWorldStep(MdtWorldID w, MeReal stepSize);
 
 /* ---- accessors ---------------------------------------------------------------------------- */
@@ -72,6 +73,8 @@ typedef struct MdtWorldCounters {
     int bodyPoolHighWater, constraintPoolHighWater;
     unsigned long steps;      /**< completed calls to MdtWorldStep */
     MeReal time;              /**< simulated seconds */
+    unsigned long speedWarnings;  /**< ME_ERR_SPEED_LIMIT reports since the world was created */
+    unsigned long energyWarnings; /**< ME_ERR_ENERGY_JUMP reports since the world was created */
 } MdtWorldCounters;
 /** Fill `counters` with the world's counts and step totals (NULL refused). */
 ME_API void MdtWorldGetCounters(MdtWorldID w, MdtWorldCounters *counters);
@@ -176,6 +179,25 @@ ME_API void MdtWorldSetCheckSim(MdtWorldID w, MeBool check);
  *  most once per world, naming the call to make. MEFALSE silences them (a scene that means it). */
 ME_API void MdtWorldSetHints(MdtWorldID w, MeBool hints);
 ME_API MeBool MdtWorldGetHints(MdtWorldID w);
+
+/** The smallest step MdtWorldStep (and MstUniverseStep) accepts, in seconds: a shorter one is
+ *  refused with ME_ERR_STEP_SIZE and changes nothing (docs/step.md). */
+#define MDT_MIN_STEP_SIZE ME_R(1e-6)
+
+/** Speed (m/s) above which a body is reported once with ME_ERR_SPEED_LIMIT (again only after it
+ *  has been back under both limits); the step does not slow it. > 0, MEINFINITY turns the report
+ *  off; NaN or ≤ 0 is refused. Default 1000·lengthScale (MDTWORLD_DEFAULT_SPEED_LIMIT). */
+ME_API void MdtWorldSetSpeedLimit(MdtWorldID w, MeReal speed);
+ME_API MeReal MdtWorldGetSpeedLimit(MdtWorldID w);
+/** Angular speed (rad/s) above which a body is reported, as MdtWorldSetSpeedLimit. Default 1000
+ *  (MDTWORLD_DEFAULT_ANGULAR_SPEED_LIMIT). */
+ME_API void MdtWorldSetAngularSpeedLimit(MdtWorldID w, MeReal angularSpeed);
+ME_API MeReal MdtWorldGetAngularSpeedLimit(MdtWorldID w);
+/** Largest speed (m/s) at which a contact's penetration is corrected (the γ·depth/h term of its
+ *  normal row; a bounce is not limited), as ODE's contact_max_correcting_vel. > 0, MEINFINITY: no
+ *  bound; NaN or ≤ 0 is refused. Default 10·lengthScale (MDTWORLD_DEFAULT_MAX_CORRECTING_VEL). */
+ME_API void MdtWorldSetMaxCorrectingVelocity(MdtWorldID w, MeReal speed);
+ME_API MeReal MdtWorldGetMaxCorrectingVelocity(MdtWorldID w);
 ME_API MeBool MdtWorldGetCheckSim(MdtWorldID w);
 /** Callback for failed partitions (NULL: none; the ME_ERR_NONFINITE_STATE report is always made).
  *  Karma 1.2's MdtWorldSetSimErrorCB passed Kea's internal arrays, which this library does not have:

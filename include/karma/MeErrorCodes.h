@@ -32,7 +32,7 @@
     X(ME_ERR_NEGATIVE_DAMPING,      102, ME_LEVEL_WARNING, "a damping coefficient is negative") \
     X(ME_ERR_ZERO_AXIS,             103, ME_LEVEL_WARNING, "an axis or direction has zero length") \
     X(ME_ERR_QUATERNION_NOT_UNIT,   104, ME_LEVEL_WARNING, "a quaternion is not of unit length within tolerance") \
-    X(ME_ERR_STEP_SIZE,             105, ME_LEVEL_WARNING, "a time step is zero, negative or not finite") \
+    X(ME_ERR_STEP_SIZE,             105, ME_LEVEL_WARNING, "a time step is not finite or below the minimum MDT_MIN_STEP_SIZE (1e-6 s)") \
     X(ME_ERR_NONFINITE_STATE,       106, ME_LEVEL_WARNING, "the simulation produced a NaN or infinite value; the partition was disabled") \
     X(ME_ERR_SCALE_NOT_POSITIVE,    107, ME_LEVEL_WARNING, "a length or mass scale is zero, negative or not finite") \
     X(ME_ERR_NEGATIVE_VALUE,        108, ME_LEVEL_WARNING, "a value that must be zero or positive is negative") \
@@ -40,6 +40,10 @@
     X(ME_ERR_WORLD_LOCKED,          110, ME_LEVEL_WARNING, "the world is stepping; this change is not allowed from a callback") \
     X(ME_ERR_MASS_RATIO,            111, ME_LEVEL_INFO,    "an inertia is far (over 100x) from the world's scale (0.4 massScale lengthScale^2); expect poor accuracy (reported once per world)") \
     X(ME_ERR_BODY_INDEX,            112, ME_LEVEL_WARNING, "a body index must be 0 or 1") \
+    X(ME_ERR_SPEED_LIMIT,           113, ME_LEVEL_WARNING, "a body moves or spins faster than the world's speed limit (reported once until it is back under it)") \
+    X(ME_ERR_ENERGY_JUMP,           114, ME_LEVEL_WARNING, "a partition's kinetic energy jumped in one step beyond what its applied forces can give; the simulation is running away") \
+    X(ME_ERR_LIMIT_ORDER,           115, ME_LEVEL_WARNING, "a joint limit's lower stop lies above its upper stop") \
+    X(ME_ERR_PARALLEL_AXES,         116, ME_LEVEL_WARNING, "a constraint's primary and secondary axes are parallel") \
     X(ME_ERR_NO_BODY_ENABLED,       130, ME_LEVEL_WARNING, "hint: the world has bodies but none is enabled (bodies are created disabled), so nothing moves; once per world, MdtWorldSetHints silences it") \
     X(ME_ERR_NOTHING_ACTS,          131, ME_LEVEL_WARNING, "hint: gravity is zero and nothing acts on the enabled bodies, so nothing moves (and they fall asleep); once per world, MdtWorldSetHints silences it") \
     X(ME_ERR_MASS_SCALE,            132, ME_LEVEL_WARNING, "a mass is far (over 100x) from the world's massScale: contacts and joints turn soft; set massScale to a typical mass (reported once per world)")

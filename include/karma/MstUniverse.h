@@ -28,7 +28,8 @@ ME_API MstUniverseID MstUniverseCreate(const MstUniverseSizes *sizes);
  *  framework. Geometries belong to the framework and go with it. */
 ME_API void MstUniverseDestroy(MstUniverseID u);
 ME_API MeBool MstUniverseIsValid(MstUniverseID u);
-/** Exactly McdSpaceUpdateAll, MstBridgeUpdateContacts and MdtWorldStep(world, stepSize). */
+/** Exactly McdSpaceUpdateAll, MstBridgeUpdateContacts and MdtWorldStep(world, stepSize); a stepSize that
+ *  is not finite or is below MDT_MIN_STEP_SIZE is refused (ME_ERR_STEP_SIZE) before anything runs. */
 ME_API void MstUniverseStep(MstUniverseID u, MeReal stepSize);
 
 /** Profile sections of the collision half of MstUniverseStep (the dynamics half is in the world's

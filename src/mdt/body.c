@@ -144,6 +144,8 @@ static void setDefaults(MdtBodyData *b)
     b->enabledTime = 0;
     b->partition = -1;
     b->stepIndex = -1;
+    b->speedWarned = MEFALSE;
+    b->energyWarned = MEFALSE;
 }
 
 /* ---- lifecycle ---------------------------------------------------------------------------- */
@@ -549,8 +551,7 @@ void MdtBodySetMass(MdtBodyID id, MeReal mass)
     b->invMass = 1 / mass;
 }
 
-/* Symmetric (to a relative tolerance) and positive definite (Sylvester's criterion). */
-static MeBool isInertiaTensor(MeMatrix3 I)
+MeBool MdtInertiaTensorIsValid(MeMatrix3 I)
 {
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
@@ -573,7 +574,7 @@ void MdtBodySetInertiaTensor(MdtBodyID id, MeMatrix3 i)
     for (int r = 0; r < 3; r++)
         for (int c = 0; c < 3; c++)
             ME_CHECK_FINITE(i[r][c], ME_NOTHING);
-    if (!isInertiaTensor(i)) {
+    if (!MdtInertiaTensorIsValid(i)) {
         ME_REPORT(ME_ERR_INERTIA_INVALID, "argument 'i' is not a symmetric positive definite tensor; call ignored");
         return;
     }

@@ -59,6 +59,8 @@ typedef struct MdtBodyData {
     MeVector3 velStar, velrotStar; /* velocities with external forces applied, before constraints */
     MeVector3 stepStartCom;        /* pose at the start of the step, restored if the step fails */
     MeVector4 stepStartQ;
+    MeBool speedWarned;            /* reported over a speed limit, not yet back under both */
+    MeBool energyWarned;           /* in a partition reported for an energy jump that has not calmed */
 
     /* constraints attached to this body: a singly linked list through the constraints (later) */
     void *firstConstraint;
@@ -71,6 +73,10 @@ MdtBodyData *MdtBodyFromID(MdtBodyID id, const char *function);
 void MdtBodyCheckMassScale(MdtBodyID id, MeReal mass, const char *function);
 /* Recompute bodyTM and comTM from q, the COM position and the offset. */
 void MdtBodyUpdateTransforms(MdtBodyData *b, const MeVector3 comPosition);
+/* Whether I is finite, symmetric (to a relative tolerance) and positive definite (Sylvester's
+ * criterion, in MeReal: a tensor whose determinant underflows is refused): what
+ * MdtBodySetInertiaTensor accepts. */
+MeBool MdtInertiaTensorIsValid(MeMatrix3 I);
 /* World-frame inverse inertia tensor (symmetric) of the body's current orientation. */
 void MdtBodyWorldInverseInertia(const MdtBodyData *b, MeMatrix3 out);
 /* World-frame inertia tensor. */

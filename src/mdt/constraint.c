@@ -259,9 +259,19 @@ void MdtConstraintWorldOrthogonal(const MdtConstraintData *c, int index, MeVecto
         MeVector3Copy(out, c->orthogonal[index]);
 }
 
-/* Normalise p, and make o a unit vector perpendicular to it (any, when o is NULL or parallel). */
-static MeBool makeAxes(MeVector3 p, MeVector3 o, const char *function)
+/* The sine of the angle below which a given secondary axis counts as parallel to the primary one
+ * (0.06°): closer, the frame it defines is mostly rounding. */
+#define PARALLEL_AXES_SINE ME_R(1e-3)
+
+/* Normalise p, and make o a unit vector perpendicular to it. A secondary axis the caller gave
+ * (`given`) must have a length and not be parallel to p, else the call is refused; one kept from
+ * before (SetAxis) is replaced by any perpendicular when it has become parallel. */
+static MeBool makeAxes(MeVector3 p, MeVector3 o, MeBool given, const char *function)
 {
+    if (given && !(MeVector3MagnitudeSqr(o) > 0)) {
+        ME_REPORT_IN(function, ME_ERR_ZERO_AXIS, "the secondary axis has zero length; call ignored");
+        return MEFALSE;
+    }
     if (!MeVector3NormalizeSafe(p)) {
         ME_REPORT_IN(function, ME_ERR_ZERO_AXIS, "the primary axis has zero length; call ignored");
         return MEFALSE;
@@ -269,6 +279,13 @@ static MeBool makeAxes(MeVector3 p, MeVector3 o, const char *function)
     MeReal d = MeVector3Dot(o, p);
     MeVector3 t;
     MeVector3Set(t, o[0] - d * p[0], o[1] - d * p[1], o[2] - d * p[2]);
+    if (given && !(MeVector3MagnitudeSqr(t) > PARALLEL_AXES_SINE * PARALLEL_AXES_SINE * MeVector3MagnitudeSqr(o))) {
+        ME_REPORT_IN(function, ME_ERR_PARALLEL_AXES,
+                     "the secondary axis (%g, %g, %g) is parallel to the primary one: it must be perpendicular "
+                     "(or at least %g rad off parallel); call ignored",
+                     (double)o[0], (double)o[1], (double)o[2], (double)PARALLEL_AXES_SINE);
+        return MEFALSE;
+    }
     if (MeVector3MagnitudeSqr(t) < ME_SMALL_EPSILON) {
         MeVector3 a, b;
         MeVector3PlaneSpace(p, a, b);
@@ -323,7 +340,7 @@ void MdtConstraintSetAxis(MdtConstraintID id, MeReal px, MeReal py, MeReal pz)
     MeVector3 p = {px, py, pz}, o;
     /* Keep the current orthogonal axis where it is still usable, so SetAxis after SetAxes is harmless. */
     MdtConstraintWorldOrthogonal(c, 0, o);
-    if (makeAxes(p, o, __func__))
+    if (makeAxes(p, o, MEFALSE, __func__))
         setWorldAxes(c, 0, 1, p, o);
 }
 
@@ -333,7 +350,7 @@ void MdtConstraintSetAxes(MdtConstraintID id, MeReal px, MeReal py, MeReal pz, M
     ME_CHECK_FINITE3(px, py, pz, ME_NOTHING);
     ME_CHECK_FINITE3(ox, oy, oz, ME_NOTHING);
     MeVector3 p = {px, py, pz}, o = {ox, oy, oz};
-    if (makeAxes(p, o, __func__))
+    if (makeAxes(p, o, METRUE, __func__))
         setWorldAxes(c, 0, 1, p, o);
 }
 
@@ -346,7 +363,7 @@ void MdtConstraintBodySetAxes(MdtConstraintID id, unsigned int bodyindex, MeReal
     if (!checkBodyIndex(bodyindex, __func__))
         return;
     MeVector3 p = {px, py, pz}, o = {ox, oy, oz};
-    if (makeAxes(p, o, __func__))
+    if (makeAxes(p, o, METRUE, __func__))
         setWorldAxes(c, (int)bodyindex, (int)bodyindex, p, o);
 }
 
@@ -359,7 +376,7 @@ void MdtConstraintBodySetAxesRel(MdtConstraintID id, unsigned int bodyindex, MeR
     if (!checkBodyIndex(bodyindex, __func__))
         return;
     MeVector3 p = {px, py, pz}, o = {ox, oy, oz};
-    if (makeAxes(p, o, __func__)) {
+    if (makeAxes(p, o, METRUE, __func__)) {
         MeVector3Copy(c->primary[bodyindex], p);
         MeVector3Copy(c->orthogonal[bodyindex], o);
     }

@@ -153,6 +153,7 @@ typedef struct MdtRowWriter {
     int first;    /* its first row */
     int localBody[2]; /* partition-local indices of its bodies, or KEA_WORLD */
     MeReal h, gamma, epsilon0;
+    MeReal maxCorrection; /* bound on a contact's penetration correction speed, m/s (may be MEINFINITY) */
     MdtRow *captured; /* when not NULL, rows are copied here instead (MdtConstraintCaptureRows) */
 } MdtRowWriter;
 

@@ -74,15 +74,20 @@ void MdtIntegrateStage(MdtWorldData *w)
             continue; /* the solver failed it: restored below, never integrated */
         int start = out->partitionStart[p], end = out->partitionStart[p + 1];
         MeBool finite = METRUE;
+        MeReal predicted = 0, after = 0; /* kinetic energies for the runaway check */
         for (int i = start; i < end; i++) {
             MdtBodyData *b = out->bodies[i];
             const MeReal *dv = deltaVelocities ? deltaVelocities + 6 * (size_t)i : zero;
             const MeReal *dw = deltaVelocities ? deltaVelocities + 6 * (size_t)i + 3 : zero;
+            predicted += MdtBodyKineticEnergy(b, b->velStar, b->velrotStar);
             integrateBody(b, dv, dw, w->stepSize);
+            after += MdtBodyKineticEnergy(b, b->vel, b->velrot);
             finite &= stateIsFinite(b);
         }
         if (!finite)
             out->simError[p] = MdtSimErrorState;
+        else
+            MdtRunawayCheckPartition(w, p, predicted, after);
     }
     MdtSimErrorHandlePartitions(w);
 }

@@ -138,6 +138,7 @@ void MdtPackStage(MdtWorldData *w)
     writer.h = w->stepSize;
     writer.gamma = w->gamma;
     writer.epsilon0 = w->epsilon;
+    writer.maxCorrection = w->maxCorrectingVelocity;
     for (int p = 0; p < out->partitionCount; p++) {
         int bodyBase = out->partitionStart[p];
         r->partitionRowStart[p] = writer.count;
@@ -170,6 +171,7 @@ int MdtConstraintCaptureRows(MdtConstraintData *c, MdtRow *rows, int max, MeReal
     w.h = h;
     w.gamma = c->world->gamma;
     w.epsilon0 = c->world->epsilon;
+    w.maxCorrection = c->world->maxCorrectingVelocity;
     w.localBody[0] = 0;
     w.localBody[1] = c->body[1] ? 1 : KEA_WORLD;
     c->cls->addRows(c, &w);

@@ -42,9 +42,10 @@ static MdtWorldData *enterStage(MdtWorldID id, MdtStage stage, MdtStage after, c
 
 static MeBool beginStep(MdtWorldData *w, MeReal stepSize, const char *function)
 {
-    if (!(ME_IS_FINITE(stepSize) && stepSize > 0)) {
-        ME_REPORT_IN(function, ME_ERR_STEP_SIZE, "argument 'stepSize' (%g) must be positive and finite; step skipped",
-                     (double)stepSize);
+    if (!(ME_IS_FINITE(stepSize) && stepSize >= MDT_MIN_STEP_SIZE)) {
+        ME_REPORT_IN(function, ME_ERR_STEP_SIZE,
+                     "argument 'stepSize' (%g) must be finite and at least MDT_MIN_STEP_SIZE (%g s); step skipped",
+                     (double)stepSize, (double)MDT_MIN_STEP_SIZE);
         return MEFALSE;
     }
     if (w->locked) {

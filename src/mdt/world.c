@@ -48,6 +48,9 @@ void MdtWorldSetDefaults(MdtWorldData *w)
     w->autoDisable.angularAcceleration = DEFAULT_AD_ANGULAR_ACCELERATION;
     w->autoDisable.aliveTime = DEFAULT_AD_ALIVE_TIME;
     w->checkSim = METRUE;
+    w->speedLimit = MDTWORLD_DEFAULT_SPEED_LIMIT * w->lengthScale;
+    w->angularSpeedLimit = MDTWORLD_DEFAULT_ANGULAR_SPEED_LIMIT;
+    w->maxCorrectingVelocity = MDTWORLD_DEFAULT_MAX_CORRECTING_VEL * w->lengthScale;
     w->maxMatrixSize = MDT_MATRIX_SIZE_UNCAPPED;
     MdtLODParamsSetDefaults(&w->lod);
     MdtWorldDebugDefaults(w);
@@ -282,6 +285,8 @@ void MdtWorldGetCounters(MdtWorldID id, MdtWorldCounters *c)
     c->droppedRows = w->droppedRows;
     c->cappedPartitions = w->cappedPartitions;
     c->simErrors = w->simErrors;
+    c->speedWarnings = w->speedWarnings;
+    c->energyWarnings = w->energyWarnings;
     c->bodyPoolHighWater = MePoolGetHighWater(&w->bodyPool);
     c->constraintPoolHighWater = MePoolGetHighWater(&w->constraintPool);
     c->steps = w->steps;
@@ -486,3 +491,32 @@ void MdtWorldSetLCPTolerance(MdtWorldID id, MeReal tolerance)
     }
     w->kea.tolerance = tolerance;
 }
+
+/* ---- runaway reports and the contacts' correction speed (docs/step.md) ---------------------- */
+
+/* A positive speed, MEINFINITY allowed (it turns the setting off); NaN, zero and negatives refused. */
+static MeBool checkSpeedSetting(MeReal v, const char *name, const char *function)
+{
+    if (!(v > 0)) {
+        ME_REPORT_IN(function, v != v ? ME_ERR_NONFINITE_ARGUMENT : ME_ERR_ARGUMENT_RANGE,
+                     "argument '%s' (%g) must be positive (MEINFINITY: no limit); call ignored", name, (double)v);
+        return MEFALSE;
+    }
+    return METRUE;
+}
+
+#define SPEED_SETTING(Name, field, arg)                                                              \
+    void MdtWorldSet##Name(MdtWorldID id, MeReal arg)                                                \
+    {                                                                                                \
+        WORLD_OR_RETURN(w, id, ME_NOTHING);                                                          \
+        if (checkSpeedSetting(arg, #arg, __func__))                                                  \
+            w->field = arg;                                                                          \
+    }                                                                                                \
+    MeReal MdtWorldGet##Name(MdtWorldID id)                                                          \
+    {                                                                                                \
+        WORLD_OR_RETURN(w, id, 0);                                                                   \
+        return w->field;                                                                             \
+    }
+SPEED_SETTING(SpeedLimit, speedLimit, speed)
+SPEED_SETTING(AngularSpeedLimit, angularSpeedLimit, angularSpeed)
+SPEED_SETTING(MaxCorrectingVelocity, maxCorrectingVelocity, speed)

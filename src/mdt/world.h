@@ -87,6 +87,8 @@ typedef struct MdtWorldData {
     MeReal epsilon, gamma;
     int maxLCPIterations;
     MdtAutoDisableParams autoDisable;
+    MeReal speedLimit, angularSpeedLimit;  /* runaway reports (runaway.c) */
+    MeReal maxCorrectingVelocity;          /* contact penetration correction bound, m/s */
 
     /* callbacks */
     MdtBodyEnableCBPtr bodyEnableCB, bodyDisableCB;
@@ -104,6 +106,7 @@ typedef struct MdtWorldData {
     MdtLODParams lod;
     MeChunk lodChunk;        /* the capped partition's contact list */
     int droppedRows, cappedPartitions, simErrors; /* of the last step */
+    unsigned long speedWarnings, energyWarnings;  /* since creation (runaway.c) */
 
     /* messages reported once per world (the rest are counted) */
     MeBool contactPoolFullReported;     /* the bridge could not make a contact */
@@ -168,6 +171,11 @@ void MdtWorldDebugDraw(MdtWorldData *w);
 void MdtPartitionInfoAdd(MdtPartitionInfo *info, const struct MdtConstraintData *c);
 /* Whether a body counts as at rest for auto-disable under `p` (autodisable.c). */
 MeBool MdtBodyAtRest(const MdtBodyData *b, const MdtAutoDisableParams *p);
+/* Kinetic energy of a body for velocities v, w (world frame), with its inertia in use (runaway.c). */
+MeReal MdtBodyKineticEnergy(const MdtBodyData *b, const MeVector3 v, const MeVector3 w);
+/* After integrating partition p: report its bodies over the speed limits and an energy jump from
+ * `predicted` (kinetic energy with the applied forces, before constraints) to `after` (runaway.c). */
+void MdtRunawayCheckPartition(MdtWorldData *w, int p, MeReal predicted, MeReal after);
 /* Restore, stop and disable the partitions marked in simError; report each and call the callback. */
 void MdtSimErrorHandlePartitions(MdtWorldData *w);
 

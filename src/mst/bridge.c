@@ -22,6 +22,7 @@
 #include "../mcd/mcd_internal.h"
 #include "../mdt/bcl/contact_internal.h"
 #include "../mcd/framework.h"
+#include "../mcd/space.h"
 #include "../mdt/bcl/contact_batch.h"
 #include "../mdt/body.h"
 #include "../me/check.h"
@@ -208,9 +209,27 @@ static void destroyGroup(McdModelPair *pair)
     }
 }
 
+/* A pair's goodbye. MstModelAndBodyDestroy removes a model from its space and destroys it at once, so
+ * the goodbye of a pair it touched arrives with a dead model ID, which McdGoodbye refuses
+ * (ME_ERR_INVALID_HANDLE): such a pair is released here on the space's framework instead. */
+static void goodbyePair(McdModelPair *pair, McdSpaceID space)
+{
+    destroyGroup(pair);
+    if (McdModelIsValid(pair->model1) && McdModelIsValid(pair->model2)) {
+        McdGoodbye(pair);
+        return;
+    }
+    McdSpaceData *s = McdSpaceFromID(space, "MstBridgeUpdateContacts");
+    McdFrameworkData *fw = s ? s->framework : NULL;
+    if (fw && pair->cache && pair->testIndex >= 0 && fw->interactions[pair->testIndex].releaseCache)
+        fw->interactions[pair->testIndex].releaseCache(pair->cache);
+    pair->cache = NULL;
+    pair->testIndex = -1;
+    pair->swapped = 0;
+}
+
 void MstHandleTransitions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorldID world, MstBridgeID id)
 {
-    (void)space;
     (void)world;
     MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
@@ -218,10 +237,8 @@ void MstHandleTransitions(McdModelPairContainer *pairs, McdSpaceID space, MdtWor
     ME_CHECK_NOT_NULL(pairs, ME_NOTHING);
     int n;
     McdModelPairID *goodbye = McdModelPairContainerGetGoodbyeArray(pairs, &n);
-    for (int i = 0; i < n; i++) {
-        destroyGroup(goodbye[i]);
-        McdGoodbye(goodbye[i]);
-    }
+    for (int i = 0; i < n; i++)
+        goodbyePair(goodbye[i], space);
     McdModelPairID *hello = McdModelPairContainerGetHelloArray(pairs, &n);
     for (int i = 0; i < n; i++) {
         hello[i]->userData = NULL;

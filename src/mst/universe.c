@@ -258,6 +258,12 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
     MstUniverseData *u = universeFromID(id, __func__);
     if (!u)
         return;
+    /* Refused before collision runs, so that a refused step changes nothing (MdtWorldStep's rule). */
+    if (!(ME_IS_FINITE(stepSize) && stepSize >= MDT_MIN_STEP_SIZE)) {
+        ME_REPORT(ME_ERR_STEP_SIZE, "argument 'stepSize' (%g) must be finite and at least MDT_MIN_STEP_SIZE (%g s); "
+                  "step skipped", (double)stepSize, (double)MDT_MIN_STEP_SIZE);
+        return;
+    }
     MeProfile *prof = &u->profile;
     MeProfileFrameStart(prof);
     MeProfileSectionStart(prof, MST_SECTION_COLLISION);
@@ -333,6 +339,14 @@ static MeBool setMassProperties(MdtBodyID body, McdModelID model, MeReal density
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             inertia[i][j] *= scale;
+    /* All or nothing: a mass or an inertia the body would refuse (out of MeReal's range: a density of
+     * 1e-20 gives a tensor whose determinant is 0 in float) leaves everything as it was. */
+    if (!(ME_IS_FINITE(mass) && mass > 0) || !MdtInertiaTensorIsValid(inertia)) {
+        ME_REPORT_IN(function, ME_ERR_INERTIA_INVALID,
+                     "density %g gives a mass (%g) or an inertia tensor out of MeReal's range; mass properties "
+                     "unchanged", (double)density, (double)mass);
+        return MEFALSE;
+    }
     if (!keepMass) {
         MdtBodyCheckMassScale(body, mass, function);
         MdtBodySetMass(body, mass);

@@ -155,6 +155,8 @@ void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contac
     if (bounceNow) {
         /* Separate at e·|vn|; a deeper penetration's correction wins if it asks for more. */
         MeReal correction = w->gamma * d->penetration / h;
+        if (correction > w->maxCorrection)
+            correction = w->maxCorrection;
         MeReal bounce = p->restitution * approach;
         row.velocity = bounce > correction ? bounce : correction;
         row.gamma = 0;
@@ -164,6 +166,10 @@ void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contac
         row.epsilon += ME_R(1e-3) * w->epsilon0;
     } else {
         row.error = -d->penetration;
+        /* The correction γ·depth/h is bounded by the world's maximum correcting speed: a deep
+         * penetration (or a tiny step) would otherwise launch the bodies apart. */
+        if (w->gamma * d->penetration > w->maxCorrection * h)
+            row.error = -w->maxCorrection * h / w->gamma;
         /* A separated contact (reported within the contact tolerance) may close its gap completely this
          * step, no less: anything slower would stop the bodies before they touch. */
         if (d->penetration < 0)

@@ -86,6 +86,6 @@ void MdtHingeSetLimit(MdtHingeID j, const MdtLimit *limit)
 {
     MdtConstraintData *c = MdtConstraintFromIDOfType(j, MdtBclHINGE, __func__);
     const MdtLimit *src = MdtLimitCheck(limit, __func__);
-    if (c && src)
+    if (c && src && MdtLimitCheckOrder(src, src->limit[0].stop, src->limit[1].stop, __func__))
         MdtLimitCopySettings(&MDT_CONSTRAINT_DATA(c, HingeData)->limit, src);
 }

@@ -165,6 +165,17 @@ void MdtLimitInit(MdtLimit *l)
     MDT_LIMIT_MAGIC(l) = LIMIT_MAGIC;
 }
 
+MeBool MdtLimitCheckOrder(const MdtLimit *l, MeReal lower, MeReal upper, const char *function)
+{
+    if (l->limited && lower > upper) {
+        ME_REPORT_IN(function, ME_ERR_LIMIT_ORDER,
+                     "the lower stop (%g) would lie above the upper stop (%g) of an active limit; call ignored",
+                     (double)lower, (double)upper);
+        return MEFALSE;
+    }
+    return METRUE;
+}
+
 MdtLimit *MdtLimitCheck(const MdtLimit *l, const char *function)
 {
     if (!l) {
@@ -309,14 +320,14 @@ MeReal MdtLimitGetMotorMaxForce(const MdtLimit *l)
 void MdtLimitSetLowerLimit(MdtLimitID l, const MdtSingleLimit *sl)
 {
     LIMIT_OR_RETURN(m, l, ME_NOTHING);
-    if (checkSingle(sl, __func__))
+    if (checkSingle(sl, __func__) && MdtLimitCheckOrder(m, sl->stop, m->limit[1].stop, __func__))
         m->limit[0] = *sl;
 }
 
 void MdtLimitSetUpperLimit(MdtLimitID l, const MdtSingleLimit *sl)
 {
     LIMIT_OR_RETURN(m, l, ME_NOTHING);
-    if (checkSingle(sl, __func__))
+    if (checkSingle(sl, __func__) && MdtLimitCheckOrder(m, m->limit[0].stop, sl->stop, __func__))
         m->limit[1] = *sl;
 }
 
@@ -331,6 +342,12 @@ void MdtLimitSetPosition(MdtLimitID l, MeReal position)
 void MdtLimitActivateLimits(MdtLimitID l, MeBool on)
 {
     LIMIT_OR_RETURN(m, l, ME_NOTHING);
+    if (on && m->limit[0].stop > m->limit[1].stop) {
+        ME_REPORT(ME_ERR_LIMIT_ORDER,
+                  "the lower stop (%g) lies above the upper stop (%g): set the stops in order first; the limits "
+                  "stay inactive", (double)m->limit[0].stop, (double)m->limit[1].stop);
+        return;
+    }
     m->limited = on ? METRUE : MEFALSE;
 }
 
@@ -530,7 +547,16 @@ void MdtLimitAddRow(MdtLimit *l, MdtRowWriter *w, const MdtRow *jacobian, MeReal
         kind = ROW_LOCK;
     } else {
         MeBool need[2] = {MEFALSE, MEFALSE};
-        if (l->limited) {
+        /* Stops crossed through MdtSingleLimitSetStop (which cannot see the other stop): they
+         * bound no range, so they are not applied; reported once until they are put in order. */
+        const MeBool crossed = l->limited && l->limit[0].stop > l->limit[1].stop;
+        if (crossed && !capture && !MDT_LIMIT_ORDER_REPORTED(l))
+            ME_REPORT_IN("MdtWorldStep", ME_ERR_LIMIT_ORDER,
+                         "a joint's lower stop (%g) lies above its upper stop (%g); its stops are not applied until "
+                         "they are in order", (double)l->limit[0].stop, (double)l->limit[1].stop);
+        if (!capture)
+            MDT_LIMIT_ORDER_REPORTED(l) = crossed;
+        if (l->limited && !crossed) {
             const MeReal vstar = MdtRowPredictedVelocity(c, jacobian);
             for (int s = 0; s < 2; s++) {
                 if (!sideExists(&l->limit[s]))

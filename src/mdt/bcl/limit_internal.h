@@ -13,6 +13,7 @@
 #define MDT_LIMIT_ROW(l) ((l)->private_.ints_[0])             /* this step's limit row in the joint, or -1 */
 #define MDT_LIMIT_ROW_KIND(l) ((l)->private_.ints_[1])        /* what that row was (limit.c) */
 #define MDT_LIMIT_STALLED(l) ((l)->private_.ints_[2])         /* the motor cannot lift off its stop */
+#define MDT_LIMIT_ORDER_REPORTED(l) ((l)->private_.ints_[3]) /* its crossed stops were reported */
 #define MDT_LIMIT_MAGIC(l) ((l)->private_.word_)              /* set by MdtLimitReset */
 
 /** Reject (report in `function`'s name) a NaN or negative `x` named `name`, or an infinite one unless
@@ -23,6 +24,9 @@ void MdtLimitInit(MdtLimit *l);
 /** Resolve a limit passed by the application: NULL or uninitialised ones are reported (in
  *  `function`'s name) and give NULL. */
 MdtLimit *MdtLimitCheck(const MdtLimit *l, const char *function);
+/** Whether stops `lower` and `upper` may be set on `l`: refused (ME_ERR_LIMIT_ORDER, reported in
+ *  `function`'s name) when l is active and lower > upper. */
+MeBool MdtLimitCheckOrder(const MdtLimit *l, MeReal lower, MeReal upper, const char *function);
 /** Copy settings (stops, threshold, motor, lock, activation) from `src` into `dst`, keeping dst's state. */
 void MdtLimitCopySettings(MdtLimit *dst, const MdtLimit *src);
 

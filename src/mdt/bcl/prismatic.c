@@ -142,6 +142,6 @@ void MdtPrismaticSetLimit(MdtPrismaticID j, const MdtLimit *limit)
 {
     MdtConstraintData *c = MdtConstraintFromIDOfType(j, MdtBclPRISMATIC, __func__);
     const MdtLimit *src = MdtLimitCheck(limit, __func__);
-    if (c && src)
+    if (c && src && MdtLimitCheckOrder(src, src->limit[0].stop, src->limit[1].stop, __func__))
         MdtLimitCopySettings(&MDT_CONSTRAINT_DATA(c, PrismaticData)->limit, src);
 }

@@ -199,6 +199,6 @@ void MdtSpringSetLimit(MdtSpringID j, const MdtLimit *limit)
 {
     SPRING_OR_RETURN(c, j, ME_NOTHING);
     const MdtLimit *src = MdtLimitCheck(limit, __func__);
-    if (src)
+    if (src && MdtLimitCheckOrder(src, src->limit[0].stop, src->limit[1].stop, __func__))
         MdtLimitCopySettings(&MDT_CONSTRAINT_DATA(c, SpringData)->limit, src);
 }

@@ -1,0 +1,74 @@
+/* runaway.c -- the step's reports of bodies it cannot simulate well, before they reach NaN
+ * (docs/step.md, "Runaway reports").
+ *
+ * Two symptoms, checked after each partition is integrated (reading the state only, so trajectories
+ * do not depend on them):
+ *  - speed: a body faster than the world's speed limit, or spinning faster than its angular speed
+ *    limit, is reported once (ME_ERR_SPEED_LIMIT) and again only after it has been back under both;
+ *  - energy: constraints do not create energy. Contacts with restitution ≤ 1 and frictional rows
+ *    only remove it; what the solver adds is position correction (bounded for contacts by the
+ *    world's maximum correcting speed) and motors, which add it slowly. So when a partition's
+ *    kinetic energy after the solve exceeds ENERGY_JUMP_FACTOR times the energy it had with every
+ *    applied force, impulse and gravity (the predicted velocities v*, ω*), plus a floor of
+ *    ½ M (correcting speed)², the constraints are feeding it: typically joints whose anchors cannot
+ *    all meet, each correction overshooting the others'. The partition is reported once
+ *    (ME_ERR_ENERGY_JUMP) until a step without a jump.
+ * Both are counted in MdtWorldCounters (speedWarnings, energyWarnings). */
+#include "../me/check.h"
+#include "world.h"
+
+/* A partition's kinetic energy may grow at most this many times in one step from what the applied
+ * forces give it (a doubling of every speed is a factor 4). */
+#define ENERGY_JUMP_FACTOR ME_R(4.0)
+
+MeReal MdtBodyKineticEnergy(const MdtBodyData *b, const MeVector3 v, const MeVector3 w)
+{
+    MeMatrix3 I;
+    MeVector3 Iw;
+    MdtBodyWorldInertia(b, I);
+    MeMatrix3MultiplyVector(Iw, I, w);
+    return ME_R(0.5) * (b->mass * MeVector3MagnitudeSqr(v) + MeVector3Dot(w, Iw));
+}
+
+static void checkSpeed(MdtWorldData *w, MdtBodyData *b)
+{
+    MeReal v2 = MeVector3MagnitudeSqr(b->vel), w2 = MeVector3MagnitudeSqr(b->velrot);
+    MeBool over = v2 > w->speedLimit * w->speedLimit || w2 > w->angularSpeedLimit * w->angularSpeedLimit;
+    if (over && !b->speedWarned) {
+        w->speedWarnings++;
+        ME_REPORT_IN("MdtWorldStep", ME_ERR_SPEED_LIMIT,
+                     "body %p moves at %g m/s and spins at %g rad/s, over the world's limits (%g m/s, %g rad/s: "
+                     "MdtWorldSetSpeedLimit, MdtWorldSetAngularSpeedLimit); it will not be reported again until "
+                     "it is back under both",
+                     (void *)b->id, (double)MeSqrt(v2), (double)MeSqrt(w2), (double)w->speedLimit,
+                     (double)w->angularSpeedLimit);
+    }
+    b->speedWarned = over;
+}
+
+void MdtRunawayCheckPartition(MdtWorldData *w, int p, MeReal predicted, MeReal after)
+{
+    const MdtPartitionLists *out = &w->partitions;
+    int start = out->partitionStart[p], end = out->partitionStart[p + 1];
+    MeReal mass = 0;
+    MeBool warned = MEFALSE;
+    for (int i = start; i < end; i++) {
+        MdtBodyData *b = out->bodies[i];
+        checkSpeed(w, b);
+        mass += b->mass;
+        warned |= b->energyWarned;
+    }
+    MeReal v = w->maxCorrectingVelocity;
+    MeReal floor = ME_IS_FINITE(v) ? ME_R(0.5) * mass * v * v : MEINFINITY;
+    MeBool jump = after > ENERGY_JUMP_FACTOR * predicted + floor;
+    if (jump && !warned) {
+        w->energyWarnings++;
+        ME_REPORT_IN("MdtWorldStep", ME_ERR_ENERGY_JUMP,
+                     "partition %d (%d bodies, first %p): kinetic energy %g J after the constraints, from %g J with "
+                     "the applied forces; its constraints are adding energy (joints whose anchors cannot all "
+                     "meet?); reported once until it calms",
+                     p, end - start, (void *)out->bodies[start]->id, (double)after, (double)predicted);
+    }
+    for (int i = start; i < end; i++)
+        out->bodies[i]->energyWarned = jump;
+}
