@@ -26,6 +26,13 @@
 #  define MCD_NF_REL_EPS ME_R(2e-6)
 #  define MCD_NF_TOUCH ME_R(1e-4)
 #endif
+/* Two unit axes count as parallel below this sine: well above the rounding of a rotated axis in
+ * either precision (about 8 sqrt(epsilon): 2.8e-3 in float), and never below the 1e-4 used before. */
+#if KARMA_DOUBLE
+#  define MCD_NF_PARALLEL_SIN ME_R(1e-4)
+#else
+#  define MCD_NF_PARALLEL_SIN ME_R(2.8e-3)
+#endif
 /* A feature (face, edge) counts as facing the normal when it is within ~3 degrees of it. */
 #define MCD_NF_FEATURE_SIN ME_R(0.05)
 #define MCD_NF_FEATURE_COS ME_R(0.99875)
@@ -81,6 +88,17 @@ int McdNfManifold(const McdNfShape *s1, const McdNfShape *s2, const McdNfDistanc
 /** The general pair test: GJK/EPA on the cores and the clipped contact set. */
 int McdNfConvexConvex(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                       MeReal tolerance, McdContact *contacts, int maxContacts, void **cache);
+
+/* ---- degenerate arithmetic (contact.c) ------------------------------------------------------ */
+
+/** Count one fallback: a pair test whose arithmetic degenerated (a NaN or infinity in a search, no
+ *  axis chosen) and that gave a defined answer instead (no contact, or the general path). The count
+ *  is process-wide; the dispatcher (McdIntersectModels) adds what a test counted to its framework. */
+void McdNfCountFallback(void);
+/** Fallbacks counted so far (all threads). */
+unsigned long McdNfFallbackCount(void);
+/** Whether a contact is usable: finite position and separation, finite unit normal. */
+MeBool McdNfContactIsValid(const McdContact *c);
 
 /* ---- contact writing (contact.c) ------------------------------------------------------------ */
 
