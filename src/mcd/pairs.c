@@ -205,10 +205,10 @@ int McdIntersectModels(McdModelPair *pair, McdModelData *m1, McdModelData *m2, M
     MeReal tolerance = m1->contactTolerance + m2->contactTolerance;
     McdContact *c = result->contacts;
     const unsigned long fallbacksBefore = McdNfFallbackCount();
-    int n = pair->swapped ? fn(m2->geometry, m2->worldTransform, m1->geometry, m1->worldTransform, tolerance, c,
-                               maxCount, &pair->cache)
-                          : fn(m1->geometry, m1->worldTransform, m2->geometry, m2->worldTransform, tolerance, c,
-                               maxCount, &pair->cache);
+    int n = pair->swapped ? McdNfCallCentred(fn, m2->geometry, m2->worldTransform, m1->geometry, m1->worldTransform,
+                                             tolerance, c, maxCount, &pair->cache)
+                          : McdNfCallCentred(fn, m1->geometry, m1->worldTransform, m2->geometry, m2->worldTransform,
+                                             tolerance, c, maxCount, &pair->cache);
     if (n < 0 || n > maxCount) {
         ME_REPORT_IN(function, ME_ERR_INTERNAL, "a pair test returned %d contacts for room for %d", n, maxCount);
         n = n < 0 ? 0 : maxCount;
