@@ -43,14 +43,13 @@ static void place(FuzzInput *in, McdModelID m, MeReal (*tm)[4])
     McdSpaceUpdateModel(m);
 }
 
-/* A segment end: near the model, anywhere in range, or raw. *raw is set for a raw or far one. */
+/* A segment end: near the model, anywhere in range, or raw. *raw is set when it is out of range. */
 static void endPoint(FuzzInput *in, const MeReal *near, MeReal *p, int *raw)
 {
     unsigned kind = fuzz_byte(in) & 7;
     if (kind == 7) {
         for (int k = 0; k < 3; k++)
-            p[k] = fuzz_raw(in);
-        *raw = 1;
+            p[k] = fuzz_raw(in); /* refused below unless it happens to be finite and in range */
     } else if (kind == 6)
         fuzz_position(in, NULL, 1e7 * LENGTH_SCALE, p);
     else

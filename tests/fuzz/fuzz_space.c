@@ -43,11 +43,25 @@ static int overlap(McdModelID a, McdModelID b)
     return 1;
 }
 
-/* Compare the space's report with the reference and advance the reference. */
-static void check(McdSpaceID space, Ref *r, int state[N][N], McdModelPairContainer *container)
+/* A model left the space: its reported or silently kept pairs say Goodbye at the next report. */
+static void leave(int i, int state[N][N], int goodbye[N][N])
 {
-    int seen[N][N]; /* 0: not reported, 1 hello, 2 staying, 3 goodbye */
-    memset(seen, 0, sizeof seen);
+    for (int j = 0; j < N; j++) {
+        int a = i < j ? i : j, b = i < j ? j : i;
+        if (a != b && state[a][b] != NONE) {
+            goodbye[a][b] = 1;
+            state[a][b] = NONE;
+        }
+    }
+}
+
+/* Compare the space's report with the reference and advance the reference. A pair may be said
+ * goodbye to (its model left) and hello again (it came back) in one report: two pair records. */
+static void check(McdSpaceID space, Ref *r, int state[N][N], int goodbye[N][N], McdModelPairContainer *container)
+{
+    int seenGoodbye[N][N], seenLive[N][N]; /* live: 1 hello, 2 staying */
+    memset(seenGoodbye, 0, sizeof seenGoodbye);
+    memset(seenLive, 0, sizeof seenLive);
     McdSpacePairIterator it;
     McdSpacePairIteratorBegin(space, &it);
     MeBool more;
@@ -62,8 +76,13 @@ static void check(McdSpaceID space, Ref *r, int state[N][N], McdModelPairContain
                 a = b;
                 b = t;
             }
-            FUZZ_CHECK(seen[a][b] == 0, "pair (%d, %d) reported twice", a, b);
-            seen[a][b] = k < container->goodbyeEnd ? 3 : k < container->helloEndStayingFirst ? 1 : 2;
+            if (k < container->goodbyeEnd) {
+                FUZZ_CHECK(!seenGoodbye[a][b], "pair (%d, %d) said goodbye twice", a, b);
+                seenGoodbye[a][b] = 1;
+            } else {
+                FUZZ_CHECK(!seenLive[a][b], "pair (%d, %d) reported twice", a, b);
+                seenLive[a][b] = k < container->helloEndStayingFirst ? 1 : 2;
+            }
         }
     } while (more);
     for (int a = 0; a < N; a++)
@@ -71,23 +90,26 @@ static void check(McdSpaceID space, Ref *r, int state[N][N], McdModelPairContain
             int both = r[a].inSpace && r[b].inSpace;
             int ov = both && overlap(r[a].model, r[b].model);
             int frozen = r[a].frozen && r[b].frozen;
-            int expect, next;
+            int gb = goodbye[a][b], live, next;
             if (state[a][b] == NONE) {
-                expect = ov && !frozen ? 1 : 0;
-                next = expect ? ACTIVE : NONE;
+                live = ov && !frozen ? 1 : 0;
+                next = live ? ACTIVE : NONE;
             } else if (!ov) {
-                expect = 3;
+                gb = 1;
+                live = 0;
                 next = NONE;
             } else if (frozen) {
-                expect = 0;
+                live = 0;
                 next = DORMANT;
             } else {
-                expect = 2;
+                live = 2;
                 next = ACTIVE;
             }
-            FUZZ_CHECK(seen[a][b] == expect, "pair (%d, %d): reported %d, expected %d (state %d, overlap %d, frozen %d %d)",
-                       a, b, seen[a][b], expect, state[a][b], ov, r[a].frozen, r[b].frozen);
+            FUZZ_CHECK(seenGoodbye[a][b] == gb && seenLive[a][b] == live,
+                       "pair (%d, %d): goodbye %d live %d, expected %d %d (state %d, overlap %d, frozen %d %d)", a, b,
+                       seenGoodbye[a][b], seenLive[a][b], gb, live, state[a][b], ov, r[a].frozen, r[b].frozen);
             state[a][b] = next;
+            goodbye[a][b] = 0;
         }
 }
 
@@ -101,9 +123,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     McdSpaceID space = McdSpaceAxisSortCreate(fw, McdAllAxes, N, PAIR_CAPACITY);
     McdModelPairContainer *container = McdModelPairContainerCreate(1 + (int)(fuzz_byte(&in) % 8));
     Ref r[N];
-    int state[N][N];
+    int state[N][N], goodbye[N][N];
     memset(r, 0, sizeof r);
     memset(state, 0, sizeof state);
+    memset(goodbye, 0, sizeof goodbye);
     for (int i = 0; i < N; i++) {
         int raw = 0;
         MeReal s = fuzz_size(&in, 1, &raw);
@@ -130,6 +153,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 if (r[i].inSpace && McdSpaceRemoveModel(r[i].model)) {
                     r[i].inSpace = 0;
                     r[i].frozen = 0;
+                    leave(i, state, goodbye);
                 }
                 break;
             case 2: /* move (in range, or raw: refused) and update this one */
@@ -159,7 +183,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         McdSpaceEndChanges(space);
         for (int i = 0; i < N; i++)
             FUZZ_CHECK(McdSpaceModelIsFrozen(r[i].model) == (r[i].inSpace && r[i].frozen), "frozen flag of %d", i);
-        check(space, r, state, container);
+        check(space, r, state, goodbye, container);
         McdSpaceBeginChanges(space);
     }
     McdSpaceEndChanges(space);
