@@ -64,8 +64,8 @@ static MeReal reachOf(const McdGeometryData *g)
     }
 }
 
-/* Keep the contacts a pair test could have meant: finite, unit normal, and (built-in types) no deeper
- * and no farther from geometry 1 than the two shapes reach. Others are dropped and counted: they come
+/* Keep the contacts a pair test could have meant: finite, unit normal, not beyond the tolerance, and
+ * (built-in types) no deeper and no farther from geometry 1 than the two shapes reach. Others are dropped and counted: they come
  * from arithmetic beyond the precision (an aspect ratio of 1e11 in float, say). */
 static int keepPlausible(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                          MeReal tolerance, McdContact *contacts, int n)
@@ -78,6 +78,7 @@ static int keepPlausible(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeom
     for (k = 0; k < n; k++) {
         const McdContact *c = &contacts[k];
         if (McdNfContactIsValid(c) && c->separation >= -bound &&
+            c->separation <= tolerance * ME_R(1.01) + MCD_NF_REL_EPS * (builtIn ? bound : ME_R(0.0)) &&
             (!builtIn || MeVector3Distance(c->position, tm1[3]) <= bound))
             contacts[kept++] = *c;
         else
