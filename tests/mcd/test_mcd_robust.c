@@ -310,6 +310,20 @@ static double deepest(McdModelID a, McdModelID b, int *count)
     return d;
 }
 
+/* A rotation about a random axis by a random angle (a small LCG: the same cases every run), at (x, y, z). */
+static void randomPlacement(unsigned *seed, MeMatrix4 tm, double x, double y, double z)
+{
+    double ax[3], angle, l;
+    for (int k = 0; k < 3; k++) {
+        *seed = *seed * 1103515245u + 12345u;
+        ax[k] = (double)((*seed >> 8) & 0xffff) / 32768.0 - 1;
+    }
+    *seed = *seed * 1103515245u + 12345u;
+    angle = (double)((*seed >> 8) & 0xffff) / 65536.0 * 6.28;
+    l = sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]) + 1e-9;
+    ref_tm_axis_angle(tm, ax[0] / l, ax[1] / l, ax[2] / l, angle, x, y, z);
+}
+
 /* Two boxes of identical orientation overlapping by 0.1 along a face axis: depth 0.1 in either
  * precision (a rotated axis's rounding made the parallel edge axes look like separating axes). */
 static void identical_orientations_overlap_with_their_depth(void **state)
@@ -321,15 +335,7 @@ static void identical_orientations_overlap_with_their_depth(void **state)
     McdModelSetTransformPtr(b, tb);
     unsigned seed = 12345;
     for (int trial = 0; trial < 200; trial++) {
-        double ax[3], angle;
-        for (int k = 0; k < 3; k++) {
-            seed = seed * 1103515245u + 12345u;
-            ax[k] = (double)((seed >> 8) & 0xffff) / 32768.0 - 1;
-        }
-        seed = seed * 1103515245u + 12345u;
-        angle = (double)((seed >> 8) & 0xffff) / 65536.0 * 6.28;
-        double l = sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]) + 1e-9;
-        ref_tm_axis_angle(ta, ax[0] / l, ax[1] / l, ax[2] / l, angle, 0, 0, 0);
+        randomPlacement(&seed, ta, 0, 0, 0);
         memcpy(tb, ta, sizeof tb);
         /* b shifted by 1.9 along a's local axis trial % 3: an overlap of 0.1 */
         MeVector3ScaleAndAdd(tb[3], ta[3], ME_R(1.9), ta[trial % 3]);
@@ -357,15 +363,7 @@ static void cylinder_cap_parallel_to_plane(void **state)
     McdModelSetTransformPtr(plane, tp);
     unsigned seed = 777;
     for (int trial = 0; trial < 200; trial++) {
-        double ax[3], angle;
-        for (int k = 0; k < 3; k++) {
-            seed = seed * 1103515245u + 12345u;
-            ax[k] = (double)((seed >> 8) & 0xffff) / 32768.0 - 1;
-        }
-        seed = seed * 1103515245u + 12345u;
-        angle = (double)((seed >> 8) & 0xffff) / 65536.0 * 6.28;
-        double l = sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]) + 1e-9;
-        ref_tm_axis_angle(tp, ax[0] / l, ax[1] / l, ax[2] / l, angle, 0.5, -0.25, 1);
+        randomPlacement(&seed, tp, 0.5, -0.25, 1);
         memcpy(tc, tp, sizeof tc);
         const double gaps[] = {0.5, -0.05};
         for (int g = 0; g < 2; g++) {
