@@ -165,6 +165,30 @@ static void segments_must_be_bounded(void **state)
     McdGeometryDestroy(g);
 }
 
+/* A segment query whose arithmetic degenerates (here a transform spoilt behind the API's back) is a
+ * miss, counted, never a NaN hit. */
+static void degenerate_segment_hit_is_a_counted_miss(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    McdModelID m = McdModelCreate(McdSphereCreate(fw, 1));
+    McdModelData *d = McdModelFromID(m, "test");
+    McdFrameworkCounters k0, k1;
+    McdFrameworkGetCounters(fw, &k0);
+    d->worldTransform[0][0] = NAN;
+    McdLineSegIntersectResult r;
+    MeVector3 a = {-5, 0, 0}, b = {5, 0, 0};
+    memset(&r, 0, sizeof r);
+    assert_false(McdLineSegIntersect(m, a, b, &r));
+    McdFrameworkGetCounters(fw, &k1);
+    assert_int_equal(k1.segmentFallbacks - k0.segmentFallbacks, 1);
+    assert_int_equal(karma_warning_count(), 0);
+    d->worldTransform[0][0] = 1;
+    McdGeometryID g = McdModelGetGeometry(m);
+    McdModelDestroy(m);
+    McdGeometryDestroy(g);
+}
+
 /* ---- point 2: degenerate arithmetic ----------------------------------------------------------- */
 
 static McdContact *contactOf(McdContact *set, int n, const McdContact *c)
@@ -424,6 +448,7 @@ int main(void)
         cmocka_unit_test(sizes_outside_the_range_are_refused),
         cmocka_unit_test(model_transforms_must_be_placed_rotations),
         cmocka_unit_test(segments_must_be_bounded),
+        cmocka_unit_test(degenerate_segment_hit_is_a_counted_miss),
         cmocka_unit_test(reduction_survives_nan),
         cmocka_unit_test(box_box_degenerate_axes_fall_back),
         cmocka_unit_test(invalid_contacts_are_dropped_and_counted),
