@@ -18,15 +18,20 @@
 #   make soak      build, then run the soak (tests/soak/soak.c: random creation and destruction through
 #                  MstUniverse, checked for messages, memory, speed and determinism) for SOAK_SECONDS
 #                  (default 300); make test runs a short one (soak_short)
+#   make fuzz      build the libFuzzer harnesses of tests/fuzz with clang, ASan and UBSan (build/fuzz) and run
+#                  each for FUZZ_SECONDS (default 60) from its seed corpus; fails on the first finding, whose
+#                  input is left in build/fuzz/artifacts/<harness>/ (commit it to tests/fuzz/crashes/<harness>/)
 #   make clean     remove build/
 
 BUILD   ?= build/float
 SOAK_SECONDS ?= 300
 PREFIX  ?= /usr/local
 JOBS    ?= 2
-DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config gcovr gnuplot-nox doxygen
+FUZZ_SECONDS ?= 60
+FUZZERS := fuzz_pairs fuzz_lineseg fuzz_space fuzz_api
+DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config gcovr gnuplot-nox doxygen clang libclang-rt-14-dev
 
-.PHONY: all deps build test coverage demo install docs bench bench-scenes clean
+.PHONY: all deps build test coverage demo install docs bench bench-scenes soak fuzz clean
 
 all: build
 
@@ -86,6 +91,20 @@ bench: deps
 	build/bench/bench/mcd/mcd_space_bench
 	build/bench/bench/mcd/mcd_nearfield_bench
 	JOBS=$(JOBS) bash bench/run.sh
+
+# New inputs go to build/fuzz/corpus/<harness> (the seed corpus in tests/fuzz/corpus is only read).
+fuzz: deps
+	cmake -S . -B build/fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_BUILD_TYPE=RelWithDebInfo -DKARMA_FUZZ=ON \
+	  -DKARMA_BUILD_TESTS=OFF -DKARMA_BUILD_TOOLS=OFF
+	cmake --build build/fuzz -j $(JOBS) --target $(FUZZERS)
+	@for f in $(FUZZERS); do \
+	  mkdir -p build/fuzz/corpus/$$f build/fuzz/artifacts/$$f || exit 1; \
+	  echo "make fuzz: $$f for $(FUZZ_SECONDS) s"; \
+	  build/fuzz/fuzz/$$f -max_total_time=$(FUZZ_SECONDS) -timeout=20 -print_final_stats=1 \
+	    -artifact_prefix=build/fuzz/artifacts/$$f/ build/fuzz/corpus/$$f tests/fuzz/corpus/$$f \
+	    > build/fuzz/$$f.log 2>&1 || { tail -n 40 build/fuzz/$$f.log; echo "make fuzz: $$f found a crash"; exit 1; }; \
+	  grep -E '^stat::number_of_executed_units' build/fuzz/$$f.log; \
+	done
 
 clean:
 	rm -rf build

@@ -43,6 +43,19 @@ ME_API void McdFrameworkDestroyAllModelsAndGeometries(McdFrameworkID fw);
 
 /** The framework's lengthScale (metres), as given to McdInit. */
 ME_API MeReal McdFrameworkGetLengthScale(McdFrameworkID fw);
+
+/** What the framework's pair tests and segment queries could not do exactly, since McdInit. Every
+ *  count is of an answer that was replaced by a defined one, never handed on: */
+typedef struct McdFrameworkCounters {
+    unsigned long pairFallbacks;    /**< pair tests whose arithmetic degenerated (NaN, overflow) and
+                                         that gave no contact or took the general path instead */
+    unsigned long droppedContacts;  /**< contacts dropped on their way out of McdIntersect because a
+                                         value was not finite or the normal not of unit length */
+    unsigned long segmentFallbacks; /**< segment queries whose hit was not finite: reported as a miss */
+} McdFrameworkCounters;
+/** Copy the framework's counters into *counters (not NULL; reported and left unchanged otherwise).
+ *  An addition (docs/api_changes.md). */
+ME_API void McdFrameworkGetCounters(McdFrameworkID fw, McdFrameworkCounters *counters);
 /** Contact tolerance given to new models (>= 0, finite). */
 ME_API void McdFrameworkSetDefaultContactTolerance(McdFrameworkID fw, MeReal tolerance);
 ME_API MeReal McdFrameworkGetDefaultContactTolerance(McdFrameworkID fw);

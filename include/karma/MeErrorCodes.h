@@ -55,7 +55,9 @@
 #define ME_ERROR_LIST_MCD(X) \
     X(ME_ERR_MCD_DEGENERATE_GEOMETRY, 400, ME_LEVEL_WARNING, "a geometry dimension is zero, negative or not finite") \
     X(ME_ERR_MCD_IN_USE,              401, ME_LEVEL_WARNING, "the object is still in use and cannot be destroyed") \
-    X(ME_ERR_MCD_NO_INTERACTION,      402, ME_LEVEL_WARNING, "no pair test is registered for two geometry types: their pairs give no contacts (reported once per type pair)")
+    X(ME_ERR_MCD_NO_INTERACTION,      402, ME_LEVEL_WARNING, "no pair test is registered for two geometry types: their pairs give no contacts (reported once per type pair)") \
+    X(ME_ERR_MCD_SIZE_RANGE,          403, ME_LEVEL_WARNING, "a geometry dimension is outside 1e-6 to 1e6 times the framework's lengthScale") \
+    X(ME_ERR_MCD_POSITION_RANGE,      404, ME_LEVEL_WARNING, "a model position or segment end point is farther than 1e7 times the framework's lengthScale from the origin")
 
 #define ME_ERROR_LIST_MST(X) \
     X(ME_ERR_MST_MATERIAL,            600, ME_LEVEL_WARNING, "a material index is out of range")

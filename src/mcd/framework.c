@@ -56,6 +56,11 @@ McdFrameworkID McdInit(int geoTypeMaxCount, int modelCount, int instanceCount, M
         ME_REPORT(ME_ERR_SCALE_NOT_POSITIVE, "lengthScale (%g) must be positive and finite", (double)lengthScale);
         return NULL;
     }
+    if (!(lengthScale >= MCD_LENGTH_SCALE_MIN && lengthScale <= MCD_LENGTH_SCALE_MAX)) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "lengthScale (%g) must lie between %g and %g; call ignored",
+                  (double)lengthScale, (double)MCD_LENGTH_SCALE_MIN, (double)MCD_LENGTH_SCALE_MAX);
+        return NULL;
+    }
     if (geoTypeMaxCount < 0 || geoTypeMaxCount > 1000 || modelCount < 0 || instanceCount < 0 ||
         modelCount > ME_HANDLE_MAX_INDEX) {
         ME_REPORT(ME_ERR_ARGUMENT_RANGE,
@@ -161,6 +166,21 @@ MeReal McdFrameworkGetLengthScale(McdFrameworkID id)
 {
     FW_OR_RETURN(fw, id, 0);
     return fw->lengthScale;
+}
+
+void McdFrameworkGetCounters(McdFrameworkID id, McdFrameworkCounters *counters)
+{
+    FW_OR_RETURN(fw, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(counters, ME_NOTHING);
+    counters->pairFallbacks = atomic_load(&fw->pairFallbacks);
+    counters->droppedContacts = atomic_load(&fw->droppedContacts);
+    counters->segmentFallbacks = atomic_load(&fw->segmentFallbacks);
+}
+
+MeBool McdPositionInRange(const McdFrameworkData *fw, const MeReal *p)
+{
+    const MeReal limit = MCD_POSITION_MAX * (fw ? fw->lengthScale : ME_R(1.0));
+    return MeFabs(p[0]) <= limit && MeFabs(p[1]) <= limit && MeFabs(p[2]) <= limit;
 }
 
 MeBool McdCheckTolerance(MeReal tolerance, const char *function)

@@ -16,9 +16,21 @@
 #include <karma/McdLineSegment.h>
 #include <karma/MePool.h>
 
+#include <stdatomic.h>
+
 #include "mcd_internal.h"
 
 #define MCD_TERM_ACTION_MAX 16
+
+/* The documented ranges of geometry and placement (docs/collision.md), in units of the framework's
+ * lengthScale: inside them every pair test and query gives finite answers in either precision. */
+#define MCD_SIZE_MIN ME_R(1e-6)      /* smallest primitive dimension */
+#define MCD_SIZE_MAX ME_R(1e6)       /* largest primitive dimension */
+#define MCD_POSITION_MAX ME_R(1e7)   /* farthest model origin or segment end point from the world origin */
+#define MCD_LENGTH_SCALE_MIN ME_R(1e-3) /* McdInit's lengthScale range */
+#define MCD_LENGTH_SCALE_MAX ME_R(1e3)
+/* A model's rotation must be orthonormal and right-handed to this tolerance (as relative transforms). */
+#define MCD_ROTATION_TOLERANCE ME_R(1e-3)
 
 typedef struct McdTermActionEntry {
     McdFrameworkTermActionFn fn; /* our form (with data), or NULL */
@@ -55,6 +67,8 @@ typedef struct McdFrameworkData {
     int termActionCount;
     McdInteractions *interactionViews; /* typeCapacity^2 entries of McdFrameworkGetInteractions, or NULL */
     MeU32 nextPairId;              /* identities of pairs made by McdModelPairCreate */
+    /* McdFrameworkGetCounters (atomic: pairs may be tested on several threads) */
+    atomic_ulong pairFallbacks, droppedContacts, segmentFallbacks;
 } McdFrameworkData;
 
 /* ---- resolving IDs (report in the caller's name; NULL when invalid) ------------------------- */
@@ -65,6 +79,9 @@ static inline McdGeometryID McdGeometryToID(const McdGeometryData *g) { return (
 static inline McdModelID McdModelToID(const McdModelData *m) { return (McdModelID)m->id; }
 static inline McdFrameworkID McdFrameworkToID(const McdFrameworkData *fw) { return (McdFrameworkID)fw->id; }
 
+/** Whether the point lies within MCD_POSITION_MAX * lengthScale of the origin (finite, per axis; fw
+ *  NULL: lengthScale 1). */
+MeBool McdPositionInRange(const McdFrameworkData *fw, const MeReal *p);
 /** A contact tolerance must be finite and >= 0; reports in `function`'s name. */
 MeBool McdCheckTolerance(MeReal tolerance, const char *function);
 

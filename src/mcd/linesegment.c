@@ -2,6 +2,8 @@
  *
  * The segment is taken into the geometry's frame (the model's transform at its last update), the
  * geometry's own test finds the first entry there, and the answer comes back to the world. */
+#include <math.h>
+
 #include <karma/McdLineSegment.h>
 
 #include "../me/check.h"
@@ -22,12 +24,21 @@ int McdModelLineSegIntersectInternal(const McdModelData *m, const MeVector3 p0, 
     MeMatrix4TMInverseTransform(b, tm, p1);
     if (!McdGeometryLineSegInternal(m->geometry, a, b, &t, n))
         return 0;
-    MeVector3 d;
+    MeVector3 d, position, normal;
     MeVector3Subtract(d, p1, p0);
+    MeVector3ScaleAndAdd(position, p0, t, d);
+    MeMatrix4TMRotate(normal, tm, n);
+    MeReal distance = t * MeVector3Magnitude(d);
+    if (!(t >= 0 && t <= 1) || !MeVector3IsValid(position) || !isfinite(distance) ||
+        !(MeFabs(MeVector3MagnitudeSqr(normal) - 1) <= ME_R(1e-3))) {
+        /* degenerate arithmetic: a miss, counted (McdFrameworkGetCounters), never a NaN handed on */
+        atomic_fetch_add(&m->framework->segmentFallbacks, 1);
+        return 0;
+    }
     result->model = McdModelToID(m);
-    MeVector3ScaleAndAdd(result->position, p0, t, d);
-    MeMatrix4TMRotate(result->normal, tm, n);
-    result->distance = t * MeVector3Magnitude(d);
+    MeVector3Copy(result->position, position);
+    MeVector3Copy(result->normal, normal);
+    result->distance = distance;
     return 1;
 }
 
@@ -41,5 +52,10 @@ int McdLineSegIntersect(McdModelID id, const MeVector3 p0, const MeVector3 p1, M
     ME_CHECK_NOT_NULL(result, 0);
     ME_CHECK_FINITE3(p0[0], p0[1], p0[2], 0);
     ME_CHECK_FINITE3(p1[0], p1[1], p1[2], 0);
+    if (!McdPositionInRange(m->framework, p0) || !McdPositionInRange(m->framework, p1)) {
+        ME_REPORT(ME_ERR_MCD_POSITION_RANGE, "the segment's end points must lie within %g of the origin (1e7 times "
+                  "lengthScale); call ignored", (double)(MCD_POSITION_MAX * m->framework->lengthScale));
+        return 0;
+    }
     return McdModelLineSegIntersectInternal(m, p0, p1, result);
 }

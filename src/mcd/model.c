@@ -9,8 +9,8 @@
 #include "framework.h"
 #include "space.h"
 
-/* A relative transform must be rigid to this tolerance. */
-#define TM_TOLERANCE ME_R(1e-3)
+/* A relative transform must be rigid to this tolerance (as the world transform, framework.h). */
+#define TM_TOLERANCE MCD_ROTATION_TOLERANCE
 
 McdModelData *McdModelFromID(McdModelID id, const char *function)
 {
@@ -82,6 +82,25 @@ static void update(McdModelData *m, const char *function)
     if (!transformIsFinite(m->worldTransform)) {
         ME_REPORT_IN(function, ME_ERR_NONFINITE_ARGUMENT,
                      "the model's transform holds NaN or infinity; its last transform and AABB are kept");
+        MeMatrix4Copy(m->worldTransform, previous);
+        return;
+    }
+    MeMatrix3 R;
+    MeMatrix4TMGetRotation(R, m->worldTransform);
+    if (!MeMatrix3IsValidOrientationMatrix(R, MCD_ROTATION_TOLERANCE)) {
+        ME_REPORT_IN(function, ME_ERR_NOT_ROTATION,
+                     "the model's transform is not a rotation (orthonormal, determinant +1, to %g): sheared, "
+                     "scaled or mirrored; its last transform and AABB are kept",
+                     (double)MCD_ROTATION_TOLERANCE);
+        MeMatrix4Copy(m->worldTransform, previous);
+        return;
+    }
+    if (!McdPositionInRange(m->framework, m->worldTransform[3])) {
+        ME_REPORT_IN(function, ME_ERR_MCD_POSITION_RANGE,
+                     "the model's position (%g, %g, %g) is beyond %g from the origin (1e7 times lengthScale); its "
+                     "last transform and AABB are kept",
+                     (double)m->worldTransform[3][0], (double)m->worldTransform[3][1],
+                     (double)m->worldTransform[3][2], (double)(MCD_POSITION_MAX * m->framework->lengthScale));
         MeMatrix4Copy(m->worldTransform, previous);
         return;
     }
@@ -208,6 +227,11 @@ void McdModelSetRelativeTransform(McdModelID id, MeMatrix4 relTM)
                                        "last column 0 0 0 1, finite); call ignored");
         return;
     }
+    if (!McdPositionInRange(m->framework, relTM[3])) {
+        ME_REPORT(ME_ERR_MCD_POSITION_RANGE, "argument 'relTM' translates by more than %g (1e7 times lengthScale); "
+                  "call ignored", (double)(MCD_POSITION_MAX * m->framework->lengthScale));
+        return;
+    }
     MeMatrix4Copy(m->relativeTransform, relTM);
     m->hasRelative = METRUE;
 }
@@ -226,6 +250,11 @@ void McdModelSetRelativeTransformPtrs(McdModelID id, MeMatrix4 relTM, MeMatrix4 
     (void)own; /* Karma's "free them with the model": the pointers here always stay the caller's */
     if (relTM && !MeMatrix4IsTM(relTM, TM_TOLERANCE)) {
         ME_REPORT(ME_ERR_NOT_ROTATION, "argument 'relTM' is not a rigid transform; call ignored");
+        return;
+    }
+    if (relTM && !McdPositionInRange(m->framework, relTM[3])) {
+        ME_REPORT(ME_ERR_MCD_POSITION_RANGE, "argument 'relTM' translates by more than %g; call ignored",
+                  (double)(MCD_POSITION_MAX * m->framework->lengthScale));
         return;
     }
     m->relativePtr = relTM;

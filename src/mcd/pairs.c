@@ -7,12 +7,14 @@
 #include <string.h>
 
 #include <karma/McdInteraction.h>
+#include <karma/McdModel.h>
 #include <karma/McdModelPair.h>
 #include <karma/McdSpace.h>
 #include <karma/MeMemory.h>
 
 #include "../me/check.h"
 #include "framework.h"
+#include "nearfield/nearfield.h"
 
 McdModelPairID McdModelPairCreate(McdModelID model1, McdModelID model2)
 {
@@ -112,9 +114,20 @@ void McdGoodbyeInternal(McdModelPair *pair, McdModelData *m1)
 
 void McdGoodbye(McdModelPairID pair)
 {
-    McdModelData *m1, *m2;
-    if (pairModels(pair, &m1, &m2, __func__))
-        McdGoodbyeInternal(pair, m1);
+    ME_CHECK_NOT_NULL(pair, ME_NOTHING);
+    /* A goodbye pair may name a model destroyed since it left its space (MstModelAndBodyDestroy
+     * removes and destroys at once): legal, so not reported. The framework comes from whichever model
+     * is still there; with neither, only the pair's own fields are cleared. */
+    McdModelData *m = McdModelIsValid(pair->model1) ? McdModelFromID(pair->model1, __func__)
+                      : McdModelIsValid(pair->model2) ? McdModelFromID(pair->model2, __func__)
+                                                      : NULL;
+    if (m) {
+        McdGoodbyeInternal(pair, m);
+        return;
+    }
+    pair->cache = NULL;
+    pair->testIndex = -1;
+    pair->swapped = 0;
 }
 
 /* The representative normal: the mean of the contact normals, or the deepest contact's normal when
@@ -132,6 +145,19 @@ static void representativeNormal(const McdContact *c, int count, MeVector3 norma
         MeVector3Copy(normal, sum);
     else
         MeVector3Copy(normal, c[deepest].normal);
+}
+
+/* The last guard before contacts leave Mcd: a contact with a non-finite value or a normal that is not
+ * of unit length is dropped (and counted), whichever test wrote it, so none reaches the bridge. */
+static int dropInvalidContacts(McdFrameworkData *fw, McdContact *c, int n)
+{
+    int kept = 0;
+    for (int i = 0; i < n; i++)
+        if (McdNfContactIsValid(&c[i]))
+            c[kept++] = c[i];
+    if (kept < n)
+        atomic_fetch_add(&fw->droppedContacts, (unsigned long)(n - kept));
+    return kept;
 }
 
 static void clearResult(McdModelPair *pair, McdIntersectResult *result)
@@ -178,14 +204,19 @@ int McdIntersectModels(McdModelPair *pair, McdModelData *m1, McdModelData *m2, M
         return 0;
     MeReal tolerance = m1->contactTolerance + m2->contactTolerance;
     McdContact *c = result->contacts;
-    int n = pair->swapped ? fn(m2->geometry, m2->worldTransform, m1->geometry, m1->worldTransform, tolerance, c,
-                               maxCount, &pair->cache)
-                          : fn(m1->geometry, m1->worldTransform, m2->geometry, m2->worldTransform, tolerance, c,
-                               maxCount, &pair->cache);
+    const unsigned long fallbacksBefore = McdNfFallbackCount();
+    int n = pair->swapped ? McdNfCallCentred(fn, m2->geometry, m2->worldTransform, m1->geometry, m1->worldTransform,
+                                             tolerance, c, maxCount, &pair->cache)
+                          : McdNfCallCentred(fn, m1->geometry, m1->worldTransform, m2->geometry, m2->worldTransform,
+                                             tolerance, c, maxCount, &pair->cache);
     if (n < 0 || n > maxCount) {
         ME_REPORT_IN(function, ME_ERR_INTERNAL, "a pair test returned %d contacts for room for %d", n, maxCount);
         n = n < 0 ? 0 : maxCount;
     }
+    n = dropInvalidContacts(fw, c, n);
+    unsigned long fallbacks = McdNfFallbackCount() - fallbacksBefore;
+    if (fallbacks)
+        atomic_fetch_add(&fw->pairFallbacks, fallbacks);
     if (pair->swapped)
         for (int i = 0; i < n; i++) {
             void *e = c[i].element1;

@@ -73,6 +73,12 @@ static MeBool queryStart(Query *q, McdSpaceID space, const MeVector3 orig, const
             ME_REPORT_IN(function, ME_ERR_NONFINITE_ARGUMENT, "the segment's end points must be finite; call ignored");
             return MEFALSE;
         }
+    if (!McdPositionInRange(q->s->framework, orig) || !McdPositionInRange(q->s->framework, dest)) {
+        ME_REPORT_IN(function, ME_ERR_MCD_POSITION_RANGE, "the segment's end points must lie within %g of the "
+                     "origin (1e7 times lengthScale); call ignored",
+                     (double)(MCD_POSITION_MAX * (q->s->framework ? q->s->framework->lengthScale : 1)));
+        return MEFALSE;
+    }
     if (!McdSpaceCheckChanging(q->s, MEFALSE, function))
         return MEFALSE;
     for (int k = 0; k < 3; k++) {

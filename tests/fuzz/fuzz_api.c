@@ -9,8 +9,9 @@
  *    orientation, velocities, mass, forces, enabled flag: hashed before and after);
  *  - no body's state is ever NaN or infinite (the step's containment restores a failed partition);
  *  - nothing crashes, reads out of bounds or overflows (AddressSanitizer, UBSan).
- * A violated claim aborts, so libFuzzer keeps the input. Build: tests/fuzz/api.cmake (clang,
- * -fsanitize=fuzzer,address,undefined); seed inputs in tests/fuzz/corpus/api/. */
+ * A violated claim aborts, so libFuzzer keeps the input. Build: tests/fuzz/CMakeLists.txt (clang,
+ * -fsanitize=fuzzer,address,undefined, `make fuzz`); seed inputs in tests/fuzz/corpus/fuzz_api/, replayed in
+ * the suite by tests/cmake/fuzz_replay.cmake. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>

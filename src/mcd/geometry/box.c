@@ -54,16 +54,16 @@ static int boxSegment(McdGeometryID g, void *data, const MeVector3 p0, const MeV
 
 const McdGeometryTypeDesc McdBoxTypeDesc = {"Box", NULL, boxAABB, boxBSphere, boxSupport, boxMass, boxSegment, NULL};
 
-static MeBool checkDimensions(MeReal dx, MeReal dy, MeReal dz, const char *function)
+static MeBool checkDimensions(const McdFrameworkData *fw, MeReal dx, MeReal dy, MeReal dz, const char *function)
 {
-    return McdCheckDimension(dx, "dx", MEFALSE, function) && McdCheckDimension(dy, "dy", MEFALSE, function) &&
-           McdCheckDimension(dz, "dz", MEFALSE, function);
+    return McdCheckDimension(fw, dx, "dx", MEFALSE, function) && McdCheckDimension(fw, dy, "dy", MEFALSE, function) &&
+           McdCheckDimension(fw, dz, "dz", MEFALSE, function);
 }
 
 McdBoxID McdBoxCreate(McdFrameworkID fwId, MeReal dx, MeReal dy, MeReal dz)
 {
     McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
-    if (!fw || !checkDimensions(dx, dy, dz, __func__))
+    if (!fw || !checkDimensions(fw, dx, dy, dz, __func__))
         return NULL;
     McdGeometryData *g = McdGeometryNew(fw, kMcdGeometryTypeBox, __func__);
     if (!g)
@@ -106,6 +106,6 @@ void McdBoxGetDimensions(McdBoxID id, MeReal *dx, MeReal *dy, MeReal *dz)
 void McdBoxSetDimensions(McdBoxID id, MeReal dx, MeReal dy, MeReal dz)
 {
     McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeBox, __func__);
-    if (g && checkDimensions(dx, dy, dz, __func__))
+    if (g && checkDimensions(g->framework, dx, dy, dz, __func__))
         MeVector3Set(g->u.box.radii, ME_R(0.5) * dx, ME_R(0.5) * dy, ME_R(0.5) * dz);
 }

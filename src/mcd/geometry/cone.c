@@ -99,11 +99,11 @@ static int coneSegment(McdGeometryID g, void *data, const MeVector3 p0, const Me
 const McdGeometryTypeDesc McdConeTypeDesc = {"Cone", NULL, coneAABB, coneBSphere, coneSupport, coneMass, coneSegment,
                                              NULL};
 
-static MeBool checkParameters(MeReal length, MeReal lower, MeReal upper, const char *function)
+static MeBool checkParameters(const McdFrameworkData *fw, MeReal length, MeReal lower, MeReal upper, const char *function)
 {
-    if (!McdCheckDimension(length, "length", MEFALSE, function) ||
-        !McdCheckDimension(lower, "lowerRadius", MEFALSE, function) ||
-        !McdCheckDimension(upper, "upperRadius", METRUE, function))
+    if (!McdCheckDimension(fw, length, "length", MEFALSE, function) ||
+        !McdCheckDimension(fw, lower, "lowerRadius", MEFALSE, function) ||
+        !McdCheckDimension(fw, upper, "upperRadius", METRUE, function))
         return MEFALSE;
     if (upper > lower) {
         ME_REPORT_IN(function, ME_ERR_MCD_DEGENERATE_GEOMETRY,
@@ -116,7 +116,7 @@ static MeBool checkParameters(MeReal length, MeReal lower, MeReal upper, const c
 McdConeID McdConeCreate(McdFrameworkID fwId, MeReal length, MeReal lowerRadius)
 {
     McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
-    if (!fw || !checkParameters(length, lowerRadius, 0, __func__))
+    if (!fw || !checkParameters(fw, length, lowerRadius, 0, __func__))
         return NULL;
     McdGeometryData *g = McdGeometryNew(fw, kMcdGeometryTypeCone, __func__);
     if (!g)
@@ -128,7 +128,7 @@ McdConeID McdConeCreate(McdFrameworkID fwId, MeReal length, MeReal lowerRadius)
 void McdConeSetGeometricalParameters(McdConeID id, MeReal length, MeReal lowerRadius, MeReal upperRadius)
 {
     McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCone, __func__);
-    if (g && checkParameters(length, lowerRadius, upperRadius, __func__))
+    if (g && checkParameters(g->framework, length, lowerRadius, upperRadius, __func__))
         setParameters(&g->u.cone, length, lowerRadius, upperRadius);
 }
 

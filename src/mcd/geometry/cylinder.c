@@ -58,8 +58,8 @@ const McdGeometryTypeDesc McdCylinderTypeDesc = {"Cylinder", NULL, cylinderAABB,
 McdCylinderID McdCylinderCreate(McdFrameworkID fwId, MeReal radius, MeReal height)
 {
     McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
-    if (!fw || !McdCheckDimension(radius, "radius", MEFALSE, __func__) ||
-        !McdCheckDimension(height, "height", MEFALSE, __func__))
+    if (!fw || !McdCheckDimension(fw, radius, "radius", MEFALSE, __func__) ||
+        !McdCheckDimension(fw, height, "height", MEFALSE, __func__))
         return NULL;
     McdGeometryData *g = McdGeometryNew(fw, kMcdGeometryTypeCylinder, __func__);
     if (!g)
@@ -78,7 +78,7 @@ MeReal McdCylinderGetRadius(McdCylinderID id)
 void McdCylinderSetRadius(McdCylinderID id, MeReal radius)
 {
     McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
-    if (g && McdCheckDimension(radius, "radius", MEFALSE, __func__))
+    if (g && McdCheckDimension(g->framework, radius, "radius", MEFALSE, __func__))
         g->u.cylinder.radius = radius;
 }
 
@@ -91,7 +91,7 @@ MeReal McdCylinderGetHeight(McdCylinderID id)
 void McdCylinderSetHeight(McdCylinderID id, MeReal height)
 {
     McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
-    if (g && McdCheckDimension(height, "height", MEFALSE, __func__))
+    if (g && McdCheckDimension(g->framework, height, "height", MEFALSE, __func__))
         g->u.cylinder.halfHeight = ME_R(0.5) * height;
 }
 
@@ -104,8 +104,8 @@ MeReal McdCylinderGetHalfHeight(McdCylinderID id)
 void McdCylinderSetGeometricalParameters(McdCylinderID id, MeReal inRadius, MeReal inHeight)
 {
     McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeCylinder, __func__);
-    if (g && McdCheckDimension(inRadius, "inRadius", MEFALSE, __func__) &&
-        McdCheckDimension(inHeight, "inHeight", MEFALSE, __func__)) {
+    if (g && McdCheckDimension(g->framework, inRadius, "inRadius", MEFALSE, __func__) &&
+        McdCheckDimension(g->framework, inHeight, "inHeight", MEFALSE, __func__)) {
         g->u.cylinder.radius = inRadius;
         g->u.cylinder.halfHeight = ME_R(0.5) * inHeight;
     }

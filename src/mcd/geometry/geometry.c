@@ -42,13 +42,24 @@ McdGeometryData *McdGeometryOfType(McdGeometryID id, int type, const char *funct
     return g;
 }
 
-MeBool McdCheckDimension(MeReal value, const char *name, MeBool zeroAllowed, const char *function)
+MeBool McdCheckDimension(const McdFrameworkData *fw, MeReal value, const char *name, MeBool zeroAllowed,
+                         const char *function)
 {
-    if (ME_IS_FINITE(value) && (value > 0 || (zeroAllowed && value == 0)))
-        return METRUE;
-    ME_REPORT_IN(function, ME_ERR_MCD_DEGENERATE_GEOMETRY, "argument '%s' is %g; it must be finite and %s; call ignored",
-                 name, (double)value, zeroAllowed ? ">= 0" : "> 0");
-    return MEFALSE;
+    if (!(ME_IS_FINITE(value) && (value > 0 || (zeroAllowed && value == 0)))) {
+        ME_REPORT_IN(function, ME_ERR_MCD_DEGENERATE_GEOMETRY,
+                     "argument '%s' is %g; it must be finite and %s; call ignored", name, (double)value,
+                     zeroAllowed ? ">= 0" : "> 0");
+        return MEFALSE;
+    }
+    if (value != 0 && !(value >= MCD_SIZE_MIN * fw->lengthScale && value <= MCD_SIZE_MAX * fw->lengthScale)) {
+        ME_REPORT_IN(function, ME_ERR_MCD_SIZE_RANGE,
+                     "argument '%s' is %g; sizes run from %g to %g (1e-6 to 1e6 times the framework's lengthScale "
+                     "%g); call ignored",
+                     name, (double)value, (double)(MCD_SIZE_MIN * fw->lengthScale),
+                     (double)(MCD_SIZE_MAX * fw->lengthScale), (double)fw->lengthScale);
+        return MEFALSE;
+    }
+    return METRUE;
 }
 
 const McdGeometryTypeDesc *McdGeometryTypeOf(const McdGeometryData *g) { return &g->framework->types[g->type]; }

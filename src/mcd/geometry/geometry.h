@@ -24,8 +24,11 @@ void McdGeometryXYAABB(const McdGeometryData *g, MeMatrix4 tm, MeReal bounds[4],
 /** The local support point, arguments checked in `function`'s name. */
 void McdGeometryMaximumPointLocalChecked(const McdGeometryData *g, const MeReal *dir, MeReal *point,
                                          const char *function);
-/** A dimension must be finite and > 0 (or >= 0 when zeroAllowed); reports in `function`'s name. */
-MeBool McdCheckDimension(MeReal value, const char *name, MeBool zeroAllowed, const char *function);
+/** A dimension must be finite and > 0 (or >= 0 when zeroAllowed): ME_ERR_MCD_DEGENERATE_GEOMETRY; and
+ *  (unless 0) within MCD_SIZE_MIN..MCD_SIZE_MAX times fw's lengthScale: ME_ERR_MCD_SIZE_RANGE. Reports in
+ *  `function`'s name. */
+MeBool McdCheckDimension(const McdFrameworkData *fw, MeReal value, const char *name, MeBool zeroAllowed,
+                         const char *function);
 
 /** AABB of a local box [lo, hi] placed at tm (exact for boxes). */
 void McdAABBOfLocalBox(MeMatrix4 tm, const MeVector3 lo, const MeVector3 hi, MeVector3 minCorner,

@@ -58,7 +58,7 @@ const McdGeometryTypeDesc McdSphereTypeDesc = {"Sphere", NULL, sphereAABB, spher
 McdSphereID McdSphereCreate(McdFrameworkID fwId, MeReal radius)
 {
     McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
-    if (!fw || !McdCheckDimension(radius, "radius", MEFALSE, __func__))
+    if (!fw || !McdCheckDimension(fw, radius, "radius", MEFALSE, __func__))
         return NULL;
     McdGeometryData *g = McdGeometryNew(fw, kMcdGeometryTypeSphere, __func__);
     if (!g)
@@ -76,6 +76,6 @@ MeReal McdSphereGetRadius(McdSphereID id)
 void McdSphereSetRadius(McdSphereID id, MeReal radius)
 {
     McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeSphere, __func__);
-    if (g && McdCheckDimension(radius, "radius", MEFALSE, __func__))
+    if (g && McdCheckDimension(g->framework, radius, "radius", MEFALSE, __func__))
         g->u.sphere.radius = radius;
 }

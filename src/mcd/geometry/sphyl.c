@@ -84,8 +84,8 @@ const McdGeometryTypeDesc McdSphylTypeDesc = {"Sphyl", NULL, sphylAABB, sphylBSp
 McdSphylID McdSphylCreate(McdFrameworkID fwId, MeReal radius, MeReal height)
 {
     McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
-    if (!fw || !McdCheckDimension(radius, "radius", MEFALSE, __func__) ||
-        !McdCheckDimension(height, "height", METRUE, __func__))
+    if (!fw || !McdCheckDimension(fw, radius, "radius", MEFALSE, __func__) ||
+        !McdCheckDimension(fw, height, "height", METRUE, __func__))
         return NULL;
     McdGeometryData *g = McdGeometryNew(fw, kMcdGeometryTypeSphyl, __func__);
     if (!g)
@@ -104,7 +104,7 @@ MeReal McdSphylGetRadius(McdSphylID id)
 void McdSphylSetRadius(McdSphylID id, MeReal radius)
 {
     McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeSphyl, __func__);
-    if (g && McdCheckDimension(radius, "radius", MEFALSE, __func__))
+    if (g && McdCheckDimension(g->framework, radius, "radius", MEFALSE, __func__))
         g->u.sphyl.radius = radius;
 }
 
@@ -117,7 +117,7 @@ MeReal McdSphylGetHeight(McdSphylID id)
 void McdSphylSetHeight(McdSphylID id, MeReal height)
 {
     McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeSphyl, __func__);
-    if (g && McdCheckDimension(height, "height", METRUE, __func__))
+    if (g && McdCheckDimension(g->framework, height, "height", METRUE, __func__))
         g->u.sphyl.halfHeight = ME_R(0.5) * height;
 }
 

@@ -7,6 +7,8 @@
  * (Sutherland-Hodgman) and keeps up to four points, an edge contact gives the closest points of the two
  * edges. Boxes apart by less than the tolerance go to the general path (GJK), which measures the true
  * distance, not only its projection on the fifteen axes. */
+#include <math.h>
+
 #include "nearfield.h"
 
 /* Prefer a face axis unless an edge axis overlaps less than this fraction of it. */
@@ -110,7 +112,7 @@ int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData 
     MeReal R[3][3], AR[3][3], ta[3], tb[3], faceBest = MEINFINITY, edgeBest = MEINFINITY;
     MeReal size;
     MeVector3 T, edgeAxis = {ME_R(0.0), ME_R(0.0), ME_R(0.0)};
-    int i, j, faceAxis = -1, edgeI = -1, edgeJ = -1;
+    int i, j, faceAxis = 0, edgeI = -1, edgeJ = -1;
     MeBool separated = MEFALSE;
     if (maxContacts <= 0)
         return 0;
@@ -139,6 +141,10 @@ int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData 
             o = A.h[i] + B.h[0] * AR[i][0] + B.h[1] * AR[i][1] + B.h[2] * AR[i][2] - MeFabs(ta[i]);
         else
             o = A.h[0] * AR[0][i - 3] + A.h[1] * AR[1][i - 3] + A.h[2] * AR[2][i - 3] + B.h[i - 3] - MeFabs(tb[i - 3]);
+        if (isnan(o)) { /* degenerate arithmetic: no axis can be trusted */
+            McdNfCountFallback();
+            return 0;
+        }
         if (o < -tolerance)
             return 0;
         if (o < ME_R(0.0))
@@ -154,12 +160,16 @@ int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData 
         for (j = 0; j < 3; j++) {
             int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
             MeReal len = MeSqrt(MeMAX(ME_R(0.0), ME_R(1.0) - R[i][j] * R[i][j])), ra, rb, dist, o;
-            if (len < ME_R(1e-4)) /* parallel edges: the face axes cover this direction */
+            if (!(len >= MCD_NF_PARALLEL_SIN)) /* parallel edges (to rounding): the face axes cover it */
                 continue;
             ra = A.h[i1] * AR[i2][j] + A.h[i2] * AR[i1][j];
             rb = B.h[j1] * AR[i][j2] + B.h[j2] * AR[i][j1];
             dist = MeFabs(ta[i2] * R[i1][j] - ta[i1] * R[i2][j]);
             o = (ra + rb - dist) / len;
+            if (isnan(o)) {
+                McdNfCountFallback();
+                return 0;
+            }
             if (o < -tolerance)
                 return 0;
             if (o < ME_R(0.0))

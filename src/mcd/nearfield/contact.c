@@ -1,5 +1,26 @@
 /* contact.c -- writing contacts and reducing a contact set to a few well-spread points (internal). */
+#include <math.h>
+#include <stdatomic.h>
+
 #include "nearfield.h"
+
+/* Process-wide (a thread-local count would make the library need the dynamic loader's TLS support);
+ * the dispatcher reads it around each test, so the attribution to a framework is exact whenever one
+ * thread tests pairs at a time, and the total always is. */
+static atomic_ulong fallbackCount;
+
+void McdNfCountFallback(void) { atomic_fetch_add(&fallbackCount, 1); }
+
+unsigned long McdNfFallbackCount(void) { return atomic_load(&fallbackCount); }
+
+MeBool McdNfContactIsValid(const McdContact *c)
+{
+    MeReal len;
+    if (!MeVector3IsValid(c->position) || !MeVector3IsValid(c->normal) || !isfinite(c->separation))
+        return MEFALSE;
+    len = MeVector3MagnitudeSqr(c->normal);
+    return MeFabs(len - ME_R(1.0)) <= ME_R(1e-3);
+}
 
 void McdNfToWorld(MeVector3 out, MeMatrix4 tm, const MeVector3 local)
 {
@@ -29,6 +50,10 @@ int McdNfAddPair(McdContact *contacts, int count, int maxContacts, const MeVecto
     MeReal sep;
     MeVector3Subtract(d, on1, on2); /* the normal points from surface 2 towards surface 1 */
     sep = MeVector3Dot(d, normal);
+    if (isnan(sep) || (sep <= tolerance && (!isfinite(sep) || !MeVector3IsValid(on1) || !MeVector3IsValid(on2)))) {
+        McdNfCountFallback(); /* NaN or overflow: the contact is dropped */
+        return 0;
+    }
     if (!(sep <= tolerance) || count >= maxContacts)
         return 0;
     c = &contacts[count];
@@ -52,6 +77,28 @@ static MeReal signedArea(const MeVector3 a, const MeVector3 b, const MeVector3 c
     return MeVector3Dot(w, n);
 }
 
+/* A NaN value never wins a search (comparisons with NaN are false); this makes it lose explicitly. */
+static MeReal orLowest(MeReal v) { return isnan(v) ? -MEINFINITY : v; }
+
+/* The unused index of contacts[0..n) with the greatest value(i) (ties: the first); -1 when every
+ * index is used. A NaN value counts as the lowest, so some index is always found. */
+#define ARGMAX_UNUSED(result, n, used, valueExpr)                                                       \
+    do {                                                                                                \
+        MeReal bestV_ = -MEINFINITY;                                                                    \
+        int i_;                                                                                         \
+        (result) = -1;                                                                                  \
+        for (i_ = 0; i_ < (n); i_++) {                                                                  \
+            MeReal v_;                                                                                  \
+            if ((used)[i_])                                                                             \
+                continue;                                                                               \
+            v_ = orLowest(valueExpr);                                                                   \
+            if ((result) < 0 || v_ > bestV_) {                                                          \
+                bestV_ = v_;                                                                            \
+                (result) = i_;                                                                          \
+            }                                                                                           \
+        }                                                                                               \
+    } while (0)
+
 int McdNfReduce(McdContact *contacts, int n, int keep)
 {
     McdContact tmp[64];
@@ -65,42 +112,24 @@ int McdNfReduce(McdContact *contacts, int n, int keep)
     if (keep > 4)
         keep = 4;
     /* 1: the deepest point (ties: the first, so the result is deterministic). */
-    best = 0;
-    for (i = 1; i < n; i++)
-        if (contacts[i].separation < contacts[best].separation)
-            best = i;
+    ARGMAX_UNUSED(best, n, used, -contacts[i_].separation);
     chosen[k++] = best;
     used[best] = 1;
-    /* 2: the farthest from it. */
+    /* 2: the farthest from it (n > keep >= 1 leaves an unused index). */
     if (k < keep) {
-        best = -1;
-        bestValue = -ME_R(1.0);
-        for (i = 0; i < n; i++) {
-            MeReal d = MeVector3DistanceSqr(contacts[i].position, contacts[chosen[0]].position);
-            if (!used[i] && d > bestValue) {
-                bestValue = d;
-                best = i;
-            }
-        }
+        ARGMAX_UNUSED(best, n, used, MeVector3DistanceSqr(contacts[i_].position, contacts[chosen[0]].position));
         chosen[k++] = best;
         used[best] = 1;
     }
     /* 3: the largest triangle with those two. */
     if (k < keep) {
-        best = -1;
-        bestValue = -ME_R(1.0);
-        for (i = 0; i < n; i++) {
-            MeReal a = MeFabs(signedArea(contacts[chosen[0]].position, contacts[chosen[1]].position,
-                                         contacts[i].position, nrm));
-            if (!used[i] && a > bestValue) {
-                bestValue = a;
-                best = i;
-            }
-        }
+        ARGMAX_UNUSED(best, n, used,
+                      MeFabs(signedArea(contacts[chosen[0]].position, contacts[chosen[1]].position,
+                                        contacts[i_].position, nrm)));
         chosen[k++] = best;
         used[best] = 1;
     }
-    /* 4: the point that adds the most area outside the triangle. */
+    /* 4: the point that adds the most area outside the triangle (none when all are inside). */
     if (k < keep) {
         const MeReal *p0 = contacts[chosen[0]].position, *p1 = contacts[chosen[1]].position,
                      *p2 = contacts[chosen[2]].position;

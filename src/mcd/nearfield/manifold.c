@@ -31,8 +31,12 @@ static MeReal polygonNormal(const Side *f, MeVector3 m)
 {
     int i;
     MeVector3Set(m, ME_R(0.0), ME_R(0.0), ME_R(0.0));
+    /* relative to the first vertex: the sums then carry the polygon's size, not its distance from the
+     * origin (a small face far away lost every bit of its normal) */
     for (i = 0; i < f->n; i++) {
-        const MeReal *p = f->pts[i], *q = f->pts[(i + 1) % f->n];
+        MeVector3 p, q;
+        MeVector3Subtract(p, f->pts[i], f->pts[0]);
+        MeVector3Subtract(q, f->pts[(i + 1) % f->n], f->pts[0]);
         m[0] += (p[1] - q[1]) * (p[2] + q[2]);
         m[1] += (p[2] - q[2]) * (p[0] + q[0]);
         m[2] += (p[0] - q[0]) * (p[1] + q[1]);

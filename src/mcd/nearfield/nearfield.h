@@ -26,12 +26,21 @@
 #  define MCD_NF_REL_EPS ME_R(2e-6)
 #  define MCD_NF_TOUCH ME_R(1e-4)
 #endif
+/* Two unit axes count as parallel below this sine: well above the rounding of a rotated axis in
+ * either precision (about 8 sqrt(epsilon): 2.8e-3 in float), and never below the 1e-4 used before. */
+#if KARMA_DOUBLE
+#  define MCD_NF_PARALLEL_SIN ME_R(1e-4)
+#else
+#  define MCD_NF_PARALLEL_SIN ME_R(2.8e-3)
+#endif
 /* A feature (face, edge) counts as facing the normal when it is within ~3 degrees of it. */
 #define MCD_NF_FEATURE_SIN ME_R(0.05)
 #define MCD_NF_FEATURE_COS ME_R(0.99875)
 /* Vertices of the polygon that stands for a disc (cylinder and cone caps) when clipping. */
 #define MCD_NF_DISC_SIDES 8
 #define MCD_NF_MAX_FEATURE MCD_NF_DISC_SIDES
+/* Pair tests run centred on geometry 1 beyond this many sizes of the pair from the origin. */
+#define MCD_NF_CENTRE_RATIO ME_R(64.0)
 /* Contacts a pair test keeps at most, whatever the request: four well-spread points hold a body. */
 #define MCD_NF_MAX_CONTACTS 4
 
@@ -82,6 +91,17 @@ int McdNfManifold(const McdNfShape *s1, const McdNfShape *s2, const McdNfDistanc
 int McdNfConvexConvex(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                       MeReal tolerance, McdContact *contacts, int maxContacts, void **cache);
 
+/* ---- degenerate arithmetic (contact.c) ------------------------------------------------------ */
+
+/** Count one fallback: a pair test whose arithmetic degenerated (a NaN or infinity in a search, no
+ *  axis chosen) and that gave a defined answer instead (no contact, or the general path). The count
+ *  is process-wide; the dispatcher (McdIntersectModels) adds what a test counted to its framework. */
+void McdNfCountFallback(void);
+/** Fallbacks counted so far (all threads). */
+unsigned long McdNfFallbackCount(void);
+/** Whether a contact is usable: finite position and separation, finite unit normal. */
+MeBool McdNfContactIsValid(const McdContact *c);
+
 /* ---- contact writing (contact.c) ------------------------------------------------------------ */
 
 /** Write one contact from a point on surface 1 and one on surface 2 along the unit normal (from
@@ -125,7 +145,15 @@ typedef struct McdNfPairEntry {
 const McdNfPairEntry *McdNfPairTable(int *count);
 /** The test for (type1, type2), or NULL; *swapped says that it takes them as (type2, type1). */
 McdNearfieldFn McdNfFind(int type1, int type2, int *swapped);
-/** Run the built-in test for any order of the two geometries (swapping contacts back if needed). */
+/** Call a pair test; when geometry 1 lies farther from the world origin than MCD_NF_CENTRE_RATIO
+ *  times the pair's size, in a frame centred on geometry 1 (its translation taken out of both
+ *  transforms, put back into the contact positions): the test's arithmetic is then relative to the
+ *  pair, so a small pair far from the origin keeps its own precision (a 2e-6 m box at 4e6 m gave depths
+ *  of 1e10 in float). Nearer the origin the test gets the transforms as they are (same bits). */
+int McdNfCallCentred(McdNearfieldFn fn, const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2,
+                     MeMatrix4 tm2, MeReal tolerance, McdContact *contacts, int maxContacts, void **cache);
+/** Run the built-in test for any order of the two geometries (swapping contacts back if needed),
+ *  centred as McdNfCallCentred. */
 int McdNfCollide(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2, MeReal tolerance,
                  McdContact *contacts, int maxContacts);
 

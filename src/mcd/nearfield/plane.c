@@ -65,16 +65,29 @@ int McdNfBoxPlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryDat
     return count;
 }
 
+/* Below this sine of a rim's tilt, the rim direction is made perpendicular to the axis again. */
+#define MCD_NF_RIM_SIN ME_R(0.01)
+
 /* Four points of a rim (centre c, unit axis a, radius r), the first the lowest towards the plane. */
 static int rimPoints(McdContact *c, int count, int maxc, MeMatrix4 plane, const MeVector3 centre,
                      const MeVector3 a, MeReal r, MeReal tol)
 {
     MeVector3 u, v, p;
+    MeReal mag;
     int k;
     MeVector3ScaleAndAdd(u, plane[2], -MeVector3Dot(plane[2], a), a);
     MeVector3Scale(u, -ME_R(1.0));
-    if (!MeVector3NormalizeSafe(u) || MeVector3Magnitude(u) < ME_R(0.5))
+    /* u's length is the sine of the tilt. When it is small its direction is partly rounding noise,
+     * which need not lie across the axis: take the axial part out again (any direction across the
+     * axis is then a rim direction, the lowest one to rounding). */
+    mag = MeVector3Magnitude(u);
+    if (!MeVector3NormalizeSafe(u))
         McdNfPerpendicular(u, a); /* axis along the plane normal: any rim direction */
+    else if (mag < MCD_NF_RIM_SIN) {
+        MeVector3MultiplyAdd(u, -MeVector3Dot(u, a), a);
+        if (!MeVector3NormalizeSafe(u) || MeVector3Magnitude(u) < ME_R(0.5))
+            McdNfPerpendicular(u, a);
+    }
     MeVector3Cross(v, a, u);
     for (k = 0; k < 4; k++) {
         MeReal cu = k == 0 ? ME_R(1.0) : (k == 2 ? -ME_R(1.0) : ME_R(0.0));

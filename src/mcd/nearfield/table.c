@@ -49,6 +49,74 @@ McdNearfieldFn McdNfFind(int type1, int type2, int *swapped)
     return NULL;
 }
 
+/* A bound on a built-in primitive's distance from its origin (0 for the plane, which has no size, and
+ * for types this file does not know). */
+static MeReal reachOf(const McdGeometryData *g)
+{
+    switch (g->type) {
+    case kMcdGeometryTypeSphere: return g->u.sphere.radius;
+    case kMcdGeometryTypeBox: return MeFabs(g->u.box.radii[0]) + MeFabs(g->u.box.radii[1]) + MeFabs(g->u.box.radii[2]);
+    case kMcdGeometryTypeCylinder: return g->u.cylinder.radius + g->u.cylinder.halfHeight;
+    case kMcdGeometryTypeSphyl: return g->u.sphyl.radius + g->u.sphyl.halfHeight;
+    case kMcdGeometryTypeCone:
+        return g->u.cone.lowerRadius + MeFabs(g->u.cone.zLower) + MeFabs(g->u.cone.zUpper);
+    default: return ME_R(0.0);
+    }
+}
+
+/* Keep the contacts a pair test could have meant: finite, unit normal, not beyond the tolerance, and
+ * (built-in types) no deeper and no farther from geometry 1 than the two shapes reach. Others are dropped and counted: they come
+ * from arithmetic beyond the precision (an aspect ratio of 1e11 in float, say). */
+static int keepPlausible(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
+                         MeReal tolerance, McdContact *contacts, int n)
+{
+    const MeBool builtIn = g1->type < kMcdGeometryBuiltInTypes && g2->type < kMcdGeometryBuiltInTypes;
+    MeReal bound = MEINFINITY;
+    int k, kept = 0;
+    if (builtIn)
+        bound = MeVector3Distance(tm1[3], tm2[3]) + ME_R(2.0) * (reachOf(g1) + reachOf(g2)) + tolerance;
+    for (k = 0; k < n; k++) {
+        const McdContact *c = &contacts[k];
+        if (McdNfContactIsValid(c) && c->separation >= -bound &&
+            c->separation <= tolerance * ME_R(1.01) + MCD_NF_REL_EPS * (builtIn ? bound : ME_R(0.0)) &&
+            (!builtIn || MeVector3Distance(c->position, tm1[3]) <= bound))
+            contacts[kept++] = *c;
+        else
+            McdNfCountFallback();
+    }
+    return kept;
+}
+
+int McdNfCallCentred(McdNearfieldFn fn, const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2,
+                     MeMatrix4 tm2, MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
+{
+    MeMatrix4 a, b;
+    MeVector3 origin;
+    MeReal far = MeMAX3(MeFabs(tm1[3][0]), MeFabs(tm1[3][1]), MeFabs(tm1[3][2]));
+    int n, k;
+    /* Near the origin (within MCD_NF_CENTRE_RATIO sizes of the pair) rounding of the world coordinates
+     * costs nothing worth the copies: the test sees the models' own transforms. User types too. */
+    if (g1->type >= kMcdGeometryBuiltInTypes || g2->type >= kMcdGeometryBuiltInTypes ||
+        !(far > MCD_NF_CENTRE_RATIO * (reachOf(g1) + reachOf(g2)))) {
+        n = fn(g1, tm1, g2, tm2, tolerance, contacts, maxContacts, cache);
+        if (n < 0 || n > maxContacts)
+            return n; /* the dispatcher reports it */
+        return keepPlausible(g1, tm1, g2, tm2, tolerance, contacts, n);
+    }
+    MeVector3Copy(origin, tm1[3]);
+    MeMatrix4Copy(a, tm1);
+    MeMatrix4Copy(b, tm2);
+    MeVector3Set(a[3], ME_R(0.0), ME_R(0.0), ME_R(0.0));
+    MeVector3Subtract(b[3], tm2[3], origin);
+    n = fn(g1, a, g2, b, tolerance, contacts, maxContacts, cache);
+    if (n < 0 || n > maxContacts)
+        return n;
+    n = keepPlausible(g1, a, g2, b, tolerance, contacts, n);
+    for (k = 0; k < n; k++)
+        MeVector3Add(contacts[k].position, contacts[k].position, origin);
+    return n;
+}
+
 int McdNfCollide(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2, MeReal tolerance,
                  McdContact *contacts, int maxContacts)
 {
@@ -57,8 +125,8 @@ int McdNfCollide(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData
     if (!fn)
         return 0;
     if (!swapped)
-        return fn(g1, tm1, g2, tm2, tolerance, contacts, maxContacts, NULL);
-    n = fn(g2, tm2, g1, tm1, tolerance, contacts, maxContacts, NULL);
+        return McdNfCallCentred(fn, g1, tm1, g2, tm2, tolerance, contacts, maxContacts, NULL);
+    n = McdNfCallCentred(fn, g2, tm2, g1, tm1, tolerance, contacts, maxContacts, NULL);
     for (k = 0; k < n; k++) {
         void *e = contacts[k].element1;
         MeVector3Scale(contacts[k].normal, -ME_R(1.0));

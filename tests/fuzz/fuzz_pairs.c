@@ -1,0 +1,179 @@
+/* fuzz_pairs -- every pair test of the primitives, through McdIntersect and straight (McdNfCollide).
+ *
+ * Bytes decode to two geometry types, their sizes (in range, or raw and then refused with a code),
+ * their placements (proper rotations within the position range, the second often near the first so
+ * that they touch; or twelve raw reals, which McdModelUpdate must refuse or find to be a rotation),
+ * the contact tolerances and the room for contacts. Claims: every contact that comes out has a finite
+ * position and separation and a unit normal, its separation is at most the tolerance and no deeper
+ * than the pair's extent allows; the pair test itself (before Mcd's final guard) makes the same
+ * promise; nothing reads or writes out of bounds (ASan, UBSan). */
+#include "fuzz_common.h"
+
+#include "mcd/framework.h"
+#include "mcd/nearfield/nearfield.h"
+
+static McdFrameworkID fw;
+static const double LENGTH_SCALE = 1;
+
+static const int TYPES[] = {kMcdGeometryTypeSphere, kMcdGeometryTypeBox,    kMcdGeometryTypePlane,
+                            kMcdGeometryTypeCylinder, kMcdGeometryTypeSphyl, kMcdGeometryTypeCone};
+
+/* A geometry of the type chosen by the bytes; NULL when a raw size was (rightly) refused. */
+static McdGeometryID makeGeometry(FuzzInput *in, int type)
+{
+    int raw = 0;
+    unsigned long before = MeMessageGetTotalCount(ME_LEVEL_WARNING);
+    MeReal a = fuzz_size(in, LENGTH_SCALE, &raw), b = fuzz_size(in, LENGTH_SCALE, &raw),
+           c = fuzz_size(in, LENGTH_SCALE, &raw);
+    McdGeometryID g = NULL;
+    switch (type) {
+    case kMcdGeometryTypeSphere: g = McdSphereCreate(fw, a); break;
+    case kMcdGeometryTypeBox: g = McdBoxCreate(fw, a, b, c); break;
+    case kMcdGeometryTypePlane: g = McdPlaneCreate(fw); break;
+    case kMcdGeometryTypeCylinder: g = McdCylinderCreate(fw, a, b); break;
+    case kMcdGeometryTypeSphyl: g = McdSphylCreate(fw, a, (fuzz_byte(in) & 3) == 0 ? 0 : b); break;
+    default: g = McdConeCreate(fw, a, b); break;
+    }
+    /* refused exactly when a raw size fell outside the range, and then with a message */
+    if (!g)
+        FUZZ_CHECK(raw && MeMessageGetTotalCount(ME_LEVEL_WARNING) > before, "geometry type %d refused silently",
+                   type);
+    return g;
+}
+
+/* Place m: a proper rotation within range (near `near` when given), or raw reals. */
+static void place(FuzzInput *in, McdModelID m, MeReal (*tm)[4], const MeReal *near, double nearRange)
+{
+    unsigned mode = fuzz_byte(in);
+    MeMatrix4 before;
+    McdModelGetWorldTransform(m, before);
+    if ((mode & 15) == 15) {
+        fuzz_raw_transform(in, tm);
+        unsigned long warned = MeMessageGetTotalCount(ME_LEVEL_WARNING);
+        McdModelUpdate(m);
+        MeMatrix4 now;
+        McdModelGetWorldTransform(m, now);
+        if (MeMessageGetTotalCount(ME_LEVEL_WARNING) > warned) { /* refused: nothing changed */
+            FUZZ_CHECK(memcmp(now, before, sizeof now) == 0, "a refused transform changed the model");
+        } else { /* accepted: it must have been a placed rotation */
+            MeMatrix3 R;
+            MeMatrix4TMGetRotation(R, now);
+            FUZZ_CHECK(MeMatrix3IsValidOrientationMatrix(R, ME_R(2e-3)), "a non-rotation was accepted");
+            FUZZ_CHECK(McdPositionInRange(McdFrameworkFromID(fw, "fuzz"), now[3]), "a far position was accepted");
+        }
+        return;
+    }
+    fuzz_rotation(in, tm);
+    if (near && (mode & 1))
+        fuzz_position(in, near, nearRange, tm[3]);
+    else
+        fuzz_position(in, NULL, 1e7 * LENGTH_SCALE, tm[3]);
+    McdModelUpdate(m);
+}
+
+static double extent(McdModelID m)
+{
+    MeVector3 c;
+    MeReal r;
+    McdModelGetBSphere(m, c, &r);
+    return isfinite(r) ? (double)r : 0; /* a plane's depth is bounded by the distance term */
+}
+
+static void checkContacts(const McdContact *c, int n, double tolerance, double bound, const char *who)
+{
+    for (int i = 0; i < n; i++) {
+        FUZZ_CHECK(fuzz_vector_finite(c[i].position) && isfinite(c[i].separation), "%s: contact %d not finite",
+                   who, i);
+        FUZZ_CHECK(fuzz_vector_finite(c[i].normal) && fuzz_is_unit(c[i].normal, 1e-3),
+                   "%s: contact %d normal (%g %g %g) not unit", who, i, (double)c[i].normal[0],
+                   (double)c[i].normal[1], (double)c[i].normal[2]);
+        /* the iterative path is accurate to a few epsilons of the pair's size (MCD_NF_REL_EPS) */
+        FUZZ_CHECK((double)c[i].separation <= tolerance * 1.01 + 2 * (double)MCD_NF_REL_EPS * bound,
+                   "%s: contact %d separation %g beyond the tolerance %g", who, i, (double)c[i].separation, tolerance);
+        FUZZ_CHECK((double)c[i].separation >= -bound, "%s: contact %d separation %g deeper than %g", who, i,
+                   (double)c[i].separation, bound);
+    }
+}
+
+/* FUZZ_VERBOSE=1: print the decoded pair (to reproduce a finding in a test). */
+static void describe(McdModelID m1, McdModelID m2)
+{
+    McdModelID m[2] = {m1, m2};
+    for (int i = 0; i < 2; i++) {
+        McdModelData *d = McdModelFromID(m[i], "fuzz");
+        MeMatrix4 w;
+        McdModelGetWorldTransform(m[i], w);
+        fprintf(stderr, "model %d: %s tol %.9g data", i + 1, McdGeometryGetTypeName(McdModelGetGeometry(m[i])),
+                (double)McdModelGetContactTolerance(m[i]));
+        const MeReal *u = (const MeReal *)(const void *)&d->geometry->u;
+        for (int k = 0; k < 6; k++)
+            fprintf(stderr, " %.9g", (double)u[k]);
+        fprintf(stderr, "\n");
+        for (int r = 0; r < 4; r++)
+            fprintf(stderr, "  %.9g %.9g %.9g\n", (double)w[r][0], (double)w[r][1], (double)w[r][2]);
+    }
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    FuzzInput in = {data, size};
+    if (!fw) {
+        fuzz_quiet_messages();
+        fw = McdInit(0, 8, 0, (MeReal)LENGTH_SCALE);
+        McdPrimitivesRegisterInteractions(fw);
+    }
+    int t1 = TYPES[fuzz_byte(&in) % 6], t2 = TYPES[fuzz_byte(&in) % 6];
+    McdGeometryID g1 = makeGeometry(&in, t1), g2 = makeGeometry(&in, t2);
+    McdModelID m1 = g1 ? McdModelCreate(g1) : NULL, m2 = g2 ? McdModelCreate(g2) : NULL;
+    if (m1 && m2) {
+        MeMatrix4 tm1, tm2;
+        MeMatrix4TMMakeIdentity(tm1);
+        MeMatrix4TMMakeIdentity(tm2);
+        McdModelSetTransformPtr(m1, tm1);
+        McdModelSetTransformPtr(m2, tm2);
+        McdModelSetContactTolerance(m1, (MeReal)(fuzz_log(&in, 1e-6, 1) * LENGTH_SCALE));
+        McdModelSetContactTolerance(m2, (MeReal)(fuzz_log(&in, 1e-6, 1) * LENGTH_SCALE));
+        place(&in, m1, tm1, NULL, 0);
+        MeMatrix4 w1;
+        McdModelGetWorldTransform(m1, w1);
+        place(&in, m2, tm2, w1[3], 2 * (extent(m1) + extent(m2)) + 1e-3);
+
+        if (getenv("FUZZ_VERBOSE"))
+            describe(m1, m2);
+        McdModelPairID pair = McdModelPairCreate(m1, m2);
+        McdHello(pair);
+        McdContact contacts[16];
+        McdIntersectResult r = {.contacts = contacts, .contactMaxCount = 1 + (int)(fuzz_byte(&in) % 16)};
+        McdIntersect(pair, &r);
+        MeMatrix4 a, b;
+        McdModelGetWorldTransform(m1, a);
+        McdModelGetWorldTransform(m2, b);
+        double tolerance = (double)McdModelGetContactTolerance(m1) + (double)McdModelGetContactTolerance(m2);
+        double d = sqrt(pow((double)a[3][0] - b[3][0], 2) + pow((double)a[3][1] - b[3][1], 2) +
+                        pow((double)a[3][2] - b[3][2], 2));
+        double bound = d + 2 * (extent(m1) + extent(m2)) + tolerance + 1e-3;
+        FUZZ_CHECK(r.contactCount >= 0 && r.contactCount <= r.contactMaxCount, "contact count %d", r.contactCount);
+        checkContacts(contacts, r.contactCount, tolerance, bound, "McdIntersect");
+        if (r.contactCount > 0)
+            FUZZ_CHECK(fuzz_vector_finite(r.normal) && fuzz_is_unit(r.normal, 1e-3), "result normal not unit");
+        McdGoodbye(pair);
+        McdModelPairDestroy(pair);
+
+        /* the pair test itself, without Mcd's last guard: the sources must hold the promise too */
+        McdModelData *d1 = McdModelFromID(m1, "fuzz"), *d2 = McdModelFromID(m2, "fuzz");
+        int n = McdNfCollide(d1->geometry, a, d2->geometry, b, (MeReal)tolerance, contacts, 4);
+        FUZZ_CHECK(n >= 0 && n <= 4, "pair test count %d", n);
+        checkContacts(contacts, n, tolerance, bound, "pair test");
+        McdModelSetTransformPtr(m1, NULL);
+        McdModelSetTransformPtr(m2, NULL);
+    }
+    if (m1)
+        McdModelDestroy(m1);
+    if (m2)
+        McdModelDestroy(m2);
+    if (g1)
+        McdGeometryDestroy(g1);
+    if (g2)
+        McdGeometryDestroy(g2);
+    return 0;
+}
