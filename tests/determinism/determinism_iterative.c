@@ -28,11 +28,11 @@
 #define HASH_EVERY 10
 
 #if KARMA_DOUBLE
-#  define GOLDEN_PILE 0xc430e0d9b4135832ull
-#  define GOLDEN_PYRAMID 0xc675ccbfeb8d91d9ull
+#  define GOLDEN_PILE 0x04fdffb87d2b6dfeull
+#  define GOLDEN_PYRAMID 0xf792a5ceef33643dull
 #else
-#  define GOLDEN_PILE 0xb5752c22ba30543bull
-#  define GOLDEN_PYRAMID 0x6c9e91b6868e13e8ull
+#  define GOLDEN_PILE 0x6e9c8e266b420b90ull
+#  define GOLDEN_PYRAMID 0x18701b2344ba6c5full
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};

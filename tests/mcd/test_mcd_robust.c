@@ -292,7 +292,7 @@ static void invalid_contacts_are_dropped_and_counted(void **state)
     McdFrameworkGetCounters(fw, &k0);
     McdFrameworkData *f = McdFrameworkFromID(fw, "test");
     McdNearfieldFn saved = McdFrameworkGetInteraction(f, kMcdGeometryTypeSphere, kMcdGeometryTypeSphere);
-    McdFrameworkSetInteraction(f, kMcdGeometryTypeSphere, kMcdGeometryTypeSphere, badTest);
+    McdFrameworkSetInteraction(f, kMcdGeometryTypeSphere, kMcdGeometryTypeSphere, badTest, "test");
     McdModelID m1 = McdModelCreate(McdSphereCreate(fw, 1)), m2 = McdModelCreate(McdSphereCreate(fw, 1));
     McdModelPairID pair = McdModelPairCreate(m1, m2);
     McdHello(pair);
@@ -306,7 +306,7 @@ static void invalid_contacts_are_dropped_and_counted(void **state)
     assert_int_equal((k1.droppedContacts - k0.droppedContacts) + (k1.pairFallbacks - k0.pairFallbacks), 2);
     McdGoodbye(pair);
     McdModelPairDestroy(pair);
-    McdFrameworkSetInteraction(f, kMcdGeometryTypeSphere, kMcdGeometryTypeSphere, saved);
+    McdFrameworkSetInteraction(f, kMcdGeometryTypeSphere, kMcdGeometryTypeSphere, saved, "test");
     McdGeometryID g1 = McdModelGetGeometry(m1), g2 = McdModelGetGeometry(m2);
     McdModelDestroy(m1);
     McdModelDestroy(m2);

@@ -94,6 +94,7 @@ static void sceneInit(Scene *s)
     sizes.dynamicConstraintsMaxCount = MAX_JOINTS + 8 * MAX_BODIES;
     sizes.collisionPairsMaxCount = 8 * MAX_BODIES;
     sizes.collisionGeometryInstancesMaxCount = 16;
+    sizes.massScale = ME_R(50.0); /* the bodies weigh 2 to 200 kg: a typical mass, so no ME_ERR_MASS_SCALE */
     s->u = MstUniverseCreate(&sizes);
     s->w = MstUniverseGetWorld(s->u);
     MdtWorldSetGravity(s->w, 0, 0, ME_R(-9.81));
