@@ -23,8 +23,10 @@ static inline void KeaBlockSymmetricApply(int m, const MeReal *M, const MeReal *
 }
 
 /* out = J_b (v0, v1) for the block of m rows from s (all on the same two bodies): a block of more
- * than 4 rows from its transpose JT (12 x m), column by column, each out[r] its own running sum
+ * than KEA_GATHER_ROW_BY_ROW rows from its transpose JT (12 x m), column by column, each out[r] its own running sum
  * over the 12 components in order; a smaller one row by row. */
+_Static_assert(KEA_GATHER_ROW_BY_ROW == 4, "KeaBlockGatherSmall is written out for 4 rows");
+
 static inline void KeaBlockGatherSmall(const KeaIterativeWork *w, int s, int m, const KeaVel4 *v0, const KeaVel4 *v1,
                                 MeReal *out)
 {
@@ -41,7 +43,7 @@ static inline void KeaBlockGatherSmall(const KeaIterativeWork *w, int s, int m, 
 static inline void KeaBlockGather(const KeaIterativeWork *w, int s, int m, const KeaVel4 *v0, const KeaVel4 *v1,
                                   MeReal *out)
 {
-    if (m <= 4) { /* a ball joint, a one-point contact: row by row */
+    if (m <= KEA_GATHER_ROW_BY_ROW) { /* a ball joint, a contact point: row by row */
         KeaBlockGatherSmall(w, s, m, v0, v1, out);
         return;
     }
@@ -112,8 +114,6 @@ static inline void KeaBlockScatter(int m, const KeaJacobianRow *B, const MeReal 
                 KeaRowApply4(&B[r], d[r], v0, v1);
     } else if (m == 3) { /* a contact */
         KeaBlockScatterSized(3, B, d, v0, v1);
-    } else if (m == 12) {
-        KeaBlockScatterSized(12, B, d, v0, v1);
     } else {
         KeaBlockScatterSized(m, B, d, v0, v1);
     }

@@ -145,7 +145,7 @@ void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
         w->blockMatrix[w->nBlocks] = offset;
         for (r = 0; r < m; ++r)
             w->rowBlock[i + r] = w->nBlocks;
-        for (r = 0; r < m && m > 4; ++r) { /* only KeaBlockGather's large blocks read JT */
+        for (r = 0; r < m && m > KEA_GATHER_ROW_BY_ROW; ++r) { /* only KeaBlockGather's large blocks read JT */
             MeReal *JT = w->JT + 12 * i + r;
             for (c = 0; c < 3; ++c) {
                 JT[c * m] = w->J[i + r].lin0[c];
@@ -158,7 +158,7 @@ void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
             MeReal *A = w->blockA + offset, column[KEA_MAX_BLOCK_ROWS];
             for (c = 0; c < m; ++c) {
                 const KeaJacobianRow *Bc = &w->B[i + c];
-                if (m <= 4) { /* KeaBlockGatherSmall's sums, reading B_c's halves in place */
+                if (m <= KEA_GATHER_ROW_BY_ROW) { /* KeaBlockGatherSmall's sums, reading B_c's halves in place */
                     for (r = 0; r < m; ++r)
                         A[r * m + c] = KeaRowDot4(&w->J[i + r], Bc);
                 } else {

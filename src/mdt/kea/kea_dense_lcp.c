@@ -99,13 +99,6 @@ KeaDenseWork *KeaDenseWorkCreate(KeaArena *arena, int n)
     return result;
 }
 
-size_t KeaDenseWorkspaceBytes(int n)
-{
-    KeaArena counter = {NULL, 0, 0};
-    (void)KeaDenseWorkCreate(&counter, n);
-    return counter.used;
-}
-
 /* Effective bounds of row i (friction links applied, same rule as KeaRowBounds). */
 static void KeaDenseLinkBounds(const KeaDenseLcp *lcp, int i, MeReal xLink, MeReal *lo, MeReal *hi)
 {
@@ -549,7 +542,7 @@ KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses,
                            MeReal *x, KeaStats *stats)
 {
     const int n = lcp->n;
-    const int pivotCap = stats->pivots + (maxPivots > 0 ? maxPivots : 8 * n + 64);
+    const int pivotCap = stats->pivots + (maxPivots > 0 ? maxPivots : KEA_DENSE_PIVOTS_PER_ROW * n + KEA_DENSE_PIVOTS_EXTRA);
     KeaStatus status;
     int i, polished = 0, passes = 1;
 

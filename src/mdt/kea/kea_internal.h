@@ -6,7 +6,8 @@
  * - row kernels: J_i . (dv_b0, dv_b1), with B_i = M^-1 J_i^T stored as a row, and the column
  *   kernel of the iterative path's blocks,
  * - the updatable Cholesky factor of the direct path,
- * - the entry points of the two paths. */
+ * - the entry points of the two paths.
+ * The tuning constants are in kea_tuning.h. */
 #ifndef KEA_INTERNAL_H
 #define KEA_INTERNAL_H
 
@@ -17,6 +18,7 @@
 
 #include "kea.h"
 #include "kea_lanes.h"
+#include "kea_tuning.h"
 
 /* ---- scalars -------------------------------------------------------------------------------- */
 
@@ -26,8 +28,8 @@ static inline MeReal KeaMax(MeReal a, MeReal b) { return a > b ? a : b; }
 static inline MeReal KeaMin(MeReal a, MeReal b) { return a < b ? a : b; }
 
 /** mid(lo, v, hi) for lo <= hi (every caller's bounds are): v < lo gives lo, v > hi gives hi, else v
- *  (NaN stays NaN). Written as min then max so that it compiles to minss / maxss, not to branches
- *  (a clamp's outcome is data: mispredicted about one time in five in the sweeps). */
+ *  (NaN stays NaN). Written as min then max so that it compiles to minss / maxss, not to branches:
+ *  a clamp's outcome is data, which a branch predictor guesses badly in the sweeps. */
 static inline MeReal KeaClamp(MeReal v, MeReal lo, MeReal hi)
 {
     const MeReal t = hi < v ? hi : v; /* minss */
@@ -36,19 +38,6 @@ static inline MeReal KeaClamp(MeReal v, MeReal lo, MeReal hi)
 
 /** A bound at or beyond +-MEINFINITY means "no bound". */
 static inline int KeaIsFinite(MeReal bound) { return bound > -MEINFINITY && bound < MEINFINITY; }
-
-/* Relative thresholds of the direct path, tied to the precision:
- *  KEA_PIVOT_FLOOR: a free-block Cholesky pivot d (squared) below KEA_PIVOT_FLOOR * A_ii is raised
- *    to it (the row then behaves as if it had that much extra softness);
- *  KEA_DIRECT_TOL: multipliers and feasibility are judged against KEA_DIRECT_TOL times the problem's
- *    scale (|r| + max A_ii |x|), so that rounding noise does not cause pivots. */
-#if KARMA_DOUBLE
-#  define KEA_PIVOT_FLOOR ME_R(1e-12)
-#  define KEA_DIRECT_TOL ME_R(1e-12)
-#else
-#  define KEA_PIVOT_FLOOR ME_R(1e-6)
-#  define KEA_DIRECT_TOL ME_R(2e-6)
-#endif
 
 /* ---- workspace arena ------------------------------------------------------------------------ */
 
@@ -217,9 +206,6 @@ static inline void KeaFrictionBounds(MeReal lo, MeReal hi, MeReal mu, MeReal xLi
     *effHi = KeaMin(KeaMax(hi, ME_R(0.0)), bound);
 }
 
-/** Effective bounds of row i when its linked normal row has the impulse xLink. */
-void KeaLinkBounds(const KeaProblem *problem, int i, MeReal xLink, MeReal *lo, MeReal *hi);
-
 /** KeaRowBounds, inline: the iterative path asks for a row's bounds several times per sweep. */
 static inline void KeaRowBoundsInline(const KeaProblem *problem, const MeReal *x, int i, MeReal *lo, MeReal *hi)
 {
@@ -321,8 +307,6 @@ typedef struct KeaDenseWork KeaDenseWork;
 
 /** Lay out a dense-solver workspace for n rows in the arena (NULL in counting mode). */
 KeaDenseWork *KeaDenseWorkCreate(KeaArena *arena, int n);
-/** Bytes KeaDenseWorkCreate takes for n rows (from an aligned arena position). */
-size_t KeaDenseWorkspaceBytes(int n);
 /** Solve the LCP exactly (kea_dense_lcp.c top comment). x: warm start in, solution out. Adds its
  *  pivots, factorisations, friction passes and regularised pivots to stats. maxPivots 0 = automatic
  *  (8 n + 64). */
@@ -360,8 +344,6 @@ KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params,
  *  maxDirectRows rows: nothing solved, x untouched. Never returned by KeaSolve. */
 #define KeaStatusDeclined ((KeaStatus)-1)
 
-/** Auto takes the direct path up to this many times maxDirectRows rows when the factor is sparse. */
-#define KEA_SPARSE_DIRECT_FACTOR 4
 KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
                             MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
 

@@ -86,8 +86,8 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
 
 /* One PGS sweep over the blocks, forwards or backwards; returns the largest residual met (the rows'
  * residuals before their steps). Only whether that is within the tolerance matters, so once a row is
- * above it the block steps stop measuring (a sixth of a contact step's work, on a pile that does not
- * converge in ten sweeps); the steps themselves are the same either way. */
+ * above it the block steps stop measuring (a sizeable part of a contact step's work, and a pile
+ * rarely converges within its sweeps); the steps themselves are the same either way. */
 static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
                        MeReal omega, MeReal *x, KeaStats *stats, int backward)
 {

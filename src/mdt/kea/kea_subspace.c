@@ -14,7 +14,7 @@
  * SM never makes the QP worse; the next sweep re-applies the friction links and the active set.
  * Each CG step costs about half a sweep; KeaStats.subspaceSteps counts them.
  *
- * The schedule (KeaSubspaceMinimise; its thresholds are the KEA_SM_* constants of kea_iterative.h).
+ * The schedule (KeaSubspaceMinimise; its thresholds are the KEA_SM_* constants of kea_tuning.h).
  * SM pays when the sweeps have (nearly) settled which rows sit at a bound: CG on a free set that the
  * next sweep changes again is mostly thrown away. So an SM chance is skipped when many rows went
  * from free to bound or back since the last chance (KEA_SM_SKIP_MIN_CHANGED, KEA_SM_SKIP_FRACTION),
@@ -228,7 +228,7 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
         KeaPrecondition(w, nFree, w->res, w->z);
         ++steps;
         rzNew = KeaDotN4(w->res, w->z, nFree);
-        if (!(rzNew > ME_SMALL_EPSILON * ME_SMALL_EPSILON * rz0))
+        if (!(rzNew > KEA_SM_CG_STOP * rz0))
             break;
         beta = rzNew / rz;
         for (p = 0; p < nFree; ++p)
