@@ -111,6 +111,18 @@ typedef struct KeaFreePiece {
     int body[2];  /**< the row halves' bodies (the world: nb) */
 } KeaFreePiece;
 
+/** What one sweep carries from block to block and hands to each block step: a local of KeaSweep
+ *  (the steps are inlined into it, so its fields live in registers, where in the work struct each
+ *  block's tally would wait for the last one's store). */
+typedef struct KeaSweepState {
+    MeReal decrease;   /**< the sweep's running estimate of the QP objective's decrease */
+    int changed;       /**< plain contacts' rows that went between free and a bound so far */
+    int measure;       /**< the residual is still within the tolerance: measure this block's */
+    int tally;         /**< an SM step ran before this sweep: the contacts tally the decrease */
+    int maxPasses;     /**< the dense solver's friction passes (KeaParameters.maxFrictionPasses) */
+    KeaStats *stats;   /**< the solve's statistics (the dense solver's pivots) */
+} KeaSweepState;
+
 typedef struct KeaIterativeWork {
     KeaBodyColumns *bodyColumns; /**< nb: inverse masses and inertia columns, for B */
     KeaJacobianRow *B;     /**< M^-1 J^T per row */
@@ -130,9 +142,9 @@ typedef struct KeaIterativeWork {
     unsigned char *blockContact;  /**< KEA_CONTACT_* kind of a plain contact block (KeaIsPlainContact), else 0 */
     unsigned char *wasFree;       /**< SM: the row was free at the last SM step (or the warm start) */
     int skippedLast;              /**< SM: the last SM step was skipped */
-    MeReal sweepDecrease;         /**< estimated decrease of the QP objective by the current sweep
-                                       (its contacts tallied only in a sweep after an SM step, the
-                                       one whose figure is read) */
+    MeReal sweepDecrease;         /**< estimated decrease of the QP objective by the last sweep
+                                       (KeaSweepState.decrease at its end; its contacts tallied only
+                                       in a sweep after an SM step, the one whose figure is read) */
     MeReal smDecrease;            /**< decrease of the objective by that SM step (0 if rejected) */
     int smRan;                    /**< an SM step ran since the last sweep */
     int smUnpaid;                 /**< SM: the last SM step did less than the sweep after it */
