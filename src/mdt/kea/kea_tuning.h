@@ -28,6 +28,14 @@
  *  still stored densely (n^2), which this cap bounds. */
 #define KEA_SPARSE_DIRECT_FACTOR 4
 
+/** The friction polish accepts its candidate when every row's natural map is within
+ *  KEA_POLISH_TOL_W KEA_DIRECT_TOL of the problem's scale and its bounds within KEA_POLISH_TOL_X
+ *  KEA_DIRECT_TOL |x|: the coupled solve carries more rounding than one pivot's (a Woodbury update
+ *  and a refinement step), and a rejected polish costs another friction pass. The passes also stop
+ *  when the bounds moved less than KEA_POLISH_TOL_W KEA_DIRECT_TOL |x|. */
+#define KEA_POLISH_TOL_W ME_R(10.0)
+#define KEA_POLISH_TOL_X ME_R(100.0)
+
 /** The dense solver's automatic pivot budget, KEA_DENSE_PIVOTS_PER_ROW n + KEA_DENSE_PIVOTS_EXTRA
  *  (maxPivots 0): a warm-started solve takes a few pivots, a cold one about one per row that
  *  changes state; the budget only stops a cycling solve, and the extra covers tiny problems. */
