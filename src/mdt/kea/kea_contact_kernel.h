@@ -74,18 +74,21 @@ static inline int KeaContactActiveSets(const MeReal *A, const MeReal *r, const M
            KeaContactTry(A, r, mu, -1, 1, out) || KeaContactTry(A, r, mu, -1, -1, out);
 }
 
-/* KeaContactActiveSets for a block given by its local bounds and links: 0 unless it is a contact
- * (normal row with bounds [0, inf) and no link, two rows linked to it with no bounds of their own). */
-static inline int KeaContactSolve(const MeReal *A, const MeReal *r, const MeReal *lo, const MeReal *hi, const int *link,
-                           const MeReal *mu, MeReal *out)
+/* KeaContactActiveSets for a 3-row block with matrix A given by its local LCP in w (r_loc in
+ * localR, bounds in localLo and localHi, links in localLink; the solution into localX): 0 unless it
+ * is a contact (normal row with bounds [0, inf) and no link, two rows linked to it with no bounds of
+ * their own). mu: the block's rows' friction coefficients. */
+static inline int KeaContactSolve(const MeReal *A, KeaIterativeWork *w, const MeReal *mu)
 {
+    const MeReal *lo = w->localLo, *hi = w->localHi;
+    const int *link = w->localLink;
     int k;
     if (link[0] >= 0 || lo[0] != ME_R(0.0) || KeaIsFinite(hi[0]))
         return 0;
     for (k = 1; k < 3; ++k)
         if (link[k] != 0 || KeaIsFinite(lo[k]) || KeaIsFinite(hi[k]))
             return 0;
-    return KeaContactActiveSets(A, r, mu, out);
+    return KeaContactActiveSets(A, w->localR, mu, w->localX);
 }
 
 /* A plain contact's rows free now (KeaRowIsFree: its normal row's bounds [0, hi), its friction

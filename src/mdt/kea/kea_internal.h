@@ -116,7 +116,9 @@ static inline MeReal KeaRowResidual(MeReal d, MeReal x, MeReal w, MeReal lo, MeR
 void KeaColumnsApply(int m, int nc, const MeReal *M, const MeReal *in, MeReal *out);
 
 /** out = M (lin0, ang0, lin1, ang1) for the m x 12 column-major M (the 3-vectors read in place);
- *  the same bits as KeaColumnsApply(m, 12, ...) on the 12 components in that order. */
+ *  the same bits as KeaColumnsApply(m, 12, ...) on the 12 components in that order. The four
+ *  3-vectors are separate arguments because this column kernel serves padded and unpadded
+ *  callers alike; gathering them into a struct first is the copy it exists to avoid. */
 void KeaColumnsApplyPair(int m, const MeReal *M, const MeReal *lin0, const MeReal *ang0, const MeReal *lin1,
                          const MeReal *ang1, MeReal *out);
 
@@ -224,7 +226,9 @@ static inline void KeaRowBoundsInline(const KeaProblem *problem, const MeReal *x
 void KeaBodyIncidence(const KeaProblem *problem, int *incidence, int *start);
 /** A = J M^-1 J^T + diag(eps), dense n x n row-major, using B (M^-1 J^T rows) and the incidence.
  *  Only the entries in A's pattern (rows sharing a body, as the direct path builds it) are written;
- *  the rest of A is left as it was and must not be read. */
+ *  the rest of A is left as it was and must not be read. Seven arguments: the pairs (incidence,
+ *  start) and (patternStart, pattern) are the direct path's two sparse structures, each a CSR
+ *  pair its set-up fills once; a struct for them would serve this one call. */
 void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeReal *A, const int *incidence,
                         const int *start, const int *patternStart, const int *pattern);
 
@@ -336,7 +340,9 @@ size_t KeaIterativeWorkspaceBytes(int nRows, int nBodies);
 
 /* Both take a validated problem, an arena of at least their WorkspaceBytes, write x (nRows) and
  * dv (nBodies, never NULL here) and fill the path-specific fields of stats and stats->residual
- * (KeaResidual's measure, from the diagonal each path already has). */
+ * (KeaResidual's measure, from the diagonal each path already has). KeaSolveDirect has KeaSolve's
+ * arguments with the arena for the buffer and, seventh, mayDecline (Auto's "only if the factor is
+ * sparse"). */
 KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
                          int mayDecline, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
 

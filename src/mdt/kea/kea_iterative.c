@@ -73,7 +73,7 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
         w->localX[r] = x[s + r];
     }
     if (m == 3 && problem->mu &&
-        KeaContactSolve(A, w->localR, w->localLo, w->localHi, w->localLink, problem->mu + s, w->localX)) {
+        KeaContactSolve(A, w, problem->mu + s)) {
         KeaBlockApplyDeltas(w, s, m, x, &sweep->decrease);
         return worst;
     }
