@@ -28,8 +28,8 @@
  * Memory: Kea never allocates. The caller asks KeaMemoryRequired(nRows, nBodies, path) and passes a
  * workspace of at least that many bytes (any alignment) to KeaSolve.
  *
- * The algorithms, their costs and measured accuracy are described in docs/kea.md and at the top of
- * kea_direct.c and kea_iterative.c. Internal API: the public MdtKea* wrappers will sit on top. */
+ * The algorithms and their costs are described in docs/kea.md and at the top of kea_direct.c and
+ * kea_iterative.h. Internal API: the public MdtKea* wrappers (MdtKea.h) sit on top. */
 #ifndef KEA_H
 #define KEA_H
 
