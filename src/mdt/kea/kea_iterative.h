@@ -28,7 +28,7 @@
  * Block solves: a block of m rows (a constraint's rows on one body pair, or one contact point with
  * its friction rows) is solved exactly with the rest of x fixed. Most blocks at rest have every row
  * strictly inside its bounds: one product with the block's inverse (KeaBlockAllFree). Each contact
- * point with its friction rows is a block of its own (not its whole contact group: decision K27, docs/kea_log.md),
+ * point with its friction rows is a block of its own (not its whole contact group: decision K27),
  * which otherwise tries its few active sets in closed form (opening, or one or both friction rows
  * sliding: KeaContactActiveSets); anything else (a constraint's rows at a limit) goes to the dense
  * box-LCP solver (kea_dense_lcp.c). A plain contact block (a normal row and its two friction rows)
