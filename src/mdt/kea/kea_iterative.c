@@ -108,7 +108,11 @@ static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const Kea
             continue;
         }
         if (w->blockStart[block + 1] - i > 1) {
-            worst = KeaMax(worst, KeaBlockStep(problem, w, block, x, &sweep));
+            /* a copy: the general step is not inlined, and sweep's address given to it would keep
+             * sweep in memory for the contact steps too */
+            KeaSweepState blockSweep = sweep;
+            worst = KeaMax(worst, KeaBlockStep(problem, w, block, x, &blockSweep));
+            sweep.decrease = blockSweep.decrease;
             continue;
         }
         if (w->invDiag[i] == ME_R(0.0))

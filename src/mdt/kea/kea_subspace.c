@@ -172,12 +172,16 @@ static int KeaUpdateFreeRows(const KeaProblem *problem, KeaIterativeWork *w, con
 }
 
 /* Preconditioned CG on A_FF step = -w_F from step = 0 over the nFree rows of the free list (grad
- * holds w_F); returns the CG steps taken (at most maxSteps). Sets smRan when CG can start. */
-static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, int nFree, int maxSteps)
+ * set to w_F at x); returns the CG steps taken (at most maxSteps). Sets smRan when CG can start. */
+static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, int nFree, int maxSteps, const MeReal *x)
 {
     MeReal rz, rz0;
-    int p, steps = 0;
+    int i, p, steps = 0;
+    KeaGather(w, w->dv, w->grad);
     for (p = 0; p < nFree; ++p) {
+        i = w->freeRows[p];
+        w->epsFree[p] = w->eps[i];
+        w->grad[p] = w->grad[p] + w->eps[i] * x[i] - problem->rhs[i];
         w->step[p] = ME_R(0.0);
         w->res[p] = -w->grad[p];
     }
@@ -251,7 +255,7 @@ static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w
 int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x)
 {
     const int n = problem->nRows;
-    int i, p, nFree = 0, changed, steps;
+    int i, nFree = 0, changed, steps;
 
     changed = KeaUpdateFreeRows(problem, w, x);
     if (changed > KEA_SM_SKIP_MIN_CHANGED && (long)changed * KEA_SM_SKIP_FRACTION > (long)n && !w->skippedLast) {
@@ -269,13 +273,7 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
     if (nFree == 0)
         return 0;
     KeaFindSegments(w, nFree);
-    KeaGather(w, w->dv, w->grad);
-    for (p = 0; p < nFree; ++p) {
-        i = w->freeRows[p];
-        w->epsFree[p] = w->eps[i];
-        w->grad[p] = w->grad[p] + w->eps[i] * x[i] - problem->rhs[i];
-    }
-    steps = KeaSubspaceCg(problem, w, nFree, maxSteps);
+    steps = KeaSubspaceCg(problem, w, nFree, maxSteps, x);
     if (steps > 0)
         KeaSubspaceLineSearch(problem, w, nFree, x);
     return steps;
