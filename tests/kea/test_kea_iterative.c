@@ -5,7 +5,7 @@
  * subspace step) lowers the QP objective f(x) = 1/2 x^T A x - r^T x. So on box LCPs the objective gap
  * f(x_k) - f(x*) must not increase with the cap, and it bounds the error: 1/2 |x_k - x*|_A^2 <= gap.
  * f is evaluated in double from the test's own dense A. The max-norm error to the direct solution is
- * printed as the convergence table of docs/kea.md and must reach rounding level at the largest cap. */
+ * printed (a convergence table per problem) and must reach rounding level at the largest cap. */
 #include "karma_test.h"
 
 #include "kea_test_problems.h"

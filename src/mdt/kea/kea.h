@@ -28,8 +28,8 @@
  * Memory: Kea never allocates. The caller asks KeaMemoryRequired(nRows, nBodies, path) and passes a
  * workspace of at least that many bytes (any alignment) to KeaSolve.
  *
- * The algorithms, their costs and measured accuracy are described in docs/kea.md and at the top of
- * kea_direct.c and kea_iterative.c. Internal API: the public MdtKea* wrappers will sit on top. */
+ * The algorithms and their costs are described in docs/kea.md and at the top of kea_direct.c and
+ * kea_iterative.h. Internal API: the public MdtKea* wrappers (MdtKea.h) sit on top. */
 #ifndef KEA_H
 #define KEA_H
 
@@ -150,7 +150,10 @@ size_t KeaMemoryRequired(int nRows, int nBodies, KeaPath path);
 /** Solve one partition. x (nRows) receives the impulses; dv (nBodies, may be NULL) the velocity
  *  changes M^-1 J^T x; stats (may be NULL) what happened. workspace: at least
  *  KeaMemoryRequired(nRows, nBodies, KeaSelectPath(nRows, params)) bytes. No allocation, no
- *  messages: the status says what went wrong. Deterministic: rows are visited in index order. */
+ *  messages: the status says what went wrong. Deterministic: rows are visited in index order.
+ *  Seven arguments: the problem, how to solve it, the caller's memory and the three outputs, each
+ *  owned by a different party (the world, its settings, its arena, its bodies), so no struct would
+ *  group them without the caller copying into it. */
 KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void *workspace,
                    size_t workspaceSize, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
 

@@ -23,8 +23,10 @@ static inline void KeaBlockSymmetricApply(int m, const MeReal *M, const MeReal *
 }
 
 /* out = J_b (v0, v1) for the block of m rows from s (all on the same two bodies): a block of more
- * than 4 rows from its transpose JT (12 x m), column by column, each out[r] its own running sum
+ * than KEA_GATHER_ROW_BY_ROW rows from its transpose JT (12 x m), column by column, each out[r] its own running sum
  * over the 12 components in order; a smaller one row by row. */
+_Static_assert(KEA_GATHER_ROW_BY_ROW == 4, "KeaBlockGatherSmall is written out for 4 rows");
+
 static inline void KeaBlockGatherSmall(const KeaIterativeWork *w, int s, int m, const KeaVel4 *v0, const KeaVel4 *v1,
                                 MeReal *out)
 {
@@ -41,7 +43,7 @@ static inline void KeaBlockGatherSmall(const KeaIterativeWork *w, int s, int m, 
 static inline void KeaBlockGather(const KeaIterativeWork *w, int s, int m, const KeaVel4 *v0, const KeaVel4 *v1,
                                   MeReal *out)
 {
-    if (m <= 4) { /* a ball joint, a one-point contact: row by row */
+    if (m <= KEA_GATHER_ROW_BY_ROW) { /* a ball joint, a contact point: row by row */
         KeaBlockGatherSmall(w, s, m, v0, v1, out);
         return;
     }
@@ -112,21 +114,20 @@ static inline void KeaBlockScatter(int m, const KeaJacobianRow *B, const MeReal 
                 KeaRowApply4(&B[r], d[r], v0, v1);
     } else if (m == 3) { /* a contact */
         KeaBlockScatterSized(3, B, d, v0, v1);
-    } else if (m == 12) {
-        KeaBlockScatterSized(12, B, d, v0, v1);
     } else {
         KeaBlockScatterSized(m, B, d, v0, v1);
     }
 }
 
 /* Apply the deltas localX - x of the block's m rows from s (all on the same two bodies) to dv and
- * x, in row order; localW holds the block's w before the step. */
-static inline void KeaBlockApplyDeltas(KeaIterativeWork *w, int s, int m, MeReal *x)
+ * x, in row order, lowering *decrease by the objective's estimated decrease; localW holds the
+ * block's w before the step. */
+static inline void KeaBlockApplyDeltas(KeaIterativeWork *w, int s, int m, MeReal *x, MeReal *decrease)
 {
     int r;
     for (r = 0; r < m; ++r) {
         w->localD[r] = w->localX[r] - x[s + r];
-        w->sweepDecrease -= ME_R(0.5) * w->localD[r] * w->localW[r];
+        *decrease -= ME_R(0.5) * w->localD[r] * w->localW[r];
     }
     KeaBlockScatter(m, &w->B[s], w->localD, &w->dv[w->body[s][0]], &w->dv[w->body[s][1]]);
     for (r = 0; r < m; ++r)
@@ -134,27 +135,28 @@ static inline void KeaBlockApplyDeltas(KeaIterativeWork *w, int s, int m, MeReal
             x[s + r] = w->localX[r];
 }
 
-/* The box-LCP of n rows (matrix A, r, own bounds lo/hi, links local to these rows or -1) with the
- * dense solver; x is the warm start on entry and the solution on return. */
-static inline void KeaSmallLcp(const KeaProblem *problem, KeaIterativeWork *w, int n, const MeReal *A, const MeReal *r,
-                        const MeReal *lo, const MeReal *hi, const int *link, const MeReal *mu, int maxPasses,
-                        MeReal *x, KeaStats *stats)
+/* The block's local box-LCP with the dense solver: its matrix A_bb, r_loc in localR, own bounds in
+ * localLo and localHi, links local to the block (or -1) in localLink, and localX the warm start on
+ * entry and the solution on return. */
+static inline void KeaSmallLcp(const KeaProblem *problem, KeaIterativeWork *w, int block, int maxPasses,
+                               KeaStats *stats)
 {
+    const int s = w->blockStart[block];
     KeaDenseLcp lcp;
     KeaStats local;
-    lcp.n = n;
-    lcp.A = A;
-    lcp.r = r;
-    lcp.lo = lo;
-    lcp.hi = hi;
-    lcp.link = problem->mu ? link : NULL;
-    lcp.mu = problem->mu ? mu : NULL;
+    lcp.n = w->blockStart[block + 1] - s;
+    lcp.A = w->blockA + w->blockMatrix[block];
+    lcp.r = w->localR;
+    lcp.lo = w->localLo;
+    lcp.hi = w->localHi;
+    lcp.link = problem->mu ? w->localLink : NULL;
+    lcp.mu = problem->mu ? problem->mu + s : NULL;
     lcp.order = NULL;
     lcp.patternStart = lcp.pattern = NULL;
     lcp.rows = NULL;
     lcp.velocity = NULL;
     memset(&local, 0, sizeof local);
-    (void)KeaDenseLcpSolve(&lcp, 0, maxPasses, w->dense, x, &local);
+    (void)KeaDenseLcpSolve(&lcp, 0, maxPasses, w->dense, w->localX, &local);
     stats->pivots += local.pivots;
     stats->regularised += local.regularised;
 }

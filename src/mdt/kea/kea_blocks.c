@@ -122,9 +122,66 @@ static unsigned char KeaIsPlainContact(const KeaProblem *problem, const KeaItera
     return w->body[s][1] == problem->nBodies ? KEA_CONTACT_WORLD : KEA_CONTACT_BODIES;
 }
 
+/* The block of m rows from i on the body pair b: its transpose J_b^T when KeaBlockGather reads it
+ * (more than KEA_GATHER_ROW_BY_ROW rows), and its matrix A_bb = J_b M^-1 J_b^T + diag(eps) at A
+ * from the rows' B = M^-1 J^T (a 1-row block needs none: its d_i serves). */
+static void KeaFormBlockMatrix(const KeaProblem *problem, KeaIterativeWork *w, int i, int m, const int *b, MeReal *A)
+{
+    int r, c, h, g;
+    for (r = 0; r < m && m > KEA_GATHER_ROW_BY_ROW; ++r) { /* only KeaBlockGather's large blocks read JT */
+        MeReal *JT = w->JT + 12 * i + r;
+        for (c = 0; c < 3; ++c) {
+            JT[c * m] = w->J[i + r].lin0[c];
+            JT[(3 + c) * m] = w->J[i + r].ang0[c];
+            JT[(6 + c) * m] = w->J[i + r].lin1[c];
+            JT[(9 + c) * m] = w->J[i + r].ang1[c];
+        }
+    }
+    if (m > 1 && b[0] != b[1]) { /* column c of A_bb = J_b B_c, from the transpose */
+        MeReal column[KEA_MAX_BLOCK_ROWS];
+        for (c = 0; c < m; ++c) {
+            const KeaJacobianRow *Bc = &w->B[i + c];
+            if (m <= KEA_GATHER_ROW_BY_ROW) { /* KeaBlockGatherSmall's sums, reading B_c's halves in place */
+                for (r = 0; r < m; ++r)
+                    A[r * m + c] = KeaRowDot4(&w->J[i + r], Bc);
+            } else {
+                KeaVel4 v0, v1;
+                for (h = 0; h < 4; ++h) {
+                    v0.lin[h] = Bc->lin0[h];
+                    v0.ang[h] = Bc->ang0[h];
+                    v1.lin[h] = Bc->lin1[h];
+                    v1.ang[h] = Bc->ang1[h];
+                }
+                KeaBlockGather(w, i, m, &v0, &v1, column);
+                for (r = 0; r < m; ++r)
+                    A[r * m + c] = column[r];
+            }
+            if (problem->epsilon)
+                A[c * m + c] += problem->epsilon[i + c];
+        }
+    } else if (m > 1) { /* both halves on one body: the cross terms count too */
+        for (r = 0; r < m; ++r)
+            for (c = 0; c < m; ++c) {
+                const KeaJacobianRow *Jr = &problem->J[i + r], *Bc = &w->B[i + c];
+                MeReal v = ME_R(0.0);
+                for (h = 0; h < 2; ++h)
+                    for (g = 0; g < 2; ++g) {
+                        if (b[h] < 0 || b[h] != b[g])
+                            continue;
+                        v += KeaDot3(h ? Jr->lin1 : Jr->lin0, g ? Bc->lin1 : Bc->lin0) +
+                             KeaDot3(h ? Jr->ang1 : Jr->ang0, g ? Bc->ang1 : Bc->ang0);
+                    }
+                if (r == c && problem->epsilon)
+                    v += problem->epsilon[i + r];
+                A[r * m + c] = v;
+            }
+    }
+}
+
 /* Split the rows into blocks and form each block's matrix A_bb = J_b M^-1 J_b^T + diag(eps) from the
- * rows' B = M^-1 J^T. A block is a run of rows on the same body pair, at most cap rows, except that a
- * contact with friction (its normal row and the rows linked to it) is a block of its own. */
+ * rows' B = M^-1 J^T, its factor and its inverse. A block is a run of rows on the same body pair, at
+ * most cap rows, except that a contact with friction (its normal row and the rows linked to it) is
+ * a block of its own. */
 void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
 {
     const int n = problem->nRows;
@@ -134,7 +191,7 @@ void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
     while (i < n) {
         const int *b = problem->rowBodies[i];
         const int contact = KeaContactStart(problem, i);
-        int m = 1, r, c, h, g;
+        int m = 1, r;
         while (i + m < n && m < cap && problem->rowBodies[i + m][0] == b[0] && problem->rowBodies[i + m][1] == b[1]) {
             if (contact ? problem->link[i + m] != i
                         : KeaContactStart(problem, i + m) || (problem->link && problem->link[i + m] >= 0))
@@ -145,55 +202,7 @@ void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
         w->blockMatrix[w->nBlocks] = offset;
         for (r = 0; r < m; ++r)
             w->rowBlock[i + r] = w->nBlocks;
-        for (r = 0; r < m && m > 4; ++r) { /* only KeaBlockGather's large blocks read JT */
-            MeReal *JT = w->JT + 12 * i + r;
-            for (c = 0; c < 3; ++c) {
-                JT[c * m] = w->J[i + r].lin0[c];
-                JT[(3 + c) * m] = w->J[i + r].ang0[c];
-                JT[(6 + c) * m] = w->J[i + r].lin1[c];
-                JT[(9 + c) * m] = w->J[i + r].ang1[c];
-            }
-        }
-        if (m > 1 && b[0] != b[1]) { /* column c of A_bb = J_b B_c, from the transpose */
-            MeReal *A = w->blockA + offset, column[KEA_MAX_BLOCK_ROWS];
-            for (c = 0; c < m; ++c) {
-                const KeaJacobianRow *Bc = &w->B[i + c];
-                if (m <= 4) { /* KeaBlockGatherSmall's sums, reading B_c's halves in place */
-                    for (r = 0; r < m; ++r)
-                        A[r * m + c] = KeaRowDot4(&w->J[i + r], Bc);
-                } else {
-                    KeaVel4 v0, v1;
-                    for (h = 0; h < 4; ++h) {
-                        v0.lin[h] = Bc->lin0[h];
-                        v0.ang[h] = Bc->ang0[h];
-                        v1.lin[h] = Bc->lin1[h];
-                        v1.ang[h] = Bc->ang1[h];
-                    }
-                    KeaBlockGather(w, i, m, &v0, &v1, column);
-                    for (r = 0; r < m; ++r)
-                        A[r * m + c] = column[r];
-                }
-                if (problem->epsilon)
-                    A[c * m + c] += problem->epsilon[i + c];
-            }
-        } else if (m > 1) { /* both halves on one body: the cross terms count too */
-            MeReal *A = w->blockA + offset;
-            for (r = 0; r < m; ++r)
-                for (c = 0; c < m; ++c) {
-                    const KeaJacobianRow *Jr = &problem->J[i + r], *Bc = &w->B[i + c];
-                    MeReal v = ME_R(0.0);
-                    for (h = 0; h < 2; ++h)
-                        for (g = 0; g < 2; ++g) {
-                            if (b[h] < 0 || b[h] != b[g])
-                                continue;
-                            v += KeaDot3(h ? Jr->lin1 : Jr->lin0, g ? Bc->lin1 : Bc->lin0) +
-                                 KeaDot3(h ? Jr->ang1 : Jr->ang0, g ? Bc->ang1 : Bc->ang0);
-                        }
-                    if (r == c && problem->epsilon)
-                        v += problem->epsilon[i + r];
-                    A[r * m + c] = v;
-                }
-        }
+        KeaFormBlockMatrix(problem, w, i, m, b, w->blockA + offset);
         w->blockFactored[w->nBlocks] = 0;
         if (m == 3) { /* a contact or a ball joint: the same arithmetic, unrolled */
             w->blockFactored[w->nBlocks] = (unsigned char)KeaCholeskyDenseInline(3, w->blockA + offset, w->blockL);

@@ -74,18 +74,21 @@ static inline int KeaContactActiveSets(const MeReal *A, const MeReal *r, const M
            KeaContactTry(A, r, mu, -1, 1, out) || KeaContactTry(A, r, mu, -1, -1, out);
 }
 
-/* KeaContactActiveSets for a block given by its local bounds and links: 0 unless it is a contact
- * (normal row with bounds [0, inf) and no link, two rows linked to it with no bounds of their own). */
-static inline int KeaContactSolve(const MeReal *A, const MeReal *r, const MeReal *lo, const MeReal *hi, const int *link,
-                           const MeReal *mu, MeReal *out)
+/* KeaContactActiveSets for a 3-row block with matrix A given by its local LCP in w (r_loc in
+ * localR, bounds in localLo and localHi, links in localLink; the solution into localX): 0 unless it
+ * is a contact (normal row with bounds [0, inf) and no link, two rows linked to it with no bounds of
+ * their own). mu: the block's rows' friction coefficients. */
+static inline int KeaContactSolve(const MeReal *A, KeaIterativeWork *w, const MeReal *mu)
 {
+    const MeReal *lo = w->localLo, *hi = w->localHi;
+    const int *link = w->localLink;
     int k;
     if (link[0] >= 0 || lo[0] != ME_R(0.0) || KeaIsFinite(hi[0]))
         return 0;
     for (k = 1; k < 3; ++k)
         if (link[k] != 0 || KeaIsFinite(lo[k]) || KeaIsFinite(hi[k]))
             return 0;
-    return KeaContactActiveSets(A, r, mu, out);
+    return KeaContactActiveSets(A, w->localR, mu, w->localX);
 }
 
 /* A plain contact's rows free now (KeaRowIsFree: its normal row's bounds [0, hi), its friction
@@ -108,12 +111,15 @@ static inline int KeaContactFreeRows(const MeReal *mu, MeReal hi, const MeReal *
 /* KeaBlockStep for a plain contact block (KeaIsPlainContact), with the same arithmetic in the same
  * order (so the same values; on the world the exact zeros of its half are not computed), its three
  * rows held in locals: the normal row's bounds are [0, inf), the friction rows' [-mu n, mu n] for
- * the normal impulse n. */
-static inline MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, int maxPasses, MeReal *x,
-                                  KeaStats *stats, int onWorld, int measure, int tally, MeReal *decrease,
-                                  int *changed)
+ * the normal impulse n. Returns the block's largest row residual before the step (when
+ * sweep->measure; else 0).
+ * Longer than most functions here, and on purpose: it is the pile's every block step, and its
+ * parts (gather, residual, all-free try, active sets, scatter) share the block's rows held in
+ * locals; split into functions they would pass those locals through memory. */
+static inline MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, MeReal *x,
+                                         KeaSweepState *sweep)
 {
-    const int s = w->blockStart[block];
+    const int s = w->blockStart[block], onWorld = w->blockContact[block] == KEA_CONTACT_WORLD;
     KeaVel4 *v0 = &w->dv[w->body[s][0]], *v1 = &w->dv[w->body[s][1]];
     const MeReal *mu = problem->mu + s, *inv = w->blockInv + w->blockMatrix[block];
     MeReal wb[3], xb[3], xn[3], d[3], t[3], bound, bound2, worst;
@@ -127,7 +133,7 @@ static inline MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterative
     /* the residual before the step (when the sweep still measures): normal row in [0, inf), friction
      * rows in [-mu n, mu n] */
     worst = ME_R(0.0);
-    if (measure) {
+    if (sweep->measure) {
         worst = KeaMax(worst, w->diag[s] * KeaFabs(xb[0] - KeaClamp(xb[0] - wb[0] * w->invDiag[s], ME_R(0.0),
                                                                      problem->hi[s])));
         for (r = 1; r < 3; ++r) {
@@ -158,29 +164,28 @@ static inline MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterative
             !KeaContactActiveSets(A, rl, mu, xn)) { /* within rounding: the general solver */
             for (r = 0; r < 3; ++r) {
                 w->localW[r] = wb[r];
+                w->localR[r] = rl[r];
                 w->localX[r] = xb[r];
                 w->localLo[r] = problem->lo[s + r];
                 w->localHi[r] = problem->hi[s + r];
                 w->localLink[r] = r == 0 ? -1 : 0;
             }
-            KeaSmallLcp(problem, w, 3, A, rl, w->localLo, w->localHi, w->localLink, mu, maxPasses, w->localX, stats);
-            w->sweepDecrease = *decrease;
-            KeaBlockApplyDeltas(w, s, 3, x);
-            *decrease = w->sweepDecrease;
-            *changed += KeaContactFreeRows(mu, problem->hi[s], x + s, w->wasFree + s);
+            KeaSmallLcp(problem, w, block, sweep->maxPasses, sweep->stats);
+            KeaBlockApplyDeltas(w, s, 3, x, &sweep->decrease);
+            sweep->changed += KeaContactFreeRows(mu, problem->hi[s], x + s, w->wasFree + s);
             return worst;
         }
     }
     for (r = 0; r < 3; ++r)
         d[r] = xn[r] - xb[r];
-    if (tally) /* only the sweep after an SM step is asked how much it lowered the objective */
+    if (sweep->tally) /* only the sweep after an SM step is asked how much it lowered the objective */
         for (r = 0; r < 3; ++r)
-            *decrease -= ME_R(0.5) * d[r] * wb[r];
+            sweep->decrease -= ME_R(0.5) * d[r] * wb[r];
     if (d[0] != ME_R(0.0) || d[1] != ME_R(0.0) || d[2] != ME_R(0.0))
         KeaContactScatter(&w->B[s], d, v0, onWorld ? NULL : v1);
     for (r = 0; r < 3; ++r) /* d_r = 0: xn_r is x_r */
         x[s + r] = xn[r];
-    *changed += KeaContactFreeRows(mu, problem->hi[s], xn, w->wasFree + s);
+    sweep->changed += KeaContactFreeRows(mu, problem->hi[s], xn, w->wasFree + s);
     return worst;
 }
 

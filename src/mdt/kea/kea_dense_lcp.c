@@ -99,13 +99,6 @@ KeaDenseWork *KeaDenseWorkCreate(KeaArena *arena, int n)
     return result;
 }
 
-size_t KeaDenseWorkspaceBytes(int n)
-{
-    KeaArena counter = {NULL, 0, 0};
-    (void)KeaDenseWorkCreate(&counter, n);
-    return counter.used;
-}
-
 /* Effective bounds of row i (friction links applied, same rule as KeaRowBounds). */
 static void KeaDenseLinkBounds(const KeaDenseLcp *lcp, int i, MeReal xLink, MeReal *lo, MeReal *hi)
 {
@@ -181,6 +174,65 @@ static void KeaDenseFactorFree(const KeaDenseLcp *lcp, KeaDenseWork *w, KeaStats
     ++stats->factorizations;
 }
 
+/* The active-set method's ratio test: along y - x_F (y by position in F), the largest step alpha
+ * <= 1 before a free row meets a bound; returns the position in F of the row that blocks (ties go
+ * to the first row in F: deterministic) with *side its bound, or -1 (alpha 1). */
+static int KeaRatioTest(const KeaDenseWork *w, const MeReal *x, MeReal *alpha, int *side)
+{
+    const KeaCholesky *c = &w->chol;
+    int i, p, block = -1;
+    *alpha = ME_R(1.0);
+    *side = KEA_FREE;
+    for (p = 0; p < c->size; ++p) {
+        i = c->F[p];
+        const MeReal d = w->y[p] - x[i];
+        if (d < ME_R(0.0) && KeaIsFinite(w->lo[i]) && w->y[p] < w->lo[i]) {
+            const MeReal t = KeaMax((w->lo[i] - x[i]) / d, ME_R(0.0));
+            if (t < *alpha) {
+                *alpha = t;
+                block = p;
+                *side = KEA_AT_LO;
+            }
+        } else if (d > ME_R(0.0) && KeaIsFinite(w->hi[i]) && w->y[p] > w->hi[i]) {
+            const MeReal t = KeaMax((w->hi[i] - x[i]) / d, ME_R(0.0));
+            if (t < *alpha) {
+                *alpha = t;
+                block = p;
+                *side = KEA_AT_HI;
+            }
+        }
+    }
+    return block;
+}
+
+/* The active-set method's pricing, at the optimum on the current face: the fixed row (not locked)
+ * whose multiplier points inside its bounds by more than the tolerance, the largest w_j^2 / A_jj
+ * first; -1 when none does (the box QP's optimum). rScale, diagMax: max |r_i| and max A_ii. */
+static int KeaEnteringRow(const KeaDenseLcp *lcp, KeaDenseWork *w, const MeReal *x, MeReal rScale, MeReal diagMax)
+{
+    const int n = lcp->n;
+    MeReal xScale = ME_R(0.0), tolW, bestScore = ME_R(0.0);
+    int j, nz, best = -1;
+    for (j = 0; j < n; ++j)
+        xScale = KeaMax(xScale, KeaFabs(x[j]));
+    nz = KeaDensePrepare(lcp, x, w->nonzero);
+    tolW = KEA_DIRECT_TOL * (rScale + diagMax * xScale);
+    for (j = 0; j < n; ++j) {
+        MeReal wj, score;
+        if (w->state[j] == KEA_FREE || w->locked[j] || !(w->lo[j] < w->hi[j]))
+            continue;
+        wj = KeaDenseRowDot(lcp, j, x, w->nonzero, nz) - lcp->r[j];
+        if (w->state[j] == KEA_AT_LO ? wj >= -tolW : wj <= tolW)
+            continue;
+        score = wj * wj / KeaMax(lcp->A[(size_t)j * (size_t)n + (size_t)j], ME_MIN_EPSILON);
+        if (score > bestScore) {
+            bestScore = score;
+            best = j;
+        }
+    }
+    return best;
+}
+
 /* Active-set iterations for the current bounds. Returns KeaStatusOk at the optimum of the box QP,
  * KeaStatusMaxPivots when the cap is hit (x stays feasible). */
 static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x, int maxPivots,
@@ -200,8 +252,8 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
         w->locked[i] = 0;
 
     for (;;) {
-        MeReal alpha = ME_R(1.0);
-        int block = -1, blockSide = KEA_FREE, nz;
+        MeReal alpha;
+        int block, blockSide, nz;
 
         /* 1. Newton point on the face: A_FF y = r_F - A_FB x_B. */
         nz = 0; /* fixed rows with x != 0 (often none: contacts at 0) */
@@ -217,26 +269,8 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
         }
         KeaCholeskySolve(c, w->y);
 
-        /* 2. Ratio test along y - x_F (ties go to the first row in F: deterministic). */
-        for (p = 0; p < c->size; ++p) {
-            i = c->F[p];
-            const MeReal d = w->y[p] - x[i];
-            if (d < ME_R(0.0) && KeaIsFinite(w->lo[i]) && w->y[p] < w->lo[i]) {
-                const MeReal t = KeaMax((w->lo[i] - x[i]) / d, ME_R(0.0));
-                if (t < alpha) {
-                    alpha = t;
-                    block = p;
-                    blockSide = KEA_AT_LO;
-                }
-            } else if (d > ME_R(0.0) && KeaIsFinite(w->hi[i]) && w->y[p] > w->hi[i]) {
-                const MeReal t = KeaMax((w->hi[i] - x[i]) / d, ME_R(0.0));
-                if (t < alpha) {
-                    alpha = t;
-                    block = p;
-                    blockSide = KEA_AT_HI;
-                }
-            }
-        }
+        /* 2. Ratio test along y - x_F. */
+        block = KeaRatioTest(w, x, &alpha, &blockSide);
         for (p = 0; p < c->size; ++p) {
             i = c->F[p];
             const MeReal xi = block < 0 ? w->y[p] : x[i] + alpha * (w->y[p] - x[i]);
@@ -267,25 +301,7 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
 
         /* 3. Optimal on the face: look for a fixed row whose multiplier has the wrong sign. */
         {
-            MeReal xScale = ME_R(0.0), tolW, bestScore = ME_R(0.0);
-            int best = -1;
-            for (j = 0; j < n; ++j)
-                xScale = KeaMax(xScale, KeaFabs(x[j]));
-            nz = KeaDensePrepare(lcp, x, w->nonzero);
-            tolW = KEA_DIRECT_TOL * (rScale + diagMax * xScale);
-            for (j = 0; j < n; ++j) {
-                MeReal wj, score;
-                if (w->state[j] == KEA_FREE || w->locked[j] || !(w->lo[j] < w->hi[j]))
-                    continue;
-                wj = KeaDenseRowDot(lcp, j, x, w->nonzero, nz) - r[j];
-                if (w->state[j] == KEA_AT_LO ? wj >= -tolW : wj <= tolW)
-                    continue;
-                score = wj * wj / KeaMax(lcp->A[(size_t)j * (size_t)n + (size_t)j], ME_MIN_EPSILON);
-                if (score > bestScore) {
-                    bestScore = score;
-                    best = j;
-                }
-            }
+            const int best = KeaEnteringRow(lcp, w, x, rScale, diagMax);
             if (best < 0)
                 return KeaStatusOk;
             w->state[best] = KEA_FREE;
@@ -427,26 +443,16 @@ static void KeaPolishCandidate(const KeaDenseLcp *lcp, KeaDenseWork *w)
                          w->cand[lcp->link[i]];
 }
 
-static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
+/* The polish's low-rank part for the m normal rows that carry sliding friction (w->normals, their
+ * positions in w->slot): Z = A_FF^-1 U (column-major, k rows, in U) and the capacitance matrix
+ * I + V^T Z, factored in G. Returns 0 when that matrix is singular. */
+static int KeaPolishCapacitance(const KeaDenseLcp *lcp, KeaDenseWork *w, int m)
 {
     const int n = lcp->n;
     const KeaCholesky *c = &w->chol;
     const int k = c->size;
-    MeReal rScale = ME_R(0.0), diagMax = ME_R(0.0), xScale = ME_R(0.0), tolW, tolX, worst = ME_R(0.0);
-    int i, j, p, a, m = 0, nz = 0, unchanged = 1, positive = 1;
+    int i, j, p, a;
 
-    for (i = 0; i < n; ++i)
-        w->slot[i] = -1;
-    for (i = 0; i < n; ++i) {
-        if (!KeaIsSliding(lcp, w, i) || w->slot[lcp->link[i]] >= 0)
-            continue;
-        w->slot[lcp->link[i]] = m;
-        w->normals[m++] = lcp->link[i];
-    }
-    if (m == 0 || k == 0)
-        return 0;
-
-    /* Z = A_FF^-1 U (column-major, k rows) and the capacitance matrix I + V^T Z. */
     for (p = 0; p < k * m; ++p)
         w->U[p] = ME_R(0.0);
     for (i = 0; i < n; ++i) {
@@ -471,29 +477,24 @@ static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
         for (j = 0; j < m; ++j)
             w->G[a * m + j] = (a == j ? ME_R(1.0) : ME_R(0.0)) + w->U[(size_t)j * (size_t)k + (size_t)pa];
     }
-    if (!KeaDenseFactor(m, w->G, w->perm))
-        return 0;
+    return KeaDenseFactor(m, w->G, w->perm);
+}
 
-    /* Solve from cand = x with the free and sliding rows zeroed, then one refinement step. */
-    for (i = 0; i < n; ++i)
-        w->cand[i] = (w->state[i] == KEA_FREE || KeaIsSliding(lcp, w, i)) ? ME_R(0.0) : x[i];
-    KeaFreeRowsResidual(lcp, w, w->cand);
-    KeaWoodburySolve(w, m, w->y);
-    KeaPolishCandidate(lcp, w);
-    KeaFreeRowsResidual(lcp, w, w->cand);
-    KeaWoodburySolve(w, m, w->y);
-    for (p = 0; p < k; ++p)
-        w->y[p] += w->cand[c->F[p]];
-    KeaPolishCandidate(lcp, w);
+/* Take the polish's candidate (w->cand) as x only if it is feasible and complementary (every row's
+ * natural map within the tolerance); returns 1 if taken. */
+static int KeaPolishAccept(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
+{
+    const int n = lcp->n;
+    MeReal rScale = ME_R(0.0), diagMax = ME_R(0.0), xScale = ME_R(0.0), tolW, tolX, worst = ME_R(0.0);
+    int i, nz, unchanged = 1, positive = 1;
 
-    /* Accept only a feasible, complementary candidate. */
     for (i = 0; i < n; ++i) {
         rScale = KeaMax(rScale, KeaFabs(lcp->r[i]));
         diagMax = KeaMax(diagMax, lcp->A[(size_t)i * (size_t)n + (size_t)i]);
         xScale = KeaMax(xScale, KeaFabs(w->cand[i]));
     }
-    tolW = ME_R(10.0) * KEA_DIRECT_TOL * (rScale + diagMax * xScale);
-    tolX = ME_R(100.0) * KEA_DIRECT_TOL * xScale;
+    tolW = KEA_POLISH_TOL_W * KEA_DIRECT_TOL * (rScale + diagMax * xScale);
+    tolX = KEA_POLISH_TOL_X * KEA_DIRECT_TOL * xScale;
     nz = KeaDensePrepare(lcp, w->cand, w->nonzero);
     for (i = 0; i < n; ++i) { /* natural-map test at the candidate's own bounds, every row alike */
         const MeReal Aii = lcp->A[(size_t)i * (size_t)n + (size_t)i];
@@ -520,6 +521,41 @@ static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
     w->velocityCurrent = lcp->rows && unchanged && positive;
     w->residual = worst;
     return 1;
+}
+
+/* The friction polish (top comment): with the rows' current states (free, at a bound, or sliding at
+ * +-mu times their normal), solve the coupled system exactly through a Woodbury update of the free
+ * rows' factor; x becomes the solution if it is feasible and complementary. Returns 1 if so. */
+static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
+{
+    const int n = lcp->n;
+    const KeaCholesky *c = &w->chol;
+    const int k = c->size;
+    int i, p, m = 0;
+
+    for (i = 0; i < n; ++i)
+        w->slot[i] = -1;
+    for (i = 0; i < n; ++i) {
+        if (!KeaIsSliding(lcp, w, i) || w->slot[lcp->link[i]] >= 0)
+            continue;
+        w->slot[lcp->link[i]] = m;
+        w->normals[m++] = lcp->link[i];
+    }
+    if (m == 0 || k == 0 || !KeaPolishCapacitance(lcp, w, m))
+        return 0;
+
+    /* Solve from cand = x with the free and sliding rows zeroed, then one refinement step. */
+    for (i = 0; i < n; ++i)
+        w->cand[i] = (w->state[i] == KEA_FREE || KeaIsSliding(lcp, w, i)) ? ME_R(0.0) : x[i];
+    KeaFreeRowsResidual(lcp, w, w->cand);
+    KeaWoodburySolve(w, m, w->y);
+    KeaPolishCandidate(lcp, w);
+    KeaFreeRowsResidual(lcp, w, w->cand);
+    KeaWoodburySolve(w, m, w->y);
+    for (p = 0; p < k; ++p)
+        w->y[p] += w->cand[c->F[p]];
+    KeaPolishCandidate(lcp, w);
+    return KeaPolishAccept(lcp, w, x);
 }
 
 /* One step of iterative refinement on the free block: x_F += A_FF^-1 (r - A x)_F. */
@@ -549,7 +585,7 @@ KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses,
                            MeReal *x, KeaStats *stats)
 {
     const int n = lcp->n;
-    const int pivotCap = stats->pivots + (maxPivots > 0 ? maxPivots : 8 * n + 64);
+    const int pivotCap = stats->pivots + (maxPivots > 0 ? maxPivots : KEA_DENSE_PIVOTS_PER_ROW * n + KEA_DENSE_PIVOTS_EXTRA);
     KeaStatus status;
     int i, polished = 0, passes = 1;
 
@@ -592,7 +628,7 @@ KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses,
             polished = 1;
             break;
         }
-        if (moved <= KEA_DIRECT_TOL * ME_R(10.0) * scale)
+        if (moved <= KEA_DIRECT_TOL * KEA_POLISH_TOL_W * scale)
             break;
         if (passes >= maxPasses) {
             status = KeaStatusFrictionPasses;

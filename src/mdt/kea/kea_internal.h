@@ -6,7 +6,8 @@
  * - row kernels: J_i . (dv_b0, dv_b1), with B_i = M^-1 J_i^T stored as a row, and the column
  *   kernel of the iterative path's blocks,
  * - the updatable Cholesky factor of the direct path,
- * - the entry points of the two paths. */
+ * - the entry points of the two paths.
+ * The tuning constants are in kea_tuning.h. */
 #ifndef KEA_INTERNAL_H
 #define KEA_INTERNAL_H
 
@@ -17,6 +18,7 @@
 
 #include "kea.h"
 #include "kea_lanes.h"
+#include "kea_tuning.h"
 
 /* ---- scalars -------------------------------------------------------------------------------- */
 
@@ -26,8 +28,8 @@ static inline MeReal KeaMax(MeReal a, MeReal b) { return a > b ? a : b; }
 static inline MeReal KeaMin(MeReal a, MeReal b) { return a < b ? a : b; }
 
 /** mid(lo, v, hi) for lo <= hi (every caller's bounds are): v < lo gives lo, v > hi gives hi, else v
- *  (NaN stays NaN). Written as min then max so that it compiles to minss / maxss, not to branches
- *  (a clamp's outcome is data: mispredicted about one time in five in the sweeps). */
+ *  (NaN stays NaN). Written as min then max so that it compiles to minss / maxss, not to branches:
+ *  a clamp's outcome is data, which a branch predictor guesses badly in the sweeps. */
 static inline MeReal KeaClamp(MeReal v, MeReal lo, MeReal hi)
 {
     const MeReal t = hi < v ? hi : v; /* minss */
@@ -36,19 +38,6 @@ static inline MeReal KeaClamp(MeReal v, MeReal lo, MeReal hi)
 
 /** A bound at or beyond +-MEINFINITY means "no bound". */
 static inline int KeaIsFinite(MeReal bound) { return bound > -MEINFINITY && bound < MEINFINITY; }
-
-/* Relative thresholds of the direct path, tied to the precision:
- *  KEA_PIVOT_FLOOR: a free-block Cholesky pivot d (squared) below KEA_PIVOT_FLOOR * A_ii is raised
- *    to it (the row then behaves as if it had that much extra softness);
- *  KEA_DIRECT_TOL: multipliers and feasibility are judged against KEA_DIRECT_TOL times the problem's
- *    scale (|r| + max A_ii |x|), so that rounding noise does not cause pivots. */
-#if KARMA_DOUBLE
-#  define KEA_PIVOT_FLOOR ME_R(1e-12)
-#  define KEA_DIRECT_TOL ME_R(1e-12)
-#else
-#  define KEA_PIVOT_FLOOR ME_R(1e-6)
-#  define KEA_DIRECT_TOL ME_R(2e-6)
-#endif
 
 /* ---- workspace arena ------------------------------------------------------------------------ */
 
@@ -127,7 +116,9 @@ static inline MeReal KeaRowResidual(MeReal d, MeReal x, MeReal w, MeReal lo, MeR
 void KeaColumnsApply(int m, int nc, const MeReal *M, const MeReal *in, MeReal *out);
 
 /** out = M (lin0, ang0, lin1, ang1) for the m x 12 column-major M (the 3-vectors read in place);
- *  the same bits as KeaColumnsApply(m, 12, ...) on the 12 components in that order. */
+ *  the same bits as KeaColumnsApply(m, 12, ...) on the 12 components in that order. The four
+ *  3-vectors are separate arguments because this column kernel serves padded and unpadded
+ *  callers alike; gathering them into a struct first is the copy it exists to avoid. */
 void KeaColumnsApplyPair(int m, const MeReal *M, const MeReal *lin0, const MeReal *ang0, const MeReal *lin1,
                          const MeReal *ang1, MeReal *out);
 
@@ -217,9 +208,6 @@ static inline void KeaFrictionBounds(MeReal lo, MeReal hi, MeReal mu, MeReal xLi
     *effHi = KeaMin(KeaMax(hi, ME_R(0.0)), bound);
 }
 
-/** Effective bounds of row i when its linked normal row has the impulse xLink. */
-void KeaLinkBounds(const KeaProblem *problem, int i, MeReal xLink, MeReal *lo, MeReal *hi);
-
 /** KeaRowBounds, inline: the iterative path asks for a row's bounds several times per sweep. */
 static inline void KeaRowBoundsInline(const KeaProblem *problem, const MeReal *x, int i, MeReal *lo, MeReal *hi)
 {
@@ -238,7 +226,9 @@ static inline void KeaRowBoundsInline(const KeaProblem *problem, const MeReal *x
 void KeaBodyIncidence(const KeaProblem *problem, int *incidence, int *start);
 /** A = J M^-1 J^T + diag(eps), dense n x n row-major, using B (M^-1 J^T rows) and the incidence.
  *  Only the entries in A's pattern (rows sharing a body, as the direct path builds it) are written;
- *  the rest of A is left as it was and must not be read. */
+ *  the rest of A is left as it was and must not be read. Seven arguments: the pairs (incidence,
+ *  start) and (patternStart, pattern) are the direct path's two sparse structures, each a CSR
+ *  pair its set-up fills once; a struct for them would serve this one call. */
 void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeReal *A, const int *incidence,
                         const int *start, const int *patternStart, const int *pattern);
 
@@ -321,8 +311,6 @@ typedef struct KeaDenseWork KeaDenseWork;
 
 /** Lay out a dense-solver workspace for n rows in the arena (NULL in counting mode). */
 KeaDenseWork *KeaDenseWorkCreate(KeaArena *arena, int n);
-/** Bytes KeaDenseWorkCreate takes for n rows (from an aligned arena position). */
-size_t KeaDenseWorkspaceBytes(int n);
 /** Solve the LCP exactly (kea_dense_lcp.c top comment). x: warm start in, solution out. Adds its
  *  pivots, factorisations, friction passes and regularised pivots to stats. maxPivots 0 = automatic
  *  (8 n + 64). */
@@ -352,7 +340,9 @@ size_t KeaIterativeWorkspaceBytes(int nRows, int nBodies);
 
 /* Both take a validated problem, an arena of at least their WorkspaceBytes, write x (nRows) and
  * dv (nBodies, never NULL here) and fill the path-specific fields of stats and stats->residual
- * (KeaResidual's measure, from the diagonal each path already has). */
+ * (KeaResidual's measure, from the diagonal each path already has). KeaSolveDirect has KeaSolve's
+ * arguments with the arena for the buffer and, seventh, mayDecline (Auto's "only if the factor is
+ * sparse"). */
 KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
                          int mayDecline, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
 
@@ -360,8 +350,6 @@ KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params,
  *  maxDirectRows rows: nothing solved, x untouched. Never returned by KeaSolve. */
 #define KeaStatusDeclined ((KeaStatus)-1)
 
-/** Auto takes the direct path up to this many times maxDirectRows rows when the factor is sparse. */
-#define KEA_SPARSE_DIRECT_FACTOR 4
 KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
                             MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
 

@@ -16,7 +16,7 @@ static MeReal KeaRowW(const KeaProblem *problem, const KeaIterativeWork *w, int 
 /* The common case of a block at rest: all its rows free. Try x_b - A_bb^-1 w_b with the block's
  * precomputed factor; if it lies within every row's bounds (friction links inside the block read
  * the new normal values), w_b = 0 there and it is the block's exact solution. Returns 1 if taken. */
-static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int block, MeReal *x)
+static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int block, MeReal *x, MeReal *decrease)
 {
     const int s = w->blockStart[block], m = w->blockStart[block + 1] - s;
     int r;
@@ -32,16 +32,15 @@ static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int b
         if (!(w->localX[r] >= lo && w->localX[r] <= hi))
             return 0;
     }
-    KeaBlockApplyDeltas(w, s, m, x);
+    KeaBlockApplyDeltas(w, s, m, x, decrease);
     return 1;
 }
 
 /* Solve the block of m rows from s exactly with the rest of x fixed: its local LCP has the matrix
  * A_bb and r_loc = A_bb x_b - w_b, so that its w is the true w of these rows. A friction link to a
  * row outside the block becomes a fixed bound. Returns the block's largest row residual before
- * (when measure is set; else 0). */
-static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, int maxPasses,
-                           MeReal *x, KeaStats *stats, int measure)
+ * (when sweep->measure; else 0). */
+static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, MeReal *x, KeaSweepState *sweep)
 {
     const int s = w->blockStart[block], m = w->blockStart[block + 1] - s;
     const MeReal *A = w->blockA + w->blockMatrix[block];
@@ -53,7 +52,7 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
         const MeReal wi = w->localW[r] + w->eps[i] * x[i] - problem->rhs[i];
         MeReal lo, hi;
         KeaRowBoundsInline(problem, x, i, &lo, &hi);
-        if (measure && w->invDiag[i] != ME_R(0.0))
+        if (sweep->measure && w->invDiag[i] != ME_R(0.0))
             worst = KeaMax(worst, w->diag[i] * KeaFabs(x[i] - KeaClamp(x[i] - wi * w->invDiag[i], lo, hi)));
         w->localW[r] = wi;
         w->localLink[r] = -1;
@@ -66,7 +65,7 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
             w->localHi[r] = hi;
         }
     }
-    if (KeaBlockAllFree(problem, w, block, x))
+    if (KeaBlockAllFree(problem, w, block, x, &sweep->decrease))
         return worst;
     KeaBlockSymmetricApply(m, A, x + s, w->localR); /* r_loc = A_bb x_b - w_b */
     for (r = 0; r < m; ++r) {
@@ -74,42 +73,46 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
         w->localX[r] = x[s + r];
     }
     if (m == 3 && problem->mu &&
-        KeaContactSolve(A, w->localR, w->localLo, w->localHi, w->localLink, problem->mu + s, w->localX)) {
-        KeaBlockApplyDeltas(w, s, m, x);
+        KeaContactSolve(A, w, problem->mu + s)) {
+        KeaBlockApplyDeltas(w, s, m, x, &sweep->decrease);
         return worst;
     }
-    KeaSmallLcp(problem, w, m, A, w->localR, w->localLo, w->localHi, w->localLink, problem->mu ? problem->mu + s : NULL,
-                maxPasses, w->localX, stats);
-    KeaBlockApplyDeltas(w, s, m, x);
+    KeaSmallLcp(problem, w, block, sweep->maxPasses, sweep->stats);
+    KeaBlockApplyDeltas(w, s, m, x, &sweep->decrease);
     return worst;
 }
 
 /* One PGS sweep over the blocks, forwards or backwards; returns the largest residual met (the rows'
  * residuals before their steps). Only whether that is within the tolerance matters, so once a row is
- * above it the block steps stop measuring (a sixth of a contact step's work, on a pile that does not
- * converge in ten sweeps); the steps themselves are the same either way. */
-static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
-                       MeReal omega, MeReal *x, KeaStats *stats, int backward)
+ * above it the block steps stop measuring (a sizeable part of a contact step's work, and a pile
+ * rarely converges within its sweeps); the steps themselves are the same either way. */
+static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params, MeReal *x,
+                       KeaStats *stats, int backward)
 {
-    /* decrease: the sweep's running sweepDecrease, in a local so that it can live in a register (in w
-     * it chained every block to the last one through a store and a load) */
-    MeReal worst = ME_R(0.0), decrease = ME_R(0.0);
-    int k, changed = 0;
+    const MeReal omega = params->sor > ME_R(0.0) && params->sor < ME_R(2.0) ? params->sor : ME_R(1.0);
+    MeReal worst = ME_R(0.0);
+    KeaSweepState sweep;
+    int k;
+    sweep.decrease = ME_R(0.0);
+    sweep.changed = 0;
+    sweep.tally = w->smRan;
+    sweep.maxPasses = params->maxFrictionPasses;
+    sweep.stats = stats;
     for (k = 0; k < w->nBlocks; ++k) {
         const int block = backward ? w->nBlocks - 1 - k : k;
         const int i = w->blockStart[block];
         MeReal lo, hi, wi, xNew, r;
+        sweep.measure = worst <= params->tolerance;
         if (w->blockContact[block]) { /* one call site: the step is inlined into the sweep */
-            worst = KeaMax(worst, KeaContactBlockStep(problem, w, block, params->maxFrictionPasses, x, stats,
-                                                      w->blockContact[block] == KEA_CONTACT_WORLD,
-                                                      worst <= params->tolerance, w->smRan, &decrease, &changed));
+            worst = KeaMax(worst, KeaContactBlockStep(problem, w, block, x, &sweep));
             continue;
         }
         if (w->blockStart[block + 1] - i > 1) {
-            w->sweepDecrease = decrease;
-            worst = KeaMax(worst, KeaBlockStep(problem, w, block, params->maxFrictionPasses, x, stats,
-                                               worst <= params->tolerance));
-            decrease = w->sweepDecrease;
+            /* a copy: the general step is not inlined, and sweep's address given to it would keep
+             * sweep in memory for the contact steps too */
+            KeaSweepState blockSweep = sweep;
+            worst = KeaMax(worst, KeaBlockStep(problem, w, block, x, &blockSweep));
+            sweep.decrease = blockSweep.decrease;
             continue;
         }
         if (w->invDiag[i] == ME_R(0.0))
@@ -120,13 +123,13 @@ static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const Kea
         worst = KeaMax(worst, r);
         xNew = KeaClamp(x[i] - omega * wi * w->invDiag[i], lo, hi);
         if (xNew != x[i]) {
-            decrease -= ME_R(0.5) * (xNew - x[i]) * wi;
+            sweep.decrease -= ME_R(0.5) * (xNew - x[i]) * wi;
             KeaRowApply4(&w->B[i], xNew - x[i], &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
             x[i] = xNew;
         }
     }
-    w->sweepDecrease = decrease;
-    w->sweepChanged = changed;
+    w->sweepDecrease = sweep.decrease;
+    w->sweepChanged = sweep.changed;
     return worst;
 }
 
@@ -152,7 +155,6 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
                             MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
 {
     const int n = problem->nRows;
-    const MeReal omega = params->sor > ME_R(0.0) && params->sor < ME_R(2.0) ? params->sor : ME_R(1.0);
     KeaIterativeWork w;
     KeaStatus status = KeaStatusMaxIterations;
     const int nb = problem->nBodies;
@@ -199,7 +201,7 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
         }
 
     for (it = 1; it <= params->maxIterations; ++it) {
-        const MeReal sweepResidual = KeaSweep(problem, &w, params, omega, x, stats, (it & 1) == 0);
+        const MeReal sweepResidual = KeaSweep(problem, &w, params, x, stats, (it & 1) == 0);
         stats->iterations = it;
         if (sweepResidual <= params->tolerance) {
             status = KeaStatusOk;

@@ -6,7 +6,8 @@
  *   kea_contact_kernel.h  the contact kernel: one contact block's exact step (KeaContactBlockStep)
  *   kea_iterative.c       the sweep, the general block step and the driver (KeaSolveIterative)
  *   kea_subspace.c        subspace minimisation and its schedule (KeaSubspaceMinimise)
- * This header holds the padded data, the work struct, the row kernels and the tuning constants.
+ * This header holds the padded data, the work struct and the row kernels; the tuning constants
+ * (KEA_SM_*, KEA_GATHER_ROW_BY_ROW) are in kea_tuning.h.
  *
  * Data: per row B_i = M^-1 J_i^T (a padded row, like J_i) and the diagonal d_i = J_i B_i + eps_i;
  * per body the velocity change dv = M^-1 J^T x, kept up to date, so that a row needs only its own
@@ -27,7 +28,7 @@
  * Block solves: a block of m rows (a constraint's rows on one body pair, or one contact point with
  * its friction rows) is solved exactly with the rest of x fixed. Most blocks at rest have every row
  * strictly inside its bounds: one product with the block's inverse (KeaBlockAllFree). Each contact
- * point with its friction rows is a block of its own (not its whole contact group: docs/kea.md),
+ * point with its friction rows is a block of its own (not its whole contact group: decision K27),
  * which otherwise tries its few active sets in closed form (opening, or one or both friction rows
  * sliding: KeaContactActiveSets); anything else (a constraint's rows at a limit) goes to the dense
  * box-LCP solver (kea_dense_lcp.c). A plain contact block (a normal row and its two friction rows)
@@ -54,25 +55,6 @@
 
 #include "kea_internal.h"
 #include "kea_lanes.h"
-
-/* ---- tuning constants of the SM schedule (kea_subspace.c), gathered here --------------------- */
-
-/** An SM step is skipped when more rows than this (and than the fraction below) went from free to
- *  bound or back since the last SM chance: a small problem's CG is cheap, and a lone box's four
- *  corners need it to share their load, so a few changes never skip it. */
-#define KEA_SM_SKIP_MIN_CHANGED 16
-/** ... and more than 1/KEA_SM_SKIP_FRACTION of the rows changed: CG on a free set that the next
- *  sweep changes again is mostly thrown away (a pile whose contacts keep opening and slipping). This
- *  rule never skips twice in a row, so a moving pile still gets an SM step every other sweep. */
-#define KEA_SM_SKIP_FRACTION 20
-/** When the last SM step lowered the QP objective less than the sweep after it ("did not pay"), the
- *  next one waits until at most 1/KEA_SM_UNPAID_FRACTION of the rows (or KEA_SM_SKIP_MIN_CHANGED)
- *  change between chances; this rule may skip any number of chances in a row, until the active set
- *  settles, so a solve run to convergence keeps its SM steps. */
-#define KEA_SM_UNPAID_FRACTION 100
-/** Halvings of the SM step tried by its projected line search (1, 1/2, 1/4, 1/8) before it is
- *  rejected: a rejected step costs a sweep's worth of work, more halvings rarely find a decrease. */
-#define KEA_SM_LINE_SEARCH_TRIES 4
 
 /** A body's velocity change with each 3-vector padded to 4 (pad 0). */
 typedef struct KeaVel4 {
@@ -129,6 +111,18 @@ typedef struct KeaFreePiece {
     int body[2];  /**< the row halves' bodies (the world: nb) */
 } KeaFreePiece;
 
+/** What one sweep carries from block to block and hands to each block step: a local of KeaSweep
+ *  (the steps are inlined into it, so its fields live in registers, where in the work struct each
+ *  block's tally would wait for the last one's store). */
+typedef struct KeaSweepState {
+    MeReal decrease;   /**< the sweep's running estimate of the QP objective's decrease */
+    int changed;       /**< plain contacts' rows that went between free and a bound so far */
+    int measure;       /**< the residual is still within the tolerance: measure this block's */
+    int tally;         /**< an SM step ran before this sweep: the contacts tally the decrease */
+    int maxPasses;     /**< the dense solver's friction passes (KeaParameters.maxFrictionPasses) */
+    KeaStats *stats;   /**< the solve's statistics (the dense solver's pivots) */
+} KeaSweepState;
+
 typedef struct KeaIterativeWork {
     KeaBodyColumns *bodyColumns; /**< nb: inverse masses and inertia columns, for B */
     KeaJacobianRow *B;     /**< M^-1 J^T per row */
@@ -142,14 +136,15 @@ typedef struct KeaIterativeWork {
     MeReal *blockL;        /**< scratch: one block's Cholesky factor, read only to form its inverse */
     MeReal *blockInv;      /**< their inverses A_bb^-1 (same offsets): a block solve in a sweep or
                                 a preconditioner step is then one small matrix-vector product,
-                                no divisions (each block is solved ~50 times a step, factored once) */
+                                no divisions (each block is solved once a sweep, and
+                                again per SM step when free, but factored once a step) */
     unsigned char *blockFactored; /**< the factor exists (A_bb safely positive definite) */
     unsigned char *blockContact;  /**< KEA_CONTACT_* kind of a plain contact block (KeaIsPlainContact), else 0 */
     unsigned char *wasFree;       /**< SM: the row was free at the last SM step (or the warm start) */
     int skippedLast;              /**< SM: the last SM step was skipped */
-    MeReal sweepDecrease;         /**< estimated decrease of the QP objective by the current sweep
-                                       (its contacts tallied only in a sweep after an SM step, the
-                                       one whose figure is read) */
+    MeReal sweepDecrease;         /**< estimated decrease of the QP objective by the last sweep
+                                       (KeaSweepState.decrease at its end; its contacts tallied only
+                                       in a sweep after an SM step, the one whose figure is read) */
     MeReal smDecrease;            /**< decrease of the objective by that SM step (0 if rejected) */
     int smRan;                    /**< an SM step ran since the last sweep */
     int smUnpaid;                 /**< SM: the last SM step did less than the sweep after it */

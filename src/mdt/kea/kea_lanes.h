@@ -5,8 +5,8 @@
  * register; anywhere else, and in double precision, a plain array. Either way each lane does the
  * same IEEE operations in the same order, so the results are the same bits: the choice is speed
  * only. The compiler's own vectoriser finds this in small separate loops but not reliably inside a
- * large block step (the contact step, kea_contact_kernel.h, compiled to scalar code: ~550 instructions
- * a block, against ~300 with these). */
+ * large block step (the contact step, kea_contact_kernel.h, compiles to scalar code without them;
+ * the figures are in bench/RESULTS.md). */
 #ifndef KEA_LANES_H
 #define KEA_LANES_H
 

@@ -29,10 +29,9 @@ MeReal KeaRowInvMassJT(const KeaProblem *problem, int i, KeaJacobianRow *B)
                              problem->epsilon ? problem->epsilon[i] : ME_R(0.0), B);
 }
 
-/* The sums run in a local array (no aliasing with M or in for the compiler); the common row counts
- * (contact groups of 1-4 points x 3 rows, joints) have their own instances with a constant trip
- * count, which the compiler unrolls and vectorises (a box-box group: 12 x 12 both ways); every
- * instance gives the same bits. */
+/* The sums run in a local array (no aliasing with M or in for the compiler); the row counts of
+ * a constraint's block (1 to 6: a fixed joint has 6) have their own instances with a constant trip
+ * count, which the compiler unrolls and vectorises; every instance gives the same bits. */
 static inline void KeaColumnsSized(const int m, const int nc, const MeReal *M, const MeReal *in, MeReal *out)
 {
     MeReal acc[KEA_MAX_BLOCK_ROWS];
@@ -51,21 +50,13 @@ static inline void KeaColumnsSized(const int m, const int nc, const MeReal *M, c
 
 static inline void KeaColumnsDispatch(int m, int nc, const MeReal *M, const MeReal *in, MeReal *out)
 {
-    switch (m) { /* the sizes of contact groups and joints, each with a constant row count */
+    switch (m) { /* a constraint's block sizes, each with a constant row count */
     case 1: KeaColumnsSized(1, nc, M, in, out); break;
     case 2: KeaColumnsSized(2, nc, M, in, out); break;
     case 3: KeaColumnsSized(3, nc, M, in, out); break;
     case 4: KeaColumnsSized(4, nc, M, in, out); break;
     case 5: KeaColumnsSized(5, nc, M, in, out); break;
     case 6: KeaColumnsSized(6, nc, M, in, out); break;
-    case 8: KeaColumnsSized(8, nc, M, in, out); break;
-    case 9: KeaColumnsSized(9, nc, M, in, out); break;
-    case 12:
-        if (nc == 12)
-            KeaColumnsSized(12, 12, M, in, out);
-        else
-            KeaColumnsSized(12, nc, M, in, out);
-        break;
     default: KeaColumnsSized(m, nc, M, in, out); break;
     }
 }
@@ -90,11 +81,6 @@ void KeaColumnsApplyPair(int m, const MeReal *M, const MeReal *lin0, const MeRea
         in[9 + c] = ang1[c];
     }
     KeaColumnsDispatch(m, 12, M, in, out);
-}
-
-void KeaLinkBounds(const KeaProblem *problem, int i, MeReal xLink, MeReal *lo, MeReal *hi)
-{
-    KeaFrictionBounds(problem->lo[i], problem->hi[i], problem->mu[i], xLink, lo, hi);
 }
 
 void KeaRowBounds(const KeaProblem *problem, const MeReal *x, int i, MeReal *lo, MeReal *hi)

@@ -14,7 +14,7 @@
  * SM never makes the QP worse; the next sweep re-applies the friction links and the active set.
  * Each CG step costs about half a sweep; KeaStats.subspaceSteps counts them.
  *
- * The schedule (KeaSubspaceMinimise; its thresholds are the KEA_SM_* constants of kea_iterative.h).
+ * The schedule (KeaSubspaceMinimise; its thresholds are the KEA_SM_* constants of kea_tuning.h).
  * SM pays when the sweeps have (nearly) settled which rows sit at a bound: CG on a free set that the
  * next sweep changes again is mostly thrown away. So an SM chance is skipped when many rows went
  * from free to bound or back since the last chance (KEA_SM_SKIP_MIN_CHANGED, KEA_SM_SKIP_FRACTION),
@@ -171,32 +171,12 @@ static int KeaUpdateFreeRows(const KeaProblem *problem, KeaIterativeWork *w, con
     return changed;
 }
 
-/* Subspace minimisation on the rows strictly inside their bounds; returns the CG steps taken, -1 if
- * skipped because the active set is still moving (top comment). */
-int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x)
+/* Preconditioned CG on A_FF step = -w_F from step = 0 over the nFree rows of the free list (grad
+ * set to w_F at x); returns the CG steps taken (at most maxSteps). Sets smRan when CG can start. */
+static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, int nFree, int maxSteps, const MeReal *x)
 {
-    const int n = problem->nRows, nb = problem->nBodies;
-    MeReal rz, rz0, scale;
-    int i, p, b, k, nFree = 0, changed = 0, steps = 0, tries;
-
-    changed = KeaUpdateFreeRows(problem, w, x);
-    if (changed > KEA_SM_SKIP_MIN_CHANGED && (long)changed * KEA_SM_SKIP_FRACTION > (long)n && !w->skippedLast) {
-        w->skippedLast = 1;
-        return -1;
-    }
-    w->skippedLast = 0;
-    if (w->smUnpaid && changed > KEA_SM_SKIP_MIN_CHANGED && (long)changed * KEA_SM_UNPAID_FRACTION > (long)n)
-        return -1; /* it did not pay: wait until the active set has settled */
-    for (i = 0; i < n; ++i) /* the step runs: list the free rows, freeze their bounds */
-        if (w->wasFree[i]) {
-            KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
-            w->freeRows[nFree++] = i;
-        }
-    if (nFree == 0)
-        return 0;
-
-    /* Preconditioned CG on A_FF step = -w_F from step = 0. */
-    KeaFindSegments(w, nFree);
+    MeReal rz, rz0;
+    int i, p, steps = 0;
     KeaGather(w, w->dv, w->grad);
     for (p = 0; p < nFree; ++p) {
         i = w->freeRows[p];
@@ -228,17 +208,22 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
         KeaPrecondition(w, nFree, w->res, w->z);
         ++steps;
         rzNew = KeaDotN4(w->res, w->z, nFree);
-        if (!(rzNew > ME_SMALL_EPSILON * ME_SMALL_EPSILON * rz0))
+        if (!(rzNew > KEA_SM_CG_STOP * rz0))
             break;
         beta = rzNew / rz;
         for (p = 0; p < nFree; ++p)
             w->dir[p] = w->z[p] + beta * w->dir[p];
         rz = rzNew;
     }
-    if (steps == 0)
-        return 0;
+    return steps;
+}
 
-    /* Projected backtracking line search on the QP objective (bounds frozen). */
+/* Projected backtracking line search on the QP objective (bounds frozen) along CG's step: the first
+ * of KEA_SM_LINE_SEARCH_TRIES halvings that lowers it is applied to x and dv (smDecrease set). */
+static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w, int nFree, MeReal *x)
+{
+    MeReal scale;
+    int i, p, b, k, tries;
     for (tries = 0, scale = ME_R(1.0); tries < KEA_SM_LINE_SEARCH_TRIES; ++tries, scale *= ME_R(0.5)) {
         MeReal df = ME_R(0.0);
         for (p = 0; p < nFree; ++p) { /* z holds the trial step s */
@@ -255,13 +240,41 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
             w->smDecrease = -df;
             for (p = 0; p < nFree; ++p)
                 x[w->freeRows[p]] += w->z[p];
-            for (b = 0; b < nb; ++b)
+            for (b = 0; b < problem->nBodies; ++b)
                 for (k = 0; k < 4; ++k) {
                     w->dv[b].lin[k] += w->dvTmp[b].lin[k];
                     w->dv[b].ang[k] += w->dvTmp[b].ang[k];
                 }
-            break;
+            return;
         }
     }
+}
+
+/* Subspace minimisation on the rows strictly inside their bounds; returns the CG steps taken, -1 if
+ * skipped because the active set is still moving (top comment). */
+int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x)
+{
+    const int n = problem->nRows;
+    int i, nFree = 0, changed, steps;
+
+    changed = KeaUpdateFreeRows(problem, w, x);
+    if (changed > KEA_SM_SKIP_MIN_CHANGED && (long)changed * KEA_SM_SKIP_FRACTION > (long)n && !w->skippedLast) {
+        w->skippedLast = 1;
+        return -1;
+    }
+    w->skippedLast = 0;
+    if (w->smUnpaid && changed > KEA_SM_SKIP_MIN_CHANGED && (long)changed * KEA_SM_UNPAID_FRACTION > (long)n)
+        return -1; /* it did not pay: wait until the active set has settled */
+    for (i = 0; i < n; ++i) /* the step runs: list the free rows, freeze their bounds */
+        if (w->wasFree[i]) {
+            KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
+            w->freeRows[nFree++] = i;
+        }
+    if (nFree == 0)
+        return 0;
+    KeaFindSegments(w, nFree);
+    steps = KeaSubspaceCg(problem, w, nFree, maxSteps, x);
+    if (steps > 0)
+        KeaSubspaceLineSearch(problem, w, nFree, x);
     return steps;
 }

@@ -1,0 +1,73 @@
+/* kea_tuning.h -- Kea's tuning constants in one place, each with the reason for its value. None of
+ * them is a parameter a user sets (those are KeaParameters, kea.h); changing one changes
+ * trajectories (the golden hashes in tests/determinism say so), and the figures that chose them
+ * are in bench/RESULTS.md and docs/kea_log.md. */
+#ifndef KEA_TUNING_H
+#define KEA_TUNING_H
+
+#include <karma/MePrecision.h>
+
+/* ---- the direct path (kea_direct.c, kea_dense.c, kea_dense_lcp.c) ------------------------------ */
+
+/* Relative thresholds tied to the precision (rounding of a float is ~1e-7, of a double ~1e-16):
+ *  KEA_PIVOT_FLOOR: a free-block Cholesky pivot d (squared) below KEA_PIVOT_FLOOR * A_ii is raised
+ *    to it (the row then behaves as if it had that much extra softness); a block of the iterative
+ *    path whose pivot falls below it has no inverse and goes to the dense solver;
+ *  KEA_DIRECT_TOL: multipliers and feasibility are judged against KEA_DIRECT_TOL times the problem's
+ *    scale (|r| + max A_ii |x|), so that rounding noise does not cause pivots. */
+#if KARMA_DOUBLE
+#  define KEA_PIVOT_FLOOR ME_R(1e-12)
+#  define KEA_DIRECT_TOL ME_R(1e-12)
+#else
+#  define KEA_PIVOT_FLOOR ME_R(1e-6)
+#  define KEA_DIRECT_TOL ME_R(2e-6)
+#endif
+
+/** Auto takes the direct path up to this many times maxDirectRows rows when the factor is sparse:
+ *  a tree of bodies has a factor without fill, as cheap as its rows, but A and the factor are
+ *  still stored densely (n^2), which this cap bounds. */
+#define KEA_SPARSE_DIRECT_FACTOR 4
+
+/** The friction polish accepts its candidate when every row's natural map is within
+ *  KEA_POLISH_TOL_W KEA_DIRECT_TOL of the problem's scale and its bounds within KEA_POLISH_TOL_X
+ *  KEA_DIRECT_TOL |x|: the coupled solve carries more rounding than one pivot's (a Woodbury update
+ *  and a refinement step), and a rejected polish costs another friction pass. The passes also stop
+ *  when the bounds moved less than KEA_POLISH_TOL_W KEA_DIRECT_TOL |x|. */
+#define KEA_POLISH_TOL_W ME_R(10.0)
+#define KEA_POLISH_TOL_X ME_R(100.0)
+
+/** The dense solver's automatic pivot budget, KEA_DENSE_PIVOTS_PER_ROW n + KEA_DENSE_PIVOTS_EXTRA
+ *  (maxPivots 0): a warm-started solve takes a few pivots, a cold one about one per row that
+ *  changes state; the budget only stops a cycling solve, and the extra covers tiny problems. */
+#define KEA_DENSE_PIVOTS_PER_ROW 8
+#define KEA_DENSE_PIVOTS_EXTRA 64
+
+/* ---- the iterative path (kea_iterative.h and its files) ----------------------------------------- */
+
+/** Blocks of at most this many rows compute J_b dv row by row from the padded rows; larger ones (a
+ *  fixed joint's 6) from their 12 x m transpose, one column kernel call: below it, the call and
+ *  the transpose cost more than the rows. */
+#define KEA_GATHER_ROW_BY_ROW 4
+
+/** An SM step is skipped when more rows than this (and than the fraction below) went from free to
+ *  bound or back since the last SM chance: a small problem's CG is cheap, and a lone box's four
+ *  corners need it to share their load, so a few changes never skip it. */
+#define KEA_SM_SKIP_MIN_CHANGED 16
+/** ... and more than 1/KEA_SM_SKIP_FRACTION of the rows changed: CG on a free set that the next
+ *  sweep changes again is mostly thrown away (a pile whose contacts keep opening and slipping). This
+ *  rule never skips twice in a row, so a moving pile still gets an SM step every other sweep
+ *  (skipping at a lower fraction, or twice in a row, let the pyramids fall). */
+#define KEA_SM_SKIP_FRACTION 20
+/** When the last SM step lowered the QP objective less than the sweep after it ("did not pay"), the
+ *  next one waits until at most 1/KEA_SM_UNPAID_FRACTION of the rows (or KEA_SM_SKIP_MIN_CHANGED)
+ *  change between chances; this rule may skip any number of chances in a row, until the active set
+ *  settles, so a solve run to convergence keeps its SM steps. */
+#define KEA_SM_UNPAID_FRACTION 100
+/** Halvings of the SM step tried by its projected line search (1, 1/2, 1/4, 1/8) before it is
+ *  rejected: a rejected step costs a sweep's worth of work, more halvings rarely find a decrease. */
+#define KEA_SM_LINE_SEARCH_TRIES 4
+/** SM's CG stops when r . P^-1 r falls below this times its first value: the square of the
+ *  precision's small epsilon, below which the residual is rounding noise. */
+#define KEA_SM_CG_STOP (ME_SMALL_EPSILON * ME_SMALL_EPSILON)
+
+#endif
