@@ -38,28 +38,47 @@ ME_API void MdtWorldReCreate(MdtWorldID w);
 ME_API void MdtWorldStep(MdtWorldID w, MeReal stepSize);
 
 /* ---- accessors ---------------------------------------------------------------------------- */
+/** Number of live bodies, enabled or not; 0 for an invalid ID (ME_ERR_INVALID_HANDLE). */
 ME_API int MdtWorldGetTotalBodies(MdtWorldID w);
+/** Number of enabled bodies; 0 for an invalid ID. */
 ME_API int MdtWorldGetEnabledBodies(MdtWorldID w);
+/** Number of live constraints (joints, contact groups and contacts); 0 for an invalid ID. */
 ME_API int MdtWorldGetTotalConstraints(MdtWorldID w);
+/** Number of enabled constraints; 0 for an invalid ID. */
 ME_API int MdtWorldGetEnabledConstraints(MdtWorldID w);
+/** Size of the body pool given to MdtWorldCreate; 0 for an invalid ID. */
 ME_API int MdtWorldGetMaxBodies(MdtWorldID w);
+/** Size of the constraint pool given to MdtWorldCreate; 0 for an invalid ID. */
 ME_API int MdtWorldGetMaxConstraints(MdtWorldID w);
+/** Constraint softness ε (MdtWorldSetEpsilon); 0 for an invalid ID. */
 ME_API MeReal MdtWorldGetEpsilon(MdtWorldID w);
+/** Error relaxation γ (MdtWorldSetGamma); 0 for an invalid ID. */
 ME_API MeReal MdtWorldGetGamma(MdtWorldID w);
+/** Gravity acceleration (m/s²) into g; NULL g refused (ME_ERR_NULL_ARGUMENT). */
 ME_API void MdtWorldGetGravity(MdtWorldID w, MeVector3 g);
+/** Whether resting bodies are disabled automatically; MEFALSE for an invalid ID. */
 ME_API MeBool MdtWorldGetAutoDisable(MdtWorldID w);
+/** Squared-speed threshold of auto-disable (m²/s²); 0 for an invalid ID. */
 ME_API MeReal MdtWorldGetAutoDisableVelocityThreshold(MdtWorldID w);
+/** Squared angular speed threshold of auto-disable (rad²/s²); 0 for an invalid ID. */
 ME_API MeReal MdtWorldGetAutoDisableAngularVelocityThreshold(MdtWorldID w);
+/** Squared acceleration threshold of auto-disable (m²/s⁴); 0 for an invalid ID. */
 ME_API MeReal MdtWorldGetAutoDisableAccelerationThreshold(MdtWorldID w);
+/** Squared angular acceleration threshold (rad²/s⁴); 0 for an invalid ID. */
 ME_API MeReal MdtWorldGetAutoDisableAngularAccelerationThreshold(MdtWorldID w);
+/** Seconds a body stays enabled before it may be auto-disabled (s); 0 for an invalid ID. */
 ME_API MeReal MdtWorldGetAutoDisableAliveTime(MdtWorldID w);
+/** Iteration cap of the LCP solver; 0 for an invalid ID. */
 ME_API int MdtWorldGetMaxLCPIterations(MdtWorldID w);
 /** Density giving a cube of side lengthScale the mass massScale. */
 ME_API MeReal MdtWorldGetDefaultDensity(MdtWorldID w);
+/** The typical object size given to MdtWorldCreate (m); 0 for an invalid ID. */
 ME_API MeReal MdtWorldGetLengthScale(MdtWorldID w);
+/** The typical mass given to MdtWorldCreate (kg); 0 for an invalid ID. */
 ME_API MeReal MdtWorldGetMassScale(MdtWorldID w);
 /** The world's profile: one section per step stage (times of the last completed step). */
 ME_API const MeProfile *MdtWorldGetProfile(MdtWorldID w);
+/** The world's profile, writable (owned by the world, valid while it lives); NULL for an invalid ID. */
 ME_API MeProfile *MdtWorldGetProfilePtr(MdtWorldID w);
 
 /** Counts describing the last step and the pools, for tools and the viewer. */
@@ -104,8 +123,11 @@ typedef struct MdtSolverStats {
 /** Fill `stats` with what the last step's solver did (partitions, rows, iterations); then the
  *  solver settings: method, largest direct partition (rows), tolerance. */
 ME_API void MdtWorldGetSolverStats(MdtWorldID w, MdtSolverStats *stats);
+/** The LCP method in use (MdtWorldSetLCPSolver); MdtLCPSolverAuto for an invalid ID. */
 ME_API MdtLCPSolver MdtWorldGetLCPSolver(MdtWorldID w);
+/** Largest partition (rows) the automatic solver solves exactly; 0 for an invalid ID. */
 ME_API int MdtWorldGetMaxDirectRows(MdtWorldID w);
+/** Residual (m/s) at which the iterative solver stops; 0 for an invalid ID. */
 ME_API MeReal MdtWorldGetLCPTolerance(MdtWorldID w);
 
 /* ---- mutators ----------------------------------------------------------------------------- */
@@ -121,6 +143,7 @@ ME_API void MdtWorldSetGamma(MdtWorldID w, MeReal g);
 ME_API void MdtWorldSetGammaWithRefTimeStep(MdtWorldID w, MeReal aGamma, MeReal aRefStep, MeReal aTimeStep);
 /** Zero the force, torque and impulse accumulators of every body. */
 ME_API void MdtWorldResetForces(MdtWorldID w);
+/** Turn automatic disabling of resting bodies on (METRUE) or off; invalid ID refused. */
 ME_API void MdtWorldSetAutoDisable(MdtWorldID w, MeBool d);
 /** Squared-speed threshold (m²/s²) below which a body may be disabled. Default 0.02·lengthScale². */
 ME_API void MdtWorldSetAutoDisableVelocityThreshold(MdtWorldID w, MeReal vt);
@@ -144,6 +167,7 @@ ME_API void MdtWorldSetMaxDirectRows(MdtWorldID w, int rows);
 ME_API void MdtWorldSetLCPTolerance(MdtWorldID w, MeReal tolerance);
 /** Called when the world enables a body (also by the partitioner) / disables one (auto-disable). */
 ME_API void MdtWorldSetBodyEnableCallback(MdtWorldID w, MdtBodyEnableCBPtr cb, void *userData);
+/** Called when auto-disable disables a body (NULL: none); userData is not owned. */
 ME_API void MdtWorldSetBodyDisableCallback(MdtWorldID w, MdtBodyEnableCBPtr cb, void *userData);
 /** Called when a contact group is destroyed, by the application or with its body. */
 ME_API void MdtWorldSetContactGroupDestroyCallback(MdtWorldID w, MdtContactGroupDestroyCBPtr cb, void *userData);
@@ -178,6 +202,7 @@ ME_API void MdtWorldSetCheckSim(MdtWorldID w, MeBool check);
  *  acts (no velocity, force or enabled constraint: ME_ERR_NOTHING_ACTS). Each is a warning, reported at
  *  most once per world, naming the call to make. MEFALSE silences them (a scene that means it). */
 ME_API void MdtWorldSetHints(MdtWorldID w, MeBool hints);
+/** Whether the one-time hints are on (MdtWorldSetHints); MEFALSE for an invalid ID. */
 ME_API MeBool MdtWorldGetHints(MdtWorldID w);
 
 /** The smallest step MdtWorldStep (and MstUniverseStep) accepts, in seconds: a shorter one is
@@ -188,16 +213,20 @@ ME_API MeBool MdtWorldGetHints(MdtWorldID w);
  *  has been back under both limits); the step does not slow it. > 0, MEINFINITY turns the report
  *  off; NaN or ≤ 0 is refused. Default 1000·lengthScale (MDTWORLD_DEFAULT_SPEED_LIMIT). */
 ME_API void MdtWorldSetSpeedLimit(MdtWorldID w, MeReal speed);
+/** The speed limit (m/s) of MdtWorldSetSpeedLimit; 0 for an invalid ID. */
 ME_API MeReal MdtWorldGetSpeedLimit(MdtWorldID w);
 /** Angular speed (rad/s) above which a body is reported, as MdtWorldSetSpeedLimit. Default 1000
  *  (MDTWORLD_DEFAULT_ANGULAR_SPEED_LIMIT). */
 ME_API void MdtWorldSetAngularSpeedLimit(MdtWorldID w, MeReal angularSpeed);
+/** The angular speed limit (rad/s) of MdtWorldSetAngularSpeedLimit; 0 for an invalid ID. */
 ME_API MeReal MdtWorldGetAngularSpeedLimit(MdtWorldID w);
 /** Largest speed (m/s) at which a contact's penetration is corrected (the γ·depth/h term of its
  *  normal row; a bounce is not limited), as ODE's contact_max_correcting_vel. > 0, MEINFINITY: no
  *  bound; NaN or ≤ 0 is refused. Default 10·lengthScale (MDTWORLD_DEFAULT_MAX_CORRECTING_VEL). */
 ME_API void MdtWorldSetMaxCorrectingVelocity(MdtWorldID w, MeReal speed);
+/** The penetration-correction speed cap (m/s); 0 for an invalid ID. */
 ME_API MeReal MdtWorldGetMaxCorrectingVelocity(MdtWorldID w);
+/** Whether the solver's result is checked before integrating (MdtWorldSetCheckSim). */
 ME_API MeBool MdtWorldGetCheckSim(MdtWorldID w);
 /** Callback for failed partitions (NULL: none; the ME_ERR_NONFINITE_STATE report is always made).
  *  Karma 1.2's MdtWorldSetSimErrorCB passed Kea's internal arrays, which this library does not have:
@@ -223,8 +252,11 @@ ME_API void MdtWorldSetMatrixSizeLog(MdtWorldID w, int *const sizeLog, int logSi
  *  workspace ("Kea pool"), the partition lists ("partition output") and the solver rows, which hold
  *  what 1.2 kept in its Kea constraints and Kea transforms chunks (both getters return that chunk). */
 ME_API MeChunk *MdtWorldGetKeaPoolChunk(MdtWorldID w);
+/** The partition lists' chunk (owned by the world); NULL for an invalid ID. */
 ME_API MeChunk *MdtWorldGetPartitionOutputChunk(MdtWorldID w);
+/** The solver rows' chunk (what 1.2 kept as Kea transforms; owned by the world); NULL if invalid. */
 ME_API MeChunk *MdtWorldGetKeaTMChunk(MdtWorldID w);
+/** The solver rows' chunk (same chunk as MdtWorldGetKeaTMChunk; owned by the world). */
 ME_API MeChunk *MdtWorldGetKeaConstraintsChunk(MdtWorldID w);
 /** The largest solver workspace any step has used, bytes (MeChunkGetMaxSize of the Kea pool chunk). */
 ME_API int MdtWorldGetMaxMemoryPoolUsed(MdtWorldID w);
