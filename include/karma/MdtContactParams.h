@@ -75,43 +75,73 @@ ME_API void MdtContactParamsReset(MdtContactParamsID p);
 
 /** The parameters' values (see the setters below for their meaning and units). */
 ME_API MdtContactType MdtContactParamsGetType(MdtContactParamsID p);
+/** Friction model of the primary direction; NULL p refused (ME_ERR_NULL_ARGUMENT). */
 ME_API MdtFrictionModel MdtContactParamsGetPrimaryFrictionModel(MdtContactParamsID p);
+/** Friction model of the secondary direction; NULL p refused (ME_ERR_NULL_ARGUMENT). */
 ME_API MdtFrictionModel MdtContactParamsGetSecondaryFrictionModel(MdtContactParamsID p);
+/** Restitution, 0 ... 1; NULL p refused (returns 0). */
 ME_API MeReal MdtContactParamsGetRestitution(MdtContactParamsID p);
+/** Approach speed (m/s) above which restitution applies; NULL p refused (returns 0). */
 ME_API MeReal MdtContactParamsGetRestitutionThreshold(MdtContactParamsID p);
+/** Softness added to the normal row's ε (1/kg); NULL p refused (returns 0). */
 ME_API MeReal MdtContactParamsGetSoftness(MdtContactParamsID p);
+/** Largest pulling force the contact may apply (N); NULL p refused (returns 0). */
 ME_API MeReal MdtContactParamsGetMaxAdhesiveForce(MdtContactParamsID p);
+/** Box-model force bound along the primary direction (N); NULL p refused (returns 0). */
 ME_API MeReal MdtContactParamsGetPrimaryFriction(MdtContactParamsID p);
+/** Coulomb coefficient along the primary direction; NULL p refused (returns 0). */
 ME_API MeReal MdtContactParamsGetPrimaryFrictionCoeffecient(MdtContactParamsID p);
+/** Slip along the primary direction (s/kg, m/s per N); NULL p refused (returns 0). */
 ME_API MeReal MdtContactParamsGetPrimarySlip(MdtContactParamsID p);
+/** Surface velocity along the primary direction (m/s); NULL p refused (returns 0). */
 ME_API MeReal MdtContactParamsGetPrimarySlide(MdtContactParamsID p);
+/** Box-model force bound along the secondary direction (N); NULL p refused (returns 0). */
 ME_API MeReal MdtContactParamsGetSecondaryFriction(MdtContactParamsID p);
+/** Coulomb coefficient along the secondary direction; NULL p refused (returns 0). */
 ME_API MeReal MdtContactParamsGetSecondaryFrictionCoeffecient(MdtContactParamsID p);
+/** Slip along the secondary direction (s/kg); NULL p refused (returns 0). */
 ME_API MeReal MdtContactParamsGetSecondarySlip(MdtContactParamsID p);
+/** Surface velocity along the secondary direction (m/s); NULL p refused (returns 0). */
 ME_API MeReal MdtContactParamsGetSecondarySlide(MdtContactParamsID p);
 
 /** Friction: none, one direction or two (MdtContactTypeFrictionZero/1D/2D), and the friction
  *  model of each direction (box: a force cap; normal force: Coulomb, a coefficient). */
 ME_API void MdtContactParamsSetType(MdtContactParamsID p, MdtContactType t);
+/** Friction model of the primary direction; a value outside MdtFrictionModel refused (ME_ERR_ARGUMENT_RANGE). */
 ME_API void MdtContactParamsSetPrimaryFrictionModel(MdtContactParamsID p, MdtFrictionModel m);
+/** Friction model of the secondary direction; a value outside MdtFrictionModel refused. */
 ME_API void MdtContactParamsSetSecondaryFrictionModel(MdtContactParamsID p, MdtFrictionModel m);
 /** Both directions. */
 ME_API void MdtContactParamsSetFrictionModel(MdtContactParamsID p, MdtFrictionModel m);
+/** Restitution r in [0, 1] (sets the bounce bit when > 0); NaN refused, outside [0, 1] ME_ERR_ARGUMENT_RANGE. */
 ME_API void MdtContactParamsSetRestitution(MdtContactParamsID p, MeReal r);
+/** Approach speed (m/s, ≥ 0) below which there is no bounce; NaN, infinite or negative refused. */
 ME_API void MdtContactParamsSetRestitutionThreshold(MdtContactParamsID p, MeReal v);
+/** Softness s ≥ 0 (1/kg; sets the soft bit when > 0); NaN, infinite or negative refused (ME_ERR_NEGATIVE_VALUE). */
 ME_API void MdtContactParamsSetSoftness(MdtContactParamsID p, MeReal s);
+/** Largest pulling force f ≥ 0 (N; MEINFINITY allowed; sets the adhesive bit); NaN or negative refused. */
 ME_API void MdtContactParamsSetMaxAdhesiveForce(MdtContactParamsID p, MeReal f);
+/** Box-model bound along the primary direction (N, ≥ 0, MEINFINITY: no sliding); NaN or negative refused. */
 ME_API void MdtContactParamsSetPrimaryFriction(MdtContactParamsID p, MeReal f);
+/** Coulomb coefficient along the primary direction (≥ 0, finite); NaN or negative refused. */
 ME_API void MdtContactParamsSetPrimaryFrictionCoeffecient(MdtContactParamsID p, MeReal f);
+/** Slip along the primary direction (s/kg, ≥ 0, finite; sets the slip bit); NaN or negative refused. */
 ME_API void MdtContactParamsSetPrimarySlip(MdtContactParamsID p, MeReal s);
+/** Surface velocity along the primary direction (m/s, any sign; sets the slide bit); NaN refused. */
 ME_API void MdtContactParamsSetPrimarySlide(MdtContactParamsID p, MeReal s);
+/** Box-model bound along the secondary direction (N, ≥ 0, MEINFINITY allowed); NaN or negative refused. */
 ME_API void MdtContactParamsSetSecondaryFriction(MdtContactParamsID p, MeReal f);
+/** Coulomb coefficient along the secondary direction (≥ 0, finite); NaN or negative refused. */
 ME_API void MdtContactParamsSetSecondaryFrictionCoeffecient(MdtContactParamsID p, MeReal f);
+/** Slip along the secondary direction (s/kg, ≥ 0, finite; sets the slip bit); NaN or negative refused. */
 ME_API void MdtContactParamsSetSecondarySlip(MdtContactParamsID p, MeReal s);
+/** Surface velocity along the secondary direction (m/s; sets the slide bit); NaN or infinite refused. */
 ME_API void MdtContactParamsSetSecondarySlide(MdtContactParamsID p, MeReal s);
 /** Both directions. */
 ME_API void MdtContactParamsSetFriction(MdtContactParamsID p, MeReal f);
+/** Coulomb coefficient of both directions (≥ 0, finite); NaN, infinite or negative refused. */
 ME_API void MdtContactParamsSetFrictionCoeffecient(MdtContactParamsID p, MeReal f);
+/** Slip of both directions (s/kg, ≥ 0, finite; sets both slip bits); NaN or negative refused. */
 ME_API void MdtContactParamsSetSlip(MdtContactParamsID p, MeReal s);
 
 ME_EXTERN_C_END
