@@ -21,24 +21,31 @@ ME_EXTERN_C_BEGIN
 ME_API MdtContactID MdtContactCreate(MdtWorldID w);
 /** Restore the defaults: position 0, normal (0,1,0), direction (0,1,0), penetration 0, params reset. */
 ME_API void MdtContactReset(MdtContactID c);
+/** The contact as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtContactQuaConstraint(MdtContactID c);
+/** The constraint as a contact, or NULL when it is not one (an invalid ID is reported). */
 ME_API MdtContactID MdtConstraintDCastContact(MdtConstraintID c);
 
 /** Contact point, world frame. */
 ME_API void MdtContactSetPosition(MdtContactID c, MeReal x, MeReal y, MeReal z);
+/** Contact point, world frame (m); NULL p refused (ME_ERR_NULL_ARGUMENT). */
 ME_API void MdtContactGetPosition(MdtContactID c, MeVector3 p);
 /** Normal from body 1 towards body 0 (normalised here; a zero vector is refused). */
 ME_API void MdtContactSetNormal(MdtContactID c, MeReal x, MeReal y, MeReal z);
+/** Unit normal from body 1 towards body 0; NULL n refused (ME_ERR_NULL_ARGUMENT). */
 ME_API void MdtContactGetNormal(MdtContactID c, MeVector3 n);
 /** Overlap depth (> 0 when penetrating), m. */
 ME_API void MdtContactSetPenetration(MdtContactID c, MeReal p);
+/** Overlap depth (m, > 0 when penetrating); 0 for an invalid ID. */
 ME_API MeReal MdtContactGetPenetration(MdtContactID c);
 /** Primary friction direction (made perpendicular to the normal; used with the UseDirection
  *  option, else a direction is chosen). The secondary is primary × normal (as Karma). */
 ME_API void MdtContactSetDirection(MdtContactID c, MeReal x, MeReal y, MeReal z);
+/** Primary friction direction (unit, world frame); NULL d refused (ME_ERR_NULL_ARGUMENT). */
 ME_API void MdtContactGetDirection(MdtContactID c, MeVector3 d);
 /** Velocity of the world's surface at this contact (body 1 NULL; sets the UseWorldVelocity option). */
 ME_API void MdtContactSetWorldVelocity(MdtContactID c, MeReal vx, MeReal vy, MeReal vz);
+/** Velocity of the world's surface at the contact (m/s); NULL v refused. */
 ME_API void MdtContactGetWorldVelocity(MdtContactID c, MeVector3 v);
 /** The contact's parameters (a pointer into the contact: change them in place). */
 ME_API MdtContactParamsID MdtContactGetParams(MdtContactID c);
@@ -50,6 +57,7 @@ ME_API void MdtContactGetRelativeVelocity(MdtContactID c, MeVector3 v);
 ME_API MeReal MdtContactGetNormalForce(MdtContactID c);
 /** Importance for matrix capping (larger is kept first). */
 ME_API void MdtContactSetImportance(MdtContactID c, MeReal importance);
+/** Importance for matrix capping (MdtContactSetImportance); 0 for an invalid ID. */
 ME_API MeReal MdtContactGetImportance(MdtContactID c);
 /** Next contact in the same group, or NULL. */
 ME_API MdtContactID MdtContactGetNext(MdtContactID c);
@@ -65,6 +73,7 @@ ME_API MdtContactGroupID MdtContactGetContactGroup(MdtContactID c);
  *  stand-alone contacts, following the body's constraint list. NULL after the last; `c` must be a
  *  contact of body `b`. Do not destroy contacts while iterating. */
 ME_API MdtContactID MdtBodyGetFirstContact(MdtBodyID b);
+/** The contact after c among those touching b, or NULL; c not touching b refused (ME_ERR_BAD_STATE). */
 ME_API MdtContactID MdtBodyGetNextContact(MdtBodyID b, MdtContactID c);
 
 #define MdtContactDestroy(c) MdtConstraintDestroy(MdtContactQuaConstraint(c))

@@ -21,11 +21,14 @@ ME_API MdtContactGroupID MdtContactGroupCreate(MdtWorldID w);
 ME_API void MdtContactGroupDestroy(MdtContactGroupID g);
 /** Destroy the contacts, keep the group. */
 ME_API void MdtContactGroupReset(MdtContactGroupID g);
+/** The group as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtContactGroupQuaConstraint(MdtContactGroupID g);
+/** The constraint as a contact group, or NULL when it is not one. */
 ME_API MdtContactGroupID MdtConstraintDCastContactGroup(MdtConstraintID c);
 
 /** The group's contacts in order: the first, and the one after `c` (NULL after the last). */
 ME_API MdtContactID MdtContactGroupGetFirstContact(MdtContactGroupID g);
+/** The group's contact after c, or NULL after the last; c not in g refused (ME_ERR_BAD_STATE). */
 ME_API MdtContactID MdtContactGroupGetNextContact(MdtContactGroupID g, MdtContactID c);
 /** Add a stand-alone (disabled) contact to the end of the group; it takes the group's bodies. */
 ME_API void MdtContactGroupAppendContact(MdtContactGroupID g, MdtContactID c);
@@ -33,15 +36,19 @@ ME_API void MdtContactGroupAppendContact(MdtContactGroupID g, MdtContactID c);
 ME_API void MdtContactGroupRemoveContact(MdtContactGroupID g, MdtContactID c);
 /** A new contact at the end of the group (params reset), or NULL when the pool is full. */
 ME_API MdtContactID MdtContactGroupCreateContact(MdtContactGroupID g);
+/** Destroy a contact of the group; c not in g (ME_ERR_BAD_STATE) or during the step (ME_ERR_WORLD_LOCKED) refused. */
 ME_API void MdtContactGroupDestroyContact(MdtContactGroupID g, MdtContactID c);
 /** Whether the group's bodies are in the opposite order from its generator's models. */
 ME_API MeBool MdtContactGroupIsSwapped(MdtContactGroupID g);
+/** Record that the group's bodies are in the opposite order from its generator's models. */
 ME_API void MdtContactGroupSetSwapped(MdtContactGroupID g, MeBool swapped);
+/** Number of contacts in the group; 0 for an invalid ID. */
 ME_API int MdtContactGroupGetCount(MdtContactGroupID g);
 /** Sum of the contacts' normal forces in the last step, N. */
 ME_API MeReal MdtContactGroupGetNormalForce(MdtContactGroupID g);
 /** What created the group (the bridge stores its model pair). */
 ME_API void MdtContactGroupSetGenerator(MdtContactGroupID g, void *generator);
+/** The generator pointer set by MdtContactGroupSetGenerator (not owned by the group); NULL if none. */
 ME_API void *MdtContactGroupGetGenerator(MdtContactGroupID g);
 
 #define MdtContactGroupEnable(g) MdtConstraintEnable(MdtContactGroupQuaConstraint(g))
