@@ -28,11 +28,14 @@ ME_API void McdModelDestroy(McdModelID m);
  *  tolerance, material 0, sort key 0, no user data, no body, no callbacks or velocity pointers,
  *  request ID 0); keeps the geometry and the space. */
 ME_API void McdModelReset(McdModelID m);
+/** Whether m is a live model ID (no message). */
 ME_API MeBool McdModelIsValid(McdModelID m);
+/** The framework whose pool holds the model; NULL for an invalid ID (ME_ERR_INVALID_HANDLE). */
 ME_API McdFrameworkID McdModelGetFramework(McdModelID m);
 
 /** The model's shape: set (the geometry's reference count follows; NULL refused) and get. */
 ME_API void McdModelSetGeometry(McdModelID m, McdGeometryID geometry);
+/** The model's geometry (shared, reference-counted: not owned by the caller); NULL for an invalid ID. */
 ME_API McdGeometryID McdModelGetGeometry(McdModelID m);
 
 /** Follow the transform at `tm` (it must outlive the model's use of it); NULL: the model's own. */
@@ -58,19 +61,26 @@ ME_API void McdModelGetWorldTransform(McdModelID m, MeMatrix4 tm);
 
 /** Distance (metres, >= 0, finite) within which the pair tests report contacts for this model. */
 ME_API void McdModelSetContactTolerance(McdModelID m, MeReal tolerance);
+/** Contact tolerance (m); 0 for an invalid ID. */
 ME_API MeReal McdModelGetContactTolerance(McdModelID m);
 /** Material index (>= 0) for the bridge's material table. */
 ME_API void McdModelSetMaterial(McdModelID m, int material);
+/** Material index; 0 for an invalid ID. */
 ME_API int McdModelGetMaterial(McdModelID m);
+/** Order key of the model's pairs (0 ... MCD_MODEL_SORT_KEY_MAX); outside that range refused (ME_ERR_ARGUMENT_RANGE). */
 ME_API void McdModelSetSortKey(McdModelID m, int key);
+/** The model's sort key; 0 for an invalid ID. */
 ME_API int McdModelGetSortKey(McdModelID m);
+/** Attach an application pointer (not owned: Mcd never frees or follows it). */
 ME_API void McdModelSetUserData(McdModelID m, void *data);
+/** The application pointer of McdModelSetUserData (owned by the application); NULL if none. */
 ME_API void *McdModelGetUserData(McdModelID m);
 /* The model's dynamics body: McdModelSetBody / McdModelGetBody belong to the bridge (MstBridge.h),
  * since Mcd knows nothing of Mdt. */
 /** Karma's raw body slot (the bridge's McdModelSetBody fills it too): an untyped pointer that Mcd
  *  stores and never follows. */
 ME_API void *McdModelGetBodyData(McdModelID m);
+/** Store an untyped body pointer (not owned, never followed); invalid model refused. */
 ME_API void McdModelSetBodyData(McdModelID m, void *body);
 
 /** The type number of the model's geometry. */
@@ -78,20 +88,26 @@ ME_API McdGeometryType McdModelGetGeometryType(McdModelID m);
 /** Called first by each update of the model (McdModelUpdate, McdSpaceUpdateAll...); an update the
  *  callback itself makes does not call it again. NULL: none (the default). */
 ME_API void McdModelSetUpdateCallback(McdModelID m, McdModelUpdateFnPtr fn);
+/** The callback set by McdModelSetUpdateCallback, or NULL. */
 ME_API McdModelUpdateFnPtr McdModelGetUpdateCallback(McdModelID m);
 /** Called by McdIntersect, for each model of the pair that has one, with the pair's result. */
 ME_API void McdModelSetIntersectCallback(McdModelID m, McdModelIntersectFnPtr fn);
+/** The callback set by McdModelSetIntersectCallback, or NULL. */
 ME_API McdModelIntersectFnPtr McdModelGetIntersectCallback(McdModelID m);
 /** The model's class for McduRequestTable (>= 0; McdModelGetDefaultRequestID() at creation). */
 ME_API void McdModelSetRequestID(McdModelID m, int requestId);
+/** The model's class for McduRequestTable; 0 for an invalid ID. */
 ME_API int McdModelGetRequestID(McdModelID m);
 /** The request ID models start with. */
 #define McdModelGetDefaultRequestID() (0)
 /** Where the model's velocities live (e.g. a body's): kept for the safe-time queries to come;
  *  NULL (the default) means at rest. Mcd stores the pointers and does not read them yet. */
 ME_API void McdModelSetLinearVelocityPtr(McdModelID m, MeReal *velocity);
+/** The linear velocity pointer given (m/s; owned by the caller who set it), or NULL. */
 ME_API MeReal *McdModelGetLinearVelocityPtr(McdModelID m);
+/** Where the model's angular velocity (rad/s) lives; the pointer is stored, not owned (NULL: at rest). */
 ME_API void McdModelSetAngularVelocityPtr(McdModelID m, MeReal *velocity);
+/** The angular velocity pointer given (rad/s; owned by the caller who set it), or NULL. */
 ME_API MeReal *McdModelGetAngularVelocityPtr(McdModelID m);
 
 /** Compound the relative transform with the transform (the geometry-to-world transform). */

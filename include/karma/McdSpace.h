@@ -115,7 +115,9 @@ ME_API MeBool McdSpaceIsValid(McdSpaceID space);
 /** The change block: models are inserted, removed, frozen and updated between BeginChanges and
  *  EndChanges, which decides the pairs' hello, staying and goodbye; misuse is ME_ERR_BAD_STATE. */
 ME_API void McdSpaceBeginChanges(McdSpaceID space);
+/** Close the change block and decide hello, staying and goodbye; outside a block refused (ME_ERR_BAD_STATE). */
 ME_API void McdSpaceEndChanges(McdSpaceID space);
+/** Whether the space is inside a change block; MEFALSE for an invalid ID. */
 ME_API MeBool McdSpaceIsChanging(McdSpaceID space);
 
 /** Adds a model (updating its transform and AABB first). A model is in at most one space. */
@@ -136,18 +138,23 @@ ME_API void McdSpaceUpdateModel(McdModelID model);
 /** A frozen model keeps its box and pairs without being updated (its body asleep); MEFALSE
  *  (reported) for a model in no space. */
 ME_API MeBool McdSpaceFreezeModel(McdModelID model);
+/** Let McdSpaceUpdateAll update the model again; MEFALSE (reported) for a model in no space. */
 ME_API MeBool McdSpaceUnfreezeModel(McdModelID model);
+/** Whether the model is frozen in its space; MEFALSE for a model in no space (no message). */
 ME_API MeBool McdSpaceModelIsFrozen(McdModelID model);
 
 /** Pair filtering: a disabled pair is not reported (a reported one says Goodbye once). The setting
  *  lasts while both models stay in the space, overlapping or not, and takes a pair-pool entry. */
 /** Return METRUE when the setting was recorded. */
 ME_API MeBool McdSpaceDisablePair(McdModelID model1, McdModelID model2);
+/** Report the pair again; METRUE when recorded, MEFALSE (reported) for models not in one space or wrong state. */
 ME_API MeBool McdSpaceEnablePair(McdModelID model1, McdModelID model2);
+/** Whether the pair of models may be reported; MEFALSE (reported) for models not in one space. */
 ME_API MeBool McdSpacePairIsEnabled(McdModelID model1, McdModelID model2);
 
 /** Models in the space, and the iterator over them (McdSpaceGetModel, below). */
 ME_API int McdSpaceGetModelCount(McdSpaceID space);
+/** Start iter at the space's first model slot; NULL iter refused (ME_ERR_NULL_ARGUMENT). */
 ME_API void McdSpaceModelIteratorBegin(McdSpaceID space, McdSpaceModelIterator *iter);
 /** Next model in slot order into *model; returns MEFALSE when there are no more. */
 ME_API MeBool McdSpaceGetModel(McdSpaceID space, McdSpaceModelIterator *iter, McdModelID *model);
@@ -158,6 +165,7 @@ ME_API void McdSpaceSetPoolFullHandler(McdSpaceID space, McdSpacePoolErrorFnPtr 
 ME_API McdSpacePoolErrorFnPtr McdSpaceGetPoolFullHandler(McdSpaceID space);
 /** The application's pointer for the space (NULL at creation). */
 ME_API void McdSpaceSetUserData(McdSpaceID space, void *data);
+/** The application pointer of McdSpaceSetUserData (not owned by the space); NULL if none. */
 ME_API void *McdSpaceGetUserData(McdSpaceID space);
 /** The per-model update of McdSpaceUpdateAll (NULL: McdModelUpdate). */
 ME_API void McdSpaceSetAABBFn(McdSpaceID space, McdSpaceUpdateAABBFnPtr updateAABBFn);
@@ -167,6 +175,7 @@ ME_API void McdSpaceSetModelCullingParameters(McdSpaceID space, McdModelID model
                                               int id);
 /** Pairs held now (live, goodbye and disabled records) and the pool size. */
 ME_API int McdSpaceGetPairCount(McdSpaceID space);
+/** Size of the pair pool (pairCount of McdSpaceAxisSortCreate); 0 for an invalid ID. */
 ME_API int McdSpaceGetPairCapacity(McdSpaceID space);
 /** Overlapping pairs not recorded for lack of pool room since the space was created. */
 ME_API int McdSpaceGetLostPairCount(McdSpaceID space);
@@ -179,6 +188,7 @@ ME_API McdCullingTableID McdCullingTableCreate(int size);
 ME_API void McdCullingTableDestroy(McdCullingTableID table);
 /** Set (cull = METRUE) or clear the bit of indices i and j (and of j and i). */
 ME_API void McdCullingTableSet(McdCullingTableID table, int i, int j, MeBool cull);
+/** Whether the bit of indices i and j is set; MEFALSE (reported) for indices outside the table. */
 ME_API MeBool McdCullingTableGet(McdCullingTableID table, int i, int j);
 
 /* ---- reading the pairs ------------------------------------------------------------------- */
@@ -223,17 +233,27 @@ ME_API void McdModelPairContainerPrintStats(McdModelPairContainer *c);
 ME_API void McdPairContainerPrintStats(McdModelPairContainer *c);
 /** Start `iter` at the first hello pair of `c` (for McdIntersectEach). */
 ME_API void McdModelPairContainerIteratorInit(McdModelPairContainerIterator *iter, McdModelPairContainer *c);
+/** Free a container made by McdModelPairContainerCreate and its array (NULL: nothing done). */
 ME_API void McdModelPairContainerDestroy(McdModelPairContainer *container);
+/** Empty the three ranges (the pairs are not touched); NULL refused (ME_ERR_NULL_ARGUMENT). */
 ME_API void McdModelPairContainerReset(McdModelPairContainer *container);
+/** The goodbye range (a pointer into the container's array) and its length in *count (count may be NULL). */
 ME_API McdModelPairID *McdModelPairContainerGetGoodbyeArray(McdModelPairContainer *container, int *count);
+/** The hello range (a pointer into the container's array) and its length in *count (count may be NULL). */
 ME_API McdModelPairID *McdModelPairContainerGetHelloArray(McdModelPairContainer *container, int *count);
+/** The staying range (a pointer into the container's array) and its length in *count (may be NULL). */
 ME_API McdModelPairID *McdModelPairContainerGetStayingArray(McdModelPairContainer *container, int *count);
+/** Number of goodbye pairs; NULL container refused (returns 0). */
 ME_API int McdModelPairContainerGetGoodbyeCount(const McdModelPairContainer *container);
+/** Number of hello pairs; NULL container refused (returns 0). */
 ME_API int McdModelPairContainerGetHelloCount(const McdModelPairContainer *container);
+/** Number of staying pairs; NULL container refused (returns 0). */
 ME_API int McdModelPairContainerGetStayingCount(const McdModelPairContainer *container);
 /** Add a pair (e.g. a manual one) to a range; MEFALSE when the container is full. */
 ME_API MeBool McdModelPairContainerInsertGoodbyePair(McdModelPairContainer *container, McdModelPairID pair);
+/** Add a pair to the hello range; MEFALSE when full or NULL (reported). */
 ME_API MeBool McdModelPairContainerInsertHelloPair(McdModelPairContainer *container, McdModelPairID pair);
+/** Add a pair to the staying range; MEFALSE when full or NULL (reported). */
 ME_API MeBool McdModelPairContainerInsertStayingPair(McdModelPairContainer *container, McdModelPairID pair);
 
 ME_EXTERN_C_END
