@@ -21,6 +21,7 @@ ME_API void McdBoxGetXYAABB(McdBoxID b, MeMatrix4 tm, MeReal bounds[4]);
 ME_API void McdBoxMaximumPointLocal(McdBoxID b, MeReal *inDir, MeReal *outPoint);
 /** Full edge lengths. */
 ME_API void McdBoxGetDimensions(McdBoxID b, MeReal *dx, MeReal *dy, MeReal *dz);
+/** Full edge lengths (m, each > 0, finite, within 1e-6 ... 1e6 lengthScale); else refused, box unchanged. */
 ME_API void McdBoxSetDimensions(McdBoxID b, MeReal dx, MeReal dy, MeReal dz);
 
 ME_EXTERN_C_END

@@ -10,10 +10,15 @@ typedef McdGeometryID McdCylinderID;
 
 /** A cylinder of `radius` and full `height` (both > 0, finite), z in [-height/2, height/2]. */
 ME_API McdCylinderID McdCylinderCreate(McdFrameworkID fw, MeReal radius, MeReal height);
+/** Radius (m); 0 for an invalid ID or another type (reported). */
 ME_API MeReal McdCylinderGetRadius(McdCylinderID c);
+/** Radius (m, > 0, finite, within 1e-6 ... 1e6 lengthScale); else refused (ME_ERR_MCD_DEGENERATE_GEOMETRY / _SIZE_RANGE). */
 ME_API void McdCylinderSetRadius(McdCylinderID c, MeReal radius);
+/** Full height along z (m); 0 for an invalid ID or another type (reported). */
 ME_API MeReal McdCylinderGetHeight(McdCylinderID c);
+/** Full height (m, > 0, finite, within 1e-6 ... 1e6 lengthScale); else refused, cylinder unchanged. */
 ME_API void McdCylinderSetHeight(McdCylinderID c, MeReal height);
+/** Half the height (m); 0 for an invalid ID or another type (reported). */
 ME_API MeReal McdCylinderGetHalfHeight(McdCylinderID c);
 /** Set radius and full height at once (both > 0, finite). */
 ME_API void McdCylinderSetGeometricalParameters(McdCylinderID c, MeReal inRadius, MeReal inHeight);

@@ -16,11 +16,13 @@ ME_EXTERN_C_BEGIN
 
 /** Destroy a geometry that no model uses; refused (ME_ERR_MCD_IN_USE) while referenced. */
 ME_API void McdGeometryDestroy(McdGeometryID g);
+/** Whether g is a live geometry ID (no message). */
 ME_API MeBool McdGeometryIsValid(McdGeometryID g);
 /** The type number (McdGeometryType or a user type), or -1 for a bad ID. */
 ME_API int McdGeometryGetTypeId(McdGeometryID g);
 /** Karma's second name for McdGeometryGetTypeId. */
 ME_API int McdGeometryGetType(McdGeometryID g);
+/** The type's name (static string, not to be freed); NULL for an invalid ID (reported). */
 ME_API const char *McdGeometryGetTypeName(McdGeometryID g);
 /** Holds on the geometry: models (and aggregates) using it plus references the application took.
  *  McdGeometryDestroy is refused while it is above 0. */
@@ -28,11 +30,13 @@ ME_API int McdGeometryGetReferenceCount(McdGeometryID g);
 /** Take and release a reference of the application's (models take theirs themselves). Releasing
  *  one that was not taken is refused (ME_ERR_ARGUMENT_RANGE). */
 ME_API void McdGeometryIncrementReferenceCount(McdGeometryID g);
+/** Release a reference the application took; none held refused (ME_ERR_ARGUMENT_RANGE). */
 ME_API void McdGeometryDecrementReferenceCount(McdGeometryID g);
 /** Set the count (the models' holds plus the application's); below the models' holds is refused. */
 ME_API void McdGeometrySetReferenceCount(McdGeometryID g, int refCount);
 /** The segment test of the geometry's type in Karma's form, or NULL when the type has none. */
 ME_API McdLineSegIntersectFnPtr McdGeometryGetLineSegIntersectFnPtr(McdGeometryID g);
+/** The framework whose pool holds the geometry; NULL for an invalid ID (reported). */
 ME_API McdFrameworkID McdGeometryGetFramework(McdGeometryID g);
 
 /** The tightest world axis-aligned box of the geometry placed at `tm` (NULL: identity). Unbounded

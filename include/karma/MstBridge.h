@@ -27,7 +27,9 @@ ME_EXTERN_C_BEGIN
 
 /** A bridge with room for maxMaterials materials (≥ 1; material 0 exists from the start). */
 ME_API MstBridgeID MstBridgeCreate(McdFrameworkID frame, int maxMaterials);
+/** Destroy the bridge and its buffers and material table (the space, world and models are not touched). */
 ME_API void MstBridgeDestroy(MstBridgeID b);
+/** Whether b is a live bridge ID (no message). */
 ME_API MeBool MstBridgeIsValid(MstBridgeID b);
 
 /** The default material (0): every model starts with it. */
@@ -35,7 +37,9 @@ ME_API MstMaterialID MstBridgeGetDefaultMaterial(void);
 /** A new material whose pairs start with the default contact parameters (frictionless), or
  *  MST_MATERIAL_INVALID when the table is full (reported, naming the size to raise). */
 ME_API MstMaterialID MstBridgeGetNewMaterial(MstBridgeID b);
+/** Materials in use, the default one included; 0 for an invalid ID (reported). */
 ME_API int MstBridgeGetMaterialCount(MstBridgeID b);
+/** The maxMaterials given to MstBridgeCreate; 0 for an invalid ID (reported). */
 ME_API int MstBridgeGetMaxMaterials(MstBridgeID b);
 
 /** The parameters used for contacts between materials m1 and m2 (same entry as (m2, m1)); edit them
@@ -45,18 +49,25 @@ ME_API MdtContactParamsID MstBridgeGetContactParams(MstBridgeID b, MstMaterialID
 /** Callbacks of a material pair (NULL: none): after a pair test (intersect), per contact made (a
  *  zero return drops the contact) and per pair (a zero return drops the pair's contacts). */
 ME_API void MstBridgeSetIntersectCB(MstBridgeID b, MstMaterialID m1, MstMaterialID m2, MstIntersectCBPtr cb);
+/** The intersect callback of the material pair, or NULL (also for a bad ID or material, reported). */
 ME_API MstIntersectCBPtr MstBridgeGetIntersectCB(MstBridgeID b, MstMaterialID m1, MstMaterialID m2);
+/** Callback per contact made for the material pair (NULL: none); a bad ID or material refused. */
 ME_API void MstBridgeSetPerContactCB(MstBridgeID b, MstMaterialID m1, MstMaterialID m2, MstPerContactCBPtr cb);
+/** The per-contact callback of the material pair, or NULL (also for a bad ID or material, reported). */
 ME_API MstPerContactCBPtr MstBridgeGetPerContactCB(MstBridgeID b, MstMaterialID m1, MstMaterialID m2);
+/** Callback per pair of models of the material pair (NULL: none); a bad ID or material refused. */
 ME_API void MstBridgeSetPerPairCB(MstBridgeID b, MstMaterialID m1, MstMaterialID m2, MstPerPairCBPtr cb);
+/** The per-pair callback of the material pair, or NULL (also for a bad ID or material, reported). */
 ME_API MstPerPairCBPtr MstBridgeGetPerPairCB(MstBridgeID b, MstMaterialID m1, MstMaterialID m2);
 
 /** Size of the pair container read from the space per chunk (default 128). */
 ME_API void MstBridgeSetModelPairBufferSize(MstBridgeID b, int size);
+/** Size of the pair container read per chunk; 0 for an invalid ID (reported). */
 ME_API int MstBridgeGetModelPairBufferSize(MstBridgeID b);
 /** Size of the McdContact buffer one pair test may fill (default 32; at least 1): the only limit on
  *  the contacts one pair makes in a step, an intersect callback's included. */
 ME_API void MstBridgeSetContactBufferSize(MstBridgeID b, int size);
+/** Size of the contact buffer of one pair test; 0 for an invalid ID (reported). */
 ME_API int MstBridgeGetContactBufferSize(MstBridgeID b);
 
 /** The whole bridge step: ends the space's change block, reads every pair in chunks, handles
@@ -89,6 +100,7 @@ ME_API void MstSetWorldHandlers(MdtWorldID world);
 
 /** Link counts of the last MstBridgeUpdateContacts: pairs tested, contacts made. */
 ME_API int MstBridgeGetLastPairCount(MstBridgeID b);
+/** Contacts made by the last MstBridgeUpdateContacts; 0 for an invalid ID (reported). */
 ME_API int MstBridgeGetLastContactCount(MstBridgeID b);
 
 ME_EXTERN_C_END

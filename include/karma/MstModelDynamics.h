@@ -14,6 +14,7 @@ ME_EXTERN_C_BEGIN
 /** Link a model to a body (NULL: the model is part of the world). The model's transform pointer
  *  becomes the body's transform. */
 ME_API void McdModelSetBody(McdModelID model, MdtBodyID body);
+/** The body linked by McdModelSetBody (not owned by the model), or NULL for a world part or an invalid ID. */
 ME_API MdtBodyID McdModelGetBody(McdModelID model);
 
 /** Put the model's body back at the origin with the identity orientation and no velocity (the User

@@ -27,6 +27,7 @@ ME_API MstUniverseID MstUniverseCreate(const MstUniverseSizes *sizes);
 /** Destroys every body, constraint and model of the universe, then the bridge, space, world and
  *  framework. Geometries belong to the framework and go with it. */
 ME_API void MstUniverseDestroy(MstUniverseID u);
+/** Whether u is a live universe ID (no message). */
 ME_API MeBool MstUniverseIsValid(MstUniverseID u);
 /** Exactly McdSpaceUpdateAll, MstBridgeUpdateContacts and MdtWorldStep(world, stepSize); a stepSize that
  *  is not finite or is below MDT_MIN_STEP_SIZE is refused (ME_ERR_STEP_SIZE) before anything runs. */
@@ -43,8 +44,11 @@ ME_API const MeProfile *MstUniverseGetProfile(MstUniverseID u);
 
 /** The universe's parts (owned by it: do not destroy them; NULL, reported, for a bad ID). */
 ME_API MdtWorldID MstUniverseGetWorld(MstUniverseID u);
+/** The universe's space (owned by the universe: do not destroy it); NULL, reported, for a bad ID. */
 ME_API McdSpaceID MstUniverseGetSpace(MstUniverseID u);
+/** The universe's bridge (owned by the universe: do not destroy it); NULL, reported, for a bad ID. */
 ME_API MstBridgeID MstUniverseGetBridge(MstUniverseID u);
+/** The universe's collision framework (owned by the universe); NULL, reported, for a bad ID. */
 ME_API McdFrameworkID MstUniverseGetFramework(MstUniverseID u);
 
 /** A model of `geometry` with a new, **enabled** body whose mass and inertia come from the geometry
@@ -55,6 +59,7 @@ ME_API void MstModelAndBodyDestroy(McdModelID model);
 /** A static model (no body) at the transform `tm`, which must outlive the model: inserted, updated
  *  once and frozen. */
 ME_API McdModelID MstFixedModelCreate(MstUniverseID u, McdGeometryID geometry, MeMatrix4Ptr tm);
+/** Remove a model made by MstFixedModelCreate from its space and destroy it (as MstModelAndBodyDestroy). */
 ME_API void MstFixedModelDestroy(McdModelID model);
 
 /** Mass, inertia tensor and centre-of-mass offset of `body` from `model`'s geometry at `density`. */
