@@ -65,17 +65,22 @@ ME_API void MeDefaultMessageHandler(const MeMessageInfo *info, void *user);
 /** Messages below this level are dropped before reaching the handler, but still counted
  *  (default ME_LEVEL_WARNING: information such as chunk growth is shown only when asked for). */
 ME_API void MeSetMessageLevel(MeMessageLevel minimum);
+/** The level below which messages are dropped before the handler (MeSetMessageLevel). */
 ME_API MeMessageLevel MeGetMessageLevel(void);
 
 /** Name ("ME_ERR_POOL_FULL"), description and default level of a code; "unknown" for a bad code. */
 ME_API const char *MeErrorCodeName(MeErrorCode code);
+/** One-line description of a code (static string, not to be freed); "unknown" for a bad code. */
 ME_API const char *MeErrorCodeDescription(MeErrorCode code);
+/** The level a code is reported at; ME_LEVEL_WARNING for a bad code. */
 ME_API MeMessageLevel MeErrorCodeLevel(MeErrorCode code);
 
 /** How many messages with this code were reported since start or the last MeMessageResetCounts
  *  (counted even when below the message level). */
 ME_API unsigned long MeMessageGetCount(MeErrorCode code);
+/** How many messages at minimumLevel or above were reported since start or the last reset. */
 ME_API unsigned long MeMessageGetTotalCount(MeMessageLevel minimumLevel);
+/** Zero every code's count and forget the last code. */
 ME_API void MeMessageResetCounts(void);
 
 /** The code of the most recent message at warning level or above (ME_ERR_NONE if none). */
@@ -106,6 +111,7 @@ ME_API extern MeShow MeDebugShow;
 
 /** Write string and a newline to stdout / stderr. */
 ME_API void MEAPI MeShowStdout(const int level, const char *const string);
+/** Write string and a newline to stderr (level unused). */
 ME_API void MEAPI MeShowStderr(const int level, const char *const string);
 
 /** A kind handler: receives MeInfo's (or MeWarning's...) level, format and arguments. */
@@ -120,28 +126,46 @@ ME_API extern MeHandler MeDebugHandler;
 /** The default kind handlers: drop the message when level exceeds the kind's cut-off, else format it
  *  and report it with ME_ERR_USER_MESSAGE at the kind's level (log messages at info level). */
 ME_API void MEAPI MeHandlerInfo(const int level, const char *const format, va_list ap);
+/** Default MeLog handler: dropped when level > MeLogLevel, else an info message through the message handler. */
 ME_API void MEAPI MeHandlerLog(const int level, const char *const format, va_list ap);
+/** Default MeWarning handler: dropped when level > MeWarningLevel, else a warning (ME_ERR_USER_MESSAGE). */
 ME_API void MEAPI MeHandlerWarning(const int level, const char *const format, va_list ap);
+/** Default MeFatalError handler: always a fatal message (the default message handler then aborts). */
 ME_API void MEAPI MeHandlerFatalError(const int level, const char *const format, va_list ap);
+/** Default MeDebug handler: dropped when level > MeDebugLevel, else a debug message. */
 ME_API void MEAPI MeHandlerDebug(const int level, const char *const format, va_list ap);
 
 /** Replace a kind's output function or handler (NULL restores the default); returns the previous. */
 ME_API MeShow MEAPI MeSetInfoShow(MeShow n);
+/** Replace MeLog's output function (NULL: the default); returns the previous one. */
 ME_API MeShow MEAPI MeSetLogShow(MeShow n);
+/** Replace MeWarning's output function (NULL: the default, stderr); returns the previous one. */
 ME_API MeShow MEAPI MeSetWarningShow(MeShow n);
+/** Replace MeFatalError's output function (NULL: the default, stderr); returns the previous one. */
 ME_API MeShow MEAPI MeSetFatalErrorShow(MeShow n);
+/** Replace MeDebug's output function (NULL: the default); returns the previous one. */
 ME_API MeShow MEAPI MeSetDebugShow(MeShow n);
+/** Replace MeInfo's kind handler (NULL: MeHandlerInfo); returns the previous one. */
 ME_API MeHandler MEAPI MeSetInfoHandler(MeHandler n);
+/** Replace MeLog's kind handler (NULL: MeHandlerLog); returns the previous one. */
 ME_API MeHandler MEAPI MeSetLogHandler(MeHandler n);
+/** Replace MeWarning's kind handler (NULL: MeHandlerWarning); returns the previous one. */
 ME_API MeHandler MEAPI MeSetWarningHandler(MeHandler n);
+/** Replace MeFatalError's kind handler (NULL: MeHandlerFatalError); returns the previous one. */
 ME_API MeHandler MEAPI MeSetFatalErrorHandler(MeHandler n);
+/** Replace MeDebug's kind handler (NULL: MeHandlerDebug); returns the previous one. */
 ME_API MeHandler MEAPI MeSetDebugHandler(MeHandler n);
 
 /* Karma's printf-style functions: each calls its kind's handler. `level` is the verbosity number. */
+/** printf-style information message through MeInfoHandler (shown when level ≤ MeInfoLevel). */
 ME_API void MEAPI MeInfo(const int level, const char *const format, ...);
+/** printf-style log message through MeLogHandler (shown when level ≤ MeLogLevel). */
 ME_API void MEAPI MeLog(const int level, const char *const format, ...);
+/** printf-style warning through MeWarningHandler (code ME_ERR_USER_MESSAGE; shown when level ≤ MeWarningLevel). */
 ME_API void MEAPI MeWarning(const int level, const char *const format, ...);
+/** printf-style fatal error through MeFatalErrorHandler (the default message handler aborts after printing). */
 ME_API void MEAPI MeFatalError(const int level, const char *const format, ...);
+/** printf-style debug message through MeDebugHandler (shown when level ≤ MeDebugLevel). */
 ME_API void MEAPI MeDebug(const int level, const char *const format, ...);
 
 /** The file name part of path (a pointer into it). */
@@ -169,6 +193,7 @@ ME_API void MeReport(MeErrorCode code, const char *function, const char *file, i
     __attribute__((format(printf, 5, 6)))
 #endif
     ;
+/** MeReport with a va_list instead of the variable arguments. */
 ME_API void MeReportV(MeErrorCode code, const char *function, const char *file, int line,
                       const char *format, va_list args);
 
