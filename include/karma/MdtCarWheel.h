@@ -29,29 +29,49 @@ ME_EXTERN_C_BEGIN
 ME_API MdtCarWheelID MdtCarWheelCreate(MdtWorldID w);
 /** Restore the defaults (bodies kept). */
 ME_API void MdtCarWheelReset(MdtCarWheelID j);
+/** The joint as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtCarWheelQuaConstraint(MdtCarWheelID j);
 /** The joint behind a constraint ID, or NULL if it is not a car wheel joint. */
 ME_API MdtCarWheelID MdtConstraintDCastCarWheel(MdtConstraintID c);
 
 /* ---- accessors (world frame; the angles and the height at the current poses) ---- */
+/** Steering axis (unit, world frame, fixed in the chassis); NULL v refused (ME_ERR_NULL_ARGUMENT). */
 ME_API void MdtCarWheelGetSteeringAxis(MdtCarWheelID j, MeVector3 v);
+/** Steering angle at the current poses (rad); 0, reported (ME_ERR_BAD_STATE), before bodies are set. */
 ME_API MeReal MdtCarWheelGetSteeringAngle(MdtCarWheelID j);
+/** Steering rate (rad/s); 0, reported (ME_ERR_BAD_STATE), before bodies are set. */
 ME_API MeReal MdtCarWheelGetSteeringAngleRate(MdtCarWheelID j);
+/** Wheel spin axis (unit, world frame, fixed in the wheel); NULL v refused (ME_ERR_NULL_ARGUMENT). */
 ME_API void MdtCarWheelGetHingeAxis(MdtCarWheelID j, MeVector3 v);
+/** Wheel spin angle, 0 ... 2π (rad); 0, reported (ME_ERR_BAD_STATE), before bodies are set. */
 ME_API MeReal MdtCarWheelGetHingeAngle(MdtCarWheelID j);
+/** Wheel spin rate (rad/s); 0, reported (ME_ERR_BAD_STATE), before bodies are set. */
 ME_API MeReal MdtCarWheelGetHingeAngleRate(MdtCarWheelID j);
+/** Suspension height along the steering axis (m); 0, reported, before bodies are set. */
 ME_API MeReal MdtCarWheelGetSuspensionHeight(MdtCarWheelID j);
+/** Rate of change of the suspension height (m/s); 0, reported, before bodies are set. */
 ME_API MeReal MdtCarWheelGetSuspensionRate(MdtCarWheelID j);
+/** Target steering rate of the steering motor (rad/s); 0 for an invalid ID. */
 ME_API MeReal MdtCarWheelGetSteeringMotorDesiredVelocity(MdtCarWheelID j);
+/** Torque bound of the steering motor (N·m); 0 for an invalid ID. */
 ME_API MeReal MdtCarWheelGetSteeringMotorMaxForce(MdtCarWheelID j);
+/** Whether the steering is locked at angle 0; MEFALSE for an invalid ID. */
 ME_API MeBool MdtCarWheelIsSteeringLocked(MdtCarWheelID j);
+/** Target spin rate of the wheel motor (rad/s); 0 for an invalid ID. */
 ME_API MeReal MdtCarWheelGetHingeMotorDesiredVelocity(MdtCarWheelID j);
+/** Torque bound of the wheel motor (N·m); 0 for an invalid ID. */
 ME_API MeReal MdtCarWheelGetHingeMotorMaxForce(MdtCarWheelID j);
+/** Upper hard stop of the suspension height (m); 0 for an invalid ID. */
 ME_API MeReal MdtCarWheelGetSuspensionHighLimit(MdtCarWheelID j);
+/** Lower hard stop of the suspension height (m); 0 for an invalid ID. */
 ME_API MeReal MdtCarWheelGetSuspensionLowLimit(MdtCarWheelID j);
+/** Softness of the suspension stops (m/(N·s)); 0 for an invalid ID. */
 ME_API MeReal MdtCarWheelGetSuspensionLimitSoftness(MdtCarWheelID j);
+/** Height the suspension spring pulls towards (m); 0 for an invalid ID. */
 ME_API MeReal MdtCarWheelGetSuspensionReference(MdtCarWheelID j);
+/** Suspension spring constant (N/m); 0 for an invalid ID. */
 ME_API MeReal MdtCarWheelGetSuspensionKp(MdtCarWheelID j);
+/** Suspension damping constant (N·s/m); 0 for an invalid ID. */
 ME_API MeReal MdtCarWheelGetSuspensionKd(MdtCarWheelID j);
 
 /* ---- mutators ---- */
