@@ -76,9 +76,13 @@ typedef MdtSingleLimit *MdtSingleLimitID;
 /* ---- single limits ------------------------------------------------------------------------- */
 /** Stop 0, stiffness MEINFINITY, damping 0, restitution 1. */
 ME_API void MdtSingleLimitReset(MdtSingleLimitID sl);
+/** Position of the stop (m or rad); NULL sl refused (returns 0). */
 ME_API MeReal MdtSingleLimitGetStop(const MdtSingleLimit *sl);
+/** Stiffness of the stop (N/m or N·m/rad; MEINFINITY: hard); NULL sl refused (returns 0). */
 ME_API MeReal MdtSingleLimitGetStiffness(const MdtSingleLimit *sl);
+/** Damping of the stop (N·s/m or N·m·s/rad); NULL sl refused (returns 0). */
 ME_API MeReal MdtSingleLimitGetDamping(const MdtSingleLimit *sl);
+/** Restitution of a hard stop, 0 ... 1; NULL sl refused (returns 0). */
 ME_API MeReal MdtSingleLimitGetRestitution(const MdtSingleLimit *sl);
 /** Position of the stop (m or rad; finite). */
 ME_API void MdtSingleLimitSetStop(MdtSingleLimitID sl, MeReal stop);
@@ -94,23 +98,34 @@ ME_API void MdtSingleLimitSetRestitution(MdtSingleLimitID sl, MeReal restitution
 ME_API void MdtLimitReset(MdtLimitID l);
 /** Clears the measured state only (position tracking, bounce, motor stall), keeping the settings. */
 ME_API void MdtLimitResetState(MdtLimitID l);
+/** Whether the stops are on; MEFALSE for NULL or an uninitialised limit (reported). */
 ME_API MeBool MdtLimitIsActive(const MdtLimit *l);
+/** Whether the coordinate is tracked (always, when the stops are on); MEFALSE for a bad limit. */
 ME_API MeBool MdtLimitPositionIsCalculated(const MdtLimit *l);
+/** Pointer to the lower stop inside the limit (lives as long as the limit); NULL for a bad limit. */
 ME_API MdtSingleLimitID MdtLimitGetLowerLimit(MdtLimitID l);
+/** Pointer to the upper stop inside the limit (lives as long as the limit); NULL for a bad limit. */
 ME_API MdtSingleLimitID MdtLimitGetUpperLimit(MdtLimitID l);
 /** Coordinate (measured + offset) and its rate, as of the end of the last step. */
 ME_API MeReal MdtLimitGetPosition(const MdtLimit *l);
+/** Rate of the coordinate at the end of the last step (m/s or rad/s); 0 for a bad limit. */
 ME_API MeReal MdtLimitGetVelocity(const MdtLimit *l);
 /** Distance past the stop the coordinate is beyond (> 0 above the upper, < 0 below the lower, else 0). */
 ME_API MeReal MdtLimitGetOvershoot(const MdtLimit *l);
+/** Stiffness from which a stop is hard; 0 for NULL or an uninitialised limit (reported). */
 ME_API MeReal MdtLimitGetStiffnessThreshold(const MdtLimit *l);
+/** Whether the motor is on; MEFALSE for NULL or an uninitialised limit (reported). */
 ME_API MeBool MdtLimitIsMotorized(const MdtLimit *l);
+/** Whether the lock is on; MEFALSE for NULL or an uninitialised limit (reported). */
 ME_API MeBool MdtLimitIsLocked(const MdtLimit *l);
+/** Motor target rate (m/s or rad/s); 0 for a bad limit. */
 ME_API MeReal MdtLimitGetMotorDesiredVelocity(const MdtLimit *l);
+/** Motor force bound (N or N·m); 0 for a bad limit. */
 ME_API MeReal MdtLimitGetMotorMaxForce(const MdtLimit *l);
 
 /** Copy a single limit into the lower / upper stop (checked like the setters). */
 ME_API void MdtLimitSetLowerLimit(MdtLimitID l, const MdtSingleLimit *sl);
+/** Copy sl into the upper stop; an invalid stop or one below the lower stop refused, limit unchanged. */
 ME_API void MdtLimitSetUpperLimit(MdtLimitID l, const MdtSingleLimit *sl);
 /** Declare the current coordinate to be `position` (sets the offset; nothing moves). */
 ME_API void MdtLimitSetPosition(MdtLimitID l, MeReal position);
