@@ -25,6 +25,7 @@ ME_EXTERN_C_BEGIN
 ME_API MdtSkeletalID MdtSkeletalCreate(MdtWorldID w);
 /** Restore the defaults (bodies kept). */
 ME_API void MdtSkeletalReset(MdtSkeletalID j);
+/** The joint as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtSkeletalQuaConstraint(MdtSkeletalID j);
 /** The skeletal joint behind a constraint ID, or NULL if it is of another type. */
 ME_API MdtSkeletalID MdtConstraintDCastSkeletal(MdtConstraintID c);
@@ -44,29 +45,43 @@ typedef enum MdtSkeletalTwistOption {
 
 /** Swing half-angle towards body 1's orthogonal axis, rad, in [0, π]. */
 ME_API void MdtSkeletalSetConePrimaryLimitAngle(MdtSkeletalID j, MeReal angle);
+/** Swing half-angle towards body 1's orthogonal axis (rad); 0 for an invalid ID. */
 ME_API MeReal MdtSkeletalGetConePrimaryLimitAngle(MdtSkeletalID j);
 /** Swing half-angle towards primary × orthogonal, rad, in [0, π]. */
 ME_API void MdtSkeletalSetConeSecondaryLimitAngle(MdtSkeletalID j, MeReal angle);
+/** Swing half-angle towards primary × orthogonal (rad); 0 for an invalid ID. */
 ME_API MeReal MdtSkeletalGetConeSecondaryLimitAngle(MdtSkeletalID j);
 /** Largest |twist|, rad, in [0, π]. */
 ME_API void MdtSkeletalSetTwistLimitAngle(MdtSkeletalID j, MeReal angle);
+/** Largest |twist| (rad); 0 for an invalid ID. */
 ME_API MeReal MdtSkeletalGetTwistLimitAngle(MdtSkeletalID j);
 /** Stiffness (N·m/rad, MEINFINITY = hard) and damping (N·m·s/rad) of the swing limit past the cone. */
 ME_API void MdtSkeletalSetConeStiffness(MdtSkeletalID j, MeReal stiffness);
+/** Stiffness of the swing limit (N·m/rad, MEINFINITY: hard); 0 for an invalid ID. */
 ME_API MeReal MdtSkeletalGetConeStiffness(MdtSkeletalID j);
+/** Damping of the swing limit (N·m·s/rad, ≥ 0); NaN or negative refused (ME_ERR_NEGATIVE_VALUE). */
 ME_API void MdtSkeletalSetConeDamping(MdtSkeletalID j, MeReal damping);
+/** Damping of the swing limit (N·m·s/rad); 0 for an invalid ID. */
 ME_API MeReal MdtSkeletalGetConeDamping(MdtSkeletalID j);
 /** Stiffness and damping of the twist limit. */
 ME_API void MdtSkeletalSetTwistStiffness(MdtSkeletalID j, MeReal stiffness);
+/** Stiffness of the twist limit (N·m/rad, MEINFINITY: hard); 0 for an invalid ID. */
 ME_API MeReal MdtSkeletalGetTwistStiffness(MdtSkeletalID j);
+/** Damping of the twist limit (N·m·s/rad, ≥ 0); NaN or negative refused (ME_ERR_NEGATIVE_VALUE). */
 ME_API void MdtSkeletalSetTwistDamping(MdtSkeletalID j, MeReal damping);
+/** Damping of the twist limit (N·m·s/rad); 0 for an invalid ID. */
 ME_API MeReal MdtSkeletalGetTwistDamping(MdtSkeletalID j);
+/** Shape of the swing limit; a value outside MdtSkeletalConeOption refused (ME_ERR_ARGUMENT_RANGE). */
 ME_API void MdtSkeletalSetConeLimitOption(MdtSkeletalID j, MdtSkeletalConeOption option);
+/** Shape of the swing limit; MdtSkeletalConeOptionFree for an invalid ID. */
 ME_API MdtSkeletalConeOption MdtSkeletalGetConeLimitOption(MdtSkeletalID j);
+/** Twist limit on or off; a value outside MdtSkeletalTwistOption refused (ME_ERR_ARGUMENT_RANGE). */
 ME_API void MdtSkeletalSetTwistLimitOption(MdtSkeletalID j, MdtSkeletalTwistOption option);
+/** The twist limit option; MdtSkeletalTwistOptionFree for an invalid ID. */
 ME_API MdtSkeletalTwistOption MdtSkeletalGetTwistLimitOption(MdtSkeletalID j);
 /** One limit row at most (the most violated), instead of one for swing and one for twist. */
 ME_API void MdtSkeletalEnableCombinedLimits(MdtSkeletalID j, MeBool enable);
+/** Whether swing and twist share one limit row; MEFALSE for an invalid ID. */
 ME_API MeBool MdtSkeletalCombinedLimitsAreEnabled(MdtSkeletalID j);
 /** Make the present twist the zero of the twist angle (turns body 0's orthogonal axis about the bone). */
 ME_API void MdtSkeletalZeroTwist(MdtSkeletalID j);
