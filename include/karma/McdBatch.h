@@ -22,6 +22,7 @@ typedef struct McdBatchContext McdBatchContext;
 ME_API McdBatchContext *MEAPI McdBatchContextCreate(McdFramework *frame);
 /** Forget any pass under way: the next McdBatchIntersectEach starts at the container's first pair. */
 ME_API void MEAPI McdBatchContextReset(McdBatchContext *context);
+/** Free a context made by McdBatchContextCreate; NULL refused (ME_ERR_NULL_ARGUMENT). */
 ME_API void MEAPI McdBatchContextDestroy(McdBatchContext *context);
 /** Test the pairs (see above). Returns 1 when done, 0 when called again is needed. */
 ME_API MeBool MEAPI McdBatchIntersectEach(McdBatchContext *context, McdModelPairContainer *pairs,

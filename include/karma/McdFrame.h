@@ -28,6 +28,7 @@ ME_EXTERN_C_BEGIN
 ME_API McdFrameworkID McdInit(int geoTypeMaxCount, int modelCount, int instanceCount, MeReal lengthScale);
 /** Run the registered term actions (last registered first), then free every model and geometry. */
 ME_API void McdTerm(McdFrameworkID fw);
+/** Whether fw is a live framework ID (no message). */
 ME_API MeBool McdFrameworkIsValid(McdFrameworkID fw);
 
 /** Called by McdTerm before anything is freed (spaces, bridges and user code tidy up here). */
@@ -58,14 +59,18 @@ typedef struct McdFrameworkCounters {
 ME_API void McdFrameworkGetCounters(McdFrameworkID fw, McdFrameworkCounters *counters);
 /** Contact tolerance given to new models (>= 0, finite). */
 ME_API void McdFrameworkSetDefaultContactTolerance(McdFrameworkID fw, MeReal tolerance);
+/** Contact tolerance given to new models (m); 0 for an invalid ID (reported). */
 ME_API MeReal McdFrameworkGetDefaultContactTolerance(McdFrameworkID fw);
 /** The request used by pairs whose `request` is NULL; the application may change it in place. */
 ME_API McdRequest *McdFrameworkGetDefaultRequestPtr(McdFrameworkID fw);
 /** Make `request` (the application's; it must outlive its use) the default request; NULL restores
  *  the framework's own. */
 ME_API void McdFrameworkSetDefaultRequestPtr(McdFrameworkID fw, McdRequest *request);
+/** Number of live models in the framework's pool; 0 for an invalid ID (reported). */
 ME_API int McdFrameworkGetModelCount(McdFrameworkID fw);
+/** Number of live geometries in the framework's pool; 0 for an invalid ID (reported). */
 ME_API int McdFrameworkGetGeometryCount(McdFrameworkID fw);
+/** Size of the model pool given to McdInit; 0 for an invalid ID (reported). */
 ME_API int McdFrameworkGetInstanceMaxCount(McdFrameworkID fw);
 
 /* ---- geometry types ------------------------------------------------------------------------ */
@@ -116,6 +121,7 @@ ME_API void McdFrameworkPrintInteractionTable(McdFramework *fw);
 /** Whether "no test for this pair of types" has been reported (non-zero) and set it (0: report
  *  again at the next such pair). The order of the two types does not matter. */
 ME_API void McdFrameworkSetInteractionsWarned(McdFramework *fw, int geoType1, int geoType2, int count);
+/** Non-zero once "no test for this pair of types" has been reported; 0 for bad types (reported). */
 ME_API int McdFrameworkGetInteractionsWarned(McdFramework *fw, int geoType1, int geoType2);
 /** The table's entry for (geoType1, geoType2), refreshed at each call (see McdInteractions in
  *  McdTypes.h); the pointer stays valid until McdTerm. NULL (reported) for unknown types. */
@@ -138,6 +144,7 @@ ME_API MeBool McdFrameworkSetUserInteraction(McdFrameworkID fw, int type1, int t
 /** Karma's registration calls. The built-in types are always registered (these return METRUE);
  *  McdPrimitivesRegisterInteractions adds the pair tests of every pair of primitives. */
 ME_API MeBool McdPrimitivesRegisterTypes(McdFrameworkID fw);
+/** Register the pair tests of every pair of primitive types; MEFALSE (reported) for an invalid ID. */
 ME_API MeBool McdPrimitivesRegisterInteractions(McdFrameworkID fw);
 /** Number of primitive types (Null, Sphere, Box, Plane, Cylinder, Sphyl, Cone). */
 ME_API int McdPrimitivesGetTypeCount(void);

@@ -19,6 +19,7 @@ ME_EXTERN_C_BEGIN
 ME_API void McdHello(McdModelPairID pair);
 /** Fill `result` (its contacts array and contactMaxCount set by the caller). Returns `touch`. */
 ME_API int McdIntersect(McdModelPairID pair, McdIntersectResult *result);
+/** Release what McdHello set up for the pair (its test's cache); NULL refused (ME_ERR_NULL_ARGUMENT). */
 ME_API void McdGoodbye(McdModelPairID pair);
 /** McdIntersect with both models moved on by `time` at their velocities (McdModelSetLinearVelocityPtr,
  *  McdModelSetAngularVelocityPtr; a NULL pointer is at rest) from the transforms they follow now;
@@ -29,9 +30,11 @@ ME_API MeBool McdNearby(McdModelPairID pair);
 
 /** Called by McdHello after the test is chosen (e.g. McduHelloRequestTableCB); NULL: none. */
 ME_API void McdSetHelloCallback(McdFramework *fw, McdHelloCallbackFnPtr fn);
+/** The callback set by McdSetHelloCallback, or NULL (also for an invalid framework, reported). */
 ME_API McdHelloCallbackFnPtr McdGetHelloCallback(McdFramework *fw);
 /** McdHello on each hello pair of the container, McdGoodbye on each goodbye pair. */
 ME_API void McdHelloEach(McdModelPairContainer *pairs);
+/** McdGoodbye on each goodbye pair of the container; NULL refused (ME_ERR_NULL_ARGUMENT). */
 ME_API void McdGoodbyeEach(McdModelPairContainer *pairs);
 /** McdIntersect on the container's hello and staying pairs from `pairsIter` on, one result each,
  *  their contacts packed into contactArray (each pair is given its request's contactMaxCount).

@@ -26,6 +26,7 @@ ME_API McdRequest *McdModelPairGetRequestPtr(const McdModelPairID pair);
 ME_API void McdModelPairSetRequestPtr(McdModelPairID pair, McdRequest *request);
 /** The application's pointer for the pair (the bridge keeps its contact group here). */
 ME_API void *McdModelPairGetUserData(McdModelPairID pair);
+/** Attach an application pointer to the pair (not owned by Mcd); NULL pair refused. */
 ME_API void McdModelPairSetUserData(McdModelPairID pair, void *data);
 
 ME_EXTERN_C_END

@@ -22,6 +22,7 @@ typedef McdModelPairManager *McdModelPairManagerID;
 
 /** A manager with room for `size` (> 0) pairs; NULL (reported) on a bad size or no memory. */
 ME_API McdModelPairManagerID MEAPI McdModelPairManagerCreate(int size);
+/** Free the manager and its tables (NULL: nothing done); the pairs' models are not touched. */
 ME_API void MEAPI McdModelPairManagerDestroy(McdModelPairManager *manager);
 /** Activate the pair of two live models. Returns non-zero when it was active already. When the
  *  manager is full the pool-full handler is called for the models and ME_ERR_POOL_FULL reported. */
@@ -46,6 +47,7 @@ ME_API MeBool MEAPI McdModelPairManagerGetPairs(McdModelPairManagerID manager, M
 ME_API int MEAPI McdModelPairManagerGetSize(McdModelPairManagerID manager);
 /** Called for each pair that a full manager could not activate (NULL: none). */
 ME_API void MEAPI McdModelPairManagerSetPoolFullHandler(McdModelPairManagerID manager, McdSpacePoolErrorFnPtr handler);
+/** The handler of McdModelPairManagerSetPoolFullHandler, or NULL; NULL manager refused. */
 ME_API McdSpacePoolErrorFnPtr MEAPI McdModelPairManagerGetPoolFullHandler(McdModelPairManagerID manager);
 
 ME_EXTERN_C_END

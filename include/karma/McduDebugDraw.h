@@ -29,11 +29,14 @@ typedef enum {
 
 /** Draw a sphere, a box or a cylinder at `tm` (reported when the geometry is of another type). */
 ME_API void MEAPI McduDebugDrawSphere(const McdSphereID sphere, MeMatrix4 tm, const MeReal colour[3]);
+/** Draw a box at tm through MeDebugDrawAPI; NULL tm or colour, or another geometry type, refused. */
 ME_API void MEAPI McduDebugDrawBox(const McdBoxID box, MeMatrix4 tm, const MeReal colour[3]);
+/** Draw a cylinder at tm through MeDebugDrawAPI; NULL tm or colour, or another geometry type, refused. */
 ME_API void MEAPI McduDebugDrawCylinder(const McdCylinderID cyl, MeMatrix4 tm, const MeReal colour[3]);
 /** Convex meshes and aggregates are still to come: these draw through the type's own debugDraw
  *  (McdGeometryTypeDesc) and report any geometry that is not of their type. */
 ME_API void MEAPI McduDebugDrawConvex(const McdConvexMeshID convex, MeMatrix4 tm, const MeReal colour[3]);
+/** Draw an aggregate's parts at tm through MeDebugDrawAPI; NULL tm or colour, or another type, refused. */
 ME_API void MEAPI McduDebugDrawAggregate(const McdAggregateID agg, MeMatrix4 tm, const MeReal colour[3]);
 /** The 12 edges of the box from min to max (world). */
 ME_API void MEAPI McduDebugDrawAABB(const MeVector3 min, const MeVector3 max, const MeReal colour[3]);

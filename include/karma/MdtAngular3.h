@@ -15,18 +15,22 @@ ME_EXTERN_C_BEGIN
 ME_API MdtAngular3ID MdtAngular3Create(MdtWorldID w);
 /** Restore the defaults (bodies kept). */
 ME_API void MdtAngular3Reset(MdtAngular3ID j);
+/** The joint as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtAngular3QuaConstraint(MdtAngular3ID j);
 /** The Angular3 joint behind a constraint ID, or NULL if it is of another type. */
 ME_API MdtAngular3ID MdtConstraintDCastAngular3(MdtConstraintID c);
 
 /** Free (METRUE) or lock (MEFALSE) the rotation about the joint's axis. */
 ME_API void MdtAngular3EnableRotation(MdtAngular3ID j, MeBool enable);
+/** Whether rotation about the joint's axis is free; MEFALSE for an invalid ID. */
 ME_API MeBool MdtAngular3RotationIsEnabled(MdtAngular3ID j);
 /** Angular stiffness, N·m/rad (≥ 0; MEINFINITY = rigid). */
 ME_API void MdtAngular3SetStiffness(MdtAngular3ID j, MeReal stiffness);
+/** Angular stiffness (N·m/rad, MEINFINITY: rigid); 0 for an invalid ID. */
 ME_API MeReal MdtAngular3GetStiffness(MdtAngular3ID j);
 /** Angular damping, N·m·s/rad (≥ 0); used with a finite stiffness (or alone: a pure damper). */
 ME_API void MdtAngular3SetDamping(MdtAngular3ID j, MeReal damping);
+/** Angular damping (N·m·s/rad); 0 for an invalid ID. */
 ME_API MeReal MdtAngular3GetDamping(MdtAngular3ID j);
 /** The joint's axis in body 0, world frame. */
 #define MdtAngular3GetAxis(j, a) MdtConstraintBodyGetAxis(MdtAngular3QuaConstraint(j), 0, (a))

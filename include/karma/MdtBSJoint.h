@@ -12,6 +12,7 @@ ME_EXTERN_C_BEGIN
 ME_API MdtBSJointID MdtBSJointCreate(MdtWorldID w);
 /** Restore the defaults (bodies kept). */
 ME_API void MdtBSJointReset(MdtBSJointID j);
+/** The joint as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtBSJointQuaConstraint(MdtBSJointID j);
 /** The joint behind a constraint ID, or NULL if it is not a ball and socket joint. */
 ME_API MdtBSJointID MdtConstraintDCastBSJoint(MdtConstraintID c);

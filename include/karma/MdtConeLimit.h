@@ -16,18 +16,22 @@ ME_EXTERN_C_BEGIN
 ME_API MdtConeLimitID MdtConeLimitCreate(MdtWorldID w);
 /** Restore the defaults (bodies kept). */
 ME_API void MdtConeLimitReset(MdtConeLimitID j);
+/** The joint as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtConeLimitQuaConstraint(MdtConeLimitID j);
 /** The cone limit behind a constraint ID, or NULL if it is of another type. */
 ME_API MdtConeLimitID MdtConstraintDCastConeLimit(MdtConstraintID c);
 
 /** Half-angle of the cone, rad, in [0, π] (π: no limit). */
 ME_API void MdtConeLimitSetConeHalfAngle(MdtConeLimitID j, MeReal theta);
+/** Half-angle of the cone (rad); 0 for an invalid ID. */
 ME_API MeReal MdtConeLimitGetConeHalfAngle(MdtConeLimitID j);
 /** Stiffness past the limit, N·m/rad (≥ 0; MEINFINITY = hard stop). */
 ME_API void MdtConeLimitSetStiffness(MdtConeLimitID j, MeReal stiffness);
+/** Stiffness past the limit (N·m/rad, MEINFINITY: hard); 0 for an invalid ID. */
 ME_API MeReal MdtConeLimitGetStiffness(MdtConeLimitID j);
 /** Damping past the limit, N·m·s/rad (≥ 0; MEINFINITY = hard stop). */
 ME_API void MdtConeLimitSetDamping(MdtConeLimitID j, MeReal damping);
+/** Damping past the limit (N·m·s/rad); 0 for an invalid ID. */
 ME_API MeReal MdtConeLimitGetDamping(MdtConeLimitID j);
 /** The angle between the two axes now, rad (0 ... π). */
 ME_API MeReal MdtConeLimitGetAngle(MdtConeLimitID j);

@@ -14,6 +14,7 @@ ME_EXTERN_C_BEGIN
 ME_API MdtFixedPathID MdtFixedPathCreate(MdtWorldID w);
 /** Restore the defaults (bodies kept). */
 ME_API void MdtFixedPathReset(MdtFixedPathID j);
+/** The joint as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtFixedPathQuaConstraint(MdtFixedPathID j);
 /** The fixed-path joint behind a constraint ID, or NULL if it is of another type. */
 ME_API MdtFixedPathID MdtConstraintDCastFixedPath(MdtConstraintID c);

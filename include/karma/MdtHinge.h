@@ -17,6 +17,7 @@ ME_EXTERN_C_BEGIN
 ME_API MdtHingeID MdtHingeCreate(MdtWorldID w);
 /** Restore the defaults (bodies kept). */
 ME_API void MdtHingeReset(MdtHingeID j);
+/** The joint as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtHingeQuaConstraint(MdtHingeID j);
 /** The hinge behind a constraint ID, or NULL if it is not a hinge. */
 ME_API MdtHingeID MdtConstraintDCastHinge(MdtConstraintID c);

@@ -55,9 +55,11 @@ typedef MeReal (*MdtContactImportanceCBPtr)(MdtContactID contact, void *userData
 
 /** Cap the rows of each partition's LCP at `size` (≥ 1), or MDT_MATRIX_SIZE_UNCAPPED for no cap. */
 ME_API void MdtWorldSetMaxMatrixSize(MdtWorldID w, int size);
+/** The row cap of each partition's LCP, or MDT_MATRIX_SIZE_UNCAPPED (also for a bad ID). */
 ME_API int MdtWorldGetMaxMatrixSize(MdtWorldID w);
 /** Copy the world's LOD weights out / in (all finite; frictionRatio in [0, 1]). */
 ME_API void MdtWorldGetLODParams(MdtWorldID w, MdtLODParams *params);
+/** Copy LOD weights into the world; NULL, NaN or infinite weights, frictionRatio outside [0, 1] refused. */
 ME_API void MdtWorldSetLODParams(MdtWorldID w, const MdtLODParams *params);
 /** Karma's default weights. */
 ME_API void MdtLODParamsSetDefaults(MdtLODParams *params);

@@ -13,6 +13,7 @@ ME_EXTERN_C_BEGIN
 ME_API MdtLinear1ID MdtLinear1Create(MdtWorldID w);
 /** Restore the defaults (bodies kept). */
 ME_API void MdtLinear1Reset(MdtLinear1ID j);
+/** The joint as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtLinear1QuaConstraint(MdtLinear1ID j);
 /** The Linear1 joint behind a constraint ID, or NULL if it is of another type. */
 ME_API MdtLinear1ID MdtConstraintDCastLinear1(MdtConstraintID c);

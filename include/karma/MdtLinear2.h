@@ -14,6 +14,7 @@ ME_EXTERN_C_BEGIN
 ME_API MdtLinear2ID MdtLinear2Create(MdtWorldID w);
 /** Restore the defaults (bodies kept). */
 ME_API void MdtLinear2Reset(MdtLinear2ID j);
+/** The joint as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtLinear2QuaConstraint(MdtLinear2ID j);
 /** The Linear2 joint behind a constraint ID, or NULL if it is of another type. */
 ME_API MdtLinear2ID MdtConstraintDCastLinear2(MdtConstraintID c);

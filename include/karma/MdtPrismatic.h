@@ -18,6 +18,7 @@ ME_EXTERN_C_BEGIN
 ME_API MdtPrismaticID MdtPrismaticCreate(MdtWorldID w);
 /** Restore the defaults (bodies kept). */
 ME_API void MdtPrismaticReset(MdtPrismaticID j);
+/** The joint as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtPrismaticQuaConstraint(MdtPrismaticID j);
 /** The joint behind a constraint ID, or NULL if it is not a prismatic joint. */
 ME_API MdtPrismaticID MdtConstraintDCastPrismatic(MdtConstraintID c);

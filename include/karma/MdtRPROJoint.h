@@ -20,31 +20,38 @@ ME_EXTERN_C_BEGIN
 ME_API MdtRPROJointID MdtRPROJointCreate(MdtWorldID w);
 /** Restore the defaults (bodies kept). */
 ME_API void MdtRPROJointReset(MdtRPROJointID j);
+/** The joint as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtRPROJointQuaConstraint(MdtRPROJointID j);
 /** The RPRO joint behind a constraint ID, or NULL if it is of another type. */
 ME_API MdtRPROJointID MdtConstraintDCastRPROJoint(MdtConstraintID c);
 
 /** Target relative orientation (unit quaternion w,x,y,z; ME_ERR_QUATERNION_NOT_UNIT otherwise). */
 ME_API void MdtRPROJointSetRelativeQuaternion(MdtRPROJointID j, const MeVector4 q);
+/** Target relative orientation (unit quaternion w, x, y, z); NULL q refused. */
 ME_API void MdtRPROJointGetRelativeQuaternion(MdtRPROJointID j, MeVector4 q);
 /** Target relative angular velocity, rad/s, body 1's frame. */
 ME_API void MdtRPROJointSetAngularVelocity(MdtRPROJointID j, const MeVector3 w);
+/** Target relative angular velocity (rad/s, body 1's frame); NULL w refused. */
 ME_API void MdtRPROJointGetAngularVelocity(MdtRPROJointID j, MeVector3 w);
 /** Largest force (N) along each linear axis of body 1's frame (≥ 0; MEINFINITY = no cap). */
 ME_API void MdtRPROJointSetLinearStrength(MdtRPROJointID j, MeReal sx, MeReal sy, MeReal sz);
+/** Force caps along the three linear axes (N); NULL s refused (ME_ERR_NULL_ARGUMENT). */
 ME_API void MdtRPROJointGetLinearStrength(MdtRPROJointID j, MeVector3 s);
 /** Largest torque (N·m) about each angular axis (≥ 0; MEINFINITY = no cap). */
 ME_API void MdtRPROJointSetAngularStrength(MdtRPROJointID j, MeReal sx, MeReal sy, MeReal sz);
+/** Torque caps about the three angular axes (N·m); NULL s refused (ME_ERR_NULL_ARGUMENT). */
 ME_API void MdtRPROJointGetAngularStrength(MdtRPROJointID j, MeVector3 s);
 /** Attachment point in body `bodyindex`'s frame (an offset from the body's origin). The body index
  *  comes last, as in Karma 1.2. */
 ME_API void MdtRPROJointSetAttachmentPosition(MdtRPROJointID j, MeReal x, MeReal y, MeReal z,
                                               unsigned int bodyindex);
+/** Attachment point on body bodyindex, in its frame (m); NULL p or index > 1 refused. */
 ME_API void MdtRPROJointGetAttachmentPosition(MdtRPROJointID j, unsigned int bodyindex, MeVector3 p);
 /** Attachment frame orientation in body `bodyindex`'s frame (unit quaternion q0 = w); the body
  *  index comes last, as in Karma 1.2. */
 ME_API void MdtRPROJointSetAttachmentQuaternion(MdtRPROJointID j, MeReal q0, MeReal q1, MeReal q2, MeReal q3,
                                                 unsigned int bodyindex);
+/** Attachment orientation on body bodyindex (unit quaternion); NULL q or index > 1 refused. */
 ME_API void MdtRPROJointGetAttachmentQuaternion(MdtRPROJointID j, unsigned int bodyindex, MeVector4 q);
 
 /* The common constraint API under this type's names. */

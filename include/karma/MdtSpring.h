@@ -20,6 +20,7 @@ ME_EXTERN_C_BEGIN
 ME_API MdtSpringID MdtSpringCreate(MdtWorldID w);
 /** Restore the defaults (bodies kept). */
 ME_API void MdtSpringReset(MdtSpringID j);
+/** The joint as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtSpringQuaConstraint(MdtSpringID j);
 /** The spring behind a constraint ID, or NULL if it is not a spring. */
 ME_API MdtSpringID MdtConstraintDCastSpring(MdtConstraintID c);
@@ -36,7 +37,9 @@ ME_API void MdtSpringSetDamping(MdtSpringID j, MeReal damping);
 ME_API MeReal MdtSpringGetLength(MdtSpringID j);
 /** The natural length set (the lower stop), stiffness and damping (of the lower stop). */
 ME_API MeReal MdtSpringGetNaturalLength(MdtSpringID j);
+/** Spring stiffness (N/m, of the lower stop); 0 for an invalid ID. */
 ME_API MeReal MdtSpringGetStiffness(MdtSpringID j);
+/** Spring damping (N·s/m, of the lower stop); 0 for an invalid ID. */
 ME_API MeReal MdtSpringGetDamping(MdtSpringID j);
 /** The spring's limit (lives as long as the joint). */
 ME_API MdtLimitID MdtSpringGetLimit(MdtSpringID j);

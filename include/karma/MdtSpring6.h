@@ -17,19 +17,26 @@ ME_EXTERN_C_BEGIN
 ME_API MdtSpring6ID MdtSpring6Create(MdtWorldID w);
 /** Restore the defaults (bodies kept). */
 ME_API void MdtSpring6Reset(MdtSpring6ID j);
+/** The joint as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtSpring6QuaConstraint(MdtSpring6ID j);
 /** The six-axis spring behind a constraint ID, or NULL if it is of another type. */
 ME_API MdtSpring6ID MdtConstraintDCastSpring6(MdtConstraintID c);
 
 /** Stiffness / damping of linear axis `axis` (0, 1, 2 = x, y, z of the constraint frame). */
 ME_API void MdtSpring6SetLinearStiffness(MdtSpring6ID j, unsigned int axis, MeReal stiffness);
+/** Damping of linear axis `axis` (N·s/m, ≥ 0); axis > 2 (ME_ERR_ARGUMENT_RANGE), NaN or negative refused. */
 ME_API void MdtSpring6SetLinearDamping(MdtSpring6ID j, unsigned int axis, MeReal damping);
+/** Stiffness of linear axis `axis` (N/m); 0 for axis > 2 (reported) or an invalid ID. */
 ME_API MeReal MdtSpring6GetLinearStiffness(MdtSpring6ID j, unsigned int axis);
+/** Damping of linear axis `axis` (N·s/m); 0 for axis > 2 (reported) or an invalid ID. */
 ME_API MeReal MdtSpring6GetLinearDamping(MdtSpring6ID j, unsigned int axis);
 /** Stiffness / damping of angular axis `axis`. */
 ME_API void MdtSpring6SetAngularStiffness(MdtSpring6ID j, unsigned int axis, MeReal stiffness);
+/** Damping of angular axis `axis` (N·m·s/rad, ≥ 0); axis > 2, NaN or negative refused. */
 ME_API void MdtSpring6SetAngularDamping(MdtSpring6ID j, unsigned int axis, MeReal damping);
+/** Stiffness of angular axis `axis` (N·m/rad); 0 for axis > 2 (reported) or an invalid ID. */
 ME_API MeReal MdtSpring6GetAngularStiffness(MdtSpring6ID j, unsigned int axis);
+/** Damping of angular axis `axis` (N·m·s/rad); 0 for axis > 2 (reported) or an invalid ID. */
 ME_API MeReal MdtSpring6GetAngularDamping(MdtSpring6ID j, unsigned int axis);
 
 /* The common constraint API under this type's names. */

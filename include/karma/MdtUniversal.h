@@ -14,6 +14,7 @@ ME_EXTERN_C_BEGIN
 ME_API MdtUniversalID MdtUniversalCreate(MdtWorldID w);
 /** Restore the defaults (bodies kept). */
 ME_API void MdtUniversalReset(MdtUniversalID j);
+/** The joint as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtUniversalQuaConstraint(MdtUniversalID j);
 /** The universal joint behind a constraint ID, or NULL if it is of another type. */
 ME_API MdtUniversalID MdtConstraintDCastUniversal(MdtConstraintID c);

@@ -33,6 +33,7 @@ ME_EXTERN_C_BEGIN
 ME_API MdtUserConstraintID MdtUserConstraintCreate(MdtWorldID w);
 /** Restore the defaults (bodies kept). */
 ME_API void MdtUserConstraintReset(MdtUserConstraintID j);
+/** The joint as a generic constraint (same object, no check, no ownership change). */
 ME_API MdtConstraintID MdtUserConstraintQuaConstraint(MdtUserConstraintID j);
 /** The user constraint behind a constraint ID, or NULL if it is of another type. */
 ME_API MdtUserConstraintID MdtConstraintDCastUserConstraint(MdtConstraintID c);
@@ -66,12 +67,15 @@ typedef int (*MdtUserConstraintRowsFn)(MdtUserConstraintID constraint, MdtUserCo
 
 /** The function that writes the rows (NULL: none, the constraint writes no rows). */
 ME_API void MdtUserConstraintSetAddConstraintFunction(MdtUserConstraintID j, MdtUserConstraintRowsFn fn);
+/** The row-writing function, or NULL (also for an invalid ID). */
 ME_API MdtUserConstraintRowsFn MdtUserConstraintGetAddConstraintFunction(MdtUserConstraintID j);
 /** The application's data for the function. */
 ME_API void MdtUserConstraintSetConstraintStruct(MdtUserConstraintID j, void *constraintStruct);
+/** The application's data for the function (owned by the application), or NULL. */
 ME_API void *MdtUserConstraintGetConstraintStruct(MdtUserConstraintID j);
 /** Most rows the function may write per step (1 ... MDT_USER_CONSTRAINT_MAX_ROWS; default 6). */
 ME_API void MdtUserConstraintSetMaxRows(MdtUserConstraintID j, int maxRows);
+/** Most rows the function may write per step; 0 for an invalid ID. */
 ME_API int MdtUserConstraintGetMaxRows(MdtUserConstraintID j);
 /** Force (N or N·m: impulse / h) that row `row` applied in the last step; 0 for rows not written. */
 ME_API MeReal MdtUserConstraintGetRowForce(MdtUserConstraintID j, int row);

@@ -38,6 +38,7 @@ typedef struct MeChunk {
 ME_API void MeChunkInit(MeChunk *chunk, int alignment);
 /** An empty chunk with 64-byte blocks, called `name` in its messages (a string literal). */
 ME_API void MeChunkInitNamed(MeChunk *chunk, const char *name);
+/** Free the chunk's memory and leave it empty (its name kept); it may be used again. */
 ME_API void MeChunkTerm(MeChunk *chunk);
 /** Keep the block on MeChunkPutMem (default) or free it. */
 ME_API void MeChunkSetMode(MeChunk *chunk, kMeChunkMode mode);
@@ -46,11 +47,15 @@ ME_API int MeChunkGetAlignment(const MeChunk *chunk);
 /** A block of at least `bytes` bytes, aligned as the chunk says (contents undefined), or NULL when
  *  memory ran out or the chunk is already in use. */
 ME_API void *MeChunkGetMem(MeChunk *chunk, size_t bytes);
+/** Give back the block MeChunkGetMem returned (freed in kMeChunkModeFreeOnPut); another pointer is ignored. */
 ME_API void MeChunkPutMem(MeChunk *chunk, void *memory);
 /** Grow now to at least `bytes`, so that later requests up to that size allocate nothing. */
 ME_API MeBool MeChunkSetAuto(MeChunk *chunk, size_t bytes);
+/** Bytes the chunk holds now. */
 ME_API size_t MeChunkGetCurrentSize(const MeChunk *chunk);
+/** Largest size the chunk has reached (bytes). */
 ME_API size_t MeChunkGetMaxSize(const MeChunk *chunk);
+/** Whether the chunk's block is out (MeChunkGetMem without MeChunkPutMem). */
 ME_API MeBool MeChunkIsInUse(const MeChunk *chunk);
 
 ME_EXTERN_C_END

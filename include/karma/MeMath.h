@@ -762,6 +762,7 @@ ME_API void MeMatrixMultiplyT1(MeReal *A, int p, int q, int r, const MeReal *B, 
 /** Print the n x m column-major matrix A, one row a line, each element with the printf format
  * (NULL: "%10.4f "), to file or to stdout. */
 ME_API void MeMatrixFPrint(FILE *file, const MeReal *A, int n, int m, const char *format);
+/** MeMatrixFPrint to stdout. */
 ME_API void MeMatrixPrint(const MeReal *A, int n, int m, const char *format);
 /** Exchange columns col1 and col2 (0..2) of a. */
 ME_API void MeMatrix3SwapColumns(MeMatrix3 a, unsigned int col1, unsigned int col2);
@@ -773,10 +774,15 @@ ME_API MeBool MeRealArrayIsZero(MeReal *v, int elements);
  * in the stored triangle; the Sym forms accept either triangle of a symmetric matrix. Size = the
  * number of stored elements. */
 ME_API int MeUpperDiagonalIndex(int inRow, int inCol, int inNCols);
+/** Elements stored for the upper triangle, diagonal included, of an n × n matrix: n(n+1)/2. */
 ME_API int MeUpperDiagonalSize(int inNCols);
+/** MeUpperDiagonalIndex of (row, col) or of (col, row) below the diagonal (symmetric storage). */
 ME_API int MeSymUpperDiagonalIndex(int inRow, int inCol, int inNCols);
+/** Index of (row, col), row < col, in the packed strict upper triangle of an n-column matrix. */
 ME_API int MeSuperDiagonalIndex(int inRow, int inCol, int inNCols);
+/** Elements stored for the strict upper triangle of an n × n matrix: n(n−1)/2. */
 ME_API int MeSuperDiagonalSize(int inNCols);
+/** MeSuperDiagonalIndex of (row, col) or of (col, row) when row > col (symmetric storage). */
 ME_API int MeSymSuperDiagonalIndex(int inRow, int inCol, int inNCols);
 
 /** Index (0..2) of the smallest of a[0..2] (the first one on ties). */

@@ -74,10 +74,15 @@ ME_API const MeMemoryAPIStruct *MeMemoryGetDefaultAPI(void);
 /* Allocation through MeMemoryAPI that also counts blocks (thread-safe counters) and reports
  * ME_ERR_OUT_OF_MEMORY; the library allocates only through these. */
 ME_API void *MeMemoryCreate(size_t bytes);
+/** A zero-filled block of `bytes` (caller owns it: MeMemoryDestroy); NULL and ME_ERR_OUT_OF_MEMORY on failure. */
 ME_API void *MeMemoryCreateZeroed(size_t bytes);
+/** A block aligned to `alignment` (a power of two; caller frees it with MeMemoryDestroyAligned); NULL on bad input. */
 ME_API void *MeMemoryCreateAligned(size_t bytes, size_t alignment);
+/** Free a block from MeMemoryCreate/CreateZeroed/Resize (NULL: nothing done). */
 ME_API void MeMemoryDestroy(void *block);
+/** Free a block from MeMemoryCreateAligned (NULL: nothing done). */
 ME_API void MeMemoryDestroyAligned(void *block);
+/** Resize a block (its contents kept; the old pointer is invalid); NULL and ME_ERR_OUT_OF_MEMORY on failure (block untouched). */
 ME_API void *MeMemoryResize(void *block, size_t bytes);
 
 /** Allocation statistics: calls to create (all kinds, and resize) since start. Tests use the

@@ -47,8 +47,11 @@ ME_API void MePoolDeset(MePool *pool);
 ME_API void *MePoolGetStruct(MePool *pool);
 /** Give a structure back. Releasing something that is not a live slot of this pool is ignored. */
 ME_API void MePoolPutStruct(MePool *pool, void *structure);
+/** Number of structures given out and not yet returned. */
 ME_API int MePoolGetUsed(const MePool *pool);
+/** Number of structures still free (capacity − used). */
 ME_API int MePoolGetUnused(const MePool *pool);
+/** Largest number of structures in use at once since the pool was made. */
 ME_API int MePoolGetHighWater(const MePool *pool);
 /** Slot index of a structure of this pool, or -1. */
 ME_API int MePoolIndexOf(const MePool *pool, const void *structure);
@@ -56,6 +59,7 @@ ME_API int MePoolIndexOf(const MePool *pool, const void *structure);
 ME_API void *MePoolSlot(const MePool *pool, int index);
 /** Whether slot `index` is in use, and its current generation. */
 ME_API MeBool MePoolSlotIsLive(const MePool *pool, int index);
+/** Generation counter of slot `index` (it changes each time the slot is reused). */
 ME_API MeU32 MePoolSlotGeneration(const MePool *pool, int index);
 
 /* ------------------------------------------------------------------ Karma 1.2's pool tables */

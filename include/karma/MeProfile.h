@@ -50,22 +50,29 @@ ME_API double MeProfileDefaultTimer(void);
 /** Set up an empty profile (no sections, timing on, the default timer); Reset clears its times;
  *  SetTimer replaces its clock (NULL: the default). */
 ME_API void MeProfileInit(MeProfile *profile);
+/** Clear every section and time, keeping the timer and the enabled state. */
 ME_API void MeProfileReset(MeProfile *profile);
+/** Replace the clock (seconds; NULL: MeProfileDefaultTimer). */
 ME_API void MeProfileSetTimer(MeProfile *profile, MeProfileTimerFn timer);
 /** Turn timing on or off (on by default); when off, sections cost one branch. */
 ME_API void MeProfileSetEnabled(MeProfile *profile, MeBool enabled);
 /** Begin a new frame: each section's frame time moves to lastFrameTime and restarts at zero. */
 ME_API void MeProfileFrameStart(MeProfile *profile);
+/** End the frame: each section's longest frame time is updated and the frame count grows. */
 ME_API void MeProfileFrameEnd(MeProfile *profile);
 /** Start/end the section called `name` (created on first use). */
 ME_API void MeProfileSectionStart(MeProfile *profile, const char *name);
+/** End section `name`; ending one that is not the innermost open section refused (ME_ERR_PROFILE_NESTING). */
 ME_API void MeProfileSectionEnd(MeProfile *profile, const char *name);
 /** The section called `name`, or NULL. */
 ME_API const MeProfileSection *MeProfileGetSection(const MeProfile *profile, const char *name);
 /** Seconds spent in `name` during the last completed frame (0 if unknown). */
 ME_API double MeProfileGetSectionFrameTime(const MeProfile *profile, const char *name);
+/** Seconds spent in `name` over every frame since Init or Reset (0 if unknown). */
 ME_API double MeProfileGetSectionTotal(const MeProfile *profile, const char *name);
+/** Number of sections created. */
 ME_API int MeProfileGetSectionCount(const MeProfile *profile);
+/** Section `index` (a pointer into the profile, valid while it lives), or NULL outside 0 ... count − 1. */
 ME_API const MeProfileSection *MeProfileGetSectionByIndex(const MeProfile *profile, int index);
 
 /* ======================================================== Karma 1.2's global profiler */
