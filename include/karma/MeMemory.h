@@ -73,6 +73,7 @@ ME_API const MeMemoryAPIStruct *MeMemoryGetDefaultAPI(void);
 
 /* Allocation through MeMemoryAPI that also counts blocks (thread-safe counters) and reports
  * ME_ERR_OUT_OF_MEMORY; the library allocates only through these. */
+/** A block of `bytes` (caller owns it: MeMemoryDestroy); NULL and ME_ERR_OUT_OF_MEMORY on failure. */
 ME_API void *MeMemoryCreate(size_t bytes);
 /** A zero-filled block of `bytes` (caller owns it: MeMemoryDestroy); NULL and ME_ERR_OUT_OF_MEMORY on failure. */
 ME_API void *MeMemoryCreateZeroed(size_t bytes);

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# check_api_comments.sh SOURCE -- every public function has its comment.
+# check_api_comments.sh SOURCE -- every public function has its own documentation comment.
 #
-# In include/karma/*.h, each ME_API function declaration must be documented: by a comment ending on
-# the line just above it, by a trailing /**< ... */ comment, or by the comment heading the run of
-# declarations it belongs to (consecutive lines, no blank line between: a Get/Set family under one
-# sentence). A declaration after a blank line or after code with no comment fails the check.
+# In include/karma/*.h, each ME_API function declaration must carry its own Doxygen comment: a /** ... */
+# (or /// line) ending on the line just above it, or a trailing /**< ... */ on the declaration. A
+# comment heading a run of declarations documents only the first of them, and a plain /* ... */
+# comment (a section divider, a note for readers of the header) documents none: each function says
+# what it does, with units, ownership and what it rejects (STYLE.md, issue 20).
 set -eu
 cd "$1"
 missing=$(for h in include/karma/*.h; do
@@ -18,17 +19,19 @@ missing=$(for h in include/karma/*.h; do
             }
             if (stripped ~ /^ME_API / && stripped ~ /\(/) {
                 if (!covered && stripped !~ /\/\*\*</) print file ":" NR ": " name_of(stripped)
-                covered = 1                     # the run continues under the same comment
+                covered = 0                     # a comment covers one declaration only
                 if (stripped !~ /;/) indecl = 1
                 next
             }
-            covered = (stripped ~ /\*\/$/)       # a comment just ended: it covers what follows
+            if (stripped ~ /\/\*\*/) doc = 1     # the comment being read is a Doxygen one
+            else if (stripped ~ /\/\*/) doc = 0
+            covered = (doc && stripped ~ /\*\/$/) || stripped ~ /^\/\/\/ /
         }' "$h"
 done)
 if [ -n "$missing" ]; then
     echo "$missing"
-    echo "$(echo "$missing" | wc -l) public functions without a comment: give each its one line (what it does,"
-    echo "units, ownership, what it rejects), or place it in a commented run of its family"
+    echo "$(echo "$missing" | wc -l) public functions without a comment of their own: give each its /** one line */"
+    echo "(what it does, units, ownership, what it rejects) just above the declaration"
     exit 1
 fi
-echo "every ME_API function in include/karma has its comment"
+echo "every ME_API function in include/karma has its own comment"
