@@ -1,0 +1,50 @@
+/* stack.c -- how-to "Stack boxes that stand": ten 1 kg boxes in a column on the ground, at the world's
+ * default settings, with friction. After 10 s the column still stands and has gone to sleep. */
+#include <math.h>
+#include <stdio.h>
+#include <karma/karma.h>
+
+static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 0, -1, 0}, {0, 1, 0, 0}, {0, 0, 0, 1}}; /* y up */
+
+int main(void)
+{
+    enum { BOXES = 10 };
+    const MeReal size = 0.5;
+    MstUniverseSizes sizes = MstUniverseDefaultSizes; /* massScale 1: our boxes weigh 1 kg */
+    MstUniverseID universe = MstUniverseCreate(&sizes);
+    McdFrameworkID collision = MstUniverseGetFramework(universe);
+    MstBridgeID bridge = MstUniverseGetBridge(universe);
+    MdtWorldSetGravity(MstUniverseGetWorld(universe), 0, -9.81, 0);
+    MstFixedModelCreate(universe, McdPlaneCreate(collision), groundTM);
+
+    /* Everything has the default material: give its contacts Coulomb friction, mu = 0.6. */
+    MdtContactParamsID p = MstBridgeGetContactParams(bridge, MstBridgeGetDefaultMaterial(), MstBridgeGetDefaultMaterial());
+    MdtContactParamsSetType(p, MdtContactTypeFriction2D);
+    MdtContactParamsSetFrictionModel(p, MdtFrictionModelNormalForce);
+    MdtContactParamsSetFrictionCoeffecient(p, 0.6);
+
+    /* The column: box i rests on box i - 1, 1 mm apart so that they start untouched. */
+    MdtBodyID boxes[BOXES];
+    for (int i = 0; i < BOXES; i++) {
+        McdModelID box = MstModelAndBodyCreate(universe, McdBoxCreate(collision, size, size, size), 8);
+        boxes[i] = McdModelGetBody(box);
+        MdtBodySetPosition(boxes[i], 0, size / 2 + i * (size + (MeReal)0.001), 0);
+    }
+    MeVector3 start;
+    MdtBodyGetPosition(boxes[BOXES - 1], start);
+
+    for (int step = 0; step < 10 * 60; step++)
+        MstUniverseStep(universe, 1.0 / 60);
+
+    int awake = 0;
+    for (int i = 0; i < BOXES; i++)
+        awake += MdtBodyIsEnabled(boxes[i]) ? 1 : 0;
+    MeVector3 top;
+    MdtBodyGetPosition(boxes[BOXES - 1], top);
+    const double drift = sqrt((double)((top[0] - start[0]) * (top[0] - start[0]) + (top[2] - start[2]) * (top[2] - start[2])));
+    printf("after 10 s: top box at height %.2f m (a standing column: %.2f m), %d of %d boxes awake\n",
+           (double)top[1], (double)(size / 2 + (BOXES - 1) * size), awake, BOXES);
+    printf("the top box drifted sideways %s 1 mm\n", drift < 0.001 ? "less than" : "more than");
+    MstUniverseDestroy(universe);
+    return 0;
+}
