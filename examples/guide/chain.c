@@ -30,7 +30,8 @@ int main(void)
     MdtWorldSetGravity(world, 0, -9.81, 0);
     MstFixedModelCreate(universe, McdPlaneCreate(collision), groundTM);
     MstFixedModelCreate(universe, McdBoxCreate(collision, 0.4, 1, 1), postTM);
-    MdtContactParamsID p = MstBridgeGetContactParams(bridge, MstBridgeGetDefaultMaterial(), MstBridgeGetDefaultMaterial());
+    const MstMaterialID material = MstBridgeGetDefaultMaterial();
+    MdtContactParamsID p = MstBridgeGetContactParams(bridge, material, material);
     MdtContactParamsSetType(p, MdtContactTypeFriction2D);
     MdtContactParamsSetFrictionModel(p, MdtFrictionModelNormalForce);
     MdtContactParamsSetFrictionCoeffecient(p, 0.8);
@@ -67,9 +68,12 @@ int main(void)
         MeVector3 a, b;
         pointOn(links[i], half, a);
         pointOn(links[i + 1], -half, b);
-        double gap = sqrt((double)((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2])));
-        printf("joint %d: bent %.0f degrees (limit 30), the links' ends %s 1 mm apart\n", i + 1,
-               (double)MdtConeLimitGetAngle(cones[i]) * 180 / 3.14159265358979, gap < 0.001 ? "less than" : "more than");
+        double gap2 = 0;
+        for (int k = 0; k < 3; k++)
+            gap2 += (double)((a[k] - b[k]) * (a[k] - b[k]));
+        const double degrees = (double)MdtConeLimitGetAngle(cones[i]) * 180 / 3.14159265358979;
+        printf("joint %d: bent %.0f degrees (limit 30), the links' ends %s 1 mm apart\n", i + 1, degrees,
+               sqrt(gap2) < 0.001 ? "less than" : "more than");
     }
     MeVector3 end;
     MdtBodyGetPosition(links[0], end);

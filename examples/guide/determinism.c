@@ -30,7 +30,7 @@ static uint64_t runScene(MeReal raise)
         McdGeometryID shape = i % 2 ? McdBoxCreate(collision, 0.4, 0.3, 0.5) : McdSphereCreate(collision, 0.2);
         bodies[i] = McdModelGetBody(MstModelAndBodyCreate(universe, shape, 10));
         /* A loose spiral, so that they land on one another at odd angles. */
-        MdtBodySetPosition(bodies[i], 0.1f * (MeReal)(i % 3), 0.5f + 0.45f * (MeReal)i, 0.07f * (MeReal)(i % 4));
+        MdtBodySetPosition(bodies[i], (MeReal)(0.1 * (i % 3)), (MeReal)(0.5 + 0.45 * i), (MeReal)(0.07 * (i % 4)));
     }
     MeVector3 first;
     MdtBodyGetPosition(bodies[0], first);

@@ -17,7 +17,7 @@ int main(void)
     for (int stack = 0; stack < 2; stack++)
         for (int i = 0; i < 3; i++) {
             McdModelID box = MstModelAndBodyCreate(universe, McdBoxCreate(collision, 0.5, 0.5, 0.5), 8);
-            MdtBodySetPosition(McdModelGetBody(box), 2.0f * (MeReal)stack, 0.25f + 0.501f * (MeReal)i, 0);
+            MdtBodySetPosition(McdModelGetBody(box), (MeReal)(2 * stack), (MeReal)(0.25 + 0.501 * i), 0);
         }
     const int steps = 30;
     for (int step = 0; step < steps; step++)

@@ -18,7 +18,8 @@ int main(void)
     MstFixedModelCreate(universe, McdPlaneCreate(collision), groundTM);
 
     /* Everything has the default material: give its contacts Coulomb friction, mu = 0.6. */
-    MdtContactParamsID p = MstBridgeGetContactParams(bridge, MstBridgeGetDefaultMaterial(), MstBridgeGetDefaultMaterial());
+    const MstMaterialID material = MstBridgeGetDefaultMaterial();
+    MdtContactParamsID p = MstBridgeGetContactParams(bridge, material, material);
     MdtContactParamsSetType(p, MdtContactTypeFriction2D);
     MdtContactParamsSetFrictionModel(p, MdtFrictionModelNormalForce);
     MdtContactParamsSetFrictionCoeffecient(p, 0.6);
@@ -41,7 +42,7 @@ int main(void)
         awake += MdtBodyIsEnabled(boxes[i]) ? 1 : 0;
     MeVector3 top;
     MdtBodyGetPosition(boxes[BOXES - 1], top);
-    const double drift = sqrt((double)((top[0] - start[0]) * (top[0] - start[0]) + (top[2] - start[2]) * (top[2] - start[2])));
+    const double dx = (double)(top[0] - start[0]), dz = (double)(top[2] - start[2]), drift = sqrt(dx * dx + dz * dz);
     printf("after 10 s: top box at height %.2f m (a standing column: %.2f m), %d of %d boxes awake\n",
            (double)top[1], (double)(size / 2 + (BOXES - 1) * size), awake, BOXES);
     printf("the top box drifted sideways %s 1 mm\n", drift < 0.001 ? "less than" : "more than");

@@ -20,7 +20,8 @@ int main(void)
     MdtWorldSetGravity(world, 0, -9.81, 0);
     MstFixedModelCreate(universe, McdPlaneCreate(collision), groundTM);
     /* Tyres grip: Coulomb friction with mu = 1 everywhere. */
-    MdtContactParamsID p = MstBridgeGetContactParams(bridge, MstBridgeGetDefaultMaterial(), MstBridgeGetDefaultMaterial());
+    const MstMaterialID material = MstBridgeGetDefaultMaterial();
+    MdtContactParamsID p = MstBridgeGetContactParams(bridge, material, material);
     MdtContactParamsSetType(p, MdtContactTypeFriction2D);
     MdtContactParamsSetFrictionModel(p, MdtFrictionModelNormalForce);
     MdtContactParamsSetFrictionCoeffecient(p, 1);
