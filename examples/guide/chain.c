@@ -1,6 +1,7 @@
 /* chain.c -- how-to "Ragdolls": the ragdoll's parts in small. Four links joined end to end by
- * ball-and-socket joints, each with a cone limit of 30 degrees, fall across a post. The chain drapes
- * over it: each joint bends to its limit and no further, and the joints hold the links together. */
+ * ball-and-socket joints fall across a post. With a cone limit of 30 degrees on each joint, the chain
+ * drapes over the post with each joint bent to its limit and no further; without limits it folds
+ * further and hangs lower. Either way the joints hold the links together. */
 #include <math.h>
 #include <stdio.h>
 #include <karma/karma.h>
@@ -20,7 +21,9 @@ static void pointOn(MdtBodyID link, MeReal along, MeVector3 out)
         out[k] = tm[3][k] + along * tm[0][k];
 }
 
-int main(void)
+/* Drops the chain on the post with cone limits of `limitDegrees` (180: no limit) and prints how it
+ * hangs after 5 s. */
+static void drape(double limitDegrees)
 {
     MstUniverseSizes sizes = MstUniverseDefaultSizes;
     MstUniverseID universe = MstUniverseCreate(&sizes);
@@ -46,8 +49,8 @@ int main(void)
         MdtBodySetPosition(links[i], (2 * i - LINKS + 1) * half, 1.5, 0);
     }
     /* Joint i joins link i to link i + 1 where they meet. A cone limit keeps the angle between their
-     * x axes (the limit's default axes) under 30 degrees. Joined links overlap at the joint: they must
-     * not collide with each other. */
+     * x axes (the limit's default axes) under its half-angle. Joined links overlap at the joint: they
+     * must not collide with each other. */
     MdtConeLimitID cones[LINKS - 1];
     for (int i = 0; i < LINKS - 1; i++) {
         MdtBSJointID joint = MdtBSJointCreate(world);
@@ -56,7 +59,7 @@ int main(void)
         MdtBSJointEnable(joint);
         cones[i] = MdtConeLimitCreate(world);
         MdtConeLimitSetBodies(cones[i], links[i], links[i + 1]);
-        MdtConeLimitSetConeHalfAngle(cones[i], 30 * ME_PI / 180);
+        MdtConeLimitSetConeHalfAngle(cones[i], (MeReal)(limitDegrees * 3.14159265358979 / 180));
         MdtConeLimitEnable(cones[i]);
         McdSpaceDisablePair(models[i], models[i + 1]);
     }
@@ -64,6 +67,8 @@ int main(void)
     for (int step = 0; step < 5 * 60; step++)
         MstUniverseStep(universe, 1.0 / 60);
 
+    double largestGap = 0;
+    printf("%s: joints bent", limitDegrees < 180 ? "cone limits of 30 degrees" : "no limits");
     for (int i = 0; i < LINKS - 1; i++) {
         MeVector3 a, b;
         pointOn(links[i], half, a);
@@ -71,13 +76,19 @@ int main(void)
         double gap2 = 0;
         for (int k = 0; k < 3; k++)
             gap2 += (double)((a[k] - b[k]) * (a[k] - b[k]));
-        const double degrees = (double)MdtConeLimitGetAngle(cones[i]) * 180 / 3.14159265358979;
-        printf("joint %d: bent %.0f degrees (limit 30), the links' ends %s 1 mm apart\n", i + 1, degrees,
-               sqrt(gap2) < 0.001 ? "less than" : "more than");
+        largestGap = fmax(largestGap, sqrt(gap2));
+        printf("%s %.0f", i ? "," : "", (double)MdtConeLimitGetAngle(cones[i]) * 180 / 3.14159265358979);
     }
     MeVector3 end;
     MdtBodyGetPosition(links[0], end);
-    printf("the end links hang at %.2f m, above the ground: the limits hold the chain up\n", (double)end[1]);
+    printf(" degrees; end links' centres %.2f m up; joints open %s 1 mm\n", (double)end[1],
+           largestGap < 0.001 ? "less than" : "more than");
     MstUniverseDestroy(universe);
+}
+
+int main(void)
+{
+    drape(30);
+    drape(180);
     return 0;
 }
