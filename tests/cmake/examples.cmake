@@ -11,6 +11,11 @@ foreach(src ${KARMA_EXAMPLES})
   target_compile_options(example_${name} PRIVATE -std=c11 -Wall -Wextra -Werror -pedantic -Wdouble-promotion)
   add_test(NAME example_${name} COMMAND example_${name})
 endforeach()
+if(TARGET example_guide_threads)
+  # The threads how-to runs universes on POSIX threads.
+  find_package(Threads REQUIRED)
+  target_link_libraries(example_guide_threads PRIVATE Threads::Threads)
+endif()
 if(TARGET example_hello)
   # Symplectic Euler from rest: y = 10 - g h² n(n+1)/2 = 5.01325 m after n = 60 steps of h = 1/60 s.
   set_tests_properties(example_hello PROPERTIES PASS_REGULAR_EXPRESSION
