@@ -23,11 +23,20 @@
 
 MeReal MdtBodyKineticEnergy(const MdtBodyData *b, const MeVector3 v, const MeVector3 w)
 {
-    MeMatrix3 I;
-    MeVector3 Iw;
-    MdtBodyWorldInertia(b, I);
-    MeMatrix3MultiplyVector(Iw, I, w);
-    return ME_R(0.5) * (b->mass * MeVector3MagnitudeSqr(v) + MeVector3Dot(w, Iw));
+    /* With the inertia in use (full or spherical). The world tensor is R^T I R (rows of R: the body's
+     * axes), so ω·(R^T I R)ω = (Rω)·I(Rω): rotating ω is cheaper than forming the world tensor. */
+    MeReal rotational;
+    if (b->nonSpherical) {
+        MeVector3 wb, Iwb;
+        for (int k = 0; k < 3; k++)
+            wb[k] = b->comTM[k][0] * w[0] + b->comTM[k][1] * w[1] + b->comTM[k][2] * w[2];
+        for (int k = 0; k < 3; k++)
+            Iwb[k] = b->inertia[k][0] * wb[0] + b->inertia[k][1] * wb[1] + b->inertia[k][2] * wb[2];
+        rotational = MeVector3Dot(wb, Iwb);
+    } else {
+        rotational = (b->inertia[0][0] + b->inertia[1][1] + b->inertia[2][2]) / 3 * MeVector3MagnitudeSqr(w);
+    }
+    return ME_R(0.5) * (b->mass * MeVector3MagnitudeSqr(v) + rotational);
 }
 
 static void checkSpeed(MdtWorldData *w, MdtBodyData *b)

@@ -15,6 +15,9 @@
 
 #include <karma/Mdt.h>
 
+#include "mdt/body.h"
+#include "mdt/world.h" /* MdtBodyKineticEnergy */
+
 static MdtWorldID makeWorld(void)
 {
     MdtWorldID w = MdtWorldCreate(16, 32, 1, 1);
@@ -313,6 +316,38 @@ static void slow_symmetric_top_precesses_at_analytic_rate(void **state)
 
 /* ---- step sizes ------------------------------------------------------------------------------- */
 
+/* The energy the runaway check sums: ½ m v² + ½ ω·I_world ω, for a turned body with a full tensor
+ * (checked against the world tensor formed explicitly) and for a spherical one (mean of the diagonal). */
+static void kinetic_energy_uses_the_world_inertia(void **state)
+{
+    (void)state;
+    MdtWorldID w = MdtWorldCreate(4, 4, 1, 1);
+    MdtBodyID id = MdtBodyCreate(w);
+    MdtBodySetMass(id, 2);
+    MeMatrix3 I = {{1, 0, 0}, {0, 2, 0}, {0, 0, 3}};
+    MdtBodySetInertiaTensor(id, I);
+    MdtBodySetQuaternion(id, ME_R(0.8), ME_R(0.36), ME_R(0.48), 0); /* unit: a turn about (3, 4, 0)/5 */
+    MdtBodyData *b = MdtBodyFromID(id, "test");
+    const MeVector3 v = {1, -2, 3}, omega = {ME_R(0.5), -1, 2};
+    for (int full = 0; full < 2; full++) {
+        if (full)
+            MdtBodyEnableNonSphericalInertia(id);
+        else
+            MdtBodyDisableNonSphericalInertia(id);
+        MeMatrix3 Iw;
+        MdtBodyWorldInertia(b, Iw);
+        MeReal rot = 0;
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                rot += omega[i] * Iw[i][j] * omega[j];
+        const MeReal expected = ME_R(0.5) * (2 * 14 + rot);
+        assert_true(MeFabs(MdtBodyKineticEnergy(b, v, omega) - expected) < ME_R(1e-5) * expected);
+        if (!full) /* spherical: the mean inertia 2, whatever the orientation */
+            assert_true(MeFabs(rot - 2 * ME_R(5.25)) < ME_R(1e-5));
+    }
+    MdtWorldDestroy(w);
+}
+
 static void step_below_minimum_refused_without_change(void **state)
 {
     (void)state;
@@ -453,6 +488,7 @@ int main(void)
         cmocka_unit_test(consistent_chain_not_reported),
         cmocka_unit_test(gyroscopic_never_adds_energy_at_any_spin),
         cmocka_unit_test(slow_symmetric_top_precesses_at_analytic_rate),
+        cmocka_unit_test(kinetic_energy_uses_the_world_inertia),
         cmocka_unit_test(step_below_minimum_refused_without_change),
         cmocka_unit_test(crossed_limit_stops_refused),
         cmocka_unit_test(parallel_or_zero_axes_refused),
