@@ -147,8 +147,9 @@ static void representativeNormal(const McdContact *c, int count, MeVector3 norma
         MeVector3Copy(normal, c[deepest].normal);
 }
 
-/* The last guard before contacts leave Mcd: a contact with a non-finite value or a normal that is not
- * of unit length is dropped (and counted), whichever test wrote it, so none reaches the bridge. */
+/* For a pair test that overran its room: McdNfCallCentred checks the contacts of a count in range
+ * (keepPlausible), not these, so a contact with a non-finite value or a normal that is not of unit
+ * length is dropped (and counted) here, and none reaches the bridge. */
 static int dropInvalidContacts(McdFrameworkData *fw, McdContact *c, int n)
 {
     int kept = 0;
@@ -211,9 +212,8 @@ int McdIntersectModels(McdModelPair *pair, McdModelData *m1, McdModelData *m2, M
                                              tolerance, c, maxCount, &pair->cache);
     if (n < 0 || n > maxCount) {
         ME_REPORT_IN(function, ME_ERR_INTERNAL, "a pair test returned %d contacts for room for %d", n, maxCount);
-        n = n < 0 ? 0 : maxCount;
+        n = n < 0 ? 0 : dropInvalidContacts(fw, c, maxCount);
     }
-    n = dropInvalidContacts(fw, c, n);
     unsigned long fallbacks = McdNfFallbackCount() - fallbacksBefore;
     if (fallbacks)
         atomic_fetch_add(&fw->pairFallbacks, fallbacks);
