@@ -155,11 +155,19 @@ typedef struct MdtRowWriter {
     MeReal h, gamma, epsilon0;
     MeReal maxCorrection; /* bound on a contact's penetration correction speed, m/s (may be MEINFINITY) */
     MdtRow *captured; /* when not NULL, rows are copied here instead (MdtConstraintCaptureRows) */
+    KeaContact *contacts; /* the step's declared contacts (global rows), contactCount so far */
+    int contactCount;
 } MdtRowWriter;
 
 /** Append a row for the current constraint; returns its index relative to the constraint's first
  *  row, or -1 when the capacity (the class's row count) is exhausted. */
 int MdtRowWriterAdd(MdtRowWriter *w, const MdtRow *row);
+/** Declare the current constraint's three rows from `normalRow` (relative to its first row, as
+ *  MdtRowWriterAdd returned it) a contact for Kea (KeaContact: the normal row [0, inf), then two
+ *  friction rows linked to it without bounds of their own, on the same bodies, the first a body).
+ *  The caller promises that shape; a contact with other options writes generic rows only. Nothing
+ *  happens when rows are captured. */
+void MdtRowWriterDeclareContact(MdtRowWriter *w, int normalRow);
 /** An empty row with the defaults (gamma −1: the world's, link −1, unbounded). Inline: every row of
  *  every step starts here. */
 static inline void MdtRowInit(MdtRow *row)

@@ -66,13 +66,25 @@ int MdtRowWriterAdd(MdtRowWriter *w, const MdtRow *row)
     return local;
 }
 
+/* The contacts live after the ints of allocateRows' layout. */
+_Static_assert(_Alignof(KeaContact) <= _Alignof(int), "KeaContact is laid out after ints");
+
+void MdtRowWriterDeclareContact(MdtRowWriter *w, int normalRow)
+{
+    if (w->captured || normalRow < 0)
+        return;
+    ME_ASSERT_INTERNAL(w->first + normalRow + 3 <= w->count);
+    w->contacts[w->contactCount++].row = w->first + normalRow;
+}
+
 /* Lay out the step's row arrays for `rows` rows and `bodies` bodies in the row chunk. */
 static MeBool allocateRows(MdtWorldData *w, int rows, int bodies, int partitions)
 {
     MdtStepRows *r = &w->rows;
     size_t nr = (size_t)(rows > 0 ? rows : 1), nb = (size_t)(bodies > 0 ? bodies : 1);
     size_t bytes = sizeof(KeaJacobianRow) * nr + sizeof(KeaBody) * nb + sizeof(KeaBodyVelocity) * nb +
-                   sizeof(MeReal) * 6 * nr + sizeof(int) * (3 * nr + (size_t)partitions + 1) + 64;
+                   sizeof(MeReal) * 6 * nr + sizeof(int) * (3 * nr + (size_t)partitions + 1) +
+                   sizeof(KeaContact) * (nr / 3 + 1) + sizeof(int) * ((size_t)partitions + 1) + 64;
     unsigned char *mem = MeChunkGetMem(&w->rowChunk, bytes);
     if (!mem)
         return MEFALSE;
@@ -94,6 +106,8 @@ static MeBool allocateRows(MdtWorldData *w, int rows, int bodies, int partitions
     r->rowBodies = (int(*)[2])ints;
     r->link = ints + 2 * nr;
     r->partitionRowStart = ints + 3 * nr;
+    r->partitionContactStart = r->partitionRowStart + partitions + 1;
+    r->contacts = (KeaContact *)(r->partitionContactStart + partitions + 1); /* ints: KeaContact is one */
     return METRUE;
 }
 
@@ -135,6 +149,8 @@ void MdtPackStage(MdtWorldData *w)
     writer.link = r->link;
     writer.count = 0;
     writer.captured = NULL;
+    writer.contacts = r->contacts;
+    writer.contactCount = 0;
     writer.h = w->stepSize;
     writer.gamma = w->gamma;
     writer.epsilon0 = w->epsilon;
@@ -142,6 +158,7 @@ void MdtPackStage(MdtWorldData *w)
     for (int p = 0; p < out->partitionCount; p++) {
         int bodyBase = out->partitionStart[p];
         r->partitionRowStart[p] = writer.count;
+        r->partitionContactStart[p] = writer.contactCount;
         for (int i = out->constraintStart[p]; i < out->constraintStart[p + 1]; i++) {
             MdtConstraintData *c = out->constraints[i];
             writer.constraint = c;
@@ -156,6 +173,7 @@ void MdtPackStage(MdtWorldData *w)
         MdtWorldLogMatrixSize(w, writer.count - r->partitionRowStart[p]);
     }
     r->partitionRowStart[out->partitionCount] = writer.count;
+    r->partitionContactStart[out->partitionCount] = writer.contactCount;
     r->count = writer.count;
     w->lastRowCount = writer.count;
     w->rowsPacked = METRUE;

@@ -74,6 +74,12 @@ void MdtSolveStage(MdtWorldData *w)
         for (int i = 0; i < rows; i++)
             if (r->link[row0 + i] >= 0)
                 r->link[row0 + i] -= row0;
+        /* So were the declared contacts. */
+        int contact0 = r->partitionContactStart[p];
+        problem.nContacts = r->partitionContactStart[p + 1] - contact0;
+        problem.contacts = r->contacts + contact0;
+        for (int i = 0; i < problem.nContacts; i++)
+            r->contacts[contact0 + i].row -= row0;
         KeaStats ks;
         KeaStatus status = KeaSolve(&problem, &w->kea, workspace, need, r->x + row0, r->dv + body0, &ks);
         stats->partitions++;

@@ -69,6 +69,8 @@ typedef struct MdtStepRows {
     MeReal *epsilon, *rhs, *lo, *hi, *mu, *x;
     int *link;
     int *partitionRowStart;  /* partitionCount + 1 offsets */
+    KeaContact *contacts;    /* declared contacts (MdtRowWriterDeclareContact), partition after partition */
+    int *partitionContactStart; /* partitionCount + 1 offsets into contacts */
     KeaBody *bodies;         /* per step body (partition order) */
     KeaBodyVelocity *dv;     /* per step body: velocity change from the constraints */
     size_t workspaceBytes;   /* Kea workspace for the largest partition */

@@ -56,6 +56,7 @@ typedef struct KtProblem {
     int (*rowBodies)[2];
     MeReal *eps, *rhs, *lo, *hi, *mu, *x0;
     int *link;
+    KeaContact *contacts; /* the declared contacts (kt_declare_contacts) */
 } KtProblem;
 
 static inline void kt_alloc(KtProblem *t, int nRows, int nBodies, int withLinks)
@@ -101,6 +102,7 @@ static inline void kt_free(KtProblem *t)
     free(t->x0);
     free(t->link);
     free(t->mu);
+    free(t->contacts);
     memset(t, 0, sizeof *t);
 }
 
@@ -180,8 +182,22 @@ static inline void kt_random_problem(KtProblem *t, KtRng *r, int n, int nb, doub
     }
 }
 
+/** Declare rows 3c, 3c + 1, 3c + 2 of every c < nContacts a contact (KeaContact): the contact step
+ *  solves them. Without it (or with p.nContacts set back to 0) they are generic rows. */
+static inline void kt_declare_contacts(KtProblem *t, int nContacts)
+{
+    int c;
+    free(t->contacts);
+    t->contacts = (KeaContact *)calloc((size_t)(nContacts ? nContacts : 1), sizeof(KeaContact));
+    for (c = 0; c < nContacts; ++c)
+        t->contacts[c].row = 3 * c;
+    t->p.contacts = t->contacts;
+    t->p.nContacts = nContacts;
+}
+
 /** Random contact partition: nContacts contacts, each a unilateral normal row followed by two friction
- *  rows linked to it with coefficient mu (unbounded own bounds); plus nJoint bilateral rows. */
+ *  rows linked to it with coefficient mu (unbounded own bounds), declared (kt_declare_contacts);
+ *  plus nJoint bilateral rows. */
 static inline void kt_random_contacts(KtProblem *t, KtRng *r, int nContacts, int nJoint, int nb, double mu,
                                       double eps)
 {
@@ -224,6 +240,7 @@ static inline void kt_random_contacts(KtProblem *t, KtRng *r, int nContacts, int
         }
     }
     (void)c;
+    kt_declare_contacts(t, nContacts);
 }
 
 /** A = J M^-1 J^T + diag(eps) in double, from a full J (n x 6 nb) and block-diagonal M^-1. */
@@ -422,7 +439,8 @@ static inline void kt_contact_row(KeaJacobianRow *J, const double p[3], const do
 }
 
 /** A column of nBoxes unit cubes (mass m, side 1) standing on the ground (z up): interface k carries
- *  4 corner contacts, each a normal row (0, inf) and two friction rows linked to it with mu. Box k's
+ *  4 corner contacts, each a normal row (0, inf) and two friction rows linked to it with mu (declared
+ *  contacts, kt_declare_contacts). Box k's
  *  centre is at z = k + 1/2. Rows in order: interface by interface from the ground up, each contact's
  *  normal then its x and y friction rows. Softness eps on every row. The rhs is left at 0: set it
  *  with kt_set_rhs_from_velocities. */
@@ -460,6 +478,7 @@ static inline void kt_column(KtProblem *t, int nBoxes, double m, double mu, doub
             }
         }
     }
+    kt_declare_contacts(t, 4 * nBoxes);
 }
 
 /** r = -J (v + h a) for body velocities v (6 per body: linear, angular) and a uniform acceleration

@@ -204,11 +204,11 @@ static double contact_lcp_violation(const KtProblem *t, const MeReal *x)
     return worst / scale;
 }
 
-/* The generic contact path: a contact written with the world as its first body is not the plain
- * contact block's layout (KeaIsPlainContact), so the sweep solves it with the general block step
- * (KeaBlockStep: the all-free shortcut, KeaContactSolve's active sets, or the dense solver). One
- * sweep must give the exact LCP solution (the block is the whole problem), equal to the direct path's,
- * opening, sticking and sliding. */
+/* The generic rows path: a contact not declared (here with the world as its first body, which a
+ * declared contact may not have) is three generic rows, a normal row with the two rows linked to
+ * it, which the sweep solves as one block with the generic block step (KeaBlockStep: the all-free
+ * shortcut, or the dense solver). One sweep must give the exact LCP solution (the block is the
+ * whole problem), equal to the direct path's, opening, sticking and sliding. */
 static void generic_contact_path_is_exact_in_one_sweep(void **state)
 {
     static const double mus[3] = {0.2, 0.6, 1.0};
@@ -223,6 +223,7 @@ static void generic_contact_path_is_exact_in_one_sweep(void **state)
         double err, lcp;
         int i, k;
         kt_random_contacts(&t, &rng, 1, 0, 1, mus[seed % 3], 1e-2);
+        t.p.nContacts = 0; /* generic rows */
         for (i = 0; i < 3; ++i) { /* the world first: the body's half moves to the second slot */
             t.rowBodies[i][1] = t.rowBodies[i][0];
             t.rowBodies[i][0] = KEA_WORLD;
@@ -294,6 +295,156 @@ static void contacts_on_the_cone_edge_meet_the_lcp_conditions(void **state)
         kt_free(&t);
     }
     print_message("400 contacts on the friction cone's edge, one sweep: largest LCP violation %.3g\n", worstLcp);
+}
+
+/* Random contacts with the rarer options, as BCL writes them: anisotropic friction (mu_1 != mu_2),
+ * a soft normal row and slipping friction rows (their own eps), restitution and surface or world
+ * velocities (the normal and friction rows' rhs), among bilateral joint rows. */
+static void random_contacts_with_options(KtProblem *t, KtRng *rng, int nContacts, int nJoint, int nb)
+{
+    int c, k;
+    kt_random_contacts(t, rng, nContacts, nJoint, nb, 0.3, 1e-2);
+    for (c = 0; c < nContacts; ++c) {
+        const int s = 3 * c;
+        t->eps[s] = (MeReal)(kt_int(rng, 2) ? kt_range(rng, 1e-3, 1e-1) : 1e-2);    /* soft */
+        for (k = 1; k < 3; ++k) {
+            t->mu[s + k] = (MeReal)kt_range(rng, 0.05, 0.5);                       /* anisotropic */
+            t->eps[s + k] = (MeReal)(kt_int(rng, 2) ? kt_range(rng, 1e-2, 0.5) : 1e-2); /* slip */
+            t->rhs[s + k] += (MeReal)kt_range(rng, -0.5, 0.5);                     /* surface velocity */
+        }
+        t->rhs[s] += (MeReal)kt_range(rng, -0.3, 0.6); /* a bounce, or a contact pulling apart */
+    }
+}
+
+/* The largest difference between a and b relative to max(1, |b|). */
+static double relative_difference(const MeReal *a, const MeReal *b, int n)
+{
+    double err = 0.0, scale = 1.0;
+    int i;
+    for (i = 0; i < n; ++i)
+        scale = fmax(scale, fabs((double)b[i]));
+    for (i = 0; i < n; ++i)
+        err = fmax(err, fabs((double)a[i] - (double)b[i]) / scale);
+    return err;
+}
+
+/* The one contact step (declared contacts) and the generic rows path (the same rows, not declared)
+ * solve the same LCP, on cases both solve exactly:
+ *  - one contact with the rarer options, one sweep: each path's block step is exact (the contact
+ *    step's closed forms or dense fallback, the generic step's all-free shortcut or dense solver),
+ *    and with mu <= 0.5 on these random blocks the contact's LCP has one solution, so the two agree
+ *    to rounding amplified by the block's conditioning: 1e-4 in float (rounding 6e-8 times
+ *    condition numbers up to ~1e3), 1e-9 in double;
+ *  - ten such contacts among joint rows, run to convergence (tolerance 0, 2000 sweeps): each path
+ *    converges to the partition's solution, so they agree to the iterative path's own accuracy on
+ *    these problems (friction_links_converge_to_direct's bound, 2e-3 in float, 1e-7 in double). */
+static void contact_step_and_generic_rows_agree(void **state)
+{
+    double worstOne = 0.0, worstMany = 0.0;
+    int seed;
+    (void)state;
+    for (seed = 0; seed < 300; ++seed) {
+        KtRng rng = kt_rng((uint64_t)(11000 + seed));
+        KtProblem t;
+        MeReal xt[3], xg[3];
+        KeaParameters iter = kt_params(KeaPathIterative);
+        KeaStats st;
+        double err;
+        random_contacts_with_options(&t, &rng, 1, 0, 1 + seed % 2);
+        iter.maxIterations = 1;
+        iter.tolerance = ME_R(0.0);
+        assert_int_not_equal(kt_solve(&t.p, &iter, xt, NULL, &st), KeaStatusBadInput);
+        t.p.nContacts = 0;
+        kt_solve(&t.p, &iter, xg, NULL, &st);
+        err = relative_difference(xt, xg, 3);
+        worstOne = fmax(worstOne, err);
+        assert_near(err, 0.0, ME_TOL(1e-9, 1e-4));
+        kt_free(&t);
+    }
+    for (seed = 0; seed < 20; ++seed) {
+        KtRng rng = kt_rng((uint64_t)(12000 + seed));
+        KtProblem t;
+        MeReal xt[36], xg[36];
+        KeaParameters iter = kt_params(KeaPathIterative);
+        KeaStats st;
+        double err;
+        random_contacts_with_options(&t, &rng, 10, 6, 6);
+        iter.maxIterations = 2000;
+        iter.tolerance = ME_R(0.0);
+        kt_solve(&t.p, &iter, xt, NULL, &st);
+        assert_near(st.residual, 0.0, ME_TOL(1e-7, 1e-3));
+        t.p.nContacts = 0;
+        kt_solve(&t.p, &iter, xg, NULL, &st);
+        assert_near(st.residual, 0.0, ME_TOL(1e-7, 1e-3));
+        err = relative_difference(xt, xg, 36);
+        worstMany = fmax(worstMany, err);
+        assert_near(err, 0.0, ME_TOL(1e-7, 2e-3));
+        kt_free(&t);
+    }
+    print_message("contact step vs generic rows: one contact, one sweep, max relative difference %.3g; "
+                  "ten contacts to convergence %.3g\n", worstOne, worstMany);
+}
+
+/* A declared contact whose block has no factor (its two friction rows the same direction, so its
+ * 3 x 3 matrix is singular without softness) skips the all-free try and goes to the active sets or
+ * the dense solver; one sweep must still meet the contact's LCP conditions. */
+static void contact_without_a_factor_meets_the_lcp_conditions(void **state)
+{
+    double worst = 0.0;
+    int seed;
+    (void)state;
+    for (seed = 0; seed < 100; ++seed) {
+        KtRng rng = kt_rng((uint64_t)(13000 + seed));
+        KtProblem t;
+        MeReal xd[3], xi[3];
+        KeaStats st;
+        double lcp;
+        int r;
+        kt_random_contacts(&t, &rng, 1, 0, 1 + seed % 2, 0.4, 1e-2);
+        t.J[2] = t.J[1];
+        for (r = 0; r < 3; ++r)
+            t.eps[r] = ME_R(0.0);
+        if (seed % 3 == 0)
+            t.rhs[0] = (MeReal)-kt_range(&rng, 0.1, 1.0);
+        (void)iterative_vs_direct(&t, 1, xd, xi, &st);
+        lcp = contact_lcp_violation(&t, xi);
+        worst = fmax(worst, lcp);
+        assert_near(lcp, 0.0, ME_TOL(1e-8, 1e-3));
+        kt_free(&t);
+    }
+    print_message("100 contacts without a factor, one sweep: largest LCP violation %.3g\n", worst);
+}
+
+/* A contact declaration that breaks KeaContact's promise is bad input, whatever the path: Kea does
+ * not second-guess the rows, it checks what it was told. */
+static void broken_contact_declarations_are_bad_input(void **state)
+{
+    int bad;
+    (void)state;
+    for (bad = 0; bad < 9; ++bad) {
+        KtRng rng = kt_rng(77);
+        KtProblem t;
+        MeReal x[9];
+        KeaContact two[2] = {{0}, {2}};
+        KeaParameters prm = kt_params(bad % 2 ? KeaPathDirect : KeaPathIterative);
+        KeaStats st;
+        kt_random_contacts(&t, &rng, 3, 0, 3, 0.4, 1e-2);
+        kt_declare_contacts(&t, 3);
+        assert_int_not_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusBadInput);
+        switch (bad) {
+        case 0: t.contacts[1].row = 7; break;                 /* past the last row */
+        case 1: t.p.contacts = two; t.p.nContacts = 2; break; /* overlapping */
+        case 2: t.lo[3] = ME_R(-1.0); break;                  /* adhesive normal row */
+        case 3: t.hi[3] = ME_R(5.0); break;                   /* capped normal row */
+        case 4: t.link[4] = -1; break;                        /* friction row not linked */
+        case 5: t.hi[5] = ME_R(1.0); break;                   /* box-bounded friction row */
+        case 6: t.rowBodies[4][1] = t.rowBodies[3][0] == 0 ? 1 : 0; break; /* another body pair */
+        case 7: t.rowBodies[3][0] = t.rowBodies[4][0] = t.rowBodies[5][0] = KEA_WORLD; break;
+        default: t.p.link = NULL; break;                      /* contacts need links */
+        }
+        assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusBadInput);
+        kt_free(&t);
+    }
 }
 
 /* Over-relaxation changes the path, not the limit. */
@@ -441,6 +592,9 @@ int main(void)
         cmocka_unit_test(one_contact_block_is_exact_in_one_sweep),
         cmocka_unit_test(generic_contact_path_is_exact_in_one_sweep),
         cmocka_unit_test(contacts_on_the_cone_edge_meet_the_lcp_conditions),
+        cmocka_unit_test(contact_step_and_generic_rows_agree),
+        cmocka_unit_test(contact_without_a_factor_meets_the_lcp_conditions),
+        cmocka_unit_test(broken_contact_declarations_are_bad_input),
         cmocka_unit_test(sor_converges_to_the_same_solution),
         cmocka_unit_test(tolerance_stops_early),
         cmocka_unit_test(warm_start_at_solution_stays),

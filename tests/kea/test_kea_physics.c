@@ -47,6 +47,8 @@ static void cube_on_ground(KtProblem *t, double m, double eps, int withFriction,
             }
         }
     }
+    if (withFriction)
+        kt_declare_contacts(t, 4);
     kt_set_rhs_from_velocities(t, v, h, gravity);
 }
 

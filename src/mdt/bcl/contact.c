@@ -210,7 +210,7 @@ void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contac
                             (p->options & MdtBclContactOptionSlip2) ? p->slip2 / h : 0};
     const MeReal slide[2] = {(p->options & MdtBclContactOptionSlide1) ? p->slide1 : 0,
                              (p->options & MdtBclContactOptionSlide2) ? p->slide2 : 0};
-    int directions = p->type == MdtContactTypeFriction2D ? 2 : 1;
+    int directions = p->type == MdtContactTypeFriction2D ? 2 : 1, linked = 0;
     for (int k = 0; k < directions; k++) {
         MdtRowInit(&row);
         directionRow(&row, t[k], r0, r1);
@@ -231,7 +231,12 @@ void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contac
         int local = MdtRowWriterAdd(w, &row);
         if (!w->captured && local >= 0)
             w->x0[w->first + local] = d->impulse[1 + k];
+        linked += local >= 0 && row.link >= 0;
     }
+    /* A non-adhesive contact with two friction rows bounded by the normal force is Kea's typed contact
+     * (KeaContact); any other (adhesive, box friction, one friction direction) stays generic rows. */
+    if (linked == 2 && !(p->options & MdtBclContactOptionAdhesive) && normalRow >= 0 && b0 != b1)
+        MdtRowWriterDeclareContact(w, normalRow);
 }
 
 void MdtContactUnpack(MdtConstraintData *contact, const MeReal *impulses, int rows, MeReal h)

@@ -64,6 +64,21 @@ typedef struct KeaBodyVelocity {
     MeReal ang[3]; /**< angular velocity change, rad/s (world frame) */
 } KeaBodyVelocity;
 
+/** A contact declared as one (typed): its three rows, consecutive from `row`, are its normal row and
+ *  its two friction rows. What the declaration promises, and KeaSolve checks (KeaStatusBadInput
+ *  otherwise): the three rows act on the same two bodies, the first a body (not KEA_WORLD), the
+ *  second another body or KEA_WORLD; the normal row has bounds [0, MEINFINITY) and no link; each
+ *  friction row is linked to the normal row (its mu_i its own, so friction may be anisotropic) and
+ *  has no bounds of its own (+-MEINFINITY). Softness eps and right-hand sides are free (a soft or
+ *  bouncing contact, slip, a surface or world velocity are all typed contacts). The iterative path
+ *  solves a declared contact with its contact step (kea_contact_kernel.h); rows not declared are
+ *  generic rows, solved in blocks of a constraint's rows (a contact that does not fit the promise,
+ *  e.g. an adhesive one or one with bounded friction, is written as generic rows). The rows stay
+ *  in KeaProblem's row arrays: the declaration adds what they are, not a second copy of them. */
+typedef struct KeaContact {
+    int row; /**< the normal row; the friction rows are row + 1 and row + 2 */
+} KeaContact;
+
 /** One partition's bounded LCP. Arrays are indexed by row (nRows entries) unless said otherwise;
  *  they are read only. Optional arrays may be NULL. */
 typedef struct KeaProblem {
@@ -79,6 +94,9 @@ typedef struct KeaProblem {
     const int *link;           /**< friction link: normal row of row i, or -1 (NULL = no links) */
     const MeReal *mu;          /**< friction coefficient of linked rows (needed if link != NULL) */
     const MeReal *x0;          /**< warm start (NULL = start from 0); may alias the output x */
+    int nContacts;             /**< declared contacts (KeaContact), >= 0 */
+    const KeaContact *contacts; /**< nContacts, in increasing row order and not overlapping (NULL
+                                     when none); needs link and mu */
 } KeaProblem;
 
 /** Which method solves a partition. */

@@ -1,7 +1,7 @@
 /* kea_blocks.c -- block set-up of Kea's iterative path (kea_iterative.h): the workspace layout, the
  * split of the rows into blocks (a constraint's rows on one body pair, a contact point with its
  * friction rows), each block's matrix A_bb = J_b M^-1 J_b^T + diag(eps), its factor and inverse, and
- * which blocks are plain contacts (the sweep's contact kernel). */
+ * which blocks are declared contacts (KeaContact; the sweep's contact step). */
 #include "kea_block_kernels.h"
 
 void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIterativeWork *w)
@@ -94,32 +94,29 @@ static inline void KeaBlockInvert(int m, const MeReal *L, MeReal *inv)
     }
 }
 
-/* Row i begins a contact with friction: it has no link and the next row is linked to it. */
-static int KeaContactStart(const KeaProblem *problem, int i)
+/* Generic rows: row i heads a link group, the rows that follow it linked to it (a normal row and
+ * its friction rows written as generic rows, e.g. an adhesive contact's). Such a group is a block
+ * of its own, never part of a longer run: a friction link then stays inside its block. */
+static int KeaLinkGroupStart(const KeaProblem *problem, int i)
 {
     return problem->link && problem->link[i] < 0 && i + 1 < problem->nRows && problem->link[i + 1] == i;
 }
 
-/* A plain contact block, the pile's every block: three rows on two different bodies (the second
- * may be the world), a normal row with bounds [0, inf) and no link, two friction rows linked to it
- * with no bounds of their own (KeaContactSolve's case), each touching something, and the block's
- * inverse exists. The sweep solves it with that layout known (KeaContactBlockStep). Returns its
- * KEA_CONTACT_* kind, or 0. */
-static unsigned char KeaIsPlainContact(const KeaProblem *problem, const KeaIterativeWork *w, int s, int m)
+/* Rows in the generic block that starts at row i (not a declared contact): a link group (above),
+ * or a run of unlinked rows on the body pair of row i (a constraint's rows), at most cap rows and
+ * stopping before the next declared contact's row `stop`. */
+static int KeaGenericBlockRows(const KeaProblem *problem, int i, int cap, int stop)
 {
-    const int block = w->rowBlock[s];
-    int k;
-    if (m != 3 || !problem->mu || !w->blockFactored[block] || w->body[s][0] == w->body[s][1] ||
-        !KeaContactStart(problem, s) || problem->link[s + 2] != s)
-        return 0;
-    if (problem->lo[s] != ME_R(0.0) || KeaIsFinite(problem->hi[s]))
-        return 0;
-    for (k = 0; k < 3; ++k)
-        if (w->invDiag[s + k] == ME_R(0.0) || (k > 0 && (KeaIsFinite(problem->lo[s + k]) || KeaIsFinite(problem->hi[s + k]))))
-            return 0;
-    if (w->body[s][0] == problem->nBodies)
-        return 0;
-    return w->body[s][1] == problem->nBodies ? KEA_CONTACT_WORLD : KEA_CONTACT_BODIES;
+    const int *b = problem->rowBodies[i];
+    const int group = KeaLinkGroupStart(problem, i);
+    int m = 1;
+    while (i + m < stop && m < cap && problem->rowBodies[i + m][0] == b[0] && problem->rowBodies[i + m][1] == b[1]) {
+        if (group ? problem->link[i + m] != i
+                  : KeaLinkGroupStart(problem, i + m) || (problem->link && problem->link[i + m] >= 0))
+            break;
+        ++m;
+    }
+    return m;
 }
 
 /* The block of m rows from i on the body pair b: its transpose J_b^T when KeaBlockGather reads it
@@ -179,25 +176,20 @@ static void KeaFormBlockMatrix(const KeaProblem *problem, KeaIterativeWork *w, i
 }
 
 /* Split the rows into blocks and form each block's matrix A_bb = J_b M^-1 J_b^T + diag(eps) from the
- * rows' B = M^-1 J^T, its factor and its inverse. A block is a run of rows on the same body pair, at
- * most cap rows, except that a contact with friction (its normal row and the rows linked to it) is
- * a block of its own. */
+ * rows' B = M^-1 J^T, its factor and its inverse. A declared contact (KeaContact) is a block of its
+ * own, solved by the contact step (blockContact set); the generic rows between contacts are split
+ * by KeaGenericBlockRows. With cap < 3 (scalar PGS asked for) contacts are generic rows too. */
 void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
 {
-    const int n = problem->nRows;
-    int i = 0, offset = 0;
+    const int n = problem->nRows, nContacts = cap >= 3 ? problem->nContacts : 0;
+    int i = 0, offset = 0, c = 0;
     w->nBlocks = 0;
     w->nContactBlocks = 0;
     while (i < n) {
         const int *b = problem->rowBodies[i];
-        const int contact = KeaContactStart(problem, i);
-        int m = 1, r;
-        while (i + m < n && m < cap && problem->rowBodies[i + m][0] == b[0] && problem->rowBodies[i + m][1] == b[1]) {
-            if (contact ? problem->link[i + m] != i
-                        : KeaContactStart(problem, i + m) || (problem->link && problem->link[i + m] >= 0))
-                break; /* a contact is a block of its own */
-            ++m;
-        }
+        const int contact = c < nContacts && problem->contacts[c].row == i;
+        const int m = contact ? 3 : KeaGenericBlockRows(problem, i, cap, c < nContacts ? problem->contacts[c].row : n);
+        int r;
         w->blockStart[w->nBlocks] = i;
         w->blockMatrix[w->nBlocks] = offset;
         for (r = 0; r < m; ++r)
@@ -215,8 +207,12 @@ void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
                 KeaBlockInvert(m, w->blockL, w->blockInv + offset);
             offset += m * m;
         }
-        w->blockContact[w->nBlocks] = KeaIsPlainContact(problem, w, i, m);
-        w->nContactBlocks += w->blockContact[w->nBlocks] != 0;
+        w->blockContact[w->nBlocks] = 0;
+        if (contact) {
+            w->blockContact[w->nBlocks] = b[1] < 0 ? KEA_CONTACT_WORLD : KEA_CONTACT_BODIES;
+            ++w->nContactBlocks;
+            ++c;
+        }
         ++w->nBlocks;
         i += m;
     }

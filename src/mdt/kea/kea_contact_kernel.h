@@ -1,7 +1,20 @@
-/* kea_contact_kernel.h -- the contact kernel of the iterative path (kea_iterative.h): one contact
- * with friction solved exactly by its few active sets, and the plain contact block's step of the
- * sweep. Included by kea_iterative.c alone, so that the step is inlined into the sweep, its one
- * call site. */
+/* kea_contact_kernel.h -- the contact step of the iterative path (kea_iterative.h): one declared
+ * contact (KeaContact, kea.h: a normal row [0, inf) and two friction rows linked to it) solved
+ * exactly with the rest of x fixed. The one contact step: every declared contact goes through it,
+ * and rows not declared as a contact (an adhesive contact's, bounded friction, a one-row contact)
+ * through the generic block step (kea_iterative.c), which has no contact case of its own.
+ *
+ * With x = (n, f1, f2), A the contact's 3 x 3 block matrix and w = A x - r_loc, the step tries, in
+ * this order: every row free (one product with the block's inverse, valid when the result is in
+ * the cone); the active set the contact was in (a sliding contact usually keeps sliding the same
+ * way); opening (n = 0); then each friction row free or sliding at +-mu n, not both free. A set is
+ * valid when its equations' solution keeps n > 0, a free friction impulse within +-mu n and a
+ * sliding row's w pushing against its bound. With mu small enough the solution is unique, so the
+ * order only chooses among equal answers. A set valid only within rounding fails these exact
+ * tests; the contact then goes to the dense box-LCP solver (kea_dense_lcp.c), as does any contact
+ * whose matrix has no safe factor (two friction directions parallel, a row that touches nothing).
+ * Included by kea_iterative.c alone, so that the step is inlined into the sweep, its one call
+ * site. */
 #ifndef KEA_CONTACT_KERNEL_H
 #define KEA_CONTACT_KERNEL_H
 
@@ -56,7 +69,7 @@ static inline int KeaContactTry(const MeReal *A, const MeReal *r, const MeReal *
  *   (and the normal) have w = 0, a 1x1 or 2x2 system in n and the free friction impulse; valid if
  *   n > 0, a free friction row stays within +-mu n, and a sliding one's w pushes against its bound.
  * A is the contact's 3 x 3 matrix, r its r_loc = A x - w, mu its rows' friction coefficients.
- * The all-free case is KeaBlockAllFree's (with the block's precomputed inverse).
+ * The all-free case is the contact step's first try (with the block's precomputed inverse).
  * The first valid set in that fixed order is taken (with mu small enough the solution is unique).
  * Exact comparisons: a set valid only within rounding is left to the general solver. Returns 1 if
  * solved (out holds the solution). */
@@ -74,31 +87,14 @@ static inline int KeaContactActiveSets(const MeReal *A, const MeReal *r, const M
            KeaContactTry(A, r, mu, -1, 1, out) || KeaContactTry(A, r, mu, -1, -1, out);
 }
 
-/* KeaContactActiveSets for a 3-row block with matrix A given by its local LCP in w (r_loc in
- * localR, bounds in localLo and localHi, links in localLink; the solution into localX): 0 unless it
- * is a contact (normal row with bounds [0, inf) and no link, two rows linked to it with no bounds of
- * their own). mu: the block's rows' friction coefficients. */
-static inline int KeaContactSolve(const MeReal *A, KeaIterativeWork *w, const MeReal *mu)
-{
-    const MeReal *lo = w->localLo, *hi = w->localHi;
-    const int *link = w->localLink;
-    int k;
-    if (link[0] >= 0 || lo[0] != ME_R(0.0) || KeaIsFinite(hi[0]))
-        return 0;
-    for (k = 1; k < 3; ++k)
-        if (link[k] != 0 || KeaIsFinite(lo[k]) || KeaIsFinite(hi[k]))
-            return 0;
-    return KeaContactActiveSets(A, w->localR, mu, w->localX);
-}
-
-/* A plain contact's rows free now (KeaRowIsFree: its normal row's bounds [0, hi), its friction
+/* A contact's rows free now (KeaRowIsFree: its normal row's bounds [0, inf), its friction
  * rows' +-mu n) into was, from its impulses xb; returns how many of the three changed. The sweep
  * calls it after each contact's step, which is that block's last change before the next SM
  * chance (a contact's bounds depend on its own rows only). */
-static inline int KeaContactFreeRows(const MeReal *mu, MeReal hi, const MeReal *xb, unsigned char *was)
+static inline int KeaContactFreeRows(const MeReal *mu, const MeReal *xb, unsigned char *was)
 {
     const MeReal n = xb[0], bound1 = KeaFrictionBound(mu[1], n), bound2 = KeaFrictionBound(mu[2], n);
-    const unsigned char f0 = (unsigned char)(ME_R(0.0) < n && n < hi);
+    const unsigned char f0 = (unsigned char)(ME_R(0.0) < n && n < MEINFINITY);
     const unsigned char f1 = (unsigned char)(-bound1 < xb[1] && xb[1] < bound1);
     const unsigned char f2 = (unsigned char)(-bound2 < xb[2] && xb[2] < bound2);
     const int changed = (f0 != was[0]) + (f1 != was[1]) + (f2 != was[2]);
@@ -108,11 +104,29 @@ static inline int KeaContactFreeRows(const MeReal *mu, MeReal hi, const MeReal *
     return changed;
 }
 
-/* KeaBlockStep for a plain contact block (KeaIsPlainContact), with the same arithmetic in the same
- * order (so the same values; on the world the exact zeros of its half are not computed), its three
- * rows held in locals: the normal row's bounds are [0, inf), the friction rows' [-mu n, mu n] for
- * the normal impulse n. Returns the block's largest row residual before the step (when
- * sweep->measure; else 0).
+/* The contact's block when the closed forms fail: its local LCP (r_loc in rl, w in wb, x in xb) to
+ * the dense solver, then applied like a generic block's step. */
+static void KeaContactDense(const KeaProblem *problem, KeaIterativeWork *w, int block, const MeReal *wb,
+                            const MeReal *rl, MeReal *x, KeaSweepState *sweep)
+{
+    const int s = w->blockStart[block];
+    int r;
+    for (r = 0; r < 3; ++r) {
+        w->localW[r] = wb[r];
+        w->localR[r] = rl[r];
+        w->localX[r] = x[s + r];
+        w->localLo[r] = problem->lo[s + r];
+        w->localHi[r] = problem->hi[s + r];
+        w->localLink[r] = r == 0 ? -1 : 0;
+    }
+    KeaSmallLcp(problem, w, block, sweep->maxPasses, sweep->stats);
+    KeaBlockApplyDeltas(w, s, 3, x, &sweep->decrease);
+}
+
+/* The contact step (top comment) for the declared contact `block` (blockContact: on two bodies, or
+ * on a body and the world, whose half of the rows, exact zeros, is not computed), its three rows
+ * held in locals. Returns the block's largest row residual before the step (when sweep->measure;
+ * else 0).
  * Longer than most functions here, and on purpose: it is the pile's every block step, and its
  * parts (gather, residual, all-free try, active sets, scatter) share the block's rows held in
  * locals; split into functions they would pass those locals through memory. */
@@ -123,7 +137,7 @@ static inline MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterative
     KeaVel4 *v0 = &w->dv[w->body[s][0]], *v1 = &w->dv[w->body[s][1]];
     const MeReal *mu = problem->mu + s, *inv = w->blockInv + w->blockMatrix[block];
     MeReal wb[3], xb[3], xn[3], d[3], t[3], bound, bound2, worst;
-    int r;
+    int r, fits = 0;
     for (r = 0; r < 3; ++r)
         wb[r] = onWorld ? KeaRowVel4World(&w->J[s + r], v0) : KeaRowVel4(&w->J[s + r], v0, v1);
     for (r = 0; r < 3; ++r) {
@@ -135,7 +149,7 @@ static inline MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterative
     worst = ME_R(0.0);
     if (sweep->measure) {
         worst = KeaMax(worst, w->diag[s] * KeaFabs(xb[0] - KeaClamp(xb[0] - wb[0] * w->invDiag[s], ME_R(0.0),
-                                                                     problem->hi[s])));
+                                                                     MEINFINITY)));
         for (r = 1; r < 3; ++r) {
             bound = KeaFrictionBound(mu[r], xb[0]);
             worst = KeaMax(worst, w->diag[s + r] *
@@ -143,36 +157,28 @@ static inline MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterative
         }
     }
     /* every row free: x_b - A_bb^-1 w_b, if it keeps within the bounds its own normal gives */
-    for (r = 0; r < 3; ++r)
-        t[r] = (inv[r] * wb[0] + inv[3 + r] * wb[1]) + inv[6 + r] * wb[2];
-    for (r = 0; r < 3; ++r)
-        xn[r] = xb[r] - t[r];
-    bound = KeaFrictionBound(mu[1], xn[0]);
-    bound2 = KeaFrictionBound(mu[2], xn[0]);
-    if (!(xn[0] >= ME_R(0.0) && xn[0] <= problem->hi[s] && xn[1] >= -bound && xn[1] <= bound && xn[2] >= -bound2 &&
-          xn[2] <= bound2)) {
+    if (w->blockFactored[block]) {
+        for (r = 0; r < 3; ++r)
+            t[r] = (inv[r] * wb[0] + inv[3 + r] * wb[1]) + inv[6 + r] * wb[2];
+        for (r = 0; r < 3; ++r)
+            xn[r] = xb[r] - t[r];
+        bound = KeaFrictionBound(mu[1], xn[0]);
+        bound2 = KeaFrictionBound(mu[2], xn[0]);
+        fits = xn[0] >= ME_R(0.0) && xn[1] >= -bound && xn[1] <= bound && xn[2] >= -bound2 && xn[2] <= bound2;
+    }
+    if (!fits) {
         const MeReal *A = w->blockA + w->blockMatrix[block];
         MeReal rl[3];
         for (r = 0; r < 3; ++r) /* r_loc = A_bb x_b - w_b */
             rl[r] = ((A[r] * xb[0] + A[3 + r] * xb[1]) + A[6 + r] * xb[2]) - wb[r];
-        /* the set the contact was in, tried first: a sliding contact usually keeps sliding the same
-         * way (the solution, when unique, is the same whichever valid set is found first) */
+        /* the set the contact was in, tried first */
         const MeReal was1Bound = KeaFrictionBound(mu[1], xb[0]), was2Bound = KeaFrictionBound(mu[2], xb[0]);
         const int was1 = xb[1] >= was1Bound ? 1 : (xb[1] <= -was1Bound ? -1 : 0);
         const int was2 = xb[2] >= was2Bound ? 1 : (xb[2] <= -was2Bound ? -1 : 0);
         if (!((was1 | was2) != 0 && xb[0] > ME_R(0.0) && KeaContactTry(A, rl, mu, was1, was2, xn)) &&
-            !KeaContactActiveSets(A, rl, mu, xn)) { /* within rounding: the general solver */
-            for (r = 0; r < 3; ++r) {
-                w->localW[r] = wb[r];
-                w->localR[r] = rl[r];
-                w->localX[r] = xb[r];
-                w->localLo[r] = problem->lo[s + r];
-                w->localHi[r] = problem->hi[s + r];
-                w->localLink[r] = r == 0 ? -1 : 0;
-            }
-            KeaSmallLcp(problem, w, block, sweep->maxPasses, sweep->stats);
-            KeaBlockApplyDeltas(w, s, 3, x, &sweep->decrease);
-            sweep->changed += KeaContactFreeRows(mu, problem->hi[s], x + s, w->wasFree + s);
+            !KeaContactActiveSets(A, rl, mu, xn)) { /* valid only within rounding, or no factor */
+            KeaContactDense(problem, w, block, wb, rl, x, sweep);
+            sweep->changed += KeaContactFreeRows(mu, x + s, w->wasFree + s);
             return worst;
         }
     }
@@ -185,7 +191,7 @@ static inline MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterative
         KeaContactScatter(&w->B[s], d, v0, onWorld ? NULL : v1);
     for (r = 0; r < 3; ++r) /* d_r = 0: xn_r is x_r */
         x[s + r] = xn[r];
-    sweep->changed += KeaContactFreeRows(mu, problem->hi[s], xn, w->wasFree + s);
+    sweep->changed += KeaContactFreeRows(mu, xn, w->wasFree + s);
     return worst;
 }
 

@@ -1,6 +1,6 @@
 /* kea_iterative.c -- the sweep of Kea's iterative path and its driver (kea_iterative.h): the
- * general block step (a block at rest, or a block LCP), the projected Gauss-Seidel sweep over the
- * blocks (a plain contact through the contact kernel, kea_contact_kernel.h), and KeaSolveIterative,
+ * generic block step (a block at rest, or a block LCP), the projected Gauss-Seidel sweep over the
+ * blocks (a declared contact through the contact step, kea_contact_kernel.h), and KeaSolveIterative,
  * which sets up the blocks, warm-starts, alternates sweeps with subspace minimisation
  * (kea_subspace.c) and reports the residual. */
 #include <string.h>
@@ -36,10 +36,12 @@ static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int b
     return 1;
 }
 
-/* Solve the block of m rows from s exactly with the rest of x fixed: its local LCP has the matrix
- * A_bb and r_loc = A_bb x_b - w_b, so that its w is the true w of these rows. A friction link to a
- * row outside the block becomes a fixed bound. Returns the block's largest row residual before
- * (when sweep->measure; else 0). */
+/* The generic block step: solve the block of m generic rows from s exactly with the rest of x
+ * fixed: its local LCP has the matrix A_bb and r_loc = A_bb x_b - w_b, so that its w is the true w
+ * of these rows; all rows free (KeaBlockAllFree) or else the dense box-LCP solver. A friction link
+ * to a row outside the block becomes a fixed bound. Contacts written as generic rows (adhesive,
+ * bounded friction) come here; declared contacts go to the contact step. Returns the block's
+ * largest row residual before (when sweep->measure; else 0). */
 static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, MeReal *x, KeaSweepState *sweep)
 {
     const int s = w->blockStart[block], m = w->blockStart[block + 1] - s;
@@ -71,11 +73,6 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
     for (r = 0; r < m; ++r) {
         w->localR[r] -= w->localW[r];
         w->localX[r] = x[s + r];
-    }
-    if (m == 3 && problem->mu &&
-        KeaContactSolve(A, w, problem->mu + s)) {
-        KeaBlockApplyDeltas(w, s, m, x, &sweep->decrease);
-        return worst;
     }
     KeaSmallLcp(problem, w, block, sweep->maxPasses, sweep->stats);
     KeaBlockApplyDeltas(w, s, m, x, &sweep->decrease);

@@ -25,15 +25,17 @@
  * travel along a chain of bodies (a stack of k boxes needs of the order of k^2 sweeps) and on the
  * near-null directions that redundant contacts create (eps small).
  *
- * Block solves: a block of m rows (a constraint's rows on one body pair, or one contact point with
- * its friction rows) is solved exactly with the rest of x fixed. Most blocks at rest have every row
- * strictly inside its bounds: one product with the block's inverse (KeaBlockAllFree). Each contact
- * point with its friction rows is a block of its own (not its whole contact group: decision K27),
- * which otherwise tries its few active sets in closed form (opening, or one or both friction rows
- * sliding: KeaContactActiveSets); anything else (a constraint's rows at a limit) goes to the dense
- * box-LCP solver (kea_dense_lcp.c). A plain contact block (a normal row and its two friction rows)
- * has its own step (KeaContactBlockStep) with its rows in locals, which on the world skips the
- * world's half (exact zeros).
+ * Block solves: a block of rows is solved exactly with the rest of x fixed. Two kinds of block:
+ *  - a declared contact (KeaContact, kea.h: the problem says which rows are contacts; Kea does not
+ *    guess it from the rows' shape) is a block of its own (not its whole contact group: decision
+ *    K27), solved by the one contact step (KeaContactBlockStep, kea_contact_kernel.h): all rows
+ *    free with the block's inverse, else its few active sets in closed form (opening, or one or
+ *    both friction rows sliding), else the dense box-LCP solver; its rows are held in locals, and
+ *    on the world the world's half (exact zeros) is skipped;
+ *  - generic rows: a constraint's rows on one body pair (or a normal row with the rows linked to
+ *    it, as a contact with rarer options is written) solved by the generic block step
+ *    (KeaBlockStep): all rows free (KeaBlockAllFree, most blocks at rest), else the dense box-LCP
+ *    solver (kea_dense_lcp.c); a lone row by a scalar PGS update.
  *
  * Subspace minimisation (after the idea of Silcowitz, Niebe and Erleben, "Interactive rigid body
  * dynamics using a projected Gauss-Seidel subspace minimization method", 2010): see kea_subspace.c.
@@ -99,7 +101,7 @@ static inline void KeaRowApply4(const KeaJacobianRow *B, MeReal s, KeaVel4 *v0, 
     KeaHalfApply4(B->lin1, B->ang1, s, v1);
 }
 
-enum { KEA_CONTACT_BODIES = 1, KEA_CONTACT_WORLD = 2 }; /* a plain contact between two bodies, or on the world */
+enum { KEA_CONTACT_BODIES = 1, KEA_CONTACT_WORLD = 2 }; /* a declared contact between two bodies, or on the world */
 
 /** SM: one piece of the free list for its matrix-free products, everything they read about it in
  *  one place: a free row on its own, or a segment (a block whose rows are all free). */
@@ -107,7 +109,7 @@ typedef struct KeaFreePiece {
     int pos;      /**< its first position in the free list */
     int row;      /**< its first row */
     int rows;     /**< 1 for a row on its own, else the block's size */
-    int kind;     /**< 0, or the segment's KEA_CONTACT_* kind when it is a plain contact */
+    int kind;     /**< 0, or the segment's KEA_CONTACT_* kind when it is a declared contact */
     int body[2];  /**< the row halves' bodies (the world: nb) */
 } KeaFreePiece;
 
@@ -116,7 +118,7 @@ typedef struct KeaFreePiece {
  *  block's tally would wait for the last one's store). */
 typedef struct KeaSweepState {
     MeReal decrease;   /**< the sweep's running estimate of the QP objective's decrease */
-    int changed;       /**< plain contacts' rows that went between free and a bound so far */
+    int changed;       /**< declared contacts' rows that went between free and a bound so far */
     int measure;       /**< the residual is still within the tolerance: measure this block's */
     int tally;         /**< an SM step ran before this sweep: the contacts tally the decrease */
     int maxPasses;     /**< the dense solver's friction passes (KeaParameters.maxFrictionPasses) */
@@ -139,7 +141,7 @@ typedef struct KeaIterativeWork {
                                 no divisions (each block is solved once a sweep, and
                                 again per SM step when free, but factored once a step) */
     unsigned char *blockFactored; /**< the factor exists (A_bb safely positive definite) */
-    unsigned char *blockContact;  /**< KEA_CONTACT_* kind of a plain contact block (KeaIsPlainContact), else 0 */
+    unsigned char *blockContact;  /**< KEA_CONTACT_* kind of a declared contact's block (KeaContact), else 0 */
     unsigned char *wasFree;       /**< SM: the row was free at the last SM step (or the warm start) */
     int skippedLast;              /**< SM: the last SM step was skipped */
     MeReal sweepDecrease;         /**< estimated decrease of the QP objective by the last sweep
@@ -148,8 +150,8 @@ typedef struct KeaIterativeWork {
     MeReal smDecrease;            /**< decrease of the objective by that SM step (0 if rejected) */
     int smRan;                    /**< an SM step ran since the last sweep */
     int smUnpaid;                 /**< SM: the last SM step did less than the sweep after it */
-    int nContactBlocks;           /**< blocks that are plain contacts (blockContact) */
-    int sweepChanged;             /**< plain contacts' rows that went between free and a bound in
+    int nContactBlocks;           /**< blocks that are declared contacts (blockContact) */
+    int sweepChanged;             /**< declared contacts' rows that went between free and a bound in
                                        the last sweep (tallied by its steps) */
     MeReal *localW;        /**< a block's w */
     int *rowBlock;         /**< block of each row */

@@ -68,6 +68,29 @@ static int KeaIsFiniteFlag(MeReal v) { return KeaFabs(v) < MEINFINITY; }
 /* Indices in range, bounds ordered, softness non-negative, numbers where numbers are needed (finite
  * in Karma's sense: within +-MEINFINITY). A row's tests are combined with & into one flag (a
  * comparison with a NaN is false), one branch per row: every step's every row goes through here. */
+/* The declared contacts keep KeaContact's promise (kea.h): in row order, not overlapping, each one's
+ * three rows on the same two distinct bodies (the first not the world), the normal row [0, inf)
+ * without a link, the friction rows linked to it without bounds of their own. */
+static int KeaContactsAreValid(const KeaProblem *p)
+{
+    int c, k, next = 0;
+    if (p->nContacts < 0 || (p->nContacts > 0 && (!p->contacts || !p->link)))
+        return 0;
+    for (c = 0; c < p->nContacts; ++c) {
+        const int s = p->contacts[c].row;
+        const int *b = s >= 0 && s + 2 < p->nRows ? p->rowBodies[s] : NULL;
+        if (s < next || !b || b[0] < 0 || b[0] == b[1] || p->link[s] != -1 || p->lo[s] != ME_R(0.0) ||
+            KeaIsFinite(p->hi[s]))
+            return 0;
+        for (k = 1; k < 3; ++k)
+            if (p->rowBodies[s + k][0] != b[0] || p->rowBodies[s + k][1] != b[1] || p->link[s + k] != s ||
+                KeaIsFinite(p->lo[s + k]) || KeaIsFinite(p->hi[s + k]))
+                return 0;
+        next = s + 3;
+    }
+    return 1;
+}
+
 static int KeaProblemIsValid(const KeaProblem *p)
 {
     int i, b, k;
@@ -107,7 +130,7 @@ static int KeaProblemIsValid(const KeaProblem *p)
             return 0;
         }
     }
-    return 1;
+    return KeaContactsAreValid(p);
 }
 
 KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void *workspace,

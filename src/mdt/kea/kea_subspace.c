@@ -146,7 +146,7 @@ static MeReal KeaAddEpsDot(MeReal *q, const MeReal *eps, const MeReal *p, int n)
 
 /* Set wasFree to which rows are free now (KeaRowIsFree); returns how many rows changed. Every
  * chance of an SM step does this, skipped or not, so it is kept cheaper than the bounds and the
- * free list, which only a step that runs needs: the plain contacts, a pile's every block, were
+ * free list, which only a step that runs needs: the declared contacts, a pile's every block, were
  * tallied by the sweep just before (KeaContactFreeRows), only the other blocks are visited here
  * (their friction bounds can follow a row that a later block of the sweep changed). */
 static int KeaUpdateFreeRows(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x)
