@@ -131,8 +131,9 @@ typedef struct KeaParameters {
                                  sweeps (subspace minimisation); 0 = plain PGS; default 4 */
     int maxBlockRows;       /**< iterative: consecutive rows on the same two bodies (a constraint)
                                  up to this many are solved together exactly in each sweep, a
-                                 contact's normal and friction rows as a block of their own;
-                                 1 = scalar PGS; at most KEA_MAX_BLOCK_ROWS; default 12 */
+                                 contact's normal and friction rows as a block of their own (a
+                                 declared contact, KeaContact, by the contact step when this is
+                                 3 or more); 1 = scalar PGS; at most KEA_MAX_BLOCK_ROWS; default 12 */
     int maxPivots;          /**< direct: cap on active-set changes; 0 = automatic (8 n + 64) */
     int maxFrictionPasses;  /**< direct: box-QP passes for friction links; default 8 */
 } KeaParameters;
