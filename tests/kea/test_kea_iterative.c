@@ -103,24 +103,30 @@ static void error_does_not_grow_with_iteration_cap(void **state)
     assert_true(table[2][2] < 0.1 * table[0][2]);
 }
 
+/* The largest difference between a and b relative to max(1, |b|). */
+static double relative_difference(const MeReal *a, const MeReal *b, int n)
+{
+    double err = 0.0, scale = 1.0;
+    int i;
+    for (i = 0; i < n; ++i)
+        scale = fmax(scale, fabs((double)b[i]));
+    for (i = 0; i < n; ++i)
+        err = fmax(err, fabs((double)a[i] - (double)b[i]) / scale);
+    return err;
+}
+
 /* Solve t with the direct path (friction passes to convergence) into xd and with the iterative
  * path at `iterations` sweeps and no tolerance into xi (its stats in st); returns the largest
  * difference relative to max(1, |xd|). */
 static double iterative_vs_direct(const KtProblem *t, int iterations, MeReal *xd, MeReal *xi, KeaStats *st)
 {
     KeaParameters direct = kt_params(KeaPathDirect), iter = kt_params(KeaPathIterative);
-    double err = 0.0, scale = 1.0;
-    int i;
     direct.maxFrictionPasses = 50;
     assert_int_equal(kt_solve(&t->p, &direct, xd, NULL, st), KeaStatusOk);
     iter.maxIterations = iterations;
     iter.tolerance = ME_R(0.0);
     kt_solve(&t->p, &iter, xi, NULL, st);
-    for (i = 0; i < t->p.nRows; ++i)
-        scale = fmax(scale, fabs((double)xd[i]));
-    for (i = 0; i < t->p.nRows; ++i)
-        err = fmax(err, fabs((double)xi[i] - (double)xd[i]) / scale);
-    return err;
+    return relative_difference(xi, xd, t->p.nRows);
 }
 
 /* With friction links the iterative path converges to the direct path's coupled solution. */
@@ -314,18 +320,6 @@ static void random_contacts_with_options(KtProblem *t, KtRng *rng, int nContacts
         }
         t->rhs[s] += (MeReal)kt_range(rng, -0.3, 0.6); /* a bounce, or a contact pulling apart */
     }
-}
-
-/* The largest difference between a and b relative to max(1, |b|). */
-static double relative_difference(const MeReal *a, const MeReal *b, int n)
-{
-    double err = 0.0, scale = 1.0;
-    int i;
-    for (i = 0; i < n; ++i)
-        scale = fmax(scale, fabs((double)b[i]));
-    for (i = 0; i < n; ++i)
-        err = fmax(err, fabs((double)a[i] - (double)b[i]) / scale);
-    return err;
 }
 
 /* The one contact step (declared contacts) and the generic rows path (the same rows, not declared)
