@@ -104,6 +104,15 @@ static inline int KeaContactFreeRows(const MeReal *mu, const MeReal *xb, unsigne
     return changed;
 }
 
+/* The contact step is the sweep's every block on a pile: inlined into the sweep, its fields stay in
+ * registers across blocks; gcc's heuristics decline it (it is long), so it is asked by attribute
+ * where the compiler has one. */
+#if defined(__GNUC__)
+#  define KEA_ALWAYS_INLINE static inline __attribute__((always_inline))
+#else
+#  define KEA_ALWAYS_INLINE static inline
+#endif
+
 /* The contact's block when the closed forms fail: its local LCP (r_loc in rl, w in wb, x in xb) to
  * the dense solver, then applied like a generic block's step. */
 static void KeaContactDense(const KeaProblem *problem, KeaIterativeWork *w, int block, const MeReal *wb,
@@ -130,8 +139,8 @@ static void KeaContactDense(const KeaProblem *problem, KeaIterativeWork *w, int 
  * Longer than most functions here, and on purpose: it is the pile's every block step, and its
  * parts (gather, residual, all-free try, active sets, scatter) share the block's rows held in
  * locals; split into functions they would pass those locals through memory. */
-static inline MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, MeReal *x,
-                                         KeaSweepState *sweep)
+KEA_ALWAYS_INLINE MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block,
+                                             MeReal *x, KeaSweepState *sweep)
 {
     const int s = w->blockStart[block], onWorld = w->blockContact[block] == KEA_CONTACT_WORLD;
     KeaVel4 *v0 = &w->dv[w->body[s][0]], *v1 = &w->dv[w->body[s][1]];
