@@ -71,7 +71,7 @@ static inline int KeaContactTry(const MeReal *A, const MeReal *r, const MeReal *
  * A is the contact's 3 x 3 matrix, r its r_loc = A x - w, mu its rows' friction coefficients.
  * The all-free case is the contact step's first try (with the block's precomputed inverse).
  * The first valid set in that fixed order is taken (with mu small enough the solution is unique).
- * Exact comparisons: a set valid only within rounding is left to the general solver. Returns 1 if
+ * Exact comparisons: a set valid only within rounding is left to the dense solver. Returns 1 if
  * solved (out holds the solution). */
 static inline int KeaContactActiveSets(const MeReal *A, const MeReal *r, const MeReal *mu, MeReal *out)
 {

@@ -105,7 +105,7 @@ static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const Kea
             continue;
         }
         if (w->blockStart[block + 1] - i > 1) {
-            /* a copy: the general step is not inlined, and sweep's address given to it would keep
+            /* a copy: the generic step is not inlined, and sweep's address given to it would keep
              * sweep in memory for the contact steps too */
             KeaSweepState blockSweep = sweep;
             worst = KeaMax(worst, KeaBlockStep(problem, w, block, x, &blockSweep));

@@ -3,8 +3,8 @@
  * the direct path. Its files, one job each:
  *   kea_blocks.c          block set-up: the workspace layout, the blocks and their inverses
  *   kea_block_kernels.h   the block kernels every part shares (gather, scatter, a block's deltas)
- *   kea_contact_kernel.h  the contact kernel: one contact block's exact step (KeaContactBlockStep)
- *   kea_iterative.c       the sweep, the general block step and the driver (KeaSolveIterative)
+ *   kea_contact_kernel.h  the contact step: one declared contact's exact step (KeaContactBlockStep)
+ *   kea_iterative.c       the sweep, the generic block step and the driver (KeaSolveIterative)
  *   kea_subspace.c        subspace minimisation and its schedule (KeaSubspaceMinimise)
  * This header holds the padded data, the work struct and the row kernels; the tuning constants
  * (KEA_SM_*, KEA_GATHER_ROW_BY_ROW) are in kea_tuning.h.
