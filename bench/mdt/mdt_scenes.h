@@ -3,14 +3,16 @@
  * These scenes measure the dynamics and the LCP solver alone, without collision detection: contacts
  * are made by hand from a list of "supports" (box A rests on box B, or on the ground), as an
  * application with its own collision system would make them. A scene is
- *   - boxes (half extents, mass, initial centre; identity orientation), the ground plane z = 0;
+ *   - boxes (half extents: width, height, depth; mass, initial centre; identity orientation), the
+ *     ground plane y = 0;
  *   - ball joints (two bodies or a body and the world, anchor in world coordinates at the start);
  *   - supports: for each, the engine refreshes four contacts every step on the overlap of the upper
  *     box's bottom face with the lower box's top face (or the ground), friction `friction`;
  *   - gravity, step, number of steps, and the quality figure the scene reports.
  * An engine (Karma here; ODE and Bullet peers later) builds its world from this data, steps it, and
  * hands the box poses back to BenchMdtQualityObserve/Finish, so every engine's figure is measured by
- * the same code. SI units, z up, quaternions (w, x, y, z). Application code: malloc and stdio allowed. */
+ * the same code. SI units, y up (docs/decisions.md K30; each scene is its first, z-up version turned
+ * (x, y, z) -> (x, z, -y)), quaternions (w, x, y, z). Application code: malloc and stdio allowed. */
 #ifndef KARMA_BENCH_MDT_SCENES_H
 #define KARMA_BENCH_MDT_SCENES_H
 
