@@ -10,8 +10,8 @@
  * Conventions: SI units; y is up (gravity (0, -9.81, 0), docs/decisions.md K30); quaternions
  * (w, x, y, z) rotate local to world; a capsule's axis is its local z (Karma's sphyl, ODE's capsule
  * and Bullet's btCapsuleShapeZ alike), so a standing capsule is turned by -90 degrees about x; box sizes
- * are half-extents (width, height, depth) here (Karma's McdBoxCreate takes full edge lengths: double
- * them). The ground, when present, is the plane y = 0 with normal +y (Karma's plane, whose normal is
+ * are half-extents along the box's x, y and z here (Karma's McdBoxCreate takes full edge lengths:
+ * double them). The ground, when present, is the plane y = 0 with normal +y (Karma's plane, whose normal is
  * its local +z, is turned by -90 degrees about x). See bench/scenes/README.md for the scenes and why
  * each figure is what it is.
  *
@@ -104,7 +104,7 @@ BenchScene *BenchScenePyramid(int base);
 /** `spheres` balls (radius 0.5 m) and `boxes` unit boxes, 1 kg each, dropped from a jittered grid
  *  into a 16 m × 16 m walled box on the ground; 600 steps. */
 BenchScene *BenchScenePile(int spheres, int boxes);
-/** `links` capsules (radius 0.1 m, 1 m tip to tip, 1 kg) on ball joints, laid horizontally along +x,
+/** `links` capsules (radius 0.1 m, 1 m tip to tip, 1 kg) on ball joints, laid horizontally along +z,
  *  the first joined to the world at the origin; no ground; 600 steps. */
 BenchScene *BenchSceneChain(int links);
 /** `count` ragdolls of 11 bodies (58 kg) on 5 ball and 5 limited hinge joints, on a 3 m grid, each

@@ -208,10 +208,12 @@ static void scene_names(void **state)
     BenchScene *s = BenchSceneCreate("pyramid3");
     assert_non_null(s);
     assert_int_equal(s->dynamicCount, 6);
-    /* rows at y = 0.5, 1.5, 2.5; the top box centred over the base */
+    /* rows at y = 0.5, 1.5, 2.5 along z, one box deep (x = 0); the top box centred over the base */
     assert_near(s->bodies[5].pos[1], 2.5, 0);
-    assert_near(s->bodies[5].pos[0], 0, 1e-15);
-    assert_near(s->bodies[1].pos[0] - s->bodies[0].pos[0], 1.05, 1e-12);
+    assert_near(s->bodies[5].pos[2], 0, 1e-15);
+    assert_near(s->bodies[1].pos[2] - s->bodies[0].pos[2], 1.05, 1e-12);
+    for (int i = 0; i < 6; i++)
+        assert_near(s->bodies[i].pos[0], 0, 0);
     BenchSceneDestroy(s);
     s = BenchSceneCreate("column5");
     assert_non_null(s);
@@ -366,9 +368,9 @@ static void quality_figures(void **state)
     BenchSceneDestroy(s);
 }
 
-/* y is up (docs/decisions.md K30): stacks rise along y, standing capsules lie along y, the ragdolls'
- * heads are above their hips and their lowest points 0.5 m above the plane y = 0, and the pile's
- * container is open towards +y. */
+/* y is up (docs/decisions.md K30): stacks rise along y, the ragdolls' heads are above their hips,
+ * their chests lean from y by their tilt and their lowest points are 0.5 m above the plane y = 0,
+ * the pile's container is open towards +y, and the chain hangs from the origin along z. */
 static void scenes_are_y_up(void **state)
 {
     (void)state;
@@ -416,6 +418,13 @@ static void scenes_are_y_up(void **state)
             assert_true(b->pos[k] > s->container[0][k] && b->pos[k] < s->container[1][k]);
     }
     BenchSceneDestroy(s);
+    s = BenchSceneCreate("chain3");
+    assert_non_null(s);
+    for (int i = 0; i < 3; i++) {
+        assert_near(s->bodies[i].pos[2], 0.5 + i, 0);
+        assert_near(s->joints[i].anchor[2], i, 0);
+    }
+    BenchSceneDestroy(s);
 }
 
 /* The quaternion helpers against each other: (q ⊗ p) v = q (p v), and q* undoes q. */
@@ -435,11 +444,11 @@ static void quaternions(void **state)
         assert_near(w1[i], w2[i], 1e-14);
         assert_near(back[i], v[i], 1e-14);
     }
-    /* +90° about y takes local z to world x: the chain's capsule axis */
-    const double y[3] = {0, 1, 0}, z[3] = {0, 0, 1};
-    BenchQuatFromAxisAngle(q, y, 0.5 * 3.14159265358979323846);
+    /* -90° about x takes local z to world y: a standing capsule's axis (y up) */
+    const double x[3] = {1, 0, 0}, z[3] = {0, 0, 1};
+    BenchQuatFromAxisAngle(q, x, -0.5 * 3.14159265358979323846);
     BenchQuatRotate(w1, q, z);
-    assert_near(w1[0], 1, 1e-15);
+    assert_near(w1[1], 1, 1e-15);
     assert_near(w1[2], 0, 1e-15);
 }
 
