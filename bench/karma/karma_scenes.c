@@ -55,7 +55,7 @@ typedef struct KarmaWorld {
     MdtWorldID world;
     MdtBodyID *bodies;   /* NULL for fixed bodies */
     MeMatrix4 *fixedTM;  /* transforms of the fixed models (they must outlive the models) */
-    MeMatrix4 groundTM;
+    MeMatrix4 groundTM;  /* the ground plane's, turned to y-up (it must outlive the model) */
     int steps;
     int profile;         /* KARMA_BENCH_PROFILE set: gather and print the profile */
     /* solver statistics summed over the steps (profile only) */
@@ -198,7 +198,10 @@ static void *karma_create(const BenchScene *scene, MeBool autoDisable)
 
     McdFrameworkID fw = MstUniverseGetFramework(w->universe);
     if (scene->hasGround) {
-        MeMatrix4TMMakeIdentity(w->groundTM);
+        /* The scenes are y-up; Karma's plane is the half-space z <= 0 of its frame, so it is turned by
+         * -90 degrees about x (rows {1,0,0}, {0,0,-1}, {0,1,0}: local +z onto world +y, docs K30). */
+        static const MeMatrix4 yUpGround = {{1, 0, 0, 0}, {0, 0, -1, 0}, {0, 1, 0, 0}, {0, 0, 0, 1}};
+        memcpy(w->groundTM, yUpGround, sizeof w->groundTM);
         if (!MstFixedModelCreate(w->universe, McdPlaneCreate(fw), w->groundTM)) {
             karma_destroy(w);
             return NULL;

@@ -102,7 +102,7 @@ static int runScene(const BenchMdtScene *s, MdtLCPSolver path, int steps, double
     }
     MdtContactParams params;
     karma_contact_params_friction(&params, (MeReal)s->friction);
-    const MeVector3 up = {0, 0, 1};
+    const MeVector3 up = {0, 1, 0}; /* the scenes are y-up */
 
     BenchMdtQualityInit(s, &run->quality);
     double start = now(), iterations = 0;

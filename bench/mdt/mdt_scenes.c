@@ -19,7 +19,7 @@ static BenchMdtScene *newScene(const char *name, int bodies, int joints, int sup
         BenchMdtSceneDestroy(s);
         return NULL;
     }
-    s->gravity[2] = -9.81;
+    s->gravity[1] = -9.81; /* y up */
     s->step = 1.0 / 60.0;
     s->friction = 0.6;
     return s;
@@ -61,8 +61,8 @@ BenchMdtScene *BenchMdtSceneChain(int links)
              "%d links (1 m, 1 kg) on ball joints falling from horizontal, hung from the world", links);
     s->bodyCount = s->jointCount = links;
     for (int i = 0; i < links; i++) {
-        setBox(&s->bodies[i], 0.5, 0.05, 0.05, 1, i + 0.5, 0, 0);
-        setJoint(s, i, i, i - 1, i, 0, 0);
+        setBox(&s->bodies[i], 0.05, 0.05, 0.5, 1, 0, 0, i + 0.5);
+        setJoint(s, i, i, i - 1, 0, 0, i);
     }
     s->steps = 600;
     s->quality = BENCH_MDT_Q_JOINT_GAP;
@@ -80,7 +80,7 @@ BenchMdtScene *BenchMdtSceneColumn(int boxes)
     snprintf(s->description, sizeof s->description, "%d unit boxes (1 kg) stacked on the ground", boxes);
     s->bodyCount = s->supportCount = boxes;
     for (int i = 0; i < boxes; i++) {
-        setBox(&s->bodies[i], 0.5, 0.5, 0.5, 1, 0, 0, 0.5 + i);
+        setBox(&s->bodies[i], 0.5, 0.5, 0.5, 1, 0, 0.5 + i, 0);
         s->supports[i].upper = i;
         s->supports[i].lower = i - 1;
     }
@@ -101,10 +101,10 @@ BenchMdtScene *BenchMdtSceneWall(int wide, int high)
     snprintf(s->description, sizeof s->description,
              "running-bond wall of %d x %d bricks (1 x 0.5 x 0.5 m, 1 kg), odd rows shifted 0.25 m", wide, high);
     s->bodyCount = n;
-    const double hx = 0.5, hy = 0.25, hz = 0.25;
+    const double hx = 0.25, hy = 0.25, hz = 0.5; /* half depth, height, length: the wall runs along z */
     for (int r = 0; r < high; r++)
         for (int i = 0; i < wide; i++)
-            setBox(&s->bodies[r * wide + i], hx, hy, hz, 1, i + (r % 2 ? 0.25 : 0), 0, hz + 2 * hz * r);
+            setBox(&s->bodies[r * wide + i], hx, hy, hz, 1, 0, hy + 2 * hy * r, i + (r % 2 ? 0.25 : 0));
     /* Supports: the ground for row 0, else every brick of the row below that the brick overlaps. */
     int m = 0;
     for (int r = 0; r < high; r++)
@@ -117,8 +117,8 @@ BenchMdtScene *BenchMdtSceneWall(int wide, int high)
             }
             for (int j = 0; j < wide; j++) {
                 const int c = (r - 1) * wide + j;
-                double lo = fmax(s->bodies[b].pos[0] - hx, s->bodies[c].pos[0] - hx);
-                double hi = fmin(s->bodies[b].pos[0] + hx, s->bodies[c].pos[0] + hx);
+                double lo = fmax(s->bodies[b].pos[2] - hz, s->bodies[c].pos[2] - hz);
+                double hi = fmin(s->bodies[b].pos[2] + hz, s->bodies[c].pos[2] + hz);
                 if (hi - lo > 1e-9) {
                     s->supports[m].upper = b;
                     s->supports[m++].lower = c;

@@ -3,14 +3,16 @@
  * These scenes measure the dynamics and the LCP solver alone, without collision detection: contacts
  * are made by hand from a list of "supports" (box A rests on box B, or on the ground), as an
  * application with its own collision system would make them. A scene is
- *   - boxes (half extents, mass, initial centre; identity orientation), the ground plane z = 0;
+ *   - boxes (half extents, mass, initial centre; identity orientation), the ground plane y = 0;
  *   - ball joints (two bodies or a body and the world, anchor in world coordinates at the start);
  *   - supports: for each, the engine refreshes four contacts every step on the overlap of the upper
  *     box's bottom face with the lower box's top face (or the ground), friction `friction`;
  *   - gravity, step, number of steps, and the quality figure the scene reports.
  * An engine (Karma here; ODE and Bullet peers later) builds its world from this data, steps it, and
  * hands the box poses back to BenchMdtQualityObserve/Finish, so every engine's figure is measured by
- * the same code. SI units, z up, quaternions (w, x, y, z). Application code: malloc and stdio allowed. */
+ * the same code. SI units, y up (docs/decisions.md K30; each scene is its first, z-up version with the
+ * axes relabelled (x, y, z) -> (y, z, x), as bench/scenes), quaternions (w, x, y, z). Application
+ * code: malloc and stdio allowed. */
 #ifndef KARMA_BENCH_MDT_SCENES_H
 #define KARMA_BENCH_MDT_SCENES_H
 
@@ -53,12 +55,12 @@ typedef struct BenchMdtScene {
     const char *qualityName;
 } BenchMdtScene;
 
-/** `links` boxes of 1 m x 0.1 m x 0.1 m (1 kg) on ball joints, laid along +x from a world anchor at
+/** `links` boxes of 0.1 m x 0.1 m x 1 m (1 kg) on ball joints, laid along +z from a world anchor at
  *  the origin, falling from horizontal; no ground; 600 steps. Figure: the largest joint gap. */
 BenchMdtScene *BenchMdtSceneChain(int links);
 /** `boxes` unit boxes (1 kg) stacked on the ground; 1200 steps (20 s). Figure: top box drift. */
 BenchMdtScene *BenchMdtSceneColumn(int boxes);
-/** A running-bond wall of `wide` x `high` bricks 1 m x 0.5 m x 0.5 m (1 kg), odd rows shifted by
+/** A running-bond wall along z of `wide` x `high` bricks 0.5 m x 0.5 m x 1 m (1 kg), odd rows shifted by
  *  0.25 m, each brick supported by the one or two below; 600 steps. Figure: the largest brick drift. */
 BenchMdtScene *BenchMdtSceneWall(int wide, int high);
 /** The standard scenes by name: "chain" (100 links), "column" (20), "wall" (20 x 10 = 200 bricks);

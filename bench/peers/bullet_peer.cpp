@@ -118,7 +118,7 @@ void *bullet_create(const BenchScene *scene, bool sleep)
         case BENCH_SPHERE:
             shape = new btSphereShape(btScalar(b.size[0]));
             break;
-        case BENCH_CAPSULE:
+        case BENCH_CAPSULE: /* along local z, as the scene's (btCapsuleShape's axis is y) */
             shape = new btCapsuleShapeZ(btScalar(b.size[0]), btScalar(2 * b.size[1]));
             break;
         case BENCH_BOX:
@@ -131,10 +131,10 @@ void *bullet_create(const BenchScene *scene, bool sleep)
             BenchBodyInertia(&b, inertia);
         add_body(w, shape, b.fixed ? 0.0 : b.mass, to_bt(inertia), body_transform(b), scene->friction, sleep);
     }
-    if (scene->hasGround) {
+    if (scene->hasGround) { /* the scenes are y-up: the plane y = 0 */
         btTransform identity;
         identity.setIdentity();
-        add_body(w, new btStaticPlaneShape(btVector3(0, 0, 1), 0), 0.0, btVector3(0, 0, 0), identity,
+        add_body(w, new btStaticPlaneShape(btVector3(0, 1, 0), 0), 0.0, btVector3(0, 0, 0), identity,
                  scene->friction, sleep);
     }
     for (int k = 0; k < scene->jointCount; k++) {

@@ -164,8 +164,8 @@ static void *ode_create(const BenchScene *scene, int quick)
     dWorldSetQuickStepNumIterations(w->world, ODE_QUICK_ITERATIONS);
     w->space = dHashSpaceCreate(0);
     w->contactGroup = dJointGroupCreate(0);
-    if (scene->hasGround)
-        dCreatePlane(w->space, 0, 0, 1, 0);
+    if (scene->hasGround) /* the scenes are y-up: the plane y = 0 */
+        dCreatePlane(w->space, 0, 1, 0, 0);
     for (int i = 0; i < scene->bodyCount; i++) {
         const BenchBody *b = &scene->bodies[i];
         dGeomID g;
@@ -173,7 +173,7 @@ static void *ode_create(const BenchScene *scene, int quick)
         case BENCH_SPHERE:
             g = dCreateSphere(w->space, b->size[0]);
             break;
-        case BENCH_CAPSULE:
+        case BENCH_CAPSULE: /* ODE's capsule lies along its local z, as the scene's does */
             g = dCreateCapsule(w->space, b->size[0], 2 * b->size[1]);
             break;
         case BENCH_BOX:

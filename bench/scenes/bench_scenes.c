@@ -1,5 +1,11 @@
 /* bench_scenes.c -- builders for the benchmark scenes and the quality figures they report.
  *
+ * y is up (docs/decisions.md K30). The scenes were first written z-up; each is that scene with its
+ * axes relabelled, (x, y, z) -> (y, z, x) (bench/scenes/README.md): heights moved from z to y, the
+ * old x to z and the old y to x, and box half-extents are permuted alike. The peers choose friction
+ * directions from the normal's components in a cyclic pattern, so this relabelling keeps their
+ * choices too; a turn about x would not (the figures moved, see the README).
+ *
  * Everything an engine needs to build a scene is in the BenchScene data; everything a scene reports
  * is computed here from body poses, so Karma, ODE and Bullet are measured by the same code. */
 #include "bench_scenes.h"
@@ -83,9 +89,10 @@ void BenchBodyInertia(const BenchBody *b, double inertia[3])
 /* ---- building ---------------------------------------------------------------------------------- */
 
 static const double kIdentity[4] = {1, 0, 0, 0};
-static const double kAxisX[3] = {1, 0, 0};
 static const double kAxisY[3] = {0, 1, 0};
 static const double kAxisZ[3] = {0, 0, 1};
+/* A standing capsule: its local z axis turned onto world y (-90 degrees about x). */
+static const double kStandUp[4] = {0.70710678118654752440, -0.70710678118654752440, 0, 0};
 
 /* A new scene called `prefix` when count == standard (the scene of issue 5), else prefix + count. */
 static BenchScene *scene_new(const char *prefix, int count, int standard, int maxBodies, int maxJoints)
@@ -104,7 +111,7 @@ static BenchScene *scene_new(const char *prefix, int count, int standard, int ma
     else
         snprintf(s->name, sizeof s->name, "%s%d", prefix, count);
     s->hasGround = 1;
-    s->gravity[2] = BENCH_GRAVITY_Z;
+    s->gravity[1] = BENCH_GRAVITY_Y;
     s->step = BENCH_STEP;
     s->friction = BENCH_FRICTION;
     s->steps = 600;
@@ -178,10 +185,10 @@ BenchScene *BenchScenePyramid(int base)
     if (!s)
         return NULL;
     const double pitch = 1.05; /* unit boxes with 0.05 m gaps between neighbours of a row */
-    for (int row = 0; row < base; row++) {
+    for (int row = 0; row < base; row++) { /* rows along z, one box deep along x */
         int n = base - row;
         for (int i = 0; i < n; i++) {
-            double p[3] = {(i - 0.5 * (n - 1)) * pitch, 0, 0.5 + row};
+            double p[3] = {0, 0.5 + row, (i - 0.5 * (n - 1)) * pitch};
             add_body(s, BENCH_BOX, 0.5, 0.5, 0.5, 1.0, p, kIdentity, 0);
         }
     }
@@ -203,26 +210,28 @@ BenchScene *BenchScenePile(int spheres, int boxes)
     BenchScene *s = scene_new("pile", spheres == boxes ? spheres : count, 500, count + 4, 0);
     if (!s)
         return NULL;
-    /* Container: inner 16 m x 16 m, walls 1 m thick and 12 m high standing on the ground. */
+    /* Container: inner 16 m x 16 m (x and z), walls 1 m thick and 12 m high standing on the ground:
+     * the walls across z first, then those across x. */
     const double inner = 8.0, wallHalfHeight = 6.0;
-    const double wx[3] = {inner + 0.5, 0, wallHalfHeight}, wy[3] = {0, inner + 0.5, wallHalfHeight};
-    const double wxn[3] = {-wx[0], 0, wallHalfHeight}, wyn[3] = {0, -wy[1], wallHalfHeight};
-    add_body(s, BENCH_BOX, 0.5, inner + 1.0, wallHalfHeight, 0, wx, kIdentity, 1);
-    add_body(s, BENCH_BOX, 0.5, inner + 1.0, wallHalfHeight, 0, wxn, kIdentity, 1);
-    add_body(s, BENCH_BOX, inner, 0.5, wallHalfHeight, 0, wy, kIdentity, 1);
-    add_body(s, BENCH_BOX, inner, 0.5, wallHalfHeight, 0, wyn, kIdentity, 1);
-    /* Bodies on a 12 x 12 grid per layer, 1.3 m apart, jittered by ±0.02 m; boxes turned by up to
-     * ±0.25 rad about z (their footprint then stays under 1.22 m: no initial overlap). Spheres and
-     * boxes alternate while both remain. */
+    const double wz[3] = {0, wallHalfHeight, inner + 0.5}, wx[3] = {inner + 0.5, wallHalfHeight, 0};
+    const double wzn[3] = {0, wallHalfHeight, -wz[2]}, wxn[3] = {-wx[0], wallHalfHeight, 0};
+    add_body(s, BENCH_BOX, inner + 1.0, wallHalfHeight, 0.5, 0, wz, kIdentity, 1);
+    add_body(s, BENCH_BOX, inner + 1.0, wallHalfHeight, 0.5, 0, wzn, kIdentity, 1);
+    add_body(s, BENCH_BOX, 0.5, wallHalfHeight, inner, 0, wx, kIdentity, 1);
+    add_body(s, BENCH_BOX, 0.5, wallHalfHeight, inner, 0, wxn, kIdentity, 1);
+    /* Bodies on a 12 x 12 grid per layer (z, x), 1.3 m apart, jittered by ±0.02 m; boxes turned by
+     * up to ±0.25 rad about y (their footprint then stays under 1.22 m: no initial overlap). Spheres
+     * and boxes alternate while both remain. The jitter is drawn in the order z, x, height. */
     const int side = 12;
     const double pitch = 1.3;
     unsigned long long rng = 5;
     int madeSpheres = 0, madeBoxes = 0;
     for (int i = 0; i < count; i++) {
         int layer = i / (side * side), j = i % (side * side);
-        double p[3] = {((j % side) - 0.5 * (side - 1)) * pitch + 0.02 * jitter(&rng),
-                       ((j / side) - 0.5 * (side - 1)) * pitch + 0.02 * jitter(&rng),
-                       1.0 + layer * pitch + 0.02 * jitter(&rng)};
+        double z = ((j % side) - 0.5 * (side - 1)) * pitch + 0.02 * jitter(&rng);
+        double x = ((j / side) - 0.5 * (side - 1)) * pitch + 0.02 * jitter(&rng);
+        double height = 1.0 + layer * pitch + 0.02 * jitter(&rng);
+        double p[3] = {x, height, z};
         int sphere = (i % 2 == 0 && madeSpheres < spheres) || madeBoxes >= boxes;
         double yaw = 0.25 * jitter(&rng);
         if (sphere) {
@@ -230,7 +239,7 @@ BenchScene *BenchScenePile(int spheres, int boxes)
             madeSpheres++;
         } else {
             double q[4];
-            BenchQuatFromAxisAngle(q, kAxisZ, yaw);
+            BenchQuatFromAxisAngle(q, kAxisY, yaw);
             add_body(s, BENCH_BOX, 0.5, 0.5, 0.5, 1.0, p, q, 0);
             madeBoxes++;
         }
@@ -240,10 +249,10 @@ BenchScene *BenchScenePile(int spheres, int boxes)
              boxes);
     s->quality = BENCH_Q_ESCAPED;
     s->qualityName = "escaped";
-    s->container[0][0] = s->container[0][1] = -inner;
-    s->container[1][0] = s->container[1][1] = inner;
-    s->container[0][2] = 0;
-    s->container[1][2] = 1e6;
+    s->container[0][0] = s->container[0][2] = -inner;
+    s->container[1][0] = s->container[1][2] = inner;
+    s->container[0][1] = 0;
+    s->container[1][1] = 1e6;
     scene_finish(s);
     return s;
 }
@@ -256,14 +265,14 @@ BenchScene *BenchSceneChain(int links)
     if (!s)
         return NULL;
     s->hasGround = 0;
-    /* Capsules along x: local z turned onto world x (+90° about y). Radius 0.1, cylinder 0.8 m:
-     * 1 m tip to tip; the ball joints sit at the tips, x = 0, 1, 2 ... */
-    double q[4];
-    BenchQuatFromAxisAngle(q, kAxisY, 0.5 * kPi);
+    /* Capsules along z, unrotated (a capsule's axis is its local z). Radius 0.1, cylinder 0.8 m:
+     * 1 m tip to tip; the ball joints sit at the tips, z = 0, 1, 2 ... The chain swings down in the
+     * y-z plane, each link turning about x alone: the engines' arithmetic keeps it in that plane, as
+     * it kept the z-up chain (laid along x, links turned about y) in its own. */
     for (int i = 0; i < links; i++) {
-        double p[3] = {0.5 + i, 0, 0};
-        int b = add_body(s, BENCH_CAPSULE, 0.1, 0.4, 0, 1.0, p, q, 0);
-        double anchor[3] = {(double)i, 0, 0};
+        double p[3] = {0, 0, 0.5 + i};
+        int b = add_body(s, BENCH_CAPSULE, 0.1, 0.4, 0, 1.0, p, kIdentity, 0);
+        double anchor[3] = {0, 0, (double)i};
         add_joint(s, BENCH_BALL, b, i == 0 ? -1 : b - 1, anchor, NULL, 1, 0);
     }
     snprintf(s->description, sizeof s->description,
@@ -275,26 +284,26 @@ BenchScene *BenchSceneChain(int links)
     return s;
 }
 
-/* One ragdoll, standing with its feet at z = 0, facing -y, arms out along ±x (T-pose). */
+/* One ragdoll, standing with its feet at y = 0, facing -x, arms out along ±z (T-pose). */
 typedef struct RagdollPart {
     BenchShape shape;
     double radius, halfLength, mass;
     double pos[3];
-    int alongX; /* capsule axis along world x (arms) instead of z */
+    int alongZ; /* capsule axis along world z (arms: unrotated) instead of y */
 } RagdollPart;
 
 static const RagdollPart kRagdollParts[11] = {
-    {BENCH_CAPSULE, 0.12, 0.04, 10.0, {0, 0, 1.00}, 0},      /* 0 pelvis */
-    {BENCH_CAPSULE, 0.14, 0.12, 15.0, {0, 0, 1.42}, 0},      /* 1 chest */
-    {BENCH_SPHERE, 0.10, 0, 4.0, {0, 0, 1.80}, 0},           /* 2 head */
-    {BENCH_CAPSULE, 0.05, 0.10, 2.0, {0.31, 0, 1.58}, 1},    /* 3 right upper arm */
-    {BENCH_CAPSULE, 0.045, 0.10, 1.5, {0.605, 0, 1.58}, 1},  /* 4 right forearm */
-    {BENCH_CAPSULE, 0.05, 0.10, 2.0, {-0.31, 0, 1.58}, 1},   /* 5 left upper arm */
-    {BENCH_CAPSULE, 0.045, 0.10, 1.5, {-0.605, 0, 1.58}, 1}, /* 6 left forearm */
-    {BENCH_CAPSULE, 0.07, 0.16, 7.0, {0.1, 0, 0.69}, 0},     /* 7 right thigh */
-    {BENCH_CAPSULE, 0.06, 0.17, 4.0, {0.1, 0, 0.23}, 0},     /* 8 right shin */
-    {BENCH_CAPSULE, 0.07, 0.16, 7.0, {-0.1, 0, 0.69}, 0},    /* 9 left thigh */
-    {BENCH_CAPSULE, 0.06, 0.17, 4.0, {-0.1, 0, 0.23}, 0},    /* 10 left shin */
+    {BENCH_CAPSULE, 0.12, 0.04, 10.0, {0, 1.00, 0}, 0},      /* 0 pelvis */
+    {BENCH_CAPSULE, 0.14, 0.12, 15.0, {0, 1.42, 0}, 0},      /* 1 chest */
+    {BENCH_SPHERE, 0.10, 0, 4.0, {0, 1.80, 0}, 0},           /* 2 head */
+    {BENCH_CAPSULE, 0.05, 0.10, 2.0, {0, 1.58, 0.31}, 1},    /* 3 right upper arm */
+    {BENCH_CAPSULE, 0.045, 0.10, 1.5, {0, 1.58, 0.605}, 1},  /* 4 right forearm */
+    {BENCH_CAPSULE, 0.05, 0.10, 2.0, {0, 1.58, -0.31}, 1},   /* 5 left upper arm */
+    {BENCH_CAPSULE, 0.045, 0.10, 1.5, {0, 1.58, -0.605}, 1}, /* 6 left forearm */
+    {BENCH_CAPSULE, 0.07, 0.16, 7.0, {0, 0.69, 0.1}, 0},     /* 7 right thigh */
+    {BENCH_CAPSULE, 0.06, 0.17, 4.0, {0, 0.23, 0.1}, 0},     /* 8 right shin */
+    {BENCH_CAPSULE, 0.07, 0.16, 7.0, {0, 0.69, -0.1}, 0},    /* 9 left thigh */
+    {BENCH_CAPSULE, 0.06, 0.17, 4.0, {0, 0.23, -0.1}, 0},    /* 10 left shin */
 };
 
 typedef struct RagdollJoint {
@@ -304,47 +313,47 @@ typedef struct RagdollJoint {
     double lo, hi;
 } RagdollJoint;
 
-/* Hinge limits bound the angle of b relative to a: knees bend the shin backwards (+y), elbows the
- * forearm forwards (-y), the spine bends the chest forwards, the head nods either way.
+/* Hinge limits bound the angle of b relative to a: knees bend the shin backwards (+x), elbows the
+ * forearm forwards (-x), the spine bends the chest forwards, the head nods either way.
  * The neck is a limited hinge, not a free ball joint: the head (a sphere) hangs from a point of its
  * surface and does not collide with the chest (jointed pairs never do), so on a free ball joint a
  * head lying on the ground rolls without slipping in circles about that point, through the top of
  * its own chest, for as long as the run lasts (no friction acts on rolling; seen in every engine:
  * heads still turning at 1-9 rad/s after 10 s). */
 static const RagdollJoint kRagdollJoints[10] = {
-    {BENCH_HINGE, 0, 1, {0, 0, 1.16}, {1, 0, 0}, -0.3, 0.8},     /* spine */
-    {BENCH_HINGE, 1, 2, {0, 0, 1.70}, {1, 0, 0}, -0.5, 0.5},     /* neck */
-    {BENCH_BALL, 1, 3, {0.16, 0, 1.58}, {0, 0, 0}, 1, 0},        /* right shoulder */
-    {BENCH_HINGE, 3, 4, {0.46, 0, 1.58}, {0, 0, -1}, 0, 2.5},    /* right elbow */
-    {BENCH_BALL, 1, 5, {-0.16, 0, 1.58}, {0, 0, 0}, 1, 0},       /* left shoulder */
-    {BENCH_HINGE, 5, 6, {-0.46, 0, 1.58}, {0, 0, 1}, 0, 2.5},    /* left elbow */
-    {BENCH_BALL, 0, 7, {0.1, 0, 0.92}, {0, 0, 0}, 1, 0},         /* right hip */
-    {BENCH_HINGE, 7, 8, {0.1, 0, 0.46}, {1, 0, 0}, 0, 2.5},      /* right knee */
-    {BENCH_BALL, 0, 9, {-0.1, 0, 0.92}, {0, 0, 0}, 1, 0},        /* left hip */
-    {BENCH_HINGE, 9, 10, {-0.1, 0, 0.46}, {1, 0, 0}, 0, 2.5},    /* left knee */
+    {BENCH_HINGE, 0, 1, {0, 1.16, 0}, {0, 0, 1}, -0.3, 0.8},     /* spine */
+    {BENCH_HINGE, 1, 2, {0, 1.70, 0}, {0, 0, 1}, -0.5, 0.5},     /* neck */
+    {BENCH_BALL, 1, 3, {0, 1.58, 0.16}, {0, 0, 0}, 1, 0},        /* right shoulder */
+    {BENCH_HINGE, 3, 4, {0, 1.58, 0.46}, {0, -1, 0}, 0, 2.5},    /* right elbow */
+    {BENCH_BALL, 1, 5, {0, 1.58, -0.16}, {0, 0, 0}, 1, 0},       /* left shoulder */
+    {BENCH_HINGE, 5, 6, {0, 1.58, -0.46}, {0, 1, 0}, 0, 2.5},    /* left elbow */
+    {BENCH_BALL, 0, 7, {0, 0.92, 0.1}, {0, 0, 0}, 1, 0},         /* right hip */
+    {BENCH_HINGE, 7, 8, {0, 0.46, 0.1}, {0, 0, 1}, 0, 2.5},      /* right knee */
+    {BENCH_BALL, 0, 9, {0, 0.92, -0.1}, {0, 0, 0}, 1, 0},        /* left hip */
+    {BENCH_HINGE, 9, 10, {0, 0.46, -0.1}, {0, 0, 1}, 0, 2.5},    /* left knee */
 };
 
-/* Lowest z of a body (its deepest point along -z). */
-static double body_lowest_z(const BenchBody *b, const double pos[3], const double quat[4])
+/* Lowest height of a body (its deepest point along -y). */
+static double body_lowest_y(const BenchBody *b, const double pos[3], const double quat[4])
 {
     switch (b->shape) {
     case BENCH_SPHERE:
-        return pos[2] - b->size[0];
+        return pos[1] - b->size[0];
     case BENCH_CAPSULE: {
         double half[3] = {0, 0, b->size[1]}, w[3];
         BenchQuatRotate(w, quat, half);
-        return pos[2] - fabs(w[2]) - b->size[0];
+        return pos[1] - fabs(w[1]) - b->size[0];
     }
     case BENCH_BOX:
     default: {
         double reach = 0;
-        const double *axes[3] = {kAxisX, kAxisY, kAxisZ};
+        static const double axes[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
         for (int i = 0; i < 3; i++) {
             double w[3];
             BenchQuatRotate(w, quat, axes[i]);
-            reach += fabs(w[2]) * b->size[i];
+            reach += fabs(w[1]) * b->size[i];
         }
-        return pos[2] - reach;
+        return pos[1] - reach;
     }
     }
 }
@@ -356,8 +365,8 @@ static void ragdoll_place(double out[3], const double q[4], const double centre[
     double d[3] = {point[0] - centre[0], point[1] - centre[1], point[2] - centre[2]};
     BenchQuatRotate(out, q, d);
     out[0] += place[0];
-    out[1] += place[1];
-    out[2] += centre[2];
+    out[1] += centre[1];
+    out[2] += place[2];
 }
 
 BenchScene *BenchSceneRagdolls(int count)
@@ -370,23 +379,22 @@ BenchScene *BenchSceneRagdolls(int count)
     int side = 1;
     while (side * side < count)
         side++;
-    double armQuat[4];
-    BenchQuatFromAxisAngle(armQuat, kAxisY, 0.5 * kPi);
-    const double centre[3] = {0, 0, 1.0}; /* each ragdoll turns about its hips */
+    const double centre[3] = {0, 1.0, 0}; /* each ragdoll turns about its hips */
     for (int k = 0; k < count; k++) {
-        /* A different yaw (golden angle steps) and a forward tilt of 0.3 to 1.5 rad for each. */
+        /* A different yaw (golden angle steps, about y) and a forward tilt of 0.3 to 1.5 rad for each
+         * (about z: the face, towards -x, goes down). */
         double yaw = 2.39996 * k, tilt = 0.3 + 1.2 * fmod(0.6180339887 * k, 1.0);
         double qYaw[4], qTilt[4], q[4];
-        BenchQuatFromAxisAngle(qYaw, kAxisZ, yaw);
-        BenchQuatFromAxisAngle(qTilt, kAxisX, tilt);
+        BenchQuatFromAxisAngle(qYaw, kAxisY, yaw);
+        BenchQuatFromAxisAngle(qTilt, kAxisZ, tilt);
         BenchQuatMultiply(q, qYaw, qTilt);
-        double place[3] = {((k % side) - 0.5 * (side - 1)) * 3.0, ((k / side) - 0.5 * (side - 1)) * 3.0, 0};
+        double place[3] = {((k / side) - 0.5 * (side - 1)) * 3.0, 0, ((k % side) - 0.5 * (side - 1)) * 3.0};
         int first = s->bodyCount;
         for (int i = 0; i < 11; i++) {
             const RagdollPart *part = &kRagdollParts[i];
             double p[3], bq[4];
             ragdoll_place(p, q, centre, place, part->pos);
-            BenchQuatMultiply(bq, q, part->alongX ? armQuat : kIdentity);
+            BenchQuatMultiply(bq, q, part->shape == BENCH_CAPSULE && !part->alongZ ? kStandUp : kIdentity);
             add_body(s, part->shape, part->radius, part->halfLength, 0, part->mass, p, bq, 0);
         }
         for (int i = 0; i < 10; i++) {
@@ -399,14 +407,14 @@ BenchScene *BenchSceneRagdolls(int count)
         /* Lift the ragdoll so that its lowest point is 0.5 m above the ground. */
         double lowest = 1e9;
         for (int i = first; i < s->bodyCount; i++) {
-            double z = body_lowest_z(&s->bodies[i], s->bodies[i].pos, s->bodies[i].quat);
-            lowest = z < lowest ? z : lowest;
+            double y = body_lowest_y(&s->bodies[i], s->bodies[i].pos, s->bodies[i].quat);
+            lowest = y < lowest ? y : lowest;
         }
         double lift = 0.5 - lowest;
         for (int i = first; i < s->bodyCount; i++)
-            s->bodies[i].pos[2] += lift;
+            s->bodies[i].pos[1] += lift;
         for (int i = s->jointCount - 10; i < s->jointCount; i++)
-            s->joints[i].anchor[2] += lift;
+            s->joints[i].anchor[1] += lift;
     }
     snprintf(s->description, sizeof s->description,
              "%d ragdolls of 11 bodies (4 ball, 6 limited hinge joints) dropped on the ground, 10 s", count);
@@ -424,7 +432,7 @@ BenchScene *BenchSceneColumn(int boxes)
     if (!s)
         return NULL;
     for (int i = 0; i < boxes; i++) {
-        double p[3] = {0, 0, 0.5 + i};
+        double p[3] = {0, 0.5 + i, 0};
         add_body(s, BENCH_BOX, 0.5, 0.5, 0.5, 1.0, p, kIdentity, 0);
     }
     s->steps = 1200;
@@ -596,7 +604,7 @@ void BenchQualityFinish(const BenchScene *scene, BenchQuality *quality, const do
     if (scene->hasGround)
         for (int i = 0; i < scene->bodyCount; i++)
             if (!scene->bodies[i].fixed) {
-                double depth = -body_lowest_z(&scene->bodies[i], pos[i], quat[i]);
+                double depth = -body_lowest_y(&scene->bodies[i], pos[i], quat[i]);
                 if (depth > quality->floorPenetration)
                     quality->floorPenetration = depth;
             }

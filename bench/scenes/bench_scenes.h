@@ -7,11 +7,13 @@
  * body poses back to BenchQualityObserve/Finish, so the quality figures are measured by one piece of
  * code for all engines.
  *
- * Conventions: SI units; z is up (gravity (0, 0, -9.81)); quaternions (w, x, y, z) rotate local to
- * world; a capsule's axis is its local z (Karma's sphyl and ODE's capsule alike); box sizes are
- * half-extents here (Karma's McdBoxCreate takes full edge lengths: double them). The ground, when
- * present, is the plane z = 0 with normal +z. See bench/scenes/README.md for the scenes and why each
- * figure is what it is.
+ * Conventions: SI units; y is up (gravity (0, -9.81, 0), docs/decisions.md K30); quaternions
+ * (w, x, y, z) rotate local to world; a capsule's axis is its local z (Karma's sphyl, ODE's capsule
+ * and Bullet's btCapsuleShapeZ alike), so a standing capsule is turned by -90 degrees about x; box sizes
+ * are half-extents along the box's x, y and z here (Karma's McdBoxCreate takes full edge lengths:
+ * double them). The ground, when present, is the plane y = 0 with normal +y (Karma's plane, whose normal is
+ * its local +z, is turned by -90 degrees about x). See bench/scenes/README.md for the scenes and why
+ * each figure is what it is.
  *
  * Plain C11 application code: not part of libkarma, free to use malloc and stdio. Numbers are double
  * throughout; an engine in single precision converts at its boundary. */
@@ -24,7 +26,7 @@ extern "C" {
 
 /** Shapes. Sizes in BenchBody.size: box = half-extents (x, y, z); sphere = radius in size[0];
  *  capsule = radius in size[0] and half-length of the cylinder part (caps excluded) in size[1],
- *  along local z. */
+ *  along local z (turned onto world y for a standing capsule). */
 typedef enum BenchShape { BENCH_BOX, BENCH_SPHERE, BENCH_CAPSULE } BenchShape;
 
 typedef struct BenchBody {
@@ -70,8 +72,8 @@ typedef struct BenchScene {
     BenchBody *bodies;
     int jointCount;
     BenchJoint *joints;
-    int hasGround;           /**< 1: static plane z = 0, normal +z */
-    double gravity[3];       /**< m/s² (0, 0, -9.81) */
+    int hasGround;           /**< 1: static plane y = 0, normal +y */
+    double gravity[3];       /**< m/s² (0, -9.81, 0) */
     double step;             /**< s (1/60) */
     double friction;         /**< Coulomb μ of every contact (0.6); restitution is 0 */
     int steps;               /**< steps of a full run */
@@ -86,7 +88,7 @@ typedef struct BenchScene {
 #define BENCH_STANDARD_SCENES "pyramid20,pyramid40,pile,chain,ragdolls,column"
 
 /** Gravity, step and friction shared by every scene. */
-#define BENCH_GRAVITY_Z  (-9.81)
+#define BENCH_GRAVITY_Y  (-9.81)
 #define BENCH_STEP       (1.0 / 60.0)
 #define BENCH_FRICTION   0.6
 /** A stack has fallen when some box ends half an edge (0.5 m) or more from where it started: it is
@@ -102,7 +104,7 @@ BenchScene *BenchScenePyramid(int base);
 /** `spheres` balls (radius 0.5 m) and `boxes` unit boxes, 1 kg each, dropped from a jittered grid
  *  into a 16 m × 16 m walled box on the ground; 600 steps. */
 BenchScene *BenchScenePile(int spheres, int boxes);
-/** `links` capsules (radius 0.1 m, 1 m tip to tip, 1 kg) on ball joints, laid horizontally along +x,
+/** `links` capsules (radius 0.1 m, 1 m tip to tip, 1 kg) on ball joints, laid horizontally along +z,
  *  the first joined to the world at the origin; no ground; 600 steps. */
 BenchScene *BenchSceneChain(int links);
 /** `count` ragdolls of 11 bodies (58 kg) on 5 ball and 5 limited hinge joints, on a 3 m grid, each
@@ -139,7 +141,7 @@ typedef struct BenchQuality {
     double maxJointError;    /**< largest joint gap seen in any observed step (m) */
     double meanJointError;   /**< mean over the observed steps of that step's largest gap (m) */
     double sumJointError;    /**< running sum for meanJointError */
-    double floorPenetration; /**< deepest point of any dynamic body below z = 0 at the end (m, >= 0) */
+    double floorPenetration; /**< deepest point of any dynamic body below y = 0 at the end (m, >= 0) */
     int nonFinite;    /**< 1 when some observed pose was NaN or infinite */
     int observed;     /**< steps observed */
 } BenchQuality;

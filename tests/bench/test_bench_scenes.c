@@ -134,7 +134,7 @@ static double lowest_point(const BenchScene *s)
         double lo[3], hi[3];
         body_aabb(&s->bodies[i], lo, hi);
         if (!s->bodies[i].fixed)
-            lowest = fmin(lowest, lo[2]);
+            lowest = fmin(lowest, lo[1]);
     }
     return lowest;
 }
@@ -179,7 +179,8 @@ static void standard_scenes(void **state)
         assert_near(s->step, 1.0 / 60, 1e-15);
         assert_near(s->friction, 0.6, 0);
         assert_near(s->gravity[0], 0, 0);
-        assert_near(s->gravity[2], -9.81, 0);
+        assert_near(s->gravity[1], -9.81, 0); /* y up */
+        assert_near(s->gravity[2], 0, 0);
         for (int i = 0; i < s->bodyCount; i++) {
             const BenchBody *b = &s->bodies[i];
             double n = sqrt(b->quat[0] * b->quat[0] + b->quat[1] * b->quat[1] + b->quat[2] * b->quat[2] +
@@ -207,15 +208,17 @@ static void scene_names(void **state)
     BenchScene *s = BenchSceneCreate("pyramid3");
     assert_non_null(s);
     assert_int_equal(s->dynamicCount, 6);
-    /* rows at z = 0.5, 1.5, 2.5; the top box centred over the base */
-    assert_near(s->bodies[5].pos[2], 2.5, 0);
-    assert_near(s->bodies[5].pos[0], 0, 1e-15);
-    assert_near(s->bodies[1].pos[0] - s->bodies[0].pos[0], 1.05, 1e-12);
+    /* rows at y = 0.5, 1.5, 2.5 along z, one box deep (x = 0); the top box centred over the base */
+    assert_near(s->bodies[5].pos[1], 2.5, 0);
+    assert_near(s->bodies[5].pos[2], 0, 1e-15);
+    assert_near(s->bodies[1].pos[2] - s->bodies[0].pos[2], 1.05, 1e-12);
+    for (int i = 0; i < 6; i++)
+        assert_near(s->bodies[i].pos[0], 0, 0);
     BenchSceneDestroy(s);
     s = BenchSceneCreate("column5");
     assert_non_null(s);
     assert_int_equal(s->dynamicCount, 5);
-    assert_near(s->bodies[4].pos[2], 4.5, 0);
+    assert_near(s->bodies[4].pos[1], 4.5, 0);
     BenchSceneDestroy(s);
     s = BenchSceneCreate("pile10");
     assert_non_null(s);
@@ -318,13 +321,13 @@ static void quality_figures(void **state)
     BenchQuality q;
     BenchScene *s = start("pyramid3", &q, &pos, &quat);
     pos[2][0] += 0.3;
-    pos[2][1] += 0.4; /* 0.5 m: just fallen */
-    pos[4][2] -= 0.2;
+    pos[2][2] += 0.4; /* 0.5 m: just fallen */
+    pos[4][1] -= 0.2;
     BenchQualityObserve(s, &q, (const double(*)[3])pos, (const double(*)[4])quat);
     finish(s, &q, pos, quat, 1);
     assert_near(q.value, 0.5, 1e-12);
     assert_int_equal(q.standing, 0);
-    pos[2][1] -= 0.4; /* now 0.3 and 0.2 apart from their starts: standing */
+    pos[2][2] -= 0.4; /* now 0.3 and 0.2 apart from their starts: standing */
     finish(s, &q, pos, quat, 1);
     assert_near(q.value, 0.3, 1e-12);
     assert_int_equal(q.standing, 1);
@@ -344,7 +347,7 @@ static void quality_figures(void **state)
 
     s = start("column4", &q, &pos, &quat);
     pos[3][0] += 0.06;
-    pos[3][2] -= 0.08;
+    pos[3][1] -= 0.08;
     finish(s, &q, pos, quat, 1);
     assert_near(q.value, 0.1, 1e-12);
     assert_int_equal(q.standing, 1);
@@ -356,12 +359,71 @@ static void quality_figures(void **state)
     assert_near(q.value, 0, 0);
     assert_int_equal(q.standing, -1);
     pos[5][0] = 8.2;  /* through a wall */
-    pos[6][1] = -9;   /* through another */
-    pos[7][2] = -0.1; /* through the floor */
+    pos[6][2] = -9;   /* through another */
+    pos[7][1] = -0.1; /* through the floor */
     pos[0][0] = 8.2;  /* a wall itself: fixed bodies are not counted */
     finish(s, &q, pos, quat, 1);
     assert_near(q.value, 3, 0);
     free(pos), free(quat);
+    BenchSceneDestroy(s);
+}
+
+/* y is up (docs/decisions.md K30): stacks rise along y, the ragdolls' heads are above their hips,
+ * their chests lean from y by their tilt and their lowest points are 0.5 m above the plane y = 0,
+ * the pile's container is open towards +y, and the chain hangs from the origin along z. */
+static void scenes_are_y_up(void **state)
+{
+    (void)state;
+    BenchScene *s = BenchSceneCreate("column5");
+    assert_non_null(s);
+    for (int i = 0; i < 5; i++) {
+        assert_near(s->bodies[i].pos[0], 0, 0);
+        assert_near(s->bodies[i].pos[1], 0.5 + i, 0);
+        assert_near(s->bodies[i].pos[2], 0, 0);
+    }
+    BenchSceneDestroy(s);
+    s = BenchSceneCreate("ragdolls4");
+    assert_non_null(s);
+    const double up[3] = {0, 1, 0}, localAxis[3] = {0, 0, 1};
+    for (int k = 0; k < 4; k++) {
+        const BenchBody *part = &s->bodies[11 * k];
+        double lowest = 1e9;
+        for (int i = 0; i < 11; i++) {
+            double lo[3], hi[3];
+            body_aabb(&part[i], lo, hi);
+            lowest = fmin(lowest, lo[1]);
+        }
+        assert_near(lowest, 0.5, 1e-12);
+        assert_true(part[2].pos[1] > part[0].pos[1]); /* head above pelvis (tilted at most 1.5 rad) */
+        /* the chest's axis (local z) leans from up by the ragdoll's tilt, 0.3 to 1.5 rad */
+        double axis[3];
+        BenchQuatRotate(axis, part[1].quat, localAxis);
+        double tilt = acos(fmin(1, fabs(dot3(axis, up))));
+        assert_true(tilt > 0.3 - 1e-9 && tilt < 1.5 + 1e-9);
+    }
+    BenchSceneDestroy(s);
+    s = BenchSceneCreate("pile10");
+    assert_non_null(s);
+    assert_near(s->container[0][1], 0, 0);
+    assert_true(s->container[1][1] > 100);
+    for (int i = 0; i < s->bodyCount; i++) {
+        const BenchBody *b = &s->bodies[i];
+        if (b->fixed) {
+            assert_near(b->size[1], 6, 0); /* walls 12 m high, standing on the ground */
+            assert_near(b->pos[1], 6, 0);
+            continue;
+        }
+        assert_true(b->pos[1] >= 1.0 - 0.02);
+        for (int k = 0; k < 3; k += 2)
+            assert_true(b->pos[k] > s->container[0][k] && b->pos[k] < s->container[1][k]);
+    }
+    BenchSceneDestroy(s);
+    s = BenchSceneCreate("chain3");
+    assert_non_null(s);
+    for (int i = 0; i < 3; i++) {
+        assert_near(s->bodies[i].pos[2], 0.5 + i, 0);
+        assert_near(s->joints[i].anchor[2], i, 0);
+    }
     BenchSceneDestroy(s);
 }
 
@@ -382,11 +444,11 @@ static void quaternions(void **state)
         assert_near(w1[i], w2[i], 1e-14);
         assert_near(back[i], v[i], 1e-14);
     }
-    /* +90° about y takes local z to world x: the chain's capsule axis */
-    const double y[3] = {0, 1, 0}, z[3] = {0, 0, 1};
-    BenchQuatFromAxisAngle(q, y, 0.5 * 3.14159265358979323846);
+    /* -90° about x takes local z to world y: a standing capsule's axis (y up) */
+    const double x[3] = {1, 0, 0}, z[3] = {0, 0, 1};
+    BenchQuatFromAxisAngle(q, x, -0.5 * 3.14159265358979323846);
     BenchQuatRotate(w1, q, z);
-    assert_near(w1[0], 1, 1e-15);
+    assert_near(w1[1], 1, 1e-15);
     assert_near(w1[2], 0, 1e-15);
 }
 
@@ -443,7 +505,7 @@ int main(void)
         cmocka_unit_test(standard_scenes),     cmocka_unit_test(scene_names),
         cmocka_unit_test(joints_agree_at_start), cmocka_unit_test(joint_error_is_a_distance),
         cmocka_unit_test(quality_figures),     cmocka_unit_test(quaternions),
-        cmocka_unit_test(inertia_by_integration),
+        cmocka_unit_test(inertia_by_integration), cmocka_unit_test(scenes_are_y_up),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
