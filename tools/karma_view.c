@@ -94,7 +94,8 @@ int KarmaRender(int argc, char **argv)
         DemoStep(&demo, scene->defaultStepSize);
         physics += seconds() - t0;
     }
-    /* Only the last frame is drawn: its picture is what --out asks for. */
+    /* Only the last frame is drawn, its picture is what --out asks for, framed where the scene is now. */
+    DemoViewFrame(&view, &demo);
     double t0 = seconds();
     RRenderDrawFrame(rc);
     drawing = seconds() - t0;

@@ -28,6 +28,17 @@ void DemoViewColor(const DemoView *view, int index, float color[4])
     memcpy(color, c, 4 * sizeof(float));
 }
 
+/* A body without collision geometry is drawn as the uniform sphere of its mass and mean moment of
+ * inertia (I = 2/5 m r²), so its size on the screen says how heavy-handed it is. */
+static MeReal markerRadius(MdtBodyID body)
+{
+    MeMatrix3 I;
+    MdtBodyGetInertiaTensor(body, I);
+    double m = MdtBodyGetMass(body), mean = (I[0][0] + I[1][1] + I[2][2]) / 3;
+    double r = m > 0 && mean > 0 ? sqrt(2.5 * mean / m) : DEMO_VIEW_MARKER_RADIUS;
+    return (MeReal)fmin(fmax(r, DEMO_VIEW_MARKER_RADIUS / 3), 20 * DEMO_VIEW_MARKER_RADIUS);
+}
+
 static MeBool add(DemoView *view, int capacity, McdModelID model, MdtBodyID body)
 {
     if (view->count >= capacity)
@@ -40,7 +51,7 @@ static MeBool add(DemoView *view, int capacity, McdModelID model, MdtBodyID body
     if (model)
         view->graphic[i] = RGraphicCreateFromModel(view->rc, model, color);
     else
-        view->graphic[i] = RGraphicSphereCreate(view->rc, DEMO_VIEW_MARKER_RADIUS, color, MdtBodyGetTransformPtr(body));
+        view->graphic[i] = RGraphicSphereCreate(view->rc, markerRadius(body), color, MdtBodyGetTransformPtr(body));
     if (!view->graphic[i])
         return MEFALSE;
     view->count++;
@@ -92,7 +103,7 @@ static int compareDouble(const void *a, const void *b)
 
 void DemoViewFrame(DemoView *view, const DemoInstance *demo)
 {
-    /* Centre on the median position and take in three quarters of the bodies: a few parked far away
+    /* Frame the box holding the middle 70% of the bodies along each axis: a few parked far away
      * (balls waiting to be shot) do not shrink the scene to a speck. */
     double *xyz = malloc(sizeof(double) * 4 * (size_t)(view->count + 1));
     if (!xyz)
@@ -109,20 +120,16 @@ void DemoViewFrame(DemoView *view, const DemoInstance *demo)
     }
     if (n > 0) {
         AcmeVector3 centre;
+        double radius = 0;
         for (int k = 0; k < 3; k++) {
             for (int i = 0; i < n; i++)
                 axis[i] = xyz[3 * i + k];
             qsort(axis, (size_t)n, sizeof *axis, compareDouble);
-            centre[k] = (AcmeReal)axis[n / 2];
+            double lo = axis[(int)floor(0.15 * (n - 1))], hi = axis[(int)ceil(0.85 * (n - 1))];
+            centre[k] = (AcmeReal)((lo + hi) / 2);
+            radius += (hi - lo) * (hi - lo) / 4;
         }
-        for (int i = 0; i < n; i++) {
-            double d = 0;
-            for (int k = 0; k < 3; k++)
-                d += (xyz[3 * i + k] - centre[k]) * (xyz[3 * i + k] - centre[k]);
-            axis[i] = sqrt(d);
-        }
-        qsort(axis, (size_t)n, sizeof *axis, compareDouble);
-        double radius = axis[(3 * (n - 1)) / 4] + 1.0; /* room for the bodies' own sizes */
+        radius = sqrt(radius) + 1.0; /* room for the bodies' own sizes */
         RCameraSetLookAt(view->rc, centre);
         RCameraSetView(view->rc, (AcmeReal)(1.2 * radius / sin(view->rc->m_Fov)), ME_R(0.45), ME_R(0.38));
     }

@@ -1,6 +1,6 @@
 /* demo_view.h -- a registry scene in the viewer: one graphic per collision model (drawn from its
- * geometry with RGraphicCreateFromModel, following the model's transform), a small sphere for each
- * body without a model, and a camera that frames the scene. Shared by `karma render`, `karma view`
+ * geometry with RGraphicCreateFromModel, following the model's transform), a sphere of the same
+ * mass and inertia for each body without a model, and a camera that frames the scene. Shared by `karma render`, `karma view`
  * and the viewer's tests, so the registry stays the one place where a scene is defined. */
 #ifndef KARMA_DEMO_VIEW_H
 #define KARMA_DEMO_VIEW_H
@@ -9,7 +9,8 @@
 
 #include "demo.h"
 
-/** Radius of the sphere drawn for a body without a collision model (m). */
+/** Radius of the sphere drawn for a body without a collision model when its inertia gives none (m);
+ *  else the radius of the uniform sphere of its mass and mean moment of inertia. */
 #define DEMO_VIEW_MARKER_RADIUS ME_R(0.15)
 
 /** What was drawn for a scene: graphic i stands for body[i] (NULL for a fixed model such as the
