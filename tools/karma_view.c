@@ -122,7 +122,21 @@ int KarmaView(int argc, char **argv)
     const DemoScene *scene = DemoSceneFind(argv[0]);
     if (!scene)
         return usage("no scene '%s' (see `karma list`)", argv[0]);
-    /* Everything after the scene is for the viewer (-size WxH, -timeout N, -null, -headless, ...). */
+    /* Everything after the scene is for the viewer; checked before a window opens. */
+    for (int i = 1; i < argc; i++) {
+        static const char *const flags[] = {"-gl", "-null", "-headless", "-wireframe", "-notextures"};
+        MeBool known = MEFALSE;
+        for (size_t k = 0; k < sizeof flags / sizeof flags[0]; k++)
+            known = known || strcmp(argv[i], flags[k]) == 0;
+        if (!known && (strcmp(argv[i], "-size") == 0 || strcmp(argv[i], "-timeout") == 0)) {
+            if (i + 1 >= argc)
+                return usage("'%s' needs a value", argv[i]);
+            known = METRUE;
+            i++;
+        }
+        if (!known)
+            return usage("unknown option '%s' of `view`", argv[i]);
+    }
     MeCommandLineOptions *options = MeCommandLineOptionsCreate(argc - 1, (const char **)(argv + 1));
     RRender *rc = RRenderContextCreate(options, NULL, METRUE);
     int unread = options ? options->m_argc : 0;

@@ -1,0 +1,25 @@
+# The viewer (viewer/, issue 19): the core never depends on it; `karma render` writes a picture of a
+# registry scene without a display and rejects bad command lines; `karma view -headless -timeout N`
+# runs the window loop offscreen. The C tests are tests/viewer/test_viewer_*.c.
+find_program(KARMA_READELF readelf)
+if(KARMA_READELF)
+  add_test(NAME viewer_core_does_not_depend_on_it
+           COMMAND ${CMAKE_COMMAND} -DLIB=$<TARGET_FILE:karma_shared> -DREADELF=${KARMA_READELF}
+                   -DSRC=${PROJECT_SOURCE_DIR} -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_core_without_viewer.cmake)
+endif()
+if(NOT TARGET karma OR NOT TARGET karma_demo_view)
+  return()
+endif()
+add_test(NAME viewer_tool_render
+         COMMAND ${CMAKE_COMMAND} -DKARMA=$<TARGET_FILE:karma> -DOUT=${CMAKE_CURRENT_BINARY_DIR}/viewer_render.png
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_tool_render.cmake)
+add_test(NAME viewer_tool_view_headless COMMAND karma view bounce -headless -size 160x100 -timeout 30)
+set_tests_properties(viewer_tool_view_headless PROPERTIES PASS_REGULAR_EXPRESSION "bounce: 30 steps")
+foreach(bad "render;nosuchscene" "render;bounce;--frames;-3" "render;bounce;--size;12by7" "render;bounce;--frames"
+            "render;bounce;--frobnicate;1" "render" "view;bounce;-frobnicate")
+  string(REPLACE ";" "_" name "${bad}")
+  add_test(NAME viewer_tool_rejects_${name}
+           COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:karma> "-DARGS=${bad}" -DEXPECT_EXIT=2
+                   "-DEXPECT_STDERR=^karma: .*see `karma --help`"
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/expect_exit.cmake)
+endforeach()
