@@ -404,6 +404,28 @@ static void test_bad_input_is_reported(void **state)
     assert_null(none);
 }
 
+/* The options object: positions, eating, values after an option. */
+static void test_command_line_options(void **state)
+{
+    const char *argv[] = {"demo", "-timeout", "40", "-gl", "-scale", "2.5", "-name", "x"};
+    MeCommandLineOptions *o = MeCommandLineOptionsCreate(8, argv);
+    assert_int_equal(MeCommandLineOptionsGetPos(o, "-gl"), 3);
+    assert_int_equal(MeCommandLineOptionsGetNumeric(o, "-name", METRUE), -1); /* not a number: kept */
+    assert_int_equal(o->m_argc, 8);
+    assert_int_equal(MeCommandLineOptionsGetNumeric(o, "-timeout", METRUE), 40);
+    assert_int_equal(o->m_argc, 6);
+    assert_near(MeCommandLineOptionsGetFloat(o, "-scale", MEFALSE), 2.5, 0);
+    assert_string_equal(MeCommandLineOptionsGetString(o, "-name", METRUE), "x");
+    const char *list[] = {"-null", "-gl", NULL};
+    assert_true(MeCommandLineOptionsCheckForList(o, list, METRUE));
+    assert_false(MeCommandLineOptionsCheckFor(o, "-gl", MEFALSE));
+    assert_int_equal(o->m_argc, 3);
+    assert_string_equal(o->p_argv[0], "demo");
+    assert_string_equal(o->p_argv[1], "-scale");
+    MeCommandLineOptionsDestroy(o);
+    assert_null(MeCommandLineOptionsCreate(-1, argv));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -414,6 +436,7 @@ int main(void)
         cmocka_unit_test(test_mouse_orbits_or_goes_to_the_application),
         cmocka_unit_test(test_primitives_are_their_shapes),
         cmocka_unit_test(test_bad_input_is_reported),
+        cmocka_unit_test(test_command_line_options),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -26,8 +26,14 @@ void MEAPI MeCommandLineOptionsEat(MeCommandLineOptions *options, const int *eat
 int MEAPI MeCommandLineOptionsGetPos(MeCommandLineOptions *options, const char *arg);
 /** Whether `arg` is present; with `eat` true it is removed. */
 MeBool MEAPI MeCommandLineOptionsCheckFor(MeCommandLineOptions *options, const char *arg, const MeBool eat);
-/** The argument following `arg` (NULL when absent); with `eat` true both are removed. */
-const char *MEAPI MeCommandLineOptionsGetString(MeCommandLineOptions *options, const char *arg, const MeBool eat);
+/** Whether any of the NULL-terminated `arglist` is present; with `eat` true those present are removed. */
+MeBool MEAPI MeCommandLineOptionsCheckForList(MeCommandLineOptions *options, const char *arglist[], const MeBool eat);
+/** The argument following `arg` (NULL when absent; points into argv); with `eat` true both are removed. */
+char *MEAPI MeCommandLineOptionsGetString(MeCommandLineOptions *options, const char *arg, const MeBool eat);
+/** The integer following `arg`, or −1 when absent or not a number (then nothing is eaten). */
+int MEAPI MeCommandLineOptionsGetNumeric(MeCommandLineOptions *options, const char *arg, const MeBool eat);
+/** The number following `arg`, or 0 when absent or not a number (then nothing is eaten). */
+double MEAPI MeCommandLineOptionsGetFloat(MeCommandLineOptions *options, const char *arg, const MeBool eat);
 
 ME_EXTERN_C_END
 

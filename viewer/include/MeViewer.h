@@ -174,14 +174,21 @@ void MEAPI RCameraUpdate(RRender *rc);
 
 /* ---- input callbacks ----------------------------------------------------------------------- */
 
-/** Arrow keys (Up, Down, Left, Right) and w s a d (Up2, Down2, Left2, Right2). */
+/** Called when the Up arrow is pressed (Karma's Up button). */
 void MEAPI RRenderSetUpCallBack(RRender *rc, RButtonPressCallBack func, void *userdata);
+/** Called when the Down arrow is pressed (Karma's Down button). */
 void MEAPI RRenderSetDownCallBack(RRender *rc, RButtonPressCallBack func, void *userdata);
+/** Called when the Left arrow is pressed (Karma's Left button). */
 void MEAPI RRenderSetLeftCallBack(RRender *rc, RButtonPressCallBack func, void *userdata);
+/** Called when the Right arrow is pressed (Karma's Right button). */
 void MEAPI RRenderSetRightCallBack(RRender *rc, RButtonPressCallBack func, void *userdata);
+/** Called when w is pressed (Karma's Up2 button). */
 void MEAPI RRenderSetUp2CallBack(RRender *rc, RButtonPressCallBack func, void *userdata);
+/** Called when s is pressed (Karma's Down2 button). */
 void MEAPI RRenderSetDown2CallBack(RRender *rc, RButtonPressCallBack func, void *userdata);
+/** Called when a is pressed (Karma's Left2 button). */
 void MEAPI RRenderSetLeft2CallBack(RRender *rc, RButtonPressCallBack func, void *userdata);
+/** Called when d is pressed (Karma's Right2 button). */
 void MEAPI RRenderSetRight2CallBack(RRender *rc, RButtonPressCallBack func, void *userdata);
 /** Action N (0–5): keys h, m, Enter, Space, o, p by default. N out of range is reported and ignored. */
 void MEAPI RRenderSetActionNCallBack(RRender *rc, int N, RButtonPressCallBack func, void *userdata);

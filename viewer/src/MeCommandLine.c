@@ -1,4 +1,5 @@
 /* MeCommandLine.c -- the options object RRenderContextCreate reads. */
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -65,7 +66,15 @@ MeBool MEAPI MeCommandLineOptionsCheckFor(MeCommandLineOptions *options, const c
     return METRUE;
 }
 
-const char *MEAPI MeCommandLineOptionsGetString(MeCommandLineOptions *options, const char *arg, const MeBool eat)
+MeBool MEAPI MeCommandLineOptionsCheckForList(MeCommandLineOptions *options, const char *arglist[], const MeBool eat)
+{
+    MeBool found = MEFALSE;
+    for (int i = 0; arglist && arglist[i]; i++)
+        found = MeCommandLineOptionsCheckFor(options, arglist[i], eat) || found;
+    return found;
+}
+
+char *MEAPI MeCommandLineOptionsGetString(MeCommandLineOptions *options, const char *arg, const MeBool eat)
 {
     int pos = MeCommandLineOptionsGetPos(options, arg);
     if (pos < 0 || pos + 1 >= options->m_argc)
@@ -75,5 +84,27 @@ const char *MEAPI MeCommandLineOptionsGetString(MeCommandLineOptions *options, c
         int both[2] = {pos, pos + 1};
         MeCommandLineOptionsEat(options, both, 2);
     }
+    return (char *)value; /* Karma's signature; the text is the program's argv */
+}
+
+int MEAPI MeCommandLineOptionsGetNumeric(MeCommandLineOptions *options, const char *arg, const MeBool eat)
+{
+    const char *text = MeCommandLineOptionsGetString(options, arg, MEFALSE);
+    char *end;
+    long value = text ? strtol(text, &end, 10) : 0;
+    if (!text || end == text || *end || value < INT_MIN || value > INT_MAX)
+        return -1;
+    MeCommandLineOptionsGetString(options, arg, eat);
+    return (int)value;
+}
+
+double MEAPI MeCommandLineOptionsGetFloat(MeCommandLineOptions *options, const char *arg, const MeBool eat)
+{
+    const char *text = MeCommandLineOptionsGetString(options, arg, MEFALSE);
+    char *end;
+    double value = text ? strtod(text, &end) : 0;
+    if (!text || end == text || *end)
+        return 0;
+    MeCommandLineOptionsGetString(options, arg, eat);
     return value;
 }
