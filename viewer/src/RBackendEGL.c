@@ -19,7 +19,9 @@ static void eglDestroy(RBackend *b)
         eglMakeCurrent(e->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         if (e->context != EGL_NO_CONTEXT)
             eglDestroyContext(e->display, e->context);
-        eglTerminate(e->display);
+        /* No eglTerminate: the display is the process's one surfaceless display, shared by every
+         * headless context; terminating it would pull it from under the others. */
+        eglReleaseThread();
     }
     free(e);
 }
