@@ -23,3 +23,18 @@ foreach(bad "render;nosuchscene" "render;bounce;--frames;-3" "render;bounce;--si
                    "-DEXPECT_STDERR=^karma: .*see `karma --help`"
                    -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/expect_exit.cmake)
 endforeach()
+# A real window under Xvfb (xvfb and xauth are in make deps and .ci/run); without xvfb-run the test
+# fails and says what to install, it is never skipped.
+add_executable(viewer_window_under_xvfb ${CMAKE_CURRENT_SOURCE_DIR}/viewer/window_under_xvfb.c)
+target_link_libraries(viewer_window_under_xvfb PRIVATE karma_viewer)
+karma_apply_warnings(viewer_window_under_xvfb)
+find_program(KARMA_XVFB_RUN xvfb-run)
+if(KARMA_XVFB_RUN)
+  add_test(NAME viewer_window_under_xvfb
+           COMMAND ${KARMA_XVFB_RUN} -a -s "-screen 0 640x480x24" $<TARGET_FILE:viewer_window_under_xvfb>)
+  set_tests_properties(viewer_window_under_xvfb PROPERTIES PASS_REGULAR_EXPRESSION "12 frames drawn and shown, closed")
+else()
+  add_test(NAME viewer_window_under_xvfb
+           COMMAND ${CMAKE_COMMAND} -E echo "xvfb-run not found: install xvfb and xauth (make deps)")
+  set_tests_properties(viewer_window_under_xvfb PROPERTIES FAIL_REGULAR_EXPRESSION "not found")
+endif()
