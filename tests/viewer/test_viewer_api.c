@@ -9,6 +9,7 @@
 #include <MeViewer.h>
 
 #include "RInternal.h"
+#include "viewer_project.h"
 
 #define PI 3.14159265358979323846
 
@@ -24,22 +25,9 @@ static RRender *nullContext(const char *extra1, const char *extra2)
     return rc;
 }
 
-/* clip = (p, 1)·Cam·Proj; returns normalised device coordinates. */
 static void project(RRender *rc, const double p[3], double ndc[3])
 {
-    double e[4], c[4], h[4] = {p[0], p[1], p[2], 1};
-    for (int j = 0; j < 4; j++) {
-        e[j] = 0;
-        for (int i = 0; i < 4; i++)
-            e[j] += h[i] * rc->m_CamMatrix[i][j];
-    }
-    for (int j = 0; j < 4; j++) {
-        c[j] = 0;
-        for (int i = 0; i < 4; i++)
-            c[j] += e[i] * rc->m_ProjMatrix[i][j];
-    }
-    for (int k = 0; k < 3; k++)
-        ndc[k] = c[k] / c[3];
+    viewerProject(rc, p, ndc);
 }
 
 static void test_karma_defaults(void **state)

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "demo_view.h"
+#include "viewer_project.h"
 
 /* Small pictures keep the software renderer fast; the checks do not depend on the size. */
 #define W 320
@@ -45,21 +46,11 @@ static void draw(void)
 /* Window pixel of world point p; returns 0 when it is behind the camera or off the picture. */
 static int project(const double p[3], int *px, int *py)
 {
-    double e[4], c[4], h[4] = {p[0], p[1], p[2], 1};
-    for (int j = 0; j < 4; j++) {
-        e[j] = 0;
-        for (int i = 0; i < 4; i++)
-            e[j] += h[i] * rc->m_CamMatrix[i][j];
-    }
-    for (int j = 0; j < 4; j++) {
-        c[j] = 0;
-        for (int i = 0; i < 4; i++)
-            c[j] += e[i] * rc->m_ProjMatrix[i][j];
-    }
-    if (c[3] <= 0)
+    double ndc[3];
+    if (viewerProject(rc, p, ndc) <= 0)
         return 0;
-    *px = (int)floor((c[0] / c[3] + 1) / 2 * W);
-    *py = (int)floor((1 - c[1] / c[3]) / 2 * H);
+    *px = (int)floor((ndc[0] + 1) / 2 * W);
+    *py = (int)floor((1 - ndc[1]) / 2 * H);
     return *px >= 0 && *px < W && *py >= 0 && *py < H;
 }
 
