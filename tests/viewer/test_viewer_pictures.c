@@ -300,6 +300,31 @@ static void test_png_written(void **state)
     RGraphicDelete(rc, box, 0);
 }
 
+/* A graphic outlives the context that drew it (taken out of the lists first): it is freed without
+ * that context, and another context can draw it; the first context's pictures are not disturbed. */
+static void test_graphic_outlives_its_context(void **state)
+{
+    const float red[4] = {1, 0, 0, 1};
+    RRender *other = RRenderContextCreateHeadless(64, 48);
+    assert_non_null(other);
+    RGraphic *box = RGraphicBoxCreate(other, 2, 2, 2, red, NULL);
+    RRenderDrawFrame(other);
+    RGraphicRemoveFromList(other, box, 0);
+    RRenderContextDestroy(other);
+    /* Drawn now by the test's context, at its look-at point. */
+    MeMatrix4 tm = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+    const AcmeVector3 at = {0, 0, 0};
+    RCameraSetLookAt(rc, at);
+    RCameraSetView(rc, 10, 0, 0);
+    RGraphicSetTransformPtr(box, tm);
+    RGraphicAddToList(rc, box, 0);
+    draw();
+    const unsigned char *centre = pixel(W / 2, H / 2);
+    assert_true(centre[0] > 100 && centre[1] < 40 && centre[2] < 40);
+    RGraphicDelete(rc, box, 0);
+    RGraphicDestroy(NULL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -308,6 +333,7 @@ int main(void)
         cmocka_unit_test(test_graphic_follows_its_body),
         cmocka_unit_test(test_ground_and_sky_where_the_camera_says),
         cmocka_unit_test(test_png_written),
+        cmocka_unit_test(test_graphic_outlives_its_context),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -26,6 +26,8 @@
 #define R_VIRTUAL_H 448.0f
 
 struct RGL {
+    RBackend *backend;                /* whose context holds every object below */
+    RGraphic *graphics;               /* graphics holding GL objects of this context */
     int width, height, samples;
     GLuint msFbo, msColor, msDepth;   /* multisampled target */
     GLuint fbo, color;                /* resolved picture (offscreen) */
@@ -223,11 +225,12 @@ static void freeTargets(struct RGL *gl)
     glDeleteRenderbuffers(3, rbs);
 }
 
-struct RGL *RGLCreate(int width, int height)
+struct RGL *RGLCreate(RBackend *backend, int width, int height)
 {
     struct RGL *gl = calloc(1, sizeof *gl);
     if (!gl)
         return NULL;
+    gl->backend = backend;
     gl->width = width, gl->height = height;
     GLint maxSamples = 1;
     glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
@@ -259,6 +262,8 @@ void RGLDestroy(struct RGL *gl)
 {
     if (!gl)
         return;
+    while (gl->graphics) /* graphics taken out of the lists outlive the context */
+        RGLReleaseGraphic(gl->graphics);
     freeTargets(gl);
     glDeleteProgram(gl->prog3D);
     glDeleteProgram(gl->prog2D);
@@ -271,21 +276,44 @@ void RGLDestroy(struct RGL *gl)
 void RGLReleaseGraphic(RGraphic *rg)
 {
     struct RGraphicPrivate *p = rg->m_private;
-    if (p->vao) {
-        glDeleteVertexArrays(1, &p->vao);
-        glDeleteBuffers(1, &p->vbo);
-        p->vao = p->vbo = 0;
-    }
+    struct RGL *gl = p->gl;
+    if (!gl)
+        return;
+    gl->backend->makeCurrent(gl->backend); /* names belong to the context that made them */
+    glDeleteVertexArrays(1, &p->vao);
+    glDeleteBuffers(1, &p->vbo);
+    p->vao = p->vbo = 0;
+    p->uploaded = 0;
+    p->dirty = 1;
+    if (p->glPrev)
+        p->glPrev->m_private->glNext = p->glNext;
+    else
+        gl->graphics = p->glNext;
+    if (p->glNext)
+        p->glNext->m_private->glPrev = p->glPrev;
+    p->gl = NULL;
+    p->glPrev = p->glNext = NULL;
 }
 
-/* Positions and normals as floats, uploaded when the vertices changed. */
-static void upload(RGraphic *rg)
+/* Positions and normals as floats, uploaded when the vertices changed. A graphic drawn by a second
+ * context moves its objects there. */
+static void upload(struct RGL *gl, RGraphic *rg)
 {
     struct RGraphicPrivate *p = rg->m_private;
     int n = rg->m_pObject->m_nNumVertices;
     if (n > rg->m_nMaxNumVertices)
         n = rg->m_nMaxNumVertices;
+    if (p->gl != gl) {
+        RGLReleaseGraphic(rg);
+        gl->backend->makeCurrent(gl->backend);
+    }
     if (!p->vao) {
+        p->gl = gl;
+        p->glPrev = NULL;
+        p->glNext = gl->graphics;
+        if (gl->graphics)
+            gl->graphics->m_private->glPrev = rg;
+        gl->graphics = rg;
         glGenVertexArrays(1, &p->vao);
         glGenBuffers(1, &p->vbo);
         glBindVertexArray(p->vao);
@@ -372,7 +400,7 @@ static void draw3D(struct RGL *gl, RRender *rc)
         /* Karma's composite matrix: the followed transform, copied in each frame. */
         if (rg->m_pLWMatrix)
             memcpy(h->m_Matrix, rg->m_pLWMatrix, sizeof h->m_Matrix);
-        upload(rg);
+        upload(gl, rg);
         matrixToFloat(h->m_Matrix, m);
         /* Karma's matrices are row-vector (p·M): read as OpenGL's column-major they are the
          * column-vector matrices the shader multiplies. */

@@ -18,6 +18,8 @@ struct RGraphicPrivate {
     int inList;              /**< 0 none, 1 the 3D list, 2 the 2D list */
     int dirty;               /**< vertices changed since the last upload */
     unsigned int vao, vbo;   /**< GL objects (0 until first drawn) */
+    struct RGL *gl;          /**< the GL state that made them (NULL when none); it frees them when it goes */
+    RGraphic *glPrev, *glNext; /**< in that state's list of graphics holding GL objects */
     int uploaded;            /**< vertices in the buffer */
     float checkerCell;       /**< > 0: checkerboard of this cell size (local units) */
     char *text;              /**< kRKindText: the string */
@@ -55,16 +57,18 @@ void RCameraSetDefaults(RRender *rc);
 void RLightSetDefaults(RRender *rc);
 
 /* ---- RGL.c: drawing with OpenGL 3.3 core (a context must be current) ------------------------ */
-/** Programs, framebuffers and the font for a picture of width × height; NULL with a message. */
-struct RGL *RGLCreate(int width, int height);
-/** Free the GL objects (context current). */
+/** Programs, framebuffers and the font for a picture of width × height, in the context `backend`
+ *  makes current; NULL with a message. */
+struct RGL *RGLCreate(RBackend *backend, int width, int height);
+/** Free the GL objects, those of every graphic drawn with it too (which stay usable: they upload
+ *  again when drawn by another context). */
 void RGLDestroy(struct RGL *gl);
 /** Draw every graphic of both lists into the multisampled framebuffer, resolve it into the picture
  *  RGLReadPixels reads and, with toWindow, copy it to the window's framebuffer. */
 void RGLDrawFrame(struct RGL *gl, RRender *rc, int toWindow);
 /** Read the resolved picture (RGBA, top row first). */
 void RGLReadPixels(struct RGL *gl, unsigned char *rgba);
-/** Free a graphic's GL objects. */
+/** Free a graphic's GL objects in the context that made them (nothing when it has none). */
 void RGLReleaseGraphic(RGraphic *rg);
 
 /* ---- backends ------------------------------------------------------------------------------ */

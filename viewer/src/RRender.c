@@ -109,7 +109,7 @@ static RRender *contextStart(RRender *rc, int width, int height)
         break;
     }
     if (p->backend)
-        p->gl = RGLCreate(width, height);
+        p->gl = RGLCreate(p->backend, width, height);
     if (!p->backend || !p->gl) {
         RRenderContextDestroy(rc);
         return NULL;
