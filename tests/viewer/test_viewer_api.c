@@ -142,9 +142,11 @@ static void test_run_timeout_pause_single_step(void **state)
     ticks = 0;
     RRun(rc, countTick, &ticks);
     assert_int_equal(ticks, 3);
-    /* Paused: frames run, the callback does not; a single step calls it once. */
+    /* Paused: frames run, the callback does not; a single step calls it once. "Paused" is shown. */
     ticks = 0;
     RRenderSetPause(rc, 1);
+    assert_non_null(rc->m_pRG_First2D);
+    assert_string_equal(rc->m_pRG_First2D->m_private->text, "Paused");
     RRun(rc, countTick, NULL);
     assert_int_equal(ticks, 0);
     RRenderSingleStep(rc);
@@ -159,6 +161,7 @@ static void test_run_timeout_pause_single_step(void **state)
     assert_int_equal(ticks, 1);
     RInputKey(rc, RKEY_F8, RCONTROL);
     assert_false(rc->m_bPause);
+    assert_null(rc->m_pRG_First2D);
     RRun(rc, countTick, NULL);
     assert_int_equal(ticks, 8);
     RRenderContextDestroy(rc);

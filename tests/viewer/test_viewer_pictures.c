@@ -325,6 +325,30 @@ static void test_graphic_outlives_its_context(void **state)
     RGraphicDestroy(NULL);
 }
 
+/* Paused, the picture says so at the top right (Karma's place for it): bright text on the dark
+ * background there, and nothing there once resumed. */
+static int brightPixelsTopRight(void)
+{
+    int count = 0;
+    for (int y = 0; y < H * 20 / 448; y++)
+        for (int x = W * 570 / 640; x < W; x++)
+            count += pixel(x, y)[0] > 80;
+    return count;
+}
+
+static void test_paused_is_shown(void **state)
+{
+    const AcmeReal black[3] = {0, 0, 0};
+    for (int k = 0; k < 3; k++)
+        rc->m_backgroundColour[k] = black[k];
+    RRenderSetPause(rc, 1);
+    draw();
+    assert_true(brightPixelsTopRight() > 10);
+    RRenderSetPause(rc, 0);
+    draw();
+    assert_int_equal(brightPixelsTopRight(), 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -334,6 +358,7 @@ int main(void)
         cmocka_unit_test(test_ground_and_sky_where_the_camera_says),
         cmocka_unit_test(test_png_written),
         cmocka_unit_test(test_graphic_outlives_its_context),
+        cmocka_unit_test(test_paused_is_shown),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -43,7 +43,8 @@ int MEAPI RRenderContextDestroy(RRender *rc);
 void MEAPI RRun(RRender *rc, RMainLoopCallBack func, void *userdata);
 /** Make RRun return after the current frame. */
 void MEAPI RRenderQuit(RRender *rc);
-/** Pause (p ≠ 0) or resume: while paused RRun draws but does not call its callback; F8 steps once. */
+/** Pause (p ≠ 0) or resume: while paused RRun draws, with "Paused" at the top right, but does not
+ *  call its callback; F8 steps once. */
 void MEAPI RRenderSetPause(RRender *rc, int p);
 /** Addition: while paused, let RRun call its callback once more (what F8 does). */
 void MEAPI RRenderSingleStep(RRender *rc);

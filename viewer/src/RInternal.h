@@ -41,6 +41,7 @@ struct RRenderPrivate {
     int singleStep;          /**< a single step is pending */
     int drawn;               /**< a frame has been drawn */
     RDrag drag;
+    RGraphic *pausedText;    /**< "Paused", in the 2D list while paused */
     char title[128];
 };
 

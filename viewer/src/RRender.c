@@ -159,7 +159,7 @@ int MEAPI RRenderContextDestroy(RRender *rc)
     if (p->backend)
         p->backend->makeCurrent(p->backend);
     deleteList(rc, 0);
-    deleteList(rc, 1);
+    deleteList(rc, 1); /* the "Paused" text too */
     RGLDestroy(p->gl);
     if (p->backend)
         p->backend->destroy(p->backend);
@@ -175,10 +175,23 @@ void MEAPI RRenderQuit(RRender *rc)
         rc->m_bQuitNextFrame = 1;
 }
 
+/** Karma's "Paused" overlay: grey text at the top right of the virtual 640 × 448 screen. */
+#define R_PAUSED_X 575
+#define R_PAUSED_Y 0
+
 void MEAPI RRenderSetPause(RRender *rc, int p)
 {
-    if (rc)
-        rc->m_bPause = p != 0;
+    if (!rc)
+        return;
+    rc->m_bPause = p != 0;
+    struct RRenderPrivate *priv = rc->m_private;
+    if (rc->m_bPause && !priv->pausedText) {
+        static const float grey[4] = {0.6f, 0.6f, 0.6f, 1};
+        priv->pausedText = RGraphicTextCreate(rc, "Paused", R_PAUSED_X, R_PAUSED_Y, grey);
+    } else if (!rc->m_bPause && priv->pausedText) {
+        RGraphicDelete(rc, priv->pausedText, 1);
+        priv->pausedText = NULL;
+    }
 }
 
 void MEAPI RRenderSingleStep(RRender *rc)
