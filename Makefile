@@ -29,7 +29,12 @@ PREFIX  ?= /usr/local
 JOBS    ?= 2
 FUZZ_SECONDS ?= 60
 FUZZERS := fuzz_pairs fuzz_lineseg fuzz_space fuzz_api
-DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config gcovr gnuplot-nox doxygen clang libclang-rt-14-dev
+# The viewer (viewer/, karma render/view): GLFW, libepoxy, stb, the DejaVu font, and Mesa's EGL and
+# software renderer for pictures without a display, Xvfb for the window test (all run in make test).
+VIEWER_PACKAGES := libglfw3-dev libepoxy-dev libstb-dev fonts-dejavu-core libegl1 libegl-mesa0 libgl1-mesa-dri \
+                   xvfb xauth
+DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config gcovr gnuplot-nox doxygen clang libclang-rt-14-dev \
+                   $(VIEWER_PACKAGES)
 
 .PHONY: all deps build test coverage demo install docs bench bench-scenes soak fuzz clean
 

@@ -3,6 +3,8 @@
  *     karma list
  *     karma run SCENE [--steps N] [--dt H] [--csv FILE [--long]]
  *     karma plot SCENE [--steps N] [--dt H] [--csv FILE] [--png FILE]
+ *     karma render SCENE [--frames N] [--size WxH] [--out FILE]     (built with the viewer)
+ *     karma view SCENE [-size WxH] [-timeout N]                       (built with the viewer)
  *     karma version
  *     karma --help
  *
@@ -20,6 +22,9 @@
 #include <string.h>
 
 #include "demo.h"
+#ifdef KARMA_HAVE_VIEWER
+#include "karma_view.h"
+#endif
 
 #define EXIT_USAGE 2
 
@@ -43,6 +48,13 @@ static void printUsage(FILE *out)
             "                            each body's height over time) and draw it if gnuplot is installed\n"
             "      --steps N, --dt H, --csv FILE   as for run\n"
             "      --png FILE            draw into FILE instead of the terminal\n"
+            "  render SCENE [options]    draw SCENE without a display (EGL) and write a PNG picture\n"
+            "      --frames N            frames before the picture, one step each (default: the scene's steps)\n"
+            "      --size WxH            picture size in pixels (default 1280x720)\n"
+            "      --out FILE            the PNG file (default SCENE.png)\n"
+            "  view SCENE [options]      open a window on SCENE (mouse: left orbits, middle zooms, right pans;\n"
+            "                            Esc quits, F8 single step, Ctrl+F8 pause); options: -size WxH,\n"
+            "                            -timeout N (frames), -headless, -null, -wireframe\n"
             "  version                   print the library version and precision\n"
             "  help, --help, -h          print this help\n"
             "\n"
@@ -445,5 +457,12 @@ int main(int argc, char **argv)
         return runScene(argc - 2, argv + 2, MEFALSE);
     if (strcmp(command, "plot") == 0)
         return runScene(argc - 2, argv + 2, METRUE);
+    if (strcmp(command, "render") == 0 || strcmp(command, "view") == 0) {
+#ifdef KARMA_HAVE_VIEWER
+        return command[0] == 'r' ? KarmaRender(argc - 2, argv + 2) : KarmaView(argc - 2, argv + 2);
+#else
+        return usageError("`%s` needs the viewer: this karma was built without it (KARMA_BUILD_VIEWER=OFF)", command);
+#endif
+    }
     return usageError("unknown command '%s'", command);
 }

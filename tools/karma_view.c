@@ -1,0 +1,172 @@
+/* karma_view.c -- `karma render` and `karma view`: a registry scene drawn by the viewer. Each frame
+ * is one step of the scene, as a Karma demo's tick steps once per frame; `render` draws the last. */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime */
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "demo_view.h"
+#include "karma_view.h"
+
+#define EXIT_USAGE 2
+
+static int usage(const char *format, const char *argument)
+{
+    fprintf(stderr, "karma: ");
+    fprintf(stderr, format, argument);
+    fprintf(stderr, "\n(see `karma --help`)\n");
+    return EXIT_USAGE;
+}
+
+static double seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static MeBool parseSize(const char *text, int *w, int *h)
+{
+    char *end;
+    errno = 0;
+    long a = strtol(text, &end, 10);
+    if (errno || end == text || *end != 'x')
+        return MEFALSE;
+    const char *second = end + 1;
+    long b = strtol(second, &end, 10);
+    if (errno || end == second || *end || a < 1 || b < 1 || a > 8192 || b > 8192)
+        return MEFALSE;
+    *w = (int)a, *h = (int)b;
+    return METRUE;
+}
+
+int KarmaRender(int argc, char **argv)
+{
+    if (argc < 1)
+        return usage("%s", "`render` needs a scene (see `karma list`)");
+    const DemoScene *scene = DemoSceneFind(argv[0]);
+    if (!scene)
+        return usage("no scene '%s' (see `karma list`)", argv[0]);
+    long frames = scene->defaultSteps;
+    int width = 1280, height = 720;
+    char defaultOut[64];
+    snprintf(defaultOut, sizeof defaultOut, "%s.png", scene->name);
+    const char *out = defaultOut;
+    for (int i = 1; i < argc; i++) {
+        const char *option = argv[i];
+        if (i + 1 >= argc)
+            return usage("'%s' needs a value, or is not an option of `render`", option);
+        const char *value = argv[++i];
+        if (strcmp(option, "--frames") == 0) {
+            char *end;
+            errno = 0;
+            frames = strtol(value, &end, 10);
+            if (errno || end == value || *end || frames < 0 || frames > INT_MAX)
+                return usage("--frames takes a count of frames >= 0 (got '%s')", value);
+        } else if (strcmp(option, "--size") == 0) {
+            if (!parseSize(value, &width, &height))
+                return usage("--size takes WxH, each 1 to 8192 (got '%s')", value);
+        } else if (strcmp(option, "--out") == 0) {
+            out = value;
+        } else {
+            return usage("unknown option '%s' of `render`", option);
+        }
+    }
+    DemoInstance demo;
+    if (!DemoCreate(scene, &demo)) {
+        fprintf(stderr, "karma: scene '%s' could not be built\n", scene->name);
+        return EXIT_FAILURE;
+    }
+    RRender *rc = RRenderContextCreateHeadless(width, height);
+    DemoView view;
+    if (!rc || !DemoViewCreate(&view, rc, &demo)) {
+        fprintf(stderr, "karma: cannot draw without a display here (EGL with Mesa is needed)\n");
+        RRenderContextDestroy(rc);
+        DemoDestroy(&demo);
+        return EXIT_FAILURE;
+    }
+    double physics = 0, drawing = 0;
+    for (long f = 0; f < frames; f++) {
+        double t0 = seconds();
+        DemoStep(&demo, scene->defaultStepSize);
+        physics += seconds() - t0;
+    }
+    /* Only the last frame is drawn, its picture is what --out asks for, framed where the scene is now. */
+    DemoViewFrame(&view, &demo);
+    double t0 = seconds();
+    RRenderDrawFrame(rc);
+    drawing = seconds() - t0;
+    int status = RRenderSavePNG(rc, out) == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+    if (status == EXIT_SUCCESS)
+        printf("%s: %ld frames (%.3f s simulated), %dx%d, written to %s; physics %.3f s, drawing the frame %.1f ms\n",
+               scene->name, frames, (double)demo.time, width, height, out, physics, 1e3 * drawing);
+    DemoViewDestroy(&view);
+    RRenderContextDestroy(rc);
+    DemoDestroy(&demo);
+    return status;
+}
+
+static void MEAPI tick(RRender *rc, void *userdata)
+{
+    DemoInstance *demo = userdata;
+    DemoStep(demo, demo->scene->defaultStepSize);
+}
+
+int KarmaView(int argc, char **argv)
+{
+    if (argc < 1)
+        return usage("%s", "`view` needs a scene (see `karma list`)");
+    const DemoScene *scene = DemoSceneFind(argv[0]);
+    if (!scene)
+        return usage("no scene '%s' (see `karma list`)", argv[0]);
+    /* Everything after the scene is for the viewer; checked before a window opens. */
+    for (int i = 1; i < argc; i++) {
+        static const char *const flags[] = {"-gl", "-null", "-headless", "-wireframe", "-notextures"};
+        MeBool known = MEFALSE;
+        for (size_t k = 0; k < sizeof flags / sizeof flags[0]; k++)
+            known = known || strcmp(argv[i], flags[k]) == 0;
+        if (!known && (strcmp(argv[i], "-size") == 0 || strcmp(argv[i], "-timeout") == 0)) {
+            if (i + 1 >= argc)
+                return usage("'%s' needs a value", argv[i]);
+            known = METRUE;
+            i++;
+        }
+        if (!known)
+            return usage("unknown option '%s' of `view`", argv[i]);
+    }
+    MeCommandLineOptions *options = MeCommandLineOptionsCreate(argc - 1, (const char **)(argv + 1));
+    RRender *rc = RRenderContextCreate(options, NULL, METRUE);
+    int unread = options ? options->m_argc : 0;
+    const char *first = unread ? options->p_argv[0] : NULL;
+    MeCommandLineOptionsDestroy(options);
+    if (unread) {
+        RRenderContextDestroy(rc);
+        return usage("unknown option '%s' of `view`", first);
+    }
+    if (!rc)
+        return EXIT_FAILURE;
+    DemoInstance demo;
+    DemoView view;
+    if (!DemoCreate(scene, &demo)) {
+        RRenderContextDestroy(rc);
+        return EXIT_FAILURE;
+    }
+    if (!DemoViewCreate(&view, rc, &demo)) {
+        RRenderContextDestroy(rc);
+        DemoDestroy(&demo);
+        return EXIT_FAILURE;
+    }
+    char title[128];
+    snprintf(title, sizeof title, "Karma: %s (%s)", scene->name, scene->description);
+    RRenderSetWindowTitle(rc, title);
+    RRenderSetAppName(rc, scene->name);
+    RRun(rc, tick, &demo);
+    printf("%s: %lu steps (%.3f s simulated)\n", scene->name, demo.steps, (double)demo.time);
+    DemoViewDestroy(&view);
+    RRenderContextDestroy(rc);
+    DemoDestroy(&demo);
+    return EXIT_SUCCESS;
+}

@@ -1,0 +1,12 @@
+/* karma_view.h -- the karma tool's viewer commands (built when the viewer is): `render` writes
+ * pictures of a scene without a display, `view` opens a window on it. */
+#ifndef KARMA_TOOL_VIEW_H
+#define KARMA_TOOL_VIEW_H
+
+/** `karma render SCENE [--frames N] [--size WxH] [--out FILE]`: exit status 0, 1 (scene or
+ *  renderer failed), 2 (bad command line). argv[0] is the scene. */
+int KarmaRender(int argc, char **argv);
+/** `karma view SCENE [--size WxH] [viewer options]`: the scene in a window until it is closed. */
+int KarmaView(int argc, char **argv);
+
+#endif /* KARMA_TOOL_VIEW_H */

@@ -1,0 +1,203 @@
+/* MeViewer.h -- Karma's viewer: render contexts, graphics that follow bodies' matrices, the orbit
+ * camera, lights, text, callbacks and the main loop, under Karma 1.2's names (library karma_viewer,
+ * OpenGL 3.3 core; the core library karma never depends on it).
+ *
+ * A Karma program:
+ *     options = MeCommandLineOptionsCreate(argc, argv);
+ *     rc = RRenderContextCreate(options, 0, !MEFALSE);
+ *     MeCommandLineOptionsDestroy(options);
+ *     g = RGraphicBoxCreate(rc, 1, 1, 1, red, MdtBodyGetTransformPtr(body));
+ *     RRun(rc, tick, 0);                 (tick steps the physics; the viewer draws after each tick)
+ *     RRenderContextDestroy(rc);
+ *
+ * Units are the application's (metres), angles radians, colours RGBA floats in [0, 1]. 2D positions
+ * (text) are in Karma's virtual 640×448 screen, origin at the top left, whatever the real size.
+ * Additions of this library (not in Karma 1.2) are marked so and listed in docs/api_changes.md. */
+#ifndef ME_VIEWER_H
+#define ME_VIEWER_H
+
+#include <karma/MePrecision.h>
+#include <karma/McdTypes.h>
+
+#include "MeCommandLine.h"
+#include "MeViewerTypes.h"
+
+ME_EXTERN_C_BEGIN
+
+/* ---- render context ------------------------------------------------------------------------ */
+
+/** A context from command-line options (either may be NULL; `overrideoptions` win): -gl (window,
+ *  the default), -null (no drawing), -headless (offscreen through EGL, no display needed), -size WxH,
+ *  -timeout N (RRun returns after N frames), -wireframe, -notextures. With `eat` the options read are
+ *  removed from `options`. Window 640×448, camera at distance 15 from look-at (0, 0, 1), θ = φ = 0,
+ *  vertical half-angle π/6, black background, Karma's lights. NULL (with a message) when no window
+ *  or surface can be made. */
+RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLineOptions *overrideoptions, int eat);
+/** Addition: an offscreen context of width × height pixels (1 … 8192) without a display (EGL on
+ *  Mesa); NULL with a message when EGL or OpenGL 3.3 is not available. */
+RRender *MEAPI RRenderContextCreateHeadless(int width, int height);
+/** Destroy the context, its graphics and its window or surface. Returns 0 (NULL is accepted). */
+int MEAPI RRenderContextDestroy(RRender *rc);
+/** Run: each frame handle input, call `func` (unless paused; once per single step), draw. Returns
+ *  when the window closes, Esc is pressed, RRenderQuit is called or -timeout frames have passed. */
+void MEAPI RRun(RRender *rc, RMainLoopCallBack func, void *userdata);
+/** Make RRun return after the current frame. */
+void MEAPI RRenderQuit(RRender *rc);
+/** Pause (p ≠ 0) or resume: while paused RRun draws, with "Paused" at the top right, but does not
+ *  call its callback; F8 steps once. */
+void MEAPI RRenderSetPause(RRender *rc, int p);
+/** Addition: while paused, let RRun call its callback once more (what F8 does). */
+void MEAPI RRenderSingleStep(RRender *rc);
+/** The window's title (copied). */
+void MEAPI RRenderSetWindowTitle(RRender *rc, const char *title);
+/** The name substituted for $APPNAME in help text (copied, at most 39 characters). */
+void MEAPI RRenderSetAppName(RRender *rc, const char *appname);
+/** Addition: draw one frame now (offscreen for headless contexts, into the window otherwise). */
+void MEAPI RRenderDrawFrame(RRender *rc);
+/** Addition: size of the picture in pixels. */
+void MEAPI RRenderGetSize(RRender *rc, int *width, int *height);
+/** Addition: read the last frame drawn as RGBA bytes, top row first, into `rgba` (width·height·4
+ *  bytes). Returns 0, or −1 for a null context or one that has not drawn. */
+int MEAPI RRenderReadPixels(RRender *rc, unsigned char *rgba);
+/** Addition: write the last frame drawn to a PNG file. Returns 0, or −1 with a message. */
+int MEAPI RRenderSavePNG(RRender *rc, const char *filename);
+/** Redraw everything as wireframe (b true) or filled. */
+void MEAPI RRenderSetWireframe(RRender *rc, MeBool b);
+
+/* ---- graphics ------------------------------------------------------------------------------ */
+
+/** An empty triangle list of room for numVertices vertices, in no list (NULL when out of memory). */
+RGraphic *MEAPI RGraphicCreateEmpty(int numVertices);
+/** Box of full extents width (x) × height (y) × depth (z), centred; follows `matrix` when not NULL. */
+RGraphic *MEAPI RGraphicBoxCreate(RRender *rc, AcmeReal width, AcmeReal height, AcmeReal depth,
+                                  const float color[4], MeMatrix4Ptr matrix);
+/** Sphere of `radius` centred on the origin. */
+RGraphic *MEAPI RGraphicSphereCreate(RRender *rc, AcmeReal radius, const float color[4], MeMatrix4Ptr matrix);
+/** Cylinder of `radius` and total `height` along z, centred. */
+RGraphic *MEAPI RGraphicCylinderCreate(RRender *rc, AcmeReal radius, AcmeReal height, const float color[4],
+                                       MeMatrix4Ptr matrix);
+/** Cone along z: base disc of `radius` at z = −lower_height, apex at z = upper_height. */
+RGraphic *MEAPI RGraphicConeCreate(RRender *rc, AcmeReal radius, AcmeReal upper_height, AcmeReal lower_height,
+                                   const float color[4], MeMatrix4Ptr matrix);
+/** Truncated cone along z from z = bottom (bottomRadius) to z = top (topRadius) with `sides` sides. */
+RGraphic *MEAPI RGraphicFrustumCreate(RRender *rc, AcmeReal bottomRadius, AcmeReal topRadius, AcmeReal bottom,
+                                      AcmeReal top, int sides, const float color[4], MeMatrix4Ptr matrix);
+/** Sphyl (capsule) along z: a cylinder part of `height` between two hemispheres of `radius`. */
+RGraphic *MEAPI RGraphicSphylCreate(RRender *rc, AcmeReal radius, AcmeReal height, const float color[4],
+                                    MeMatrix4Ptr matrix);
+/** Torus about z: tube radius innerRadius, centre-line radius outerRadius. */
+RGraphic *MEAPI RGraphicTorusCreate(RRender *rc, AcmeReal innerRadius, AcmeReal outerRadius, const float color[4],
+                                    MeMatrix4Ptr matrix);
+/** Square of `side` in the local x–y plane (normal +z), centred, drawn with a checkerboard of cells
+ *  side/8 (the plane of a model). */
+RGraphic *MEAPI RGraphicSquareCreate(RRender *rc, AcmeReal side, const float color[4], MeMatrix4Ptr matrix);
+/** Ground: a square of side_length in the x–z plane at height y_position (normal +y), triangles_per_side
+ *  cells of a checkerboard along each side. */
+RGraphic *MEAPI RGraphicGroundPlaneCreate(RRender *rc, AcmeReal side_length, int triangles_per_side,
+                                          const float color[4], AcmeReal y_position);
+/** A line segment from origin to end (unlit). */
+RGraphic *MEAPI RGraphicLineCreate(RRender *rc, AcmeReal origin[3], AcmeReal end[3], const float color[4],
+                                   MeMatrix4Ptr matrix);
+/** Move a line's ends. Returns 0, or −1 when lineG is not a line. */
+int MEAPI RGraphicLineMoveEnds(RGraphic *lineG, AcmeReal *origin, AcmeReal *end);
+/** Text at (orig_x, orig_y) in the virtual 640×448 screen (top left of the text), in the 2D list. */
+RGraphic *MEAPI RGraphicTextCreate(RRender *rc, char *text, AcmeReal orig_x, AcmeReal orig_y, const float color[4]);
+/** The graphic of a model's geometry (sphere, box, cylinder, cone, sphyl, plane), following the
+ *  model's transform. NULL (with a message) for a geometry type it cannot draw. */
+RGraphic *MEAPI RGraphicCreateFromModel(RRender *rc, McdModelID m, float color[4]);
+/** The graphic of a geometry, following `matrix`. NULL for a type it cannot draw. */
+RGraphic *MEAPI RGraphicCreateFromGeometry(RRender *rc, McdGeometryID g, float color[4], MeMatrix4Ptr matrix);
+
+/** Put a graphic in the 3D (is2D = 0) or 2D list (primitives are put there when created). */
+void MEAPI RGraphicAddToList(RRender *rc, RGraphic *rg, int is2D);
+/** Take a graphic out of its list (it is kept, hidden). */
+void MEAPI RGraphicRemoveFromList(RRender *rc, RGraphic *rg, int is2D);
+/** Free a graphic that is in no list (NULL is accepted). */
+void MEAPI RGraphicDestroy(RGraphic *rg);
+/** Take a graphic out of its list and free it. */
+void MEAPI RGraphicDelete(RRender *rc, RGraphic *rg, int is2D);
+/** Follow `matrix` (a body's or model's transform; NULL: the graphic's own m_Matrix). */
+void MEAPI RGraphicSetTransformPtr(RGraphic *g, MeMatrix4Ptr matrix);
+/** Colour (ambient and diffuse from it, alpha < 1 blends). */
+void MEAPI RGraphicSetColor(RGraphic *g, const float color[4]);
+/** The graphic's colour. */
+void MEAPI RGraphicGetColor(RGraphic *g, float color[4]);
+/** Draw this graphic as wireframe (b true) or filled. */
+void MEAPI RGraphicSetWireframe(RGraphic *g, MeBool b);
+
+/* ---- lights -------------------------------------------------------------------------------- */
+
+/** Switch a light on: the ambient light, directional lights 1 and 2, the point light. */
+void MEAPI RLightSwitchOn(RRender *rc, RRenderLight light);
+/** Switch a light off. */
+void MEAPI RLightSwitchOff(RRender *rc, RRenderLight light);
+
+/* ---- camera -------------------------------------------------------------------------------- */
+
+/** Orbit the look-at point at distance `dist` (≥ 0.01), rotation θ about y from +z and elevation φ. */
+void MEAPI RCameraSetView(RRender *rc, AcmeReal dist, AcmeReal theta, AcmeReal phi);
+/** The point the camera looks at. */
+void MEAPI RCameraSetLookAt(RRender *rc, const AcmeVector3 lookAt);
+/** The point the camera looks at. */
+void MEAPI RCameraGetLookAt(RRender *rc, AcmeVector3 camlookat);
+/** Place the camera at `position` looking at `lookAt` (distance, θ and φ follow). */
+void MEAPI RCameraSetLookAtAndPosition(RRender *rc, const MeVector3 lookAt, const MeVector3 position);
+/** The camera's position in the world. */
+void MEAPI RCameraGetPosition(RRender *rc, AcmeVector3 pos);
+/** Distance from the look-at point. */
+AcmeReal MEAPI RCameraGetDistance(RRender *rc);
+/** Elevation φ (rad). */
+AcmeReal MEAPI RCameraGetElevation(RRender *rc);
+/** Rotation θ (rad). */
+AcmeReal MEAPI RCameraGetRotation(RRender *rc);
+/** Set the elevation φ (rad, kept within ±(π/2 − 0.001)). */
+void MEAPI RCameraSetElevation(RRender *rc, const MeReal elevation);
+/** The camera's up vector in the world. */
+void MEAPI RCameraGetUp(RRender *rc, AcmeVector3 up);
+/** The world-to-eye matrix (Karma's row convention). */
+void MEAPI RCameraGetMatrix(RRender *rc, MeMatrix4Ptr m);
+/** Half of the vertical field of view (rad, in (0, π/2)). */
+void MEAPI RCameraSetFov(RRender *rc, AcmeReal fov);
+/** Move the look-at point (and the camera) by dist along the camera's right vector. */
+void MEAPI RCameraPanX(RRender *rc, AcmeReal dist);
+/** Move the look-at point by dist along the world's up (y). */
+void MEAPI RCameraPanY(RRender *rc, AcmeReal dist);
+/** Move the look-at point by dist along the view direction projected on the ground. */
+void MEAPI RCameraPanZ(RRender *rc, AcmeReal dist);
+/** Add d_theta to the rotation θ. */
+void MEAPI RCameraRotateAngle(RRender *rc, AcmeReal d_theta);
+/** Add d_phi to the elevation φ. */
+void MEAPI RCameraRotateElevation(RRender *rc, AcmeReal d_phi);
+/** Move dist closer to the look-at point (the distance stays ≥ 0.01). */
+void MEAPI RCameraZoom(RRender *rc, AcmeReal dist);
+/** Recompute the camera and projection matrices (the setters above call it). */
+void MEAPI RCameraUpdate(RRender *rc);
+
+/* ---- input callbacks ----------------------------------------------------------------------- */
+
+/** Called when the Up arrow is pressed (Karma's Up button). */
+void MEAPI RRenderSetUpCallBack(RRender *rc, RButtonPressCallBack func, void *userdata);
+/** Called when the Down arrow is pressed (Karma's Down button). */
+void MEAPI RRenderSetDownCallBack(RRender *rc, RButtonPressCallBack func, void *userdata);
+/** Called when the Left arrow is pressed (Karma's Left button). */
+void MEAPI RRenderSetLeftCallBack(RRender *rc, RButtonPressCallBack func, void *userdata);
+/** Called when the Right arrow is pressed (Karma's Right button). */
+void MEAPI RRenderSetRightCallBack(RRender *rc, RButtonPressCallBack func, void *userdata);
+/** Called when w is pressed (Karma's Up2 button). */
+void MEAPI RRenderSetUp2CallBack(RRender *rc, RButtonPressCallBack func, void *userdata);
+/** Called when s is pressed (Karma's Down2 button). */
+void MEAPI RRenderSetDown2CallBack(RRender *rc, RButtonPressCallBack func, void *userdata);
+/** Called when a is pressed (Karma's Left2 button). */
+void MEAPI RRenderSetLeft2CallBack(RRender *rc, RButtonPressCallBack func, void *userdata);
+/** Called when d is pressed (Karma's Right2 button). */
+void MEAPI RRenderSetRight2CallBack(RRender *rc, RButtonPressCallBack func, void *userdata);
+/** Action N (0–5): keys h, m, Enter, Space, o, p by default. N out of range is reported and ignored. */
+void MEAPI RRenderSetActionNCallBack(RRender *rc, int N, RButtonPressCallBack func, void *userdata);
+/** The key of action N (2–5 only; a printable character). */
+void MEAPI RRenderSetActionNKey(RRender *rc, const unsigned int N, const char key);
+/** Mouse events with Ctrl, Shift or Alt held go to `func` (without a modifier the mouse moves the camera). */
+void MEAPI RRenderSetMouseCallBack(RRender *rc, RMouseCallBack func, void *userdata);
+
+ME_EXTERN_C_END
+
+#endif /* ME_VIEWER_H */

@@ -1,0 +1,162 @@
+/* RInput.c -- Karma's PC key map and mouse, and the application's callbacks:
+ * arrows Up/Down/Left/Right, w s a d Up2/Down2/Left2/Right2, h m Enter Space o p actions 0–5, Esc
+ * quits, + and − zoom, F2 wireframe, F8 single step (pausing), Ctrl+F8 pause/play, PgUp/PgDn move
+ * the look-at point along z. Mouse without modifier: left drag orbits, middle drag zooms, right drag
+ * pans; with Ctrl, Shift or Alt events go to the application's mouse callback. */
+#include <ctype.h>
+
+#include "RInternal.h"
+
+/** Radians of orbit per pixel dragged, metres of zoom per pixel, look-at step of PgUp/PgDn. */
+#define R_ORBIT_PER_PIXEL 0.01f
+#define R_ZOOM_PER_PIXEL 0.05f
+#define R_PAN_PER_PIXEL 0.02f
+#define R_KEY_ZOOM 1.0f
+#define R_KEY_PAN 0.5f
+
+static void setButton(RRender *rc, RButtonList b, RButtonPressCallBack func, void *userdata)
+{
+    if (!rc)
+        return;
+    rc->m_pCallBacks->m_Button[b].m_CallBack = func;
+    rc->m_pCallBacks->m_Button[b].m_Userdata = userdata;
+}
+
+void MEAPI RRenderSetUpCallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonUp, f, d); }
+void MEAPI RRenderSetDownCallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonDown, f, d); }
+void MEAPI RRenderSetLeftCallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonLeft, f, d); }
+void MEAPI RRenderSetRightCallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonRight, f, d); }
+void MEAPI RRenderSetUp2CallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonUp2, f, d); }
+void MEAPI RRenderSetDown2CallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonDown2, f, d); }
+void MEAPI RRenderSetLeft2CallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonLeft2, f, d); }
+void MEAPI RRenderSetRight2CallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonRight2, f, d); }
+
+void MEAPI RRenderSetActionNCallBack(RRender *rc, int N, RButtonPressCallBack func, void *userdata)
+{
+    if (!rc)
+        return;
+    if (N < 0 || N >= NUM_ACTION_CALLBACKS) {
+        R_REPORT(ME_ERR_ARGUMENT_RANGE, "RRenderSetActionNCallBack", "action %d is not 0 to %d", N, NUM_ACTION_CALLBACKS - 1);
+        return;
+    }
+    rc->m_pCallBacks->m_Action[N].m_CallBack = func;
+    rc->m_pCallBacks->m_Action[N].m_Userdata = userdata;
+}
+
+void MEAPI RRenderSetActionNKey(RRender *rc, const unsigned int N, const char key)
+{
+    if (!rc)
+        return;
+    if (N < 2 || N >= NUM_ACTION_CALLBACKS || !isprint((unsigned char)key)) {
+        R_REPORT(ME_ERR_ARGUMENT_RANGE, "RRenderSetActionNKey", "only actions 2 to %d take a printable key (action %u)",
+                 NUM_ACTION_CALLBACKS - 1, N);
+        return;
+    }
+    rc->m_pCallBacks->m_actionKeys[N - 2] = (unsigned char)tolower((unsigned char)key);
+}
+
+void MEAPI RRenderSetMouseCallBack(RRender *rc, RMouseCallBack func, void *userdata)
+{
+    if (!rc)
+        return;
+    rc->m_pCallBacks->m_Mouse.m_CallBack = func;
+    rc->m_pCallBacks->m_Mouse.m_Userdata = userdata;
+}
+
+static void press(RRender *rc, const RCallBackDataButton *b)
+{
+    if (b->m_CallBack)
+        b->m_CallBack(rc, b->m_Userdata);
+}
+
+/* The character of a key for the action map (Enter is '\r'), or 0. */
+static int keyChar(int key)
+{
+    if (key == RKEY_ENTER)
+        return '\r';
+    if (key == ' ' || (key >= '0' && key <= '9'))
+        return key;
+    if (key >= 'A' && key <= 'Z')
+        return key - 'A' + 'a';
+    return 0;
+}
+
+void RInputKey(RRender *rc, int key, int modifiers)
+{
+    RRenderCallBacks *cb = rc->m_pCallBacks;
+    switch (key) {
+    case RKEY_ESCAPE: RRenderQuit(rc); return;
+    case RKEY_UP: press(rc, &cb->m_Button[kRButtonUp]); return;
+    case RKEY_DOWN: press(rc, &cb->m_Button[kRButtonDown]); return;
+    case RKEY_LEFT: press(rc, &cb->m_Button[kRButtonLeft]); return;
+    case RKEY_RIGHT: press(rc, &cb->m_Button[kRButtonRight]); return;
+    case RKEY_PAGE_UP: RCameraPanZ(rc, R_KEY_PAN); return;
+    case RKEY_PAGE_DOWN: RCameraPanZ(rc, -R_KEY_PAN); return;
+    case RKEY_KP_ADD: case '=': RCameraZoom(rc, R_KEY_ZOOM); return;
+    case RKEY_KP_SUBTRACT: case '-': RCameraZoom(rc, -R_KEY_ZOOM); return;
+    case RKEY_F2: RRenderSetWireframe(rc, !rc->m_options.m_bWireFrame); return;
+    case RKEY_F8:
+        if (modifiers & RCONTROL) {
+            RRenderSetPause(rc, !rc->m_bPause);
+        } else {
+            RRenderSetPause(rc, 1);
+            RRenderSingleStep(rc);
+        }
+        return;
+    default: break;
+    }
+    int c = keyChar(key);
+    switch (c) {
+    case 'w': press(rc, &cb->m_Button[kRButtonUp2]); return;
+    case 's': press(rc, &cb->m_Button[kRButtonDown2]); return;
+    case 'a': press(rc, &cb->m_Button[kRButtonLeft2]); return;
+    case 'd': press(rc, &cb->m_Button[kRButtonRight2]); return;
+    case 'h': press(rc, &cb->m_Action[0]); return;
+    case 'm': press(rc, &cb->m_Action[1]); return;
+    default: break;
+    }
+    for (int n = 2; c && n < NUM_ACTION_CALLBACKS; n++)
+        if (cb->m_actionKeys[n - 2] == c) {
+            press(rc, &cb->m_Action[n]);
+            return;
+        }
+}
+
+void RInputMouseButton(RRender *rc, int x, int y, int modifiers, RMouseButtonWhich which, RMouseButtonEvent event)
+{
+    const RCallBackDataMouse *m = &rc->m_pCallBacks->m_Mouse;
+    if (modifiers & (RCONTROL | RSHIFT | RALT)) {
+        if (m->m_CallBack)
+            m->m_CallBack(rc, x, y, modifiers, which, event, m->m_Userdata);
+        return;
+    }
+    RDrag *drag = &rc->m_private->drag;
+    drag->x = x, drag->y = y, drag->active = event == kRNewlyPressed;
+}
+
+void RInputMouseMove(RRender *rc, int x, int y, int modifiers, int buttons)
+{
+    const RCallBackDataMouse *m = &rc->m_pCallBacks->m_Mouse;
+    if (modifiers & (RCONTROL | RSHIFT | RALT)) {
+        for (int k = 0; k < 3; k++)
+            if ((buttons >> k & 1) && m->m_CallBack)
+                m->m_CallBack(rc, x, y, modifiers, (RMouseButtonWhich)(k + 1), kRStillPressed, m->m_Userdata);
+        return;
+    }
+    RDrag *drag = &rc->m_private->drag;
+    if (!drag->active || !buttons) {
+        drag->x = x, drag->y = y;
+        return;
+    }
+    float dx = (float)(x - drag->x), dy = (float)(y - drag->y);
+    drag->x = x, drag->y = y;
+    if (buttons & 1) {
+        RCameraRotateAngle(rc, -dx * R_ORBIT_PER_PIXEL);
+        RCameraRotateElevation(rc, dy * R_ORBIT_PER_PIXEL);
+    } else if (buttons & 2) {
+        RCameraZoom(rc, -dy * R_ZOOM_PER_PIXEL);
+    } else if (buttons & 4) {
+        RCameraPanX(rc, -dx * R_PAN_PER_PIXEL);
+        RCameraPanY(rc, dy * R_PAN_PER_PIXEL);
+    }
+}

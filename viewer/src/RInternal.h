@@ -1,0 +1,107 @@
+/* RInternal.h -- what the viewer's files share: the private parts of a context and a graphic, and
+ * the backends (window through GLFW, offscreen through EGL) behind one small interface. */
+#ifndef R_INTERNAL_H
+#define R_INTERNAL_H
+
+#include <karma/MeMessage.h>
+
+#include "MeViewer.h"
+
+/** Report a coded message (docs/errors.md) from viewer function `fn`. */
+#define R_REPORT(code, fn, ...) MeReport((code), (fn), __FILE__, __LINE__, __VA_ARGS__)
+
+/** What a graphic draws. */
+typedef enum { kRKindTriangles, kRKindLines, kRKindText } RGraphicKind;
+
+struct RGraphicPrivate {
+    RGraphicKind kind;
+    int inList;              /**< 0 none, 1 the 3D list, 2 the 2D list */
+    int dirty;               /**< vertices changed since the last upload */
+    unsigned int vao, vbo;   /**< GL objects (0 until first drawn) */
+    struct RGL *gl;          /**< the GL state that made them (NULL when none); it frees them when it goes */
+    RGraphic *glPrev, *glNext; /**< in that state's list of graphics holding GL objects */
+    int uploaded;            /**< vertices in the buffer */
+    float checkerCell;       /**< > 0: checkerboard of this cell size (local units) */
+    char *text;              /**< kRKindText: the string */
+    float x, y;              /**< kRKindText: top left in the virtual 640×448 screen */
+};
+
+typedef struct RBackend RBackend;
+
+/** Where the last camera drag was (window pixels). */
+typedef struct RDrag {
+    int x, y, active;
+} RDrag;
+
+struct RRenderPrivate {
+    int width, height;       /**< picture size in pixels */
+    RBackend *backend;       /**< window or offscreen surface; NULL for the null renderer */
+    struct RGL *gl;          /**< programs, framebuffers, font (RGL.c) */
+    unsigned long frames;    /**< frames drawn or run */
+    int singleStep;          /**< a single step is pending */
+    int drawn;               /**< a frame has been drawn */
+    RDrag drag;
+    RGraphic *pausedText;    /**< "Paused", in the 2D list while paused */
+    char title[128];
+};
+
+/* ---- RGraphic.c ---------------------------------------------------------------------------- */
+/** A graphic of `kind` with room for n vertices, coloured, following matrix, put in the 3D list. */
+RGraphic *RGraphicNew(RRender *rc, RGraphicKind kind, int n, const float color[4], MeMatrix4Ptr matrix);
+
+/* ---- RCamera.c ----------------------------------------------------------------------------- */
+/** Karma's default camera and projection for a context whose size is set. */
+void RCameraSetDefaults(RRender *rc);
+
+/* ---- RLight.c ------------------------------------------------------------------------------ */
+/** Karma's default lights. */
+void RLightSetDefaults(RRender *rc);
+
+/* ---- RGL.c: drawing with OpenGL 3.3 core (a context must be current) ------------------------ */
+/** Programs, framebuffers and the font for a picture of width × height, in the context `backend`
+ *  makes current; NULL with a message. */
+struct RGL *RGLCreate(RBackend *backend, int width, int height);
+/** Free the GL objects, those of every graphic drawn with it too (which stay usable: they upload
+ *  again when drawn by another context). */
+void RGLDestroy(struct RGL *gl);
+/** Draw every graphic of both lists into the multisampled framebuffer, resolve it into the picture
+ *  RGLReadPixels reads and, with toWindow, copy it to the window's framebuffer. */
+void RGLDrawFrame(struct RGL *gl, RRender *rc, int toWindow);
+/** Read the resolved picture (RGBA, top row first). */
+void RGLReadPixels(struct RGL *gl, unsigned char *rgba);
+/** Free a graphic's GL objects in the context that made them (nothing when it has none). */
+void RGLReleaseGraphic(RGraphic *rg);
+
+/* ---- backends ------------------------------------------------------------------------------ */
+/** An offscreen OpenGL 3.3 core context through EGL (RBackendEGL.c); NULL with a message. */
+RBackend *RBackendEGLCreate(void);
+/** A window with an OpenGL 3.3 core context through GLFW (RBackendGLFW.c); NULL with a message. */
+RBackend *RBackendGLFWCreate(RRender *rc, int width, int height, const char *title);
+
+struct RBackend {
+    void (*destroy)(RBackend *b);
+    /** Make the context current. */
+    void (*makeCurrent)(RBackend *b);
+    /** Poll input and call the context's handlers; returns 0 when the window should close. */
+    int (*poll)(RBackend *b, RRender *rc);
+    /** Show the frame drawn (windows); NULL offscreen. */
+    void (*present)(RBackend *b);
+    void (*setTitle)(RBackend *b, const char *title);
+    int drawsToWindow;
+};
+
+/* ---- RInput.c: Karma's PC key map and mouse ----------------------------------------------- */
+/** Key codes the backends translate to (GLFW's values for printable keys: their ASCII capitals). */
+enum {
+    RKEY_ESCAPE = 256, RKEY_ENTER = 257, RKEY_RIGHT = 262, RKEY_LEFT = 263, RKEY_DOWN = 264, RKEY_UP = 265,
+    RKEY_PAGE_UP = 266, RKEY_PAGE_DOWN = 267, RKEY_F1 = 290, RKEY_F2 = 291, RKEY_F8 = 297, RKEY_KP_ADD = 334,
+    RKEY_KP_SUBTRACT = 333
+};
+/** A key pressed with modifiers (RCONTROL, RSHIFT, RALT): Karma's key map. */
+void RInputKey(RRender *rc, int key, int modifiers);
+/** A mouse button pressed or released at (x, y) window pixels. */
+void RInputMouseButton(RRender *rc, int x, int y, int modifiers, RMouseButtonWhich which, RMouseButtonEvent event);
+/** The mouse moved to (x, y) with buttons held (`buttons` bit k−1 for RMouseButtonWhich k). */
+void RInputMouseMove(RRender *rc, int x, int y, int modifiers, int buttons);
+
+#endif /* R_INTERNAL_H */
