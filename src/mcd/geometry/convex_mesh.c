@@ -1,0 +1,347 @@
+/* convex_mesh.c -- the convex mesh: a hull (convex_hull.c) rounded by a fatness radius; its API and
+ * protocol. The vertices stay in the frame they were given in (Karma 1.2): the centre of mass is
+ * reported by the mass properties, not moved to the origin. */
+#include <math.h>
+#include <string.h>
+
+#include <karma/McdConvexMesh.h>
+#include <karma/McdPrimitives.h>
+#include <karma/MeDebugDraw.h>
+#include <karma/MeMemory.h>
+
+#include "../../me/check.h"
+#include "convex_hull.h"
+#include "geometry.h"
+
+/* Index of the vertex farthest along dir (local); ties: the first. */
+static int supportIndex(const McdHull *h, const MeVector3 dir)
+{
+    int i, best = 0;
+    MeReal bestD = MeVector3Dot(h->vertices[0], dir);
+    for (i = 1; i < h->vertexCount; i++) {
+        MeReal d = MeVector3Dot(h->vertices[i], dir);
+        if (d > bestD) {
+            bestD = d;
+            best = i;
+        }
+    }
+    return best;
+}
+
+int McdConvexMeshSupportIndex(const McdConvexMeshData *c, const MeVector3 dir) { return supportIndex(c->hull, dir); }
+
+static void convexAABB(McdGeometryID g, void *data, MeMatrix4 tm, MeVector3 minCorner, MeVector3 maxCorner)
+{
+    (void)g;
+    const McdConvexMeshData *c = data;
+    for (int j = 0; j < 3; j++) {
+        MeVector3 axis = {tm[0][j], tm[1][j], tm[2][j]}, neg = {-tm[0][j], -tm[1][j], -tm[2][j]};
+        MeReal hi = MeVector3Dot(c->hull->vertices[supportIndex(c->hull, axis)], axis);
+        MeReal lo = MeVector3Dot(c->hull->vertices[supportIndex(c->hull, neg)], axis);
+        maxCorner[j] = tm[3][j] + hi + c->fatness;
+        minCorner[j] = tm[3][j] + lo - c->fatness;
+    }
+}
+
+static void convexBSphere(McdGeometryID g, void *data, MeVector3 centre, MeReal *radius)
+{
+    (void)g;
+    const McdConvexMeshData *c = data;
+    MeVector3Copy(centre, c->hull->centre);
+    *radius = c->hull->radius + c->fatness;
+}
+
+static void convexSupport(McdGeometryID g, void *data, const MeVector3 dir, MeVector3 point)
+{
+    (void)g;
+    const McdConvexMeshData *c = data;
+    MeVector3 u;
+    MeVector3Copy(point, c->hull->vertices[supportIndex(c->hull, dir)]);
+    MeVector3Copy(u, dir);
+    if (c->fatness > 0 && MeVector3NormalizeSafe(u))
+        MeVector3MultiplyAdd(point, c->fatness, u);
+}
+
+/* Volume, centre of mass and inertia (about the centre of mass) of the polyhedron, unit density: each
+ * polygon is a fan of triangles, each triangle with a reference point inside the hull a tetrahedron
+ * whose moments are exact (the second moment of a tetrahedron with a vertex at the origin and the
+ * others a, b, c is V/20 (aa' + bb' + cc' + ss'), s = a + b + c). In double, relative to that point. */
+static void convexMass(McdGeometryID g, void *data, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume)
+{
+    (void)g;
+    const McdHull *h = ((const McdConvexMeshData *)data)->hull;
+    double ref[3] = {0, 0, 0}, vol = 0, first[3] = {0, 0, 0}, second[3][3] = {{0}};
+    int i, j, k, p;
+    for (i = 0; i < h->vertexCount; i++)
+        for (k = 0; k < 3; k++)
+            ref[k] += (double)h->vertices[i][k] / h->vertexCount;
+    for (p = 0; p < h->polygonCount; p++) {
+        const int *pv = &h->polygonVertices[h->polygonStart[p]];
+        int n = h->polygonStart[p + 1] - h->polygonStart[p];
+        for (i = 1; i + 1 < n; i++) {
+            double x[3][3], s[3], v;
+            const int idx[3] = {pv[0], pv[i], pv[i + 1]};
+            for (j = 0; j < 3; j++)
+                for (k = 0; k < 3; k++)
+                    x[j][k] = (double)h->vertices[idx[j]][k] - ref[k];
+            v = (x[0][0] * (x[1][1] * x[2][2] - x[1][2] * x[2][1]) - x[0][1] * (x[1][0] * x[2][2] - x[1][2] * x[2][0]) +
+                 x[0][2] * (x[1][0] * x[2][1] - x[1][1] * x[2][0])) /
+                6;
+            for (k = 0; k < 3; k++)
+                s[k] = x[0][k] + x[1][k] + x[2][k];
+            vol += v;
+            for (k = 0; k < 3; k++)
+                first[k] += v * s[k] / 4;
+            for (j = 0; j < 3; j++)
+                for (k = 0; k < 3; k++)
+                    second[j][k] += v / 20 * (x[0][j] * x[0][k] + x[1][j] * x[1][k] + x[2][j] * x[2][k] + s[j] * s[k]);
+        }
+    }
+    {
+        double g3[3], c[3][3], tr;
+        for (k = 0; k < 3; k++)
+            g3[k] = first[k] / vol;
+        for (j = 0; j < 3; j++)
+            for (k = 0; k < 3; k++)
+                c[j][k] = second[j][k] - vol * g3[j] * g3[k]; /* about the centre of mass */
+        tr = c[0][0] + c[1][1] + c[2][2];
+        for (j = 0; j < 3; j++)
+            for (k = 0; k < 3; k++)
+                inertia[j][k] = (MeReal)((j == k ? tr : 0) - c[j][k]);
+        MeMatrix4TMMakeIdentity(relTM);
+        MeVector3Set(relTM[3], (MeReal)(ref[0] + g3[0]), (MeReal)(ref[1] + g3[1]), (MeReal)(ref[2] + g3[2]));
+        *volume = (MeReal)vol;
+    }
+}
+
+/* The polyhedron is the intersection of its polygons' half-spaces; with a fatness each plane moves out
+ * by it (exact on the faces, up to fatness (sqrt 3 - 1) too far out near edges and corners). */
+static int convexSegment(McdGeometryID g, void *data, const MeVector3 p0, const MeVector3 p1, MeReal *t,
+                         MeVector3 normal)
+{
+    (void)g;
+    const McdConvexMeshData *c = data;
+    const McdHull *h = c->hull;
+    McdLineInterval iv;
+    MeVector3 d;
+    MeVector3Subtract(d, p1, p0);
+    McdLineIntervalAll(&iv);
+    for (int p = 0; p < h->polygonCount && iv.tIn <= iv.tOut; p++) {
+        MeReal den = MeVector3Dot(h->normals[p], d);
+        MeReal num = h->offsets[p] + c->fatness - MeVector3Dot(h->normals[p], p0);
+        if (den == 0) {
+            if (num < 0)
+                iv.tIn = MEINFINITY; /* parallel and outside: empty */
+            continue;
+        }
+        MeReal tp = num / den;
+        if (den < 0) {
+            if (tp > iv.tIn) {
+                iv.tIn = tp;
+                MeVector3Copy(iv.nIn, h->normals[p]);
+            }
+        } else if (tp < iv.tOut)
+            iv.tOut = tp;
+    }
+    return McdLineIntervalToSegmentHit(&iv, d, t, normal);
+}
+
+static void convexDestroy(McdGeometryID g, void *data)
+{
+    (void)g;
+    McdConvexMeshData *c = data;
+    if (c->hull) {
+        McdHullFree(c->hull);
+        MeMemoryDestroy(c->hull);
+        c->hull = NULL;
+    }
+}
+
+/* Wire-frame: every edge once. */
+static void convexDraw(McdGeometryID g, void *data, MeMatrix4 tm, const float colour[3])
+{
+    (void)g;
+    const McdHull *h = ((const McdConvexMeshData *)data)->hull;
+    for (int e = 0; e < h->edgeCount; e++) {
+        MeVector3 a, b;
+        MeMatrix4TMTransform(a, tm, h->vertices[h->edges[2 * e]]);
+        MeMatrix4TMTransform(b, tm, h->vertices[h->edges[2 * e + 1]]);
+        MeDebugDrawAPI.line(a, b, colour[0], colour[1], colour[2]);
+    }
+}
+
+const McdGeometryTypeDesc McdConvexMeshTypeDesc = {"ConvexMesh", convexDestroy, convexAABB, convexBSphere,
+                                                   convexSupport, convexMass, convexSegment, convexDraw};
+
+McdConvexMeshID McdConvexMeshCreateHull(McdFrameworkID fwId, const MeVector3 *vertices, int vertexCount,
+                                        MeReal fatnessRadius)
+{
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
+    if (!fw)
+        return NULL;
+    ME_CHECK_NOT_NULL(vertices, NULL);
+    if (!McdCheckDimension(fw, fatnessRadius, "fatnessRadius", METRUE, __func__))
+        return NULL;
+    if (vertexCount < 4) {
+        ME_REPORT(ME_ERR_MCD_HULL_FLAT, "vertexCount (%d) must be at least 4; call ignored", vertexCount);
+        return NULL;
+    }
+    MeReal far = 0;
+    for (int i = 0; i < vertexCount; i++) {
+        if (!MeVector3IsValid(vertices[i])) {
+            ME_REPORT(ME_ERR_NONFINITE_ARGUMENT, "vertices[%d] holds NaN or infinity; call ignored", i);
+            return NULL;
+        }
+        far = MeMAX(far, MeMAX3(MeFabs(vertices[i][0]), MeFabs(vertices[i][1]), MeFabs(vertices[i][2])));
+    }
+    if (far > MCD_SIZE_MAX * fw->lengthScale) {
+        ME_REPORT(ME_ERR_MCD_SIZE_RANGE, "a vertex lies %g from the origin, beyond %g (1e6 times the framework's "
+                  "lengthScale); call ignored", (double)far, (double)(MCD_SIZE_MAX * fw->lengthScale));
+        return NULL;
+    }
+    McdHull *hull = MeMemoryCreate(sizeof *hull);
+    if (!hull)
+        return NULL;
+    McdHullStatus status = McdHullBuild(vertices, vertexCount, hull);
+    if (status != MCD_HULL_OK) {
+        MeMemoryDestroy(hull);
+        if (status == MCD_HULL_FLAT)
+            ME_REPORT(ME_ERR_MCD_HULL_FLAT, "the %d points span no volume: they lie within %g of a line or a plane "
+                      "(the hull tolerance); call ignored", vertexCount, McdHullTolerance(vertices, vertexCount));
+        return NULL;
+    }
+    /* the hull's smallest extent (its thickness along some polygon normal) must be a valid size */
+    MeReal thin = MEINFINITY;
+    for (int p = 0; p < hull->polygonCount; p++) {
+        MeVector3 neg;
+        MeVector3MultiplyScalar(neg, hull->normals[p], -1);
+        thin = MeMIN(thin, hull->offsets[p] + MeVector3Dot(hull->vertices[supportIndex(hull, neg)], neg));
+    }
+    if (!(thin >= MCD_SIZE_MIN * fw->lengthScale)) {
+        ME_REPORT(ME_ERR_MCD_SIZE_RANGE, "the hull is %g thick, below %g (1e-6 times the framework's lengthScale); "
+                  "call ignored", (double)thin, (double)(MCD_SIZE_MIN * fw->lengthScale));
+        McdHullFree(hull);
+        MeMemoryDestroy(hull);
+        return NULL;
+    }
+    McdGeometryData *g = McdGeometryNew(fw, kMcdGeometryTypeConvexMesh, __func__);
+    if (!g) {
+        McdHullFree(hull);
+        MeMemoryDestroy(hull);
+        return NULL;
+    }
+    g->u.convex.hull = hull;
+    g->u.convex.fatness = fatnessRadius;
+    return McdGeometryToID(g);
+}
+
+#define CONVEX_OR_RETURN(c, id, ret)                                                                 \
+    McdGeometryData *c##G = McdGeometryOfType((id), kMcdGeometryTypeConvexMesh, __func__);           \
+    if (!c##G)                                                                                       \
+        return ret;                                                                                  \
+    const McdHull *c = c##G->u.convex.hull
+
+void McdConvexMeshDestroy(McdConvexMeshID id)
+{
+    if (McdGeometryOfType(id, kMcdGeometryTypeConvexMesh, __func__))
+        McdGeometryDestroy(id);
+}
+
+int McdConvexMeshGetPolygonCount(McdConvexMeshID id)
+{
+    CONVEX_OR_RETURN(h, id, 0);
+    return h->polygonCount;
+}
+
+static MeBool polygonInRange(const McdHull *h, int polyID, const char *function)
+{
+    if (polyID < 0 || polyID >= h->polygonCount) {
+        ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE, "polyID (%d) must lie in 0 ... %d; call ignored", polyID,
+                     h->polygonCount - 1);
+        return MEFALSE;
+    }
+    return METRUE;
+}
+
+static const MeReal *polygonVertex(const McdHull *h, int polyID, int vertexID, const char *function)
+{
+    if (!polygonInRange(h, polyID, function))
+        return NULL;
+    int n = h->polygonStart[polyID + 1] - h->polygonStart[polyID];
+    if (vertexID < 0 || vertexID >= n) {
+        ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE, "vertexID (%d) must lie in 0 ... %d; call ignored", vertexID,
+                     n - 1);
+        return NULL;
+    }
+    return h->vertices[h->polygonVertices[h->polygonStart[polyID] + vertexID]];
+}
+
+int McdConvexMeshGetPolygonVertexCount(McdConvexMeshID id, int polyID)
+{
+    CONVEX_OR_RETURN(h, id, 0);
+    if (!polygonInRange(h, polyID, __func__))
+        return 0;
+    return h->polygonStart[polyID + 1] - h->polygonStart[polyID];
+}
+
+void McdConvexMeshGetPolygonVertex(McdConvexMeshID id, int polyID, int vertexID, MeVector3 coords)
+{
+    CONVEX_OR_RETURN(h, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(coords, ME_NOTHING);
+    const MeReal *v = polygonVertex(h, polyID, vertexID, __func__);
+    if (v)
+        MeVector3Copy(coords, v);
+}
+
+const MeReal *McdConvexMeshGetPolygonVertexPtr(McdConvexMeshID id, int polyID, int vertexID)
+{
+    CONVEX_OR_RETURN(h, id, NULL);
+    return polygonVertex(h, polyID, vertexID, __func__);
+}
+
+void McdConvexMeshGetPolygonNormal(McdConvexMeshID id, int polyID, MeVector3 normal)
+{
+    CONVEX_OR_RETURN(h, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(normal, ME_NOTHING);
+    if (polygonInRange(h, polyID, __func__))
+        MeVector3Copy(normal, h->normals[polyID]);
+}
+
+int McdConvexMeshGetVertexCount(McdConvexMeshID id)
+{
+    CONVEX_OR_RETURN(h, id, 0);
+    return h->vertexCount;
+}
+
+void McdConvexMeshGetVertex(McdConvexMeshID id, int index, MeVector3 position)
+{
+    CONVEX_OR_RETURN(h, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(position, ME_NOTHING);
+    if (index < 0 || index >= h->vertexCount) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "index (%d) must lie in 0 ... %d; call ignored", index, h->vertexCount - 1);
+        return;
+    }
+    MeVector3Copy(position, h->vertices[index]);
+}
+
+MeReal McdConvexMeshGetFatness(McdConvexMeshID id)
+{
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeConvexMesh, __func__);
+    return g ? g->u.convex.fatness : 0;
+}
+
+MeI16 McdConvexMeshGetMassProperties(McdConvexMeshID id, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume)
+{
+    if (!McdGeometryOfType(id, kMcdGeometryTypeConvexMesh, __func__))
+        return 1;
+    return McdGeometryGetMassProperties(id, relTM, inertia, volume);
+}
+
+MeI16 McdConvexMeshGetTypeId(void) { return (MeI16)kMcdGeometryTypeConvexMesh; }
+
+void McdConvexMeshRegisterType(McdFramework *frame) { (void)McdFrameworkFromID(frame, __func__); }
+
+MeBool McdConvexMeshPrimitivesRegisterInteractions(McdFramework *frame)
+{
+    return McdPrimitivesRegisterInteractions(frame);
+}
