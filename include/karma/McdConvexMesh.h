@@ -18,6 +18,9 @@ ME_EXTERN_C_BEGIN
  *  too small or far (ME_ERR_MCD_SIZE_RANGE), or the fatness is negative or out of range. */
 ME_API McdConvexMeshID McdConvexMeshCreateHull(McdFrameworkID fw, const MeVector3 *vertices, int vertexCount,
                                                MeReal fatnessRadius);
+/** A sphyl (capsule along z: cylinder part `height` >= 0, caps of `radius` > 0, m) as a rounded
+ *  polyhedron (within 1e-3 radius + 1e-5 height of the true surface); mass properties exact. */
+ME_API McdConvexMeshID McdConvexMeshCreateSphyl(McdFrameworkID fw, MeReal radius, MeReal height);
 /** Destroy a convex mesh (McdGeometryDestroy); another type is refused (ME_ERR_WRONG_HANDLE_KIND). */
 ME_API void McdConvexMeshDestroy(McdConvexMeshID g);
 /** Number of polygons (faces) of the hull; 0 for an invalid ID or another type (reported). */

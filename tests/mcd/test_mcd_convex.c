@@ -367,6 +367,71 @@ static void prism_mass_properties_and_the_cylinder(void **state)
     McdGeometryDestroy(cyl);
 }
 
+/* A rounded cube (edge 1, fatness r): its exact volume is Steiner's 1 + 6 r + 3 pi r^2 + 4/3 pi r^3;
+ * the mass properties take the hull of the vertices moved by r in 62 directions, inside the solid and
+ * within r (1 - cos 19 deg) of its surface (18.7 deg: the directions' covering radius): the volume is below by at most area x that. */
+static void rounded_mass_properties(void **state)
+{
+    (void)state;
+    MeVector3 pts[8];
+    MeMatrix4 rel;
+    MeMatrix3 I;
+    MeReal V;
+    const double r = 0.1, exact = 1 + 6 * r + 3 * PI * r * r + 4.0 / 3 * PI * r * r * r;
+    const double area = 6 + 6 * PI * r + 4 * PI * r * r, bound = area * r * (1 - cos(18.8 * PI / 180)) / exact;
+    boxCorners(pts, 0.5, 0.5, 0.5, 1, 2, 3);
+    McdConvexMeshID g = hullOf(pts, 8, (MeReal)r);
+    assert_int_equal(McdGeometryGetMassProperties(g, rel, I, &V), 0);
+    printf("rounded cube: volume %.6f, Steiner %.6f (%.2e below, bound %.2e)\n", (double)V, exact, 1 - V / exact, bound);
+    assert_true(1 - V / exact > -ME_TOL(1e-12, 1e-6) && 1 - V / exact < bound);
+    assert_near(rel[3][0], 1, 1e-5);
+    assert_near(rel[3][1], 2, 1e-5);
+    assert_near(rel[3][2], 3, 1e-5);
+    /* cubic symmetry: equal moments, no products; between the core cube's and its circumscribed
+     * cube's (edge 1 + 2r) */
+    assert_rel(I[0][0], I[1][1], 1e-3);
+    assert_rel(I[0][0], I[2][2], 1e-3);
+    assert_near(I[0][1], 0, 1e-3 * I[0][0]);
+    assert_true(I[0][0] > 1.0 / 6 && I[0][0] < pow(1 + 2 * r, 5) / 6);
+    McdGeometryDestroy(g);
+}
+
+/* McdConvexMeshCreateSphyl against the sphyl primitive: the same mass properties, support points
+ * within the stated 1e-3 r + 1e-5 h (so GJK/EPA see the sphyl to that), bad sizes refused. */
+static void convex_sphyl_is_the_sphyl(void **state)
+{
+    (void)state;
+    const MeReal r = ME_R(0.3), h = ME_R(1.2);
+    McdConvexMeshID c = McdConvexMeshCreateSphyl(fw, r, h);
+    McdGeometryID s = McdSphylCreate(fw, r, h);
+    MeMatrix4 rel1, rel2;
+    MeMatrix3 I1, I2;
+    MeReal v1, v2;
+    assert_non_null(c);
+    McdGeometryGetMassProperties(c, rel1, I1, &v1);
+    McdGeometryGetMassProperties(s, rel2, I2, &v2);
+    assert_rel(v1, v2, 1e-6);
+    for (int i = 0; i < 3; i++)
+        assert_rel(I1[i][i], I2[i][i], 1e-6);
+    MeRealRandomSeed(5);
+    for (int t = 0; t < 300; t++) {
+        MeVector3 d = {MeRealRandomInRange(-1, 1), MeRealRandomInRange(-1, 1), MeRealRandomInRange(-1, 1)}, p1, p2;
+        if (!MeVector3NormalizeSafe(d))
+            continue;
+        McdGeometryMaximumPoint(c, NULL, d, p1);
+        McdGeometryMaximumPoint(s, NULL, d, p2);
+        assert_near(MeVector3Dot(p1, d), MeVector3Dot(p2, d), 1e-3 * r + 1e-5 * h + 1e-6);
+    }
+    karma_capture_messages();
+    assert_reports(ME_ERR_MCD_DEGENERATE_GEOMETRY, assert_null(McdConvexMeshCreateSphyl(fw, 0, 1)));
+    assert_reports(ME_ERR_MCD_DEGENERATE_GEOMETRY, assert_null(McdConvexMeshCreateSphyl(fw, 1, -1)));
+    McdConvexMeshID ball = McdConvexMeshCreateSphyl(fw, 1, 0); /* a sphere */
+    assert_non_null(ball);
+    McdGeometryDestroy(ball);
+    McdGeometryDestroy(c);
+    McdGeometryDestroy(s);
+}
+
 static void aabb_bsphere_and_segments_match_the_box(void **state)
 {
     (void)state;
@@ -629,6 +694,8 @@ int main(void)
         cmocka_unit_test(bad_input_is_refused),
         cmocka_unit_test(box_hull_mass_properties_are_the_box_s),
         cmocka_unit_test(prism_mass_properties_and_the_cylinder),
+        cmocka_unit_test(rounded_mass_properties),
+        cmocka_unit_test(convex_sphyl_is_the_sphyl),
         cmocka_unit_test(aabb_bsphere_and_segments_match_the_box),
         cmocka_unit_test(analytic_face_edge_vertex),
         cmocka_unit_test(rounded_hull_on_a_plane),

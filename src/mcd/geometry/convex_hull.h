@@ -24,6 +24,10 @@ typedef struct McdHull {
     MeVector3 centre;      /* bounding sphere of the vertices */
     MeReal radius;
     MeReal tolerance;      /* the build's tolerance (m) */
+    /* unit-density mass properties of the solid (the geometry fills them in; see convex_mesh.c) */
+    MeReal volume;
+    MeVector3 centreOfMass;
+    MeMatrix3 inertia;     /* about the centre of mass */
 } McdHull;
 
 /** Outcome of a build. */

@@ -62,14 +62,13 @@ static void convexSupport(McdGeometryID g, void *data, const MeVector3 dir, MeVe
         MeVector3MultiplyAdd(point, c->fatness, u);
 }
 
-/* Volume, centre of mass and inertia (about the centre of mass) of the polyhedron, unit density: each
- * polygon is a fan of triangles, each triangle with a reference point inside the hull a tetrahedron
- * whose moments are exact (the second moment of a tetrahedron with a vertex at the origin and the
- * others a, b, c is V/20 (aa' + bb' + cc' + ss'), s = a + b + c). In double, relative to that point. */
-static void convexMass(McdGeometryID g, void *data, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume)
+/* Volume, centre of mass and inertia (about the centre of mass) of the polyhedron h, unit density:
+ * each polygon is a fan of triangles, each triangle with a reference point inside the hull a
+ * tetrahedron whose moments are exact (the second moment of a tetrahedron with a vertex at the origin
+ * and the others a, b, c is V/20 (aa' + bb' + cc' + ss'), s = a + b + c). In double, relative to
+ * that point. */
+static void polyhedronMass(const McdHull *h, MeReal *volume, MeVector3 com, MeMatrix3 inertia)
 {
-    (void)g;
-    const McdHull *h = ((const McdConvexMeshData *)data)->hull;
     double ref[3] = {0, 0, 0}, vol = 0, first[3] = {0, 0, 0}, second[3][3] = {{0}};
     int i, j, k, p;
     for (i = 0; i < h->vertexCount; i++)
@@ -108,10 +107,101 @@ static void convexMass(McdGeometryID g, void *data, MeMatrix4 relTM, MeMatrix3 i
         for (j = 0; j < 3; j++)
             for (k = 0; k < 3; k++)
                 inertia[j][k] = (MeReal)((j == k ? tr : 0) - c[j][k]);
-        MeMatrix4TMMakeIdentity(relTM);
-        MeVector3Set(relTM[3], (MeReal)(ref[0] + g3[0]), (MeReal)(ref[1] + g3[1]), (MeReal)(ref[2] + g3[2]));
+        MeVector3Set(com, (MeReal)(ref[0] + g3[0]), (MeReal)(ref[1] + g3[1]), (MeReal)(ref[2] + g3[2]));
         *volume = (MeReal)vol;
     }
+}
+
+/* Directions that sample the sphere for the rounded solid's mass: the 12 vertices, 20 face centres
+ * and 30 edge midpoints of an icosahedron (unnormalised; every direction of the sphere lies within
+ * 19 degrees (18.7) of one of them). */
+#define ROUND_DIRECTIONS 62
+static int roundDirections(double d[ROUND_DIRECTIONS][3])
+{
+    const double t = (1 + sqrt(5.0)) / 2;
+    double v[12][3];
+    int n = 0, i, j, k, c = 0;
+    for (i = 0; i < 4; i++) { /* (0, +-1, +-t) and its cyclic permutations */
+        double a = (i & 1) ? -1 : 1, b = (i & 2) ? -t : t;
+        for (k = 0; k < 3; k++) {
+            v[c][k] = 0;
+            v[c][(k + 1) % 3] = a;
+            v[c][(k + 2) % 3] = b;
+            c++;
+        }
+    }
+    for (i = 0; i < 12; i++, n++)
+        for (k = 0; k < 3; k++)
+            d[n][k] = v[i][k];
+    /* neighbours are 2 apart; face centres from triples of mutual neighbours */
+    for (i = 0; i < 12; i++)
+        for (j = i + 1; j < 12; j++) {
+            double e = 0;
+            for (k = 0; k < 3; k++)
+                e += (v[i][k] - v[j][k]) * (v[i][k] - v[j][k]);
+            if (fabs(e - 4) > 1e-9)
+                continue;
+            for (k = 0; k < 3; k++)
+                d[n][k] = v[i][k] + v[j][k];
+            n++;
+            for (c = j + 1; c < 12; c++) {
+                double e1 = 0, e2 = 0;
+                for (k = 0; k < 3; k++) {
+                    e1 += (v[i][k] - v[c][k]) * (v[i][k] - v[c][k]);
+                    e2 += (v[j][k] - v[c][k]) * (v[j][k] - v[c][k]);
+                }
+                if (fabs(e1 - 4) < 1e-9 && fabs(e2 - 4) < 1e-9) {
+                    for (k = 0; k < 3; k++)
+                        d[n][k] = v[i][k] + v[j][k] + v[c][k];
+                    n++;
+                }
+            }
+        }
+    return n;
+}
+
+/* The mass properties of the solid: the polyhedron's exactly when it is not rounded; a rounded one
+ * (fatness r) as the hull of every vertex moved by r along ROUND_DIRECTIONS directions, an inner
+ * approximation of the rounded solid within r (1 - cos 19 deg) = 0.054 r of its surface. Returns
+ * MEFALSE when memory ran out. */
+static MeBool computeMass(McdHull *h, MeReal fatness)
+{
+    double dir[ROUND_DIRECTIONS][3];
+    McdHull round;
+    MeVector3 *pts;
+    int i, k, n = h->vertexCount * ROUND_DIRECTIONS;
+    if (fatness <= 0) {
+        polyhedronMass(h, &h->volume, h->centreOfMass, h->inertia);
+        return METRUE;
+    }
+    if (roundDirections(dir) != ROUND_DIRECTIONS)
+        return MEFALSE;
+    pts = MeMemoryCreate((size_t)n * sizeof(MeVector3));
+    if (!pts)
+        return MEFALSE;
+    for (i = 0; i < h->vertexCount; i++)
+        for (k = 0; k < ROUND_DIRECTIONS; k++) {
+            double len = sqrt(dir[k][0] * dir[k][0] + dir[k][1] * dir[k][1] + dir[k][2] * dir[k][2]);
+            for (int j = 0; j < 3; j++)
+                pts[i * ROUND_DIRECTIONS + k][j] = h->vertices[i][j] + (MeReal)((double)fatness * dir[k][j] / len);
+        }
+    McdHullStatus st = McdHullBuild((const MeVector3 *)pts, n, &round);
+    MeMemoryDestroy(pts);
+    if (st != MCD_HULL_OK)
+        return MEFALSE;
+    polyhedronMass(&round, &h->volume, h->centreOfMass, h->inertia);
+    McdHullFree(&round);
+    return METRUE;
+}
+
+static void convexMass(McdGeometryID g, void *data, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume)
+{
+    (void)g;
+    const McdHull *h = ((const McdConvexMeshData *)data)->hull;
+    MeMatrix4TMMakeIdentity(relTM);
+    MeVector3Copy(relTM[3], h->centreOfMass);
+    memcpy(inertia, h->inertia, sizeof(MeMatrix3));
+    *volume = h->volume;
 }
 
 /* The polyhedron is the intersection of its polygons' half-spaces; with a fatness each plane moves out
@@ -224,7 +314,8 @@ McdConvexMeshID McdConvexMeshCreateHull(McdFrameworkID fwId, const MeVector3 *ve
         MeMemoryDestroy(hull);
         return NULL;
     }
-    McdGeometryData *g = McdGeometryNew(fw, kMcdGeometryTypeConvexMesh, __func__);
+    McdGeometryData *g = computeMass(hull, fatnessRadius) ? McdGeometryNew(fw, kMcdGeometryTypeConvexMesh, __func__)
+                                                           : NULL;
     if (!g) {
         McdHullFree(hull);
         MeMemoryDestroy(hull);
@@ -233,6 +324,36 @@ McdConvexMeshID McdConvexMeshCreateHull(McdFrameworkID fwId, const MeVector3 *ve
     g->u.convex.hull = hull;
     g->u.convex.fatness = fatnessRadius;
     return McdGeometryToID(g);
+}
+
+/* The sphyl as a rounded polyhedron: the core is the box [-d, d]^2 x [-h/2, h/2] (a segment made thick
+ * enough for the hull tolerance: d = 1e-3 r + 1e-5 h), the fatness r - d; the solid then lies
+ * between the sphyl shrunk by d and grown by d (sqrt 2 - 1). Its mass properties are the sphyl's
+ * closed form (radius r, cylinder part h). */
+McdConvexMeshID McdConvexMeshCreateSphyl(McdFrameworkID fwId, MeReal radius, MeReal height)
+{
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
+    if (!fw || !McdCheckDimension(fw, radius, "radius", MEFALSE, __func__) ||
+        !McdCheckDimension(fw, height, "height", METRUE, __func__))
+        return NULL;
+    MeReal d = ME_R(1e-3) * radius + ME_R(1e-5) * height, hh = ME_R(0.5) * height;
+    MeVector3 corners[8];
+    for (int k = 0; k < 8; k++)
+        MeVector3Set(corners[k], (k & 1) ? d : -d, (k & 2) ? d : -d, (k & 4) ? hh + d : -hh - d);
+    McdConvexMeshID id = McdConvexMeshCreateHull(fwId, (const MeVector3 *)corners, 8, radius - d);
+    McdGeometryData *g = id ? McdGeometryFromID(id, __func__) : NULL;
+    if (!g)
+        return NULL;
+    {
+        McdHull *h = g->u.convex.hull;
+        MeReal r = radius, r2 = r * r, vCyl = ME_PI * r2 * height, vBall = ME_R(4.0) / 3 * ME_PI * r2 * r;
+        /* a cylinder and two hemispheres (centroids 3r/8 beyond their flat faces at z = +-h/2) */
+        MeReal ixx = vCyl * (3 * r2 + height * height) / 12 + vBall * (ME_R(0.4) * r2 + hh * hh + ME_R(0.75) * hh * r);
+        h->volume = vCyl + vBall;
+        MeVector3Set(h->centreOfMass, 0, 0, 0);
+        McdDiagonalInertia(h->inertia, ixx, ixx, vCyl * r2 / 2 + ME_R(0.4) * vBall * r2);
+    }
+    return id;
 }
 
 #define CONVEX_OR_RETURN(c, id, ret)                                                                 \
