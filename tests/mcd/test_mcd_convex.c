@@ -657,16 +657,16 @@ static void convex_box_against_box_box(void **state)
     assert_true(worstSwap < ME_TOL(1e-6, 2e-4));
 }
 
-static void pair_tests_per_second(void **state)
+/* Pair tests per second of two hulls of n points on a sphere, at random overlapping poses. */
+static void measurePairs(int n)
 {
-    (void)state;
-    static MeVector3 pts[64];
+    static MeVector3 pts[1000];
     McdGeometryData a, b;
     MeMatrix4 ta, tb;
     McdContact c[4];
-    randomCloud(pts, 64, 1, 9);
-    ref_make_convex(&a, pts, 64, 0);
-    ref_make_convex(&b, pts, 64, 0);
+    randomCloud(pts, n, 1, 9);
+    ref_make_convex(&a, pts, n, 0);
+    ref_make_convex(&b, pts, n, 0);
     identityAt(tb, 0, 0, 0);
     long calls = 0, touching = 0;
     clock_t t0 = clock();
@@ -678,11 +678,19 @@ static void pair_tests_per_second(void **state)
         }
     }
     double s = (double)(clock() - t0) / CLOCKS_PER_SEC;
-    printf("convex-convex (64-point sphere hulls, %d vertices): %.0f pair tests/s (%ld calls, %ld touching)\n",
+    printf("convex-convex (%d-point sphere hulls, %d vertices): %.0f pair tests/s (%ld calls, %ld touching)\n", n,
            a.u.convex.hull->vertexCount, (double)calls / s, calls, touching);
     assert_true(touching > 0);
     ref_free_convex(&a);
     ref_free_convex(&b);
+}
+
+static void pair_tests_per_second(void **state)
+{
+    (void)state;
+    measurePairs(16);
+    measurePairs(64);
+    measurePairs(1000);
 }
 
 int main(void)

@@ -604,6 +604,23 @@ static McdHullStatus makePolygons(Builder *b, const MeVector3 *points, McdHull *
             hull->neighbours[fill[c]++] = a;
         }
     }
+    /* the polygons around each vertex */
+    {
+        int uses = hull->polygonStart[hull->polygonCount], *fill = remap, p;
+        hull->vertexPolygonStart = MeMemoryCreateZeroed((size_t)(nv + 1) * sizeof(int));
+        hull->vertexPolygons = MeMemoryCreate((size_t)(uses > 0 ? uses : 1) * sizeof(int));
+        if (!hull->vertexPolygonStart || !hull->vertexPolygons)
+            goto done;
+        for (i = 0; i < uses; i++)
+            hull->vertexPolygonStart[hull->polygonVertices[i] + 1]++;
+        for (i = 0; i < nv; i++)
+            hull->vertexPolygonStart[i + 1] += hull->vertexPolygonStart[i];
+        for (i = 0; i < nv; i++)
+            fill[i] = hull->vertexPolygonStart[i];
+        for (p = 0; p < hull->polygonCount; p++)
+            for (i = hull->polygonStart[p]; i < hull->polygonStart[p + 1]; i++)
+                hull->vertexPolygons[fill[hull->polygonVertices[i]]++] = p;
+    }
     /* bounding sphere: centre of the vertices' box, radius to the farthest vertex */
     {
         MeVector3 lo, hi;
@@ -722,5 +739,7 @@ void McdHullFree(McdHull *hull)
     MeMemoryDestroy(hull->edges);
     MeMemoryDestroy(hull->neighbourStart);
     MeMemoryDestroy(hull->neighbours);
+    MeMemoryDestroy(hull->vertexPolygonStart);
+    MeMemoryDestroy(hull->vertexPolygons);
     memset(hull, 0, sizeof *hull);
 }

@@ -21,6 +21,8 @@ typedef struct McdHull {
     int *edges;            /* 2 * edgeCount vertex indices, each edge once */
     int *neighbourStart;   /* vertexCount + 1 offsets into neighbours */
     int *neighbours;       /* vertices joined to each vertex by an edge */
+    int *vertexPolygonStart; /* vertexCount + 1 offsets into vertexPolygons */
+    int *vertexPolygons;   /* polygons around each vertex */
     MeVector3 centre;      /* bounding sphere of the vertices */
     MeReal radius;
     MeReal tolerance;      /* the build's tolerance (m) */

@@ -13,17 +13,38 @@
 #include "convex_hull.h"
 #include "geometry.h"
 
-/* Index of the vertex farthest along dir (local); ties: the first. */
+/* Hulls with more vertices than this climb the vertex graph instead of reading every vertex. */
+#define CLIMB_MIN_VERTICES 48
+
+/* Index of the vertex farthest along dir (local). Small hulls: every vertex (ties: the first). Large
+ * ones: from vertex 0, to the best neighbour while it is farther along dir; on a convex polyhedron a
+ * vertex no neighbour improves on is the farthest (ties: one of them). */
 static int supportIndex(const McdHull *h, const MeVector3 dir)
 {
     int i, best = 0;
     MeReal bestD = MeVector3Dot(h->vertices[0], dir);
-    for (i = 1; i < h->vertexCount; i++) {
-        MeReal d = MeVector3Dot(h->vertices[i], dir);
-        if (d > bestD) {
-            bestD = d;
-            best = i;
+    if (h->vertexCount < CLIMB_MIN_VERTICES) {
+        for (i = 1; i < h->vertexCount; i++) {
+            MeReal d = MeVector3Dot(h->vertices[i], dir);
+            if (d > bestD) {
+                bestD = d;
+                best = i;
+            }
         }
+        return best;
+    }
+    for (int steps = 0; steps < h->vertexCount; steps++) {
+        int from = best;
+        for (i = h->neighbourStart[from]; i < h->neighbourStart[from + 1]; i++) {
+            int w = h->neighbours[i];
+            MeReal d = MeVector3Dot(h->vertices[w], dir);
+            if (d > bestD) {
+                bestD = d;
+                best = w;
+            }
+        }
+        if (best == from)
+            break;
     }
     return best;
 }

@@ -117,16 +117,19 @@ static int discPolygon(MeReal r, MeReal z, MeReal dx, MeReal dy, MeVector3 *pts)
     return MCD_NF_DISC_SIDES;
 }
 
-/* A convex mesh's feature facing the local unit direction n: the polygon whose normal is within
- * MCD_NF_FEATURE_COS of n (at most MCD_NF_MAX_FEATURE of its vertices, evenly spaced), else the edge
- * at the support vertex within MCD_NF_FEATURE_SIN of perpendicular to n, else the support vertex. */
+/* A convex mesh's feature facing the local unit direction n: of the polygons around the support
+ * vertex, the one whose normal is within MCD_NF_FEATURE_COS of n (at most MCD_NF_MAX_FEATURE of its
+ * vertices, evenly spaced), else the edge at the support vertex within MCD_NF_FEATURE_SIN of
+ * perpendicular to n, else the support vertex. */
 static int convexFeature(const McdConvexMeshData *c, const MeVector3 n, MeVector3 *pts)
 {
     const McdHull *h = c->hull;
-    int p, best = 0, v, k, w = -1;
+    int p, best = 0, v = McdConvexMeshSupportIndex(c, n), k, w = -1;
     MeReal bestCos = -MEINFINITY, bestSin = MCD_NF_FEATURE_SIN;
-    for (p = 0; p < h->polygonCount; p++) {
-        MeReal cs = MeVector3Dot(h->normals[p], n);
+    for (k = h->vertexPolygonStart[v]; k < h->vertexPolygonStart[v + 1]; k++) {
+        MeReal cs;
+        p = h->vertexPolygons[k];
+        cs = MeVector3Dot(h->normals[p], n);
         if (cs > bestCos) {
             bestCos = cs;
             best = p;
@@ -139,7 +142,6 @@ static int convexFeature(const McdConvexMeshData *c, const MeVector3 n, MeVector
             MeVector3Copy(pts[k], h->vertices[h->polygonVertices[first + (k * count) / m]]);
         return m;
     }
-    v = McdConvexMeshSupportIndex(c, n);
     MeVector3Copy(pts[0], h->vertices[v]);
     for (k = h->neighbourStart[v]; k < h->neighbourStart[v + 1]; k++) {
         MeVector3 e;
