@@ -13,6 +13,7 @@
 #include <time.h>
 
 #include <karma/Mcd.h>
+#include <karma/karma.h>
 
 #include "karma_mcd_reference.h"
 #include "mcd/geometry/convex_hull.h"
@@ -598,6 +599,73 @@ static void rounded_hull_on_a_plane(void **state)
     ref_free_convex(&a);
 }
 
+/* A sphere against a convex cube: over a face, beyond an edge, beyond a vertex, each at a distance
+ * known in closed form (the nearest feature's); the normal points from the cube to the sphere. */
+static void sphere_on_face_edge_vertex(void **state)
+{
+    (void)state;
+    McdGeometryData cube = cubeHull(0.5, 0), ball;
+    MeMatrix4 tc, ts;
+    McdContact c[4];
+    const double r = 0.3, s3 = 1 / sqrt(3.0), s2 = 1 / sqrt(2.0);
+    /* centre directions (unit) and where the nearest point of the cube is */
+    const double dir[3][3] = {{0, 0, 1}, {s2, 0, s2}, {s3, s3, s3}};
+    const double near[3][3] = {{0.1, -0.2, 0.5}, {0.5, 0.1, 0.5}, {0.5, 0.5, 0.5}};
+    ref_make_sphere(&ball, r);
+    identityAt(tc, 0, 0, 0);
+    for (int f = 0; f < 3; f++) {
+        const double gap = -0.02; /* overlapping by 0.02 */
+        identityAt(ts, near[f][0] + (r + gap) * dir[f][0], near[f][1] + (r + gap) * dir[f][1],
+                   near[f][2] + (r + gap) * dir[f][2]);
+        if (f > 0) /* edge: y anywhere along it; vertex: exactly on the diagonal */
+            ts[3][1] = (MeReal)(f == 1 ? 0.1 : near[f][1] + (r + gap) * dir[f][1]);
+        int n = McdNfCollide(&ball, ts, &cube, tc, ME_R(0.005), c, 4);
+        assert_int_equal(n, 1);
+        assert_near(c[0].separation, gap, ME_TOL(1e-9, 1e-5));
+        for (int k = 0; k < 3; k++)
+            assert_near(c[0].normal[k], dir[f][k], ME_TOL(1e-9, 1e-5));
+    }
+    ref_free_convex(&cube);
+}
+
+/* A hull whose points sit 1 m beside their origin rests on its face through MstUniverse: the body's
+ * centre of mass is the hull's (relTM), so the box stands still instead of toppling about its edge. */
+static void off_centre_hull_rests(void **state)
+{
+    (void)state;
+    MstUniverseSizes sizes = MstUniverseDefaultSizes;
+    MstUniverseID u = MstUniverseCreate(&sizes);
+    MeVector3 pts[8], p0, p1, com;
+    static MeMatrix4 ground = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+    MdtWorldSetGravity(MstUniverseGetWorld(u), 0, 0, ME_R(-9.81));
+    MstFixedModelCreate(u, McdPlaneCreate(MstUniverseGetFramework(u)), ground);
+    boxCorners(pts, 0.25, 0.25, 0.25, 1, 0, 0);
+    McdGeometryID g = McdConvexMeshCreateHull(MstUniverseGetFramework(u), (const MeVector3 *)pts, 8, 0);
+    McdModelID m = MstModelAndBodyCreate(u, g, 1000);
+    MdtBodyID b = McdModelGetBody(m);
+    MdtBodyGetCenterOfMassRelativePosition(b, com);
+    assert_near(com[0], 1, 1e-5);
+    assert_near(com[1], 0, 1e-5);
+    assert_near(MdtBodyGetMass(b), 125, 1e-2);
+    MdtBodySetPosition(b, 0, 0, ME_R(0.25));
+    MdtBodyEnable(b);
+    MdtBodyGetCenterOfMassPosition(b, p0);
+    for (int i = 0; i < 120; i++)
+        MstUniverseStep(u, ME_R(1.0) / 60);
+    MdtBodyGetCenterOfMassPosition(b, p1);
+    MeVector4 q;
+    MdtBodyGetQuaternion(b, q);
+    printf("off-centre hull after 2 s: centre of mass moved (%.2e %.2e %.2e) m, rotation angle %.2e rad\n",
+           (double)(p1[0] - p0[0]), (double)(p1[1] - p0[1]), (double)(p1[2] - p0[2]),
+           2 * acos(fmin(1.0, fabs((double)q[0]))));
+    /* it sinks into the soft default contacts (a 125 kg body at massScale 1), but neither slides nor tilts
+     * (toppling about the edge 0.75 m from a wrong centre of mass would turn it by radians) */
+    assert_true(fabs(p1[0] - p0[0]) < 1e-4 && fabs(p1[1] - p0[1]) < 1e-4);
+    assert_true(p1[2] - p0[2] < 0 && p1[2] - p0[2] > -0.01);
+    assert_true(2 * acos(fmin(1.0, fabs((double)q[0]))) < 1e-3);
+    MstUniverseDestroy(u);
+}
+
 /* A convex box against the box primitive, on random poses: the same depth and a normal along which
  * the box-box pair overlaps by that depth; the swapped pair gives the negated normal. */
 static void convex_box_against_box_box(void **state)
@@ -707,6 +775,8 @@ int main(void)
         cmocka_unit_test(aabb_bsphere_and_segments_match_the_box),
         cmocka_unit_test(analytic_face_edge_vertex),
         cmocka_unit_test(rounded_hull_on_a_plane),
+        cmocka_unit_test(sphere_on_face_edge_vertex),
+        cmocka_unit_test(off_centre_hull_rests),
         cmocka_unit_test(convex_box_against_box_box),
         cmocka_unit_test(pair_tests_per_second),
     };
