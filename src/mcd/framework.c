@@ -34,7 +34,8 @@ static void installBuiltInTypes(McdFrameworkData *fw)
     fw->types[kMcdGeometryTypeCylinder] = McdCylinderTypeDesc;
     fw->types[kMcdGeometryTypeSphyl] = McdSphylTypeDesc;
     fw->types[kMcdGeometryTypeCone] = McdConeTypeDesc;
-    /* TriangleList, ConvexMesh and Aggregate keep their numbers; their types register later. */
+    fw->types[kMcdGeometryTypeConvexMesh] = McdConvexMeshTypeDesc;
+    /* TriangleList and Aggregate keep their numbers; their types register later. */
     fw->typeCount = kMcdGeometryBuiltInTypes;
 }
 

@@ -24,6 +24,9 @@ typedef struct McdSphylData { MeReal radius, halfHeight; } McdSphylData;       /
 /* A (possibly truncated) cone along z: the disc of lowerRadius at z = zLower, the disc of upperRadius
  * (0 for a pointed cone) at z = zUpper > zLower; the origin is the centre of mass. */
 typedef struct McdConeData { MeReal lowerRadius, upperRadius, zLower, zUpper; } McdConeData;
+struct McdHull;
+/* A convex polyhedron (geometry/convex_hull.h, owned by the geometry) rounded by `fatness`. */
+typedef struct McdConvexMeshData { struct McdHull *hull; MeReal fatness; } McdConvexMeshData;
 
 typedef struct McdGeometryData {
     uintptr_t id;
@@ -37,6 +40,7 @@ typedef struct McdGeometryData {
         McdCylinderData cylinder;
         McdSphylData sphyl;
         McdConeData cone;
+        McdConvexMeshData convex;
         void *user;       /* user-registered types */
     } u;
 } McdGeometryData;

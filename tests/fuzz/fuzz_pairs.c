@@ -1,4 +1,5 @@
-/* fuzz_pairs -- every pair test of the primitives, through McdIntersect and straight (McdNfCollide).
+/* fuzz_pairs -- every pair test of the primitives and convex meshes, through McdIntersect and straight
+ * (McdNfCollide).
  *
  * Bytes decode to two geometry types, their sizes (in range, or raw and then refused with a code),
  * their placements (proper rotations within the position range, the second often near the first so
@@ -18,6 +19,11 @@ static const double LENGTH_SCALE = 1;
 static const int TYPES[] = {kMcdGeometryTypeSphere, kMcdGeometryTypeBox,    kMcdGeometryTypePlane,
                             kMcdGeometryTypeCylinder, kMcdGeometryTypeSphyl, kMcdGeometryTypeCone};
 
+/* The type a byte selects: a convex mesh for 47, 95, 143, 191, 239 (byte values the corpus and the
+ * crashes kept before convex meshes existed never hold, so they decode as they did), else a
+ * primitive. */
+static int typeOf(unsigned byte) { return byte % 48 == 47 ? kMcdGeometryTypeConvexMesh : TYPES[byte % 6]; }
+
 /* A geometry of the type chosen by the bytes; NULL when a raw size was (rightly) refused. */
 static McdGeometryID makeGeometry(FuzzInput *in, int type)
 {
@@ -32,6 +38,23 @@ static McdGeometryID makeGeometry(FuzzInput *in, int type)
     case kMcdGeometryTypePlane: g = McdPlaneCreate(fw); break;
     case kMcdGeometryTypeCylinder: g = McdCylinderCreate(fw, a, b); break;
     case kMcdGeometryTypeSphyl: g = McdSphylCreate(fw, a, (fuzz_byte(in) & 3) == 0 ? 0 : b); break;
+    case kMcdGeometryTypeConvexMesh: {
+        /* 4 to 32 points in a box of size a (flat one time in eight), rounded by 0.1 b one time in four */
+        MeVector3 pts[32];
+        unsigned shape = fuzz_byte(in);
+        int n = 4 + (int)(shape % 29);
+        for (int i = 0; i < n; i++)
+            for (int k = 0; k < 3; k++)
+                pts[i][k] = (MeReal)(fuzz_unit(in) * (double)a);
+        if ((shape & 7) == 0)
+            for (int i = 0; i < n; i++)
+                pts[i][2] = 0;
+        g = McdConvexMeshCreateHull(fw, (const MeVector3 *)pts, n, (shape & 3) == 1 ? ME_R(0.1) * b : 0);
+        /* refused (a flat or tiny cloud, a raw size) always with a message */
+        if (!g)
+            FUZZ_CHECK(MeMessageGetTotalCount(ME_LEVEL_WARNING) > before, "convex mesh refused silently");
+        return g;
+    }
     default: g = McdConeCreate(fw, a, b); break;
     }
     /* refused exactly when a raw size fell outside the range, and then with a message */
@@ -122,7 +145,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         fw = McdInit(0, 8, 0, (MeReal)LENGTH_SCALE);
         McdPrimitivesRegisterInteractions(fw);
     }
-    int t1 = TYPES[fuzz_byte(&in) % 6], t2 = TYPES[fuzz_byte(&in) % 6];
+    int t1 = typeOf(fuzz_byte(&in)), t2 = typeOf(fuzz_byte(&in));
     McdGeometryID g1 = makeGeometry(&in, t1), g2 = makeGeometry(&in, t2);
     McdModelID m1 = g1 ? McdModelCreate(g1) : NULL, m2 = g2 ? McdModelCreate(g2) : NULL;
     if (m1 && m2) {

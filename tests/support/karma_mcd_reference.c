@@ -2,7 +2,10 @@
 #include "karma_mcd_reference.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
+
+#include "mcd/geometry/convex_hull.h"
 
 #define REF_PI 3.14159265358979323846
 
@@ -52,6 +55,24 @@ void ref_make_cone(McdGeometryData *g, double a, double b, double h)
 }
 
 void ref_make_plane(McdGeometryData *g) { zeroGeometry(g, kMcdGeometryTypePlane); }
+
+void ref_make_convex(McdGeometryData *g, MeVector3 *points, int n, double fatness)
+{
+    zeroGeometry(g, kMcdGeometryTypeConvexMesh);
+    g->u.convex.hull = malloc(sizeof(McdHull));
+    if (McdHullBuild((const MeVector3 *)points, n, g->u.convex.hull) != MCD_HULL_OK)
+        abort();
+    g->u.convex.fatness = (MeReal)fatness;
+}
+
+void ref_free_convex(McdGeometryData *g)
+{
+    if (g->type == kMcdGeometryTypeConvexMesh && g->u.convex.hull) {
+        McdHullFree(g->u.convex.hull);
+        free(g->u.convex.hull);
+        g->u.convex.hull = NULL;
+    }
+}
 
 double ref_uniform(RefRng *r, double lo, double hi)
 {
@@ -148,6 +169,63 @@ static double revolvedSdf(double rho, double z, double rl, double ru, double zl,
     return inside ? -d : d;
 }
 
+/* Distance from the local point l to the convex polygon p of the hull (in 3D). */
+static double polygonDistance(const McdHull *h, int p, const double l[3])
+{
+    const int *v = &h->polygonVertices[h->polygonStart[p]];
+    int n = h->polygonStart[p + 1] - h->polygonStart[p], k, j;
+    double nrm[3] = {h->normals[p][0], h->normals[p][1], h->normals[p][2]}, best = 1e300;
+    int inside = 1;
+    for (k = 0; k < n; k++) {
+        double a[3], b[3], e[3], ap[3], c[3], t, q[3], d2 = 0;
+        for (j = 0; j < 3; j++) {
+            a[j] = h->vertices[v[k]][j];
+            b[j] = h->vertices[v[(k + 1) % n]][j];
+            e[j] = b[j] - a[j];
+            ap[j] = l[j] - a[j];
+        }
+        c[0] = e[1] * ap[2] - e[2] * ap[1];
+        c[1] = e[2] * ap[0] - e[0] * ap[2];
+        c[2] = e[0] * ap[1] - e[1] * ap[0];
+        if (dot3(c, nrm) < 0) /* l lies outside this edge (counter-clockwise about the normal) */
+            inside = 0;
+        t = dot3(ap, e) / dot3(e, e);
+        t = t < 0 ? 0 : (t > 1 ? 1 : t);
+        for (j = 0; j < 3; j++) {
+            q[j] = l[j] - a[j] - t * e[j];
+            d2 += q[j] * q[j];
+        }
+        best = sqrt(d2) < best ? sqrt(d2) : best;
+    }
+    if (inside) {
+        double a[3] = {h->vertices[v[0]][0], h->vertices[v[0]][1], h->vertices[v[0]][2]}, ap[3];
+        for (j = 0; j < 3; j++)
+            ap[j] = l[j] - a[j];
+        return fabs(dot3(ap, nrm));
+    }
+    return best;
+}
+
+/* Signed distance to the polyhedron: inside, minus the distance to the nearest plane; outside, the
+ * distance to the nearest polygon. */
+static double convexSdf(const McdHull *h, const double l[3])
+{
+    double worst = -1e300, best = 1e300;
+    int p;
+    for (p = 0; p < h->polygonCount; p++) {
+        double n[3] = {h->normals[p][0], h->normals[p][1], h->normals[p][2]};
+        double d = dot3(n, l) - h->offsets[p];
+        worst = d > worst ? d : worst;
+    }
+    if (worst <= 0)
+        return worst;
+    for (p = 0; p < h->polygonCount; p++) {
+        double d = polygonDistance(h, p, l);
+        best = d < best ? d : best;
+    }
+    return best;
+}
+
 double ref_sdf(const McdGeometryData *g, MeMatrix4 tm, const double p[3])
 {
     double l[3];
@@ -180,6 +258,8 @@ double ref_sdf(const McdGeometryData *g, MeMatrix4 tm, const double p[3])
                            g->u.cone.zLower, g->u.cone.zUpper);
     case kMcdGeometryTypePlane:
         return l[2];
+    case kMcdGeometryTypeConvexMesh:
+        return convexSdf(g->u.convex.hull, l) - g->u.convex.fatness;
     default:
         return 1e300;
     }
@@ -206,6 +286,15 @@ double ref_support(const McdGeometryData *g, MeMatrix4 tm, const double d[3])
         double lo = g->u.cone.zLower * a[2] + g->u.cone.lowerRadius * rho;
         double hi = g->u.cone.zUpper * a[2] + g->u.cone.upperRadius * rho;
         return c + (lo > hi ? lo : hi);
+    }
+    case kMcdGeometryTypeConvexMesh: {
+        const McdHull *h = g->u.convex.hull;
+        double best = -1e300;
+        for (i = 0; i < h->vertexCount; i++) {
+            double v[3] = {h->vertices[i][0], h->vertices[i][1], h->vertices[i][2]}, x = dot3(v, a);
+            best = x > best ? x : best;
+        }
+        return c + best + g->u.convex.fatness;
     }
     default:
         return 1e300;
@@ -470,6 +559,8 @@ double ref_size(const McdGeometryData *g)
         return hypot(g->u.cylinder.radius, g->u.cylinder.halfHeight);
     case kMcdGeometryTypeCone:
         return hypot(g->u.cone.lowerRadius, g->u.cone.zUpper - g->u.cone.zLower);
+    case kMcdGeometryTypeConvexMesh:
+        return g->u.convex.hull->radius + g->u.convex.fatness;
     default:
         return 1;
     }
@@ -484,6 +575,7 @@ const char *ref_type_name(int type)
     case kMcdGeometryTypeCylinder: return "cylinder";
     case kMcdGeometryTypeSphyl: return "sphyl";
     case kMcdGeometryTypeCone: return "cone";
+    case kMcdGeometryTypeConvexMesh: return "convex";
     default: return "?";
     }
 }

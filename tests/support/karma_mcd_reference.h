@@ -16,6 +16,10 @@ void ref_make_sphyl(McdGeometryData *g, double r, double height);       /* heigh
  * the origin is its centre of mass */
 void ref_make_cone(McdGeometryData *g, double lowerRadius, double upperRadius, double height);
 void ref_make_plane(McdGeometryData *g);
+/** A convex mesh: the hull of n points (built by the library's McdHullBuild, whose output the hull
+ *  tests check against brute force) rounded by fatness; free it with ref_free_convex. */
+void ref_make_convex(McdGeometryData *g, MeVector3 *points, int n, double fatness);
+void ref_free_convex(McdGeometryData *g);
 
 /** xorshift generator, deterministic on every platform. */
 typedef struct RefRng { uint64_t s; } RefRng;

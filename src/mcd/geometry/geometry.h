@@ -14,6 +14,10 @@ extern const McdGeometryTypeDesc McdPlaneTypeDesc;
 extern const McdGeometryTypeDesc McdCylinderTypeDesc;
 extern const McdGeometryTypeDesc McdSphylTypeDesc;
 extern const McdGeometryTypeDesc McdConeTypeDesc;
+extern const McdGeometryTypeDesc McdConvexMeshTypeDesc;
+
+/** Index of the convex mesh's hull vertex farthest along the local direction dir (ties: the first). */
+int McdConvexMeshSupportIndex(const McdConvexMeshData *c, const MeVector3 dir);
 
 /** A new geometry of `type` from the framework's pool (reported in `function`'s name when full). */
 McdGeometryData *McdGeometryNew(McdFrameworkData *fw, int type, const char *function);

@@ -375,6 +375,7 @@ static void featureNormal(MeVector3 *p, MeVector3 m)
 static void acrossFaceEdge(const McdNfShape *s1, const McdNfShape *s2, McdNfDistance *d, MeVector3 *poly, int n,
                            const McdNfShape *other)
 {
+    const MeBool polyhedral = (other == s2 ? s1 : s2)->type == kMcdGeometryTypeConvexMesh;
     MeVector3 q, m, e, best = {ME_R(0.0), ME_R(0.0), ME_R(0.0)}, away = {ME_R(0.0), ME_R(0.0), ME_R(0.0)};
     MeReal worst = MCD_NF_REL_EPS * (s1->size + s2->size), orient;
     int i;
@@ -408,7 +409,8 @@ static void acrossFaceEdge(const McdNfShape *s1, const McdNfShape *s2, McdNfDist
         MeVector3MultiplyAdd(d->normal, ME_R(2.0) * ME_TOL_NF_STEP, away);
         MeVector3Normalize(d->normal);
         d->distance = -overlapAlong(s1, s2, d->normal);
-        newtonNormal(s1, s2, d, n == 4 ? best : NULL); /* a box face's edge is a kink, a disc's rim not */
+        /* a polyhedron's face edge is a kink (box, convex mesh), a disc's rim not */
+        newtonNormal(s1, s2, d, (n == 4 || polyhedral) ? best : NULL);
         if (d->distance < d0.distance)
             *d = d0;
     }

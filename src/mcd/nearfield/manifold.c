@@ -17,7 +17,7 @@ static int addAlong(McdContact *c, int count, int maxc, const MeVector3 on1, con
     return McdNfAddPair(c, count, maxc, on1, on2, normal, tol, dims);
 }
 
-#define CLIP_MAX 32
+#define CLIP_MAX (2 * MCD_NF_MAX_FEATURE) /* a polygon clipped by another keeps at most both counts */
 
 typedef struct Side {
     const McdNfShape *s;

@@ -38,7 +38,9 @@
 #define MCD_NF_FEATURE_COS ME_R(0.99875)
 /* Vertices of the polygon that stands for a disc (cylinder and cone caps) when clipping. */
 #define MCD_NF_DISC_SIDES 8
-#define MCD_NF_MAX_FEATURE MCD_NF_DISC_SIDES
+/* Points of a feature at most (a convex mesh's polygon with more vertices is taken by an evenly
+ * spaced subset of them: a polygon inside it, in its plane). */
+#define MCD_NF_MAX_FEATURE 32
 /* Pair tests run centred on geometry 1 beyond this many sizes of the pair from the origin. */
 #define MCD_NF_CENTRE_RATIO ME_R(64.0)
 /* Contacts a pair test keeps at most, whatever the request: four well-spread points hold a body. */
@@ -132,6 +134,7 @@ int McdNfBoxPlane(const McdGeometryData *, MeMatrix4, const McdGeometryData *, M
 int McdNfCylinderPlane(const McdGeometryData *, MeMatrix4, const McdGeometryData *, MeMatrix4, MeReal, McdContact *, int, void **);
 int McdNfSphylPlane(const McdGeometryData *, MeMatrix4, const McdGeometryData *, MeMatrix4, MeReal, McdContact *, int, void **);
 int McdNfConePlane(const McdGeometryData *, MeMatrix4, const McdGeometryData *, MeMatrix4, MeReal, McdContact *, int, void **);
+int McdNfConvexMeshPlane(const McdGeometryData *, MeMatrix4, const McdGeometryData *, MeMatrix4, MeReal, McdContact *, int, void **);
 
 /* ---- the table (table.c) ------------------------------------------------------------------ */
 

@@ -4,6 +4,7 @@
  * lowest points (a vertex, a sphere's lowest point, a few points of each rim) and keeps those within
  * the tolerance: a face or a cap standing on the plane gets several points, a body on an edge two, on
  * a corner one. */
+#include "../geometry/convex_hull.h"
 #include "nearfield.h"
 
 /* Contact of a point of the primitive's surface with the plane. */
@@ -169,6 +170,61 @@ int McdNfSphylPlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryD
             MeVector3MultiplyAdd(p, -g1->u.sphyl.radius, down);
             count += planePoint(buf, count, 2, tm2, p, tolerance);
         }
+    }
+    count = finish(buf, count, maxContacts);
+    for (k = 0; k < count; k++)
+        contacts[k] = buf[k];
+    return count;
+}
+
+/* Height of a hull vertex (local) above the plane. */
+static MeReal hullHeight(MeMatrix4 tm1, MeMatrix4 plane, const MeVector3 local)
+{
+    MeVector3 p, d;
+    McdNfToWorld(p, tm1, local);
+    MeVector3Subtract(d, p, plane[3]);
+    return MeVector3Dot(d, plane[2]);
+}
+
+/* Every hull vertex within the tolerance is a candidate; the set is reduced to the deepest and best
+ * spread four, whenever 64 are waiting and at the end (so the room needed does not grow with the
+ * hull). A rounded hull (fatness r) offers only the vertices of its lowest feature -- those no
+ * neighbour lies below by more than MCD_NF_FEATURE_SIN of the edge -- each moved down by r: the
+ * lowest points of their balls, on the surface exactly when the feature is level and within
+ * r (1 - cos 3 deg) = 1.3e-3 r of it otherwise (another vertex's ball point lies inside the solid). */
+int McdNfConvexMeshPlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
+                         MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
+{
+    const McdHull *h = g1->u.convex.hull;
+    const MeReal fat = g1->u.convex.fatness;
+    McdContact buf[64];
+    MeVector3 down;
+    int k, j, count = 0;
+    (void)g2;
+    (void)cache;
+    if (maxContacts <= 0)
+        return 0;
+    MeVector3MultiplyScalar(down, tm2[2], -fat);
+    for (k = 0; k < h->vertexCount; k++) {
+        MeVector3 p;
+        MeReal hk = hullHeight(tm1, tm2, h->vertices[k]);
+        if (hk - fat > tolerance)
+            continue;
+        if (fat > ME_R(0.0)) {
+            MeBool lowest = METRUE;
+            for (j = h->neighbourStart[k]; j < h->neighbourStart[k + 1] && lowest; j++) {
+                const MeReal *w = h->vertices[h->neighbours[j]];
+                lowest = hullHeight(tm1, tm2, w) >=
+                         hk - MCD_NF_FEATURE_SIN * MeVector3Distance(w, h->vertices[k]);
+            }
+            if (!lowest)
+                continue;
+        }
+        McdNfToWorld(p, tm1, h->vertices[k]);
+        MeVector3Add(p, p, down);
+        if (count == 64)
+            count = McdNfReduce(buf, count, MCD_NF_MAX_CONTACTS);
+        count += planePoint(buf, count, 64, tm2, p, tolerance);
     }
     count = finish(buf, count, maxContacts);
     for (k = 0; k < count; k++)

@@ -1,5 +1,7 @@
 /* shapes.c -- the primitives as a core swept by a radius: support points and facing features
  * (internal). Sphere = point + r, sphyl = segment + r; box, cylinder and cone are their own cores. */
+#include "../geometry/convex_hull.h"
+#include "../geometry/geometry.h"
 #include "nearfield.h"
 
 void McdNfShapeInit(McdNfShape *s, const McdGeometryData *g, MeMatrix4 tm)
@@ -25,6 +27,10 @@ void McdNfShapeInit(McdNfShape *s, const McdGeometryData *g, MeMatrix4 tm)
         break;
     case kMcdGeometryTypeCone:
         s->size = MeMAX3(g->u.cone.lowerRadius, g->u.cone.upperRadius, g->u.cone.zUpper - g->u.cone.zLower);
+        break;
+    case kMcdGeometryTypeConvexMesh: /* the polyhedron is the core, the fatness its radius */
+        s->radius = g->u.convex.fatness;
+        s->size = g->u.convex.hull->radius + g->u.convex.fatness;
         break;
     default:
         s->size = ME_R(1.0);
@@ -59,6 +65,9 @@ static void localCoreSupport(const McdGeometryData *g, const MeVector3 d, MeVect
         break;
     case kMcdGeometryTypeCylinder:
         discSupport(g->u.cylinder.radius, signOf(d[2]) * g->u.cylinder.halfHeight, d, out);
+        break;
+    case kMcdGeometryTypeConvexMesh:
+        MeVector3Copy(out, g->u.convex.hull->vertices[McdConvexMeshSupportIndex(&g->u.convex, d)]);
         break;
     case kMcdGeometryTypeCone: {
         MeVector3 lo, hi;
@@ -108,6 +117,49 @@ static int discPolygon(MeReal r, MeReal z, MeReal dx, MeReal dy, MeVector3 *pts)
     return MCD_NF_DISC_SIDES;
 }
 
+/* A convex mesh's feature facing the local unit direction n: of the polygons around the support
+ * vertex, the one whose normal is within MCD_NF_FEATURE_COS of n (at most MCD_NF_MAX_FEATURE of its
+ * vertices, evenly spaced), else the edge at the support vertex within MCD_NF_FEATURE_SIN of
+ * perpendicular to n, else the support vertex. */
+static int convexFeature(const McdConvexMeshData *c, const MeVector3 n, MeVector3 *pts)
+{
+    const McdHull *h = c->hull;
+    int p, best = 0, v = McdConvexMeshSupportIndex(c, n), k, w = -1;
+    MeReal bestCos = -MEINFINITY, bestSin = MCD_NF_FEATURE_SIN;
+    for (k = h->vertexPolygonStart[v]; k < h->vertexPolygonStart[v + 1]; k++) {
+        MeReal cs;
+        p = h->vertexPolygons[k];
+        cs = MeVector3Dot(h->normals[p], n);
+        if (cs > bestCos) {
+            bestCos = cs;
+            best = p;
+        }
+    }
+    if (bestCos >= MCD_NF_FEATURE_COS) {
+        int first = h->polygonStart[best], count = h->polygonStart[best + 1] - first;
+        int m = count < MCD_NF_MAX_FEATURE ? count : MCD_NF_MAX_FEATURE;
+        for (k = 0; k < m; k++)
+            MeVector3Copy(pts[k], h->vertices[h->polygonVertices[first + (k * count) / m]]);
+        return m;
+    }
+    MeVector3Copy(pts[0], h->vertices[v]);
+    for (k = h->neighbourStart[v]; k < h->neighbourStart[v + 1]; k++) {
+        MeVector3 e;
+        MeReal len, sn;
+        MeVector3Subtract(e, h->vertices[h->neighbours[k]], h->vertices[v]);
+        len = MeVector3Magnitude(e);
+        sn = len > ME_R(0.0) ? MeFabs(MeVector3Dot(e, n)) / len : MEINFINITY;
+        if (sn <= bestSin) {
+            bestSin = sn;
+            w = h->neighbours[k];
+        }
+    }
+    if (w < 0)
+        return 1;
+    MeVector3Copy(pts[1], h->vertices[w]);
+    return 2;
+}
+
 /* The local feature of a core facing the local unit direction n; h orients discs when n has no
  * radial part. */
 static int localFeature(const McdGeometryData *g, const MeVector3 n, const MeVector3 h, MeVector3 *pts)
@@ -116,6 +168,8 @@ static int localFeature(const McdGeometryData *g, const MeVector3 n, const MeVec
     MeReal rho = MeSqrt(n[0] * n[0] + n[1] * n[1]);
     MeReal dx = rho > ME_R(1e-3) ? n[0] : h[0], dy = rho > ME_R(1e-3) ? n[1] : h[1];
     switch (g->type) {
+    case kMcdGeometryTypeConvexMesh:
+        return convexFeature(&g->u.convex, n, pts);
     case kMcdGeometryTypeSphyl:
         if (MeFabs(n[2]) <= sinTol) {
             MeVector3Set(pts[0], ME_R(0.0), ME_R(0.0), -g->u.sphyl.halfHeight);

@@ -1,6 +1,7 @@
 /* table.c -- the built-in pair tests, one entry per unordered pair of primitive types (internal).
  * The framework's interaction table is filled from this list; McdNfCollide runs an entry in either
  * order for the tests and the benchmark. */
+#include "../geometry/convex_hull.h"
 #include "nearfield.h"
 
 static const McdNfPairEntry pairTable[] = {
@@ -24,6 +25,13 @@ static const McdNfPairEntry pairTable[] = {
     {kMcdGeometryTypeCylinder, kMcdGeometryTypePlane, McdNfCylinderPlane, "cylinder-plane"},
     {kMcdGeometryTypeSphyl, kMcdGeometryTypePlane, McdNfSphylPlane, "sphyl-plane"},
     {kMcdGeometryTypeCone, kMcdGeometryTypePlane, McdNfConePlane, "cone-plane"},
+    {kMcdGeometryTypeSphere, kMcdGeometryTypeConvexMesh, McdNfConvexConvex, "sphere-convex"},
+    {kMcdGeometryTypeBox, kMcdGeometryTypeConvexMesh, McdNfConvexConvex, "box-convex"},
+    {kMcdGeometryTypeCylinder, kMcdGeometryTypeConvexMesh, McdNfConvexConvex, "cylinder-convex"},
+    {kMcdGeometryTypeSphyl, kMcdGeometryTypeConvexMesh, McdNfConvexConvex, "sphyl-convex"},
+    {kMcdGeometryTypeCone, kMcdGeometryTypeConvexMesh, McdNfConvexConvex, "cone-convex"},
+    {kMcdGeometryTypeConvexMesh, kMcdGeometryTypeConvexMesh, McdNfConvexConvex, "convex-convex"},
+    {kMcdGeometryTypeConvexMesh, kMcdGeometryTypePlane, McdNfConvexMeshPlane, "convex-plane"},
 };
 
 const McdNfPairEntry *McdNfPairTable(int *count)
@@ -60,6 +68,8 @@ static MeReal reachOf(const McdGeometryData *g)
     case kMcdGeometryTypeSphyl: return g->u.sphyl.radius + g->u.sphyl.halfHeight;
     case kMcdGeometryTypeCone:
         return g->u.cone.lowerRadius + MeFabs(g->u.cone.zLower) + MeFabs(g->u.cone.zUpper);
+    case kMcdGeometryTypeConvexMesh:
+        return MeVector3Magnitude(g->u.convex.hull->centre) + g->u.convex.hull->radius + g->u.convex.fatness;
     default: return ME_R(0.0);
     }
 }

@@ -1,0 +1,489 @@
+/* convex_mesh.c -- the convex mesh: a hull (convex_hull.c) rounded by a fatness radius; its API and
+ * protocol. The vertices stay in the frame they were given in (Karma 1.2): the centre of mass is
+ * reported by the mass properties, not moved to the origin. */
+#include <math.h>
+#include <string.h>
+
+#include <karma/McdConvexMesh.h>
+#include <karma/McdPrimitives.h>
+#include <karma/MeDebugDraw.h>
+#include <karma/MeMemory.h>
+
+#include "../../me/check.h"
+#include "convex_hull.h"
+#include "geometry.h"
+
+/* Hulls with more vertices than this climb the vertex graph instead of reading every vertex. */
+#define CLIMB_MIN_VERTICES 48
+
+/* Index of the vertex farthest along dir (local). Small hulls: every vertex (ties: the first). Large
+ * ones: from vertex 0, to the best neighbour while it is farther along dir; on a convex polyhedron a
+ * vertex no neighbour improves on is the farthest (ties: one of them). */
+static int supportIndex(const McdHull *h, const MeVector3 dir)
+{
+    int i, best = 0;
+    MeReal bestD = MeVector3Dot(h->vertices[0], dir);
+    if (h->vertexCount < CLIMB_MIN_VERTICES) {
+        for (i = 1; i < h->vertexCount; i++) {
+            MeReal d = MeVector3Dot(h->vertices[i], dir);
+            if (d > bestD) {
+                bestD = d;
+                best = i;
+            }
+        }
+        return best;
+    }
+    for (int steps = 0; steps < h->vertexCount; steps++) {
+        int from = best;
+        for (i = h->neighbourStart[from]; i < h->neighbourStart[from + 1]; i++) {
+            int w = h->neighbours[i];
+            MeReal d = MeVector3Dot(h->vertices[w], dir);
+            if (d > bestD) {
+                bestD = d;
+                best = w;
+            }
+        }
+        if (best == from)
+            break;
+    }
+    return best;
+}
+
+int McdConvexMeshSupportIndex(const McdConvexMeshData *c, const MeVector3 dir) { return supportIndex(c->hull, dir); }
+
+static void convexAABB(McdGeometryID g, void *data, MeMatrix4 tm, MeVector3 minCorner, MeVector3 maxCorner)
+{
+    (void)g;
+    const McdConvexMeshData *c = data;
+    for (int j = 0; j < 3; j++) {
+        MeVector3 axis = {tm[0][j], tm[1][j], tm[2][j]}, neg = {-tm[0][j], -tm[1][j], -tm[2][j]};
+        MeReal hi = MeVector3Dot(c->hull->vertices[supportIndex(c->hull, axis)], axis);
+        MeReal lo = MeVector3Dot(c->hull->vertices[supportIndex(c->hull, neg)], axis);
+        maxCorner[j] = tm[3][j] + hi + c->fatness;
+        minCorner[j] = tm[3][j] + lo - c->fatness;
+    }
+}
+
+static void convexBSphere(McdGeometryID g, void *data, MeVector3 centre, MeReal *radius)
+{
+    (void)g;
+    const McdConvexMeshData *c = data;
+    MeVector3Copy(centre, c->hull->centre);
+    *radius = c->hull->radius + c->fatness;
+}
+
+static void convexSupport(McdGeometryID g, void *data, const MeVector3 dir, MeVector3 point)
+{
+    (void)g;
+    const McdConvexMeshData *c = data;
+    MeVector3 u;
+    MeVector3Copy(point, c->hull->vertices[supportIndex(c->hull, dir)]);
+    MeVector3Copy(u, dir);
+    if (c->fatness > 0 && MeVector3NormalizeSafe(u))
+        MeVector3MultiplyAdd(point, c->fatness, u);
+}
+
+/* Volume, centre of mass and inertia (about the centre of mass) of the polyhedron h, unit density:
+ * each polygon is a fan of triangles, each triangle with a reference point inside the hull a
+ * tetrahedron whose moments are exact (the second moment of a tetrahedron with a vertex at the origin
+ * and the others a, b, c is V/20 (aa' + bb' + cc' + ss'), s = a + b + c). In double, relative to
+ * that point. */
+static void polyhedronMass(const McdHull *h, MeReal *volume, MeVector3 com, MeMatrix3 inertia)
+{
+    double ref[3] = {0, 0, 0}, vol = 0, first[3] = {0, 0, 0}, second[3][3] = {{0}};
+    int i, j, k, p;
+    for (i = 0; i < h->vertexCount; i++)
+        for (k = 0; k < 3; k++)
+            ref[k] += (double)h->vertices[i][k] / h->vertexCount;
+    for (p = 0; p < h->polygonCount; p++) {
+        const int *pv = &h->polygonVertices[h->polygonStart[p]];
+        int n = h->polygonStart[p + 1] - h->polygonStart[p];
+        for (i = 1; i + 1 < n; i++) {
+            double x[3][3], s[3], v;
+            const int idx[3] = {pv[0], pv[i], pv[i + 1]};
+            for (j = 0; j < 3; j++)
+                for (k = 0; k < 3; k++)
+                    x[j][k] = (double)h->vertices[idx[j]][k] - ref[k];
+            v = (x[0][0] * (x[1][1] * x[2][2] - x[1][2] * x[2][1]) - x[0][1] * (x[1][0] * x[2][2] - x[1][2] * x[2][0]) +
+                 x[0][2] * (x[1][0] * x[2][1] - x[1][1] * x[2][0])) /
+                6;
+            for (k = 0; k < 3; k++)
+                s[k] = x[0][k] + x[1][k] + x[2][k];
+            vol += v;
+            for (k = 0; k < 3; k++)
+                first[k] += v * s[k] / 4;
+            for (j = 0; j < 3; j++)
+                for (k = 0; k < 3; k++)
+                    second[j][k] += v / 20 * (x[0][j] * x[0][k] + x[1][j] * x[1][k] + x[2][j] * x[2][k] + s[j] * s[k]);
+        }
+    }
+    {
+        double g3[3], c[3][3], tr;
+        for (k = 0; k < 3; k++)
+            g3[k] = first[k] / vol;
+        for (j = 0; j < 3; j++)
+            for (k = 0; k < 3; k++)
+                c[j][k] = second[j][k] - vol * g3[j] * g3[k]; /* about the centre of mass */
+        tr = c[0][0] + c[1][1] + c[2][2];
+        for (j = 0; j < 3; j++)
+            for (k = 0; k < 3; k++)
+                inertia[j][k] = (MeReal)((j == k ? tr : 0) - c[j][k]);
+        MeVector3Set(com, (MeReal)(ref[0] + g3[0]), (MeReal)(ref[1] + g3[1]), (MeReal)(ref[2] + g3[2]));
+        *volume = (MeReal)vol;
+    }
+}
+
+/* Directions that sample the sphere for the rounded solid's mass: the 12 vertices, 20 face centres
+ * and 30 edge midpoints of an icosahedron (unnormalised; every direction of the sphere lies within
+ * 19 degrees (18.7) of one of them). */
+#define ROUND_DIRECTIONS 62
+static int roundDirections(double d[ROUND_DIRECTIONS][3])
+{
+    const double t = (1 + sqrt(5.0)) / 2;
+    double v[12][3];
+    int n = 0, i, j, k, c = 0;
+    for (i = 0; i < 4; i++) { /* (0, +-1, +-t) and its cyclic permutations */
+        double a = (i & 1) ? -1 : 1, b = (i & 2) ? -t : t;
+        for (k = 0; k < 3; k++) {
+            v[c][k] = 0;
+            v[c][(k + 1) % 3] = a;
+            v[c][(k + 2) % 3] = b;
+            c++;
+        }
+    }
+    for (i = 0; i < 12; i++, n++)
+        for (k = 0; k < 3; k++)
+            d[n][k] = v[i][k];
+    /* neighbours are 2 apart; face centres from triples of mutual neighbours */
+    for (i = 0; i < 12; i++)
+        for (j = i + 1; j < 12; j++) {
+            double e = 0;
+            for (k = 0; k < 3; k++)
+                e += (v[i][k] - v[j][k]) * (v[i][k] - v[j][k]);
+            if (fabs(e - 4) > 1e-9)
+                continue;
+            for (k = 0; k < 3; k++)
+                d[n][k] = v[i][k] + v[j][k];
+            n++;
+            for (c = j + 1; c < 12; c++) {
+                double e1 = 0, e2 = 0;
+                for (k = 0; k < 3; k++) {
+                    e1 += (v[i][k] - v[c][k]) * (v[i][k] - v[c][k]);
+                    e2 += (v[j][k] - v[c][k]) * (v[j][k] - v[c][k]);
+                }
+                if (fabs(e1 - 4) < 1e-9 && fabs(e2 - 4) < 1e-9) {
+                    for (k = 0; k < 3; k++)
+                        d[n][k] = v[i][k] + v[j][k] + v[c][k];
+                    n++;
+                }
+            }
+        }
+    return n;
+}
+
+/* The mass properties of the solid: the polyhedron's exactly when it is not rounded; a rounded one
+ * (fatness r) as the hull of every vertex moved by r along ROUND_DIRECTIONS directions, an inner
+ * approximation of the rounded solid within r (1 - cos 19 deg) = 0.054 r of its surface. Returns
+ * MEFALSE when memory ran out. */
+static MeBool computeMass(McdHull *h, MeReal fatness)
+{
+    double dir[ROUND_DIRECTIONS][3];
+    McdHull round;
+    MeVector3 *pts;
+    int i, k, n = h->vertexCount * ROUND_DIRECTIONS;
+    if (fatness <= 0) {
+        polyhedronMass(h, &h->volume, h->centreOfMass, h->inertia);
+        return METRUE;
+    }
+    if (roundDirections(dir) != ROUND_DIRECTIONS)
+        return MEFALSE;
+    pts = MeMemoryCreate((size_t)n * sizeof(MeVector3));
+    if (!pts)
+        return MEFALSE;
+    for (i = 0; i < h->vertexCount; i++)
+        for (k = 0; k < ROUND_DIRECTIONS; k++) {
+            double len = sqrt(dir[k][0] * dir[k][0] + dir[k][1] * dir[k][1] + dir[k][2] * dir[k][2]);
+            for (int j = 0; j < 3; j++)
+                pts[i * ROUND_DIRECTIONS + k][j] = h->vertices[i][j] + (MeReal)((double)fatness * dir[k][j] / len);
+        }
+    McdHullStatus st = McdHullBuild((const MeVector3 *)pts, n, &round);
+    MeMemoryDestroy(pts);
+    if (st != MCD_HULL_OK)
+        return MEFALSE;
+    polyhedronMass(&round, &h->volume, h->centreOfMass, h->inertia);
+    McdHullFree(&round);
+    return METRUE;
+}
+
+static void convexMass(McdGeometryID g, void *data, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume)
+{
+    (void)g;
+    const McdHull *h = ((const McdConvexMeshData *)data)->hull;
+    MeMatrix4TMMakeIdentity(relTM);
+    MeVector3Copy(relTM[3], h->centreOfMass);
+    memcpy(inertia, h->inertia, sizeof(MeMatrix3));
+    *volume = h->volume;
+}
+
+/* The polyhedron is the intersection of its polygons' half-spaces; with a fatness each plane moves out
+ * by it (exact on the faces, up to fatness (sqrt 3 - 1) too far out near edges and corners). */
+static int convexSegment(McdGeometryID g, void *data, const MeVector3 p0, const MeVector3 p1, MeReal *t,
+                         MeVector3 normal)
+{
+    (void)g;
+    const McdConvexMeshData *c = data;
+    const McdHull *h = c->hull;
+    McdLineInterval iv;
+    MeVector3 d;
+    MeVector3Subtract(d, p1, p0);
+    McdLineIntervalAll(&iv);
+    for (int p = 0; p < h->polygonCount && iv.tIn <= iv.tOut; p++) {
+        MeReal den = MeVector3Dot(h->normals[p], d);
+        MeReal num = h->offsets[p] + c->fatness - MeVector3Dot(h->normals[p], p0);
+        if (den == 0) {
+            if (num < 0)
+                iv.tIn = MEINFINITY; /* parallel and outside: empty */
+            continue;
+        }
+        MeReal tp = num / den;
+        if (den < 0) {
+            if (tp > iv.tIn) {
+                iv.tIn = tp;
+                MeVector3Copy(iv.nIn, h->normals[p]);
+            }
+        } else if (tp < iv.tOut)
+            iv.tOut = tp;
+    }
+    return McdLineIntervalToSegmentHit(&iv, d, t, normal);
+}
+
+static void convexDestroy(McdGeometryID g, void *data)
+{
+    (void)g;
+    McdConvexMeshData *c = data;
+    if (c->hull) {
+        McdHullFree(c->hull);
+        MeMemoryDestroy(c->hull);
+        c->hull = NULL;
+    }
+}
+
+/* Wire-frame: every edge once. */
+static void convexDraw(McdGeometryID g, void *data, MeMatrix4 tm, const float colour[3])
+{
+    (void)g;
+    const McdHull *h = ((const McdConvexMeshData *)data)->hull;
+    for (int e = 0; e < h->edgeCount; e++) {
+        MeVector3 a, b;
+        MeMatrix4TMTransform(a, tm, h->vertices[h->edges[2 * e]]);
+        MeMatrix4TMTransform(b, tm, h->vertices[h->edges[2 * e + 1]]);
+        MeDebugDrawAPI.line(a, b, colour[0], colour[1], colour[2]);
+    }
+}
+
+const McdGeometryTypeDesc McdConvexMeshTypeDesc = {"ConvexMesh", convexDestroy, convexAABB, convexBSphere,
+                                                   convexSupport, convexMass, convexSegment, convexDraw};
+
+McdConvexMeshID McdConvexMeshCreateHull(McdFrameworkID fwId, const MeVector3 *vertices, int vertexCount,
+                                        MeReal fatnessRadius)
+{
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
+    if (!fw)
+        return NULL;
+    ME_CHECK_NOT_NULL(vertices, NULL);
+    if (!McdCheckDimension(fw, fatnessRadius, "fatnessRadius", METRUE, __func__))
+        return NULL;
+    if (vertexCount < 4) {
+        ME_REPORT(ME_ERR_MCD_HULL_FLAT, "vertexCount (%d) must be at least 4; call ignored", vertexCount);
+        return NULL;
+    }
+    MeReal far = 0;
+    for (int i = 0; i < vertexCount; i++) {
+        if (!MeVector3IsValid(vertices[i])) {
+            ME_REPORT(ME_ERR_NONFINITE_ARGUMENT, "vertices[%d] holds NaN or infinity; call ignored", i);
+            return NULL;
+        }
+        far = MeMAX(far, MeMAX3(MeFabs(vertices[i][0]), MeFabs(vertices[i][1]), MeFabs(vertices[i][2])));
+    }
+    if (far > MCD_SIZE_MAX * fw->lengthScale) {
+        ME_REPORT(ME_ERR_MCD_SIZE_RANGE, "a vertex lies %g from the origin, beyond %g (1e6 times the framework's "
+                  "lengthScale); call ignored", (double)far, (double)(MCD_SIZE_MAX * fw->lengthScale));
+        return NULL;
+    }
+    McdHull *hull = MeMemoryCreate(sizeof *hull);
+    if (!hull)
+        return NULL;
+    McdHullStatus status = McdHullBuild(vertices, vertexCount, hull);
+    if (status != MCD_HULL_OK) {
+        MeMemoryDestroy(hull);
+        if (status == MCD_HULL_FLAT)
+            ME_REPORT(ME_ERR_MCD_HULL_FLAT, "the %d points span no volume: they lie within %g of a line or a plane "
+                      "(the hull tolerance); call ignored", vertexCount, McdHullTolerance(vertices, vertexCount));
+        return NULL;
+    }
+    /* the hull's smallest extent (its thickness along some polygon normal) must be a valid size */
+    MeReal thin = MEINFINITY;
+    for (int p = 0; p < hull->polygonCount; p++) {
+        MeVector3 neg;
+        MeVector3MultiplyScalar(neg, hull->normals[p], -1);
+        thin = MeMIN(thin, hull->offsets[p] + MeVector3Dot(hull->vertices[supportIndex(hull, neg)], neg));
+    }
+    if (!(thin >= MCD_SIZE_MIN * fw->lengthScale)) {
+        ME_REPORT(ME_ERR_MCD_SIZE_RANGE, "the hull is %g thick, below %g (1e-6 times the framework's lengthScale); "
+                  "call ignored", (double)thin, (double)(MCD_SIZE_MIN * fw->lengthScale));
+        McdHullFree(hull);
+        MeMemoryDestroy(hull);
+        return NULL;
+    }
+    McdGeometryData *g = computeMass(hull, fatnessRadius) ? McdGeometryNew(fw, kMcdGeometryTypeConvexMesh, __func__)
+                                                           : NULL;
+    if (!g) {
+        McdHullFree(hull);
+        MeMemoryDestroy(hull);
+        return NULL;
+    }
+    g->u.convex.hull = hull;
+    g->u.convex.fatness = fatnessRadius;
+    return McdGeometryToID(g);
+}
+
+/* The sphyl as a rounded polyhedron: the core is the box [-d, d]^2 x [-h/2, h/2] (a segment made thick
+ * enough for the hull tolerance: d = 1e-3 r + 1e-5 h), the fatness r - d; the solid then lies
+ * between the sphyl shrunk by d and grown by d (sqrt 2 - 1). Its mass properties are the sphyl's
+ * closed form (radius r, cylinder part h). */
+McdConvexMeshID McdConvexMeshCreateSphyl(McdFrameworkID fwId, MeReal radius, MeReal height)
+{
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
+    if (!fw || !McdCheckDimension(fw, radius, "radius", MEFALSE, __func__) ||
+        !McdCheckDimension(fw, height, "height", METRUE, __func__))
+        return NULL;
+    MeReal d = ME_R(1e-3) * radius + ME_R(1e-5) * height, hh = ME_R(0.5) * height;
+    MeVector3 corners[8];
+    for (int k = 0; k < 8; k++)
+        MeVector3Set(corners[k], (k & 1) ? d : -d, (k & 2) ? d : -d, (k & 4) ? hh + d : -hh - d);
+    McdConvexMeshID id = McdConvexMeshCreateHull(fwId, (const MeVector3 *)corners, 8, radius - d);
+    McdGeometryData *g = id ? McdGeometryFromID(id, __func__) : NULL;
+    if (!g)
+        return NULL;
+    {
+        McdHull *h = g->u.convex.hull;
+        MeReal r = radius, r2 = r * r, vCyl = ME_PI * r2 * height, vBall = ME_R(4.0) / 3 * ME_PI * r2 * r;
+        /* a cylinder and two hemispheres (centroids 3r/8 beyond their flat faces at z = +-h/2) */
+        MeReal ixx = vCyl * (3 * r2 + height * height) / 12 + vBall * (ME_R(0.4) * r2 + hh * hh + ME_R(0.75) * hh * r);
+        h->volume = vCyl + vBall;
+        MeVector3Set(h->centreOfMass, 0, 0, 0);
+        McdDiagonalInertia(h->inertia, ixx, ixx, vCyl * r2 / 2 + ME_R(0.4) * vBall * r2);
+    }
+    return id;
+}
+
+#define CONVEX_OR_RETURN(c, id, ret)                                                                 \
+    McdGeometryData *c##G = McdGeometryOfType((id), kMcdGeometryTypeConvexMesh, __func__);           \
+    if (!c##G)                                                                                       \
+        return ret;                                                                                  \
+    const McdHull *c = c##G->u.convex.hull
+
+void McdConvexMeshDestroy(McdConvexMeshID id)
+{
+    if (McdGeometryOfType(id, kMcdGeometryTypeConvexMesh, __func__))
+        McdGeometryDestroy(id);
+}
+
+int McdConvexMeshGetPolygonCount(McdConvexMeshID id)
+{
+    CONVEX_OR_RETURN(h, id, 0);
+    return h->polygonCount;
+}
+
+static MeBool polygonInRange(const McdHull *h, int polyID, const char *function)
+{
+    if (polyID < 0 || polyID >= h->polygonCount) {
+        ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE, "polyID (%d) must lie in 0 ... %d; call ignored", polyID,
+                     h->polygonCount - 1);
+        return MEFALSE;
+    }
+    return METRUE;
+}
+
+static const MeReal *polygonVertex(const McdHull *h, int polyID, int vertexID, const char *function)
+{
+    if (!polygonInRange(h, polyID, function))
+        return NULL;
+    int n = h->polygonStart[polyID + 1] - h->polygonStart[polyID];
+    if (vertexID < 0 || vertexID >= n) {
+        ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE, "vertexID (%d) must lie in 0 ... %d; call ignored", vertexID,
+                     n - 1);
+        return NULL;
+    }
+    return h->vertices[h->polygonVertices[h->polygonStart[polyID] + vertexID]];
+}
+
+int McdConvexMeshGetPolygonVertexCount(McdConvexMeshID id, int polyID)
+{
+    CONVEX_OR_RETURN(h, id, 0);
+    if (!polygonInRange(h, polyID, __func__))
+        return 0;
+    return h->polygonStart[polyID + 1] - h->polygonStart[polyID];
+}
+
+void McdConvexMeshGetPolygonVertex(McdConvexMeshID id, int polyID, int vertexID, MeVector3 coords)
+{
+    CONVEX_OR_RETURN(h, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(coords, ME_NOTHING);
+    const MeReal *v = polygonVertex(h, polyID, vertexID, __func__);
+    if (v)
+        MeVector3Copy(coords, v);
+}
+
+const MeReal *McdConvexMeshGetPolygonVertexPtr(McdConvexMeshID id, int polyID, int vertexID)
+{
+    CONVEX_OR_RETURN(h, id, NULL);
+    return polygonVertex(h, polyID, vertexID, __func__);
+}
+
+void McdConvexMeshGetPolygonNormal(McdConvexMeshID id, int polyID, MeVector3 normal)
+{
+    CONVEX_OR_RETURN(h, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(normal, ME_NOTHING);
+    if (polygonInRange(h, polyID, __func__))
+        MeVector3Copy(normal, h->normals[polyID]);
+}
+
+int McdConvexMeshGetVertexCount(McdConvexMeshID id)
+{
+    CONVEX_OR_RETURN(h, id, 0);
+    return h->vertexCount;
+}
+
+void McdConvexMeshGetVertex(McdConvexMeshID id, int index, MeVector3 position)
+{
+    CONVEX_OR_RETURN(h, id, ME_NOTHING);
+    ME_CHECK_NOT_NULL(position, ME_NOTHING);
+    if (index < 0 || index >= h->vertexCount) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "index (%d) must lie in 0 ... %d; call ignored", index, h->vertexCount - 1);
+        return;
+    }
+    MeVector3Copy(position, h->vertices[index]);
+}
+
+MeReal McdConvexMeshGetFatness(McdConvexMeshID id)
+{
+    McdGeometryData *g = McdGeometryOfType(id, kMcdGeometryTypeConvexMesh, __func__);
+    return g ? g->u.convex.fatness : 0;
+}
+
+MeI16 McdConvexMeshGetMassProperties(McdConvexMeshID id, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume)
+{
+    if (!McdGeometryOfType(id, kMcdGeometryTypeConvexMesh, __func__))
+        return 1;
+    return McdGeometryGetMassProperties(id, relTM, inertia, volume);
+}
+
+MeI16 McdConvexMeshGetTypeId(void) { return (MeI16)kMcdGeometryTypeConvexMesh; }
+
+void McdConvexMeshRegisterType(McdFramework *frame) { (void)McdFrameworkFromID(frame, __func__); }
+
+MeBool McdConvexMeshPrimitivesRegisterInteractions(McdFramework *frame)
+{
+    return McdPrimitivesRegisterInteractions(frame);
+}
