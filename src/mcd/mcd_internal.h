@@ -24,6 +24,10 @@ typedef struct McdSphylData { MeReal radius, halfHeight; } McdSphylData;       /
 /* A (possibly truncated) cone along z: the disc of lowerRadius at z = zLower, the disc of upperRadius
  * (0 for a pointed cone) at z = zUpper > zLower; the origin is the centre of mass. */
 typedef struct McdConeData { MeReal lowerRadius, upperRadius, zLower, zUpper; } McdConeData;
+/* A triangle as a core for the nearfield's GJK/EPA (never a geometry of the framework: the terrain
+ * pair tests make one per triangle, type MCD_NF_TRIANGLE_TYPE). */
+typedef struct McdTriangleCoreData { MeVector3 v[3]; } McdTriangleCoreData;
+struct McdTerrainData; /* triangle list, triangle mesh, height field (terrain/terrain.h) */
 
 typedef struct McdGeometryData {
     uintptr_t id;
@@ -37,6 +41,8 @@ typedef struct McdGeometryData {
         McdCylinderData cylinder;
         McdSphylData sphyl;
         McdConeData cone;
+        McdTriangleCoreData triangle;
+        struct McdTerrainData *terrain;
         void *user;       /* user-registered types */
     } u;
 } McdGeometryData;
