@@ -581,6 +581,281 @@ static void random_poses_one_triangle(void **state)
     }
 }
 
+/* ---- resting on a flat tessellated floor: the contacts of a plane ----------------------------------- */
+
+enum { FLOOR_MESH, FLOOR_FIELD, FLOOR_LIST, FLOORS };
+static const char *const floorNames[FLOORS] = {"mesh", "height field", "triangle list"};
+
+static McdGeometryID makeFloor(McdFrameworkID fw, int kind, McdTriangleMeshID *meshOut)
+{
+    McdTriangleMeshID mesh = karma_floor_mesh(fw, 2, 8, 0.3, 5);
+    if (meshOut)
+        *meshOut = mesh;
+    switch (kind) {
+    case FLOOR_MESH: return mesh;
+    case FLOOR_FIELD: return karma_floor_field(fw, 2, 8);
+    default: return karma_floor_list(fw, mesh);
+    }
+}
+
+/* The y-up placement of a z-up floor (as a plane's, McdPlane.h) or the identity. */
+static void floorTM(MeMatrix4 tm, int yUp)
+{
+    MeMatrix4TMMakeIdentity(tm);
+    if (yUp) {
+        MeVector3Set(tm[1], 0, 0, -1);
+        MeVector3Set(tm[2], 0, 1, 0);
+    }
+}
+
+static void rests_as_on_a_plane(void **state)
+{
+    (void)state;
+    McdFrameworkID fw = fwNew();
+    McdGeometryID shapes[5] = {McdSphereCreate(fw, ME_R(0.3)), McdBoxCreate(fw, ME_R(0.4), ME_R(0.5), ME_R(0.3)),
+                               McdCylinderCreate(fw, ME_R(0.25), ME_R(0.5)), McdSphylCreate(fw, ME_R(0.2), ME_R(0.5)),
+                               McdConeCreate(fw, ME_R(0.6), ME_R(0.3))};
+    /* the lowest point of each shape in its resting pose (sphyl lying along x, others upright) */
+    const double bottom[5] = {0.3, 0.15, 0.25, 0.2, 0.15};
+    const int lying[5] = {0, 0, 1, 1, 0};
+    McdModelID plane[2];
+    for (int yUp = 0; yUp < 2; yUp++) {
+        MeMatrix4 tm;
+        floorTM(tm, yUp);
+        plane[yUp] = modelAt(McdPlaneCreate(fw), tm);
+    }
+    for (int kind = 0; kind < FLOORS; kind++) {
+        McdTriangleMeshID mesh = NULL;
+        McdGeometryID floorGeo = makeFloor(fw, kind, &mesh);
+        assert_non_null(floorGeo);
+        double worstNormal = 0, worstDepth = 0, worstCorner = 0, worstSurface = 0;
+        int cases = 0;
+        for (int yUp = 0; yUp < 2; yUp++) {
+            MeMatrix4 ftm;
+            floorTM(ftm, yUp);
+            McdModelID floor = modelAt(floorGeo, ftm);
+            MeRealRandomSeed(3);
+            for (int s = 0; s < 5; s++)
+                for (int pose = 0; pose < 60; pose++) {
+                    /* local pose on the floor: a yaw, a place, 5 mm deep */
+                    double yaw = MeRealRandomInRange(0, ME_R(6.283)), x = MeRealRandomInRange(-1.5, 1.5),
+                           y = MeRealRandomInRange(-1.5, 1.5);
+                    MeMatrix4 local, world;
+                    if (lying[s])
+                        ref_tm_axis_angle(local, 0, 1, 0, 3.14159265358979 / 2, x, y, bottom[s] - 0.005);
+                    else
+                        MeMatrix4TMMakeIdentity(local), MeMatrix4TMSetPosition(local, (MeReal)x, (MeReal)y,
+                                                                               (MeReal)(bottom[s] - 0.005));
+                    MeMatrix4 yawTM;
+                    ref_tm_axis_angle(yawTM, 0, 0, 1, yaw, 0, 0, 0);
+                    MeMatrix4 tmp;
+                    MeMatrix4MultiplyMatrix(tmp, local, yawTM); /* turned about the floor's normal */
+                    MeVector3Copy(tmp[3], local[3]);
+                    MeMatrix4MultiplyMatrix(world, tmp, ftm);
+                    McdModelID m = modelAt(shapes[s], world);
+                    McdContact cf[4], cp[4];
+                    int nf = intersect(m, floor, cf, 4), np = intersect(m, plane[yUp], cp, 4);
+                    assert_true(np >= 1);
+                    assert_true(nf >= 1);
+                    double deepF = 1e9, deepP = 1e9;
+                    TestShape shape = test_shape_of(shapes[s]);
+                    for (int i = 0; i < nf; i++) {
+                        double on1[3];
+                        for (int j = 0; j < 3; j++) {
+                            worstNormal = fmax(worstNormal, fabs(cf[i].normal[j] - ftm[2][j]));
+                            on1[j] = cf[i].position[j] + 0.5 * cf[i].separation * cf[i].normal[j];
+                        }
+                        worstSurface = fmax(worstSurface, fabs(test_sdf_world(&shape, world, on1)));
+                        deepF = fmin(deepF, cf[i].separation);
+                    }
+                    if (np >= 3)
+                        assert_true(nf >= 3); /* a face down stands on three points or more */
+                    for (int i = 0; i < np; i++)
+                        deepP = fmin(deepP, cp[i].separation);
+                    worstDepth = fmax(worstDepth, fabs(deepF - deepP));
+                    /* the support: each of the plane's contacts has a floor contact there (a box's
+                     * corners, a sphyl's ends, a sphere's point); a lying sphyl may get more points
+                     * along its line, all at the same depth */
+                    const int polygonal = s != 2 && s != 4; /* discs: other rim points, as valid */
+                    for (int i = 0; i < np && polygonal; i++) {
+                        double best = 1e9;
+                        for (int k = 0; k < nf; k++)
+                            best = fmin(best, MeVector3Distance(cp[i].position, cf[k].position));
+                        if (best > 1e-4 && getenv("TERRAIN_DEBUG"))
+                            printf("shape %d pose %d: plane contact %d of %d unmatched by %g (%d floor contacts)\n", s,
+                                   pose, i, np, best, nf);
+                        worstCorner = fmax(worstCorner, best);
+                    }
+                    cases++;
+                    McdModelDestroy(m);
+                }
+            McdModelDestroy(floor);
+        }
+        printf("%-13s: %d rests: normal off by %.1e, depth off by %.1e, plane's contacts matched to %.1e m, "
+               "points on the shape to %.1e m\n", floorNames[kind], cases, worstNormal, worstDepth, worstCorner,
+               worstSurface);
+        assert_true(worstSurface < ME_TOL(1e-9, 1e-5));
+        assert_true(worstNormal < ME_TOL(1e-9, 1e-5));
+        assert_true(worstDepth < ME_TOL(1e-9, 1e-5));
+        assert_true(worstCorner < ME_TOL(1e-6, 1e-4));
+        if (kind != FLOOR_MESH)
+            McdGeometryDestroy(floorGeo);
+        if (kind != FLOOR_MESH || mesh != floorGeo)
+            McdGeometryDestroy(mesh);
+        else
+            McdGeometryDestroy(mesh);
+    }
+    McdTerm(fw);
+}
+
+/* ---- line segments ------------------------------------------------------------------------------ */
+
+static void segments_first_hit(void **state)
+{
+    (void)state;
+    McdFrameworkID fw = fwNew();
+    MeMatrix4 id;
+    MeMatrix4TMMakeIdentity(id);
+    for (int kind = 0; kind < FLOORS; kind++) {
+        McdTriangleMeshID mesh = NULL;
+        McdModelID floor = modelAt(makeFloor(fw, kind, &mesh), id);
+        McdLineSegIntersectResult r;
+        MeRealRandomSeed(9);
+        for (int i = 0; i < 200; i++) {
+            MeReal x = MeRealRandomInRange(-1.7, 1.7), y = MeRealRandomInRange(-1.7, 1.7);
+            MeReal dx = MeRealRandomInRange(-0.5, 0.5), dy = MeRealRandomInRange(-0.5, 0.5);
+            MeVector3 p0 = {x, y, 1}, p1 = {x + dx, y + dy, -1};
+            int hit0 = McdLineSegIntersect(floor, p0, p1, &r);
+            if (!hit0 && getenv("TERRAIN_DEBUG"))
+                printf("kind %d segment %d at %g %g missed\n", kind, i, (double)x, (double)y);
+            assert_true(hit0);
+            assert_true(r.model == floor);
+            assert_near(r.position[0], x + dx / 2, ME_TOL(1e-9, 1e-5));
+            assert_near(r.position[1], y + dy / 2, ME_TOL(1e-9, 1e-5));
+            assert_near(r.position[2], 0, ME_TOL(1e-9, 1e-5));
+            assert_near(r.normal[2], 1, ME_TOL(1e-9, 1e-6));
+            assert_near(r.distance, MeVector3Distance(p0, p1) / 2, ME_TOL(1e-9, 1e-5));
+            /* from below: the two-sided mesh and list hit with the normal down, the height field is
+             * one-sided (solid below): no entry from inside */
+            int hit = McdLineSegIntersect(floor, p1, p0, &r);
+            assert_int_equal(hit, kind != FLOOR_FIELD);
+            if (hit)
+                assert_near(r.normal[2], -1, ME_TOL(1e-9, 1e-6));
+            /* a segment that stops short, or passes beside */
+            MeVector3 p2 = {x, y, ME_R(0.01)}, p3 = {3, y, 1}, p4 = {3, y, -1};
+            assert_false(McdLineSegIntersect(floor, p0, p2, &r));
+            assert_false(McdLineSegIntersect(floor, p3, p4, &r));
+        }
+        if (kind == FLOOR_LIST) /* the generator was given a pair of the list's model */
+            assert_true(karma_floor_list_last_pair()->model1 == floor);
+        McdGeometryID g = McdModelGetGeometry(floor);
+        McdModelDestroy(floor);
+        McdGeometryDestroy(g);
+        if (mesh != g)
+            McdGeometryDestroy(mesh);
+    }
+    /* a hole in a height field: no hit through it, and a sphere falls through it */
+    McdRGHeightFieldID f = karma_floor_field(fw, 2, 8);
+    unsigned char holes[64] = {0};
+    holes[3 * 8 + 4] = 1; /* cell (4, 3): x in [0, 0.5], y in [-0.5, 0] */
+    McdRGHeightFieldSetHoles(f, holes);
+    McdModelID fm = modelAt(f, id);
+    McdLineSegIntersectResult r;
+    MeVector3 a = {ME_R(0.25), ME_R(-0.25), 1}, b = {ME_R(0.25), ME_R(-0.25), -1};
+    assert_false(McdLineSegIntersect(fm, a, b, &r));
+    MeVector3 c = {ME_R(0.75), ME_R(-0.25), 1}, d = {ME_R(0.75), ME_R(-0.25), -1};
+    assert_true(McdLineSegIntersect(fm, c, d, &r));
+    MeMatrix4 st;
+    translation(st, 0.25, -0.25, 0.05);
+    McdModelID small = modelAt(McdSphereCreate(fw, ME_R(0.1)), st);
+    McdContact k[4];
+    int n = intersect(small, fm, k, 4);
+    /* over the hole the sphere touches only the hole's rim, sideways, never a floor under it */
+    for (int i = 0; i < n; i++)
+        assert_true(k[i].normal[2] < ME_R(0.99));
+    translation(st, 0.25, -0.25, -0.3);
+    McdModelSetTransformPtr(small, NULL);
+    MeMatrix4Copy(McdModelGetTransformPtr(small), st);
+    McdModelUpdate(small);
+    assert_int_equal(intersect(small, fm, k, 4), 0);
+    McdTerm(fw);
+}
+
+/* ---- triangle lists: Karma's flags and the generator's pair --------------------------------------- */
+
+static MeVector3 flagVerts[2][3] = {{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}}, {{-1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}};
+static MeVector3 flagNormal = {0, 0, 1};
+static int flagSet;
+
+static int flagGenerator(McdModelPair *pair, McdUserTriangle *t, MeVector3 pos, MeReal radius, int max)
+{
+    (void)pos, (void)radius;
+    assert_non_null(pair);
+    assert_true(max >= 2);
+    for (int i = 0; i < 2; i++) {
+        for (int k = 0; k < 3; k++)
+            t[i].vertices[k] = &flagVerts[i][k];
+        t[i].normal = &flagNormal;
+        t[i].triangleData.ptr = (void *)(intptr_t)(10 + i);
+        t[i].flags = (McdTriangleFlags)flagSet;
+    }
+    return 2;
+}
+
+static void triangle_list_flags(void **state)
+{
+    (void)state;
+    McdFrameworkID fw = fwNew();
+    MeVector3 lo = {-1, -1, -1}, hi = {1, 1, 1};
+    MeMatrix4 id, tm;
+    MeMatrix4TMMakeIdentity(id);
+    McdModelID list = modelAt(McdTriangleListCreate(fw, lo, hi, 8, flagGenerator), id);
+    McdGeometryID sphere = McdSphereCreate(fw, ME_R(0.2));
+    McdContact c[4];
+    /* a sphere on the shared diagonal, 2 cm deep: with its edges unused the normal is the face's */
+    translation(tm, 0.1, 0.1, 0.18);
+    McdModelID s = modelAt(sphere, tm);
+    flagSet = kMcdTriangleUseSmallestPenetration | kMcdTriangleTwoSided;
+    int n = intersect(s, list, c, 4);
+    assert_true(n >= 1);
+    for (int i = 0; i < n; i++) {
+        assert_near(c[i].normal[2], 1, ME_TOL(1e-9, 1e-6));
+        assert_near(c[i].separation, -0.02, ME_TOL(1e-9, 1e-5));
+        assert_true(c[i].element2 == (void *)(intptr_t)10 || c[i].element2 == (void *)(intptr_t)11);
+    }
+    McdModelDestroy(s);
+    /* beside the outer edge x = 1, below the plane's level: an edge in use pushes sideways (+x); not
+     * in use, the sphere (its centre beside the triangle) gets no contact from the face */
+    translation(tm, 1.15, 0, -0.05);
+    s = modelAt(sphere, tm);
+    flagSet = kMcdTriangleStandard;
+    n = intersect(s, list, c, 4);
+    assert_int_equal(n, 1);
+    const double reach = sqrt(0.15 * 0.15 + 0.05 * 0.05); /* to the edge's point (1, 0, 0) */
+    assert_near(c[0].normal[0], 0.15 / reach, ME_TOL(1e-9, 1e-5));
+    assert_near(c[0].normal[2], -0.05 / reach, ME_TOL(1e-9, 1e-5));
+    assert_near(c[0].separation, reach - 0.2, ME_TOL(1e-9, 1e-5));
+    flagSet = kMcdTriangleUseSmallestPenetration | kMcdTriangleTwoSided;
+    assert_int_equal(intersect(s, list, c, 4), 0);
+    McdModelDestroy(s);
+    /* one-sided: a sphere whose centre is 5 cm below the face is pushed up through it */
+    translation(tm, 0.3, -0.3, -0.05);
+    s = modelAt(sphere, tm);
+    flagSet = kMcdTriangleUseSmallestPenetration | kMcdTriangleUseEdges;
+    n = intersect(s, list, c, 4);
+    assert_int_equal(n, 1);
+    assert_near(c[0].normal[2], 1, ME_TOL(1e-9, 1e-6));
+    assert_near(c[0].separation, -0.25, ME_TOL(1e-9, 1e-5));
+    /* two-sided: pushed down, out of the near side */
+    flagSet = kMcdTriangleStandard;
+    n = intersect(s, list, c, 4);
+    assert_int_equal(n, 1);
+    assert_near(c[0].normal[2], -1, ME_TOL(1e-9, 1e-6));
+    assert_near(c[0].separation, -0.15, ME_TOL(1e-9, 1e-5));
+    McdModelDestroy(s);
+    McdTerm(fw);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -590,6 +865,9 @@ int main(void)
         cmocka_unit_test(sphere_face_edge_vertex),
         cmocka_unit_test(box_face_edge_vertex),
         cmocka_unit_test(random_poses_one_triangle),
+        cmocka_unit_test(rests_as_on_a_plane),
+        cmocka_unit_test(segments_first_hit),
+        cmocka_unit_test(triangle_list_flags),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -10,6 +10,7 @@
  * triangle itself are kept (its neighbour gives the others). One-sided triangles push along +normal
  * only; two-sided ones along the face normal on the convex's side. */
 #include <stddef.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "../geometry/geometry.h"
@@ -133,10 +134,49 @@ static MeBool featureInUse(const McdTerrainTriangle *t, int feature)
     return (t->flags & (kMcdTriangleUseEdge0 << feature)) && (t->flags & (kMcdTriangleUseEdge0 << ((feature + 2) % 3)));
 }
 
+/* Reduce n contacts to keep. Contacts of a flat floor come from many triangles at one depth up to
+ * rounding; the reduction starts from the deepest, which would then be a point picked by rounding
+ * (often inside the footprint, losing a corner). Depths within `tie` of the deepest count as equal
+ * and the one farthest from their centre starts: the footprint's corners are kept. */
+static int reduce(McdContact *c, int n, int keep, MeReal tie)
+{
+    McdContact work[GATHER_MAX], original[GATHER_MAX];
+    MeVector3 centre = {0, 0, 0};
+    MeReal deepest = MEINFINITY, far = -ME_R(1.0);
+    int k, start = 0, tied = 0, m;
+    if (n <= keep)
+        return n;
+    for (k = 0; k < n; k++)
+        deepest = MeMIN(deepest, c[k].separation);
+    for (k = 0; k < n; k++)
+        if (c[k].separation <= deepest + tie) {
+            MeVector3Add(centre, centre, c[k].position);
+            tied++;
+        }
+    MeVector3Scale(centre, ME_R(1.0) / (MeReal)tied);
+    for (k = 0; k < n; k++)
+        if (c[k].separation <= deepest + tie && MeVector3DistanceSqr(c[k].position, centre) > far) {
+            far = MeVector3DistanceSqr(c[k].position, centre);
+            start = k;
+        }
+    for (k = 0; k < n; k++) {
+        int from = k == 0 ? start : (k == start ? 0 : k);
+        original[k] = c[from];
+        work[k] = c[from];
+        work[k].element1 = (void *)(intptr_t)k; /* which original it is */
+        if (work[k].separation <= deepest + tie)
+            work[k].separation = deepest; /* ties: the first, the farthest, starts */
+    }
+    m = McdNfReduce(work, n, keep);
+    for (k = 0; k < m; k++)
+        c[k] = original[(intptr_t)work[k].element1];
+    return m;
+}
+
 static void keepBest(Gather *g)
 {
     if (g->count > MCD_NF_MAX_CONTACTS)
-        g->count = McdNfReduce(g->buf, g->count, MCD_NF_MAX_CONTACTS);
+        g->count = reduce(g->buf, g->count, MCD_NF_MAX_CONTACTS, MCD_TERRAIN_DEPTH_TIE * g->convex.size);
 }
 
 static void add(Gather *g, const McdContact *c)
@@ -177,6 +217,33 @@ static void sphereTriangle(Gather *g, const McdTerrainTriangle *t, const MeVecto
     if (McdNfAddPair(&contact, 0, 1, on1, on2, n, g->tolerance, 0)) {
         contact.element2 = t->element;
         add(g, &contact);
+    }
+}
+
+/* A face contact: the manifold kept four points of this triangle's part of the footprint, which
+ * need not be the convex feature's own corners; those over the triangle are added, so that the
+ * reduction over all triangles finds the footprint's corners. */
+static void addFeatureCorners(Gather *g, const McdTerrainTriangle *t, const MeVector3 faceN)
+{
+    MeVector3 pts[MCD_NF_MAX_FEATURE], down, hint;
+    int k, count;
+    MeVector3MultiplyScalar(down, faceN, -ME_R(1.0));
+    McdNfPerpendicular(hint, faceN);
+    count = McdNfCoreFeature(&g->convex, down, hint, pts);
+    if (count < 3)
+        return;
+    for (k = 0; k < count; k++) {
+        MeVector3 on1, on2;
+        McdContact c;
+        MeReal h = MeVector3Dot(faceN, pts[k]) - MeVector3Dot(faceN, t->v[0]);
+        MeVector3ScaleAndAdd(on2, pts[k], -h, faceN);
+        if (!insideTriangle(t, on2))
+            continue;
+        MeVector3ScaleAndAdd(on1, pts[k], -g->convex.radius, faceN);
+        if (McdNfAddPair(&c, 0, 1, on1, on2, faceN, g->tolerance, 2)) {
+            c.element2 = t->element;
+            add(g, &c);
+        }
     }
 }
 
@@ -228,6 +295,8 @@ static MeBool visitTriangle(void *ctx, const McdTerrainTriangle *t)
         McdNfRefineSeparated(&g->convex, &tri, &d);
     }
     n = McdNfManifold(&g->convex, &tri, &d, g->tolerance, local, MCD_NF_MAX_CONTACTS);
+    if (forced || -MeVector3Dot(d.normal, faceN) >= ME_R(1.0) - MCD_NF_REL_EPS)
+        addFeatureCorners(g, t, faceN);
     for (k = 0; k < n; k++) {
         if (forced && !insideTriangle(t, local[k].position))
             continue; /* over the neighbour, which gives it */
@@ -284,7 +353,7 @@ int McdNfConvexTerrain(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeomet
         return 0;
     if (maxContacts > MCD_NF_MAX_CONTACTS)
         maxContacts = MCD_NF_MAX_CONTACTS;
-    n = McdNfReduce(g.buf, g.count, maxContacts);
+    n = reduce(g.buf, g.count, maxContacts, MCD_TERRAIN_DEPTH_TIE * g.convex.size);
     for (k = 0; k < n; k++) {
         MeVector3 p, nn;
         MeMatrix4TMTransform(p, tm2, g.buf[k].position);

@@ -20,6 +20,9 @@
 #define MCD_TERRAIN_ACTIVE_EDGE_SIN ME_R(0.035)
 /* A segment may end this far (as a fraction of its length) past a triangle and still hit it. */
 #define MCD_TERRAIN_SEGMENT_SLACK ME_R(1e-6)
+/* Contacts whose depths differ by less than this times the convex's size are equally deep when the
+ * set is reduced to four (a flat floor's contacts differ by rounding only). */
+#define MCD_TERRAIN_DEPTH_TIE ME_R(1e-4)
 /* Triangles per leaf of a mesh's tree. */
 #define MCD_TERRAIN_LEAF_SIZE 4
 /* Largest triangleMaxCount of a triangle list, grid side of a height field. */
