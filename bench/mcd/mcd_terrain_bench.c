@@ -17,14 +17,14 @@ static double now(void)
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
-/* A rolling terrain of n x n cells (2 n^2 triangles) over [0, n] metres. */
 static MeReal heightAt(double x, double y) { return (MeReal)(0.5 * sin(0.3 * x) * cos(0.2 * y) + 0.1 * sin(1.7 * x + y)); }
 
-static McdTriangleMeshID terrainMesh(McdFrameworkID fw, int n)
+/* The vertices and indices of a rolling terrain of n x n cells (2 n^2 triangles) over [0, n] m. */
+static void terrainArrays(int n, MeVector3 **vertices, int **indices)
 {
-    int nv = (n + 1) * (n + 1), nt = 2 * n * n;
+    int nv = (n + 1) * (n + 1), nt = 2 * n * n, t = 0;
     MeVector3 *v = malloc((size_t)nv * sizeof *v);
-    int *idx = malloc((size_t)nt * 3 * sizeof *idx), t = 0;
+    int *idx = malloc((size_t)nt * 3 * sizeof *idx);
     for (int j = 0; j <= n; j++)
         for (int i = 0; i <= n; i++)
             MeVector3Set(v[j * (n + 1) + i], (MeReal)i, (MeReal)j, heightAt(i, j));
@@ -36,10 +36,8 @@ static McdTriangleMeshID terrainMesh(McdFrameworkID fw, int n)
                 idx[3 * t + k] = tri[k];
             t += 2;
         }
-    McdTriangleMeshID m = McdTriangleMeshCreate(fw, (const MeVector3 *)v, nv, idx, nt);
-    free(v);
-    free(idx);
-    return m;
+    *vertices = v;
+    *indices = idx;
 }
 
 /* ns per McdIntersect of `shape` resting at random places on `floor` (over [1, n-1]^2). */
@@ -83,28 +81,13 @@ int main(int argc, char **argv)
     McdFrameworkID fw = McdInit(0, 16, 0, 1);
     McdPrimitivesRegisterInteractions(fw);
     const int n = 224; /* 2 x 224^2 = 100,352 triangles */
-    double t0 = now();
-    McdTriangleMeshID mesh = terrainMesh(fw, n);
-    double build = now() - t0;
-    /* building the input arrays is not the mesh's: time the mesh alone on a second build */
-    McdGeometryDestroy(mesh);
     int nv = (n + 1) * (n + 1), nt = 2 * n * n;
-    MeVector3 *v = malloc((size_t)nv * sizeof *v);
-    int *idx = malloc((size_t)nt * 3 * sizeof *idx), t = 0;
-    for (int j = 0; j <= n; j++)
-        for (int i = 0; i <= n; i++)
-            MeVector3Set(v[j * (n + 1) + i], (MeReal)i, (MeReal)j, heightAt(i, j));
-    for (int j = 0; j < n; j++)
-        for (int i = 0; i < n; i++) {
-            int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
-            int tri[6] = {a, b, c, a, c, d};
-            for (int k = 0; k < 6; k++)
-                idx[3 * t + k] = tri[k];
-            t += 2;
-        }
-    t0 = now();
-    mesh = McdTriangleMeshCreate(fw, (const MeVector3 *)v, nv, idx, nt);
-    build = now() - t0;
+    MeVector3 *v;
+    int *idx;
+    terrainArrays(n, &v, &idx);
+    double t0 = now();
+    McdTriangleMeshID mesh = McdTriangleMeshCreate(fw, (const MeVector3 *)v, nv, idx, nt);
+    double build = now() - t0;
     printf("Karma Mcd terrain benchmark (%s precision)\n\n", sizeof(MeReal) == sizeof(double) ? "double" : "single");
     printf("triangle mesh of %d triangles: tree and adjacency built in %.1f ms\n", nt, 1e3 * build);
 

@@ -44,14 +44,6 @@ static void fieldSupport(McdGeometryID g, void *data, const MeVector3 dir, MeVec
         point[i] = dir[i] < 0 ? lo[i] : hi[i];
 }
 
-static void fieldMass(McdGeometryID g, void *data, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume)
-{
-    (void)g, (void)data;
-    MeMatrix4TMMakeIdentity(relTM);
-    McdDiagonalInertia(inertia, 0, 0, 0);
-    *volume = 0; /* static: no mass properties */
-}
-
 static void freeField(McdTerrainData *t)
 {
     if (!t)
@@ -164,7 +156,7 @@ static int fieldSegment(McdGeometryID g, void *data, const MeVector3 p0, const M
 }
 
 const McdGeometryTypeDesc McdRGHeightFieldTypeDesc = {"RGHeightField", fieldDestroy, fieldAABB, fieldBSphere,
-                                                      fieldSupport, fieldMass, fieldSegment, NULL};
+                                                      fieldSupport, McdTerrainMass, fieldSegment, NULL};
 
 McdRGHeightFieldID McdRGHeightFieldCreate(McdFrameworkID fwId, MeReal *heightArray, int xVertexCount, int yVertexCount,
                                           MeReal xIncrement, MeReal yIncrement, MeReal x0, MeReal y0)

@@ -86,6 +86,9 @@ extern const McdGeometryTypeDesc McdRGHeightFieldTypeDesc;
 /** A visitor of triangles; returns MEFALSE to stop. */
 typedef MeBool (*McdTerrainVisitFn)(void *ctx, const McdTerrainTriangle *t);
 
+/** Mass properties of a static terrain: none (volume 0, identity frame, zero inertia). */
+void McdTerrainMass(McdGeometryID g, void *data, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume);
+
 /** Hand the triangles of g (a terrain type) that may touch the local box [lo, hi] (and the sphere
  *  (centre, radius) that holds it, for a triangle list's generator) to visit. `pair` goes to the
  *  triangle list's generator. */

@@ -37,7 +37,7 @@ static void listSupport(McdGeometryID g, void *data, const MeVector3 dir, MeVect
         point[i] = dir[i] < 0 ? s->lo[i] : s->hi[i];
 }
 
-static void terrainMass(McdGeometryID g, void *data, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume)
+void McdTerrainMass(McdGeometryID g, void *data, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume)
 {
     (void)g, (void)data;
     MeMatrix4TMMakeIdentity(relTM);
@@ -52,7 +52,7 @@ static void terrainDestroy(McdGeometryID g, void *data)
 }
 
 const McdGeometryTypeDesc McdTriangleListTypeDesc = {"TriangleList", terrainDestroy, listAABB, listBSphere,
-                                                     listSupport, terrainMass, NULL, NULL};
+                                                     listSupport, McdTerrainMass, NULL, NULL};
 
 void McdTriangleListForEach(const McdTriangleListShape *s, const MeVector3 centre, MeReal radius, McdModelPair *pair,
                             McdTerrainVisitFn visit, void *ctx)

@@ -47,14 +47,6 @@ static void meshSupport(McdGeometryID g, void *data, const MeVector3 dir, MeVect
     MeVector3Copy(point, s->vertices[best]);
 }
 
-static void meshMass(McdGeometryID g, void *data, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume)
-{
-    (void)g, (void)data;
-    MeMatrix4TMMakeIdentity(relTM);
-    McdDiagonalInertia(inertia, 0, 0, 0);
-    *volume = 0; /* static: no mass properties */
-}
-
 static void freeMesh(McdTerrainData *t)
 {
     if (!t)
@@ -181,7 +173,7 @@ static int meshSegment(McdGeometryID g, void *data, const MeVector3 p0, const Me
 }
 
 const McdGeometryTypeDesc McdTriangleMeshTypeDesc = {"TriangleMesh", meshDestroy, meshAABB, meshBSphere,
-                                                     meshSupport, meshMass, meshSegment, NULL};
+                                                     meshSupport, McdTerrainMass, meshSegment, NULL};
 
 /* ---- building ---------------------------------------------------------------------------------- */
 
