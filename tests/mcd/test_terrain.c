@@ -568,9 +568,10 @@ static void random_poses_one_triangle(void **state)
         assert_true(st.worstNormal < ME_TOL(1e-9, 1e-5));
         /* curved rims (cylinder, cone) go through GJK/EPA with the normal refined on the supports: as
          * the primitives' general path (test_nearfield_random), their points are good to ~2e-3 of
-         * the size in float; the closed forms and flat features to the precision */
+         * the size in float, 1e-4 in double (the general path promises 1e-3 of the size in either);
+         * the closed forms and flat features to the precision */
         const int curved = types[k] == kMcdGeometryTypeCylinder || types[k] == kMcdGeometryTypeCone;
-        const double surfaceTol = curved ? ME_TOL(1e-5, 3e-3) : ME_TOL(1e-6, 1e-3);
+        const double surfaceTol = curved ? ME_TOL(1e-4, 3e-3) : ME_TOL(1e-6, 1e-3);
         assert_true(st.worstSurface1 < surfaceTol);
         assert_true(st.worstSurface2 < surfaceTol);
         assert_true(st.worstSwap < ME_TOL(1e-9, 1e-5));
