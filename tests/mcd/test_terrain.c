@@ -857,6 +857,82 @@ static void triangle_list_flags(void **state)
     McdTerm(fw);
 }
 
+/* ---- a height field's valley and ridge --------------------------------------------------------- */
+
+/* A 5 x 3 grid, 1 m apart, whose heights fall (valley) or rise (ridge) by 0.5 m per metre away
+ * from x = 2: two slopes of 26.6 degrees meeting along the line x = 2. */
+static McdModelID vee(McdFrameworkID fw, double sign)
+{
+    MeReal h[15];
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < 5; i++)
+            h[j * 5 + i] = (MeReal)(sign * 0.5 * fabs(i - 2.0));
+    MeMatrix4 id;
+    MeMatrix4TMMakeIdentity(id);
+    return modelAt(McdRGHeightFieldCreate(fw, h, 5, 3, 1, 1, 0, 0), id);
+}
+
+static void height_field_valley_and_ridge(void **state)
+{
+    (void)state;
+    McdFrameworkID fw = fwNew();
+    McdGeometryID sphere = McdSphereCreate(fw, ME_R(0.5));
+    const double slope = sqrt(1.25); /* |(0.5, 0, 1)| */
+    McdContact c[4];
+    MeMatrix4 tm;
+    /* valley: the sphere rests on both slopes, 1 cm deep into each, with each slope's normal; the
+     * concave edge at the bottom gives nothing of its own */
+    McdModelID valley = vee(fw, 1);
+    translation(tm, 2, 1, (0.5 - 0.01) * slope);
+    McdModelID s = modelAt(sphere, tm);
+    int n = intersect(s, valley, c, 4), left = 0, right = 0;
+    assert_true(n >= 2);
+    for (int i = 0; i < n; i++) {
+        assert_near(c[i].separation, -0.01, ME_TOL(1e-9, 1e-5));
+        assert_near(fabs(c[i].normal[0]), 0.5 / slope, ME_TOL(1e-9, 1e-5));
+        assert_near(c[i].normal[1], 0, ME_TOL(1e-9, 1e-5));
+        assert_near(c[i].normal[2], 1 / slope, ME_TOL(1e-9, 1e-5));
+        left += c[i].normal[0] > 0;
+        right += c[i].normal[0] < 0;
+    }
+    assert_true(left >= 1 && right >= 1);
+    McdModelDestroy(s);
+    /* ridge: the edge at the top is convex (53 degrees), in use: a sphere above it touches the edge
+     * straight up; a box lying across it rests on the edge's line */
+    McdModelID ridge = vee(fw, -1);
+    translation(tm, 2, 1, 0.49);
+    s = modelAt(sphere, tm);
+    n = intersect(s, ridge, c, 4);
+    assert_true(n >= 1);
+    for (int i = 0; i < n; i++) {
+        assert_near(c[i].separation, -0.01, ME_TOL(1e-9, 1e-5));
+        assert_near(c[i].normal[2], 1, ME_TOL(1e-9, 1e-5));
+        assert_near(c[i].position[0], 2, ME_TOL(1e-9, 1e-5));
+    }
+    McdModelDestroy(s);
+    translation(tm, 2, 1, 0.09);
+    s = modelAt(McdBoxCreate(fw, ME_R(0.4), ME_R(0.6), ME_R(0.2)), tm);
+    n = intersect(s, ridge, c, 4);
+    if (getenv("TERRAIN_DEBUG"))
+        for (int i = 0; i < n; i++)
+            printf("ridge box %d: sep %g n %g %g %g at %g %g %g\n", i, (double)c[i].separation, (double)c[i].normal[0],
+                   (double)c[i].normal[1], (double)c[i].normal[2], (double)c[i].position[0], (double)c[i].position[1],
+                   (double)c[i].position[2]);
+    assert_true(n >= 2); /* on the line along the ridge, its two ends among them */
+    double yMin = 9, yMax = -9;
+    for (int i = 0; i < n; i++) {
+        assert_near(c[i].separation, -0.01, ME_TOL(1e-9, 1e-5));
+        assert_near(c[i].normal[2], 1, ME_TOL(1e-9, 1e-5));
+        assert_near(c[i].position[0], 2, ME_TOL(1e-9, 1e-5));
+        yMin = fmin(yMin, c[i].position[1]);
+        yMax = fmax(yMax, c[i].position[1]);
+    }
+    assert_near(yMin, 0.7, ME_TOL(1e-9, 1e-5));
+    assert_near(yMax, 1.3, ME_TOL(1e-9, 1e-5));
+    McdModelDestroy(s);
+    McdTerm(fw);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -869,6 +945,7 @@ int main(void)
         cmocka_unit_test(rests_as_on_a_plane),
         cmocka_unit_test(segments_first_hit),
         cmocka_unit_test(triangle_list_flags),
+        cmocka_unit_test(height_field_valley_and_ridge),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

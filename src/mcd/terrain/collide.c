@@ -51,23 +51,19 @@ static void barycentric(const McdTerrainTriangle *t, const MeVector3 p, MeReal w
     w[0] = ME_R(1.0) - w[1] - w[2];
 }
 
-/* Whether the triangle's contact point p may carry a normal other than the face's: every edge it
- * lies on is in use (edge k runs from v[k] to v[k+1]; its flag is kMcdTriangleUseEdge0 << k). An
- * interior point never needs another normal. */
+/* Whether the triangle's contact point p may carry a normal other than the face's: it lies on an
+ * edge in use (edge k runs from v[k] to v[k+1]; its flag is kMcdTriangleUseEdge0 << k); at a
+ * vertex, one of its two edges in use will do (as Jolt's active edges: the vertex of a ridge is on
+ * the ridge even where the cell's flat diagonal meets it). An interior point never does. */
 static MeBool edgesAllowOtherNormal(const McdTerrainTriangle *t, const MeVector3 p)
 {
     MeReal w[3];
-    int k, onEdges = 0;
+    int k;
     barycentric(t, p, w);
-    for (k = 0; k < 3; k++) {
-        /* edge k is opposite vertex (k + 2) % 3 */
-        if (w[(k + 2) % 3] <= ON_EDGE_FRACTION) {
-            onEdges++;
-            if (!(t->flags & (kMcdTriangleUseEdge0 << k)))
-                return MEFALSE;
-        }
-    }
-    return onEdges > 0;
+    for (k = 0; k < 3; k++)
+        if (w[(k + 2) % 3] <= ON_EDGE_FRACTION && (t->flags & (kMcdTriangleUseEdge0 << k))) /* opposite vertex k+2 */
+            return METRUE;
+    return MEFALSE;
 }
 
 static MeBool insideTriangle(const McdTerrainTriangle *t, const MeVector3 p)
@@ -123,7 +119,7 @@ static int closestOnTriangle(const McdTerrainTriangle *t, const MeVector3 p, MeV
 }
 
 /* Whether the feature (as closestOnTriangle) may give a normal of its own: an edge in use, or a
- * vertex whose two edges are in use. */
+ * vertex with one of its two edges in use (as edgesAllowOtherNormal). */
 static MeBool featureInUse(const McdTerrainTriangle *t, int feature)
 {
     if (feature < 0)
@@ -131,7 +127,7 @@ static MeBool featureInUse(const McdTerrainTriangle *t, int feature)
     if (feature < 3)
         return (t->flags & (kMcdTriangleUseEdge0 << feature)) != 0;
     feature -= 3; /* vertex k: edges k and k - 1 */
-    return (t->flags & (kMcdTriangleUseEdge0 << feature)) && (t->flags & (kMcdTriangleUseEdge0 << ((feature + 2) % 3)));
+    return (t->flags & (kMcdTriangleUseEdge0 << feature)) || (t->flags & (kMcdTriangleUseEdge0 << ((feature + 2) % 3)));
 }
 
 /* Reduce n contacts to keep. Contacts of a flat floor come from many triangles at one depth up to
