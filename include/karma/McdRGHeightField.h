@@ -31,6 +31,18 @@ ME_API void McdRGHeightFieldGetParameters(McdRGHeightFieldID g, MeReal **heightA
 /** Mark holes: holes[iy * (xVertexCount - 1) + ix] non-zero removes cell (ix, iy); NULL removes every
  *  hole. Copied; edges next to a hole are in use from then on (an addition to Karma). */
 ME_API void McdRGHeightFieldSetHoles(McdRGHeightFieldID g, const unsigned char *holes);
+/** Karma's utility (its spelling): read an uncompressed 24-bit BMP into heights, one per pixel,
+ *  rMult r + gMult g + bMult b + z0 with r, g, b in [0, 1]; row 0 is the image's bottom row. On
+ *  success returns non-zero and *outHeightMatrix (free it with MeMemoryDestroy), *outXsize and
+ *  *outYsize (pixels); 0 (ME_ERR_MCD_BAD_IMAGE) for a file that cannot be read or another format. */
+ME_API int McduRGHeighFieldCreateHeightMatrixFromBmp(char *filename, MeReal rMult, MeReal gMult, MeReal bMult,
+                                                     MeReal z0, MeReal **outHeightMatrix, int *outXsize,
+                                                     int *outYsize);
+/** Karma's utility: a height field from a BMP (as above) spanning xSize by ySize metres from the
+ *  corner (x0, y0); NULL (reported) when the image or the sizes are refused. */
+ME_API McdRGHeightFieldID McduRGHeighFieldCreateFromBmp(McdFrameworkID fw, char *bmpFileName, MeReal x0, MeReal y0,
+                                                        MeReal xSize, MeReal ySize, MeReal rMult, MeReal gMult,
+                                                        MeReal bMult, MeReal z0);
 /** The height field's type number (kMcdGeometryTypeRGHeightField). */
 ME_API MeI16 McdRGHeightFieldGetTypeId(void);
 

@@ -9,7 +9,8 @@
  *  - a sphere, box, cylinder, sphyl and cone resting on each flat tessellated floor give the
  *    contacts of a plane (normal +z, the same depth), with internal edges suppressed;
  *  - internal edges: the adjacency marks flat and concave edges unused, convex and boundary ones used;
- *  - line segments: first hit on each floor, on a hole, from behind a one-sided height field. */
+ *  - line segments: first hit on each floor, on a hole, from behind a one-sided height field;
+ *  - a height field's valley and ridge; heights from a BMP image (Karma's utilities). */
 #include "karma_test.h"
 #include "karma_terrain.h"
 #include "mcd_shapes.h"
@@ -933,6 +934,87 @@ static void height_field_valley_and_ridge(void **state)
     McdTerm(fw);
 }
 
+/* ---- a height field from an image (Karma's McduRGHeighField... utilities) ------------------------ */
+
+/* Write a 24-bit BMP of 3 x 2 pixels: pixel (ix, iy) (iy = 0 the bottom row) has red 50 ix, green
+ * 100 iy, blue 7; bottom-up rows as most BMPs, or top-down (negative height). */
+static void writeBmp(const char *path, int topDown)
+{
+    unsigned char file[54 + 2 * 12] = {'B', 'M'};
+    const int w = 3, h = 2, stride = 12;
+    unsigned size = (unsigned)sizeof file;
+    int32_t height = topDown ? -h : h;
+    for (int k = 0; k < 4; k++) {
+        file[2 + k] = (unsigned char)(size >> (8 * k));
+        file[10 + k] = (unsigned char)(54u >> (8 * k));
+        file[14 + k] = (unsigned char)(40u >> (8 * k));
+        file[18 + k] = (unsigned char)((uint32_t)w >> (8 * k));
+        file[22 + k] = (unsigned char)((uint32_t)height >> (8 * k));
+    }
+    file[26] = 1;
+    file[28] = 24;
+    for (int r = 0; r < h; r++) {
+        int iy = topDown ? h - 1 - r : r;
+        for (int ix = 0; ix < w; ix++) {
+            unsigned char *px = file + 54 + r * stride + 3 * ix;
+            px[0] = 7, px[1] = (unsigned char)(100 * iy), px[2] = (unsigned char)(50 * ix);
+        }
+    }
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(file, 1, sizeof file, f), sizeof file);
+    fclose(f);
+}
+
+static void height_field_from_bmp(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    McdFrameworkID fw = fwNew();
+    char path[] = "test_terrain_heights.bmp";
+    for (int topDown = 0; topDown < 2; topDown++) {
+        writeBmp(path, topDown);
+        MeReal *h = NULL;
+        int nx = 0, ny = 0;
+        assert_true(McduRGHeighFieldCreateHeightMatrixFromBmp(path, 2, 1, 0, ME_R(-0.5), &h, &nx, &ny));
+        assert_int_equal(nx, 3);
+        assert_int_equal(ny, 2);
+        for (int iy = 0; iy < 2; iy++)
+            for (int ix = 0; ix < 3; ix++)
+                assert_near(h[iy * 3 + ix], 2 * 50 * ix / 255.0 + 100 * iy / 255.0 - 0.5, ME_TOL(1e-12, 1e-6));
+        MeMemoryDestroy(h);
+    }
+    /* 4 m by 1 m from (-2, 3): vertex (ix, iy) at (-2 + 2 ix, 3 + iy), height (100 ix + 100 iy) / 255 */
+    McdRGHeightFieldID f = McduRGHeighFieldCreateFromBmp(fw, path, -2, 3, 4, 1, 2, 1, 0, 0);
+    assert_non_null(f);
+    MeReal *hp, dx, dy, x0, y0;
+    int nx, ny;
+    McdRGHeightFieldGetParameters(f, &hp, &nx, &ny, &dx, &dy, &x0, &y0);
+    assert_true(nx == 3 && ny == 2 && dx == 2 && dy == 1 && x0 == -2 && y0 == 3);
+    MeMatrix4 id;
+    MeMatrix4TMMakeIdentity(id);
+    McdModelID m = modelAt(f, id);
+    McdLineSegIntersectResult r;
+    MeVector3 a = {ME_R(1.999), ME_R(3.999), 5}, b = {ME_R(1.999), ME_R(3.999), -5};
+    assert_true(McdLineSegIntersect(m, a, b, &r));
+    /* cell (1, 0) at (0.9995, 0.999) of its sides: its lower triangle, 100 + 0.9995 100 + 0.999 100 */
+    assert_near(r.position[2], 299.85 / 255.0, ME_TOL(1e-9, 1e-5));
+    /* refused: a missing file, a file that is not a BMP */
+    MeReal *h;
+    int ok;
+    assert_reports(ME_ERR_MCD_BAD_IMAGE, ok = McduRGHeighFieldCreateHeightMatrixFromBmp("no-such-file.bmp", 1, 1, 1, 0,
+                                                                                           &h, &nx, &ny));
+    assert_false(ok);
+    FILE *bad = fopen(path, "wb");
+    fputs("P6 not a bitmap, and long enough to fill the fifty-four bytes of a BMP header.", bad);
+    fclose(bad);
+    McdRGHeightFieldID g;
+    assert_reports(ME_ERR_MCD_BAD_IMAGE, g = McduRGHeighFieldCreateFromBmp(fw, path, 0, 0, 1, 1, 1, 1, 1, 0));
+    assert_null(g);
+    remove(path);
+    McdTerm(fw);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -946,6 +1028,7 @@ int main(void)
         cmocka_unit_test(segments_first_hit),
         cmocka_unit_test(triangle_list_flags),
         cmocka_unit_test(height_field_valley_and_ridge),
+        cmocka_unit_test(height_field_from_bmp),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
