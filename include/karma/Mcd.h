@@ -22,9 +22,12 @@
 #include "McdNull.h"
 #include "McdPlane.h"
 #include "McdPrimitives.h"
+#include "McdRGHeightField.h"
 #include "McdSphere.h"
 #include "McdSpace.h"
 #include "McdSphyl.h"
+#include "McdTriangleList.h"
+#include "McdTriangleMesh.h"
 #include "McdTypes.h"
 
 #endif /* MCD_H */

@@ -47,7 +47,9 @@ typedef enum McdGeometryType {
     kMcdGeometryTypeConvexMesh = 7,
     kMcdGeometryTypeAggregate = 8,
     kMcdGeometryTypeCone = 9,
-    kMcdGeometryBuiltInTypes = 10
+    kMcdGeometryTypeTriangleMesh = 10,  /* additions: a mesh with its own hierarchy, a height field */
+    kMcdGeometryTypeRGHeightField = 11,
+    kMcdGeometryBuiltInTypes = 12
 } McdGeometryType;
 
 /** What a pair test is asked for (Karma's McdRequest). */

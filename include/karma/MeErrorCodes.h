@@ -58,7 +58,10 @@
     X(ME_ERR_MCD_NO_INTERACTION,      402, ME_LEVEL_WARNING, "no pair test is registered for two geometry types: their pairs give no contacts (reported once per type pair)") \
     X(ME_ERR_MCD_SIZE_RANGE,          403, ME_LEVEL_WARNING, "a geometry dimension is outside 1e-6 to 1e6 times the framework's lengthScale") \
     X(ME_ERR_MCD_POSITION_RANGE,      404, ME_LEVEL_WARNING, "a model position or segment end point is farther than 1e7 times the framework's lengthScale from the origin") \
-    X(ME_ERR_MCD_HULL_FLAT,           405, ME_LEVEL_WARNING, "a convex hull's points span no volume: fewer than four, or all within the hull tolerance of a line or a plane")
+    X(ME_ERR_MCD_HULL_FLAT,           405, ME_LEVEL_WARNING, "a convex hull's points span no volume: fewer than four, or all within the hull tolerance of a line or a plane") \
+    X(ME_ERR_MCD_BAD_MESH,            420, ME_LEVEL_WARNING, "a triangle mesh or height field is empty, has an index out of range, a count out of range or a height or vertex that is not finite") \
+    X(ME_ERR_MCD_DEGENERATE_TRIANGLE, 421, ME_LEVEL_WARNING, "a triangle of a mesh has no area (its vertices coincide or lie on a line)") \
+    X(ME_ERR_MCD_BAD_IMAGE,           422, ME_LEVEL_WARNING, "a height image cannot be read or is not an uncompressed 24-bit BMP of at least 2 x 2 pixels")
 
 #define ME_ERROR_LIST_MST(X) \
     X(ME_ERR_MST_MATERIAL,            600, ME_LEVEL_WARNING, "a material index is out of range")

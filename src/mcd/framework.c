@@ -9,6 +9,7 @@
 
 #include "framework.h"
 #include "geometry/geometry.h"
+#include "terrain/terrain.h"
 
 /* Default contact tolerance as a fraction of lengthScale (docs/decisions.md, C1). */
 #define DEFAULT_TOLERANCE_FRACTION ME_R(0.005)
@@ -35,7 +36,10 @@ static void installBuiltInTypes(McdFrameworkData *fw)
     fw->types[kMcdGeometryTypeSphyl] = McdSphylTypeDesc;
     fw->types[kMcdGeometryTypeCone] = McdConeTypeDesc;
     fw->types[kMcdGeometryTypeConvexMesh] = McdConvexMeshTypeDesc;
-    /* TriangleList and Aggregate keep their numbers; their types register later. */
+    fw->types[kMcdGeometryTypeTriangleList] = McdTriangleListTypeDesc;
+    fw->types[kMcdGeometryTypeTriangleMesh] = McdTriangleMeshTypeDesc;
+    fw->types[kMcdGeometryTypeRGHeightField] = McdRGHeightFieldTypeDesc;
+    /* Aggregate keeps its number; its type registers later. */
     fw->typeCount = kMcdGeometryBuiltInTypes;
 }
 

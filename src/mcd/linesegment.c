@@ -8,6 +8,7 @@
 
 #include "../me/check.h"
 #include "framework.h"
+#include "terrain/terrain.h"
 
 int McdModelLineSegIntersectInternal(const McdModelData *m, const MeVector3 p0, const MeVector3 p1,
                                      McdLineSegIntersectResult *result)
@@ -17,6 +18,8 @@ int McdModelLineSegIntersectInternal(const McdModelData *m, const MeVector3 p0, 
         MeVector3 a = {p0[0], p0[1], p0[2]}, b = {p1[0], p1[1], p1[2]};
         return user(McdModelToID(m), a, b, result) != 0;
     }
+    if (m->geometry->type == kMcdGeometryTypeTriangleList) /* its generator is given a pair of the model */
+        return McdTriangleListModelSegment(m, p0, p1, result);
     MeMatrix4Ptr tm = (MeMatrix4Ptr)m->worldTransform;
     MeVector3 a, b, n;
     MeReal t;

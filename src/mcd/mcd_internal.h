@@ -27,6 +27,10 @@ typedef struct McdConeData { MeReal lowerRadius, upperRadius, zLower, zUpper; } 
 struct McdHull;
 /* A convex polyhedron (geometry/convex_hull.h, owned by the geometry) rounded by `fatness`. */
 typedef struct McdConvexMeshData { struct McdHull *hull; MeReal fatness; } McdConvexMeshData;
+/* A triangle as a core for the nearfield's GJK/EPA (never a geometry of the framework: the terrain
+ * pair tests make one per triangle, type MCD_NF_TRIANGLE_TYPE). */
+typedef struct McdTriangleCoreData { MeVector3 v[3]; } McdTriangleCoreData;
+struct McdTerrainData; /* triangle list, triangle mesh, height field (terrain/terrain.h) */
 
 typedef struct McdGeometryData {
     uintptr_t id;
@@ -41,6 +45,8 @@ typedef struct McdGeometryData {
         McdSphylData sphyl;
         McdConeData cone;
         McdConvexMeshData convex;
+        McdTriangleCoreData triangle;
+        struct McdTerrainData *terrain;
         void *user;       /* user-registered types */
     } u;
 } McdGeometryData;

@@ -46,6 +46,10 @@
 /* Contacts a pair test keeps at most, whatever the request: four well-spread points hold a body. */
 #define MCD_NF_MAX_CONTACTS 4
 
+/* The type of a triangle core (McdTriangleCoreData): the terrain tests (terrain/collide.c) run GJK, EPA
+ * and the manifold on one triangle at a time; never a type of the framework. */
+#define MCD_NF_TRIANGLE_TYPE (-2)
+
 /** A geometry placed in the world, as the general path sees it. */
 typedef struct McdNfShape {
     const McdGeometryData *g;

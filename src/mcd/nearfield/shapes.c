@@ -32,6 +32,12 @@ void McdNfShapeInit(McdNfShape *s, const McdGeometryData *g, MeMatrix4 tm)
         s->radius = g->u.convex.fatness;
         s->size = g->u.convex.hull->radius + g->u.convex.fatness;
         break;
+    case MCD_NF_TRIANGLE_TYPE: {
+        const McdTriangleCoreData *t = &g->u.triangle;
+        s->size = MeMAX3(MeVector3Distance(t->v[0], t->v[1]), MeVector3Distance(t->v[1], t->v[2]),
+                         MeVector3Distance(t->v[2], t->v[0]));
+        break;
+    }
     default:
         s->size = ME_R(1.0);
         break;
@@ -77,6 +83,15 @@ static void localCoreSupport(const McdGeometryData *g, const MeVector3 d, MeVect
             MeVector3Copy(out, hi);
         else
             MeVector3Copy(out, lo);
+        break;
+    }
+    case MCD_NF_TRIANGLE_TYPE: {
+        const McdTriangleCoreData *t = &g->u.triangle;
+        int k, best = 0;
+        for (k = 1; k < 3; k++)
+            if (MeVector3Dot(t->v[k], d) > MeVector3Dot(t->v[best], d))
+                best = k;
+        MeVector3Copy(out, t->v[best]);
         break;
     }
     default: /* sphere and anything else: the centre */
@@ -234,6 +249,18 @@ static int localFeature(const McdGeometryData *g, const MeVector3 n, const MeVec
             return 2;
         }
         break;
+    }
+    case MCD_NF_TRIANGLE_TYPE: { /* the vertices within the feature angle of the deepest, in order */
+        const McdTriangleCoreData *t = &g->u.triangle;
+        MeReal top = MeMAX3(MeVector3Dot(t->v[0], n), MeVector3Dot(t->v[1], n), MeVector3Dot(t->v[2], n));
+        int k, best = 0, count = 0;
+        for (k = 1; k < 3; k++)
+            if (MeVector3Dot(t->v[k], n) > MeVector3Dot(t->v[best], n))
+                best = k;
+        for (k = 0; k < 3; k++)
+            if (top - MeVector3Dot(t->v[k], n) <= sinTol * MeVector3Distance(t->v[k], t->v[best]))
+                MeVector3Copy(pts[count++], t->v[k]);
+        return count;
     }
     default:
         break;
