@@ -77,7 +77,8 @@ static void init_defaults_and_term(void **state)
     assert_int_equal(McdFrameworkGetRegisteredTypeCount(fw), kMcdGeometryBuiltInTypes);
     assert_string_equal(McdFrameworkGetTypeName(fw, kMcdGeometryTypeCone), "Cone");
     assert_string_equal(McdFrameworkGetTypeName(fw, kMcdGeometryTypeConvexMesh), "ConvexMesh");
-    assert_null(McdFrameworkGetTypeName(fw, kMcdGeometryTypeTriangleList)); /* not yet registered */
+    assert_string_equal(McdFrameworkGetTypeName(fw, kMcdGeometryTypeTriangleList), "TriangleList");
+    assert_null(McdFrameworkGetTypeName(fw, kMcdGeometryTypeAggregate)); /* not yet registered */
     assert_true(McdPrimitivesRegisterTypes(fw));
     assert_int_equal(McdPrimitivesGetTypeCount(), 7);
     McdGeometryID s = McdSphereCreate(fw, 1);
