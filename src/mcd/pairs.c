@@ -66,6 +66,7 @@ void McdHelloInternal(McdModelPair *pair, McdModelData *m1, McdModelData *m2, co
 {
     McdFrameworkData *fw = m1->framework;
     int t1 = m1->geometry->type, t2 = m2->geometry->type;
+    pair->framework = McdFrameworkToID(fw);
     pair->cache = NULL;
     pair->swapped = 0;
     pair->testIndex = -1;
@@ -115,16 +116,14 @@ void McdGoodbyeInternal(McdModelPair *pair, McdModelData *m1)
 void McdGoodbye(McdModelPairID pair)
 {
     ME_CHECK_NOT_NULL(pair, ME_NOTHING);
-    /* A goodbye pair may name a model destroyed since it left its space (MstModelAndBodyDestroy
-     * removes and destroys at once): legal, so not reported. The framework comes from whichever model
-     * is still there; with neither, only the pair's own fields are cleared. */
-    McdModelData *m = McdModelIsValid(pair->model1) ? McdModelFromID(pair->model1, __func__)
-                      : McdModelIsValid(pair->model2) ? McdModelFromID(pair->model2, __func__)
-                                                      : NULL;
-    if (m) {
-        McdGoodbyeInternal(pair, m);
-        return;
-    }
+    /* A goodbye pair may name models destroyed since they left their space (MstModelAndBodyDestroy
+     * removes and destroys at once): legal, so not reported. The cache goes back through the
+     * framework McdHello recorded; with that gone too (McdTerm freed it), only the fields are cleared. */
+    McdFrameworkData *fw = McdFrameworkIsValid(pair->framework)
+                               ? McdFrameworkFromID(pair->framework, __func__)
+                               : NULL;
+    if (fw && pair->cache && pair->testIndex >= 0 && fw->interactions[pair->testIndex].releaseCache)
+        fw->interactions[pair->testIndex].releaseCache(pair->cache);
     pair->cache = NULL;
     pair->testIndex = -1;
     pair->swapped = 0;
@@ -256,6 +255,21 @@ void McdModelPairGetModels(McdModelPairID pair, McdModelID *model1, McdModelID *
         *model1 = pair->model1;
     if (model2)
         *model2 = pair->model2;
+}
+
+MeBool McdModelPairGetModelInfo(McdModelPairID pair, McdModelPairModelInfo *info)
+{
+    ME_CHECK_NOT_NULL(info, MEFALSE);
+    memset(info, 0, sizeof *info);
+    McdModelData *m[2];
+    if (!pairModels(pair, &m[0], &m[1], __func__))
+        return MEFALSE;
+    for (int i = 0; i < 2; i++) {
+        info->bodyData[i] = m[i]->body;
+        info->material[i] = m[i]->material;
+        info->frozen[i] = m[i]->frozen;
+    }
+    return METRUE;
 }
 
 void McdModelPairGetGeometryNames(McdModelPairID pair, const char **name1, const char **name2)

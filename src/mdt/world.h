@@ -116,8 +116,9 @@ typedef struct MdtWorldData {
     MeBool nothingMovesHinted;          /* the one-time "nothing will move" hint was given */
     MeBool hasMoved;                    /* a step had something acting: no more hints to look for */
     const char *massScaleName;          /* what sets massScale, for the mass-range warning */
-    const char *stepCaller;             /* the API function stepping the world when not MdtWorldStep
-                                           (MstUniverseStep), for the step's messages; else NULL */
+    const char *callerName;             /* MdtWorldSetCallerName: the API function running the world on
+                                           the application's behalf (MstUniverseStep), named by the step's
+                                           messages, its contacts' and the mass warning; else NULL */
 
     /* debugging (world_debug.c) */
     MdtDebugDrawOptions debugOptions;   /* MdtWorldSetDebugDrawing */
