@@ -14,6 +14,8 @@
  *    all meet, each correction overshooting the others'. The partition is reported once
  *    (ME_ERR_ENERGY_JUMP) until a step without a jump.
  * Both are counted in MdtWorldCounters (speedWarnings, energyWarnings). */
+#include <math.h>
+
 #include "../me/check.h"
 #include "world.h"
 
@@ -37,6 +39,48 @@ MeReal MdtBodyKineticEnergy(const MdtBodyData *b, const MeVector3 v, const MeVec
         rotational = (b->inertia[0][0] + b->inertia[1][1] + b->inertia[2][2]) / 3 * MeVector3MagnitudeSqr(w);
     }
     return ME_R(0.5) * (b->mass * MeVector3MagnitudeSqr(v) + rotational);
+}
+
+/* A bound on the largest eigenvalue of the inertia in use: the mean diagonal for a spherical one (its
+ * only eigenvalue), else the largest absolute row sum (Gershgorin). */
+static double inertiaBound(const MdtBodyData *b)
+{
+    if (!b->nonSpherical)
+        return ((double)b->inertia[0][0] + (double)b->inertia[1][1] + (double)b->inertia[2][2]) / 3;
+    double largest = 0;
+    for (int k = 0; k < 3; k++) {
+        const double row = fabs((double)b->inertia[k][0]) + fabs((double)b->inertia[k][1]) + fabs((double)b->inertia[k][2]);
+        largest = row > largest ? row : largest;
+    }
+    return largest;
+}
+
+MeBool MdtRunawayEnergyBelowFloor(const MdtWorldData *w, int p, const MeReal *deltaVelocities)
+{
+    const MdtPartitionLists *out = &w->partitions;
+    const int start = out->partitionStart[p], end = out->partitionStart[p + 1];
+    const MeReal v = w->maxCorrectingVelocity;
+    if (!ME_IS_FINITE(v))
+        return MEFALSE; /* no floor: the check compares the energies themselves */
+    /* In double, with a margin of ME_SMALL_EPSILON per body (several of MeReal's rounding errors) for
+     * the check's own sums in MeReal: the answer is "below" only when the check would also say so. */
+    double mass = 0, energy = 0;
+    for (int i = start; i < end; i++) {
+        const MdtBodyData *b = out->bodies[i];
+        MeVector3 vel, velrot;
+        if (deltaVelocities) {
+            MeVector3Add(vel, b->velStar, deltaVelocities + 6 * (size_t)i);
+            MeVector3Add(velrot, b->velrotStar, deltaVelocities + 6 * (size_t)i + 3);
+        } else {
+            MeVector3Copy(vel, b->velStar);
+            MeVector3Copy(velrot, b->velrotStar);
+        }
+        mass += (double)b->mass;
+        energy += (double)b->mass * (double)MeVector3MagnitudeSqr(vel) +
+                  inertiaBound(b) * (double)MeVector3MagnitudeSqr(velrot);
+    }
+    const double margin = (double)ME_SMALL_EPSILON * (end - start + 4);
+    return 0.5 * energy * (1 + margin) <= 0.5 * mass * (double)v * (double)v * (1 - margin);
 }
 
 static void checkSpeed(MdtWorldData *w, MdtBodyData *b)

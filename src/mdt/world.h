@@ -177,6 +177,11 @@ MeReal MdtBodyKineticEnergy(const MdtBodyData *b, const MeVector3 v, const MeVec
 /* After integrating partition p: report its bodies over the speed limits and an energy jump from
  * `predicted` (kinetic energy with the applied forces, before constraints) to `after` (runaway.c). */
 void MdtRunawayCheckPartition(MdtWorldData *w, int p, MeReal predicted, MeReal after);
+/* Whether partition p's kinetic energy after integration (velocities v* + Δv from `deltaVelocities`,
+ * 6 per body, or NULL for none) is certainly at most the energy check's floor, so that the check
+ * finds no jump whatever the energy before: the integration then need not sum the energies
+ * (runaway.c). */
+MeBool MdtRunawayEnergyBelowFloor(const MdtWorldData *w, int p, const MeReal *deltaVelocities);
 /* Restore, stop and disable the partitions marked in simError; report each and call the callback. */
 void MdtSimErrorHandlePartitions(MdtWorldData *w);
 
