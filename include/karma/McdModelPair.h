@@ -34,6 +34,12 @@ typedef struct McdModelPairModelInfo {
 /** Fill `info` from the pair's two models with one handle check each (the per-field getters would
  *  take three); MEFALSE with `info` zeroed when a model ID is invalid (reported) or an argument NULL. */
 ME_API MeBool McdModelPairGetModelInfo(McdModelPairID pair, McdModelPairModelInfo *info);
+/** A dynamics bridge's per-pair step with one handle check per model: McdModelPairGetModelInfo, then
+ *  McdIntersect (result->contacts and contactMaxCount set by the caller) unless both models are frozen
+ *  or neither has body data (two pieces of the world); returns whether the pair was tested (an
+ *  untested pair's result holds no contacts). Invalid models or NULL arguments: reported, MEFALSE,
+ *  `info` zeroed. */
+ME_API MeBool McdIntersectForResponse(McdModelPairID pair, McdModelPairModelInfo *info, McdIntersectResult *result);
 /** The application's pointer for the pair (the bridge keeps its contact group here). */
 ME_API void *McdModelPairGetUserData(McdModelPairID pair);
 /** Attach an application pointer to the pair (not owned by Mcd); NULL pair refused. */

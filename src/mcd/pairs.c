@@ -180,6 +180,43 @@ int McdIntersect(McdModelPairID pair, McdIntersectResult *result)
     return McdIntersectModels(pair, m1, m2, result, __func__); /* which clears the result first */
 }
 
+/* Resolve the pair's models and fill `info` from them, in `function`'s name; `info` zeroed when a
+ * model is invalid. */
+static MeBool modelInfo(const McdModelPair *pair, McdModelData **m, McdModelPairModelInfo *info, const char *function)
+{
+    if (!pairModels(pair, &m[0], &m[1], function)) {
+        memset(info, 0, sizeof *info);
+        return MEFALSE;
+    }
+    for (int i = 0; i < 2; i++) {
+        info->bodyData[i] = m[i]->body;
+        info->material[i] = m[i]->material;
+        info->frozen[i] = m[i]->frozen;
+    }
+    return METRUE;
+}
+
+MeBool McdModelPairGetModelInfo(McdModelPairID pair, McdModelPairModelInfo *info)
+{
+    ME_CHECK_NOT_NULL(info, MEFALSE);
+    McdModelData *m[2];
+    return modelInfo(pair, m, info, __func__);
+}
+
+MeBool McdIntersectForResponse(McdModelPairID pair, McdModelPairModelInfo *info, McdIntersectResult *result)
+{
+    ME_CHECK_NOT_NULL(info, MEFALSE);
+    ME_CHECK_NOT_NULL(result, MEFALSE);
+    McdModelData *m[2];
+    if (!modelInfo(pair, m, info, __func__) || (info->frozen[0] && info->frozen[1]) ||
+        (!info->bodyData[0] && !info->bodyData[1])) {
+        clearResult(pair, result);
+        return MEFALSE;
+    }
+    McdIntersectModels(pair, m[0], m[1], result, __func__);
+    return METRUE;
+}
+
 int McdIntersectModels(McdModelPair *pair, McdModelData *m1, McdModelData *m2, McdIntersectResult *result,
                        const char *function)
 {
@@ -255,21 +292,6 @@ void McdModelPairGetModels(McdModelPairID pair, McdModelID *model1, McdModelID *
         *model1 = pair->model1;
     if (model2)
         *model2 = pair->model2;
-}
-
-MeBool McdModelPairGetModelInfo(McdModelPairID pair, McdModelPairModelInfo *info)
-{
-    ME_CHECK_NOT_NULL(info, MEFALSE);
-    memset(info, 0, sizeof *info);
-    McdModelData *m[2];
-    if (!pairModels(pair, &m[0], &m[1], __func__))
-        return MEFALSE;
-    for (int i = 0; i < 2; i++) {
-        info->bodyData[i] = m[i]->body;
-        info->material[i] = m[i]->material;
-        info->frozen[i] = m[i]->frozen;
-    }
-    return METRUE;
 }
 
 void McdModelPairGetGeometryNames(McdModelPairID pair, const char **name1, const char **name2)

@@ -284,18 +284,16 @@ static int matchContacts(MstBridgeData *b, MdtContactGroupID g, const McdContact
 static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
 {
     McdModelPairModelInfo models;
-    if (!McdModelPairGetModelInfo(pair, &models))
-        return 0;
-    MdtBodyID b1 = (MdtBodyID)models.bodyData[0], b2 = (MdtBodyID)models.bodyData[1];
-    if (models.frozen[0] && models.frozen[1])
-        return MdtContactGroupGetCount((MdtContactGroupID)pair->userData); /* kept as they were */
-    if (!b1 && !b2)
-        return 0; /* two pieces of the world */
     McdIntersectResult result;
     memset(&result, 0, sizeof result);
     result.contacts = b->contacts;
     result.contactMaxCount = b->contactBufferSize;
-    McdIntersect(pair, &result);
+    if (!McdIntersectForResponse(pair, &models, &result)) { /* not tested: */
+        if (models.frozen[0] && models.frozen[1])
+            return MdtContactGroupGetCount((MdtContactGroupID)pair->userData); /* kept as they were */
+        return 0; /* two pieces of the world, or a bad model (reported) */
+    }
+    MdtBodyID b1 = (MdtBodyID)models.bodyData[0], b2 = (MdtBodyID)models.bodyData[1];
     MstMaterialPairData *mat = MstBridgeMaterialPair(b, models.material[0], models.material[1], "MstHandleCollisions");
     if (!mat)
         return 0;

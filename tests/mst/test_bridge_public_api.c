@@ -48,6 +48,7 @@ static void body_remembers_its_model(void **state)
     MdtWorldDestroy(w);
 }
 
+/* A pair's model info in one call, and the bridge's per-pair step McdIntersectForResponse. */
 static void pair_model_info_in_one_call(void **state)
 {
     (void)state;
@@ -71,6 +72,38 @@ static void pair_model_info_in_one_call(void **state)
     assert_int_equal(info.frozen[1], McdSpaceModelIsFrozen(plane));
     assert_reports(ME_ERR_NULL_ARGUMENT, assert_false(McdModelPairGetModelInfo(pair, NULL)));
     assert_reports(ME_ERR_NULL_ARGUMENT, assert_false(McdModelPairGetModelInfo(NULL, &info)));
+    /* The bridge's step: the ball resting on the plane is tested and touches it (contact normal up,
+     * from the plane, model 2, towards the ball); the same info comes back. */
+    MdtBodySetPosition(McdModelGetBody(ball), 0, 0, ME_R(0.99));
+    McdSpaceUpdateAll(MstUniverseGetSpace(u));
+    McdHello(pair);
+    McdContact contacts[4];
+    McdIntersectResult result;
+    memset(&result, 0, sizeof result);
+    result.contacts = contacts;
+    result.contactMaxCount = 4;
+    memset(&info, 0, sizeof info);
+    assert_true(McdIntersectForResponse(pair, &info, &result));
+    assert_int_equal(result.contactCount, 1);
+    assert_true(result.touch);
+    assert_true(contacts[0].normal[2] > ME_R(0.99));
+    assert_ptr_equal(info.bodyData[0], McdModelGetBody(ball));
+    assert_int_equal(info.material[0], 3);
+    assert_true(info.frozen[1]);
+    /* Both frozen, or neither with body data: not tested, no contacts. */
+    McdSpaceFreezeModel(ball);
+    result.contactCount = 7;
+    assert_false(McdIntersectForResponse(pair, &info, &result));
+    assert_int_equal(result.contactCount, 0);
+    assert_true(info.frozen[0] && info.frozen[1]);
+    McdSpaceUnfreezeModel(ball);
+    McdModelSetBodyData(ball, NULL);
+    assert_false(McdIntersectForResponse(pair, &info, &result));
+    assert_int_equal(result.contactCount, 0);
+    McdModelSetBody(ball, MdtBodyCreate(MstUniverseGetWorld(u)));
+    assert_reports(ME_ERR_NULL_ARGUMENT, assert_false(McdIntersectForResponse(pair, NULL, &result)));
+    assert_reports(ME_ERR_NULL_ARGUMENT, assert_false(McdIntersectForResponse(pair, &info, NULL)));
+    McdGoodbye(pair);
     McdModelPairDestroy(pair);
     /* A pair naming a destroyed model: refused, info zeroed. */
     McdModelID gone = McdModelCreate(McdSphereCreate(fw, 1));
@@ -78,6 +111,9 @@ static void pair_model_info_in_one_call(void **state)
     McdModelDestroy(gone);
     assert_reports(ME_ERR_INVALID_HANDLE, assert_false(McdModelPairGetModelInfo(pair, &info)));
     assert_null(info.bodyData[0]);
+    assert_int_equal(info.material[0], 0);
+    info.material[0] = 5;
+    assert_reports(ME_ERR_INVALID_HANDLE, assert_false(McdIntersectForResponse(pair, &info, &result)));
     assert_int_equal(info.material[0], 0);
     McdModelPairDestroy(pair);
     MstUniverseDestroy(u);
