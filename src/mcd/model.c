@@ -94,13 +94,18 @@ static void update(McdModelData *m, const char *function)
     MeMatrix4 previous;
     MeMatrix4Copy(previous, m->worldTransform);
     compound(m);
-    if (!transformIsFinite(m->worldTransform)) {
+    /* A rotation part that passes rotationIsValid is finite (a NaN or infinity fails its tests), so
+     * the common case checks the position alone for finiteness; the rest tell the two failures apart. */
+    const MeBool valid = rotationIsValid(m->worldTransform, MCD_ROTATION_TOLERANCE) &&
+                         isfinite(m->worldTransform[3][0]) && isfinite(m->worldTransform[3][1]) &&
+                         isfinite(m->worldTransform[3][2]);
+    if (!valid && !transformIsFinite(m->worldTransform)) {
         ME_REPORT_IN(function, ME_ERR_NONFINITE_ARGUMENT,
                      "the model's transform holds NaN or infinity; its last transform and AABB are kept");
         MeMatrix4Copy(m->worldTransform, previous);
         return;
     }
-    if (!rotationIsValid(m->worldTransform, MCD_ROTATION_TOLERANCE)) {
+    if (!valid) {
         ME_REPORT_IN(function, ME_ERR_NOT_ROTATION,
                      "the model's transform is not a rotation (orthonormal, determinant +1, to %g): sheared, "
                      "scaled or mirrored; its last transform and AABB are kept",

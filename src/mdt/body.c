@@ -83,6 +83,11 @@ void MdtBodyWorldInertia(const MdtBodyData *b, MeMatrix3 out)
 /* The inverse inertia in use: the full tensor, or the mean of its diagonal when spherical. */
 static void updateInverseInertia(MdtBodyData *b)
 {
+    b->inertiaBound = (b->inertia[0][0] + b->inertia[1][1] + b->inertia[2][2]) / 3;
+    if (b->nonSpherical) /* Gershgorin: no eigenvalue exceeds the largest absolute row sum */
+        for (int k = 0; k < 3; k++)
+            b->inertiaBound = MeMAX(b->inertiaBound, MeFabs(b->inertia[k][0]) + MeFabs(b->inertia[k][1]) +
+                                                         MeFabs(b->inertia[k][2]));
     if (b->nonSpherical) {
         /* The tensor was checked positive definite when it was set. */
         memcpy(b->invInertia, b->inertia, sizeof(MeMatrix3));

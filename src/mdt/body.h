@@ -35,6 +35,8 @@ typedef struct MdtBodyData {
     MeMatrix3 invInertia;    /* inverse of the inertia in use (full or spherical), body frame */
     MeVector3 comOffset;     /* COM in the body frame */
     MeBool nonSpherical;     /* use the full tensor (else the mean of its diagonal) */
+    MeReal inertiaBound;     /* at least the largest eigenvalue of the inertia in use (the runaway check's
+                                bound; to MeReal's rounding) */
     MeBool coriolis;         /* include the gyroscopic term */
 
     /* settings */

@@ -14,8 +14,6 @@
  *    all meet, each correction overshooting the others'. The partition is reported once
  *    (ME_ERR_ENERGY_JUMP) until a step without a jump.
  * Both are counted in MdtWorldCounters (speedWarnings, energyWarnings). */
-#include <math.h>
-
 #include "../me/check.h"
 #include "world.h"
 
@@ -41,20 +39,6 @@ MeReal MdtBodyKineticEnergy(const MdtBodyData *b, const MeVector3 v, const MeVec
     return ME_R(0.5) * (b->mass * MeVector3MagnitudeSqr(v) + rotational);
 }
 
-/* A bound on the largest eigenvalue of the inertia in use: the mean diagonal for a spherical one (its
- * only eigenvalue), else the largest absolute row sum (Gershgorin). */
-static double inertiaBound(const MdtBodyData *b)
-{
-    if (!b->nonSpherical)
-        return ((double)b->inertia[0][0] + (double)b->inertia[1][1] + (double)b->inertia[2][2]) / 3;
-    double largest = 0;
-    for (int k = 0; k < 3; k++) {
-        const double row = fabs((double)b->inertia[k][0]) + fabs((double)b->inertia[k][1]) + fabs((double)b->inertia[k][2]);
-        largest = row > largest ? row : largest;
-    }
-    return largest;
-}
-
 MeBool MdtRunawayEnergyBelowFloor(const MdtWorldData *w, int p, const MeReal *deltaVelocities)
 {
     const MdtPartitionLists *out = &w->partitions;
@@ -62,9 +46,11 @@ MeBool MdtRunawayEnergyBelowFloor(const MdtWorldData *w, int p, const MeReal *de
     const MeReal v = w->maxCorrectingVelocity;
     if (!ME_IS_FINITE(v))
         return MEFALSE; /* no floor: the check compares the energies themselves */
-    /* In double, with a margin of ME_SMALL_EPSILON per body (several of MeReal's rounding errors) for
-     * the check's own sums in MeReal: the answer is "below" only when the check would also say so. */
-    double mass = 0, energy = 0;
+    /* m|v|² + λmax|ω|² bounds each body's 2 × energy (inertiaBound ≥ λmax). The margin of
+     * ME_SMALL_EPSILON per body (several of MeReal's rounding errors) covers the rounding of these sums
+     * and of the check's own: the answer is "below" only when the check would find no jump. An
+     * overflow gives infinity or NaN, and the answer "not below". */
+    MeReal mass = 0, energy = 0;
     for (int i = start; i < end; i++) {
         const MdtBodyData *b = out->bodies[i];
         MeVector3 vel, velrot;
@@ -75,12 +61,11 @@ MeBool MdtRunawayEnergyBelowFloor(const MdtWorldData *w, int p, const MeReal *de
             MeVector3Copy(vel, b->velStar);
             MeVector3Copy(velrot, b->velrotStar);
         }
-        mass += (double)b->mass;
-        energy += (double)b->mass * (double)MeVector3MagnitudeSqr(vel) +
-                  inertiaBound(b) * (double)MeVector3MagnitudeSqr(velrot);
+        mass += b->mass;
+        energy += b->mass * MeVector3MagnitudeSqr(vel) + b->inertiaBound * MeVector3MagnitudeSqr(velrot);
     }
-    const double margin = (double)ME_SMALL_EPSILON * (end - start + 4);
-    return 0.5 * energy * (1 + margin) <= 0.5 * mass * (double)v * (double)v * (1 - margin);
+    const MeReal margin = ME_SMALL_EPSILON * (MeReal)(end - start + 4);
+    return energy * (1 + margin) <= mass * v * v * (1 - margin);
 }
 
 static void checkSpeed(MdtWorldData *w, MdtBodyData *b)
