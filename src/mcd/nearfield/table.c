@@ -88,6 +88,8 @@ static int keepPlausible(MeBool builtIn, MeReal reach, MeMatrix4 tm1, MeMatrix4 
 {
     MeReal bound = MEINFINITY, boundSqr = MEINFINITY;
     int k, kept = 0;
+    if (n == 0)
+        return 0; /* most pairs of a scene: boxes that overlap, shapes that do not touch */
     if (builtIn) {
         bound = MeVector3Distance(tm1[3], tm2[3]) + ME_R(2.0) * reach + tolerance;
         boundSqr = bound * bound;
