@@ -353,6 +353,13 @@ void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorl
     if (!b)
         return;
     ME_CHECK_NOT_NULL(pairs, ME_NOTHING);
+    if (!MeHandleResolveOwner((uintptr_t)world, ME_HANDLE_WORLD, __func__, "w"))
+        return;
+    /* Contacts are made every step: a full pool is reported once, naming what the application called
+     * (this function, unless MstBridgeUpdateContacts or MstUniverseStep named itself first). */
+    const char *caller = MdtWorldGetCallerName(world);
+    if (!caller)
+        MdtWorldSetCallerName(world, __func__);
     int n;
     McdModelPairID *hello = McdModelPairContainerGetHelloArray(pairs, &n);
     for (int i = 0; i < n; i++) {
@@ -364,6 +371,8 @@ void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorl
         b->lastContactCount += collidePair(b, staying[i], world);
         b->lastPairCount++;
     }
+    if (!caller)
+        MdtWorldSetCallerName(world, NULL);
 }
 
 void MstBridgeUpdateContacts(MstBridgeID id, McdSpaceID space, MdtWorldID world)
@@ -374,8 +383,7 @@ void MstBridgeUpdateContacts(MstBridgeID id, McdSpaceID space, MdtWorldID world)
     if (!MeHandleResolveOwner((uintptr_t)world, ME_HANDLE_WORLD, __func__, "world"))
         return;
     b->lastPairCount = b->lastContactCount = 0;
-    /* Contacts are made every step: a full pool is reported once, naming what the application called
-     * (MstUniverseStep sets its own name first). */
+    /* Messages name what the application called (MstUniverseStep sets its own name first). */
     const char *caller = MdtWorldGetCallerName(world);
     if (!caller)
         MdtWorldSetCallerName(world, __func__);

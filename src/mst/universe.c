@@ -259,9 +259,12 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
     MeProfileFrameStart(prof);
     MeProfileSectionStart(prof, MST_SECTION_COLLISION);
     MeProfileSectionStart(prof, MST_SECTION_FARFIELD);
-    /* Messages of the parts name what the application called: this function. */
+    /* Messages of the parts name what the application called: this function (unless the application
+     * named its own). */
+    const char *worldCaller = MdtWorldGetCallerName(u->world);
+    if (!worldCaller)
+        MdtWorldSetCallerName(u->world, __func__);
     McdSpaceSetCallerName(u->space, __func__);
-    MdtWorldSetCallerName(u->world, __func__);
     McdSpaceUpdateAll(u->space);
     MeProfileSectionEnd(prof, MST_SECTION_FARFIELD);
     MeProfileSectionStart(prof, MST_SECTION_NEARFIELD);
@@ -271,7 +274,7 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
     MeProfileSectionEnd(prof, MST_SECTION_COLLISION);
     MeProfileFrameEnd(prof);
     MdtWorldStep(u->world, stepSize);
-    MdtWorldSetCallerName(u->world, NULL);
+    MdtWorldSetCallerName(u->world, worldCaller);
 }
 
 void MstBridgeStepAll(MstBridgeID bridge, MeReal stepSize)
