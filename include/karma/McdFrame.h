@@ -61,6 +61,10 @@ ME_API void McdFrameworkGetCounters(McdFrameworkID fw, McdFrameworkCounters *cou
 ME_API void McdFrameworkSetDefaultContactTolerance(McdFrameworkID fw, MeReal tolerance);
 /** Contact tolerance given to new models (m); 0 for an invalid ID (reported). */
 ME_API MeReal McdFrameworkGetDefaultContactTolerance(McdFrameworkID fw);
+/** What "pool full" messages tell the application to raise (strings that outlive the framework, such as
+ *  literals; a NULL one keeps its current name): the model pool, the geometry pool, the user types; for
+ *  a layer that made the framework on the application's behalf (MstUniverseCreate). */
+ME_API void McdFrameworkSetSizeNames(McdFrameworkID fw, const char *models, const char *geometries, const char *types);
 /** The request used by pairs whose `request` is NULL; the application may change it in place. */
 ME_API McdRequest *McdFrameworkGetDefaultRequestPtr(McdFrameworkID fw);
 /** Make `request` (the application's; it must outlive its use) the default request; NULL restores

@@ -24,6 +24,22 @@ ME_API void McdModelPairGetGeometryNames(McdModelPairID pair, const char **name1
 ME_API McdRequest *McdModelPairGetRequestPtr(const McdModelPairID pair);
 /** Use `request` (the caller's; NULL: the framework's default) for this pair. */
 ME_API void McdModelPairSetRequestPtr(McdModelPairID pair, McdRequest *request);
+/** What a collision-response layer (a bridge) reads of a pair's two models each step before testing
+ *  it, in the order model1, model2 (McdModelPairGetModelInfo). */
+typedef struct McdModelPairModelInfo {
+    void *bodyData[2];  /**< each model's McdModelGetBodyData (the bridge's MdtBodyID), or NULL */
+    int material[2];    /**< each model's McdModelGetMaterial */
+    MeBool frozen[2];   /**< each model's McdSpaceModelIsFrozen */
+} McdModelPairModelInfo;
+/** Fill `info` from the pair's two models with one handle check each (the per-field getters would
+ *  take three); MEFALSE with `info` zeroed when a model ID is invalid (reported) or an argument NULL. */
+ME_API MeBool McdModelPairGetModelInfo(McdModelPairID pair, McdModelPairModelInfo *info);
+/** A dynamics bridge's per-pair step with one handle check per model: McdModelPairGetModelInfo, then
+ *  McdIntersect (result->contacts and contactMaxCount set by the caller) unless both models are frozen
+ *  or neither has body data (two pieces of the world); returns whether the pair was tested (an
+ *  untested pair's result holds no contacts). Invalid models or NULL arguments: reported, MEFALSE,
+ *  `info` zeroed. */
+ME_API MeBool McdIntersectForResponse(McdModelPairID pair, McdModelPairModelInfo *info, McdIntersectResult *result);
 /** The application's pointer for the pair (the bridge keeps its contact group here). */
 ME_API void *McdModelPairGetUserData(McdModelPairID pair);
 /** Attach an application pointer to the pair (not owned by Mcd); NULL pair refused. */

@@ -111,6 +111,14 @@ ME_API McdSpaceID McdSpaceAxisSortCreate(McdFrameworkID fw, int axes, int object
 ME_API void McdSpaceDestroy(McdSpaceID space);
 /** Whether `space` is a live space ID (no message). */
 ME_API MeBool McdSpaceIsValid(McdSpaceID space);
+/** What "pool full" messages tell the application to raise (strings that outlive the space; a NULL one
+ *  keeps its current name): the model pool and the pair pool; for a layer that made the space on the
+ *  application's behalf (MstUniverseCreate). */
+ME_API void McdSpaceSetSizeNames(McdSpaceID space, const char *models, const char *pairs);
+/** Name `function` (a string that outlives the space; NULL: none) instead of the space's own functions
+ *  in the messages of its updates, for a layer that updates it on the application's behalf
+ *  (MstUniverseStep). */
+ME_API void McdSpaceSetCallerName(McdSpaceID space, const char *function);
 
 /** The change block: models are inserted, removed, frozen and updated between BeginChanges and
  *  EndChanges, which decides the pairs' hello, staying and goodbye; misuse is ME_ERR_BAD_STATE. */

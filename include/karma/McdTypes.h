@@ -69,6 +69,8 @@ typedef struct McdModelPair {
     int testIndex;             /**< entry of the interaction table, or -1 when no test exists */
     int swapped;               /**< the table's test takes the models in the other order */
     void *cache;               /**< per-pair data of the test (e.g. GJK warm start), or NULL */
+    McdFrameworkID framework;  /**< whose test: McdGoodbye releases the cache through it even after
+                                    both models were destroyed */
     MeU32 id;                  /**< stable identity while the pair lives (deterministic order) */
 } McdModelPair;
 typedef McdModelPair *McdModelPairID;

@@ -54,6 +54,9 @@ ME_API MeMatrix4Ptr MdtBodyGetTransformPtr(MdtBodyID b);
 ME_API void MdtBodyGetTransform(MdtBodyID b, MeMatrix4 m);
 /** The application pointer set by MdtBodySetUserData (owned by the application); NULL if unset. */
 ME_API void *MdtBodyGetUserData(MdtBodyID b);
+/** The collision model a bridge linked to this body (McdModelSetBody), as an untyped pointer that Mdt
+ *  stores and never follows; NULL if none or for an invalid ID. */
+ME_API void *MdtBodyGetModel(MdtBodyID b);
 /** Mass (kg); 0 for an invalid ID. */
 ME_API MeReal MdtBodyGetMass(MdtBodyID b);
 /** Inertia tensor about the centre of mass, body frame (kg·m²). */
@@ -108,6 +111,9 @@ ME_API MeI32 MdtBodyGetSortKey(MdtBodyID b);
 /* ---- mutators ----------------------------------------------------------------------------- */
 /** Attach an application pointer (not owned, never freed by Karma); invalid ID refused. */
 ME_API void MdtBodySetUserData(MdtBodyID b, void *d);
+/** Record the collision model linked to this body (for a bridge: McdModelSetBody calls it); untyped,
+ *  not owned, never followed by Mdt; NULL unlinks. Invalid body refused (ME_ERR_INVALID_HANDLE). */
+ME_API void MdtBodySetModel(MdtBodyID b, void *model);
 /** Set position and orientation from a transform (rotation part must be orthonormal). */
 ME_API void MdtBodySetTransform(MdtBodyID b, MeMatrix4 tm);
 /** Mass (kg, > 0). The inertia tensor is left as it is. */
@@ -115,6 +121,9 @@ ME_API void MdtBodySetMass(MdtBodyID b, MeReal mass);
 /** Full inertia tensor about the centre of mass in the body frame (symmetric positive definite).
  *  It takes effect once non-spherical inertia is enabled; otherwise its mean diagonal is used. */
 ME_API void MdtBodySetInertiaTensor(MdtBodyID b, MeMatrix3 i);
+/** Whether I (kg m²) is what MdtBodySetInertiaTensor accepts: finite, symmetric to a relative 1e-4 and
+ *  positive definite in MeReal (a tensor whose determinant underflows is refused); NULL refused. */
+ME_API MeBool MdtInertiaTensorIsValid(MeMatrix3 I);
 /** Spherical inertia i·identity (kg·m², > 0). */
 ME_API void MdtBodySetSphericalInertiaTensor(MdtBodyID b, MeReal i);
 /** Move the body-frame origin to (x, y, z) in world coordinates (m); NaN or infinite refused (ME_ERR_NONFINITE_ARGUMENT). */

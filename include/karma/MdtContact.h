@@ -51,6 +51,12 @@ ME_API void MdtContactGetWorldVelocity(MdtContactID c, MeVector3 v);
 ME_API MdtContactParamsID MdtContactGetParams(MdtContactID c);
 /** Copy parameters into the contact. */
 ME_API void MdtContactSetParams(MdtContactID c, const MdtContactParams *p);
+/** MdtContactSetParams, MdtContactSetPosition (m), MdtContactSetNormal and MdtContactSetPenetration (m)
+ *  with one handle check, for a bridge writing a collision's contact: each field checked as its setter
+ *  would, a bad one skipped and reported in that setter's name, the others set; NULL position or
+ *  normal refused (ME_ERR_NULL_ARGUMENT) with nothing set. */
+ME_API void MdtContactSetFromCollision(MdtContactID c, const MdtContactParams *params, const MeVector3 position,
+                                       const MeVector3 normal, MeReal penetration);
 /** Velocity of body 0's material point relative to body 1's (or to the moving world) at the contact. */
 ME_API void MdtContactGetRelativeVelocity(MdtContactID c, MeVector3 v);
 /** Normal force (N) the contact applied in the last step (≥ 0 unless adhesive). */

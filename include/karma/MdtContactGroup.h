@@ -42,6 +42,11 @@ ME_API void MdtContactGroupDestroyContact(MdtContactGroupID g, MdtContactID c);
 ME_API MeBool MdtContactGroupIsSwapped(MdtContactGroupID g);
 /** Record that the group's bodies are in the opposite order from its generator's models. */
 ME_API void MdtContactGroupSetSwapped(MdtContactGroupID g, MeBool swapped);
+/** The group's first `max` (>= 0) contacts in order and, when `positions` is not NULL, their world
+ *  positions (m), with one handle check for the group (a bridge refreshing it each step); returns how
+ *  many were written. Invalid group, NULL `contacts` or negative `max` refused (0). */
+ME_API int MdtContactGroupGetContactsAndPositions(MdtContactGroupID g, MdtContactID *contacts, MeVector3 *positions,
+                                                  int max);
 /** Number of contacts in the group; 0 for an invalid ID. */
 ME_API int MdtContactGroupGetCount(MdtContactGroupID g);
 /** Sum of the contacts' normal forces in the last step, N. */

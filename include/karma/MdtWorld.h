@@ -264,6 +264,18 @@ ME_API int MdtWorldGetMaxMemoryPoolUsed(MdtWorldID w);
 /** Whether `w` is a live world ID (no message). */
 ME_API MeBool MdtWorldIsValid(MdtWorldID w);
 
+/* For a layer that runs the world on the application's behalf (a bridge, MstUniverseStep): messages
+ * that name what the application called and the setting to change. */
+/** Name `function` (a string that outlives the world, such as a literal; NULL: none) in the messages of
+ *  MdtWorldStep, of contact creation and of the mass warning while it is set; while set, a full
+ *  constraint pool in contact creation is reported once per world and counted after. */
+ME_API void MdtWorldSetCallerName(MdtWorldID w, const char *function);
+/** The name set by MdtWorldSetCallerName, or NULL (also for an invalid ID). */
+ME_API const char *MdtWorldGetCallerName(MdtWorldID w);
+/** What "pool full" and mass messages tell the application to raise or set (strings that outlive the
+ *  world; a NULL one keeps its current name): the body pool, the constraint pool, the mass scale. */
+ME_API void MdtWorldSetSizeNames(MdtWorldID w, const char *bodies, const char *constraints, const char *massScale);
+
 ME_EXTERN_C_END
 
 #endif /* MDT_WORLD_H */

@@ -26,6 +26,17 @@ McdFrameworkData *McdFrameworkFromID(McdFrameworkID id, const char *function)
     if (!fw)                                                                                         \
     return ret
 
+void McdFrameworkSetSizeNames(McdFrameworkID id, const char *models, const char *geometries, const char *types)
+{
+    FW_OR_RETURN(fw, id, ME_NOTHING);
+    if (models)
+        fw->modelPool.sizeName = models;
+    if (geometries)
+        fw->geometryPool.sizeName = geometries;
+    if (types)
+        fw->typesSizeName = types;
+}
+
 static void installBuiltInTypes(McdFrameworkData *fw)
 {
     fw->types[kMcdGeometryTypeNull] = McdNullTypeDesc;

@@ -68,6 +68,21 @@ static MeBool transformIsFinite(MeMatrix4 tm)
     return METRUE;
 }
 
+/* Whether the rotation part of `tm` is a rotation to `tolerance`: what MeMatrix3IsValidOrientationMatrix
+ * decides for it (R Rᵀ within the tolerance of the identity, determinant above 1 - tolerance), read in
+ * place. R Rᵀ is symmetric, with element (i, j) the dot product of rows i and j summed in the same
+ * order, so its upper triangle decides alone. */
+static MeBool rotationIsValid(MeMatrix4 tm, MeReal tolerance)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = i; j < 3; j++) {
+            const MeReal dot = tm[i][0] * tm[j][0] + tm[i][1] * tm[j][1] + tm[i][2] * tm[j][2];
+            if (!(MeFabs(dot - (i == j ? ME_R(1.0) : ME_R(0.0))) <= tolerance))
+                return MEFALSE;
+        }
+    return MeVector3ScalarTripleProduct(tm[0], tm[1], tm[2]) > ME_R(1.0) - tolerance;
+}
+
 /* Update in the name of `function`: a non-finite transform is reported and the last AABB kept. */
 static void update(McdModelData *m, const char *function)
 {
@@ -79,15 +94,18 @@ static void update(McdModelData *m, const char *function)
     MeMatrix4 previous;
     MeMatrix4Copy(previous, m->worldTransform);
     compound(m);
-    if (!transformIsFinite(m->worldTransform)) {
+    /* A rotation part that passes rotationIsValid is finite (a NaN or infinity fails its tests), so
+     * the common case checks the position alone for finiteness; the rest tell the two failures apart. */
+    const MeBool valid = rotationIsValid(m->worldTransform, MCD_ROTATION_TOLERANCE) &&
+                         isfinite(m->worldTransform[3][0]) && isfinite(m->worldTransform[3][1]) &&
+                         isfinite(m->worldTransform[3][2]);
+    if (!valid && !transformIsFinite(m->worldTransform)) {
         ME_REPORT_IN(function, ME_ERR_NONFINITE_ARGUMENT,
                      "the model's transform holds NaN or infinity; its last transform and AABB are kept");
         MeMatrix4Copy(m->worldTransform, previous);
         return;
     }
-    MeMatrix3 R;
-    MeMatrix4TMGetRotation(R, m->worldTransform);
-    if (!MeMatrix3IsValidOrientationMatrix(R, MCD_ROTATION_TOLERANCE)) {
+    if (!valid) {
         ME_REPORT_IN(function, ME_ERR_NOT_ROTATION,
                      "the model's transform is not a rotation (orthonormal, determinant +1, to %g): sheared, "
                      "scaled or mirrored; its last transform and AABB are kept",

@@ -66,6 +66,7 @@ void McdHelloInternal(McdModelPair *pair, McdModelData *m1, McdModelData *m2, co
 {
     McdFrameworkData *fw = m1->framework;
     int t1 = m1->geometry->type, t2 = m2->geometry->type;
+    pair->framework = McdFrameworkToID(fw);
     pair->cache = NULL;
     pair->swapped = 0;
     pair->testIndex = -1;
@@ -115,16 +116,14 @@ void McdGoodbyeInternal(McdModelPair *pair, McdModelData *m1)
 void McdGoodbye(McdModelPairID pair)
 {
     ME_CHECK_NOT_NULL(pair, ME_NOTHING);
-    /* A goodbye pair may name a model destroyed since it left its space (MstModelAndBodyDestroy
-     * removes and destroys at once): legal, so not reported. The framework comes from whichever model
-     * is still there; with neither, only the pair's own fields are cleared. */
-    McdModelData *m = McdModelIsValid(pair->model1) ? McdModelFromID(pair->model1, __func__)
-                      : McdModelIsValid(pair->model2) ? McdModelFromID(pair->model2, __func__)
-                                                      : NULL;
-    if (m) {
-        McdGoodbyeInternal(pair, m);
-        return;
-    }
+    /* A goodbye pair may name models destroyed since they left their space (MstModelAndBodyDestroy
+     * removes and destroys at once): legal, so not reported. The cache goes back through the
+     * framework McdHello recorded; with that gone too (McdTerm freed it), only the fields are cleared. */
+    McdFrameworkData *fw = McdFrameworkIsValid(pair->framework)
+                               ? McdFrameworkFromID(pair->framework, __func__)
+                               : NULL;
+    if (fw && pair->cache && pair->testIndex >= 0 && fw->interactions[pair->testIndex].releaseCache)
+        fw->interactions[pair->testIndex].releaseCache(pair->cache);
     pair->cache = NULL;
     pair->testIndex = -1;
     pair->swapped = 0;
@@ -179,6 +178,43 @@ int McdIntersect(McdModelPairID pair, McdIntersectResult *result)
         return 0;
     }
     return McdIntersectModels(pair, m1, m2, result, __func__); /* which clears the result first */
+}
+
+/* Resolve the pair's models and fill `info` from them, in `function`'s name; `info` zeroed when a
+ * model is invalid. */
+static MeBool modelInfo(const McdModelPair *pair, McdModelData **m, McdModelPairModelInfo *info, const char *function)
+{
+    if (!pairModels(pair, &m[0], &m[1], function)) {
+        memset(info, 0, sizeof *info);
+        return MEFALSE;
+    }
+    for (int i = 0; i < 2; i++) {
+        info->bodyData[i] = m[i]->body;
+        info->material[i] = m[i]->material;
+        info->frozen[i] = m[i]->frozen;
+    }
+    return METRUE;
+}
+
+MeBool McdModelPairGetModelInfo(McdModelPairID pair, McdModelPairModelInfo *info)
+{
+    ME_CHECK_NOT_NULL(info, MEFALSE);
+    McdModelData *m[2];
+    return modelInfo(pair, m, info, __func__);
+}
+
+MeBool McdIntersectForResponse(McdModelPairID pair, McdModelPairModelInfo *info, McdIntersectResult *result)
+{
+    ME_CHECK_NOT_NULL(info, MEFALSE);
+    ME_CHECK_NOT_NULL(result, MEFALSE);
+    McdModelData *m[2];
+    if (!modelInfo(pair, m, info, __func__) || (info->frozen[0] && info->frozen[1]) ||
+        (!info->bodyData[0] && !info->bodyData[1])) {
+        clearResult(pair, result);
+        return MEFALSE;
+    }
+    McdIntersectModels(pair, m[0], m[1], result, __func__);
+    return METRUE;
 }
 
 int McdIntersectModels(McdModelPair *pair, McdModelData *m1, McdModelData *m2, McdIntersectResult *result,

@@ -66,6 +66,21 @@ void McdSpaceDestroyInternal(McdSpaceData *s)
 
 MeBool McdSpaceIsValid(McdSpaceID space) { return MeHandleIsValid((uintptr_t)space, ME_HANDLE_SPACE); }
 
+void McdSpaceSetSizeNames(McdSpaceID id, const char *models, const char *pairs)
+{
+    SPACE_OR_RETURN(s, id, ME_NOTHING);
+    if (models)
+        s->objectsSizeName = models;
+    if (pairs)
+        s->pairsSizeName = pairs;
+}
+
+void McdSpaceSetCallerName(McdSpaceID id, const char *function)
+{
+    SPACE_OR_RETURN(s, id, ME_NOTHING);
+    s->caller = function;
+}
+
 /* ---- change blocks ------------------------------------------------------------------------ */
 
 void McdSpaceBeginChanges(McdSpaceID space)

@@ -83,6 +83,11 @@ void MdtBodyWorldInertia(const MdtBodyData *b, MeMatrix3 out)
 /* The inverse inertia in use: the full tensor, or the mean of its diagonal when spherical. */
 static void updateInverseInertia(MdtBodyData *b)
 {
+    b->inertiaBound = (b->inertia[0][0] + b->inertia[1][1] + b->inertia[2][2]) / 3;
+    if (b->nonSpherical) /* Gershgorin: no eigenvalue exceeds the largest absolute row sum */
+        for (int k = 0; k < 3; k++)
+            b->inertiaBound = MeMAX(b->inertiaBound, MeFabs(b->inertia[k][0]) + MeFabs(b->inertia[k][1]) +
+                                                         MeFabs(b->inertia[k][2]));
     if (b->nonSpherical) {
         /* The tensor was checked positive definite when it was set. */
         memcpy(b->invInertia, b->inertia, sizeof(MeMatrix3));
@@ -273,6 +278,12 @@ void *MdtBodyGetUserData(MdtBodyID id)
     return b->userData;
 }
 
+void *MdtBodyGetModel(MdtBodyID id)
+{
+    BODY_OR_RETURN(b, id, NULL);
+    return b->model;
+}
+
 MeReal MdtBodyGetMass(MdtBodyID id)
 {
     BODY_OR_RETURN(b, id, 0);
@@ -456,6 +467,12 @@ void MdtBodySetUserData(MdtBodyID id, void *d)
     b->userData = d;
 }
 
+void MdtBodySetModel(MdtBodyID id, void *model)
+{
+    BODY_OR_RETURN(b, id, ME_NOTHING);
+    b->model = model;
+}
+
 /* Rows orthonormal and right-handed within tolerance. */
 static MeBool isRotation(MeMatrix3 R)
 {
@@ -518,6 +535,8 @@ static void checkMassRange(MdtBodyData *b, MeReal value, MeReal scale, MeBool is
     if (*reported || !(value > MASS_RANGE_LIMIT * scale || value * MASS_RANGE_LIMIT < scale))
         return;
     *reported = METRUE;
+    if (w->callerName)
+        function = w->callerName;
     if (isMass)
         ME_REPORT_IN(function, ME_ERR_MASS_SCALE,
                      "mass %g kg is over %g times away from the world's massScale %g kg: contacts and joints "
@@ -529,13 +548,6 @@ static void checkMassRange(MdtBodyData *b, MeReal value, MeReal scale, MeBool is
                      "inertia %g is over %g times away from the world's scale %g (0.4 massScale lengthScale²): "
                      "expect poor accuracy; set %s to a typical mass of the scene (reported once per world)",
                      (double)value, (double)MASS_RANGE_LIMIT, (double)scale, w->massScaleName);
-}
-
-void MdtBodyCheckMassScale(MdtBodyID id, MeReal mass, const char *function)
-{
-    MdtBodyData *b = MdtBodyFromID(id, function);
-    if (b && mass > 0)
-        checkMassRange(b, mass, b->world->massScale, METRUE, function);
 }
 
 void MdtBodySetMass(MdtBodyID id, MeReal mass)
@@ -553,6 +565,7 @@ void MdtBodySetMass(MdtBodyID id, MeReal mass)
 
 MeBool MdtInertiaTensorIsValid(MeMatrix3 I)
 {
+    ME_CHECK_NOT_NULL(I, MEFALSE);
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             if (!ME_IS_FINITE(I[i][j]))

@@ -35,6 +35,8 @@ typedef struct MdtBodyData {
     MeMatrix3 invInertia;    /* inverse of the inertia in use (full or spherical), body frame */
     MeVector3 comOffset;     /* COM in the body frame */
     MeBool nonSpherical;     /* use the full tensor (else the mean of its diagonal) */
+    MeReal inertiaBound;     /* at least the largest eigenvalue of the inertia in use (the runaway check's
+                                bound; to MeReal's rounding) */
     MeBool coriolis;         /* include the gyroscopic term */
 
     /* settings */
@@ -43,7 +45,7 @@ typedef struct MdtBodyData {
     MeBool useFastSpin;
     MeI32 sortKey;
     void *userData;
-    uintptr_t bridgeModel;   /* ID of the collision model the bridge linked to this body (opaque to Mdt), or 0 */
+    void *model;             /* the collision model a bridge linked to this body (MdtBodySetModel; opaque to Mdt), or NULL */
 
     /* accumulators, cleared by each step that simulates the body */
     MeVector3 force, torque;
@@ -68,15 +70,8 @@ typedef struct MdtBodyData {
 
 /* Resolve an ID or report in the caller's name; NULL when invalid. */
 MdtBodyData *MdtBodyFromID(MdtBodyID id, const char *function);
-/** The warning of a mass far from the world's massScale (once per world), in `function`'s name: for
- *  helpers that set a mass for the application (MstModelAndBodyCreate). */
-void MdtBodyCheckMassScale(MdtBodyID id, MeReal mass, const char *function);
 /* Recompute bodyTM and comTM from q, the COM position and the offset. */
 void MdtBodyUpdateTransforms(MdtBodyData *b, const MeVector3 comPosition);
-/* Whether I is finite, symmetric (to a relative tolerance) and positive definite (Sylvester's
- * criterion, in MeReal: a tensor whose determinant underflows is refused): what
- * MdtBodySetInertiaTensor accepts. */
-MeBool MdtInertiaTensorIsValid(MeMatrix3 I);
 /* World-frame inverse inertia tensor (symmetric) of the body's current orientation. */
 void MdtBodyWorldInverseInertia(const MdtBodyData *b, MeMatrix3 out);
 /* World-frame inertia tensor. */

@@ -139,7 +139,11 @@ MdtConstraintData *MdtConstraintCreateForContacts(MdtWorldID wid, MdtBclJointTyp
                                               const char *function)
 {
     MdtWorldData *w = MdtWorldFromID(wid, function);
-    return w ? create(wid, type, cls, function, &w->contactPoolFullReported) : NULL;
+    if (!w)
+        return NULL;
+    if (!w->callerName)
+        return create(wid, type, cls, function, NULL);
+    return create(wid, type, cls, w->callerName, &w->contactPoolFullReported);
 }
 
 void MdtConstraintRelease(MdtConstraintData *c)

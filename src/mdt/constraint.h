@@ -99,8 +99,9 @@ typedef struct MdtConstraintData {
  *  NULL (reported in `function`'s name) when the ID is bad or the pool is full. */
 MdtConstraintData *MdtConstraintCreateInternal(MdtWorldID wid, MdtBclJointType type, const MdtConstraintClass *cls,
                                            const char *function);
-/** The same for contacts made while stepping (the bridge): a full pool is reported once per world,
- *  naming `function` (what the application called, e.g. MstUniverseStep), and counted after. */
+/** The same for contacts and contact groups: while the world has a caller name (MdtWorldSetCallerName:
+ *  a bridge making contacts every step), a full pool is reported once per world in that name and
+ *  counted after; otherwise in `function`'s name, every time. */
 MdtConstraintData *MdtConstraintCreateForContacts(MdtWorldID wid, MdtBclJointType type, const MdtConstraintClass *cls,
                                               const char *function);
 /** Resolve an ID of any constraint type; NULL (reported) if invalid. */

@@ -74,14 +74,19 @@ void MdtIntegrateStage(MdtWorldData *w)
             continue; /* the solver failed it: restored below, never integrated */
         int start = out->partitionStart[p], end = out->partitionStart[p + 1];
         MeBool finite = METRUE;
-        MeReal predicted = 0, after = 0; /* kinetic energies for the runaway check */
+        /* Kinetic energies for the runaway check, summed only when a cheap bound cannot rule a jump
+         * out (a partition moving slower than the world's maximum correcting speed cannot jump). */
+        const MeBool sumEnergies = !MdtRunawayEnergyBelowFloor(w, p, deltaVelocities);
+        MeReal predicted = 0, after = 0;
         for (int i = start; i < end; i++) {
             MdtBodyData *b = out->bodies[i];
             const MeReal *dv = deltaVelocities ? deltaVelocities + 6 * (size_t)i : zero;
             const MeReal *dw = deltaVelocities ? deltaVelocities + 6 * (size_t)i + 3 : zero;
-            predicted += MdtBodyKineticEnergy(b, b->velStar, b->velrotStar);
+            if (sumEnergies)
+                predicted += MdtBodyKineticEnergy(b, b->velStar, b->velrotStar);
             integrateBody(b, dv, dw, w->stepSize);
-            after += MdtBodyKineticEnergy(b, b->vel, b->velrot);
+            if (sumEnergies)
+                after += MdtBodyKineticEnergy(b, b->vel, b->velrot);
             finite &= stateIsFinite(b);
         }
         if (!finite)

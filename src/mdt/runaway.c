@@ -39,6 +39,35 @@ MeReal MdtBodyKineticEnergy(const MdtBodyData *b, const MeVector3 v, const MeVec
     return ME_R(0.5) * (b->mass * MeVector3MagnitudeSqr(v) + rotational);
 }
 
+MeBool MdtRunawayEnergyBelowFloor(const MdtWorldData *w, int p, const MeReal *deltaVelocities)
+{
+    const MdtPartitionLists *out = &w->partitions;
+    const int start = out->partitionStart[p], end = out->partitionStart[p + 1];
+    const MeReal v = w->maxCorrectingVelocity;
+    if (!ME_IS_FINITE(v))
+        return MEFALSE; /* no floor: the check compares the energies themselves */
+    /* m|v|² + λmax|ω|² bounds each body's 2 × energy (inertiaBound ≥ λmax). The margin of
+     * ME_SMALL_EPSILON per body (several of MeReal's rounding errors) covers the rounding of these sums
+     * and of the check's own: the answer is "below" only when the check would find no jump. An
+     * overflow gives infinity or NaN, and the answer "not below". */
+    MeReal mass = 0, energy = 0;
+    for (int i = start; i < end; i++) {
+        const MdtBodyData *b = out->bodies[i];
+        MeVector3 vel, velrot;
+        if (deltaVelocities) {
+            MeVector3Add(vel, b->velStar, deltaVelocities + 6 * (size_t)i);
+            MeVector3Add(velrot, b->velrotStar, deltaVelocities + 6 * (size_t)i + 3);
+        } else {
+            MeVector3Copy(vel, b->velStar);
+            MeVector3Copy(velrot, b->velrotStar);
+        }
+        mass += b->mass;
+        energy += b->mass * MeVector3MagnitudeSqr(vel) + b->inertiaBound * MeVector3MagnitudeSqr(velrot);
+    }
+    const MeReal margin = ME_SMALL_EPSILON * (MeReal)(end - start + 4);
+    return energy * (1 + margin) <= mass * v * v * (1 - margin);
+}
+
 static void checkSpeed(MdtWorldData *w, MdtBodyData *b)
 {
     MeReal v2 = MeVector3MagnitudeSqr(b->vel), w2 = MeVector3MagnitudeSqr(b->velrot);

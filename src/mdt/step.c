@@ -132,7 +132,7 @@ void MdtWorldStepEnd(MdtWorldID id)
 void MdtWorldStep(MdtWorldID id, MeReal stepSize)
 {
     MdtWorldData *w = MdtWorldFromID(id, __func__);
-    if (!w || !beginStep(w, stepSize, w->stepCaller ? w->stepCaller : __func__))
+    if (!w || !beginStep(w, stepSize, w->callerName ? w->callerName : __func__))
         return;
     for (size_t i = 0; i < sizeof stages / sizeof stages[0]; i++)
         runStage(w, &stages[i]);

@@ -143,6 +143,29 @@ void MdtWorldReCreate(MdtWorldID id)
 
 MeBool MdtWorldIsValid(MdtWorldID id) { return MeHandleIsValid((uintptr_t)id, ME_HANDLE_WORLD); }
 
+void MdtWorldSetCallerName(MdtWorldID id, const char *function)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    w->callerName = function;
+}
+
+const char *MdtWorldGetCallerName(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, NULL);
+    return w->callerName;
+}
+
+void MdtWorldSetSizeNames(MdtWorldID id, const char *bodies, const char *constraints, const char *massScale)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    if (bodies)
+        w->bodyPool.sizeName = bodies;
+    if (constraints)
+        w->constraintPool.sizeName = constraints;
+    if (massScale)
+        w->massScaleName = massScale;
+}
+
 /* ---- accessors ---------------------------------------------------------------------------- */
 int MdtWorldGetTotalBodies(MdtWorldID id)
 {

@@ -118,8 +118,9 @@ typedef struct MdtWorldData {
     MeBool nothingMovesHinted;          /* the one-time "nothing will move" hint was given */
     MeBool hasMoved;                    /* a step had something acting: no more hints to look for */
     const char *massScaleName;          /* what sets massScale, for the mass-range warning */
-    const char *stepCaller;             /* the API function stepping the world when not MdtWorldStep
-                                           (MstUniverseStep), for the step's messages; else NULL */
+    const char *callerName;             /* MdtWorldSetCallerName: the API function running the world on
+                                           the application's behalf (MstUniverseStep), named by the step's
+                                           messages, its contacts' and the mass warning; else NULL */
 
     /* debugging (world_debug.c) */
     MdtDebugDrawOptions debugOptions;   /* MdtWorldSetDebugDrawing */
@@ -178,6 +179,11 @@ MeReal MdtBodyKineticEnergy(const MdtBodyData *b, const MeVector3 v, const MeVec
 /* After integrating partition p: report its bodies over the speed limits and an energy jump from
  * `predicted` (kinetic energy with the applied forces, before constraints) to `after` (runaway.c). */
 void MdtRunawayCheckPartition(MdtWorldData *w, int p, MeReal predicted, MeReal after);
+/* Whether partition p's kinetic energy after integration (velocities v* + Δv from `deltaVelocities`,
+ * 6 per body, or NULL for none) is certainly at most the energy check's floor, so that the check
+ * finds no jump whatever the energy before: the integration then need not sum the energies
+ * (runaway.c). */
+MeBool MdtRunawayEnergyBelowFloor(const MdtWorldData *w, int p, const MeReal *deltaVelocities);
 /* Restore, stop and disable the partitions marked in simError; report each and call the callback. */
 void MdtSimErrorHandlePartitions(MdtWorldData *w);
 

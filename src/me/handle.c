@@ -162,6 +162,25 @@ void *MeHandleResolveOwner(uintptr_t id, MeHandleKind ownerKind, const char *fun
 
 void *MeHandleResolve(uintptr_t id, MeHandleKind kind, const char *function, const char *argument, int *ownerSlot)
 {
+    /* The common case first, with each test once: an object ID of the right kind whose owner is live
+     * and whose slot is live with the ID's generation. Whatever fails it takes check()'s full path,
+     * which tells the reasons apart; both accept exactly the same IDs. */
+    const MeHandleKind k = (MeHandleKind)((id >> KIND_SHIFT) & FIELD_MASK(ME_HANDLE_KIND_BITS));
+    const unsigned owner0 = (unsigned)((id >> OWNER_SHIFT) & FIELD_MASK(ME_HANDLE_OWNER_BITS));
+    if (k == kind && owner0 - 1u < (unsigned)ME_HANDLE_MAX_OWNERS) {
+        const MeHandleOwner *o = &registry[owner0];
+        const MePool *pool = o->pools[kind];
+        const unsigned index0 = (unsigned)((id >> INDEX_SHIFT) & FIELD_MASK(ME_HANDLE_INDEX_BITS));
+        if (o->object && o->ownerKind != kind && pool && index0 < (unsigned)pool->capacity) {
+            const MeU32 generation = pool->generation[index0];
+            if ((generation & 1u) &&
+                (generation & (MeU32)FIELD_MASK(ME_HANDLE_GEN_BITS)) == (MeU32)((id >> GEN_SHIFT) & FIELD_MASK(ME_HANDLE_GEN_BITS))) {
+                if (ownerSlot)
+                    *ownerSlot = (int)owner0;
+                return pool->memory + (size_t)index0 * pool->stride;
+            }
+        }
+    }
     int owner, index;
     MeErrorCode code = check(id, kind, &owner, &index);
     if (code != ME_ERR_NONE) {

@@ -7,27 +7,32 @@
  * their boxes still overlap, every contact refused by the per-contact callback, or the per-pair
  * callback returning 0) empties the group and disables it, as Karma's bridge did: an empty group
  * adds no rows, joins no bodies into a partition and wakes nothing; it is enabled again when
- * contacts come back (they start from no warm start). */
+ * contacts come back (they start from no warm start).
+ *
+ * Mst is written as an application's own bridge would be: it uses the public headers only (and Me's
+ * message and handle helpers), so whatever it needs of Mcd and Mdt is public API too. */
 #include <string.h>
 
 #include <karma/McdInteraction.h>
 #include <karma/McdModel.h>
+#include <karma/McdModelPair.h>
 #include <karma/McdSpace.h>
+#include <karma/MeMath.h>
 #include <karma/MeMemory.h>
 #include <karma/MdtBody.h>
 #include <karma/MdtContact.h>
 #include <karma/MdtContactGroup.h>
 #include <karma/MdtWorld.h>
 
-#include "../mcd/mcd_internal.h"
-#include "../mdt/bcl/contact_internal.h"
-#include "../mcd/framework.h"
-#include "../mcd/space.h"
-#include "../mdt/bcl/contact_batch.h"
-#include "../mdt/body.h"
 #include "../me/check.h"
 #include "../me/handle.h"
 #include "bridge.h"
+
+/* Whether `id` is a live ID of an object of `kind` (not an owner's); reported in `function`'s name (argument `argument`) if not. */
+static MeBool checkID(const void *id, MeHandleKind kind, const char *function, const char *argument)
+{
+    return MeHandleResolve((uintptr_t)id, kind, function, argument, NULL) != NULL;
+}
 
 #define DEFAULT_PAIR_BUFFER 128
 #define DEFAULT_CONTACT_BUFFER 32
@@ -209,27 +214,9 @@ static void destroyGroup(McdModelPair *pair)
     }
 }
 
-/* A pair's goodbye. MstModelAndBodyDestroy removes a model from its space and destroys it at once, so
- * the goodbye of a pair it touched arrives with a dead model ID, which McdGoodbye refuses
- * (ME_ERR_INVALID_HANDLE): such a pair is released here on the space's framework instead. */
-static void goodbyePair(McdModelPair *pair, McdSpaceID space)
-{
-    destroyGroup(pair);
-    if (McdModelIsValid(pair->model1) && McdModelIsValid(pair->model2)) {
-        McdGoodbye(pair);
-        return;
-    }
-    McdSpaceData *s = McdSpaceFromID(space, "MstBridgeUpdateContacts");
-    McdFrameworkData *fw = s ? s->framework : NULL;
-    if (fw && pair->cache && pair->testIndex >= 0 && fw->interactions[pair->testIndex].releaseCache)
-        fw->interactions[pair->testIndex].releaseCache(pair->cache);
-    pair->cache = NULL;
-    pair->testIndex = -1;
-    pair->swapped = 0;
-}
-
 void MstHandleTransitions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorldID world, MstBridgeID id)
 {
+    (void)space;
     (void)world;
     MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
@@ -237,8 +224,12 @@ void MstHandleTransitions(McdModelPairContainer *pairs, McdSpaceID space, MdtWor
     ME_CHECK_NOT_NULL(pairs, ME_NOTHING);
     int n;
     McdModelPairID *goodbye = McdModelPairContainerGetGoodbyeArray(pairs, &n);
-    for (int i = 0; i < n; i++)
-        goodbyePair(goodbye[i], space);
+    for (int i = 0; i < n; i++) {
+        /* MstModelAndBodyDestroy removes a model from its space and destroys it at once, so a goodbye
+         * may name dead models: McdGoodbye releases such a pair quietly. */
+        destroyGroup(goodbye[i]);
+        McdGoodbye(goodbye[i]);
+    }
     McdModelPairID *hello = McdModelPairContainerGetHelloArray(pairs, &n);
     for (int i = 0; i < n; i++) {
         hello[i]->userData = NULL;
@@ -257,8 +248,7 @@ static int matchContacts(MstBridgeData *b, MdtContactGroupID g, const McdContact
         return 0; /* out of memory: reported by MeMemory; the group keeps last step's contacts */
     MdtContactID *old = b->oldContacts, *out = b->newContacts;
     MeBool *used = b->oldUsed;
-    const int oldCount =
-        MdtContactGroupGetContactsAndPositions(g, old, b->oldPositions, b->matchCapacity, "MstHandleCollisions");
+    const int oldCount = MdtContactGroupGetContactsAndPositions(g, old, b->oldPositions, b->matchCapacity);
     for (int k = 0; k < oldCount; k++)
         used[k] = MEFALSE;
     for (int i = 0; i < n; i++) {
@@ -277,9 +267,9 @@ static int matchContacts(MstBridgeData *b, MdtContactGroupID g, const McdContact
             used[best] = METRUE;
             out[i] = old[best];
         } else {
-            out[i] = MdtContactGroupCreateContactForStep(g, b->caller ? b->caller : "MstHandleCollisions");
+            out[i] = MdtContactGroupCreateContact(g);
             if (!out[i]) {
-                n = i; /* constraint pool full: reported once by Mdt */
+                n = i; /* constraint pool full: reported by Mdt (once, in the world's caller name) */
                 break;
             }
         }
@@ -293,21 +283,18 @@ static int matchContacts(MstBridgeData *b, MdtContactGroupID g, const McdContact
 /* Test one pair and convert its contacts; returns the number of dynamics contacts made. */
 static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
 {
-    McdModelData *m1 = McdModelFromID(pair->model1, __func__);
-    McdModelData *m2 = McdModelFromID(pair->model2, __func__);
-    if (!m1 || !m2)
-        return 0;
-    MdtBodyID b1 = (MdtBodyID)m1->body, b2 = (MdtBodyID)m2->body;
-    if (m1->frozen && m2->frozen)
-        return MdtContactGroupGetCount((MdtContactGroupID)pair->userData); /* kept as they were */
-    if (!b1 && !b2)
-        return 0; /* two pieces of the world */
+    McdModelPairModelInfo models;
     McdIntersectResult result;
     memset(&result, 0, sizeof result);
     result.contacts = b->contacts;
     result.contactMaxCount = b->contactBufferSize;
-    McdIntersectModels(pair, m1, m2, &result, "MstHandleCollisions");
-    MstMaterialPairData *mat = MstBridgeMaterialPair(b, m1->material, m2->material, "MstHandleCollisions");
+    if (!McdIntersectForResponse(pair, &models, &result)) { /* not tested: */
+        if (models.frozen[0] && models.frozen[1])
+            return MdtContactGroupGetCount((MdtContactGroupID)pair->userData); /* kept as they were */
+        return 0; /* two pieces of the world, or a bad model (reported) */
+    }
+    MdtBodyID b1 = (MdtBodyID)models.bodyData[0], b2 = (MdtBodyID)models.bodyData[1];
+    MstMaterialPairData *mat = MstBridgeMaterialPair(b, models.material[0], models.material[1], "MstHandleCollisions");
     if (!mat)
         return 0;
     if (result.contactCount > 0 && mat->intersectCB)
@@ -322,11 +309,10 @@ static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
      * is the MdtContact normal as it is (body 1 towards body 0). The dynamic body is body 0: a pair
      * whose model 1 is part of the world is turned round and its normals negated. */
     MeBool swapped = !b1;
-    MeReal sign = swapped ? -1 : 1;
     if (!g) {
-        g = MdtContactGroupCreateForStep(world, b->caller ? b->caller : "MstHandleCollisions");
+        g = MdtContactGroupCreate(world);
         if (!g)
-            return 0; /* pool full: reported once by Mdt */
+            return 0; /* pool full: reported by Mdt (once, in the world's caller name) */
         MdtConstraintSetBodies(MdtContactGroupQuaConstraint(g), swapped ? b2 : b1, swapped ? NULL : b2);
         MdtContactGroupSetSwapped(g, swapped);
         MdtContactGroupSetGenerator(g, pair);
@@ -339,7 +325,12 @@ static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
     int kept = 0;
     for (int i = 0; i < n; i++) {
         const McdContact *c = &result.contacts[i];
-        MdtContactSetFromCollision(dyn[i], &mat->params, c->position, c->normal, sign, -c->separation);
+        if (swapped) {
+            const MeVector3 normal = {-c->normal[0], -c->normal[1], -c->normal[2]};
+            MdtContactSetFromCollision(dyn[i], &mat->params, c->position, normal, -c->separation);
+        } else {
+            MdtContactSetFromCollision(dyn[i], &mat->params, c->position, c->normal, -c->separation);
+        }
         if (mat->perContactCB && !mat->perContactCB(&result, &result.contacts[i], dyn[i]))
             MdtContactGroupDestroyContact(g, dyn[i]);
         else
@@ -362,6 +353,13 @@ void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorl
     if (!b)
         return;
     ME_CHECK_NOT_NULL(pairs, ME_NOTHING);
+    if (!MeHandleResolveOwner((uintptr_t)world, ME_HANDLE_WORLD, __func__, "w"))
+        return;
+    /* Contacts are made every step: a full pool is reported once, naming what the application called
+     * (this function, unless MstBridgeUpdateContacts or MstUniverseStep named itself first). */
+    const char *caller = MdtWorldGetCallerName(world);
+    if (!caller)
+        MdtWorldSetCallerName(world, __func__);
     int n;
     McdModelPairID *hello = McdModelPairContainerGetHelloArray(pairs, &n);
     for (int i = 0; i < n; i++) {
@@ -373,6 +371,8 @@ void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorl
         b->lastContactCount += collidePair(b, staying[i], world);
         b->lastPairCount++;
     }
+    if (!caller)
+        MdtWorldSetCallerName(world, NULL);
 }
 
 void MstBridgeUpdateContacts(MstBridgeID id, McdSpaceID space, MdtWorldID world)
@@ -380,44 +380,47 @@ void MstBridgeUpdateContacts(MstBridgeID id, McdSpaceID space, MdtWorldID world)
     MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
         return;
+    if (!MeHandleResolveOwner((uintptr_t)world, ME_HANDLE_WORLD, __func__, "world"))
+        return;
     b->lastPairCount = b->lastContactCount = 0;
-    const char *caller = b->caller;
+    /* Messages name what the application called (MstUniverseStep sets its own name first). */
+    const char *caller = MdtWorldGetCallerName(world);
     if (!caller)
-        b->caller = __func__; /* else MstUniverseStep, which called this */
+        MdtWorldSetCallerName(world, __func__);
     MstBridgeReadPairs(b, space, world, METRUE);
-    b->caller = caller;
+    if (!caller)
+        MdtWorldSetCallerName(world, NULL);
 }
 
 /* ---- linking models and bodies -------------------------------------------------------------- */
 
-/* The model the bridge linked to a body, or NULL (quietly: the model may have been destroyed). */
-static McdModelData *linkedModel(MdtBodyID body)
+/* The model the bridge linked to a body, if it is in a space; NULL (quietly) otherwise: the model may
+ * have been destroyed. */
+static McdModelID linkedModelInSpace(MdtBodyID body)
 {
-    MdtBodyData *bd = MdtBodyFromID(body, "MstSetWorldHandlers");
-    if (!bd || !bd->bridgeModel || !MeHandleIsValid(bd->bridgeModel, ME_HANDLE_MODEL))
-        return NULL;
-    return McdModelFromID((McdModelID)bd->bridgeModel, "MstSetWorldHandlers");
+    McdModelID m = (McdModelID)MdtBodyGetModel(body);
+    return m && McdModelIsValid(m) && McdModelGetSpace(m) ? m : NULL;
 }
 
 static void onBodyEnabled(MdtBodyID body, void *data)
 {
     (void)data;
-    McdModelData *m = linkedModel(body);
-    if (m && m->space && m->frozen)
-        McdSpaceUnfreezeModel((McdModelID)m->id);
+    McdModelID m = linkedModelInSpace(body);
+    if (m && McdSpaceModelIsFrozen(m))
+        McdSpaceUnfreezeModel(m);
 }
 
 static void onBodyDisabled(MdtBodyID body, void *data)
 {
     (void)data;
-    McdModelData *m = linkedModel(body);
-    if (m && m->space && !m->frozen) {
+    McdModelID m = linkedModelInSpace(body);
+    if (m && !McdSpaceModelIsFrozen(m)) {
         /* A frozen model's box is not updated again: take the body's pose now, for a body placed and
          * disabled by the application before the space saw it move (auto-disable, inside the step,
          * finds the box already up to date). */
-        if (McdSpaceIsChanging(McdModelGetSpace((McdModelID)m->id)))
-            McdSpaceUpdateModel((McdModelID)m->id);
-        McdSpaceFreezeModel((McdModelID)m->id);
+        if (McdSpaceIsChanging(McdModelGetSpace(m)))
+            McdSpaceUpdateModel(m);
+        McdSpaceFreezeModel(m);
     }
 }
 
@@ -436,31 +439,21 @@ void MstSetWorldHandlers(MdtWorldID world)
     MdtWorldSetContactGroupDestroyCallback(world, onGroupDestroyed, NULL);
 }
 
-void McdModelSetBody(McdModelID id, MdtBodyID body)
+void McdModelSetBody(McdModelID model, MdtBodyID body)
 {
-    McdModelData *m = McdModelFromID(id, __func__);
-    if (!m)
+    if (!checkID(model, ME_HANDLE_MODEL, __func__, "m") || (body && !checkID(body, ME_HANDLE_BODY, __func__, "b")))
         return;
-    MdtBodyData *bd = NULL;
+    MdtBodyID old = (MdtBodyID)McdModelGetBodyData(model);
+    if (old && MdtBodyIsValid(old) && MdtBodyGetModel(old) == (void *)model)
+        MdtBodySetModel(old, NULL);
+    McdModelSetBodyData(model, body);
     if (body) {
-        bd = MdtBodyFromID(body, __func__);
-        if (!bd)
-            return;
-    }
-    if (m->body && MeHandleIsValid((uintptr_t)m->body, ME_HANDLE_BODY)) {
-        MdtBodyData *old = MdtBodyFromID((MdtBodyID)m->body, __func__);
-        if (old && old->bridgeModel == m->id)
-            old->bridgeModel = 0;
-    }
-    m->body = body;
-    if (bd) {
-        bd->bridgeModel = m->id;
-        McdModelSetTransformPtr(id, MdtBodyGetTransformPtr(body));
+        MdtBodySetModel(body, model);
+        McdModelSetTransformPtr(model, MdtBodyGetTransformPtr(body));
     }
 }
 
-MdtBodyID McdModelGetBody(McdModelID id)
+MdtBodyID McdModelGetBody(McdModelID model)
 {
-    McdModelData *m = McdModelFromID(id, __func__);
-    return m ? (MdtBodyID)m->body : NULL;
+    return checkID(model, ME_HANDLE_MODEL, __func__, "m") ? (MdtBodyID)McdModelGetBodyData(model) : NULL;
 }

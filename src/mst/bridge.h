@@ -32,7 +32,6 @@ typedef struct MstBridgeData {
     MeBool *oldUsed;
     int matchCapacity;
     int lastPairCount, lastContactCount;
-    const char *caller;                /* the API function stepping the bridge, for messages (NULL: none) */
     const char *materialsSizeName;     /* what sets maxMaterials, for "pool full" messages */
 } MstBridgeData;
 

@@ -9,10 +9,6 @@
 #include <karma/MeMemory.h>
 #include <karma/MstUniverse.h>
 
-#include "../mcd/framework.h"
-#include "../mcd/space.h"
-#include "../mdt/body.h"
-#include "../mdt/world.h"
 #include "../me/check.h"
 #include "bridge.h"
 
@@ -165,19 +161,14 @@ static void destroyParts(MstUniverseData *u)
  * made: "pool full" messages name the field to raise. */
 static void nameSizes(MstUniverseData *u)
 {
-    McdFrameworkData *fw = McdFrameworkFromID(u->framework, "MstUniverseCreate");
-    McdSpaceData *space = McdSpaceFromID(u->space, "MstUniverseCreate");
-    MdtWorldData *world = MdtWorldFromID(u->world, "MstUniverseCreate");
-    MstBridgeData *bridge = MstBridgeFromID(u->bridge, "MstUniverseCreate");
-    fw->modelPool.sizeName = "MstUniverseSizes.collisionModelsMaxCount";
-    fw->geometryPool.sizeName = "MstUniverseSizes.collisionModelsMaxCount (+ collisionGeometryInstancesMaxCount)";
-    fw->typesSizeName = "MstUniverseSizes.collisionUserGeometryTypesMaxCount";
-    space->objectsSizeName = "MstUniverseSizes.collisionModelsMaxCount";
-    space->pairsSizeName = "MstUniverseSizes.collisionPairsMaxCount";
-    world->bodyPool.sizeName = "MstUniverseSizes.dynamicBodiesMaxCount";
-    world->constraintPool.sizeName = "MstUniverseSizes.dynamicConstraintsMaxCount";
-    world->massScaleName = "MstUniverseSizes.massScale";
-    bridge->materialsSizeName = "MstUniverseSizes.materialsMaxCount";
+    McdFrameworkSetSizeNames(u->framework, "MstUniverseSizes.collisionModelsMaxCount",
+                             "MstUniverseSizes.collisionModelsMaxCount (+ collisionGeometryInstancesMaxCount)",
+                             "MstUniverseSizes.collisionUserGeometryTypesMaxCount");
+    McdSpaceSetSizeNames(u->space, "MstUniverseSizes.collisionModelsMaxCount",
+                         "MstUniverseSizes.collisionPairsMaxCount");
+    MdtWorldSetSizeNames(u->world, "MstUniverseSizes.dynamicBodiesMaxCount",
+                         "MstUniverseSizes.dynamicConstraintsMaxCount", "MstUniverseSizes.massScale");
+    MstBridgeFromID(u->bridge, "MstUniverseCreate")->materialsSizeName = "MstUniverseSizes.materialsMaxCount";
 }
 
 MstUniverseID MstUniverseCreate(const MstUniverseSizes *sizes)
@@ -268,22 +259,22 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
     MeProfileFrameStart(prof);
     MeProfileSectionStart(prof, MST_SECTION_COLLISION);
     MeProfileSectionStart(prof, MST_SECTION_FARFIELD);
-    /* Messages of the parts name what the application called: this function. */
-    McdSpaceData *space = McdSpaceFromID(u->space, __func__);
-    MstBridgeData *bridge = MstBridgeFromID(u->bridge, __func__);
-    space->caller = bridge->caller = __func__;
+    /* Messages of the parts name what the application called: this function (unless the application
+     * named its own). */
+    const char *worldCaller = MdtWorldGetCallerName(u->world);
+    if (!worldCaller)
+        MdtWorldSetCallerName(u->world, __func__);
+    McdSpaceSetCallerName(u->space, __func__);
     McdSpaceUpdateAll(u->space);
     MeProfileSectionEnd(prof, MST_SECTION_FARFIELD);
     MeProfileSectionStart(prof, MST_SECTION_NEARFIELD);
     MstBridgeUpdateContacts(u->bridge, u->space, u->world);
-    space->caller = bridge->caller = NULL;
+    McdSpaceSetCallerName(u->space, NULL);
     MeProfileSectionEnd(prof, MST_SECTION_NEARFIELD);
     MeProfileSectionEnd(prof, MST_SECTION_COLLISION);
     MeProfileFrameEnd(prof);
-    MdtWorldData *world = MdtWorldFromID(u->world, __func__);
-    world->stepCaller = __func__;
     MdtWorldStep(u->world, stepSize);
-    world->stepCaller = NULL;
+    MdtWorldSetCallerName(u->world, worldCaller);
 }
 
 void MstBridgeStepAll(MstBridgeID bridge, MeReal stepSize)
@@ -348,8 +339,12 @@ static MeBool setMassProperties(MdtBodyID body, McdModelID model, MeReal density
         return MEFALSE;
     }
     if (!keepMass) {
-        MdtBodyCheckMassScale(body, mass, function);
+        /* A mass far from the world's scale is reported in the name of the helper called. */
+        MdtWorldID world = MdtBodyGetWorld(body);
+        const char *caller = MdtWorldGetCallerName(world);
+        MdtWorldSetCallerName(world, function);
         MdtBodySetMass(body, mass);
+        MdtWorldSetCallerName(world, caller);
     }
     MdtBodySetInertiaTensor(body, inertia);
     MdtBodySetCenterOfMassRelativePosition(body, com);

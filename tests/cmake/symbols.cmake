@@ -1,4 +1,5 @@
-# What libkarma exports and needs: ME_API functions only, libm and libc only (tests/scripts/check_symbols.cmake).
+# What libkarma exports and needs: ME_API functions only, libm and libc only; Mst calls only public
+# Mdt and Mcd functions (tests/scripts/check_symbols.cmake).
 find_program(KARMA_NM NAMES nm)
 find_program(KARMA_READELF NAMES readelf)
 if(KARMA_NM AND KARMA_READELF)

@@ -157,6 +157,31 @@ static void pools_made_directly_name_the_creation_parameter(void **state)
     assert_int_equal(shown(ME_ERR_POOL_FULL, &last), 1);
     assert_string_equal(seen[last].function, "MstBridgeUpdateContacts");
     MstUniverseDestroy(u);
+
+    /* Karma 1.2's lower level by hand (the space's pairs, MstHandleTransitions, MstHandleCollisions):
+     * once, naming MstHandleCollisions; the world's caller name is left as it was. */
+    u = sphereFloor(20, 500, 10);
+    McdSpaceID space = MstUniverseGetSpace(u);
+    MdtWorldID world = MstUniverseGetWorld(u);
+    McdModelPairContainer *pairs = McdModelPairContainerCreate(500);
+    seenCount = 0;
+    for (int i = 0; i < 10; i++) {
+        McdSpaceUpdateAll(space);
+        McdSpaceEndChanges(space);
+        McdSpacePairIterator it;
+        McdSpacePairIteratorBegin(space, &it);
+        McdModelPairContainerReset(pairs);
+        McdSpaceGetPairs(space, &it, pairs);
+        MstHandleTransitions(pairs, space, world, MstUniverseGetBridge(u));
+        MstHandleCollisions(pairs, space, world, MstUniverseGetBridge(u));
+        McdSpaceBeginChanges(space);
+        MdtWorldStep(world, STEP);
+    }
+    assert_int_equal(shown(ME_ERR_POOL_FULL, &last), 1);
+    assert_string_equal(seen[last].function, "MstHandleCollisions");
+    assert_null(MdtWorldGetCallerName(world));
+    McdModelPairContainerDestroy(pairs);
+    MstUniverseDestroy(u);
 }
 
 /* Bodies left disabled: one hint, shown at the default level, naming MdtBodyEnable. */

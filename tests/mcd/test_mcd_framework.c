@@ -365,6 +365,22 @@ static void interaction_table_one_way_and_swap(void **state)
     McdIntersect(pair, &result);
     assert_int_equal(result.contactCount, 0);
     McdGoodbye(pair);
+    /* Both models destroyed after the test cached something (MstModelAndBodyDestroy's order): the
+     * goodbye still releases the cache, through the framework McdHello recorded, without a message. */
+    pair->request = NULL;
+    McdHello(pair);
+    assert_ptr_equal(pair->framework, fwId);
+    McdIntersect(pair, &result);
+    assert_non_null(pair->cache);
+    int releasesBefore = releases;
+    unsigned long warnings = karma_warning_count();
+    McdModelDestroy(sphere);
+    McdModelDestroy(box);
+    McdGoodbye(pair);
+    assert_int_equal(releases, releasesBefore + 1);
+    assert_null(pair->cache);
+    assert_int_equal(pair->testIndex, -1);
+    assert_int_equal(karma_warning_count(), warnings);
     McdModelPairDestroy(pair);
     McdTerm(fwId);
 }

@@ -348,6 +348,48 @@ static void kinetic_energy_uses_the_world_inertia(void **state)
     MdtWorldDestroy(w);
 }
 
+/* The integration skips summing energies when a bound shows that a partition cannot reach the check's
+ * floor (½ M v_c²): over random bodies (full tensors, turned, at speeds around v_c), the bound says
+ * "below" only when the energy the check would sum is below the floor, and does say it for slow ones. */
+static void energy_bound_never_hides_a_jump(void **state)
+{
+    (void)state;
+    MdtWorldID w = MdtWorldCreate(8, 4, 1, 1);
+    MdtWorldData *wd = MdtWorldFromID(w, "test");
+    unsigned seed = 12345;
+    int below = 0, above = 0;
+    for (int trial = 0; trial < 400; trial++) {
+        MdtBodyID id = MdtBodyCreate(w);
+        MdtBodyEnable(id);
+        seed = seed * 1103515245u + 12345u;
+        const MeReal a = ME_R(0.5) + (MeReal)(seed % 1000) / 1000, c = ME_R(0.1) * (MeReal)((seed >> 10) % 5);
+        MeMatrix3 I = {{a, c, 0}, {c, 2, c}, {0, c, 3}};
+        MdtBodySetMass(id, 1 + (MeReal)(seed % 7));
+        MdtBodySetInertiaTensor(id, I);
+        if (trial % 2)
+            MdtBodyEnableNonSphericalInertia(id);
+        MdtBodySetQuaternion(id, ME_R(0.8), ME_R(0.36), ME_R(0.48), 0);
+        const MeReal speed = ME_R(2.0) + ME_R(16.0) * (MeReal)((seed >> 16) % 1000) / 1000; /* v_c = 10 m/s */
+        MdtBodySetLinearVelocity(id, speed * ME_R(0.6), 0, speed * ME_R(0.8));
+        MdtBodySetAngularVelocity(id, (MeReal)((seed >> 4) % 9), 1, -2);
+        MdtWorldStep(w, ME_R(0.01)); /* one body, one partition: v* is its velocity */
+        assert_int_equal(wd->partitions.partitionCount, 1);
+        MdtBodyData *b = wd->partitions.bodies[0];
+        const MeReal exact = MdtBodyKineticEnergy(b, b->velStar, b->velrotStar);
+        const MeReal floor = ME_R(0.5) * b->mass * wd->maxCorrectingVelocity * wd->maxCorrectingVelocity;
+        if (MdtRunawayEnergyBelowFloor(wd, 0, NULL)) {
+            assert_true(exact <= floor);
+            below++;
+        } else {
+            above++;
+        }
+        MdtBodyDestroy(id);
+    }
+    print_message("energy bound: %d of 400 partitions ruled out without summing, %d summed\n", below, above);
+    assert_true(below > 100 && above > 100);
+    MdtWorldDestroy(w);
+}
+
 static void step_below_minimum_refused_without_change(void **state)
 {
     (void)state;
@@ -489,6 +531,7 @@ int main(void)
         cmocka_unit_test(gyroscopic_never_adds_energy_at_any_spin),
         cmocka_unit_test(slow_symmetric_top_precesses_at_analytic_rate),
         cmocka_unit_test(kinetic_energy_uses_the_world_inertia),
+        cmocka_unit_test(energy_bound_never_hides_a_jump),
         cmocka_unit_test(step_below_minimum_refused_without_change),
         cmocka_unit_test(crossed_limit_stops_refused),
         cmocka_unit_test(parallel_or_zero_axes_refused),

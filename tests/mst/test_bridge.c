@@ -6,8 +6,6 @@
 
 #include <karma/karma.h>
 
-#include "mdt/bcl/contact_batch.h" /* the bridge's batch setter, checked against the setters it stands for */
-
 /* A universe with gravity along −z and a ground plane at z = 0. */
 typedef struct Scene {
     MstUniverseID u;
@@ -237,9 +235,10 @@ static void collision_update_skips_bad_fields_one_by_one(void **state)
     MdtContactParams params;
     MdtContactParamsReset(&params);
     MdtContactParamsSetFriction(&params, 0.25f);
-    const MeReal pos[3] = {1, 2, 3}, normal[3] = {0, 0, 2}, nanPos[3] = {1, NAN, 3}, zero[3] = {0, 0, 0};
+    const MeReal pos[3] = {1, 2, 3}, normal[3] = {0, 0, 2}, down[3] = {0, 0, -2}, nanPos[3] = {1, NAN, 3},
+                 zero[3] = {0, 0, 0};
     MeVector3 p, n;
-    MdtContactSetFromCollision(c, &params, pos, normal, -1, 0.01f); /* all good; normal scaled, unit */
+    MdtContactSetFromCollision(c, &params, pos, down, 0.01f); /* all good; normal made unit */
     MdtContactGetPosition(c, p);
     MdtContactGetNormal(c, n);
     assert_true(p[0] == 1 && p[1] == 2 && p[2] == 3);
@@ -247,19 +246,56 @@ static void collision_update_skips_bad_fields_one_by_one(void **state)
     assert_near(MdtContactGetPenetration(c), 0.01, 1e-7);
     assert_near(MdtContactParamsGetPrimaryFriction(MdtContactGetParams(c)), 0.25, 0);
     /* a NaN position: reported as MdtContactSetPosition would, the rest still set */
-    assert_reports(ME_ERR_NONFINITE_ARGUMENT, MdtContactSetFromCollision(c, &params, nanPos, normal, 1, 0.02f));
+    assert_reports(ME_ERR_NONFINITE_ARGUMENT, MdtContactSetFromCollision(c, &params, nanPos, normal, 0.02f));
     MdtContactGetPosition(c, p);
     MdtContactGetNormal(c, n);
     assert_true(p[1] == 2 && n[2] == 1);
     assert_near(MdtContactGetPenetration(c), 0.02, 1e-7);
     /* a zero normal and a NaN penetration: both reported, position set */
-    assert_reports(ME_ERR_ZERO_AXIS, MdtContactSetFromCollision(c, &params, normal, zero, 1, 0.03f));
+    assert_reports(ME_ERR_ZERO_AXIS, MdtContactSetFromCollision(c, &params, normal, zero, 0.03f));
     MdtContactGetPosition(c, p);
     assert_true(p[2] == 2);
-    assert_reports(ME_ERR_NONFINITE_ARGUMENT, MdtContactSetFromCollision(c, &params, pos, normal, 1, NAN));
+    assert_reports(ME_ERR_NONFINITE_ARGUMENT, MdtContactSetFromCollision(c, &params, pos, normal, NAN));
     assert_near(MdtContactGetPenetration(c), 0.03, 1e-7);
-    assert_reports(ME_ERR_NULL_ARGUMENT, MdtContactSetFromCollision(c, NULL, pos, normal, 1, 0.04f));
+    assert_reports(ME_ERR_NULL_ARGUMENT, MdtContactSetFromCollision(c, NULL, pos, normal, 0.04f));
     assert_near(MdtContactGetPenetration(c), 0.04, 1e-7);
+    /* NULL position or normal, or a bad contact ID: refused, nothing set */
+    assert_reports(ME_ERR_NULL_ARGUMENT, MdtContactSetFromCollision(c, &params, NULL, normal, 0.05f));
+    assert_reports(ME_ERR_NULL_ARGUMENT, MdtContactSetFromCollision(c, &params, pos, NULL, 0.05f));
+    assert_near(MdtContactGetPenetration(c), 0.04, 1e-7);
+    MdtContactDestroy(c);
+    assert_reports(ME_ERR_INVALID_HANDLE, MdtContactSetFromCollision(c, &params, pos, normal, 0.05f));
+    MdtWorldDestroy(w);
+}
+
+/* The bridge's one-call read of a group: its contacts in the group's order with their positions, at
+ * most `max`; positions optional; a bad group, a NULL array or a negative max refused. */
+static void group_contacts_and_positions_in_order(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    MdtWorldID w = MdtWorldCreate(4, 8, 1, 1);
+    MdtContactGroupID g = MdtContactGroupCreate(w);
+    MdtContactID made[3];
+    for (int i = 0; i < 3; i++) {
+        made[i] = MdtContactGroupCreateContact(g);
+        MdtContactSetPosition(made[i], (MeReal)i, 10 + (MeReal)i, 0);
+    }
+    MdtContactID got[3] = {NULL, NULL, NULL};
+    MeVector3 where[3];
+    assert_int_equal(MdtContactGroupGetContactsAndPositions(g, got, where, 3), 3);
+    for (int i = 0; i < 3; i++) {
+        assert_ptr_equal(got[i], made[i]);
+        assert_true(where[i][0] == (MeReal)i && where[i][1] == 10 + (MeReal)i && where[i][2] == 0);
+    }
+    got[1] = NULL;
+    assert_int_equal(MdtContactGroupGetContactsAndPositions(g, got, NULL, 1), 1);
+    assert_ptr_equal(got[0], made[0]);
+    assert_null(got[1]); /* room for one: only one written */
+    assert_reports(ME_ERR_NULL_ARGUMENT, assert_int_equal(MdtContactGroupGetContactsAndPositions(g, NULL, where, 3), 0));
+    assert_reports(ME_ERR_ARGUMENT_RANGE, assert_int_equal(MdtContactGroupGetContactsAndPositions(g, got, where, -1), 0));
+    MdtContactGroupDestroy(g);
+    assert_reports(ME_ERR_INVALID_HANDLE, assert_int_equal(MdtContactGroupGetContactsAndPositions(g, got, where, 3), 0));
     MdtWorldDestroy(w);
 }
 
@@ -602,6 +638,7 @@ int main(void)
         cmocka_unit_test(per_pair_callback_removes_the_contacts_not_the_group),
         cmocka_unit_test(empty_group_neither_joins_nor_wakes),
         cmocka_unit_test(collision_update_skips_bad_fields_one_by_one),
+        cmocka_unit_test(group_contacts_and_positions_in_order),
         cmocka_unit_test(callbacks_and_parameters),
         cmocka_unit_test(contact_buffer_size_is_the_only_limit),
         cmocka_unit_test(freeze_follows_disable),

@@ -5,7 +5,9 @@
 # Kea (src/mdt/kea) is a solver library: it includes its own headers, Me's (<karma/Me*.h>,
 # src/me/) and the C library, never Mdt, BCL, Mcd or Mst. Mdt (src/mdt, BCL included) never
 # includes Mcd or Mst; Mcd (src/mcd) never includes Mdt, Kea, BCL or Mst. Only Mst joins them.
-# Mdt's stages (src/mdt/*.c: LOD, debug drawing) do not include the contact's struct.
+# Mdt's stages (src/mdt/*.c: LOD, debug drawing) do not include the contact's struct. Mst (src/mst)
+# is written as an application's own bridge would be: public headers (<karma/*.h>), its own headers,
+# Me's internal helpers (src/me/: messages, handles) and the C library, nothing private of Mdt or Mcd.
 # Each #include line is read as text; a violation names the file, the line and the rule.
 cmake_minimum_required(VERSION 3.20)
 if(NOT SRC)
@@ -54,11 +56,16 @@ file(GLOB_RECURSE mcd ${SRC}/mcd/*.c ${SRC}/mcd/*.h)
 check_includes("Mcd includes no Mdt, Kea, BCL or Mst header" "${mcd}"
                "(^|/)(Mdt|Mst)[A-Za-z0-9]*\\.h$|(^|/)(mdt|mst|kea|bcl)/" "")
 
+file(GLOB_RECURSE mst ${SRC}/mst/*.c ${SRC}/mst/*.h)
+check_includes("Mst includes only public headers, Me's helpers and its own" "${mst}" ""
+               "^(karma/[A-Za-z0-9_]+\\.h|\\.\\./me/[A-Za-z0-9_]+\\.h|[a-z0-9_]+\\.h)$")
+
 list(LENGTH kea keaCount)
 list(LENGTH mdt mdtCount)
 list(LENGTH mcd mcdCount)
+list(LENGTH mst mstCount)
 if(failures)
   list(JOIN failures "\n  " text)
   message(FATAL_ERROR "layering violations:\n  ${text}")
 endif()
-message(STATUS "layers: ${keaCount} Kea, ${mdtCount} Mdt and ${mcdCount} Mcd files include only what they may")
+message(STATUS "layers: ${keaCount} Kea, ${mdtCount} Mdt, ${mcdCount} Mcd and ${mstCount} Mst files include only what they may")

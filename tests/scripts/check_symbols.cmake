@@ -9,6 +9,9 @@
 # 2. It needs only libm and libc (plus the sanitizer runtimes in a sanitizer build).
 # 3. Every global symbol of the static library carries a Karma prefix (no clash with users' names).
 # 4. The static library links into a program with libm alone.
+# 5. Mst (src/mst) calls only what an application's own bridge could: every Mdt, Mcd or Kea symbol
+#    its objects need is a public (ME_API) one. (Me's helpers and Mst's own are allowed; the include
+#    rule of tests/scripts/check_layers.cmake catches the headers, this the calls.)
 cmake_minimum_required(VERSION 3.20)
 set(failures "")
 
@@ -129,6 +132,36 @@ execute_process(COMMAND ${CC} ${flags} ${WORK}/empty_main.c -Wl,--whole-archive 
 if(rc)
   list(APPEND failures "the whole of libkarma.a does not link with libm alone:\n${err}")
 endif()
+
+# ---- 5. Mst calls only public Mdt, Mcd and Kea functions ------------------------------------
+file(GLOB mstSources ${HEADERS}/../../src/mst/*.c)
+set(mstObjects "")
+foreach(src ${mstSources})
+  get_filename_component(name ${src} NAME)
+  list(APPEND mstObjects "${name}.o")
+endforeach()
+execute_process(COMMAND ${NM} -u ${STATIC} OUTPUT_VARIABLE out RESULT_VARIABLE rc)
+string(REGEX MATCHALL "[^\n]+" lines "${out}")
+set(member "")
+set(mstCalls 0)
+foreach(line ${lines})
+  if(line MATCHES "^([^ ]+):$")
+    set(member ${CMAKE_MATCH_1})
+    continue()
+  endif()
+  if(NOT member IN_LIST mstObjects OR NOT line MATCHES "^ +U (.+)$")
+    continue()
+  endif()
+  set(name ${CMAKE_MATCH_1})
+  if(name MATCHES "^(Mdt|Mcd|Kea|MDT_|MCD_)")
+    math(EXPR mstCalls "${mstCalls} + 1")
+    if(NOT name IN_LIST expected)
+      list(APPEND failures "${member} (Mst) calls ${name}, which is not public API: a bridge of the application's own could not")
+    endif()
+  endif()
+endforeach()
+list(LENGTH mstObjects mstCount)
+message(STATUS "Mst: ${mstCount} objects make ${mstCalls} calls into Mdt and Mcd")
 
 if(failures)
   list(JOIN failures "\n  " text)

@@ -13,15 +13,6 @@ void McdNfCountFallback(void) { atomic_fetch_add(&fallbackCount, 1); }
 
 unsigned long McdNfFallbackCount(void) { return atomic_load(&fallbackCount); }
 
-MeBool McdNfContactIsValid(const McdContact *c)
-{
-    MeReal len;
-    if (!MeVector3IsValid(c->position) || !MeVector3IsValid(c->normal) || !isfinite(c->separation))
-        return MEFALSE;
-    len = MeVector3MagnitudeSqr(c->normal);
-    return MeFabs(len - ME_R(1.0)) <= ME_R(1e-3);
-}
-
 void McdNfToWorld(MeVector3 out, MeMatrix4 tm, const MeVector3 local)
 {
     MeMatrix4TMTransform(out, tm, local);

@@ -74,25 +74,48 @@ static MeReal reachOf(const McdGeometryData *g)
     }
 }
 
-/* Keep the contacts a pair test could have meant: finite, unit normal, not beyond the tolerance, and
- * (built-in types) no deeper and no farther from geometry 1 than the two shapes reach. Others are dropped and counted: they come
- * from arithmetic beyond the precision (an aspect ratio of 1e11 in float, say). */
-static int keepPlausible(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
-                         MeReal tolerance, McdContact *contacts, int n)
+/* Whether MeVector3Distance(p, origin) <= bound, decided the same way but without the square root
+ * unless |p - origin|² lies within a relative ME_SMALL_EPSILON (several rounding errors) of bound², or
+ * is not a number. */
+static MeBool withinDistance(const MeVector3 p, const MeVector3 origin, MeReal bound, MeReal boundSqr)
 {
-    const MeBool builtIn = g1->type < kMcdGeometryBuiltInTypes && g2->type < kMcdGeometryBuiltInTypes;
-    MeReal bound = MEINFINITY;
+    const MeReal d2 = MeVector3DistanceSqr(p, origin);
+    if (boundSqr > ME_R(1e-30)) { /* clear of underflow: the margins below are relative */
+        if (d2 < boundSqr * (1 - ME_SMALL_EPSILON))
+            return METRUE;
+        if (d2 > boundSqr * (1 + ME_SMALL_EPSILON))
+            return MEFALSE;
+    }
+    return MeSqrt(d2) <= bound;
+}
+
+/* Keep the contacts a pair test could have meant: finite, unit normal, not beyond the tolerance, and
+ * (built-in types, whose reach `reach` is the sum of the two shapes' reachOf) no deeper and no farther
+ * from geometry 1 than the two shapes reach. Others are dropped and counted: they come from arithmetic
+ * beyond the precision (an aspect ratio of 1e11 in float, say). */
+static int keepPlausible(MeBool builtIn, MeReal reach, MeMatrix4 tm1, MeMatrix4 tm2, MeReal tolerance,
+                         McdContact *contacts, int n)
+{
+    MeReal bound = MEINFINITY, boundSqr = MEINFINITY;
     int k, kept = 0;
-    if (builtIn)
-        bound = MeVector3Distance(tm1[3], tm2[3]) + ME_R(2.0) * (reachOf(g1) + reachOf(g2)) + tolerance;
+    if (n == 0)
+        return 0; /* most pairs of a scene: boxes that overlap, shapes that do not touch */
+    if (builtIn) {
+        bound = MeVector3Distance(tm1[3], tm2[3]) + ME_R(2.0) * reach + tolerance;
+        boundSqr = bound * bound;
+    }
+    const MeReal deepest = -bound;
+    const MeReal shallowest = tolerance * ME_R(1.01) + MCD_NF_REL_EPS * (builtIn ? bound : ME_R(0.0));
     for (k = 0; k < n; k++) {
         const McdContact *c = &contacts[k];
-        if (McdNfContactIsValid(c) && c->separation >= -bound &&
-            c->separation <= tolerance * ME_R(1.01) + MCD_NF_REL_EPS * (builtIn ? bound : ME_R(0.0)) &&
-            (!builtIn || MeVector3Distance(c->position, tm1[3]) <= bound))
-            contacts[kept++] = *c;
-        else
+        if (McdNfContactIsValid(c) && c->separation >= deepest && c->separation <= shallowest &&
+            (!builtIn || withinDistance(c->position, tm1[3], bound, boundSqr))) {
+            if (kept != k)
+                contacts[kept] = *c;
+            kept++;
+        } else {
             McdNfCountFallback();
+        }
     }
     return kept;
 }
@@ -100,19 +123,20 @@ static int keepPlausible(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeom
 int McdNfCallCentred(McdNearfieldFn fn, const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2,
                      MeMatrix4 tm2, MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
-    MeMatrix4 a, b;
-    MeVector3 origin;
-    MeReal far = MeMAX3(MeFabs(tm1[3][0]), MeFabs(tm1[3][1]), MeFabs(tm1[3][2]));
+    const MeBool builtIn = g1->type < kMcdGeometryBuiltInTypes && g2->type < kMcdGeometryBuiltInTypes;
+    const MeReal reach = builtIn ? reachOf(g1) + reachOf(g2) : ME_R(0.0);
     int n, k;
     /* Near the origin (within MCD_NF_CENTRE_RATIO sizes of the pair) rounding of the world coordinates
      * costs nothing worth the copies: the test sees the models' own transforms. User types too. */
-    if (g1->type >= kMcdGeometryBuiltInTypes || g2->type >= kMcdGeometryBuiltInTypes ||
-        !(far > MCD_NF_CENTRE_RATIO * (reachOf(g1) + reachOf(g2)))) {
+    if (!builtIn ||
+        !(MeMAX3(MeFabs(tm1[3][0]), MeFabs(tm1[3][1]), MeFabs(tm1[3][2])) > MCD_NF_CENTRE_RATIO * reach)) {
         n = fn(g1, tm1, g2, tm2, tolerance, contacts, maxContacts, cache);
         if (n < 0 || n > maxContacts)
             return n; /* the dispatcher reports it */
-        return keepPlausible(g1, tm1, g2, tm2, tolerance, contacts, n);
+        return keepPlausible(builtIn, reach, tm1, tm2, tolerance, contacts, n);
     }
+    MeMatrix4 a, b;
+    MeVector3 origin;
     MeVector3Copy(origin, tm1[3]);
     MeMatrix4Copy(a, tm1);
     MeMatrix4Copy(b, tm2);
@@ -121,7 +145,7 @@ int McdNfCallCentred(McdNearfieldFn fn, const McdGeometryData *g1, MeMatrix4 tm1
     n = fn(g1, a, g2, b, tolerance, contacts, maxContacts, cache);
     if (n < 0 || n > maxContacts)
         return n;
-    n = keepPlausible(g1, a, g2, b, tolerance, contacts, n);
+    n = keepPlausible(builtIn, reach, a, b, tolerance, contacts, n);
     for (k = 0; k < n; k++)
         MeVector3Add(contacts[k].position, contacts[k].position, origin);
     return n;

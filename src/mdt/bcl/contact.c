@@ -24,7 +24,6 @@
 
 #include "../../me/check.h"
 #include "../world.h"
-#include "contact_batch.h"
 #include "contact_internal.h"
 
 static void resetData(ContactData *d)
@@ -409,18 +408,18 @@ void MdtContactSetParams(MdtContactID id, const MdtContactParams *p)
     setParams(d, p, __func__);
 }
 
-void MdtContactSetFromCollision(MdtContactID id, const MdtContactParams *params, const MeReal position[3],
-                                const MeReal normal[3], MeReal sign, MeReal penetration)
+void MdtContactSetFromCollision(MdtContactID id, const MdtContactParams *params, const MeVector3 position,
+                                const MeVector3 normal, MeReal penetration)
 {
     /* One handle check; each field then checked and set as its own setter would, a bad one skipped
      * and reported in that setter's name. */
-    MdtConstraintData *c = contactFromID(id, "MdtContactSetParams");
-    if (!c)
-        return;
-    ContactData *d = MDT_CONSTRAINT_DATA(c, ContactData);
+    CONTACT_OR_RETURN(c, d, id, ME_NOTHING);
+    (void)c;
+    ME_CHECK_NOT_NULL(position, ME_NOTHING);
+    ME_CHECK_NOT_NULL(normal, ME_NOTHING);
     setParams(d, params, "MdtContactSetParams");
     setPosition(d, position[0], position[1], position[2], "MdtContactSetPosition");
-    setNormal(d, sign * normal[0], sign * normal[1], sign * normal[2], "MdtContactSetNormal");
+    setNormal(d, normal[0], normal[1], normal[2], "MdtContactSetNormal");
     setPenetration(d, penetration, "MdtContactSetPenetration");
 }
 

@@ -8,7 +8,6 @@
 
 #include "../../me/check.h"
 #include "../world.h"
-#include "contact_batch.h"
 #include "contact_internal.h"
 
 typedef struct GroupData {
@@ -100,13 +99,7 @@ static const MdtConstraintClass groupClass = {"ContactGroup", 0, reset, rowCount
 
 MdtContactGroupID MdtContactGroupCreate(MdtWorldID w)
 {
-    MdtConstraintData *g = MdtConstraintCreateInternal(w, MdtBclCONTACTGROUP, &groupClass, __func__);
-    return g ? (MdtContactGroupID)g->id : NULL;
-}
-
-MdtContactGroupID MdtContactGroupCreateForStep(MdtWorldID w, const char *function)
-{
-    MdtConstraintData *g = MdtConstraintCreateForContacts(w, MdtBclCONTACTGROUP, &groupClass, function);
+    MdtConstraintData *g = MdtConstraintCreateForContacts(w, MdtBclCONTACTGROUP, &groupClass, __func__);
     return g ? (MdtContactGroupID)g->id : NULL;
 }
 
@@ -136,16 +129,19 @@ MdtContactID MdtContactGroupGetFirstContact(MdtContactGroupID id)
 }
 
 int MdtContactGroupGetContactsAndPositions(MdtContactGroupID id, MdtContactID *contacts, MeVector3 *positions,
-                                           int max, const char *function)
+                                           int max)
 {
-    MdtConstraintData *g = MdtConstraintFromIDOfType(id, MdtBclCONTACTGROUP, function);
-    if (!g)
+    GROUP_OR_RETURN(g, d, id, 0);
+    ME_CHECK_NOT_NULL(contacts, 0);
+    if (max < 0) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'max' (%d) must not be negative; call ignored", max);
         return 0;
-    const GroupData *d = MDT_CONSTRAINT_DATA(g, GroupData);
+    }
     int n = 0;
     for (MdtConstraintData *c = d->first; c && n < max; c = MDT_CONSTRAINT_DATA(c, ContactData)->next, ++n) {
         contacts[n] = (MdtContactID)c->id;
-        MeVector3Copy(positions[n], MDT_CONSTRAINT_DATA(c, ContactData)->position);
+        if (positions)
+            MeVector3Copy(positions[n], MDT_CONSTRAINT_DATA(c, ContactData)->position);
     }
     return n;
 }
@@ -309,22 +305,10 @@ void MdtContactSetNext(MdtContactID cid, MdtContactID nid)
 MdtContactID MdtContactGroupCreateContact(MdtContactGroupID id)
 {
     GROUP_OR_RETURN(g, d, id, NULL);
-    MdtConstraintData *c = MdtConstraintCreateInternal((MdtWorldID)g->world->id, MdtBclCONTACT, &MdtContactClass, __func__);
+    MdtConstraintData *c = MdtConstraintCreateForContacts((MdtWorldID)g->world->id, MdtBclCONTACT, &MdtContactClass, __func__);
     if (!c)
         return NULL;
     append(g, d, c);
-    return (MdtContactID)c->id;
-}
-
-MdtContactID MdtContactGroupCreateContactForStep(MdtContactGroupID id, const char *function)
-{
-    MdtConstraintData *g = MdtConstraintFromIDOfType(id, MdtBclCONTACTGROUP, function);
-    if (!g)
-        return NULL;
-    MdtConstraintData *c = MdtConstraintCreateForContacts((MdtWorldID)g->world->id, MdtBclCONTACT, &MdtContactClass, function);
-    if (!c)
-        return NULL;
-    append(g, MDT_CONSTRAINT_DATA(g, GroupData), c);
     return (MdtContactID)c->id;
 }
 

@@ -28,10 +28,6 @@ MDT_CONSTRAINT_DATA_FITS(ContactData);
 extern const MdtConstraintClass MdtContactClass;
 
 /* Rows of the contact's type (1, 2 or 3). */
-/** MdtContactGroupCreate and MdtContactGroupCreateContact for the bridge, while stepping: a full pool
- *  is reported once per world in `function`'s name (what the application called) and counted after. */
-MdtContactGroupID MdtContactGroupCreateForStep(MdtWorldID w, const char *function);
-MdtContactID MdtContactGroupCreateContactForStep(MdtContactGroupID group, const char *function);
 int MdtContactRowCount(const ContactData *d);
 /* Rows the contact writes in this step: its type's, or fewer when matrix capping dropped some. */
 int MdtContactStepRows(const MdtConstraintData *contact);
