@@ -8,6 +8,8 @@
 #include <string.h>
 #include <time.h>
 
+#include <MeApp.h>
+
 #include "demo_view.h"
 #include "karma_view.h"
 
@@ -109,10 +111,19 @@ int KarmaRender(int argc, char **argv)
     return status;
 }
 
+/** What `view`'s tick steps: the scene, and MeApp's mouse spring before each step. */
+typedef struct ViewTick {
+    DemoInstance *demo;
+    MeApp *app;
+} ViewTick;
+
 static void MEAPI tick(RRender *rc, void *userdata)
 {
-    DemoInstance *demo = userdata;
-    DemoStep(demo, demo->scene->defaultStepSize);
+    (void)rc;
+    ViewTick *t = userdata;
+    if (t->app)
+        MeAppStep(t->app);
+    DemoStep(t->demo, t->demo->scene->defaultStepSize);
 }
 
 int KarmaView(int argc, char **argv)
@@ -163,7 +174,12 @@ int KarmaView(int argc, char **argv)
     snprintf(title, sizeof title, "Karma: %s (%s)", scene->name, scene->description);
     RRenderSetWindowTitle(rc, title);
     RRenderSetAppName(rc, scene->name);
-    RRun(rc, tick, &demo);
+    /* Ctrl, Shift or Alt + left button picks a body and drags it (MeApp's mouse spring). */
+    ViewTick t = {&demo, demo.universe ? MeAppCreateFromUniverse(demo.universe, rc) : MeAppCreate(demo.world, NULL, rc)};
+    if (t.app)
+        RRenderSetMouseCallBack(rc, MeAppMousePickCB, t.app);
+    RRun(rc, tick, &t);
+    MeAppDestroy(t.app);
     printf("%s: %lu steps (%.3f s simulated)\n", scene->name, demo.steps, (double)demo.time);
     DemoViewDestroy(&view);
     RRenderContextDestroy(rc);
