@@ -660,6 +660,16 @@ static void floorTM(MeMatrix4 tm, int yUp)
     }
 }
 
+/* The plane z-up and y-up (as floorTM), as models. */
+static void planeModels(McdFrameworkID fw, McdModelID plane[2])
+{
+    for (int yUp = 0; yUp < 2; yUp++) {
+        MeMatrix4 tm;
+        floorTM(tm, yUp);
+        plane[yUp] = modelAt(McdPlaneCreate(fw), tm);
+    }
+}
+
 static void rests_as_on_a_plane(void **state)
 {
     (void)state;
@@ -671,11 +681,7 @@ static void rests_as_on_a_plane(void **state)
     const double bottom[5] = {0.3, 0.15, 0.25, 0.2, 0.15};
     const int lying[5] = {0, 0, 1, 1, 0};
     McdModelID plane[2];
-    for (int yUp = 0; yUp < 2; yUp++) {
-        MeMatrix4 tm;
-        floorTM(tm, yUp);
-        plane[yUp] = modelAt(McdPlaneCreate(fw), tm);
-    }
+    planeModels(fw, plane);
     for (int kind = 0; kind < FLOORS; kind++) {
         McdTriangleMeshID mesh = NULL;
         McdGeometryID floorGeo = makeFloor(fw, kind, &mesh);
@@ -786,11 +792,7 @@ static void convex_hull_rests_as_the_box(void **state)
     static const char *const poseNames[3] = {"face", "edge", "vertex"};
     const int plainCount[3] = {4, 2, 1};
     McdModelID plane[2];
-    for (int yUp = 0; yUp < 2; yUp++) {
-        MeMatrix4 tm;
-        floorTM(tm, yUp);
-        plane[yUp] = modelAt(McdPlaneCreate(fw), tm);
-    }
+    planeModels(fw, plane);
     for (int kind = 0; kind < FLOORS; kind++) {
         McdTriangleMeshID mesh = NULL;
         McdGeometryID floorGeo = makeFloor(fw, kind, &mesh);
