@@ -1,5 +1,5 @@
-/* fuzz_pairs -- every pair test of the primitives and convex meshes, through McdIntersect and straight
- * (McdNfCollide).
+/* fuzz_pairs -- every pair test of the primitives, convex meshes and terrains (triangle mesh, height
+ * field, triangle list), through McdIntersect and straight (McdNfCollide, the terrain table).
  *
  * Bytes decode to two geometry types, their sizes (in range, or raw and then refused with a code),
  * their placements (proper rotations within the position range, the second often near the first so
@@ -12,6 +12,7 @@
 
 #include "mcd/framework.h"
 #include "mcd/nearfield/nearfield.h"
+#include "mcd/terrain/terrain.h"
 
 static McdFrameworkID fw;
 static const double LENGTH_SCALE = 1;
@@ -22,7 +23,97 @@ static const int TYPES[] = {kMcdGeometryTypeSphere, kMcdGeometryTypeBox,    kMcd
 /* The type a byte selects: a convex mesh for 47, 95, 143, 191, 239 (byte values the corpus and the
  * crashes kept before convex meshes existed never hold, so they decode as they did), else a
  * primitive. */
-static int typeOf(unsigned byte) { return byte % 48 == 47 ? kMcdGeometryTypeConvexMesh : TYPES[byte % 6]; }
+static int typeOf(unsigned byte)
+{
+    /* the terrains: bytes 120, 121, 122, which no input of the corpus or the crashes kept before
+     * terrains existed holds in its first two bytes */
+    switch (byte) {
+    case 120: return kMcdGeometryTypeTriangleMesh;
+    case 121: return kMcdGeometryTypeRGHeightField;
+    case 122: return kMcdGeometryTypeTriangleList;
+    default: return byte % 48 == 47 ? kMcdGeometryTypeConvexMesh : TYPES[byte % 6];
+    }
+}
+
+/* The triangle list's triangles (one input at a time), handed out whole by its generator. */
+#define LIST_MAX 8
+static MeVector3 listVertices[3 * LIST_MAX], listNormals[LIST_MAX];
+static int listFlags[LIST_MAX], listCount;
+
+static int listGenerator(McdModelPair *pair, McdUserTriangle *t, MeVector3 pos, MeReal radius, int max)
+{
+    int n = listCount < max ? listCount : max;
+    (void)pair, (void)pos, (void)radius;
+    for (int i = 0; i < n; i++) {
+        for (int k = 0; k < 3; k++)
+            t[i].vertices[k] = &listVertices[3 * i + k];
+        t[i].normal = &listNormals[i];
+        t[i].triangleData.tag = i;
+        t[i].flags = (McdTriangleFlags)listFlags[i];
+    }
+    return n;
+}
+
+/* A terrain of size a (heights c for a height field): a few triangles of a mesh or a list, or a grid
+ * of 2 to 6 by 2 to 6 vertices with holes at times; NULL when refused (always with a message). */
+static McdGeometryID makeTerrain(FuzzInput *in, int type, MeReal a, MeReal b, MeReal c)
+{
+    unsigned shape = fuzz_byte(in);
+    if (type == kMcdGeometryTypeRGHeightField) {
+        MeReal heights[36];
+        unsigned char holes[25];
+        int nx = 2 + (int)(shape % 5), ny = 2 + (int)((shape / 5) % 5);
+        for (int i = 0; i < nx * ny; i++)
+            heights[i] = (MeReal)(fuzz_unit(in) * (double)c);
+        McdGeometryID g = McdRGHeightFieldCreate(fw, heights, nx, ny, a, b, -a * (MeReal)(nx - 1) / 2,
+                                                 -b * (MeReal)(ny - 1) / 2);
+        if (g && (shape & 0x80)) {
+            for (int i = 0; i < (nx - 1) * (ny - 1); i++)
+                holes[i] = (unsigned char)(fuzz_byte(in) & 1);
+            McdRGHeightFieldSetHoles(g, holes);
+        }
+        return g;
+    }
+    int n = 1 + (int)(shape % LIST_MAX), nv = 3 + (int)(fuzz_byte(in) % 10);
+    MeVector3 v[12];
+    for (int i = 0; i < nv; i++)
+        for (int k = 0; k < 3; k++)
+            v[i][k] = (MeReal)(fuzz_unit(in) * (double)a * (k == 2 && (shape & 8) ? 0.1 : 1));
+    if (type == kMcdGeometryTypeTriangleMesh) {
+        int idx[3 * LIST_MAX];
+        for (int i = 0; i < 3 * n; i++)
+            idx[i] = (int)(fuzz_byte(in) % (unsigned)nv);
+        return McdTriangleMeshCreate(fw, (const MeVector3 *)v, nv, idx, n);
+    }
+    /* the list: its box the vertices' (a little more), any flags, normals by the right-hand rule */
+    MeVector3 lo, hi;
+    MeVector3Copy(lo, v[0]);
+    MeVector3Copy(hi, v[0]);
+    listCount = n;
+    for (int i = 0; i < n; i++) {
+        MeVector3 e1, e2;
+        for (int k = 0; k < 3; k++) {
+            MeVector3Copy(listVertices[3 * i + k], v[fuzz_byte(in) % (unsigned)nv]);
+            for (int j = 0; j < 3; j++) {
+                lo[j] = MeMIN(lo[j], listVertices[3 * i + k][j]);
+                hi[j] = MeMAX(hi[j], listVertices[3 * i + k][j]);
+            }
+        }
+        MeVector3Subtract(e1, listVertices[3 * i + 1], listVertices[3 * i]);
+        MeVector3Subtract(e2, listVertices[3 * i + 2], listVertices[3 * i]);
+        MeVector3Cross(listNormals[i], e1, e2);
+        if (MeVector3MagnitudeSqr(listNormals[i]) > ME_R(0.0))
+            MeVector3Normalize(listNormals[i]);
+        else
+            MeVector3Set(listNormals[i], 0, 0, 1); /* a degenerate triangle from the application */
+        listFlags[i] = (int)(fuzz_byte(in) & kMcdTriangleStandard);
+    }
+    for (int j = 0; j < 3; j++) {
+        lo[j] -= ME_R(0.01) * a;
+        hi[j] += ME_R(0.01) * a;
+    }
+    return McdTriangleListCreate(fw, lo, hi, 1 + (int)(fuzz_byte(in) % LIST_MAX), listGenerator);
+}
 
 /* A geometry of the type chosen by the bytes; NULL when a raw size was (rightly) refused. */
 static McdGeometryID makeGeometry(FuzzInput *in, int type)
@@ -55,6 +146,13 @@ static McdGeometryID makeGeometry(FuzzInput *in, int type)
             FUZZ_CHECK(MeMessageGetTotalCount(ME_LEVEL_WARNING) > before, "convex mesh refused silently");
         return g;
     }
+    case kMcdGeometryTypeTriangleMesh:
+    case kMcdGeometryTypeRGHeightField:
+    case kMcdGeometryTypeTriangleList:
+        g = makeTerrain(in, type, a, b, c);
+        if (!g) /* a degenerate or repeated triangle, a raw size: refused with a message */
+            FUZZ_CHECK(MeMessageGetTotalCount(ME_LEVEL_WARNING) > before, "terrain type %d refused silently", type);
+        return g;
     default: g = McdConeCreate(fw, a, b); break;
     }
     /* refused exactly when a raw size fell outside the range, and then with a message */
@@ -137,6 +235,26 @@ static void describe(McdModelID m1, McdModelID m2)
     }
 }
 
+/* The pair test itself: McdNfCollide for the primitives and convex meshes, the terrain table's entry
+ * (terrain as geometry 2, the contacts turned round when it is geometry 1) for the terrains. */
+static int collideStraight(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
+                           MeReal tolerance, McdContact *contacts, int max)
+{
+    int count;
+    const McdNfPairEntry *table = McdTerrainPairTable(&count);
+    for (int k = 0; k < count; k++) {
+        int swapped = table[k].type1 == g2->type && table[k].type2 == g1->type;
+        if (!swapped && !(table[k].type1 == g1->type && table[k].type2 == g2->type))
+            continue;
+        int n = swapped ? McdNfCallCentred(table[k].fn, g2, tm2, g1, tm1, tolerance, contacts, max, NULL)
+                        : McdNfCallCentred(table[k].fn, g1, tm1, g2, tm2, tolerance, contacts, max, NULL);
+        for (int i = 0; swapped && i < n; i++)
+            MeVector3Scale(contacts[i].normal, -ME_R(1.0));
+        return n;
+    }
+    return McdNfCollide(g1, tm1, g2, tm2, tolerance, contacts, max);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     FuzzInput in = {data, size};
@@ -184,7 +302,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
         /* the pair test itself, without Mcd's last guard: the sources must hold the promise too */
         McdModelData *d1 = McdModelFromID(m1, "fuzz"), *d2 = McdModelFromID(m2, "fuzz");
-        int n = McdNfCollide(d1->geometry, a, d2->geometry, b, (MeReal)tolerance, contacts, 4);
+        int n = collideStraight(d1->geometry, a, d2->geometry, b, (MeReal)tolerance, contacts, 4);
         FUZZ_CHECK(n >= 0 && n <= 4, "pair test count %d", n);
         checkContacts(contacts, n, tolerance, bound, "pair test");
         McdModelSetTransformPtr(m1, NULL);

@@ -1,13 +1,15 @@
 /* The static triangle geometries (triangle list, triangle mesh, height field) and their pair tests
- * against every convex primitive, asserted on geometry:
+ * against every convex primitive and the convex mesh, asserted on geometry:
  *  - creation and its coded errors (empty, out-of-range index, NaN, degenerate triangle, bad grid);
  *  - the mesh's tree: a box query equals the brute-force answer on random boxes and triangle soups;
- *  - analytic contacts: face, edge and vertex of a triangle against a sphere and a box;
+ *  - analytic contacts: face, edge and vertex of a triangle against a sphere, a box and its hull;
  *  - random poses against one triangle: unit normals, points on both surfaces, depth equal to an
  *    independent computation (sphere and sphyl by closest points, box by the 13 separating axes),
- *    the swapped pair's normal negated;
+ *    the swapped pair's normal negated; a convex box hull's depth also against the box primitive's;
  *  - a sphere, box, cylinder, sphyl and cone resting on each flat tessellated floor give the
  *    contacts of a plane (normal +z, the same depth), with internal edges suppressed;
+ *  - a convex box hull face, edge and vertex down on each floor gives the box primitive's contacts
+ *    and its own on a plane; a rounded hull its own depth and normal on a plane;
  *  - internal edges: the adjacency marks flat and concave edges unused, convex and boundary ones used;
  *  - line segments: first hit on each floor, on a hole, from behind a one-sided height field;
  *  - a height field's valley and ridge; heights from a BMP image (Karma's utilities). */
@@ -248,6 +250,17 @@ static void adjacency_marks_internal_edges(void **state)
     McdTerm(fw);
 }
 
+/* The convex hull of the corners of a box of half-sizes (hx, hy, hz) about the origin, rounded by fat. */
+static McdConvexMeshID boxHull(McdFrameworkID fw, double hx, double hy, double hz, double fat)
+{
+    MeVector3 c[8];
+    for (int k = 0; k < 8; k++)
+        MeVector3Set(c[k], (MeReal)(k & 1 ? hx : -hx), (MeReal)(k & 2 ? hy : -hy), (MeReal)(k & 4 ? hz : -hz));
+    McdConvexMeshID g = McdConvexMeshCreateHull(fw, (const MeVector3 *)c, 8, (MeReal)fat);
+    assert_non_null(g);
+    return g;
+}
+
 /* ---- analytic contacts on one triangle ---------------------------------------------------------- */
 
 static McdTriangleMeshID oneTriangle(McdFrameworkID fw)
@@ -292,12 +305,12 @@ static void sphere_face_edge_vertex(void **state)
     McdTerm(fw);
 }
 
-static void box_face_edge_vertex(void **state)
+/* The box primitive and its convex hull give the same contacts on a triangle's face, edge and vertex. */
+static void boxOnTriangle(int hull)
 {
-    (void)state;
     McdFrameworkID fw = fwNew();
     McdModelID tri = modelAt(oneTriangle(fw), (MeMatrix4){{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}});
-    McdGeometryID box = McdBoxCreate(fw, ME_R(0.4), ME_R(0.4), ME_R(0.4));
+    McdGeometryID box = hull ? boxHull(fw, 0.2, 0.2, 0.2, 0) : McdBoxCreate(fw, ME_R(0.4), ME_R(0.4), ME_R(0.4));
     McdContact c[4];
     /* face on face: the box's four bottom corners, 1 cm deep, normal +z */
     MeMatrix4 tm;
@@ -335,6 +348,18 @@ static void box_face_edge_vertex(void **state)
     }
     McdModelDestroy(b);
     McdTerm(fw);
+}
+
+static void box_face_edge_vertex(void **state)
+{
+    (void)state;
+    boxOnTriangle(0);
+}
+
+static void convex_box_face_edge_vertex(void **state)
+{
+    (void)state;
+    boxOnTriangle(1);
 }
 
 /* ---- random poses against one triangle ---------------------------------------------------------- */
@@ -456,6 +481,7 @@ static double boxTriangleSat(const double radii[3], MeMatrix4 tm, double tri[3][
 typedef struct RandomStats {
     int touching, depthChecked;
     double worstNormal, worstSurface1, worstSurface2, worstDepth, worstSwap;
+    double worstTwin; /* a convex box hull's deepest against the box primitive's */
 } RandomStats;
 
 static void randomAgainstTriangle(int type, RandomStats *st)
@@ -477,9 +503,17 @@ static void randomAgainstTriangle(int type, RandomStats *st)
     case kMcdGeometryTypeBox: g = McdBoxCreate(fw, ME_R(0.6), ME_R(0.4), ME_R(0.3)); break;
     case kMcdGeometryTypeCylinder: g = McdCylinderCreate(fw, ME_R(0.3), ME_R(0.6)); break;
     case kMcdGeometryTypeSphyl: g = McdSphylCreate(fw, ME_R(0.25), ME_R(0.5)); break;
+    case kMcdGeometryTypeConvexMesh: g = boxHull(fw, 0.3, 0.2, 0.15, 0); break;
     default: g = McdConeCreate(fw, ME_R(0.7), ME_R(0.35)); break;
     }
     TestShape shape = test_shape_of(g);
+    /* the convex box hull: its surface is the box's, and the box primitive at the same pose gives an
+     * independent depth (box-triangle through the box's own core and features) */
+    McdGeometryID twin = NULL;
+    if (type == kMcdGeometryTypeConvexMesh) {
+        twin = McdBoxCreate(fw, ME_R(0.6), ME_R(0.4), ME_R(0.3));
+        shape = test_shape_of(twin);
+    }
     for (int pose = 0; pose < 2000; pose++) {
         MeMatrix4 tm;
         test_random_tm(tm, ME_R(0.7));
@@ -527,9 +561,21 @@ static void randomAgainstTriangle(int type, RandomStats *st)
                 p1[j] = tm[3][j] + shape.halfHeight * tm[2][j];
             }
             ref = segmentTriangleDistance(tri, p0, p1) - shape.radius;
-        } else if (type == kMcdGeometryTypeBox) {
+        } else if (shape.type == kMcdGeometryTypeBox) {
             double d = boxTriangleSat(shape.radii, tm, tri);
             ref = d > 0 ? -d : 1e300; /* SAT gives the depth of overlapping pairs only */
+        }
+        if (twin) {
+            McdModelID b = modelAt(twin, tm);
+            McdContact cb[4];
+            int nb = intersect(b, mm, cb, 4);
+            assert_int_equal(n > 0, nb > 0);
+            double deepB = 1e300;
+            for (int i = 0; i < nb; i++)
+                deepB = fmin(deepB, cb[i].separation);
+            if (n > 0)
+                st->worstTwin = fmax(st->worstTwin, fabs(deepest - deepB));
+            McdModelDestroy(b);
         }
         if (ref < 1e299) {
             /* a core that crosses the triangle's plane: the depth is the face's (two-sided triangles
@@ -557,14 +603,17 @@ static void random_poses_one_triangle(void **state)
 {
     (void)state;
     static const int types[] = {kMcdGeometryTypeSphere, kMcdGeometryTypeBox, kMcdGeometryTypeCylinder,
-                                kMcdGeometryTypeSphyl, kMcdGeometryTypeCone};
-    for (size_t k = 0; k < 5; k++) {
+                                kMcdGeometryTypeSphyl, kMcdGeometryTypeCone, kMcdGeometryTypeConvexMesh};
+    for (size_t k = 0; k < sizeof types / sizeof types[0]; k++) {
         RandomStats st = {0};
         randomAgainstTriangle(types[k], &st);
         printf("%-8s vs triangle: %4d touching of 2000, depth checked %4d: |n|-1 %.1e, on shape %.1e, on triangle "
-               "%.1e, depth %.1e, swap %.1e\n",
+               "%.1e, depth %.1e, swap %.1e",
                ref_type_name(types[k]), st.touching, st.depthChecked, st.worstNormal,
                st.worstSurface1, st.worstSurface2, st.worstDepth, st.worstSwap);
+        if (types[k] == kMcdGeometryTypeConvexMesh)
+            printf(", deepest off the box primitive's by %.1e", st.worstTwin);
+        printf("\n");
         assert_true(st.touching > 200);
         assert_true(st.worstNormal < ME_TOL(1e-9, 1e-5));
         /* curved rims (cylinder, cone) go through GJK/EPA with the normal refined on the supports: as
@@ -576,10 +625,11 @@ static void random_poses_one_triangle(void **state)
         assert_true(st.worstSurface1 < surfaceTol);
         assert_true(st.worstSurface2 < surfaceTol);
         assert_true(st.worstSwap < ME_TOL(1e-9, 1e-5));
-        if (types[k] == kMcdGeometryTypeSphere || types[k] == kMcdGeometryTypeSphyl || types[k] == kMcdGeometryTypeBox) {
+        if (types[k] != kMcdGeometryTypeCylinder && types[k] != kMcdGeometryTypeCone) {
             assert_true(st.depthChecked > 100);
             assert_true(st.worstDepth < ME_TOL(1e-6, 1e-3));
         }
+        assert_true(st.worstTwin < ME_TOL(1e-6, 1e-3));
     }
 }
 
@@ -610,6 +660,16 @@ static void floorTM(MeMatrix4 tm, int yUp)
     }
 }
 
+/* The plane z-up and y-up (as floorTM), as models. */
+static void planeModels(McdFrameworkID fw, McdModelID plane[2])
+{
+    for (int yUp = 0; yUp < 2; yUp++) {
+        MeMatrix4 tm;
+        floorTM(tm, yUp);
+        plane[yUp] = modelAt(McdPlaneCreate(fw), tm);
+    }
+}
+
 static void rests_as_on_a_plane(void **state)
 {
     (void)state;
@@ -621,11 +681,7 @@ static void rests_as_on_a_plane(void **state)
     const double bottom[5] = {0.3, 0.15, 0.25, 0.2, 0.15};
     const int lying[5] = {0, 0, 1, 1, 0};
     McdModelID plane[2];
-    for (int yUp = 0; yUp < 2; yUp++) {
-        MeMatrix4 tm;
-        floorTM(tm, yUp);
-        plane[yUp] = modelAt(McdPlaneCreate(fw), tm);
-    }
+    planeModels(fw, plane);
     for (int kind = 0; kind < FLOORS; kind++) {
         McdTriangleMeshID mesh = NULL;
         McdGeometryID floorGeo = makeFloor(fw, kind, &mesh);
@@ -706,6 +762,136 @@ static void rests_as_on_a_plane(void **state)
             McdGeometryDestroy(mesh);
         else
             McdGeometryDestroy(mesh);
+    }
+    McdTerm(fw);
+}
+
+/* The pose `local` (a rotation) turned by yaw about the floor's normal, at (x, y, height) on the floor. */
+static void placeOnFloor(MeMatrix4 world, MeMatrix4 local, double yaw, double x, double y, double height, MeMatrix4 ftm)
+{
+    MeMatrix4 yawTM, tmp;
+    ref_tm_axis_angle(yawTM, 0, 0, 1, yaw, 0, 0, 0);
+    MeMatrix4MultiplyMatrix(tmp, local, yawTM);
+    MeVector3Set(tmp[3], (MeReal)x, (MeReal)y, (MeReal)height);
+    MeMatrix4MultiplyMatrix(world, tmp, ftm);
+}
+
+/* A convex box hull on each floor, face, edge and vertex down, gives the box primitive's contacts on
+ * that floor (same points, normal and depth) and the hull's own depth and support on a plane; a
+ * rounded hull (fatness 3 cm) gives its own depth and normal on a plane. */
+static void convex_hull_rests_as_the_box(void **state)
+{
+    (void)state;
+    McdFrameworkID fw = fwNew();
+    const double r[3] = {0.2, 0.25, 0.15};
+    const double fat = 0.03;
+    McdGeometryID hull = boxHull(fw, r[0], r[1], r[2], 0), box = McdBoxCreate(fw, ME_R(0.4), ME_R(0.5), ME_R(0.3));
+    McdGeometryID rounded = boxHull(fw, r[0] - fat, r[1] - fat, r[2] - fat, fat);
+    TestShape shape = test_shape_of(box);
+    /* face down; edge down (45 degrees about x); vertex down (tilted about x, then about y) */
+    static const char *const poseNames[3] = {"face", "edge", "vertex"};
+    const int plainCount[3] = {4, 2, 1};
+    McdModelID plane[2];
+    planeModels(fw, plane);
+    for (int kind = 0; kind < FLOORS; kind++) {
+        McdTriangleMeshID mesh = NULL;
+        McdGeometryID floorGeo = makeFloor(fw, kind, &mesh);
+        for (int down = 0; down < 3; down++) {
+            double worstBox = 0, worstPlane = 0, worstNormal = 0, worstSurface = 0, worstCorner = 0, worstRounded = 0;
+            int cases = 0;
+            for (int yUp = 0; yUp < 2; yUp++) {
+                MeMatrix4 ftm;
+                floorTM(ftm, yUp);
+                McdModelID floor = modelAt(floorGeo, ftm);
+                MeRealRandomSeed(5 + (unsigned)down);
+                for (int pose = 0; pose < 50; pose++) {
+                    double yaw = MeRealRandomInRange(0, ME_R(6.283)), x = MeRealRandomInRange(-1.5, 1.5),
+                           y = MeRealRandomInRange(-1.5, 1.5);
+                    MeMatrix4 tilt, tilt2, local, world, worldR;
+                    ref_tm_axis_angle(tilt, 1, 0, 0, down >= 1 ? 3.14159265358979 / 4 : 0, 0, 0, 0);
+                    ref_tm_axis_angle(tilt2, 0, 1, 0, down == 2 ? 0.5 : 0, 0, 0, 0);
+                    MeMatrix4MultiplyMatrix(local, tilt, tilt2);
+                    /* the lowest point of the turned box, 5 mm into the floor */
+                    double bottom = 0, bottomR = fat;
+                    for (int i = 0; i < 3; i++) {
+                        bottom += r[i] * fabs((double)local[i][2]);
+                        bottomR += (r[i] - fat) * fabs((double)local[i][2]);
+                    }
+                    placeOnFloor(world, local, yaw, x, y, bottom - 0.005, ftm);
+                    placeOnFloor(worldR, local, yaw, x, y, bottomR - 0.005, ftm);
+                    McdModelID mh = modelAt(hull, world), mb = modelAt(box, world);
+                    McdContact ch[4], cb[4], cp[4];
+                    int nh = intersect(mh, floor, ch, 4), nb = intersect(mb, floor, cb, 4);
+                    int np = intersect(mh, plane[yUp], cp, 4);
+                    assert_int_equal(np, plainCount[down]);
+                    assert_int_equal(nh, nb);
+                    double deepH = 1e9, deepP = 1e9;
+                    for (int i = 0; i < nh; i++) {
+                        /* the box primitive's contact at the same place, with the same normal and depth */
+                        double best = 1e9, on1[3];
+                        int match = 0;
+                        for (int k = 0; k < nb; k++)
+                            if (MeVector3Distance(ch[i].position, cb[k].position) < best)
+                                best = MeVector3Distance(ch[i].position, cb[k].position), match = k;
+                        worstBox = fmax(worstBox, best);
+                        worstBox = fmax(worstBox, fabs(ch[i].separation - cb[match].separation));
+                        for (int j = 0; j < 3; j++) {
+                            worstBox = fmax(worstBox, fabs(ch[i].normal[j] - cb[match].normal[j]));
+                            worstNormal = fmax(worstNormal, fabs(ch[i].normal[j] - ftm[2][j]));
+                            on1[j] = ch[i].position[j] + 0.5 * ch[i].separation * ch[i].normal[j];
+                        }
+                        worstSurface = fmax(worstSurface, fabs(test_sdf_world(&shape, world, on1)));
+                        deepH = fmin(deepH, ch[i].separation);
+                    }
+                    for (int i = 0; i < np; i++) {
+                        double best = 1e9;
+                        deepP = fmin(deepP, cp[i].separation);
+                        for (int k = 0; k < nh; k++)
+                            best = fmin(best, MeVector3Distance(cp[i].position, ch[k].position));
+                        worstCorner = fmax(worstCorner, best);
+                    }
+                    assert_true(nh >= np);
+                    worstPlane = fmax(worstPlane, fabs(deepH - deepP));
+                    assert_near(deepH, -0.005, ME_TOL(1e-9, 2e-5));
+                    /* the rounded hull: the plane's depth and normal, a face down on three points or more */
+                    McdModelID mr = modelAt(rounded, worldR);
+                    McdContact cr[4], crp[4];
+                    int nr = intersect(mr, floor, cr, 4), nrp = intersect(mr, plane[yUp], crp, 4);
+                    assert_true(nr >= 1 && nrp >= 1);
+                    if (nrp >= 3)
+                        assert_true(nr >= 3);
+                    double deepR = 1e9, deepRP = 1e9;
+                    for (int i = 0; i < nr; i++) {
+                        deepR = fmin(deepR, cr[i].separation);
+                        for (int j = 0; j < 3; j++)
+                            worstRounded = fmax(worstRounded, fabs(cr[i].normal[j] - ftm[2][j]));
+                    }
+                    for (int i = 0; i < nrp; i++)
+                        deepRP = fmin(deepRP, crp[i].separation);
+                    worstRounded = fmax(worstRounded, fabs(deepR - deepRP));
+                    assert_near(deepR, -0.005, ME_TOL(1e-9, 2e-5));
+                    McdModelDestroy(mr);
+                    cases++;
+                    McdModelDestroy(mh);
+                    McdModelDestroy(mb);
+                }
+                McdModelDestroy(floor);
+            }
+            printf("convex box %-6s down on the %-13s: %d rests: off the box primitive's contacts by %.1e, normal "
+                   "off by %.1e, depth off the plane's by %.1e, plane's contacts matched to %.1e m, points on the "
+                   "box to %.1e m; rounded hull off the plane's normal and depth by %.1e\n",
+                   poseNames[down], floorNames[kind], cases, worstBox, worstNormal, worstPlane, worstCorner,
+                   worstSurface, worstRounded);
+            assert_true(worstBox < ME_TOL(1e-6, 1e-4));
+            assert_true(worstNormal < ME_TOL(1e-9, 1e-5));
+            assert_true(worstPlane < ME_TOL(1e-9, 1e-5));
+            assert_true(worstCorner < ME_TOL(1e-6, 1e-4));
+            assert_true(worstSurface < ME_TOL(1e-9, 1e-5));
+            assert_true(worstRounded < ME_TOL(1e-9, 1e-5));
+        }
+        if (floorGeo != mesh)
+            McdGeometryDestroy(floorGeo);
+        McdGeometryDestroy(mesh);
     }
     McdTerm(fw);
 }
@@ -1023,8 +1209,10 @@ int main(void)
         cmocka_unit_test(adjacency_marks_internal_edges),
         cmocka_unit_test(sphere_face_edge_vertex),
         cmocka_unit_test(box_face_edge_vertex),
+        cmocka_unit_test(convex_box_face_edge_vertex),
         cmocka_unit_test(random_poses_one_triangle),
         cmocka_unit_test(rests_as_on_a_plane),
+        cmocka_unit_test(convex_hull_rests_as_the_box),
         cmocka_unit_test(segments_first_hit),
         cmocka_unit_test(triangle_list_flags),
         cmocka_unit_test(height_field_valley_and_ridge),

@@ -1,10 +1,12 @@
-/* Internal edges do not snag: a box sliding and a sphere rolling across a flat tessellated floor (a
- * jittered triangle mesh, a height field, a triangle list with Karma's edge flags) move as on a
- * plane. Each run goes through the whole pipeline (MstUniverse: space, nearfield, bridge, Kea) and is
- * compared step by step with the same run on McdPlane, z-up and y-up:
+/* Internal edges do not snag: a box and a convex box hull sliding and a sphere rolling across a flat
+ * tessellated floor (a jittered triangle mesh, a height field, a triangle list with Karma's edge
+ * flags) move as on a plane. Each run goes through the whole pipeline (MstUniverse: space,
+ * nearfield, bridge, Kea) and is compared step by step with the same run on McdPlane, z-up and y-up:
  *  - the box (0.4 m cube, mu 0.3) slides at 3.2 m/s across ~40 internal edges until friction stops
  *    it: its path stays within 0.1 mm of the plane run's, its height within 0.1 mm of it, its
  *    angular velocity below 0.01 rad/s (a snag tips it);
+ *  - the convex hull of the same box's corners slides the same way, compared with its own run on the
+ *    plane (convex-plane) within the same 0.1 mm;
  *  - the sphere (r 0.25 m) rolls at 2 m/s for 2 s: within 0.1 mm of the plane run, its height within
  *    0.1 mm, and it keeps rolling (speed within 0.1 %). */
 #include "karma_test.h"
@@ -17,6 +19,8 @@
 #define G 9.81
 
 enum { PLANE, MESH, FIELD, LIST, KINDS };
+enum { BOX, SPHERE, HULL };
+static const char *const bodyNames[3] = {"box sliding", "sphere rolling", "convex box sliding"};
 static const char *const kindNames[KINDS] = {"plane", "mesh", "height field", "triangle list"};
 
 typedef struct Run {
@@ -41,8 +45,22 @@ static void toFloor(MeMatrix4 ftm, const MeReal *w, double out[3])
         out[k] = (double)w[0] * ftm[k][0] + (double)w[1] * ftm[k][1] + (double)w[2] * ftm[k][2];
 }
 
-static void simulate(int kind, int sphere, int yUp, Run *run)
+/* The body: a 0.4 m cube, a 0.25 m sphere or the convex hull of the cube's corners. */
+static McdGeometryID bodyGeometry(McdFrameworkID fw, int body)
 {
+    MeVector3 c[8];
+    if (body == SPHERE)
+        return McdSphereCreate(fw, ME_R(0.25));
+    if (body == BOX)
+        return McdBoxCreate(fw, ME_R(0.4), ME_R(0.4), ME_R(0.4));
+    for (int k = 0; k < 8; k++)
+        MeVector3Set(c[k], k & 1 ? ME_R(0.2) : -ME_R(0.2), k & 2 ? ME_R(0.2) : -ME_R(0.2), k & 4 ? ME_R(0.2) : -ME_R(0.2));
+    return McdConvexMeshCreateHull(fw, (const MeVector3 *)c, 8, 0);
+}
+
+static void simulate(int kind, int shape, int yUp, Run *run)
+{
+    const int sphere = shape == SPHERE;
     static MeMatrix4 ftm; /* outlives the fixed model */
     MstUniverseSizes sizes = MstUniverseDefaultSizes;
     sizes.massScale = 60;
@@ -69,8 +87,7 @@ static void simulate(int kind, int sphere, int yUp, Run *run)
     MdtContactParamsSetFrictionModel(p, MdtFrictionModelNormalForce);
     MdtContactParamsSetFrictionCoeffecient(p, ME_R(0.3));
     const double r = sphere ? 0.25 : 0.2;
-    McdModelID m = MstModelAndBodyCreate(u, sphere ? McdSphereCreate(fw, (MeReal)r) : McdBoxCreate(fw, ME_R(0.4), ME_R(0.4), ME_R(0.4)),
-                                         1000);
+    McdModelID m = MstModelAndBodyCreate(u, bodyGeometry(fw, shape), 1000);
     assert_non_null(m);
     MdtBodyID body = McdModelGetBody(m);
     /* start on the floor at (-2.5, -0.7), moving along (3, 1) (box) or (2, 0.5) (sphere), in floor axes */
@@ -108,22 +125,23 @@ static void simulate(int kind, int sphere, int yUp, Run *run)
     MstUniverseDestroy(u);
 }
 
-static void compare(int sphere)
+static void compare(int shape)
 {
+    const int sphere = shape == SPHERE;
     for (int yUp = 0; yUp < 2; yUp++) {
         Run ref, run;
-        simulate(PLANE, sphere, yUp, &ref);
+        simulate(PLANE, shape, yUp, &ref);
         double travelled = hypot(ref.pos[ref.steps - 1][0] - ref.pos[0][0], ref.pos[ref.steps - 1][1] - ref.pos[0][1]);
         assert_true(travelled > (sphere ? 3.5 : 1.4));
         for (int kind = MESH; kind < KINDS; kind++) {
-            simulate(kind, sphere, yUp, &run);
+            simulate(kind, shape, yUp, &run);
             double worst = 0;
             for (int s = 0; s < run.steps; s++)
                 for (int k = 0; k < 3; k++)
                     worst = fmax(worst, fabs(run.pos[s][k] - ref.pos[s][k]));
             printf("%s %s (%s): path off the plane run's by %.2e m over %.2f m, height %+.2e..%+.2e m (plane "
                    "%+.2e..%+.2e), %s %.4f (plane %.4f)\n",
-                   sphere ? "sphere rolling" : "box sliding", kindNames[kind], yUp ? "y-up" : "z-up", worst, travelled,
+                   bodyNames[shape], kindNames[kind], yUp ? "y-up" : "z-up", worst, travelled,
                    run.minLift, run.maxLift, ref.minLift, ref.maxLift, sphere ? "final speed" : "max |w|", run.maxW,
                    ref.maxW);
             assert_true(worst < 1e-4);
@@ -140,19 +158,26 @@ static void compare(int sphere)
 static void box_slides_as_on_a_plane(void **state)
 {
     (void)state;
-    compare(0);
+    compare(BOX);
+}
+
+static void convex_box_slides_as_on_a_plane(void **state)
+{
+    (void)state;
+    compare(HULL);
 }
 
 static void sphere_rolls_as_on_a_plane(void **state)
 {
     (void)state;
-    compare(1);
+    compare(SPHERE);
 }
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(box_slides_as_on_a_plane),
+        cmocka_unit_test(convex_box_slides_as_on_a_plane),
         cmocka_unit_test(sphere_rolls_as_on_a_plane),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

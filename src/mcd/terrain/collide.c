@@ -1,5 +1,5 @@
-/* collide.c -- a convex primitive against the triangles of a terrain (triangle list, mesh, height
- * field): one triangle at a time through the nearfield's GJK/EPA and clipped manifold, with the
+/* collide.c -- a convex primitive or a convex mesh against the triangles of a terrain (triangle
+ * list, mesh, height field): one triangle at a time through the nearfield's GJK/EPA and clipped manifold, with the
  * internal edges suppressed, then the deepest and best spread four of all (internal).
  *
  * Everything runs in the terrain's frame (the convex is placed there), so a small body on a large
@@ -435,25 +435,29 @@ MeBool McdTerrainSegment(const McdGeometryData *g, const MeVector3 p0, const MeV
     return METRUE;
 }
 
-/* Every convex primitive against each static triangle geometry; the terrain is geometry 2. Kept out
- * of the primitives' table (nearfield/table.c), whose entries the primitive tests and benchmarks run
- * on geometries of their own making. */
+/* Every convex primitive and the convex mesh against each static triangle geometry; the terrain is
+ * geometry 2 (normals from it towards the convex, decision K29). Kept out of the primitives' table
+ * (nearfield/table.c), whose entries the primitive tests and benchmarks run on geometries of their
+ * own making. */
 static const McdNfPairEntry terrainPairs[] = {
     {kMcdGeometryTypeSphere, kMcdGeometryTypeTriangleList, McdNfConvexTerrain, "sphere-trianglelist"},
     {kMcdGeometryTypeBox, kMcdGeometryTypeTriangleList, McdNfConvexTerrain, "box-trianglelist"},
     {kMcdGeometryTypeCylinder, kMcdGeometryTypeTriangleList, McdNfConvexTerrain, "cylinder-trianglelist"},
     {kMcdGeometryTypeSphyl, kMcdGeometryTypeTriangleList, McdNfConvexTerrain, "sphyl-trianglelist"},
     {kMcdGeometryTypeCone, kMcdGeometryTypeTriangleList, McdNfConvexTerrain, "cone-trianglelist"},
+    {kMcdGeometryTypeConvexMesh, kMcdGeometryTypeTriangleList, McdNfConvexTerrain, "convex-trianglelist"},
     {kMcdGeometryTypeSphere, kMcdGeometryTypeTriangleMesh, McdNfConvexTerrain, "sphere-trianglemesh"},
     {kMcdGeometryTypeBox, kMcdGeometryTypeTriangleMesh, McdNfConvexTerrain, "box-trianglemesh"},
     {kMcdGeometryTypeCylinder, kMcdGeometryTypeTriangleMesh, McdNfConvexTerrain, "cylinder-trianglemesh"},
     {kMcdGeometryTypeSphyl, kMcdGeometryTypeTriangleMesh, McdNfConvexTerrain, "sphyl-trianglemesh"},
     {kMcdGeometryTypeCone, kMcdGeometryTypeTriangleMesh, McdNfConvexTerrain, "cone-trianglemesh"},
+    {kMcdGeometryTypeConvexMesh, kMcdGeometryTypeTriangleMesh, McdNfConvexTerrain, "convex-trianglemesh"},
     {kMcdGeometryTypeSphere, kMcdGeometryTypeRGHeightField, McdNfConvexTerrain, "sphere-heightfield"},
     {kMcdGeometryTypeBox, kMcdGeometryTypeRGHeightField, McdNfConvexTerrain, "box-heightfield"},
     {kMcdGeometryTypeCylinder, kMcdGeometryTypeRGHeightField, McdNfConvexTerrain, "cylinder-heightfield"},
     {kMcdGeometryTypeSphyl, kMcdGeometryTypeRGHeightField, McdNfConvexTerrain, "sphyl-heightfield"},
     {kMcdGeometryTypeCone, kMcdGeometryTypeRGHeightField, McdNfConvexTerrain, "cone-heightfield"},
+    {kMcdGeometryTypeConvexMesh, kMcdGeometryTypeRGHeightField, McdNfConvexTerrain, "convex-heightfield"},
 };
 
 const McdNfPairEntry *McdTerrainPairTable(int *count)
