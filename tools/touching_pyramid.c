@@ -1,12 +1,19 @@
 /* touching_pyramid -- a 2-D pyramid of unit boxes whose neighbours in a row touch (no gaps), through
- * MstUniverse at world defaults, y up, 1/60 s steps, μ = 0.6: prints per step the largest body speed
- * and the solver's residual, sweeps and unconverged partitions (issue 17 point 1).
+ * MstUniverse at world defaults, y up, 1/60 s steps, mu = 0.6, auto-disable off: prints per step the
+ * largest body speed and the solver's residual, sweeps and unconverged partitions (issue 17 point 1;
+ * the diagnosis is in docs/kea_log.md, "Touching stacks").
  *
  *   touching_pyramid [rows [steps [gap]]]     defaults 40 rows (820 boxes), 600 steps, gap 0 m
+ *
+ * Environment: TOUCHING_PYRAMID_QUIET=1 prints only the summary; TOUCHING_PYRAMID_ITERS=n sets the
+ * world's sweep cap (MdtWorldSetMaxLCPIterations); TOUCHING_PYRAMID_BODY=i prints body i's state each
+ * step and, from step 18 on, its contacts; TOUCHING_PYRAMID_ROWS=1 prints per row, at the end, the
+ * largest |x| and |vx| (x is out of the pyramid's plane).
  *
  * Exits 1 when a body ever exceeds 0.5 m/s, so a script can use it as a check. */
 #include <karma/karma.h>
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -112,6 +119,21 @@ int main(int argc, char **argv)
         if (!(top <= worst)) {
             worst = top;
             worstStep = s;
+        }
+    }
+    if (getenv("TOUCHING_PYRAMID_ROWS")) { /* per row: largest |x| (out of the pyramid's plane) and |vx| */
+        int first = 0;
+        for (int r = 0; r < rows; r++) {
+            double mx = 0, mv = 0;
+            for (int i = first; i < first + rows - r; i++) {
+                MeVector3 x, v;
+                MdtBodyGetPosition(bodies[i], x);
+                MdtBodyGetLinearVelocity(bodies[i], v);
+                mx = fabs((double)x[0]) > mx ? fabs((double)x[0]) : mx;
+                mv = fabs((double)v[0]) > mv ? fabs((double)v[0]) : mv;
+            }
+            printf("  row %2d |x| %.4f |vx| %.4f\n", r, mx, mv);
+            first += rows - r;
         }
     }
     printf("rows %d boxes %d gap %g m: largest body speed %.5f m/s at step %d\n", rows, count, gap, worst,

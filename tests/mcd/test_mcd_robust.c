@@ -221,16 +221,21 @@ static void reduction_survives_nan(void **state)
     }
 }
 
+/* The geometry data of a cube of half extent h, for the near-field tests called directly. */
+static void cubeData(McdGeometryData *g, MeReal h)
+{
+    memset(g, 0, sizeof *g);
+    g->type = kMcdGeometryTypeBox;
+    MeVector3Set(g->u.box.radii, h, h, h);
+}
+
 /* Box-box with arithmetic that degenerates (a NaN axis): no contact, counted, no index -1. */
 static void box_box_degenerate_axes_fall_back(void **state)
 {
     (void)state;
     McdGeometryData a, b;
-    memset(&a, 0, sizeof a);
-    memset(&b, 0, sizeof b);
-    a.type = b.type = kMcdGeometryTypeBox;
-    MeVector3Set(a.u.box.radii, 1, 1, 1);
-    MeVector3Set(b.u.box.radii, 1, 1, 1);
+    cubeData(&a, 1);
+    cubeData(&b, 1);
     MeMatrix4 t1, t2;
     MeMatrix4TMMakeIdentity(t1);
     MeMatrix4TMMakeIdentity(t2);
@@ -244,16 +249,13 @@ static void box_box_degenerate_axes_fall_back(void **state)
 /* Side-by-side unit boxes of a touching pyramid, apart by a fraction of a millimetre and turned by a
  * few milliradians: a separating axis proves them apart, so no contact may claim an overlap, and each
  * normal is the faces' (issue 17: the general path gave 0.63 m of depth along a wrong normal between
- * such boxes, and a 5.5 m/s kick). The first placement is the one the 820-box pyramid met. */
+ * such boxes, and a 4.6 m/s kick). The first placement is the one the 820-box pyramid met. */
 static void nearly_touching_faces_claim_no_overlap(void **state)
 {
     (void)state;
     McdGeometryData a, b;
-    memset(&a, 0, sizeof a);
-    memset(&b, 0, sizeof b);
-    a.type = b.type = kMcdGeometryTypeBox;
-    MeVector3Set(a.u.box.radii, ME_R(0.5), ME_R(0.5), ME_R(0.5));
-    MeVector3Set(b.u.box.radii, ME_R(0.5), ME_R(0.5), ME_R(0.5));
+    cubeData(&a, ME_R(0.5));
+    cubeData(&b, ME_R(0.5));
     MeMatrix4 met1 = {{(MeReal)0x1.ffffd8p-1, (MeReal)0x1.57c7fep-10, (MeReal)-0x1.ad613p-11, 0},
                       {(MeReal)-0x1.57cd32p-10, (MeReal)0x1.ffffe2p-1, (MeReal)-0x1.8a9728p-14, 0},
                       {(MeReal)0x1.ad5088p-11, (MeReal)0x1.8f1854p-14, (MeReal)0x1.fffff4p-1, 0},
