@@ -1,5 +1,5 @@
 /* touching_pyramid -- a 2-D pyramid of unit boxes whose neighbours in a row touch (no gaps), through
- * MstUniverse at world defaults, y up, 1/60 s steps, mu = 0.6, auto-disable off: prints per step the
+ * MstUniverse at world defaults, y up, 1/60 s steps, mu = 0.6, auto-disable off unless asked: prints per step the
  * largest body speed and the solver's residual, sweeps and unconverged partitions (issue 17 point 1;
  * the diagnosis is in docs/kea_log.md, "Touching stacks").
  *
@@ -8,7 +8,8 @@
  * Environment: TOUCHING_PYRAMID_QUIET=1 prints only the summary; TOUCHING_PYRAMID_ITERS=n sets the
  * world's sweep cap (MdtWorldSetMaxLCPIterations); TOUCHING_PYRAMID_BODY=i prints body i's state each
  * step and, from step 18 on, its contacts; TOUCHING_PYRAMID_ROWS=1 prints per row, at the end, the
- * largest |x| and |vx| (x is out of the pyramid's plane).
+ * largest |x| and |vx| (x is out of the pyramid's plane); TOUCHING_PYRAMID_SLEEP=1 keeps the world's
+ * auto-disable (sleeping) on.
  *
  * Exits 1 when a body ever exceeds 0.5 m/s, so a script can use it as a check. */
 #include <karma/karma.h>
@@ -38,7 +39,8 @@ int main(int argc, char **argv)
         return 2;
     MdtWorldID w = MstUniverseGetWorld(u);
     MdtWorldSetGravity(w, 0, ME_R(-9.81), 0);
-    MdtWorldSetAutoDisable(w, MEFALSE);
+    if (!getenv("TOUCHING_PYRAMID_SLEEP")) /* awake unless asked: the world's default is to sleep */
+        MdtWorldSetAutoDisable(w, MEFALSE);
     if (getenv("TOUCHING_PYRAMID_ITERS"))
         MdtWorldSetMaxLCPIterations(w, atoi(getenv("TOUCHING_PYRAMID_ITERS")));
     MdtContactParamsID p = MstBridgeGetContactParams(MstUniverseGetBridge(u), 0, 0);
