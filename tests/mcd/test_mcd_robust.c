@@ -221,16 +221,21 @@ static void reduction_survives_nan(void **state)
     }
 }
 
+/* The geometry data of a cube of half extent h, for the near-field tests called directly. */
+static void cubeData(McdGeometryData *g, MeReal h)
+{
+    memset(g, 0, sizeof *g);
+    g->type = kMcdGeometryTypeBox;
+    MeVector3Set(g->u.box.radii, h, h, h);
+}
+
 /* Box-box with arithmetic that degenerates (a NaN axis): no contact, counted, no index -1. */
 static void box_box_degenerate_axes_fall_back(void **state)
 {
     (void)state;
     McdGeometryData a, b;
-    memset(&a, 0, sizeof a);
-    memset(&b, 0, sizeof b);
-    a.type = b.type = kMcdGeometryTypeBox;
-    MeVector3Set(a.u.box.radii, 1, 1, 1);
-    MeVector3Set(b.u.box.radii, 1, 1, 1);
+    cubeData(&a, 1);
+    cubeData(&b, 1);
     MeMatrix4 t1, t2;
     MeMatrix4TMMakeIdentity(t1);
     MeMatrix4TMMakeIdentity(t2);
@@ -239,6 +244,58 @@ static void box_box_degenerate_axes_fall_back(void **state)
     unsigned long before = McdNfFallbackCount();
     assert_int_equal(McdNfBoxBox(&a, t1, &b, t2, ME_R(0.01), c, 4, NULL), 0);
     assert_true(McdNfFallbackCount() > before);
+}
+
+/* Side-by-side unit boxes of a touching pyramid, apart by a fraction of a millimetre and turned by a
+ * few milliradians: a separating axis proves them apart, so no contact may claim an overlap, and each
+ * normal is the faces' (issue 17: the general path gave 0.63 m of depth along a wrong normal between
+ * such boxes, and a 4.6 m/s kick). The first placement is the one the 820-box pyramid met. */
+static void nearly_touching_faces_claim_no_overlap(void **state)
+{
+    (void)state;
+    McdGeometryData a, b;
+    cubeData(&a, ME_R(0.5));
+    cubeData(&b, ME_R(0.5));
+    MeMatrix4 met1 = {{(MeReal)0x1.ffffd8p-1, (MeReal)0x1.57c7fep-10, (MeReal)-0x1.ad613p-11, 0},
+                      {(MeReal)-0x1.57cd32p-10, (MeReal)0x1.ffffe2p-1, (MeReal)-0x1.8a9728p-14, 0},
+                      {(MeReal)0x1.ad5088p-11, (MeReal)0x1.8f1854p-14, (MeReal)0x1.fffff4p-1, 0},
+                      {(MeReal)-0x1.42af72p-11, (MeReal)0x1.03df16p+5, (MeReal)0x1.7bdf22p+0, 1}};
+    MeMatrix4 met2 = {{(MeReal)0x1.ffffe4p-1, (MeReal)0x1.14a2fap-11, (MeReal)-0x1.36bb6cp-10, 0},
+                      {(MeReal)-0x1.14706ep-11, (MeReal)0x1.fffffap-1, (MeReal)0x1.4d78f2p-12, 0},
+                      {(MeReal)0x1.36c6acp-10, (MeReal)-0x1.4cd11ap-12, (MeReal)0x1.ffffe6p-1, 0},
+                      {(MeReal)-0x1.93bff8p-13, (MeReal)0x1.03e07ap+5, (MeReal)0x1.3dfd3ep+1, 1}};
+    unsigned seed = 4242;
+    int checked = 0;
+    for (int trial = 0; trial < 400; trial++) {
+        MeMatrix4 t1, t2;
+        if (trial == 0) {
+            memcpy(t1, met1, sizeof t1);
+            memcpy(t2, met2, sizeof t2);
+        } else {
+            double g = 0.0035 + 0.0013 * (double)((seed = seed * 1103515245u + 12345u) >> 16 & 0x7fff) / 32768.0;
+            /* gap g: the turns bring each face's corners closer by up to 0.5 * 2e-3 * sqrt(3) */
+            double tilt[2][3];
+            for (int k = 0; k < 6; k++)
+                tilt[k / 3][k % 3] = 2e-3 * ((double)((seed = seed * 1103515245u + 12345u) >> 16 & 0x7fff) / 16384.0 - 1);
+            for (int k = 0; k < 2; k++) {
+                double l = sqrt(tilt[k][0] * tilt[k][0] + tilt[k][1] * tilt[k][1] + tilt[k][2] * tilt[k][2]) + 1e-12;
+                ref_tm_axis_angle(k ? t2 : t1, tilt[k][0] / l, tilt[k][1] / l, tilt[k][2] / l, l, 0, 32.5,
+                                  k ? 2.5 + 0.5 * g : 1.5 - 0.5 * g);
+            }
+        }
+        McdContact c[4];
+        int n = McdNfBoxBox(&a, t1, &b, t2, ME_R(0.005), c, 4, NULL);
+        for (int k = 0; k < n; k++) {
+            if (!(c[k].separation >= -ME_R(1e-4)))
+                fail_msg("trial %d: contact %d claims an overlap of %g between boxes apart", trial, k,
+                         -(double)c[k].separation);
+            if (!(MeFabs(c[k].normal[2]) > ME_R(0.99)))
+                fail_msg("trial %d: contact %d normal (%g, %g, %g), not the faces'", trial, k,
+                         (double)c[k].normal[0], (double)c[k].normal[1], (double)c[k].normal[2]);
+            checked++;
+        }
+    }
+    assert_true(checked > 0);
 }
 
 /* The fuzzer's thin box (2.5e-6 x 1.7e-3 x 2.2e5 half extents, an aspect ratio of 1e11) through a
@@ -451,6 +508,7 @@ int main(void)
         cmocka_unit_test(degenerate_segment_hit_is_a_counted_miss),
         cmocka_unit_test(reduction_survives_nan),
         cmocka_unit_test(box_box_degenerate_axes_fall_back),
+        cmocka_unit_test(nearly_touching_faces_claim_no_overlap),
         cmocka_unit_test(invalid_contacts_are_dropped_and_counted),
         cmocka_unit_test(implausible_contacts_are_dropped),
         cmocka_unit_test(identical_orientations_overlap_with_their_depth),

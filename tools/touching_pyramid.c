@@ -1,0 +1,146 @@
+/* touching_pyramid -- a 2-D pyramid of unit boxes whose neighbours in a row touch (no gaps), through
+ * MstUniverse at world defaults, y up, 1/60 s steps, mu = 0.6, auto-disable off unless asked: prints per step the
+ * largest body speed and the solver's residual, sweeps and unconverged partitions (issue 17 point 1;
+ * the diagnosis is in docs/kea_log.md, "Touching stacks").
+ *
+ *   touching_pyramid [rows [steps [gap]]]     defaults 40 rows (820 boxes), 600 steps, gap 0 m
+ *
+ * Environment: TOUCHING_PYRAMID_QUIET=1 prints only the summary; TOUCHING_PYRAMID_ITERS=n sets the
+ * world's sweep cap (MdtWorldSetMaxLCPIterations); TOUCHING_PYRAMID_BODY=i prints body i's state each
+ * step and, from step 18 on, its contacts; TOUCHING_PYRAMID_ROWS=1 prints per row, at the end, the
+ * largest |x| and |vx| (x is out of the pyramid's plane); TOUCHING_PYRAMID_SLEEP=1 keeps the world's
+ * auto-disable (sleeping) on.
+ *
+ * Exits 1 when a body ever exceeds 0.5 m/s, so a script can use it as a check. */
+#include <karma/karma.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+int main(int argc, char **argv)
+{
+    int rows = argc > 1 ? atoi(argv[1]) : 40;
+    int steps = argc > 2 ? atoi(argv[2]) : 600;
+    double gap = argc > 3 ? atof(argv[3]) : 0;
+    const char *quiet = getenv("TOUCHING_PYRAMID_QUIET");
+    if (rows < 1 || rows > 200 || steps < 1) {
+        fprintf(stderr, "usage: touching_pyramid [rows (1..200) [steps [gap m]]]\n");
+        return 2;
+    }
+    int count = rows * (rows + 1) / 2;
+    MstUniverseSizes sizes = MstUniverseDefaultSizes;
+    sizes.dynamicBodiesMaxCount = count;
+    sizes.collisionModelsMaxCount = count + 1;
+    sizes.collisionPairsMaxCount = 10 * count + 256;
+    sizes.dynamicConstraintsMaxCount = 30 * count + 256;
+    MstUniverseID u = MstUniverseCreate(&sizes);
+    if (!u)
+        return 2;
+    MdtWorldID w = MstUniverseGetWorld(u);
+    MdtWorldSetGravity(w, 0, ME_R(-9.81), 0);
+    if (!getenv("TOUCHING_PYRAMID_SLEEP")) /* awake unless asked: the world's default is to sleep */
+        MdtWorldSetAutoDisable(w, MEFALSE);
+    if (getenv("TOUCHING_PYRAMID_ITERS"))
+        MdtWorldSetMaxLCPIterations(w, atoi(getenv("TOUCHING_PYRAMID_ITERS")));
+    MdtContactParamsID p = MstBridgeGetContactParams(MstUniverseGetBridge(u), 0, 0);
+    MdtContactParamsSetType(p, MdtContactTypeFriction2D);
+    MdtContactParamsSetFrictionModel(p, MdtFrictionModelNormalForce);
+    MdtContactParamsSetFrictionCoeffecient(p, ME_R(0.6));
+    MdtContactParamsSetRestitution(p, 0);
+    McdFrameworkID fw = MstUniverseGetFramework(u);
+    /* Karma's plane is z <= 0 of its frame: turned so that its +z is world +y */
+    static MeMatrix4 ground = {{1, 0, 0, 0}, {0, 0, -1, 0}, {0, 1, 0, 0}, {0, 0, 0, 1}};
+    if (!MstFixedModelCreate(u, McdPlaneCreate(fw), ground))
+        return 2;
+    McdGeometryID box = McdBoxCreate(fw, 1, 1, 1);
+    MdtBodyID *bodies = calloc((size_t)count, sizeof *bodies);
+    if (!box || !bodies)
+        return 2;
+    int k = 0;
+    double pitch = 1 + gap;
+    for (int r = 0; r < rows; r++) {
+        int n = rows - r;
+        for (int i = 0; i < n; i++) {
+            McdModelID m = MstModelAndBodyCreate(u, box, 1); /* 1 kg/m³: 1 kg unit boxes */
+            if (!m)
+                return 2;
+            bodies[k] = McdModelGetBody(m);
+            MdtBodySetPosition(bodies[k], 0, ME_R(0.5) + (MeReal)r, (MeReal)((i - 0.5 * (n - 1)) * pitch));
+            k++;
+        }
+    }
+    double worst = 0;
+    int worstStep = -1;
+    for (int s = 1; s <= steps; s++) {
+        MstUniverseStep(u, ME_R(1.0) / 60);
+        double top = 0;
+        int fastest = -1;
+        for (int i = 0; i < count; i++) {
+            MeVector3 v;
+            MdtBodyGetLinearVelocity(bodies[i], v);
+            double sp = MeVector3Magnitude(v);
+            if (!(sp <= top)) {
+                top = sp;
+                fastest = i;
+            }
+        }
+        if (getenv("TOUCHING_PYRAMID_BODY")) {
+            int b = atoi(getenv("TOUCHING_PYRAMID_BODY"));
+            MeVector3 v, x, om;
+            MdtBodyGetLinearVelocity(bodies[b], v);
+            MdtBodyGetAngularVelocity(bodies[b], om);
+            MdtBodyGetPosition(bodies[b], x);
+            printf("  body %d x %.4f %.4f %.4f v %.4f %.4f %.4f w %.4f %.4f %.4f\n", b, (double)x[0], (double)x[1], (double)x[2], (double)v[0], (double)v[1],
+                   (double)v[2], (double)om[0], (double)om[1], (double)om[2]);
+        }
+        if (getenv("TOUCHING_PYRAMID_BODY") && s >= 18) {
+            MdtBodyID bb = bodies[atoi(getenv("TOUCHING_PYRAMID_BODY"))];
+            for (MdtConstraintID c = MdtBodyGetFirstConstraint(bb); c; c = MdtBodyGetNextConstraint(bb, c)) {
+                MdtContactGroupID g = MdtConstraintDCastContactGroup(c);
+                if (!g)
+                    continue;
+                for (MdtContactID ct = MdtContactGroupGetFirstContact(g); ct; ct = MdtContactGroupGetNextContact(g, ct)) {
+                    MeVector3 cp, cn, f;
+                    MdtContactGetPosition(ct, cp);
+                    MdtContactGetNormal(ct, cn);
+                    MdtConstraintGetForce(c, 0, f);
+                    printf("    contact p %.3f %.3f %.3f n %.3f %.3f %.3f pen %.4f fn %.3f\n", (double)cp[0], (double)cp[1],
+                           (double)cp[2], (double)cn[0], (double)cn[1], (double)cn[2],
+                           (double)MdtContactGetPenetration(ct), (double)MdtContactGetNormalForce(ct));
+                }
+            }
+        }
+        MdtSolverStats st;
+        MdtWorldGetSolverStats(w, &st);
+        if (!quiet)
+            printf("step %4d  t %6.3f s  max speed %9.5f m/s (body %d)  residual %9.3g m/s  sweeps %d  "
+                   "partitions %d (iterative %d, unconverged %d)  rows %d\n",
+                   s, s / 60.0, top, fastest, (double)st.maxResidual, st.iterations, st.partitions,
+                   st.iterativePartitions, st.unconverged, st.rows);
+        if (!(top <= worst)) {
+            worst = top;
+            worstStep = s;
+        }
+    }
+    if (getenv("TOUCHING_PYRAMID_ROWS")) { /* per row: largest |x| (out of the pyramid's plane) and |vx| */
+        int first = 0;
+        for (int r = 0; r < rows; r++) {
+            double mx = 0, mv = 0;
+            for (int i = first; i < first + rows - r; i++) {
+                MeVector3 x, v;
+                MdtBodyGetPosition(bodies[i], x);
+                MdtBodyGetLinearVelocity(bodies[i], v);
+                mx = fabs((double)x[0]) > mx ? fabs((double)x[0]) : mx;
+                mv = fabs((double)v[0]) > mv ? fabs((double)v[0]) : mv;
+            }
+            printf("  row %2d |x| %.4f |vx| %.4f\n", r, mx, mv);
+            first += rows - r;
+        }
+    }
+    printf("rows %d boxes %d gap %g m: largest body speed %.5f m/s at step %d\n", rows, count, gap, worst,
+           worstStep);
+    free(bodies);
+    MstUniverseDestroy(u);
+    return worst > 0.5 ? 1 : 0;
+}
