@@ -107,11 +107,12 @@ static int KeaProblemIsValid(const KeaProblem *p)
     if (p->link && !p->mu)
         return 0;
     for (b = 0; b < p->nBodies; ++b) {
-        if (!(p->bodies[b].invMass >= ME_R(0.0)) || !KeaIsFinite(p->bodies[b].invMass))
-            return 0;
+        const KeaBody *body = &p->bodies[b];
+        int ok = (body->invMass >= ME_R(0.0)) & KeaIsFiniteFlag(body->invMass);
         for (k = 0; k < 9; ++k)
-            if (!KeaIsFinite(p->bodies[b].invInertia[k / 3][k % 3]))
-                return 0;
+            ok &= KeaIsFiniteFlag(body->invInertia[k / 3][k % 3]);
+        if (!ok)
+            return 0;
     }
     for (i = 0; i < p->nRows; ++i) {
         const KeaJacobianRow *J = &p->J[i];
@@ -127,7 +128,7 @@ static int KeaProblemIsValid(const KeaProblem *p)
             return 0;
         if (p->link && p->link[i] >= 0) {
             const int l = p->link[i];
-            if (l >= p->nRows || l == i || (p->link[l] >= 0) || !(p->mu[i] >= ME_R(0.0)) || !KeaIsFinite(p->mu[i]))
+            if (l >= p->nRows || l == i || (p->link[l] >= 0) || !((p->mu[i] >= ME_R(0.0)) & KeaIsFiniteFlag(p->mu[i])))
                 return 0;
         } else if (p->link && p->link[i] < -1) {
             return 0;
