@@ -197,6 +197,29 @@ static void inverse_mass_rows_match_the_scalar_ones(void **state)
     }
 }
 
+/* KeaLanesFinite3x4 (KeaSolve's test of a Jacobian row) is |v| < MEINFINITY of each of the twelve
+ * components, whatever the pads hold: every special value in every place, the pads not numbers. */
+static void finite_lanes_are_the_scalar_test(void **state)
+{
+    const MeReal special[] = {ME_R(0.0), -ME_R(0.0), ME_R(1.0), -ME_R(3.5e3), MEINFINITY, -MEINFINITY,
+                              (MeReal)INFINITY, -(MeReal)INFINITY, (MeReal)NAN, ME_R(0.5) * MEINFINITY,
+                              -ME_R(0.5) * MEINFINITY};
+    const int nSpecial = (int)(sizeof special / sizeof special[0]);
+    MeReal v[4][4];
+    int place, value, k;
+    (void)state;
+    for (place = 0; place < 16; ++place)
+        for (value = 0; value < nSpecial; ++value) {
+            int expect = 1;
+            for (k = 0; k < 16; ++k) /* pads NaN: not read as numbers */
+                v[k / 4][k % 4] = k % 4 == 3 ? (MeReal)NAN : ME_R(0.5) * (MeReal)(k + 1);
+            v[place / 4][place % 4] = special[value];
+            if (place % 4 != 3)
+                expect = MeFabs(special[value]) < MEINFINITY;
+            assert_int_equal(KeaLanesFinite3x4(v[0], v[1], v[2], v[3]), expect);
+        }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -204,6 +227,7 @@ int main(void)
         cmocka_unit_test(dot_keeps_its_four_sums),
         cmocka_unit_test(clamp_is_the_middle_value),
         cmocka_unit_test(inverse_mass_rows_match_the_scalar_ones),
+        cmocka_unit_test(finite_lanes_are_the_scalar_test),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -145,6 +145,23 @@ static void bad_input_is_refused(void **state)
     assert_true(kt_solve(&t.p, &prm, x, NULL, &st) == KeaStatusOk);
     t.J[5].ang1[3] = ME_R(0.0);
     assert_true(kt_solve(&t.p, &prm, x, NULL, &st) == KeaStatusOk);
+    keep = t.bodies[1].invInertia[2][2];
+    t.bodies[1].invInertia[2][2] = (MeReal)NAN; /* every body's every number, the last one too */
+    assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusBadInput);
+    t.bodies[1].invInertia[2][2] = keep;
+    keep = t.bodies[1].invMass;
+    t.bodies[1].invMass = ME_R(-1.0);
+    assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusBadInput);
+    t.bodies[1].invMass = MEINFINITY;
+    assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusBadInput);
+    t.bodies[1].invMass = keep;
+    keep = t.mu[1];
+    t.mu[1] = (MeReal)NAN; /* a linked row's friction coefficient */
+    assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusBadInput);
+    t.mu[1] = ME_R(-0.5);
+    assert_int_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusBadInput);
+    t.mu[1] = keep;
+    assert_true(kt_solve(&t.p, &prm, x, NULL, &st) == KeaStatusOk);
     assert_int_equal(KeaSolve(&t.p, NULL, NULL, 0, x, NULL, &st), KeaStatusBadInput);
     kt_free(&t);
 }

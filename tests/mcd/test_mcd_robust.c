@@ -499,6 +499,38 @@ static void destroying_a_touching_model_is_quiet(void **state)
     MstUniverseDestroy(u);
 }
 
+/* McdNfAddPair drops a pair of points with a NaN or infinite component and counts it (unless its
+ * separation is +inf, beyond the tolerance), whatever the normal (a zero component included), and
+ * writes a finite one: every non-finite value in every component of either point. */
+static void contact_points_must_be_finite(void **state)
+{
+    const MeReal bad[] = {(MeReal)INFINITY, -(MeReal)INFINITY, (MeReal)NAN};
+    const MeVector3 normals[] = {{0, 0, 1}, {ME_R(0.6), 0, ME_R(0.8)}, {ME_R(0.6), ME_R(0.48), ME_R(0.64)}};
+    McdContact c[1];
+    int which, k, value, n;
+    (void)state;
+    for (n = 0; n < 3; ++n)
+        for (which = 0; which < 2; ++which)
+            for (k = 0; k < 3; ++k)
+                for (value = 0; value < 3; ++value) {
+                    MeVector3 on[2] = {{1, 2, ME_R(0.5)}, {1, 2, ME_R(0.6)}};
+                    unsigned long before = McdNfFallbackCount();
+                    MeVector3 d;
+                    on[which][k] = bad[value];
+                    MeVector3Subtract(d, on[0], on[1]);
+                    assert_int_equal(McdNfAddPair(c, 0, 1, on[0], on[1], normals[n], ME_R(0.01), 2), 0);
+                    /* counted, unless the separation is +inf: beyond the tolerance, simply no contact */
+                    assert_true(McdNfFallbackCount() ==
+                                before + (MeVector3Dot(d, normals[n]) == (MeReal)INFINITY ? 0u : 1u));
+                }
+    {
+        const MeVector3 a = {1, 2, ME_R(0.5)}, b = {1, 2, ME_R(0.6)};
+        assert_int_equal(McdNfAddPair(c, 0, 1, a, b, normals[0], ME_R(0.01), 2), 1);
+        assert_float_equal(c[0].separation, ME_R(-0.1), 1e-6);
+        assert_true(MeVector3IsValid(c[0].position));
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -514,6 +546,7 @@ int main(void)
         cmocka_unit_test(identical_orientations_overlap_with_their_depth),
         cmocka_unit_test(cylinder_cap_parallel_to_plane),
         cmocka_unit_test(destroying_a_touching_model_is_quiet),
+        cmocka_unit_test(contact_points_must_be_finite),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

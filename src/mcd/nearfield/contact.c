@@ -41,7 +41,9 @@ int McdNfAddPair(McdContact *contacts, int count, int maxContacts, const MeVecto
     MeReal sep;
     MeVector3Subtract(d, on1, on2); /* the normal points from surface 2 towards surface 1 */
     sep = MeVector3Dot(d, normal);
-    if (isnan(sep) || (sep <= tolerance && (!isfinite(sep) || !MeVector3IsValid(on1) || !MeVector3IsValid(on2)))) {
+    /* A NaN or infinite component of on1 or on2 makes a term of the dot product, and so sep, NaN or
+     * infinite: sep alone tells whether both points are finite. */
+    if (isnan(sep) || (sep <= tolerance && !isfinite(sep))) {
         McdNfCountFallback(); /* NaN or overflow: the contact is dropped */
         return 0;
     }

@@ -59,7 +59,7 @@ McdNearfieldFn McdNfFind(int type1, int type2, int *swapped)
 
 /* A bound on a built-in primitive's distance from its origin (0 for the plane, which has no size, and
  * for types this file does not know). */
-static MeReal reachOf(const McdGeometryData *g)
+static inline MeReal reachOf(const McdGeometryData *g)
 {
     switch (g->type) {
     case kMcdGeometryTypeSphere: return g->u.sphere.radius;

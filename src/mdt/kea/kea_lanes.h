@@ -30,6 +30,18 @@ static inline MeReal KeaLanesSum3(KeaLanes a)
     return _mm_cvtss_f32(_mm_add_ss(s01, _mm_movehl_ps(a, a)));
 }
 
+/** Whether lanes 0-2 of all four padded 3-vectors are numbers within +-MEINFINITY (|v| < MEINFINITY,
+ *  false for a NaN); the pads are not looked at. */
+static inline int KeaLanesFinite3x4(const MeReal *a, const MeReal *b, const MeReal *c, const MeReal *d)
+{
+    const __m128 sign = _mm_set1_ps(-0.0f), limit = _mm_set1_ps(MEINFINITY); /* |v|: the sign bit cleared */
+    const __m128 ab = _mm_and_ps(_mm_cmplt_ps(_mm_andnot_ps(sign, _mm_loadu_ps(a)), limit),
+                                 _mm_cmplt_ps(_mm_andnot_ps(sign, _mm_loadu_ps(b)), limit));
+    const __m128 cd = _mm_and_ps(_mm_cmplt_ps(_mm_andnot_ps(sign, _mm_loadu_ps(c)), limit),
+                                 _mm_cmplt_ps(_mm_andnot_ps(sign, _mm_loadu_ps(d)), limit));
+    return (_mm_movemask_ps(_mm_and_ps(ab, cd)) & 7) == 7;
+}
+
 #else
 
 typedef struct KeaLanes {
@@ -80,6 +92,14 @@ static inline KeaLanes KeaLanesSplat(MeReal s)
     return a;
 }
 static inline MeReal KeaLanesSum3(KeaLanes a) { return (a.v[0] + a.v[1]) + a.v[2]; }
+static inline int KeaLanesFinite3x4(const MeReal *a, const MeReal *b, const MeReal *c, const MeReal *d)
+{
+    int ok = 1, k;
+    for (k = 0; k < 3; ++k)
+        ok &= (a[k] > -MEINFINITY) & (a[k] < MEINFINITY) & (b[k] > -MEINFINITY) & (b[k] < MEINFINITY) &
+              (c[k] > -MEINFINITY) & (c[k] < MEINFINITY) & (d[k] > -MEINFINITY) & (d[k] < MEINFINITY);
+    return ok;
+}
 
 #endif
 

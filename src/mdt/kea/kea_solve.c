@@ -65,9 +65,6 @@ size_t KeaMemoryRequired(int nRows, int nBodies, KeaPath path)
  * combined with & without a branch each. */
 static int KeaIsFiniteFlag(MeReal v) { return KeaFabs(v) < MEINFINITY; }
 
-/* Indices in range, bounds ordered, softness non-negative, numbers where numbers are needed (finite
- * in Karma's sense: within +-MEINFINITY). A row's tests are combined with & into one flag (a
- * comparison with a NaN is false), one branch per row: every step's every row goes through here. */
 /* The declared contacts keep KeaContact's promise (kea.h): in row order, not overlapping, each one's
  * three rows on the same two distinct bodies (the first not the world), the normal row [0, inf)
  * without a link, the friction rows linked to it without bounds of their own. */
@@ -78,19 +75,26 @@ static int KeaContactsAreValid(const KeaProblem *p)
         return 0;
     for (c = 0; c < p->nContacts; ++c) {
         const int s = p->contacts[c].row;
-        const int *b = s >= 0 && s + 2 < p->nRows ? p->rowBodies[s] : NULL;
-        if (s < next || !b || b[0] < 0 || b[0] == b[1] || p->link[s] != -1 || p->lo[s] != ME_R(0.0) ||
-            KeaIsFinite(p->hi[s]))
+        const int *b;
+        int ok;
+        if (s < next || s + 2 >= p->nRows) /* next >= 0, so s too */
             return 0;
+        b = p->rowBodies[s];
+        /* combined with & into one flag, one branch per contact, as a row's (KeaProblemIsValid) */
+        ok = (b[0] >= 0) & (b[0] != b[1]) & (p->link[s] == -1) & (p->lo[s] == ME_R(0.0)) & !KeaIsFiniteFlag(p->hi[s]);
         for (k = 1; k < 3; ++k)
-            if (p->rowBodies[s + k][0] != b[0] || p->rowBodies[s + k][1] != b[1] || p->link[s + k] != s ||
-                KeaIsFinite(p->lo[s + k]) || KeaIsFinite(p->hi[s + k]))
-                return 0;
+            ok &= (p->rowBodies[s + k][0] == b[0]) & (p->rowBodies[s + k][1] == b[1]) & (p->link[s + k] == s) &
+                  !KeaIsFiniteFlag(p->lo[s + k]) & !KeaIsFiniteFlag(p->hi[s + k]);
+        if (!ok)
+            return 0;
         next = s + 3;
     }
     return 1;
 }
 
+/* Indices in range, bounds ordered, softness non-negative, numbers where numbers are needed (finite
+ * in Karma's sense: within +-MEINFINITY). A row's tests are combined with & into one flag (a
+ * comparison with a NaN is false), one branch per row: every step's every row goes through here. */
 static int KeaProblemIsValid(const KeaProblem *p)
 {
     int i, b, k;
@@ -103,19 +107,19 @@ static int KeaProblemIsValid(const KeaProblem *p)
     if (p->link && !p->mu)
         return 0;
     for (b = 0; b < p->nBodies; ++b) {
-        if (!(p->bodies[b].invMass >= ME_R(0.0)) || !KeaIsFinite(p->bodies[b].invMass))
-            return 0;
+        const KeaBody *body = &p->bodies[b];
+        int ok = (body->invMass >= ME_R(0.0)) & KeaIsFiniteFlag(body->invMass);
         for (k = 0; k < 9; ++k)
-            if (!KeaIsFinite(p->bodies[b].invInertia[k / 3][k % 3]))
-                return 0;
+            ok &= KeaIsFiniteFlag(body->invInertia[k / 3][k % 3]);
+        if (!ok)
+            return 0;
     }
     for (i = 0; i < p->nRows; ++i) {
         const KeaJacobianRow *J = &p->J[i];
         int ok = (p->rowBodies[i][0] >= KEA_WORLD) & (p->rowBodies[i][0] < p->nBodies) &
                  (p->rowBodies[i][1] >= KEA_WORLD) & (p->rowBodies[i][1] < p->nBodies) & (p->lo[i] <= p->hi[i]) &
                  KeaIsFiniteFlag(p->rhs[i]);
-        for (k = 0; k < 3; ++k) /* the pads (index 3) are not read as numbers */
-            ok &= KeaIsFiniteFlag(J->lin0[k]) & KeaIsFiniteFlag(J->ang0[k]) & KeaIsFiniteFlag(J->lin1[k]) & KeaIsFiniteFlag(J->ang1[k]);
+        ok &= KeaLanesFinite3x4(J->lin0, J->ang0, J->lin1, J->ang1); /* the pads are not read as numbers */
         if (p->epsilon)
             ok &= (p->epsilon[i] >= ME_R(0.0)) & KeaIsFiniteFlag(p->epsilon[i]);
         if (p->x0)
@@ -124,7 +128,7 @@ static int KeaProblemIsValid(const KeaProblem *p)
             return 0;
         if (p->link && p->link[i] >= 0) {
             const int l = p->link[i];
-            if (l >= p->nRows || l == i || (p->link[l] >= 0) || !(p->mu[i] >= ME_R(0.0)) || !KeaIsFinite(p->mu[i]))
+            if (l >= p->nRows || l == i || (p->link[l] >= 0) || !((p->mu[i] >= ME_R(0.0)) & KeaIsFiniteFlag(p->mu[i])))
                 return 0;
         } else if (p->link && p->link[i] < -1) {
             return 0;
