@@ -30,21 +30,6 @@ static double seconds(void)
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
-static MeBool parseSize(const char *text, int *w, int *h)
-{
-    char *end;
-    errno = 0;
-    long a = strtol(text, &end, 10);
-    if (errno || end == text || *end != 'x')
-        return MEFALSE;
-    const char *second = end + 1;
-    long b = strtol(second, &end, 10);
-    if (errno || end == second || *end || a < 1 || b < 1 || a > 8192 || b > 8192)
-        return MEFALSE;
-    *w = (int)a, *h = (int)b;
-    return METRUE;
-}
-
 int KarmaRender(int argc, char **argv)
 {
     if (argc < 1)
@@ -69,7 +54,7 @@ int KarmaRender(int argc, char **argv)
             if (errno || end == value || *end || frames < 0 || frames > INT_MAX)
                 return usage("--frames takes a count of frames >= 0 (got '%s')", value);
         } else if (strcmp(option, "--size") == 0) {
-            if (!parseSize(value, &width, &height))
+            if (!RRenderParseSize(value, &width, &height))
                 return usage("--size takes WxH, each 1 to 8192 (got '%s')", value);
         } else if (strcmp(option, "--out") == 0) {
             out = value;

@@ -30,6 +30,26 @@ static void project(RRender *rc, const double p[3], double ndc[3])
     viewerProject(rc, p, ndc);
 }
 
+/* "WxH" sizes: whole numbers 1 to 8192 each, nothing else; a refusal writes nothing. */
+static void test_parse_size(void **state)
+{
+    (void)state;
+    int w = -1, h = -1;
+    assert_true(RRenderParseSize("1280x720", &w, &h));
+    assert_int_equal(w, 1280);
+    assert_int_equal(h, 720);
+    assert_true(RRenderParseSize("8192x1", &w, &h));
+    assert_int_equal(w, 8192);
+    assert_int_equal(h, 1);
+    const char *bad[] = {"", "x", "640", "640x", "x480", "0x480", "640x0", "8193x2", "640x480x", "-4x4", "64 x64"};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        w = h = 7;
+        assert_false(RRenderParseSize(bad[i], &w, &h));
+        assert_int_equal(w, 7);
+        assert_int_equal(h, 7);
+    }
+}
+
 static void test_karma_defaults(void **state)
 {
     RRender *rc = nullContext(NULL, NULL);
@@ -421,6 +441,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_karma_defaults),
+        cmocka_unit_test(test_parse_size),
         cmocka_unit_test(test_camera_matrices_are_the_geometry),
         cmocka_unit_test(test_run_timeout_pause_single_step),
         cmocka_unit_test(test_pc_key_map),

@@ -56,6 +56,9 @@ void MEAPI RRenderSetAppName(RRender *rc, const char *appname);
 void MEAPI RRenderDrawFrame(RRender *rc);
 /** Addition: size of the picture in pixels. */
 void MEAPI RRenderGetSize(RRender *rc, int *width, int *height);
+/** Addition: parses "WxH" (the -size option) into a width and height of 1 to 8192 pixels; MEFALSE, and nothing
+ *  written, for anything else. */
+MeBool MEAPI RRenderParseSize(const char *text, int *width, int *height);
 /** Addition: read the last frame drawn as RGBA bytes, top row first, into `rgba` (width·height·4
  *  bytes). Returns 0, or −1 for a null context or one that has not drawn. */
 int MEAPI RRenderReadPixels(RRender *rc, unsigned char *rgba);

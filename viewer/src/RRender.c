@@ -16,8 +16,7 @@
 #define R_MAX_SIZE 8192
 #define R_DEFAULT_TITLE "MathEngine Karma (v1.2.1) [OpenGL / GLFW]"
 
-/* Parse "WxH" into a size within 1 … R_MAX_SIZE. */
-static MeBool parseSize(const char *text, int *w, int *h)
+MeBool MEAPI RRenderParseSize(const char *text, int *w, int *h)
 {
     char *end;
     errno = 0;
@@ -48,7 +47,7 @@ static MeBool readOptions(RRender *rc, MeCommandLineOptions *o, int eat, int *w,
     if (MeCommandLineOptionsCheckFor(o, "-notextures", (MeBool)eat))
         rc->m_options.m_bTextures = MEFALSE;
     const char *size = MeCommandLineOptionsGetString(o, "-size", (MeBool)eat);
-    if (size && !parseSize(size, w, h)) {
+    if (size && !RRenderParseSize(size, w, h)) {
         R_REPORT(ME_ERR_ARGUMENT_RANGE, "RRenderContextCreate", "-size takes WxH, each 1 to %d (got %s)", R_MAX_SIZE, size);
         return MEFALSE;
     }
