@@ -81,10 +81,13 @@ static int KeaContactsAreValid(const KeaProblem *p)
             return 0;
         b = p->rowBodies[s];
         /* combined with & into one flag, one branch per contact, as a row's (KeaProblemIsValid) */
-        ok = (b[0] >= 0) & (b[0] != b[1]) & (p->link[s] == -1) & (p->lo[s] == ME_R(0.0)) & !KeaIsFiniteFlag(p->hi[s]);
-        for (k = 1; k < 3; ++k)
+        const int normalUnbounded = !KeaIsFiniteFlag(p->hi[s]);
+        ok = (b[0] >= 0) & (b[0] != b[1]) & (p->link[s] == -1) & (p->lo[s] == ME_R(0.0)) & normalUnbounded;
+        for (k = 1; k < 3; ++k) {
+            const int frictionUnbounded = (KeaIsFiniteFlag(p->lo[s + k]) | KeaIsFiniteFlag(p->hi[s + k])) == 0;
             ok &= (p->rowBodies[s + k][0] == b[0]) & (p->rowBodies[s + k][1] == b[1]) & (p->link[s + k] == s) &
-                  !KeaIsFiniteFlag(p->lo[s + k]) & !KeaIsFiniteFlag(p->hi[s + k]);
+                  frictionUnbounded;
+        }
         if (!ok)
             return 0;
         next = s + 3;
