@@ -271,6 +271,33 @@ static void test_contacts_drawn_on_contacts(void **state)
     sceneDestroy(&s);
 }
 
+/* A body the program destroys while it is dragged is let go at the next MeAppStep, with no message
+ * (the handle is stale, not the program's mistake), and the other box can be picked after. */
+static void test_destroyed_while_dragged(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    Scene s;
+    sceneCreate(&s, 8, 8, METRUE);
+    tick(&s, 30);
+    int x, y;
+    pixelOf(s.rc, MdtBodyGetTransformPtr(s.body[0])[3], &x, &y);
+    press(&s, x, y);
+    assert_ptr_equal(s.app->mouseInfo.dragBody, s.body[0]);
+    tick(&s, 5);
+    MstModelAndBodyDestroy(s.box[0]);
+    unsigned long warnings = karma_warning_count();
+    tick(&s, 5);
+    assert_int_equal(karma_warning_count(), warnings);
+    assert_null(s.app->mouseInfo.dragBody);
+    release(&s, x, y);
+    pixelOf(s.rc, MdtBodyGetTransformPtr(s.body[1])[3], &x, &y);
+    press(&s, x, y);
+    assert_ptr_equal(s.app->mouseInfo.dragBody, s.body[1]);
+    release(&s, x, y);
+    sceneDestroy(&s);
+}
+
 static void test_bad_input_reported(void **state)
 {
     (void)state;
@@ -311,6 +338,7 @@ int main(void)
         cmocka_unit_test(test_click_on_sky_or_ground_picks_nothing),
         cmocka_unit_test(test_heavy_and_light_follow_alike),
         cmocka_unit_test(test_contacts_drawn_on_contacts),
+        cmocka_unit_test(test_destroyed_while_dragged),
         cmocka_unit_test(test_bad_input_reported),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -107,6 +107,14 @@ static void dampRotation(MdtBodyID body, MeReal rate)
     MdtBodyAddTorque(body, torque[0], torque[1], torque[2]);
 }
 
+/* Let go of the dragged body and hide the rubber band. */
+static void release(MeApp *app)
+{
+    AcmeReal zero[3] = {0, 0, 0};
+    app->mouseInfo.dragBody = NULL;
+    RGraphicLineMoveEnds(app->mouseInfo.line, zero, zero);
+}
+
 void MEAPI MeAppUpdateMouseSpring(MeApp *app)
 {
     if (!app) {
@@ -117,6 +125,10 @@ void MEAPI MeAppUpdateMouseSpring(MeApp *app)
     MdtBodyID body = m->dragBody;
     if (!body)
         return;
+    if (!MdtBodyIsValid(body)) { /* destroyed by the program while dragged: let go, quietly */
+        release(app);
+        return;
+    }
     MdtBodyEnable(body); /* forces alone do not wake a sleeping body */
     MeVector3 grab, v, g, f;
     MdtConvertPositionVector(body, m->grabPosition, NULL, grab);
@@ -129,14 +141,6 @@ void MEAPI MeAppUpdateMouseSpring(MeApp *app)
     MdtBodyAddForce(body, -mass * g[0], -mass * g[1], -mass * g[2]); /* the hand carries the weight */
     dampRotation(body, m->mouseSpringDamping);
     RGraphicLineMoveEnds(m->line, grab, m->desiredPosition);
-}
-
-/* Let go of the dragged body and hide the rubber band. */
-static void release(MeApp *app)
-{
-    AcmeReal zero[3] = {0, 0, 0};
-    app->mouseInfo.dragBody = NULL;
-    RGraphicLineMoveEnds(app->mouseInfo.line, zero, zero);
 }
 
 void MEAPI MeAppMousePickCB(RRender *rc, int x, int y, int modifiers, RMouseButtonWhich which,
