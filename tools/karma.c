@@ -22,11 +22,7 @@
 #include <string.h>
 
 #include "demo.h"
-#ifdef KARMA_HAVE_VIEWER
-#include "karma_view.h"
-#endif
-
-#define EXIT_USAGE 2
+#include "karma_view.h" /* the usage error; the viewer commands when the viewer is built */
 
 static const char *const stageNames[] = {"Partition", "AutoDisable", "Pack", "Solve", "Integrate", "Unpack"};
 #define STAGE_COUNT ((int)(sizeof stageNames / sizeof stageNames[0]))
@@ -62,12 +58,12 @@ static void printUsage(FILE *out)
             "`make demo` runs `karma run " DEMO_DEFAULT_SCENE "`.\n");
 }
 
-static int usageError(const char *format, const char *argument)
+int KarmaUsageError(const char *format, const char *argument)
 {
     fprintf(stderr, "karma: ");
     fprintf(stderr, format, argument);
     fprintf(stderr, "\n(see `karma --help`)\n");
-    return EXIT_USAGE;
+    return KARMA_EXIT_USAGE;
 }
 
 static int listScenes(void)
@@ -260,11 +256,11 @@ static MeBool writePlotScript(const char *script, const char *csvPath, const Dem
 static int runScene(int argc, char **argv, MeBool plot)
 {
     if (argc < 1)
-        return usageError("%s", plot ? "`plot` needs a scene name; `karma list` shows them"
+        return KarmaUsageError("%s", plot ? "`plot` needs a scene name; `karma list` shows them"
                                      : "`run` needs a scene name; `karma list` shows them");
     const DemoScene *scene = DemoSceneFind(argv[0]);
     if (!scene)
-        return usageError("no scene called '%s'; `karma list` shows the scenes", argv[0]);
+        return KarmaUsageError("no scene called '%s'; `karma list` shows the scenes", argv[0]);
 
     long steps = scene->defaultSteps;
     MeReal h = scene->defaultStepSize;
@@ -280,17 +276,17 @@ static int runScene(int argc, char **argv, MeBool plot)
         if (strcmp(option, "--steps") == 0 || strcmp(option, "--dt") == 0 || strcmp(option, "--csv") == 0 ||
             (plot && strcmp(option, "--png") == 0)) {
             if (!value)
-                return usageError("option %s needs a value", option);
+                return KarmaUsageError("option %s needs a value", option);
             i++;
         } else {
-            return usageError(plot ? "unknown option '%s' for `plot`" : "unknown option '%s' for `run`", option);
+            return KarmaUsageError(plot ? "unknown option '%s' for `plot`" : "unknown option '%s' for `run`", option);
         }
         if (strcmp(option, "--png") == 0)
             png = value;
         if (strcmp(option, "--steps") == 0 && !parseSteps(value, &steps))
-            return usageError("--steps takes a whole number from 0 to 2147483647, not '%s'", value);
+            return KarmaUsageError("--steps takes a whole number from 0 to 2147483647, not '%s'", value);
         if (strcmp(option, "--dt") == 0 && !parseStepSize(value, &h))
-            return usageError("--dt takes a step size in seconds, greater than 0 and at most 10, not '%s'", value);
+            return KarmaUsageError("--dt takes a step size in seconds, greater than 0 and at most 10, not '%s'", value);
         if (strcmp(option, "--csv") == 0)
             csvPath = value;
     }
@@ -438,7 +434,7 @@ int main(int argc, char **argv)
 {
     if (argc < 2) {
         printUsage(stderr);
-        return EXIT_USAGE;
+        return KARMA_EXIT_USAGE;
     }
     const char *command = argv[1];
     if (strcmp(command, "help") == 0 || strcmp(command, "--help") == 0 || strcmp(command, "-h") == 0) {
@@ -447,7 +443,7 @@ int main(int argc, char **argv)
     }
     if (strcmp(command, "list") == 0) {
         if (argc > 2)
-            return usageError("`list` takes no arguments (got '%s')", argv[2]);
+            return KarmaUsageError("`list` takes no arguments (got '%s')", argv[2]);
         return listScenes();
     }
     if (strcmp(command, "version") == 0) {
@@ -462,8 +458,8 @@ int main(int argc, char **argv)
 #ifdef KARMA_HAVE_VIEWER
         return command[0] == 'r' ? KarmaRender(argc - 2, argv + 2) : KarmaView(argc - 2, argv + 2);
 #else
-        return usageError("`%s` needs the viewer: this karma was built without it (KARMA_BUILD_VIEWER=OFF)", command);
+        return KarmaUsageError("`%s` needs the viewer: this karma was built without it (KARMA_BUILD_VIEWER=OFF)", command);
 #endif
     }
-    return usageError("unknown command '%s'", command);
+    return KarmaUsageError("unknown command '%s'", command);
 }

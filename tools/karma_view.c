@@ -13,14 +13,17 @@
 #include "demo_view.h"
 #include "karma_view.h"
 
-#define EXIT_USAGE 2
-
-static int usage(const char *format, const char *argument)
+/* The scene a viewer command names first (argv[0]), or NULL after saying what is wrong. */
+static const DemoScene *commandScene(const char *command, int argc, char **argv)
 {
-    fprintf(stderr, "karma: ");
-    fprintf(stderr, format, argument);
-    fprintf(stderr, "\n(see `karma --help`)\n");
-    return EXIT_USAGE;
+    if (argc < 1) {
+        KarmaUsageError("`%s` needs a scene (see `karma list`)", command);
+        return NULL;
+    }
+    const DemoScene *scene = DemoSceneFind(argv[0]);
+    if (!scene)
+        KarmaUsageError("no scene '%s' (see `karma list`)", argv[0]);
+    return scene;
 }
 
 static double seconds(void)
@@ -32,11 +35,9 @@ static double seconds(void)
 
 int KarmaRender(int argc, char **argv)
 {
-    if (argc < 1)
-        return usage("%s", "`render` needs a scene (see `karma list`)");
-    const DemoScene *scene = DemoSceneFind(argv[0]);
+    const DemoScene *scene = commandScene("render", argc, argv);
     if (!scene)
-        return usage("no scene '%s' (see `karma list`)", argv[0]);
+        return KARMA_EXIT_USAGE;
     long frames = scene->defaultSteps;
     int width = 1280, height = 720;
     char defaultOut[64];
@@ -45,21 +46,21 @@ int KarmaRender(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         const char *option = argv[i];
         if (i + 1 >= argc)
-            return usage("'%s' needs a value, or is not an option of `render`", option);
+            return KarmaUsageError("'%s' needs a value, or is not an option of `render`", option);
         const char *value = argv[++i];
         if (strcmp(option, "--frames") == 0) {
             char *end;
             errno = 0;
             frames = strtol(value, &end, 10);
             if (errno || end == value || *end || frames < 0 || frames > INT_MAX)
-                return usage("--frames takes a count of frames >= 0 (got '%s')", value);
+                return KarmaUsageError("--frames takes a count of frames >= 0 (got '%s')", value);
         } else if (strcmp(option, "--size") == 0) {
             if (!RRenderParseSize(value, &width, &height))
-                return usage("--size takes WxH, each 1 to 8192 (got '%s')", value);
+                return KarmaUsageError("--size takes WxH, each 1 to 8192 (got '%s')", value);
         } else if (strcmp(option, "--out") == 0) {
             out = value;
         } else {
-            return usage("unknown option '%s' of `render`", option);
+            return KarmaUsageError("unknown option '%s' of `render`", option);
         }
     }
     DemoInstance demo;
@@ -113,11 +114,9 @@ static void MEAPI tick(RRender *rc, void *userdata)
 
 int KarmaView(int argc, char **argv)
 {
-    if (argc < 1)
-        return usage("%s", "`view` needs a scene (see `karma list`)");
-    const DemoScene *scene = DemoSceneFind(argv[0]);
+    const DemoScene *scene = commandScene("view", argc, argv);
     if (!scene)
-        return usage("no scene '%s' (see `karma list`)", argv[0]);
+        return KARMA_EXIT_USAGE;
     /* Everything after the scene is for the viewer; checked before a window opens. */
     for (int i = 1; i < argc; i++) {
         static const char *const flags[] = {"-gl", "-null", "-headless", "-wireframe", "-notextures"};
@@ -126,12 +125,12 @@ int KarmaView(int argc, char **argv)
             known = known || strcmp(argv[i], flags[k]) == 0;
         if (!known && (strcmp(argv[i], "-size") == 0 || strcmp(argv[i], "-timeout") == 0)) {
             if (i + 1 >= argc)
-                return usage("'%s' needs a value", argv[i]);
+                return KarmaUsageError("'%s' needs a value", argv[i]);
             known = METRUE;
             i++;
         }
         if (!known)
-            return usage("unknown option '%s' of `view`", argv[i]);
+            return KarmaUsageError("unknown option '%s' of `view`", argv[i]);
     }
     MeCommandLineOptions *options = MeCommandLineOptionsCreate(argc - 1, (const char **)(argv + 1));
     RRender *rc = RRenderContextCreate(options, NULL, METRUE);
@@ -140,7 +139,7 @@ int KarmaView(int argc, char **argv)
     MeCommandLineOptionsDestroy(options);
     if (unread) {
         RRenderContextDestroy(rc);
-        return usage("unknown option '%s' of `view`", first);
+        return KarmaUsageError("unknown option '%s' of `view`", first);
     }
     if (!rc)
         return EXIT_FAILURE;

@@ -143,8 +143,11 @@ static GLuint compile(GLenum type, const char *source)
 static GLuint link(const char *vs, const char *fs)
 {
     GLuint v = compile(GL_VERTEX_SHADER, vs), f = compile(GL_FRAGMENT_SHADER, fs);
-    if (!v || !f)
+    if (!v || !f) { /* the one that compiled is not kept */
+        glDeleteShader(v); /* deleting shader 0 is a no-op */
+        glDeleteShader(f);
         return 0;
+    }
     GLuint p = glCreateProgram();
     glAttachShader(p, v);
     glAttachShader(p, f);
