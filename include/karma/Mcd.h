@@ -2,6 +2,7 @@
 #ifndef MCD_H
 #define MCD_H
 
+#include "McdAggregate.h"
 #include "McdBox.h"
 #include "McdCTypes.h"
 #include "McdCone.h"
@@ -11,6 +12,7 @@
 #include "McdCylinder.h"
 #include "McdFrame.h"
 #include "McdGeometry.h"
+#include "McdGeometryInstance.h"
 #include "McdGeometryTypes.h"
 #include "McdInteraction.h"
 #include "McdInteractionTable.h"

@@ -37,6 +37,9 @@ ME_API McdFrameworkID McdModelGetFramework(McdModelID m);
 ME_API void McdModelSetGeometry(McdModelID m, McdGeometryID geometry);
 /** The model's geometry (shared, reference-counted: not owned by the caller); NULL for an invalid ID. */
 ME_API McdGeometryID McdModelGetGeometry(McdModelID m);
+/** The root of the model's geometry-instance tree (McdGeometryInstance.h: an aggregate's children
+ *  hang under it); NULL for an invalid ID (reported). */
+ME_API McdGeometryInstanceID McdModelGetGeometryInstance(McdModelID m);
 
 /** Follow the transform at `tm` (it must outlive the model's use of it); NULL: the model's own. */
 ME_API void McdModelSetTransformPtr(McdModelID m, MeMatrix4Ptr tm);

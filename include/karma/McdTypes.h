@@ -25,6 +25,9 @@ typedef McdFramework *McdFrameworkID;
 typedef McdGeometry *McdGeometryID;
 typedef McdModel *McdModelID;
 typedef McdSpace *McdSpaceID;
+/** A placed geometry inside a model's tree (the model's root and aggregate children): McdGeometryInstance.h. */
+typedef struct McdGeometryInstance McdGeometryInstance;
+typedef McdGeometryInstance *McdGeometryInstanceID;
 /** Karma's name for a model standing for several (same type as McdModelID). */
 typedef McdModelID McdCompositeModelID;
 typedef McdContact *McdContactID;

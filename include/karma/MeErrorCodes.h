@@ -61,7 +61,12 @@
     X(ME_ERR_MCD_HULL_FLAT,           405, ME_LEVEL_WARNING, "a convex hull's points span no volume: fewer than four, or all within the hull tolerance of a line or a plane") \
     X(ME_ERR_MCD_BAD_MESH,            420, ME_LEVEL_WARNING, "a triangle mesh or height field is empty, has an index out of range, a count out of range or a height or vertex that is not finite") \
     X(ME_ERR_MCD_DEGENERATE_TRIANGLE, 421, ME_LEVEL_WARNING, "a triangle of a mesh has no area (its vertices coincide or lie on a line)") \
-    X(ME_ERR_MCD_BAD_IMAGE,           422, ME_LEVEL_WARNING, "a height image cannot be read or is not an uncompressed 24-bit BMP of at least 2 x 2 pixels")
+    X(ME_ERR_MCD_BAD_IMAGE,           422, ME_LEVEL_WARNING, "a height image cannot be read or is not an uncompressed 24-bit BMP of at least 2 x 2 pixels") \
+    X(ME_ERR_MCD_AGGREGATE_FULL,      430, ME_LEVEL_WARNING, "an aggregate's element slots (maxChildren) are all in use") \
+    X(ME_ERR_MCD_AGGREGATE_INDEX,     431, ME_LEVEL_WARNING, "an aggregate element index is out of range or names an empty slot") \
+    X(ME_ERR_MCD_AGGREGATE_TRANSFORM, 432, ME_LEVEL_WARNING, "an aggregate element's relative transform is not finite, not rigid or out of range") \
+    X(ME_ERR_MCD_AGGREGATE_CYCLE,     433, ME_LEVEL_WARNING, "an aggregate would contain itself, or nest deeper than 16 levels") \
+    X(ME_ERR_MCD_AGGREGATE_MASS,      434, ME_LEVEL_WARNING, "an aggregate has an element without finite volume (plane, terrain, empty aggregate): no mass properties")
 
 #define ME_ERROR_LIST_MST(X) \
     X(ME_ERR_MST_MATERIAL,            600, ME_LEVEL_WARNING, "a material index is out of range")

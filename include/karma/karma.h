@@ -57,6 +57,7 @@
 #include "MdtWorld.h"
 
 #include "Mcd.h"
+#include "McdAggregate.h"
 #include "McdBatch.h"
 #include "McdBox.h"
 #include "McdCTypes.h"
@@ -67,6 +68,7 @@
 #include "McdCylinder.h"
 #include "McdFrame.h"
 #include "McdGeometry.h"
+#include "McdGeometryInstance.h"
 #include "McdGeometryTypes.h"
 #include "McdInteraction.h"
 #include "McdInteractionTable.h"

@@ -10,6 +10,7 @@
 #include "framework.h"
 #include "geometry/geometry.h"
 #include "terrain/terrain.h"
+#include "aggregate/aggregate.h"
 
 /* Default contact tolerance as a fraction of lengthScale (docs/decisions.md, C1). */
 #define DEFAULT_TOLERANCE_FRACTION ME_R(0.005)
@@ -50,7 +51,7 @@ static void installBuiltInTypes(McdFrameworkData *fw)
     fw->types[kMcdGeometryTypeTriangleList] = McdTriangleListTypeDesc;
     fw->types[kMcdGeometryTypeTriangleMesh] = McdTriangleMeshTypeDesc;
     fw->types[kMcdGeometryTypeRGHeightField] = McdRGHeightFieldTypeDesc;
-    /* Aggregate keeps its number; its type registers later. */
+    fw->types[kMcdGeometryTypeAggregate] = McdAggregateTypeDesc;
     fw->typeCount = kMcdGeometryBuiltInTypes;
 }
 
@@ -59,6 +60,7 @@ static void freeFramework(McdFrameworkData *fw)
     MeMemoryDestroy(fw->lineSegFns);
     MePoolDestroy(&fw->geometryPool);
     MePoolDestroy(&fw->modelPool);
+    MePoolDestroy(&fw->instancePool);
     MeMemoryDestroy(fw->types);
     MeMemoryDestroy(fw->interactions);
     MeMemoryDestroy(fw->warnedPairs);
@@ -100,7 +102,9 @@ McdFrameworkID McdInit(int geoTypeMaxCount, int modelCount, int instanceCount, M
     if (!fw->types || !fw->interactions || !fw->warnedPairs || !fw->lineSegFns ||
         !MePoolInit(&fw->geometryPool, geometryCount, sizeof(McdGeometryData), 16,
                     "modelCount (+ instanceCount) in McdInit", 0) ||
-        !MePoolInit(&fw->modelPool, modelCount, sizeof(McdModelData), 16, "modelCount in McdInit", 0)) {
+        !MePoolInit(&fw->modelPool, modelCount, sizeof(McdModelData), 16, "modelCount in McdInit", 0) ||
+        !MePoolInit(&fw->instancePool, modelCount + instanceCount, sizeof(struct McdInstanceData), 16,
+                    "instanceCount in McdInit", 0)) {
         freeFramework(fw);
         return NULL;
     }
@@ -111,6 +115,7 @@ McdFrameworkID McdInit(int geoTypeMaxCount, int modelCount, int instanceCount, M
     }
     MeHandleSetOwnerPool(fw->ownerSlot, ME_HANDLE_GEOMETRY, &fw->geometryPool);
     MeHandleSetOwnerPool(fw->ownerSlot, ME_HANDLE_MODEL, &fw->modelPool);
+    MeHandleSetOwnerPool(fw->ownerSlot, ME_HANDLE_GEOMETRY_INSTANCE, &fw->instancePool);
     fw->id = MeHandleOfOwner(fw->ownerSlot);
     fw->instanceMaxCount = instanceCount;
     fw->typesSizeName = "geoTypeMaxCount in McdInit";

@@ -51,6 +51,8 @@ typedef struct McdFrameworkData {
     MePool geometryPool;
     MePool modelPool;
     int instanceMaxCount;          /* aggregate children (D5) */
+    MePool instancePool;           /* geometry instances: a root per model + instanceMaxCount children */
+    int instanceChildCount;        /* children taken from instancePool (at most instanceMaxCount) */
     MeReal lengthScale;
     MeReal defaultContactTolerance;
     McdRequest defaultRequest;

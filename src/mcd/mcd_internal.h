@@ -31,6 +31,8 @@ typedef struct McdConvexMeshData { struct McdHull *hull; MeReal fatness; } McdCo
  * pair tests make one per triangle, type MCD_NF_TRIANGLE_TYPE). */
 typedef struct McdTriangleCoreData { MeVector3 v[3]; } McdTriangleCoreData;
 struct McdTerrainData; /* triangle list, triangle mesh, height field (terrain/terrain.h) */
+struct McdAggregateShape; /* element table of an aggregate (aggregate/aggregate.h) */
+struct McdInstanceData;   /* a geometry instance of a model's tree (aggregate/aggregate.h) */
 
 typedef struct McdGeometryData {
     uintptr_t id;
@@ -47,6 +49,7 @@ typedef struct McdGeometryData {
         McdConvexMeshData convex;
         McdTriangleCoreData triangle;
         struct McdTerrainData *terrain;
+        struct McdAggregateShape *aggregate;
         void *user;       /* user-registered types */
     } u;
 } McdGeometryData;
@@ -55,6 +58,7 @@ typedef struct McdModelData {
     uintptr_t id;
     struct McdFrameworkData *framework;
     McdGeometryData *geometry;         /* NULL until set */
+    struct McdInstanceData *instance;  /* root of the model's geometry-instance tree (aggregate children) */
     MeReal (*transform)[4];        /* world TM pointer (shared with a body's by the bridge), or NULL */
     MeMatrix4 ownTransform;        /* used when no pointer was given */
     MeMatrix4 relativeTransform;   /* geometry relative to `transform` (identity by default) */

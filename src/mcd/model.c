@@ -8,6 +8,7 @@
 #include "../me/handle.h"
 #include "framework.h"
 #include "space.h"
+#include "aggregate/aggregate.h"
 
 /* A relative transform must be rigid to this tolerance (as the world transform, framework.h). */
 #define TM_TOLERANCE MCD_ROTATION_TOLERANCE
@@ -129,6 +130,7 @@ static void update(McdModelData *m, const char *function)
         m->aabbMin[j] -= m->contactTolerance;
         m->aabbMax[j] += m->contactTolerance;
     }
+    McdInstanceTreeUpdate(m, function); /* aggregate children: transforms and AABBs */
 }
 
 void McdModelUpdateInternal(McdModelData *m) { update(m, "McdSpaceUpdateAll"); }
@@ -166,6 +168,10 @@ McdModelID McdModelCreate(McdGeometryID geometry)
     m->id = MeHandleOfSlot(fw->ownerSlot, ME_HANDLE_MODEL, MePoolIndexOf(&fw->modelPool, m));
     m->framework = fw;
     m->geometry = g;
+    if (!McdInstanceTreeCreate(m, __func__)) {
+        MePoolPutStruct(&fw->modelPool, m);
+        return NULL;
+    }
     g->refCount++;
     m->space = NULL;
     m->spaceID = NULL;
@@ -184,6 +190,7 @@ void McdModelDestroy(McdModelID id)
         return;
     }
     m->geometry->refCount--;
+    McdInstanceTreeDestroy(m);
     MePoolPutStruct(&m->framework->modelPool, m);
 }
 
@@ -211,6 +218,7 @@ void McdModelSetGeometry(McdModelID id, McdGeometryID geometry)
     g->refCount++;
     m->geometry->refCount--;
     m->geometry = g;
+    McdInstanceTreeUpdate(m, __func__); /* the children of an aggregate, placed at the last transform */
 }
 
 McdGeometryID McdModelGetGeometry(McdModelID id)
@@ -519,6 +527,7 @@ void McdFrameworkDestroyAllModelsAndGeometries(McdFrameworkID id)
         if (m->space)
             McdSpaceForgetModel(m);
         m->geometry->refCount--;
+        McdInstanceTreeDestroy(m);
         MePoolPutStruct(&fw->modelPool, m);
     }
     for (int i = 0; i < fw->geometryPool.capacity; i++) {

@@ -15,6 +15,7 @@
 #include "../me/check.h"
 #include "framework.h"
 #include "nearfield/nearfield.h"
+#include "aggregate/aggregate.h"
 
 McdModelPairID McdModelPairCreate(McdModelID model1, McdModelID model2)
 {
@@ -260,6 +261,8 @@ int McdIntersectModels(McdModelPair *pair, McdModelData *m1, McdModelData *m2, M
             c[i].element1 = c[i].element2;
             c[i].element2 = e;
         }
+    if (m1->geometry->type == kMcdGeometryTypeAggregate || m2->geometry->type == kMcdGeometryTypeAggregate)
+        McdInstanceResolveTags(m1, m2, c, n); /* element path codes -> the models' child instances */
     result->contactCount = n;
     result->touch = n > 0;
     if (n > 0)

@@ -39,7 +39,8 @@ static void unlockRegistry(void) { atomic_flag_clear_explicit(&registryLock, mem
 static const char *kindName(MeHandleKind kind)
 {
     static const char *const names[ME_HANDLE_KIND_COUNT] = {"none",     "world",    "body",  "constraint",
-                                                            "framework", "geometry", "model", "space", "bridge", "universe"};
+                                                            "framework", "geometry", "model", "space", "bridge", "universe",
+                                                            "geometry instance"};
     return (kind >= 0 && kind < ME_HANDLE_KIND_COUNT) ? names[kind] : "unknown";
 }
 

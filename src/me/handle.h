@@ -33,7 +33,8 @@ typedef enum MeHandleKind {
     ME_HANDLE_SPACE = 7,      /* owner: McdSpace */
     ME_HANDLE_BRIDGE = 8,     /* owner: MstBridge */
     ME_HANDLE_UNIVERSE = 9,   /* owner: MstUniverse */
-    ME_HANDLE_KIND_COUNT = 10
+    ME_HANDLE_GEOMETRY_INSTANCE = 10, /* McdGeometryInstance in a framework (models' instance trees) */
+    ME_HANDLE_KIND_COUNT = 11
 } MeHandleKind;
 
 #if UINTPTR_MAX > 0xFFFFFFFFu

@@ -4,6 +4,7 @@
 #include "../framework.h"
 #include "nearfield.h"
 #include "../terrain/terrain.h"
+#include "../aggregate/aggregate.h"
 
 void McdNearfieldRegisterPrimitives(McdFrameworkData *fw)
 {
@@ -14,4 +15,5 @@ void McdNearfieldRegisterPrimitives(McdFrameworkData *fw)
     table = McdTerrainPairTable(&count);
     for (k = 0; k < count; k++)
         McdFrameworkSetInteraction(fw, table[k].type1, table[k].type2, table[k].fn, "McdPrimitivesRegisterInteractions");
+    McdAggregateRegisterAll(fw, "McdPrimitivesRegisterInteractions"); /* aggregates against every type */
 }

@@ -3,6 +3,7 @@
  * order for the tests and the benchmark. */
 #include "../geometry/convex_hull.h"
 #include "nearfield.h"
+#include "../aggregate/aggregate.h"
 
 static const McdNfPairEntry pairTable[] = {
     {kMcdGeometryTypeSphere, kMcdGeometryTypeSphere, McdNfSphereSphere, "sphere-sphere"},
@@ -70,6 +71,7 @@ static inline MeReal reachOf(const McdGeometryData *g)
         return g->u.cone.lowerRadius + MeFabs(g->u.cone.zLower) + MeFabs(g->u.cone.zUpper);
     case kMcdGeometryTypeConvexMesh:
         return MeVector3Magnitude(g->u.convex.hull->centre) + g->u.convex.hull->radius + g->u.convex.fatness;
+    case kMcdGeometryTypeAggregate: return McdAggregateReach(g);
     default: return ME_R(0.0);
     }
 }
