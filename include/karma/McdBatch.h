@@ -5,8 +5,8 @@
  * up to its request's contactMaxCount. Each call first sets *resultCount and *contactCount to 0, fills
  * the arrays as far as they go and returns 1 when every pair is done, 0 when pairs remain: handle the
  * results and call again with the same context and container. McdBatchContextReset starts the next
- * container from its first pair. (1.2 also flattened aggregates and grouped tests by type; there are
- * no aggregates yet, and the results come in the container's order either way.) */
+ * container from its first pair. (1.2 also flattened aggregates and grouped tests by type; here an
+ * aggregate's pair test recurses itself, and the results come in the container's order either way.) */
 #ifndef MCD_BATCH_H
 #define MCD_BATCH_H
 

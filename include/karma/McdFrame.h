@@ -110,7 +110,7 @@ typedef struct McdGeometryTypeDesc {
  *  registered or a required function is NULL. */
 ME_API int McdFrameworkRegisterUserGeometryType(McdFrameworkID fw, const McdGeometryTypeDesc *desc);
 /** Number of geometry type numbers in use (built-in and user; kMcdGeometryBuiltInTypes with no
- *  user type, the unregistered TriangleList, ConvexMesh and Aggregate numbers included). */
+ *  user type). */
 ME_API MeI16 McdFrameworkGetRegisteredTypeCount(McdFrameworkID fw);
 /** Name of a registered type number, or NULL when unknown. */
 ME_API const char *McdFrameworkGetTypeName(McdFrameworkID fw, int typeId);

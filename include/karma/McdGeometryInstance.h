@@ -37,6 +37,7 @@ ME_API void McdGeometryInstanceMaximumPoint(McdGeometryInstanceID ins, MeReal *c
 ME_API void McdGeometryInstanceGetAABB(McdGeometryInstanceID ins, MeVector3 minCorner, MeVector3 maxCorner);
 /** Material of the instance (a root's: the model's, McdModelSetMaterial). */
 ME_API void McdGeometryInstanceSetMaterial(McdGeometryInstanceID ins, int material);
+/** The instance's material (a root's: the model's); 0 for an invalid ID (reported). */
 ME_API unsigned int McdGeometryInstanceGetMaterial(McdGeometryInstanceID ins);
 /** Child i (slot i of the instance's aggregate), or NULL (no such child, or not an aggregate). */
 ME_API McdGeometryInstanceID McdGeometryInstanceGetChild(McdGeometryInstanceID ins, int i);

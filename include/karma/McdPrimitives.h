@@ -5,8 +5,9 @@
  * registration and an intersect function. Here the built-in types exist from McdInit on and the
  * generic calls do the work: the per-type functions below check the geometry's type and call the
  * generic ones; the per-pair names are macros onto McdPrimitivesRegisterInteractions (which
- * registers every primitive pair at once) and McdIntersect. T##UpdateAABB and T##MaximumPoint take
- * geometry instances, still to come (docs/api_changes.md). */
+ * registers every primitive pair at once) and McdIntersect. T##UpdateAABB and T##MaximumPoint took
+ * geometry instances: McdGeometryInstanceUpdateAABB / MaximumPoint do it for every type
+ * (docs/api_changes.md). */
 #ifndef MCD_PRIMITIVES_H
 #define MCD_PRIMITIVES_H
 

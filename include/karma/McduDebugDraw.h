@@ -33,8 +33,7 @@ ME_API void MEAPI McduDebugDrawSphere(const McdSphereID sphere, MeMatrix4 tm, co
 ME_API void MEAPI McduDebugDrawBox(const McdBoxID box, MeMatrix4 tm, const MeReal colour[3]);
 /** Draw a cylinder at tm through MeDebugDrawAPI; NULL tm or colour, or another geometry type, refused. */
 ME_API void MEAPI McduDebugDrawCylinder(const McdCylinderID cyl, MeMatrix4 tm, const MeReal colour[3]);
-/** Convex meshes and aggregates are still to come: these draw through the type's own debugDraw
- *  (McdGeometryTypeDesc) and report any geometry that is not of their type. */
+/** Draw a convex mesh through the type's own debugDraw (McdGeometryTypeDesc); another type refused. */
 ME_API void MEAPI McduDebugDrawConvex(const McdConvexMeshID convex, MeMatrix4 tm, const MeReal colour[3]);
 /** Draw an aggregate's parts at tm through MeDebugDrawAPI; NULL tm or colour, or another type, refused. */
 ME_API void MEAPI McduDebugDrawAggregate(const McdAggregateID agg, MeMatrix4 tm, const MeReal colour[3]);

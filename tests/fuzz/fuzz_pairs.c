@@ -1,5 +1,6 @@
-/* fuzz_pairs -- every pair test of the primitives, convex meshes and terrains (triangle mesh, height
- * field, triangle list), through McdIntersect and straight (McdNfCollide, the terrain table).
+/* fuzz_pairs -- every pair test of the primitives, convex meshes, terrains (triangle mesh, height
+ * field, triangle list) and aggregates, through McdIntersect and straight (McdNfCollide, the terrain
+ * table, the aggregate test).
  *
  * Bytes decode to two geometry types, their sizes (in range, or raw and then refused with a code),
  * their placements (proper rotations within the position range, the second often near the first so
@@ -13,6 +14,7 @@
 #include "mcd/framework.h"
 #include "mcd/nearfield/nearfield.h"
 #include "mcd/terrain/terrain.h"
+#include "mcd/aggregate/aggregate.h"
 
 static McdFrameworkID fw;
 static const double LENGTH_SCALE = 1;
@@ -31,6 +33,7 @@ static int typeOf(unsigned byte)
     case 120: return kMcdGeometryTypeTriangleMesh;
     case 121: return kMcdGeometryTypeRGHeightField;
     case 122: return kMcdGeometryTypeTriangleList;
+    case 124: return kMcdGeometryTypeAggregate; /* held by no earlier input's first two bytes either */
     default: return byte % 48 == 47 ? kMcdGeometryTypeConvexMesh : TYPES[byte % 6];
     }
 }
@@ -115,6 +118,61 @@ static McdGeometryID makeTerrain(FuzzInput *in, int type, MeReal a, MeReal b, Me
     return McdTriangleListCreate(fw, lo, hi, 1 + (int)(fuzz_byte(in) % LIST_MAX), listGenerator);
 }
 
+static McdGeometryID makeGeometry(FuzzInput *in, int type);
+
+/* Geometries an input made inside aggregates, destroyed after the aggregates (outermost first). */
+#define MADE_MAX 32
+static McdGeometryID made[MADE_MAX];
+static int madeCount;
+
+/* An aggregate of 1 to 3 elements of any convex type, an aggregate among them at times (one level
+ * deep, shared at times), placed near its origin by a rotation in range or 12 raw reals; a raw
+ * transform must be refused with a message, or be a placed rotation. */
+static McdGeometryID makeAggregate(FuzzInput *in, int depth)
+{
+    unsigned shape = fuzz_byte(in);
+    int count = 1 + (int)(shape % 3);
+    McdAggregateID a = McdAggregateCreate(fw, count);
+    if (!a)
+        return NULL;
+    McdGeometryID previous = NULL;
+    for (int i = 0; i < count; i++) {
+        unsigned kind = fuzz_byte(in);
+        McdGeometryID e;
+        if ((kind & 15) == 15 && previous) {
+            e = previous; /* shared */
+        } else {
+            int type = (kind & 7) == 7 && depth == 0 ? kMcdGeometryTypeAggregate : typeOf((kind >> 3) == 5 ? 47 : kind >> 3);
+            if (type == kMcdGeometryTypePlane || type == kMcdGeometryTypeTriangleMesh ||
+                type == kMcdGeometryTypeRGHeightField || type == kMcdGeometryTypeTriangleList)
+                type = kMcdGeometryTypeBox;
+            e = type == kMcdGeometryTypeAggregate ? makeAggregate(in, depth + 1) : makeGeometry(in, type);
+            if (!e || madeCount == MADE_MAX) {
+                if (e)
+                    McdGeometryDestroy(e);
+                continue;
+            }
+            made[madeCount++] = e;
+        }
+        MeMatrix4 rel;
+        unsigned long before = MeMessageGetTotalCount(ME_LEVEL_WARNING);
+        if ((kind & 0x30) == 0x30) {
+            fuzz_raw_transform(in, rel);
+        } else {
+            fuzz_rotation(in, rel);
+            MeVector3 zero = {0, 0, 0};
+            fuzz_position(in, zero, 2 * LENGTH_SCALE, rel[3]);
+        }
+        int slot = McdAggregateAddElement(a, e, rel);
+        if (slot < 0)
+            FUZZ_CHECK(MeMessageGetTotalCount(ME_LEVEL_WARNING) > before, "an element was refused silently");
+        else
+            FUZZ_CHECK(MeMatrix4IsTM(rel, ME_R(2e-3)), "a relative transform that is not rigid was accepted");
+        previous = e;
+    }
+    return a;
+}
+
 /* A geometry of the type chosen by the bytes; NULL when a raw size was (rightly) refused. */
 static McdGeometryID makeGeometry(FuzzInput *in, int type)
 {
@@ -146,6 +204,10 @@ static McdGeometryID makeGeometry(FuzzInput *in, int type)
             FUZZ_CHECK(MeMessageGetTotalCount(ME_LEVEL_WARNING) > before, "convex mesh refused silently");
         return g;
     }
+    case kMcdGeometryTypeAggregate:
+        if (madeCount < MADE_MAX - 13) /* room for the elements of one more (two levels of three) */
+            return makeAggregate(in, 0);
+        return NULL;
     case kMcdGeometryTypeTriangleMesh:
     case kMcdGeometryTypeRGHeightField:
     case kMcdGeometryTypeTriangleList:
@@ -241,6 +303,14 @@ static int collideStraight(const McdGeometryData *g1, MeMatrix4 tm1, const McdGe
                            MeReal tolerance, McdContact *contacts, int max)
 {
     int count;
+    if (g1->type == kMcdGeometryTypeAggregate)
+        return McdNfCallCentred(McdNfAggregateAny, g1, tm1, g2, tm2, tolerance, contacts, max, NULL);
+    if (g2->type == kMcdGeometryTypeAggregate) {
+        int n = McdNfCallCentred(McdNfAggregateAny, g2, tm2, g1, tm1, tolerance, contacts, max, NULL);
+        for (int i = 0; i < n; i++)
+            MeVector3Scale(contacts[i].normal, -ME_R(1.0));
+        return n;
+    }
     const McdNfPairEntry *table = McdTerrainPairTable(&count);
     for (int k = 0; k < count; k++) {
         int swapped = table[k].type1 == g2->type && table[k].type2 == g1->type;
@@ -260,9 +330,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FuzzInput in = {data, size};
     if (!fw) {
         fuzz_quiet_messages();
-        fw = McdInit(0, 8, 0, (MeReal)LENGTH_SCALE);
+        fw = McdInit(0, 8, 64, (MeReal)LENGTH_SCALE); /* instances: aggregate children */
         McdPrimitivesRegisterInteractions(fw);
     }
+    madeCount = 0;
     int t1 = typeOf(fuzz_byte(&in)), t2 = typeOf(fuzz_byte(&in));
     McdGeometryID g1 = makeGeometry(&in, t1), g2 = makeGeometry(&in, t2);
     McdModelID m1 = g1 ? McdModelCreate(g1) : NULL, m2 = g2 ? McdModelCreate(g2) : NULL;
@@ -316,5 +387,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         McdGeometryDestroy(g1);
     if (g2)
         McdGeometryDestroy(g2);
+    for (int i = madeCount - 1; i >= 0; i--) /* elements after their aggregates; nested ones made later */
+        McdGeometryDestroy(made[i]);
     return 0;
 }

@@ -78,7 +78,7 @@ static void init_defaults_and_term(void **state)
     assert_string_equal(McdFrameworkGetTypeName(fw, kMcdGeometryTypeCone), "Cone");
     assert_string_equal(McdFrameworkGetTypeName(fw, kMcdGeometryTypeConvexMesh), "ConvexMesh");
     assert_string_equal(McdFrameworkGetTypeName(fw, kMcdGeometryTypeTriangleList), "TriangleList");
-    assert_null(McdFrameworkGetTypeName(fw, kMcdGeometryTypeAggregate)); /* not yet registered */
+    assert_string_equal(McdFrameworkGetTypeName(fw, kMcdGeometryTypeAggregate), "Aggregate");
     assert_true(McdPrimitivesRegisterTypes(fw));
     assert_int_equal(McdPrimitivesGetTypeCount(), 7);
     McdGeometryID s = McdSphereCreate(fw, 1);

@@ -135,7 +135,7 @@ static void renamed_and_new_framework_calls(void **state)
     assert_string_equal(McdFrameworkGetTypeName(fw, kMcdGeometryTypeSphyl), "Sphyl");
     assert_true(McdFrameworkTypeIsRegistered(fw, kMcdGeometryTypeBox));
     assert_true(McdFrameworkTypeIsRegistered(fw, kMcdGeometryTypeConvexMesh));
-    assert_false(McdFrameworkTypeIsRegistered(fw, kMcdGeometryTypeAggregate));
+    assert_true(McdFrameworkTypeIsRegistered(fw, kMcdGeometryTypeAggregate));
     assert_true(McdFrameworkTypeIsValid(fw, kMcdGeometryBuiltInTypes + 1)); /* room for 2 user types */
     assert_false(McdFrameworkTypeIsValid(fw, kMcdGeometryBuiltInTypes + 2));
     McdFrameworkShowTypes(fw);
