@@ -243,10 +243,21 @@ const McdGeometryTypeDesc McdAggregateTypeDesc = {"Aggregate",       aggregateDe
 
 MeReal McdAggregateReach(const McdGeometryData *g)
 {
-    MeVector3 c;
-    MeReal r;
-    aggregateBSphere(McdGeometryToID(g), McdGeometryShapeData(g), c, &r);
-    return MeVector3Magnitude(c) + r;
+    /* each element's bounding sphere moved by its offset: cheaper than the AABB of the whole, and
+     * asked for on every pair test */
+    const McdAggregateShape *a = shapeOf(g);
+    MeReal reach = 0;
+    for (int i = 0; i < a->countMax; i++) {
+        const McdAggregateElement *e = &a->elements[i];
+        if (!e->geometry)
+            continue;
+        MeVector3 c;
+        MeReal r;
+        McdGeometryTypeOf(e->geometry)->getBSphere(McdGeometryToID(e->geometry), McdGeometryShapeData(e->geometry), c, &r);
+        MeReal d = MeVector3Magnitude(e->relTM[3]) + MeVector3Magnitude(c) + r;
+        reach = d > reach ? d : reach;
+    }
+    return ME_IS_FINITE(reach) ? reach : MEINFINITY;
 }
 
 /* ---- API ------------------------------------------------------------------------------------- */

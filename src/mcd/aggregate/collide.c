@@ -134,7 +134,12 @@ static void rootNode(Node *node, const McdGeometryData *g, MeMatrix4 tm)
 {
     node->g = g;
     node->tm = tm;
-    McdGeometryAABBInternal(g, tm, node->lo, node->hi);
+    if (g->type == kMcdGeometryTypeAggregate) { /* its elements are culled one by one: no box of the whole */
+        MeVector3Set(node->lo, -MEINFINITY, -MEINFINITY, -MEINFINITY);
+        MeVector3Set(node->hi, MEINFINITY, MEINFINITY, MEINFINITY);
+    } else {
+        McdGeometryAABBInternal(g, tm, node->lo, node->hi);
+    }
     node->code = 0;
     node->radix = 1;
     node->isElement = MEFALSE;
@@ -151,8 +156,7 @@ int McdNfAggregateAny(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometr
     ctx.n = 0;
     rootNode(&a, g1, tm1);
     rootNode(&b, g2, tm2);
-    if (overlap(&a, &b, tolerance))
-        collide(&ctx, &a, &b, 0);
+    collide(&ctx, &a, &b, 0);
     int n = ctx.n;
     if (n > maxContacts)
         n = McdNfReduce(ctx.buf, n, maxContacts);
