@@ -97,37 +97,38 @@ static void leaf(Context *ctx, const Node *a, const Node *b)
     ctx->n += n;
 }
 
+static void collide(Context *ctx, const Node *a, const Node *b, int depth);
+
+/* Each element of the aggregate `agg` against `other`, agg on side 1 or 2 as it was. */
+static void expand(Context *ctx, const Node *agg, const Node *other, MeBool aggFirst, int depth)
+{
+    const McdAggregateShape *s = agg->g->u.aggregate;
+    for (int i = 0; i < s->countMax; i++) {
+        if (!s->elements[i].geometry)
+            continue;
+        MeMatrix4 tm;
+        Node child;
+        childNode(&child, agg, i, tm);
+        if (overlap(&child, other, ctx->tolerance)) {
+            if (aggFirst)
+                collide(ctx, &child, other, depth + 1);
+            else
+                collide(ctx, other, &child, depth + 1);
+        }
+    }
+}
+
+/* Side 1's elements first, then side 2's, down to pairs of leaves. */
 static void collide(Context *ctx, const Node *a, const Node *b, int depth)
 {
     if (depth > 2 * (MCD_AGGREGATE_MAX_DEPTH + 1)) /* unreachable through the API: a guard on the stack */
         return;
-    if (a->g->type == kMcdGeometryTypeAggregate) {
-        const McdAggregateShape *s = a->g->u.aggregate;
-        for (int i = 0; i < s->countMax; i++) {
-            if (!s->elements[i].geometry)
-                continue;
-            MeMatrix4 tm;
-            Node child;
-            childNode(&child, a, i, tm);
-            if (overlap(&child, b, ctx->tolerance))
-                collide(ctx, &child, b, depth + 1);
-        }
-        return;
-    }
-    if (b->g->type == kMcdGeometryTypeAggregate) {
-        const McdAggregateShape *s = b->g->u.aggregate;
-        for (int i = 0; i < s->countMax; i++) {
-            if (!s->elements[i].geometry)
-                continue;
-            MeMatrix4 tm;
-            Node child;
-            childNode(&child, b, i, tm);
-            if (overlap(a, &child, ctx->tolerance))
-                collide(ctx, a, &child, depth + 1);
-        }
-        return;
-    }
-    leaf(ctx, a, b);
+    if (a->g->type == kMcdGeometryTypeAggregate)
+        expand(ctx, a, b, METRUE, depth);
+    else if (b->g->type == kMcdGeometryTypeAggregate)
+        expand(ctx, b, a, MEFALSE, depth);
+    else
+        leaf(ctx, a, b);
 }
 
 static void rootNode(Node *node, const McdGeometryData *g, MeMatrix4 tm)
