@@ -471,6 +471,34 @@ static void nested_transforms(void **state)
         assert_null(c[k].element2);
         assert_near(c[k].separation, -0.005, 1e-4);
     }
+    /* the rest of the instance API on a child and the root */
+    McdGeometryInstanceID top = McdGeometryInstanceGetChild(root, 0);
+    McdGeometryInstanceSetMaterial(leaf, 7);
+    McdGeometryInstanceSetMaterial(root, 3);
+    assert_int_equal(McdGeometryInstanceGetMaterial(leaf), 7);
+    assert_int_equal(McdModelGetMaterial(m), 3);
+    MeVector3 centre;
+    MeReal radius;
+    McdGeometryInstanceGetBSphere(leaf, centre, &radius);
+    for (int j = 0; j < 3; j++)
+        assert_near(centre[j], McdGeometryInstanceGetTransformPtr(leaf)[3][j], 1e-6); /* a box: its centre */
+    assert_near(radius, 0.5 * sqrt(0.25 + 1 + 4), 1e-5);
+    assert_false(McdGeometryInstanceOverlap(leaf, top)); /* 3 m apart */
+    assert_true(McdGeometryInstanceOverlap(leaf, root));
+    MeMatrix4 later;
+    MeMatrix4Copy(later, McdGeometryInstanceGetTransformPtr(leaf));
+    later[3][2] += 10;
+    MeVector3 slo, shi, nlo, nhi;
+    McdGeometryInstanceGetAABB(leaf, nlo, nhi);
+    McdGeometryInstanceUpdateAABB(leaf, later, 1); /* swept: from here to 10 m up */
+    McdGeometryInstanceGetAABB(leaf, slo, shi);
+    assert_near(slo[2], nlo[2], 1e-5);
+    assert_near(shi[2], nhi[2] + 10, 1e-5);
+    assert_near(slo[0], nlo[0], 1e-5);
+    McdGeometryInstanceReset(leaf);
+    assert_int_equal(McdGeometryInstanceGetMaterial(leaf), 0);
+    assert_ptr_not_equal(McdGeometryInstanceGetTransformPtr(leaf), (MeMatrix4Ptr)mine); /* its own again */
+    McdGeometryInstanceSetTransformPtr(leaf, mine);
     /* the root refuses what belongs to the model */
     karma_capture_messages();
     McdGeometryInstanceSetTransformPtr(root, mine);
