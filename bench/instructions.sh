@@ -13,7 +13,9 @@
 # Variants: Karma default and nosleep, Bullet si10 and si10-nosleep, ODE quickstep20 (whichever are
 # built). Takes a few minutes for the pile (valgrind runs ~50x slower); two runs go at a time.
 #
-# Environment: BUILD (default build/bench, configured and built like bench/run.sh does), JOBS (2).
+# Environment: BUILD (default build/bench, configured and built like bench/run.sh does), JOBS (2),
+# VARIANTS (a space-separated subset of the variants above, e.g. "nosleep si10-nosleep quickstep20" for
+# the awake comparison; default all).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -34,6 +36,13 @@ runs=()
 [ -f bench/karma/karma_scenes.c ] && runs+=("karma_scenes default" "karma_scenes nosleep")
 pkg-config --exists bullet 2>/dev/null && runs+=("bullet_peer si10" "bullet_peer si10-nosleep")
 pkg-config --exists ode 2>/dev/null && runs+=("ode_peer quickstep20")
+if [ -n "${VARIANTS:-}" ]; then
+    kept=()
+    for run in "${runs[@]}"; do
+        case " $VARIANTS " in *" ${run#* } "*) kept+=("$run") ;; esac
+    done
+    runs=("${kept[@]}")
+fi
 targets=$(printf '%s\n' "${runs[@]}" | cut -d' ' -f1 | sort -u | tr '\n' ' ')
 # shellcheck disable=SC2086 # a list of targets
 cmake --build "$BUILD" -j "$JOBS" --target $targets >/dev/null
