@@ -13,7 +13,12 @@
 # Variants: Karma default and nosleep, Bullet si10 and si10-nosleep, ODE quickstep20 (whichever are
 # built). Takes a few minutes for the pile (valgrind runs ~50x slower); two runs go at a time.
 #
-# Environment: BUILD (default build/bench, configured and built like bench/run.sh does), JOBS (2).
+# Environment: BUILD (default build/bench, configured and built like bench/run.sh does), JOBS (2),
+# COLLECT (all, the default: the whole program, setup cancelled by the FROM run; step: only the engines'
+# step callbacks, karma_step, ode_step and bullet_step, with callgrind's --toggle-collect, so that
+# FROM 0 needs one run and neither setup nor the harness's per-step reading is counted: half the
+# valgrind time, for a loaded machine), VARIANTS (a space-separated subset of the variants above, e.g. "nosleep si10-nosleep quickstep20" for
+# the awake comparison; default all).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -34,6 +39,13 @@ runs=()
 [ -f bench/karma/karma_scenes.c ] && runs+=("karma_scenes default" "karma_scenes nosleep")
 pkg-config --exists bullet 2>/dev/null && runs+=("bullet_peer si10" "bullet_peer si10-nosleep")
 pkg-config --exists ode 2>/dev/null && runs+=("ode_peer quickstep20")
+if [ -n "${VARIANTS:-}" ]; then
+    kept=()
+    for run in "${runs[@]}"; do
+        case " $VARIANTS " in *" ${run#* } "*) kept+=("$run") ;; esac
+    done
+    runs=("${kept[@]}")
+fi
 targets=$(printf '%s\n' "${runs[@]}" | cut -d' ' -f1 | sort -u | tr '\n' ' ')
 # shellcheck disable=SC2086 # a list of targets
 cmake --build "$BUILD" -j "$JOBS" --target $targets >/dev/null
@@ -43,8 +55,11 @@ cmake --build "$BUILD" -j "$JOBS" --target $targets >/dev/null
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 # One counted run: the total instructions of the program (valgrind's "Collected" line).
+collect=()
+[ "${COLLECT:-all}" = step ] &&
+    collect=(--collect-atstart=no --toggle-collect=karma_step --toggle-collect=ode_step --toggle-collect='*bullet_step*')
 count() { # program variant steps outfile
-    valgrind --tool=callgrind --callgrind-out-file=/dev/null "$BUILD/bench/$1" --variants="$2" \
+    valgrind --tool=callgrind --callgrind-out-file=/dev/null "${collect[@]}" "$BUILD/bench/$1" --variants="$2" \
         --scenes="$SCENE" --steps="$3" --budget=1000000 2>&1 >/dev/null |
         sed -n 's/.*Collected : \([0-9]*\).*/\1/p' >"$4"
 }
@@ -63,7 +78,9 @@ for run in "${runs[@]}"; do
 done
 wait
 
-echo "Instructions per step, $SCENE, steps $((FROM + 1))-$TO (valgrind callgrind; $(git describe --always --dirty))"
+what=""
+[ "${COLLECT:-all}" = step ] && what=", the step callbacks alone"
+echo "Instructions per step, $SCENE, steps $((FROM + 1))-$TO (valgrind callgrind$what; $(git describe --always --dirty))"
 echo
 echo "| engine | variant | instructions per step | ÷ first row |"
 echo "|---|---|---|---|"

@@ -19,7 +19,11 @@
 # median CPU time (the figures of the rounds are the same: every engine is deterministic). ODE's
 # dWorldStep, whose runs mostly stop at the time budget, runs in the first round only.
 #
-# Environment: BUILD (build dir, default build/bench), JOBS (2), BUDGET (seconds of CPU time in timed
+# Scene sets: SET=standard (default: the scenes of issue 5) or SET=others (issue 17's scene set of
+# others' making, bench/scenes/README.md), each with its own block of RESULTS and its own CSV
+# (scene_results.csv, scene_results_others.csv).
+#
+# Environment: SET (standard), BUILD (build dir, default build/bench), JOBS (2), BUDGET (seconds of CPU time in timed
 # steps after which a run stops, default 30), ROUNDS (3), BENCH_ARGS (options passed to every program), RESULTS (default
 # bench/RESULTS.md; the hand-written block between the "notes" markers of the old file is kept) and
 # CSV (default scene_results.csv beside RESULTS).
@@ -32,7 +36,13 @@ BUDGET=${BUDGET:-30}
 ROUNDS=${ROUNDS:-3}
 BENCH_ARGS=${BENCH_ARGS:-}
 RESULTS=${RESULTS:-bench/RESULTS.md}
-CSV=${CSV:-$(dirname "$RESULTS")/scene_results.csv}
+SET=${SET:-standard}
+case "$SET" in
+standard) marker=scene-bench title="Scenes against ODE and Bullet"; csv_name=scene_results.csv ;;
+others) marker=scene-bench-others title="Scene set of others' making (issue 17)"; csv_name=scene_results_others.csv ;;
+*) echo "run.sh: SET must be standard or others" >&2; exit 2 ;;
+esac
+CSV=${CSV:-$(dirname "$RESULTS")/$csv_name}
 start=$(date +%s)
 load_start=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')
 
@@ -76,7 +86,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 : >"$tmp/settings"
 for prog in "${programs[@]}"; do
-    "$bin/$prog" --list >>"$tmp/settings"
+    "$bin/$prog" --set="$SET" --list >>"$tmp/settings"
 done
 # Scene by scene, every engine in turn: the engines compared on a scene run minutes apart at most, so
 # that the load of a shared machine, which drifts, weighs on them alike. A --scenes= option in
@@ -116,12 +126,14 @@ load_end=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')
 # ---- 4. RESULTS.md ----------------------------------------------------------------------------------
 cpu=$(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | sed 's/.*: //' || true)
 mem=$(awk '/MemTotal/ {printf "%.0f GiB", $2 / 1048576}' /proc/meminfo 2>/dev/null || true)
-notes=$(sed -n '/^<!-- notes -->$/,/^<!-- \/notes -->$/p' "$RESULTS" 2>/dev/null || true)
-[ -n "$notes" ] || notes=$'<!-- notes -->\n<!-- /notes -->'
+notes_tag=notes
+[ "$SET" = standard ] || notes_tag=notes-$SET
+notes=$(sed -n "/^<!-- $notes_tag -->\$/,/^<!-- \\/$notes_tag -->\$/p" "$RESULTS" 2>/dev/null || true)
+[ -n "$notes" ] || notes=$'<!-- '"$notes_tag"$' -->\n<!-- /'"$notes_tag"$' -->'
 cp "$tmp/csv" "$CSV"
 {
-    echo "<!-- scene-bench:begin: written by bench/run.sh, which replaces this block and keeps the rest of the file -->"
-    echo "## Scenes against ODE and Bullet (\`bench/run.sh\`)"
+    echo "<!-- $marker:begin: written by bench/run.sh, which replaces this block and keeps the rest of the file -->"
+    echo "## $title (\`SET=$SET bench/run.sh\`)"
     echo
     echo "Written by \`bench/run.sh\` on $(date -u '+%Y-%m-%d %H:%M UTC') in ${elapsed} s (commit ${commit})."
     echo "Scenes and figures: \`bench/scenes/README.md\`. Lines (the best round of each): \`$(basename "$CSV")\`."
@@ -158,6 +170,7 @@ cp "$tmp/csv" "$CSV"
     {
         n++; eng[n] = $1; var[n] = $2; sc[n] = $3; steps[n] = $5; run[n] = $6
         med[n] = $7; mean[n] = $8; cpu[n] = $9; con[n] = $10; qn[n] = $11; qv[n] = $12; st[n] = $13; pen[n] = $14; jm[n] = $15; note[n] = $16
+        p99c[n] = $18
         if (!(sc[n] in seen)) { seen[sc[n]] = 1; scenes[++ns] = sc[n] }
         id = $1 " " $2; if (!(id in vseen)) { vseen[id] = 1; variants[++nv] = id }
         complete = run[n] == steps[n] && med[n] != "nan"
@@ -174,6 +187,7 @@ cp "$tmp/csv" "$CSV"
         print "ms/step is the median over the run of the step call alone (collision included), wall clock"
         print "(CLOCK_MONOTONIC); CPU is the median process CPU time of the same calls, which the load of a"
         print "shared machine inflates far less; the mean shows what sleeping bodies hide from the median."
+        print "CPU p99 is the 99th percentile of the same CPU times, and in brackets its ratio to the median."
         print "\"× fastest\" divides by the fastest peer that completed the scene (wall, CPU). A run that stops"
         print "early (time budget, island too large) has no figure and no verdict."
         for (s = 1; s <= ns; s++) {
@@ -183,13 +197,13 @@ cp "$tmp/csv" "$CSV"
             fc = (name in fastcpu) ? fastcpu[name] : ""
             print "#### " name (f != "" ? " (fastest peer: " fastname[name] ")" : "")
             print ""
-            print "| engine | variant | steps run | ms/step | CPU ms/step | mean ms/step | contacts/step | figure | standing | floor pen. | × fastest | note |"
-            print "|---|---|---|---|---|---|---|---|---|---|---|---|"
+            print "| engine | variant | steps run | ms/step | CPU ms/step | CPU p99 (× median) | mean ms/step | contacts/step | figure | standing | floor pen. | × fastest | note |"
+            print "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
             for (v = 1; v <= nv; v++) {
                 if (!((name, variants[v]) in key)) continue
                 i = key[name, variants[v]]
-                printf "| %s | %s | %d / %d | %s | %s | %s | %.0f | %s | %s | %s | %s, %s | %s |\n", eng[i], var[i], run[i], steps[i],
-                       fmt_ms(med[i]), fmt_ms(cpu[i]), fmt_ms(mean[i]), con[i], fmt_fig(i), st[i],
+                printf "| %s | %s | %d / %d | %s | %s | %s (%s) | %s | %.0f | %s | %s | %s | %s, %s | %s |\n", eng[i], var[i], run[i], steps[i],
+                       fmt_ms(med[i]), fmt_ms(cpu[i]), fmt_ms(p99c[i]), ratio(p99c[i], cpu[i]), fmt_ms(mean[i]), con[i], fmt_fig(i), st[i],
                        pen[i] == "" ? "-" : sprintf("%.1f mm", pen[i] * 1000), ratio(med[i], f), ratio(cpu[i], fc), note[i]
             }
         }
@@ -238,13 +252,13 @@ cp "$tmp/csv" "$CSV"
         }
     }
 AWK
-    echo "<!-- scene-bench:end -->"
+    echo "<!-- $marker:end -->"
 } >"$tmp/block.md"
 # Replace our block in RESULTS (other benchmarks keep their sections of the file), or add it.
-if [ -f "$RESULTS" ] && grep -q '^<!-- scene-bench:begin' "$RESULTS"; then
-    awk -v block="$tmp/block.md" '
-        /^<!-- scene-bench:begin/ { while ((getline line < block) > 0) print line; skip = 1; next }
-        /^<!-- scene-bench:end -->/ { skip = 0; next }
+if [ -f "$RESULTS" ] && grep -q "^<!-- $marker:begin" "$RESULTS"; then
+    awk -v block="$tmp/block.md" -v begin="^<!-- $marker:begin" -v end="^<!-- $marker:end -->" '
+        $0 ~ begin { while ((getline line < block) > 0) print line; skip = 1; next }
+        $0 ~ end { skip = 0; next }
         !skip { print }' "$RESULTS" >"$RESULTS.tmp"
 elif [ -f "$RESULTS" ]; then
     { cat "$RESULTS"; echo; cat "$tmp/block.md"; } >"$RESULTS.tmp"

@@ -24,6 +24,10 @@
  * contacts. We pass the mean mass of the scene's dynamic bodies: 1 kg for the boxes, spheres and
  * chain links, 58/11 = 5.3 kg for the ragdolls. lengthScale is 1 (metre-sized bodies).
  *
+ * Motors (b2spinner, b2tumbler): a hinge's limit motor (MdtLimitSetLimitedForceMotor) with the scene's
+ * speed and torque bound; Karma's angle, body 0 relative to body 1, is the sense the scene's motor
+ * speed is given in. Initial velocities (b2smash): MdtBodySetLinearVelocity.
+ *
  * Hinge limits: Karma's hinge angle is that of body 0 relative to body 1 (MdtHinge.h), the opposite of
  * the scene's (body[1] relative to body[0]), so the stops swap and change sign, as for ODE. Karma's
  * stops bounce with restitution 1 by default (MdtLimit.h); the scenes ask for restitution 0 (and ODE's
@@ -243,6 +247,7 @@ static void *karma_create(const BenchScene *scene, MeBool autoDisable)
         MdtBodySetCenterOfMassRelativePosition(body, origin);
         MdtBodySetPosition(body, (MeReal)b->pos[0], (MeReal)b->pos[1], (MeReal)b->pos[2]);
         MdtBodySetQuaternion(body, (MeReal)b->quat[0], (MeReal)b->quat[1], (MeReal)b->quat[2], (MeReal)b->quat[3]);
+        MdtBodySetLinearVelocity(body, (MeReal)b->vel[0], (MeReal)b->vel[1], (MeReal)b->vel[2]);
         w->bodies[i] = body;
     }
 
@@ -277,6 +282,8 @@ static void *karma_create(const BenchScene *scene, MeBool autoDisable)
                 MdtSingleLimitSetRestitution(MdtLimitGetUpperLimit(l), 0);
                 MdtLimitActivateLimits(l, METRUE);
             }
+            if (bj->motor) /* Karma's angle is body 0 relative to body 1, the motor's sense */
+                MdtLimitSetLimitedForceMotor(MdtHingeGetLimit(j), (MeReal)bj->motorSpeed, (MeReal)bj->motorTorque);
             c = MdtHingeQuaConstraint(j);
         }
         MdtConstraintEnable(c);

@@ -14,6 +14,10 @@
  *   si10-nosleep  the same with deactivation disabled on every body, so the solver holds every stack
  *                 for the whole run (closest to ODE, which does not auto-disable by default)
  *
+ * Motors (b2spinner, b2tumbler): btHingeConstraint::enableAngularMotor with the scene's speed and its
+ * torque bound times the step (Bullet bounds the motor's impulse); initial velocities (b2smash):
+ * setLinearVelocity.
+ *
  * The timed step is one stepSimulation(h, 0): exactly one internal step of h, collision included. */
 #include <btBulletDynamicsCommon.h>
 
@@ -129,7 +133,10 @@ void *bullet_create(const BenchScene *scene, bool sleep)
         double inertia[3] = {0, 0, 0};
         if (!b.fixed)
             BenchBodyInertia(&b, inertia);
-        add_body(w, shape, b.fixed ? 0.0 : b.mass, to_bt(inertia), body_transform(b), scene->friction, sleep);
+        btRigidBody *body = add_body(w, shape, b.fixed ? 0.0 : b.mass, to_bt(inertia), body_transform(b),
+                                     scene->friction, sleep);
+        if (!b.fixed)
+            body->setLinearVelocity(to_bt(b.vel));
     }
     if (scene->hasGround) { /* the scenes are y-up: the plane y = 0 */
         btTransform identity;
@@ -163,6 +170,9 @@ void *bullet_create(const BenchScene *scene, bool sleep)
              * scene's, so the limits swap and change sign. */
             if (bj.limited)
                 h->setLimit(btScalar(-bj.hi), btScalar(-bj.lo));
+            /* the motor drives A relative to B, the scene's sense; its bound is an impulse per step */
+            if (bj.motor)
+                h->enableAngularMotor(true, btScalar(bj.motorSpeed), btScalar(bj.motorTorque * scene->step));
             c = h;
         }
         w->world->addConstraint(c, true);

@@ -11,6 +11,9 @@
  * Coulomb coefficient rather than a force in newtons) and mu = 0.6; bounce off, no softness beyond
  * the world's. Mass properties are the scene's (BenchBodyInertia: uniform solids).
  *
+ * Motors (b2spinner, b2tumbler): the hinge's dParamVel and dParamFMax; initial velocities (b2smash):
+ * dBodySetLinearVel.
+ *
  * The timed step is what one simulation step costs an ODE user: dSpaceCollide (with contact joint
  * creation), the stepper, and emptying the contact group.
  *
@@ -195,6 +198,7 @@ static void *ode_create(const BenchScene *scene, int quick)
         dBodySetMass(body, &m);
         dBodySetPosition(body, b->pos[0], b->pos[1], b->pos[2]);
         dBodySetQuaternion(body, q);
+        dBodySetLinearVel(body, b->vel[0], b->vel[1], b->vel[2]);
         dBodySetData(body, (void *)(intptr_t)i);
         dGeomSetBody(g, body);
         w->bodies[i] = body;
@@ -218,6 +222,10 @@ static void *ode_create(const BenchScene *scene, int quick)
                  * is safe: ODE ignores a lo above hi only while it stays so. */
                 dJointSetHingeParam(j, dParamLoStop, -bj->hi);
                 dJointSetHingeParam(j, dParamHiStop, -bj->lo);
+            }
+            if (bj->motor) { /* ODE's rate is body1's relative to body2: the motor's sense */
+                dJointSetHingeParam(j, dParamVel, bj->motorSpeed);
+                dJointSetHingeParam(j, dParamFMax, bj->motorTorque);
             }
         }
     }

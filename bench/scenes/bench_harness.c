@@ -16,6 +16,7 @@ typedef struct Options {
     double budget;   /* s of CPU time in timed steps per run */
     int header, list;
     int trace;       /* >= 0: print this body's pose every 60 steps to stderr */
+    const char *set; /* the scenes --list lists and --scenes defaults to */
 } Options;
 
 static double clock_seconds(clockid_t clock)
@@ -37,6 +38,15 @@ static double median(double *v, int n)
         return NAN;
     qsort(v, (size_t)n, sizeof *v, compare_double);
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* The p-th quantile (0..1) of v[0..n) sorted ascending: the nearest rank, ceil(p n). */
+static double quantile_sorted(const double *v, int n, double p)
+{
+    if (n <= 0)
+        return NAN;
+    int rank = (int)ceil(p * n);
+    return v[rank < 1 ? 0 : rank > n ? n - 1 : rank - 1];
 }
 
 /* Is `name` one of the comma-separated `list` (NULL: everything)? */
@@ -122,16 +132,18 @@ static void run_one(const BenchEngine *e, const BenchScene *scene, const Options
     if (quality.nonFinite && !*note)
         note = "non-finite state";
     double mean = done ? spent / done * 1e3 : (double)NAN;
-    double med = median(times, done) * 1e3, cpu = median(cpuTimes, done) * 1e3;
+    double med = median(times, done) * 1e3, cpu = median(cpuTimes, done) * 1e3; /* median() sorts */
+    double p99 = quantile_sorted(times, done, 0.99) * 1e3, p99cpu = quantile_sorted(cpuTimes, done, 0.99) * 1e3;
     const char *standing = quality.standing < 0 ? "-" : quality.standing ? "yes" : "no";
     if (done == steps || quality.nonFinite)
-        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,%.6g,%s,%.4f,%.6g,%s\n", e->engine, e->variant, scene->name,
-               scene->dynamicCount, steps, done, med, mean, cpu, done ? contacts / done : 0.0, scene->qualityName,
-               quality.value, standing, quality.floorPenetration, quality.meanJointError, note);
+        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,%.6g,%s,%.4f,%.6g,%s,%.4f,%.4f\n", e->engine, e->variant,
+               scene->name, scene->dynamicCount, steps, done, med, mean, cpu, done ? contacts / done : 0.0,
+               scene->qualityName, quality.value, standing, quality.floorPenetration, quality.meanJointError, note, p99,
+               p99cpu);
     else /* an incomplete run has no quality figure: it was not measured at the scene's time */
-        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,,-,,,%s\n", e->engine, e->variant, scene->name,
+        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,,-,,,%s,%.4f,%.4f\n", e->engine, e->variant, scene->name,
                scene->dynamicCount, steps, done, med, mean, cpu, done ? contacts / done : 0.0, scene->qualityName,
-               note);
+               note, p99, p99cpu);
     fflush(stdout);
     fprintf(stderr, "  %-6s %-14s %-10s %5d steps, %8.3f ms/step (CPU %.3f), %s\n", e->engine, e->variant,
             scene->name, done, med, cpu, *note ? note : "ok");
@@ -141,7 +153,8 @@ static void run_one(const BenchEngine *e, const BenchScene *scene, const Options
 static int parse_options(int argc, char **argv, Options *opt)
 {
     memset(opt, 0, sizeof *opt);
-    opt->scenes = BENCH_STANDARD_SCENES;
+    opt->scenes = NULL;
+    opt->set = BENCH_STANDARD_SCENES;
     opt->budget = 60;
     opt->trace = -1;
     for (int i = 1; i < argc; i++) {
@@ -156,15 +169,26 @@ static int parse_options(int argc, char **argv, Options *opt)
             opt->budget = atof(a + 9);
         else if (strncmp(a, "--trace=", 8) == 0)
             opt->trace = atoi(a + 8);
+        else if (strcmp(a, "--set=standard") == 0)
+            opt->set = BENCH_STANDARD_SCENES;
+        else if (strcmp(a, "--set=others") == 0)
+            opt->set = BENCH_OTHERS_SCENES;
+        else if (strcmp(a, "--set=all") == 0)
+            opt->set = BENCH_STANDARD_SCENES "," BENCH_OTHERS_SCENES;
         else if (strcmp(a, "--header") == 0)
             opt->header = 1;
         else if (strcmp(a, "--list") == 0)
             opt->list = 1;
         else {
-            fprintf(stderr, "unknown option '%s' (--scenes= --variants= --steps= --budget= --trace= --header --list)\n", a);
+            fprintf(stderr,
+                    "unknown option '%s' (--scenes= --set=standard|others|all --variants= --steps= --budget= --trace= "
+                    "--header --list)\n",
+                    a);
             return 0;
         }
     }
+    if (!opt->scenes)
+        opt->scenes = opt->set;
     if (opt->budget <= 0 || opt->steps < 0) {
         fprintf(stderr, "--budget must be > 0 and --steps >= 0\n");
         return 0;
@@ -180,7 +204,10 @@ int BenchMain(int argc, char **argv, const BenchEngine *engines, int engineCount
     if (opt.list) {
         for (int i = 0; i < engineCount; i++)
             printf("variant %s %s: %s\n", engines[i].engine, engines[i].variant, engines[i].settings);
-        char names[] = BENCH_STANDARD_SCENES;
+        char *names = malloc(strlen(opt.set) + 1);
+        if (!names)
+            return 1;
+        strcpy(names, opt.set);
         for (char *name = strtok(names, ","); name; name = strtok(NULL, ",")) {
             BenchScene *scene = BenchSceneCreate(name);
             if (scene)
@@ -189,6 +216,7 @@ int BenchMain(int argc, char **argv, const BenchEngine *engines, int engineCount
                        scene->qualityName);
             BenchSceneDestroy(scene);
         }
+        free(names);
         return 0;
     }
     if (opt.header)

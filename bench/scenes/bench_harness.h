@@ -8,9 +8,11 @@
  *
  * Output (stdout), one line per run, columns:
  *   engine,variant,scene,bodies,steps,steps_run,median_ms,mean_ms,median_cpu_ms,mean_contacts,
- *   quality_name,quality_value,standing,floor_pen_m,note
+ *   quality_name,quality_value,standing,floor_pen_m,mean_joint_err_m,note,p99_ms,p99_cpu_ms
  * median_ms and mean_ms are wall time (CLOCK_MONOTONIC); median_cpu_ms is the process CPU time of
- * the step (CLOCK_PROCESS_CPUTIME_ID), which a loaded machine inflates far less.
+ * the step (CLOCK_PROCESS_CPUTIME_ID), which a loaded machine inflates far less; p99_ms and p99_cpu_ms
+ * are the 99th percentiles (nearest rank) of the same (after note, so that readers of the older
+ * columns by position are unchanged).
  * standing is yes / no / - (no verdict); note says why a run stopped early (no commas). Progress goes
  * to stderr. */
 #ifndef KARMA_BENCH_HARNESS_H
@@ -24,7 +26,7 @@ extern "C" {
 
 #define BENCH_CSV_HEADER                                                                            \
     "engine,variant,scene,bodies,steps,steps_run,median_ms,mean_ms,median_cpu_ms,mean_contacts,quality_name," \
-    "quality_value,standing,floor_pen_m,mean_joint_err_m,note"
+    "quality_value,standing,floor_pen_m,mean_joint_err_m,note,p99_ms,p99_cpu_ms"
 
 typedef struct BenchEngine {
     const char *engine;   /**< "karma", "ode", "bullet" */
@@ -46,7 +48,9 @@ typedef struct BenchEngine {
 } BenchEngine;
 
 /** Parse the command line and run the selected scenes with the selected engines. Options:
- *    --scenes=a,b,...   scene names (default BENCH_STANDARD_SCENES)
+ *    --scenes=a,b,...   scene names (default: the set's)
+ *    --set=S            standard (BENCH_STANDARD_SCENES, the default), others (BENCH_OTHERS_SCENES) or
+ *                       all: the scenes --list lists and --scenes defaults to
  *    --variants=x,y     engine variants (default: all that the program has)
  *    --steps=N          override every scene's step count
  *    --budget=S         stop a run once its timed steps add up to S seconds of CPU time (default 60)

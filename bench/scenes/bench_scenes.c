@@ -9,6 +9,7 @@
  * Everything an engine needs to build a scene is in the BenchScene data; everything a scene reports
  * is computed here from body poses, so Karma, ODE and Bullet are measured by the same code. */
 #include "bench_scenes.h"
+#include "bench_scenes_build.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -88,14 +89,14 @@ void BenchBodyInertia(const BenchBody *b, double inertia[3])
 
 /* ---- building ---------------------------------------------------------------------------------- */
 
-static const double kIdentity[4] = {1, 0, 0, 0};
-static const double kAxisY[3] = {0, 1, 0};
-static const double kAxisZ[3] = {0, 0, 1};
+const double kIdentity[4] = {1, 0, 0, 0};
+const double kAxisY[3] = {0, 1, 0};
+const double kAxisZ[3] = {0, 0, 1};
 /* A standing capsule: its local z axis turned onto world y (-90 degrees about x). */
 static const double kStandUp[4] = {0.70710678118654752440, -0.70710678118654752440, 0, 0};
 
 /* A new scene called `prefix` when count == standard (the scene of issue 5), else prefix + count. */
-static BenchScene *scene_new(const char *prefix, int count, int standard, int maxBodies, int maxJoints)
+BenchScene *scene_new(const char *prefix, int count, int standard, int maxBodies, int maxJoints)
 {
     BenchScene *s = calloc(1, sizeof *s);
     if (!s)
@@ -119,7 +120,7 @@ static BenchScene *scene_new(const char *prefix, int count, int standard, int ma
     return s;
 }
 
-static int add_body(BenchScene *s, BenchShape shape, double a, double b, double c, double mass,
+int add_body(BenchScene *s, BenchShape shape, double a, double b, double c, double mass,
                     const double pos[3], const double quat[4], int fixed)
 {
     BenchBody *body = &s->bodies[s->bodyCount];
@@ -134,7 +135,7 @@ static int add_body(BenchScene *s, BenchShape shape, double a, double b, double 
     return s->bodyCount++;
 }
 
-static void add_joint(BenchScene *s, BenchJointType type, int b0, int b1, const double anchor[3],
+void add_joint(BenchScene *s, BenchJointType type, int b0, int b1, const double anchor[3],
                       const double axis[3], double lo, double hi)
 {
     BenchJoint *j = &s->joints[s->jointCount++];
@@ -150,7 +151,7 @@ static void add_joint(BenchScene *s, BenchJointType type, int b0, int b1, const 
 }
 
 /* Local anchors from the initial poses, and the dynamic body count. */
-static void scene_finish(BenchScene *s)
+void scene_finish(BenchScene *s)
 {
     s->dynamicCount = 0;
     for (int i = 0; i < s->bodyCount; i++)
@@ -170,7 +171,7 @@ static void scene_finish(BenchScene *s)
 }
 
 /* Deterministic jitter: a 64-bit LCG (Knuth's MMIX constants), uniform in [-1, 1). */
-static double jitter(unsigned long long *state)
+double jitter(unsigned long long *state)
 {
     *state = *state * 6364136223846793005ULL + 1442695040888963407ULL;
     return (double)(*state >> 11) / 4503599627370496.0 - 1.0; /* 2^52: 53 bits → [0, 2) */
@@ -334,7 +335,7 @@ static const RagdollJoint kRagdollJoints[10] = {
 };
 
 /* Lowest height of a body (its deepest point along -y). */
-static double body_lowest_y(const BenchBody *b, const double pos[3], const double quat[4])
+double body_lowest_y(const BenchBody *b, const double pos[3], const double quat[4])
 {
     switch (b->shape) {
     case BENCH_SPHERE:
@@ -369,6 +370,49 @@ static void ragdoll_place(double out[3], const double q[4], const double centre[
     out[2] += place[2];
 }
 
+int add_ragdoll(BenchScene *s, const double q[4], const double place[3], double lowest)
+{
+    const double centre[3] = {0, 1.0, 0}; /* each ragdoll turns about its hips */
+    int first = s->bodyCount;
+    for (int i = 0; i < 11; i++) {
+        const RagdollPart *part = &kRagdollParts[i];
+        double p[3], bq[4];
+        ragdoll_place(p, q, centre, place, part->pos);
+        BenchQuatMultiply(bq, q, part->shape == BENCH_CAPSULE && !part->alongZ ? kStandUp : kIdentity);
+        add_body(s, part->shape, part->radius, part->halfLength, 0, part->mass, p, bq, 0);
+    }
+    for (int i = 0; i < 10; i++) {
+        const RagdollJoint *rj = &kRagdollJoints[i];
+        double a[3], axis[3];
+        ragdoll_place(a, q, centre, place, rj->anchor);
+        BenchQuatRotate(axis, q, rj->axis);
+        add_joint(s, rj->type, first + rj->a, first + rj->b, a, axis, rj->lo, rj->hi);
+    }
+    /* Lift the ragdoll so that its lowest point is `lowest` above the ground. */
+    double low = 1e9;
+    for (int i = first; i < s->bodyCount; i++) {
+        double y = body_lowest_y(&s->bodies[i], s->bodies[i].pos, s->bodies[i].quat);
+        low = y < low ? y : low;
+    }
+    double lift = lowest - low;
+    for (int i = first; i < s->bodyCount; i++)
+        s->bodies[i].pos[1] += lift;
+    for (int i = s->jointCount - 10; i < s->jointCount; i++)
+        s->joints[i].anchor[1] += lift;
+    return first;
+}
+
+void ragdoll_tilt(double q[4], int k)
+{
+    /* A different yaw (golden angle steps, about y) and a forward tilt of 0.3 to 1.5 rad for each
+     * (about z: the face, towards -x, goes down). */
+    double yaw = 2.39996 * k, tilt = 0.3 + 1.2 * fmod(0.6180339887 * k, 1.0);
+    double qYaw[4], qTilt[4];
+    BenchQuatFromAxisAngle(qYaw, kAxisY, yaw);
+    BenchQuatFromAxisAngle(qTilt, kAxisZ, tilt);
+    BenchQuatMultiply(q, qYaw, qTilt);
+}
+
 BenchScene *BenchSceneRagdolls(int count)
 {
     if (count < 1)
@@ -379,42 +423,11 @@ BenchScene *BenchSceneRagdolls(int count)
     int side = 1;
     while (side * side < count)
         side++;
-    const double centre[3] = {0, 1.0, 0}; /* each ragdoll turns about its hips */
     for (int k = 0; k < count; k++) {
-        /* A different yaw (golden angle steps, about y) and a forward tilt of 0.3 to 1.5 rad for each
-         * (about z: the face, towards -x, goes down). */
-        double yaw = 2.39996 * k, tilt = 0.3 + 1.2 * fmod(0.6180339887 * k, 1.0);
-        double qYaw[4], qTilt[4], q[4];
-        BenchQuatFromAxisAngle(qYaw, kAxisY, yaw);
-        BenchQuatFromAxisAngle(qTilt, kAxisZ, tilt);
-        BenchQuatMultiply(q, qYaw, qTilt);
+        double q[4];
+        ragdoll_tilt(q, k);
         double place[3] = {((k / side) - 0.5 * (side - 1)) * 3.0, 0, ((k % side) - 0.5 * (side - 1)) * 3.0};
-        int first = s->bodyCount;
-        for (int i = 0; i < 11; i++) {
-            const RagdollPart *part = &kRagdollParts[i];
-            double p[3], bq[4];
-            ragdoll_place(p, q, centre, place, part->pos);
-            BenchQuatMultiply(bq, q, part->shape == BENCH_CAPSULE && !part->alongZ ? kStandUp : kIdentity);
-            add_body(s, part->shape, part->radius, part->halfLength, 0, part->mass, p, bq, 0);
-        }
-        for (int i = 0; i < 10; i++) {
-            const RagdollJoint *rj = &kRagdollJoints[i];
-            double a[3], axis[3];
-            ragdoll_place(a, q, centre, place, rj->anchor);
-            BenchQuatRotate(axis, q, rj->axis);
-            add_joint(s, rj->type, first + rj->a, first + rj->b, a, axis, rj->lo, rj->hi);
-        }
-        /* Lift the ragdoll so that its lowest point is 0.5 m above the ground. */
-        double lowest = 1e9;
-        for (int i = first; i < s->bodyCount; i++) {
-            double y = body_lowest_y(&s->bodies[i], s->bodies[i].pos, s->bodies[i].quat);
-            lowest = y < lowest ? y : lowest;
-        }
-        double lift = 0.5 - lowest;
-        for (int i = first; i < s->bodyCount; i++)
-            s->bodies[i].pos[1] += lift;
-        for (int i = s->jointCount - 10; i < s->jointCount; i++)
-            s->joints[i].anchor[1] += lift;
+        add_ragdoll(s, q, place, 0.5);
     }
     snprintf(s->description, sizeof s->description,
              "%d ragdolls of 11 bodies (4 ball, 6 limited hinge joints) dropped on the ground, 10 s", count);
@@ -446,7 +459,7 @@ BenchScene *BenchSceneColumn(int boxes)
 }
 
 /* "prefix" or "prefixN" → N (or `fallback` without a number); -1 when the name does not match. */
-static int parse_count(const char *name, const char *prefix, int fallback)
+int parse_count(const char *name, const char *prefix, int fallback)
 {
     size_t n = strlen(prefix);
     if (strncmp(name, prefix, n) != 0)
@@ -475,7 +488,7 @@ BenchScene *BenchSceneCreate(const char *name)
         return BenchSceneRagdolls(n);
     if ((n = parse_count(name, "column", 20)) > 0)
         return BenchSceneColumn(n);
-    return NULL;
+    return BenchSceneOthersCreate(name);
 }
 
 void BenchSceneDestroy(BenchScene *scene)
@@ -531,6 +544,15 @@ static int poses_finite(const BenchScene *scene, const double (*pos)[3], const d
     return 1;
 }
 
+/* Is body i jointed to the world (a motorised wall or bar)? */
+static int held_by_world(const BenchScene *scene, int i)
+{
+    for (int k = 0; k < scene->jointCount; k++)
+        if (scene->joints[k].body[0] == i && scene->joints[k].body[1] < 0)
+            return 1;
+    return 0;
+}
+
 void BenchQualityInit(const BenchScene *scene, BenchQuality *quality)
 {
     (void)scene;
@@ -580,9 +602,30 @@ void BenchQualityFinish(const BenchScene *scene, BenchQuality *quality, const do
     case BENCH_Q_JOINT_ERROR:
         value = quality->maxJointError;
         break;
+    case BENCH_Q_COM_DRIFT: {
+        /* no external force: the centre of mass moves on the line com0 + (momentum / mass) t */
+        double mass = 0, line[3] = {0, 0, 0}, com[3] = {0, 0, 0};
+        double t = quality->observed * scene->step;
+        for (int i = 0; i < scene->bodyCount; i++) {
+            const BenchBody *b = &scene->bodies[i];
+            if (b->fixed)
+                continue;
+            mass += b->mass;
+            for (int k = 0; k < 3; k++) {
+                line[k] += b->mass * (b->pos[k] + b->vel[k] * t);
+                com[k] += b->mass * pos[i][k];
+            }
+        }
+        for (int k = 0; k < 3; k++) {
+            line[k] /= mass;
+            com[k] /= mass;
+        }
+        value = distance(com, line);
+        break;
+    }
     case BENCH_Q_ESCAPED:
         for (int i = 0; i < scene->bodyCount; i++) {
-            if (scene->bodies[i].fixed)
+            if (scene->bodies[i].fixed || held_by_world(scene, i)) /* walls and bars are not the contents */
                 continue;
             int inside = 1;
             for (int k = 0; k < 3; k++)

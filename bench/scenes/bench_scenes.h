@@ -36,6 +36,7 @@ typedef struct BenchBody {
     double pos[3];   /**< initial position of the centre of mass (m) */
     double quat[4];  /**< initial orientation (w, x, y, z), unit */
     int fixed;       /**< 1: static geometry (walls) that never moves; 0: dynamic */
+    double vel[3];   /**< initial linear velocity (m/s); zero in every scene but b2smash */
 } BenchBody;
 
 typedef enum BenchJointType { BENCH_BALL, BENCH_HINGE } BenchJointType;
@@ -54,6 +55,10 @@ typedef struct BenchJoint {
     int limited;        /**< hinge: 1 when lo/hi apply */
     double lo, hi;      /**< hinge limits (rad), lo <= 0 <= hi */
     double local[2][3]; /**< anchor in body[0]'s and body[1]'s frame (filled by the builders) */
+    int motor;          /**< hinge: 1 when a velocity motor drives it */
+    double motorSpeed;  /**< rad/s: the angular velocity about `axis` the motor drives body[0] to, relative
+                             to body[1] (the world for -1) */
+    double motorTorque; /**< N m: the motor's largest torque */
 } BenchJoint;
 
 /** What a scene measures, and how (BenchQualityFinish). */
@@ -61,7 +66,10 @@ typedef enum BenchQualityKind {
     BENCH_Q_MAX_DRIFT,        /**< largest displacement of any dynamic body at the end (m) */
     BENCH_Q_TOP_DISPLACEMENT, /**< displacement of the last (top) body at the end (m) */
     BENCH_Q_JOINT_ERROR,      /**< largest anchor separation of any joint over the run (m) */
-    BENCH_Q_ESCAPED           /**< dynamic bodies outside the container at the end (count) */
+    BENCH_Q_ESCAPED,          /**< dynamic bodies outside the container at the end (count); bodies
+                                   jointed to the world (a tumbler's walls, a spinner's bar) do not count */
+    BENCH_Q_COM_DRIFT         /**< no gravity, no ground: distance of the centre of mass at the end from the
+                                   straight line it must follow (momentum conservation; m) */
 } BenchQualityKind;
 
 typedef struct BenchScene {
@@ -87,7 +95,13 @@ typedef struct BenchScene {
 /** The six scenes of issue 5, in the order of the results table. */
 #define BENCH_STANDARD_SCENES "pyramid20,pyramid40,pile,chain,ragdolls,column"
 
-/** Gravity, step and friction shared by every scene. */
+/** The scene set of others' making (issue 17): 3-D versions of Box2D v3's benchmark scenes and of
+ *  Jolt's performance scenes, all touching where bodies rest (bench/scenes/README.md). */
+#define BENCH_OTHERS_SCENES \
+    "b2pyramid,b2pyramids,b2jointgrid,b2rain,b2smash,b2spinner,b2tumbler,joltpyramid,joltragdolls"
+
+/** Gravity, step and friction shared by every scene (Jolt's scenes: Jolt's default friction 0.2;
+ *  b2spinner: Box2D's 0.1). */
 #define BENCH_GRAVITY_Y  (-9.81)
 #define BENCH_STEP       (1.0 / 60.0)
 #define BENCH_FRICTION   0.6
@@ -113,8 +127,33 @@ BenchScene *BenchSceneRagdolls(int count);
 /** `boxes` unit boxes (1 kg) stacked exactly on top of each other; 1200 steps (20 s). */
 BenchScene *BenchSceneColumn(int boxes);
 
+/* The scene set of others' making (issue 17; sources and mappings in bench/scenes/README.md). */
+/** Box2D's large pyramid: touching unit boxes (1 kg), `base` at the bottom, one deep (x), rows along z. */
+BenchScene *BenchSceneB2Pyramid(int base);
+/** Box2D's many pyramids: `count` touching pyramids of base 10 on a grid on the ground. */
+BenchScene *BenchSceneB2Pyramids(int count);
+/** Box2D's joint grid: `side` × `side` spheres (r 0.4 m) in the y-z plane on hinges about x, 1 m apart,
+ *  seven of the top row hinged to the world; no ground. */
+BenchScene *BenchSceneB2JointGrid(int side);
+/** Box2D's rain: `count` ragdolls in columns of five, dropped from 0.5 m to 40.5 m. */
+BenchScene *BenchSceneB2Rain(int count);
+/** Box2D's smash: without gravity, an 8 m box at 40 m/s into a touching block of `columns` × 12 × 3
+ *  boxes of 0.4 m. */
+BenchScene *BenchSceneB2Smash(int columns);
+/** Box2D's spinner: about `count` capsules, spheres and boxes in a static ring with a motorised bar. */
+BenchScene *BenchSceneB2Spinner(int count);
+/** Box2D's tumbler: `side` × `side` × 4 boxes of 0.25 m in a drum of six walls on motorised hinges. */
+BenchScene *BenchSceneB2Tumbler(int side);
+/** Jolt's pyramid: `height` layers of touching 2 m boxes (8,000 kg), layer i (height - i)², brick bond. */
+BenchScene *BenchSceneJoltPyramid(int height);
+/** Jolt's ragdolls: `count` ragdolls lying in piles of ten, 0.6 m apart, piles 4 m apart. */
+BenchScene *BenchSceneJoltRagdolls(int count);
+
 /** A scene by name: pyramid<N>, pile[<N>] (N spheres and N boxes, default 500), chain[<N>] (default
- *  100), ragdolls[<N>] (default 100), column[<N>] (default 20). NULL for an unknown name. */
+ *  100), ragdolls[<N>] (default 100), column[<N>] (default 20), and the set of others' making: b2pyramid[<base>] (40),
+ *  b2pyramids[<count>] (12), b2jointgrid[<side>] (20), b2rain[<count>] (45), b2smash[<columns>] (12),
+ *  b2spinner[<count>] (450), b2tumbler[<side>] (10), joltpyramid[<height>] (10), joltragdolls[<count>]
+ *  (40). NULL for an unknown name. */
 BenchScene *BenchSceneCreate(const char *name);
 void BenchSceneDestroy(BenchScene *scene);
 

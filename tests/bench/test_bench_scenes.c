@@ -458,10 +458,10 @@ static void inertia_by_integration(void **state)
 {
     (void)state;
     const BenchBody bodies[] = {
-        {BENCH_BOX, {0.5, 0.3, 0.2}, 2.0, {0, 0, 0}, {1, 0, 0, 0}, 0},
-        {BENCH_SPHERE, {0.5, 0, 0}, 1.0, {0, 0, 0}, {1, 0, 0, 0}, 0},
-        {BENCH_CAPSULE, {0.1, 0.4, 0}, 1.0, {0, 0, 0}, {1, 0, 0, 0}, 0},
-        {BENCH_CAPSULE, {0.07, 0.16, 0}, 7.0, {0, 0, 0}, {1, 0, 0, 0}, 0},
+        {BENCH_BOX, {0.5, 0.3, 0.2}, 2.0, {0, 0, 0}, {1, 0, 0, 0}, 0, {0, 0, 0}},
+        {BENCH_SPHERE, {0.5, 0, 0}, 1.0, {0, 0, 0}, {1, 0, 0, 0}, 0, {0, 0, 0}},
+        {BENCH_CAPSULE, {0.1, 0.4, 0}, 1.0, {0, 0, 0}, {1, 0, 0, 0}, 0, {0, 0, 0}},
+        {BENCH_CAPSULE, {0.07, 0.16, 0}, 7.0, {0, 0, 0}, {1, 0, 0, 0}, 0, {0, 0, 0}},
     };
     const int n = 120;
     for (size_t k = 0; k < sizeof bodies / sizeof bodies[0]; k++) {
@@ -499,6 +499,308 @@ static void inertia_by_integration(void **state)
     }
 }
 
+/* ---- the scene set of others' making (issue 17) -------------------------------------------------- */
+
+/* Smallest gap between dynamic bodies (fixed ones left out: the spinner's ring is of turned boxes,
+ * whose AABBs the round check cannot use) and between them and the ground. */
+static double smallest_dynamic_gap(const BenchScene *s)
+{
+    BenchScene copy = *s;
+    BenchBody *bodies = malloc(sizeof *bodies * (size_t)s->bodyCount);
+    int *map = malloc(sizeof *map * (size_t)s->bodyCount);
+    BenchJoint *joints = malloc(sizeof *joints * (size_t)(s->jointCount + 1));
+    assert_non_null(bodies);
+    assert_non_null(map);
+    assert_non_null(joints);
+    copy.bodyCount = 0;
+    for (int i = 0; i < s->bodyCount; i++) {
+        map[i] = -1;
+        if (!s->bodies[i].fixed) {
+            map[i] = copy.bodyCount;
+            bodies[copy.bodyCount++] = s->bodies[i];
+        }
+    }
+    for (int k = 0; k < s->jointCount; k++) {
+        joints[k] = s->joints[k];
+        for (int n = 0; n < 2; n++)
+            joints[k].body[n] = joints[k].body[n] >= 0 ? map[joints[k].body[n]] : -1;
+    }
+    copy.bodies = bodies;
+    copy.joints = joints;
+    double gap = smallest_gap(&copy);
+    if (s->hasGround)
+        gap = fmin(gap, lowest_point(s));
+    free(bodies), free(map), free(joints);
+    return gap;
+}
+
+/* Every unrotated box that does not stand on the ground stands on another box: its bottom face at
+ * the other's top face (within `tol`) over an area > 0; none overlaps another (their AABBs are exact). */
+static int boxes_rest_on_each_other(const BenchScene *s, int first, double tol)
+{
+    for (int a = first; a < s->bodyCount; a++) {
+        const BenchBody *A = &s->bodies[a];
+        double alo[3], ahi[3];
+        body_aabb(A, alo, ahi);
+        if (s->hasGround && fabs(alo[1]) <= tol)
+            continue;
+        int supported = 0;
+        for (int b = first; b < s->bodyCount && !supported; b++) {
+            double blo[3], bhi[3];
+            body_aabb(&s->bodies[b], blo, bhi);
+            supported = b != a && fabs(alo[1] - bhi[1]) <= tol && fmin(ahi[0], bhi[0]) - fmax(alo[0], blo[0]) > tol &&
+                        fmin(ahi[2], bhi[2]) - fmax(alo[2], blo[2]) > tol;
+        }
+        if (!supported)
+            return 0;
+    }
+    return 1;
+}
+
+/* Every box of a row touches its neighbours: the nearest box at the same height, when one is within
+ * 1.5 edges, is exactly one edge away (centre to centre, within `tol`). */
+static int rows_touch(const BenchScene *s, double tol)
+{
+    for (int a = 0; a < s->bodyCount; a++) {
+        double nearest = 1e9, edge = 2 * s->bodies[a].size[0];
+        for (int b = 0; b < s->bodyCount; b++)
+            if (b != a && fabs(s->bodies[b].pos[1] - s->bodies[a].pos[1]) < tol)
+                nearest = fmin(nearest, hypot(s->bodies[b].pos[0] - s->bodies[a].pos[0],
+                                              s->bodies[b].pos[2] - s->bodies[a].pos[2]));
+        if (nearest < 1.5 * edge && fabs(nearest - edge) > tol)
+            return 0;
+    }
+    return 1;
+}
+
+static double total_mass(const BenchScene *s, int first, int last)
+{
+    double m = 0;
+    for (int i = first; i < last; i++)
+        m += s->bodies[i].mass;
+    return m;
+}
+
+/* The set builds at its published sizes, with the sources' counts, densities, joints and motors (every
+ * engine is handed these same numbers: counts, masses and BenchBodyInertia's moments), valid unit
+ * quaternions, and nothing overlapping at the start. */
+static void others_scenes(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *name;
+        int dynamic, fixed, joints, ground;
+        double friction, mass; /* total dynamic mass (kg) */
+    } expect[] = {
+        {"b2pyramid", 820, 0, 0, 1, 0.6, 820},
+        {"b2pyramids", 660, 0, 0, 1, 0.6, 660},
+        /* 400 spheres less the 7 static ones; 2 x 20 x 19 joints less the 6 between static bodies */
+        {"b2jointgrid", 393, 0, 754, 0, 0.6, 393 * 4.0 / 3.0 * 3.14159265358979323846 * 0.064},
+        {"b2rain", 495, 0, 450, 1, 0.6, 45 * 58.0},
+        /* an 8 m x 8 m x 1.2 m box of density 8; 432 boxes of 0.4 m, density 1 */
+        {"b2smash", 433, 0, 0, 0, 0.6, 8 * 8 * 8 * 1.2 + 432 * 0.064},
+        {"b2spinner", 451, 34, 1, 0, 0.1, -1},
+        /* walls of density 50: 2 x (2 x 7 x 0.5) + 2 x (2 x 0.5 x 5.9) + 2 x (0.5 x 7 x 7) m3; 400 boxes of 0.25 m */
+        {"b2tumbler", 406, 0, 6, 0, 0.6, 50 * (14 + 11.8 + 49) + 400 * 0.015625},
+        {"joltpyramid", 385, 0, 0, 1, 0.2, 385 * 8000.0},
+        {"joltragdolls", 440, 0, 400, 1, 0.2, 40 * 58.0},
+    };
+    char names[] = BENCH_OTHERS_SCENES;
+    int k = 0;
+    for (char *name = strtok(names, ","); name; name = strtok(NULL, ","), k++) {
+        assert_true(k < 9);
+        BenchScene *s = BenchSceneCreate(name);
+        assert_non_null(s);
+        assert_string_equal(s->name, expect[k].name);
+        assert_int_equal(s->dynamicCount, expect[k].dynamic);
+        assert_int_equal(s->bodyCount - s->dynamicCount, expect[k].fixed);
+        assert_int_equal(s->jointCount, expect[k].joints);
+        assert_int_equal(s->hasGround, expect[k].ground);
+        assert_int_equal(s->steps, 600);
+        assert_near(s->step, 1.0 / 60, 1e-15);
+        assert_near(s->friction, expect[k].friction, 0);
+        assert_near(s->gravity[1], strcmp(name, "b2smash") == 0 ? 0 : -9.81, 0); /* y up */
+        assert_near(s->gravity[0], 0, 0);
+        assert_near(s->gravity[2], 0, 0);
+        if (expect[k].mass > 0)
+            assert_rel(total_mass(s, 0, s->bodyCount), expect[k].mass, 1e-12);
+        for (int i = 0; i < s->bodyCount; i++) {
+            const BenchBody *b = &s->bodies[i];
+            double n = sqrt(b->quat[0] * b->quat[0] + b->quat[1] * b->quat[1] + b->quat[2] * b->quat[2] +
+                            b->quat[3] * b->quat[3]);
+            assert_near(n, 1, 1e-12);
+            assert_true(b->size[0] > 0);
+            assert_true(b->fixed ? b->mass == 0 : b->mass > 0);
+        }
+        double gap = smallest_dynamic_gap(s);
+        print_message("%-12s %4d bodies %4d joints: smallest gap %.4f m, mass %.6g kg\n", s->name, s->dynamicCount,
+                      s->jointCount, gap, total_mass(s, 0, s->bodyCount));
+        assert_true(gap >= -1e-12);
+        BenchSceneDestroy(s);
+    }
+    assert_int_equal(k, 9);
+}
+
+/* Where bodies rest at the start they touch: the pyramids and Jolt's pyramid stand box on box (gap 0,
+ * nothing between), smash's block is a solid of touching boxes; the bench's own pyramids keep their
+ * 0.05 m gaps, so the check can tell the difference. */
+static void others_resting_bodies_touch(void **state)
+{
+    (void)state;
+    const char *stacks[] = {"b2pyramid12", "b2pyramids5", "joltpyramid5"};
+    for (int k = 0; k < 3; k++) {
+        BenchScene *s = BenchSceneCreate(stacks[k]);
+        assert_non_null(s);
+        assert_true(boxes_rest_on_each_other(s, 0, 1e-12));
+        assert_near(smallest_dynamic_gap(s), 0, 1e-12);
+        assert_true(rows_touch(s, 1e-12));
+        BenchSceneDestroy(s);
+    }
+    BenchScene *s = BenchSceneCreate("b2smash2");
+    assert_non_null(s);
+    assert_near(s->bodies[0].vel[2], 40, 0);
+    for (int a = 1; a < s->bodyCount; a++) { /* six face neighbours where the block goes on */
+        int touching = 0;
+        for (int b = 1; b < s->bodyCount; b++) {
+            double d[3] = {s->bodies[b].pos[0] - s->bodies[a].pos[0], s->bodies[b].pos[1] - s->bodies[a].pos[1],
+                           s->bodies[b].pos[2] - s->bodies[a].pos[2]};
+            touching += fabs(dot3(d, d) - 0.16) < 1e-12;
+        }
+        assert_true(touching >= 3);
+    }
+    assert_near(smallest_dynamic_gap(s), 0, 1e-12);
+    BenchSceneDestroy(s);
+    s = BenchSceneCreate("pyramid5"); /* the bench's own: rows with 0.05 m gaps */
+    assert_non_null(s);
+    assert_true(boxes_rest_on_each_other(s, 0, 1e-12));
+    assert_false(rows_touch(s, 1e-12));
+    BenchSceneDestroy(s);
+}
+
+/* y is up in the new scenes too: stacks rise along y from the ground, the joint grid hangs from its top
+ * row, the rain's columns are 10 m apart in height, the motorised drum and bar turn about a horizontal
+ * axis above the ground, and the spinner's contents sit inside its ring, in its lower half. */
+static void others_are_y_up(void **state)
+{
+    (void)state;
+    BenchScene *s = BenchSceneCreate("b2pyramid4");
+    assert_non_null(s);
+    assert_near(s->bodies[0].pos[1], 0.5, 0);
+    assert_near(s->bodies[s->bodyCount - 1].pos[1], 3.5, 0);
+    assert_near(s->bodies[s->bodyCount - 1].pos[2], 0, 1e-15);
+    BenchSceneDestroy(s);
+    s = BenchSceneCreate("joltpyramid3");
+    assert_non_null(s);
+    assert_int_equal(s->dynamicCount, 9 + 4 + 1);
+    assert_near(s->bodies[0].pos[1], 1, 0);
+    assert_near(s->bodies[s->bodyCount - 1].pos[1], 5, 0);
+    BenchSceneDestroy(s);
+    s = BenchSceneCreate("b2jointgrid10");
+    assert_non_null(s);
+    double top = -1e9;
+    for (int i = 0; i < s->bodyCount; i++)
+        top = fmax(top, s->bodies[i].pos[1]);
+    int world = 0;
+    for (int k = 0; k < s->jointCount; k++) {
+        const BenchJoint *j = &s->joints[k];
+        assert_near(j->axis[0], 1, 0); /* Box2D's revolute joints: hinges about the depth axis */
+        if (j->body[1] < 0) {
+            world++;
+            assert_true(j->anchor[1] >= top - 0.5 - 1e-12); /* at the top row, or just below it */
+        }
+    }
+    assert_int_equal(world, 7 + 2); /* below each static body, and beside the two ends of the static run */
+    BenchSceneDestroy(s);
+    s = BenchSceneCreate("b2rain10");
+    assert_non_null(s);
+    for (int k = 0; k < 10; k++) {
+        double lowest = 1e9;
+        for (int i = 11 * k; i < 11 * k + 11; i++) {
+            double lo[3], hi[3];
+            body_aabb(&s->bodies[i], lo, hi);
+            lowest = fmin(lowest, lo[1]);
+        }
+        assert_near(lowest, 0.5 + 10 * (k % 5), 1e-9);
+    }
+    BenchSceneDestroy(s);
+    s = BenchSceneCreate("b2tumbler3");
+    assert_non_null(s);
+    assert_int_equal(s->jointCount, 6);
+    for (int k = 0; k < 6; k++) {
+        const BenchJoint *j = &s->joints[k];
+        assert_int_equal(j->body[1], -1);
+        assert_true(j->motor);
+        assert_near(j->motorSpeed, 25 * 3.14159265358979323846 / 180, 1e-15);
+        assert_near(j->axis[0], 1, 0);
+        assert_true(j->anchor[1] > 0);
+    }
+    for (int i = 6; i < s->bodyCount; i++) /* the contents inside the drum, around its axle */
+        assert_true(fabs(s->bodies[i].pos[1] - s->joints[0].anchor[1]) < 3 &&
+                    fabs(s->bodies[i].pos[2]) < 3 && fabs(s->bodies[i].pos[0]) < 1);
+    BenchSceneDestroy(s);
+    s = BenchSceneCreate("b2spinner");
+    assert_non_null(s);
+    assert_int_equal(s->jointCount, 1);
+    const BenchJoint *bar = &s->joints[0];
+    assert_true(bar->motor);
+    assert_near(bar->motorSpeed, 5, 0);
+    const BenchBody *barBody = &s->bodies[bar->body[0]];
+    assert_true(barBody->size[1] > barBody->size[2]); /* standing: long along y */
+    assert_near(barBody->pos[1] - barBody->size[1], 0.5, 1e-12);
+    for (int i = 0; i < s->bodyCount; i++) {
+        const BenchBody *b = &s->bodies[i];
+        if (b->fixed || i == bar->body[0])
+            continue;
+        /* inside the ring (radius 10 about (y, z) = (10, 0)), in its lower part, clear of the bar */
+        assert_true(hypot(b->pos[1] - 10, b->pos[2]) + 0.62 < 10);
+        assert_true(b->pos[1] < 12.5);
+        assert_true(fabs(b->pos[2]) - 0.5 > barBody->size[2]);
+        assert_true(fabs(b->pos[0]) + 0.35 < s->container[1][0]);
+    }
+    BenchSceneDestroy(s);
+}
+
+/* The new figures: smash's centre of mass must follow its straight line (0 for poses on that line,
+ * the offset for poses moved off it), and the escape count ignores bodies held by the world (the
+ * tumbler's walls) but counts a box outside the drum. */
+static void others_quality_figures(void **state)
+{
+    (void)state;
+    double (*pos)[3], (*quat)[4];
+    BenchQuality q;
+    BenchScene *s = start("b2smash2", &q, &pos, &quat);
+    const int steps = 30;
+    for (int n = 0; n < steps; n++)
+        BenchQualityObserve(s, &q, (const double(*)[3])pos, (const double(*)[4])quat);
+    double t = steps * s->step, mass = total_mass(s, 0, s->bodyCount);
+    /* all the momentum handed from the projectile to the block: the centre of mass moves alike */
+    for (int i = 0; i < s->bodyCount; i++)
+        pos[i][2] += s->bodies[0].mass * 40 * t / mass;
+    finish(s, &q, pos, quat, 1);
+    assert_near(q.value, 0, 1e-9);
+    for (int i = 0; i < s->bodyCount; i++)
+        pos[i][1] += 0.25;
+    finish(s, &q, pos, quat, 1);
+    assert_near(q.value, 0.25, 1e-9);
+    free(pos), free(quat);
+    BenchSceneDestroy(s);
+
+    s = start("b2tumbler2", &q, &pos, &quat);
+    for (int i = 0; i < 6; i++) /* the walls turned by 90 degrees: they stay out of the count */
+        pos[i][2] += 10;
+    BenchQualityObserve(s, &q, (const double(*)[3])pos, (const double(*)[4])quat);
+    finish(s, &q, pos, quat, 1);
+    assert_near(q.value, 0, 0);
+    pos[s->bodyCount - 1][1] = -5;
+    finish(s, &q, pos, quat, 1);
+    assert_near(q.value, 1, 0);
+    free(pos), free(quat);
+    BenchSceneDestroy(s);
+    assert_null(BenchSceneCreate("b2pyramid0"));
+    assert_null(BenchSceneCreate("b2tumbler20")); /* would not fit in the drum */
+    assert_null(BenchSceneCreate("joltragdolls-1"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -506,6 +808,8 @@ int main(void)
         cmocka_unit_test(joints_agree_at_start), cmocka_unit_test(joint_error_is_a_distance),
         cmocka_unit_test(quality_figures),     cmocka_unit_test(quaternions),
         cmocka_unit_test(inertia_by_integration), cmocka_unit_test(scenes_are_y_up),
+        cmocka_unit_test(others_scenes),       cmocka_unit_test(others_resting_bodies_touch),
+        cmocka_unit_test(others_are_y_up),     cmocka_unit_test(others_quality_figures),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
