@@ -138,6 +138,8 @@ static void run_one(const BenchEngine *e, const BenchScene *scene, const Options
     free(pos), free(quat), free(times), free(cpuTimes);
 }
 
+int BenchThreads = 1;
+
 static int parse_options(int argc, char **argv, Options *opt)
 {
     memset(opt, 0, sizeof *opt);
@@ -156,17 +158,19 @@ static int parse_options(int argc, char **argv, Options *opt)
             opt->budget = atof(a + 9);
         else if (strncmp(a, "--trace=", 8) == 0)
             opt->trace = atoi(a + 8);
+        else if (strncmp(a, "--threads=", 10) == 0)
+            BenchThreads = atoi(a + 10);
         else if (strcmp(a, "--header") == 0)
             opt->header = 1;
         else if (strcmp(a, "--list") == 0)
             opt->list = 1;
         else {
-            fprintf(stderr, "unknown option '%s' (--scenes= --variants= --steps= --budget= --trace= --header --list)\n", a);
+            fprintf(stderr, "unknown option '%s' (--scenes= --variants= --steps= --budget= --trace= --threads= --header --list)\n", a);
             return 0;
         }
     }
-    if (opt->budget <= 0 || opt->steps < 0) {
-        fprintf(stderr, "--budget must be > 0 and --steps >= 0\n");
+    if (opt->budget <= 0 || opt->steps < 0 || BenchThreads < 1) {
+        fprintf(stderr, "--budget must be > 0, --steps >= 0 and --threads >= 1\n");
         return 0;
     }
     return 1;
