@@ -49,7 +49,7 @@
     X(ME_ERR_MASS_SCALE,            132, ME_LEVEL_WARNING, "a mass is far (over 100x) from the world's massScale: contacts and joints turn soft; set massScale to a typical mass (reported once per world)") \
     X(ME_ERR_TASK_CALLBACK,        140, ME_LEVEL_WARNING, "a task system was given without its enqueue or finish callback; the world keeps its task system") \
     X(ME_ERR_WORKER_COUNT,         141, ME_LEVEL_WARNING, "a worker or thread count is below 1 or above MDT_MAX_WORKERS (64); nothing changed") \
-    X(ME_ERR_TASK_WORKER,          142, ME_LEVEL_WARNING, "the task system left work undone or gave a worker index outside [0, workerCount): that work ran on the stepping thread") \
+    X(ME_ERR_TASK_WORKER,          142, ME_LEVEL_WARNING, "the task system left work undone or gave a worker index outside 0 to workerCount - 1: that work ran on the stepping thread") \
     X(ME_ERR_THREAD_START,         143, ME_LEVEL_WARNING, "a thread of a thread pool could not be started; no pool was made")
 
 #define ME_ERROR_LIST_KEA(X) \

@@ -13,7 +13,7 @@ static void sizeWorkspaces(MdtWorldData *w, int workers)
 {
     size_t one = MeChunkGetMaxSize(&w->keaChunk) / (size_t)(w->workerCount > 0 ? w->workerCount : 1);
     if (one > 0 && workers > 1)
-        (void)MeChunkSetAuto(&w->keaChunk, one * (size_t)workers);
+        (void)MeChunkSetAuto(&w->keaChunk, (one + 64) * (size_t)workers); /* 64: cache-line padding */
 }
 
 void MdtWorldSetTaskSystem(MdtWorldID id, int workerCount, MdtEnqueueTaskCBPtr enqueue, MdtFinishTaskCBPtr finish,
