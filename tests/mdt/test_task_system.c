@@ -3,6 +3,7 @@
  * the serial step's state bit for bit. The job systems here run on the calling thread, so that each
  * ordering is exactly the one written (tests/threads/test_threaded_step.c runs real threads). */
 #include "karma_test.h"
+#include "karma_partitions.h"
 
 #include <string.h>
 
@@ -17,42 +18,8 @@
 /* ---- the scene: stacks and chains side by side, so the step has many partitions ----------------- */
 static MstUniverseID buildScene(void)
 {
-    static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 0, -1, 0}, {0, 1, 0, 0}, {0, 0, 0, 1}}; /* normal +y */
-    MstUniverseSizes sizes = MstUniverseDefaultSizes;
-    sizes.dynamicBodiesMaxCount = STACKS * STACK_BOXES + CHAINS * CHAIN_LINKS;
-    sizes.collisionModelsMaxCount = STACKS * STACK_BOXES + 1;
-    sizes.dynamicConstraintsMaxCount = 400;
-    sizes.collisionPairsMaxCount = 200;
-    MstUniverseID u = MstUniverseCreate(&sizes);
+    MstUniverseID u = karma_partitions_scene(STACKS, STACK_BOXES, CHAINS, CHAIN_LINKS);
     assert_non_null(u);
-    MdtWorldID w = MstUniverseGetWorld(u);
-    MdtWorldSetGravity(w, 0, ME_R(-9.81), 0);
-    MdtWorldSetAutoDisable(w, MEFALSE); /* every partition awake, every step */
-    McdFrameworkID fw = MstUniverseGetFramework(u);
-    assert_non_null(MstFixedModelCreate(u, McdPlaneCreate(fw), groundTM));
-    McdGeometryID box = McdBoxCreate(fw, ME_R(0.5), ME_R(0.5), ME_R(0.5));
-    for (int s = 0; s < STACKS; s++)
-        for (int k = 0; k < STACK_BOXES; k++) {
-            McdModelID m = MstModelAndBodyCreate(u, box, ME_R(1.0));
-            assert_non_null(m);
-            /* a little offset per level, so the stacks lean and slide */
-            MdtBodySetPosition(McdModelGetBody(m), ME_R(2.0) * (MeReal)s + ME_R(0.07) * (MeReal)k,
-                               ME_R(0.26) + ME_R(0.52) * (MeReal)k, ME_R(0.03) * (MeReal)(s % 3));
-        }
-    for (int c = 0; c < CHAINS; c++) {
-        MdtBodyID previous = NULL;
-        for (int k = 0; k < CHAIN_LINKS; k++) {
-            MdtBodyID b = MdtBodyCreate(w);
-            assert_non_null(b);
-            MdtBodySetPosition(b, ME_R(0.4) * (MeReal)(k + 1), ME_R(5.0), ME_R(4.0) + ME_R(2.0) * (MeReal)c);
-            MdtBodyEnable(b);
-            MdtBSJointID j = MdtBSJointCreate(w);
-            MdtBSJointSetBodies(j, b, previous);
-            MdtBSJointSetPosition(j, ME_R(0.4) * (MeReal)k, ME_R(5.0), ME_R(4.0) + ME_R(2.0) * (MeReal)c);
-            MdtConstraintEnable(MdtBSJointQuaConstraint(j));
-            previous = b;
-        }
-    }
     return u;
 }
 
@@ -65,6 +32,15 @@ static uint64_t runScene(MstUniverseID u, MdtSolverStats *last)
         hash = karma_hash_world(hash, MstUniverseGetWorld(u));
     }
     MdtWorldGetSolverStats(MstUniverseGetWorld(u), last);
+    return hash;
+}
+
+/* The scene stepped without a task system. */
+static uint64_t runSerial(MdtSolverStats *last)
+{
+    MstUniverseID u = buildScene();
+    uint64_t hash = runScene(u, last);
+    MstUniverseDestroy(u);
     return hash;
 }
 
@@ -127,9 +103,8 @@ static void any_job_system_gives_the_serial_state_bit_for_bit(void **state)
     (void)state;
     karma_capture_messages();
     MdtSolverStats serialStats, stats;
-    MstUniverseID u = buildScene();
-    uint64_t serial = runScene(u, &serialStats);
-    MstUniverseDestroy(u);
+    MstUniverseID u;
+    uint64_t serial = runSerial(&serialStats);
     /* The scene is many partitions, solved by Kea (each stack and each chain its own). */
     assert_true(serialStats.partitions >= STACKS + CHAINS - 2);
     assert_true(serialStats.rows > 0);
@@ -166,9 +141,8 @@ static void work_left_undone_is_done_on_the_stepping_thread_and_reported(void **
     (void)state;
     karma_capture_messages();
     MdtSolverStats serialStats, stats;
-    MstUniverseID u = buildScene();
-    uint64_t serial = runScene(u, &serialStats);
-    MstUniverseDestroy(u);
+    MstUniverseID u;
+    uint64_t serial = runSerial(&serialStats);
 
     const int modes[] = {WORKER_OUT_OF_RANGE, HALF_LEFT_OUT};
     for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {

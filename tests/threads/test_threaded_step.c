@@ -1,9 +1,10 @@
 /* The threaded step on the default pool (karma_threads, MeThreadPool.h; issue 17 point 5): a scene of
  * many partitions (stacks falling and sliding, jointed chains swinging) stepped on pools of 2, 3 and
  * 4 threads ends in exactly the serial step's state, every step; two universes stepped at the same
- * time on two threads, each on a pool of its own, too. Run under ThreadSanitizer by the `tsan`
+ * time on two threads, each on a pool of its own or both on one, too. Run under ThreadSanitizer by the `tsan`
  * configuration of tests/run_configs.sh: the proof that the partitions' solves share no data. */
 #include "karma_test.h"
+#include "karma_partitions.h"
 
 #include <string.h>
 #include <pthread.h>
@@ -20,58 +21,18 @@
 
 static MstUniverseID buildScene(void)
 {
-    static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 0, -1, 0}, {0, 1, 0, 0}, {0, 0, 0, 1}}; /* normal +y */
-    MstUniverseSizes sizes = MstUniverseDefaultSizes;
-    sizes.dynamicBodiesMaxCount = STACKS * STACK_BOXES + CHAINS * CHAIN_LINKS;
-    sizes.collisionModelsMaxCount = STACKS * STACK_BOXES + 1;
-    sizes.dynamicConstraintsMaxCount = 600;
-    sizes.collisionPairsMaxCount = 300;
-    MstUniverseID u = MstUniverseCreate(&sizes);
-    if (!u)
-        return NULL;
-    MdtWorldID w = MstUniverseGetWorld(u);
-    MdtWorldSetGravity(w, 0, ME_R(-9.81), 0);
-    MdtWorldSetAutoDisable(w, MEFALSE); /* every partition awake, every step */
-    McdFrameworkID fw = MstUniverseGetFramework(u);
-    MstFixedModelCreate(u, McdPlaneCreate(fw), groundTM);
-    McdGeometryID box = McdBoxCreate(fw, ME_R(0.5), ME_R(0.5), ME_R(0.5));
-    for (int s = 0; s < STACKS; s++)
-        for (int k = 0; k < STACK_BOXES; k++) {
-            McdModelID m = MstModelAndBodyCreate(u, box, ME_R(1.0));
-            if (!m)
-                return NULL;
-            MdtBodySetPosition(McdModelGetBody(m), ME_R(2.0) * (MeReal)s + ME_R(0.09) * (MeReal)k,
-                               ME_R(0.3) + ME_R(0.55) * (MeReal)k, ME_R(0.04) * (MeReal)(s % 3));
-        }
-    for (int c = 0; c < CHAINS; c++) {
-        MdtBodyID previous = NULL;
-        for (int k = 0; k < CHAIN_LINKS; k++) {
-            MdtBodyID b = MdtBodyCreate(w);
-            MdtBodySetPosition(b, ME_R(0.4) * (MeReal)(k + 1), ME_R(5.0), ME_R(4.0) + ME_R(2.0) * (MeReal)c);
-            MdtBodyEnable(b);
-            MdtBSJointID j = MdtBSJointCreate(w);
-            MdtBSJointSetBodies(j, b, previous);
-            MdtBSJointSetPosition(j, ME_R(0.4) * (MeReal)k, ME_R(5.0), ME_R(4.0) + ME_R(2.0) * (MeReal)c);
-            MdtConstraintEnable(MdtBSJointQuaConstraint(j));
-            previous = b;
-        }
-    }
-    return u;
+    return karma_partitions_scene(STACKS, STACK_BOXES, CHAINS, CHAIN_LINKS);
 }
 
-/* The hash of every step's state (0 when the scene could not be built); `threads` > 1: on a pool. */
-static uint64_t runScene(int threads)
+/* The hash of every step's state (0 when the scene could not be built), on `pool` (NULL: serial). */
+static uint64_t runSceneOn(MeThreadPool *pool)
 {
     MstUniverseID u = buildScene();
     if (!u)
         return 0;
-    MeThreadPool *pool = NULL;
-    if (threads > 1) {
-        pool = MeThreadPoolCreate(threads);
-        if (!pool)
-            return 0;
+    if (pool) {
         MeThreadPoolAttachUniverse(pool, u);
-        if (MdtWorldGetWorkerCount(MstUniverseGetWorld(u)) != threads)
+        if (MdtWorldGetWorkerCount(MstUniverseGetWorld(u)) != MeThreadPoolGetThreadCount(pool))
             return 0;
     }
     uint64_t hash = KARMA_HASH_INIT;
@@ -80,6 +41,16 @@ static uint64_t runScene(int threads)
         hash = karma_hash_world(hash, MstUniverseGetWorld(u));
     }
     MstUniverseDestroy(u);
+    return hash;
+}
+
+/* As runSceneOn, on a pool of `threads` of its own (1: serial). */
+static uint64_t runScene(int threads)
+{
+    MeThreadPool *pool = threads > 1 ? MeThreadPoolCreate(threads) : NULL;
+    if (threads > 1 && !pool)
+        return 0;
+    uint64_t hash = runSceneOn(pool);
     MeThreadPoolDestroy(pool);
     return hash;
 }
@@ -97,13 +68,14 @@ static void pools_of_any_size_give_the_serial_state(void **state)
 
 typedef struct Run {
     int threads;
+    MeThreadPool *shared; /* a pool shared with the other run, or NULL: one of its own */
     uint64_t hash;
 } Run;
 
 static void *runOnThread(void *arg)
 {
     Run *r = arg;
-    r->hash = runScene(r->threads);
+    r->hash = r->shared ? runSceneOn(r->shared) : runScene(r->threads);
     return NULL;
 }
 
@@ -115,12 +87,33 @@ static void two_universes_on_two_threads_each_with_a_pool(void **state)
     MeSetMessageHandler(NULL, NULL, NULL);
     MeSetMessageLevel(ME_LEVEL_WARNING);
     uint64_t serial = runScene(1);
-    Run runs[2] = {{2, 0}, {3, 0}};
+    Run runs[2] = {{2, NULL, 0}, {3, NULL, 0}};
     pthread_t t[2];
     for (int i = 0; i < 2; i++)
         assert_int_equal(pthread_create(&t[i], NULL, runOnThread, &runs[i]), 0);
     for (int i = 0; i < 2; i++)
         assert_int_equal(pthread_join(t[i], NULL), 0);
+    for (int i = 0; i < 2; i++)
+        assert_true(runs[i].hash == serial);
+}
+
+/* Two universes stepped at once on two threads that share one pool: each task finds the pool busy
+ * at times and then runs on its own thread; the states are still the serial ones. */
+static void two_universes_on_two_threads_sharing_a_pool(void **state)
+{
+    (void)state;
+    MeSetMessageHandler(NULL, NULL, NULL);
+    MeSetMessageLevel(ME_LEVEL_WARNING);
+    uint64_t serial = runScene(1);
+    MeThreadPool *pool = MeThreadPoolCreate(2);
+    assert_non_null(pool);
+    Run runs[2] = {{2, pool, 0}, {2, pool, 0}};
+    pthread_t t[2];
+    for (int i = 0; i < 2; i++)
+        assert_int_equal(pthread_create(&t[i], NULL, runOnThread, &runs[i]), 0);
+    for (int i = 0; i < 2; i++)
+        assert_int_equal(pthread_join(t[i], NULL), 0);
+    MeThreadPoolDestroy(pool);
     for (int i = 0; i < 2; i++)
         assert_true(runs[i].hash == serial);
 }
@@ -153,6 +146,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(pools_of_any_size_give_the_serial_state),
         cmocka_unit_test(two_universes_on_two_threads_each_with_a_pool),
+        cmocka_unit_test(two_universes_on_two_threads_sharing_a_pool),
         cmocka_unit_test(bad_pools_are_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -3,8 +3,9 @@
  * with a job system of its own plugs that in with MdtWorldSetTaskSystem instead (decision K-parallel).
  *
  * A pool of N threads is the calling thread (worker 0) and N - 1 threads it starts once, at
- * creation; they sleep between tasks. One task runs at a time per pool: a pool serves one stepping
- * thread (several worlds may share it if they are stepped one after the other). CMake target
+ * creation; they sleep between tasks. One task runs on the pool at a time: worlds that share a pool
+ * and are stepped at the same moment on different threads are correct, but one of them runs its task
+ * on its own thread (a pool per stepping thread keeps every core busy). CMake target
  * karma_threads (karma::threads), which links karma::karma. */
 #ifndef ME_THREAD_POOL_H
 #define ME_THREAD_POOL_H

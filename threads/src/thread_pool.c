@@ -1,7 +1,10 @@
 /* thread_pool.c -- MeThreadPool: N - 1 POSIX threads that sleep on a condition variable and, with the
  * calling thread, share each task's ranges through an atomic cursor (MeThreadPool.h).
  *
- * One task at a time. MeThreadPoolEnqueue publishes the task under the lock with a new generation
+ * One task at a time. A task enqueued while another runs (two worlds stepped at once on two threads
+ * that share the pool) runs whole on its own caller as worker 0: worker indices are per task, so
+ * that is within the contract, and it gives the same results, only without help.
+ * MeThreadPoolEnqueue publishes the task under the lock with a new generation
  * number and wakes every thread; each thread takes ranges from the cursor until none are left, then
  * says it is done with that generation. The caller takes ranges too (as worker 0) and returns only
  * once every helper has finished the generation, so no helper still reads the task when the next
@@ -33,6 +36,7 @@ struct MeThreadPool {
     void *taskData;
     int itemCount, block;
     atomic_int cursor;         /* next item to hand out */
+    atomic_flag busy;          /* a task is running on the pool */
 };
 
 typedef struct Helper {
@@ -103,6 +107,7 @@ MeThreadPool *MeThreadPoolCreate(int threadCount)
     }
     pool->threadCount = threadCount;
     atomic_init(&pool->cursor, 0);
+    atomic_flag_clear(&pool->busy);
     pthread_mutex_init(&pool->lock, NULL);
     pthread_cond_init(&pool->wake, NULL);
     pthread_cond_init(&pool->done, NULL);
@@ -152,7 +157,7 @@ void *MeThreadPoolEnqueue(MdtTaskFnPtr task, int itemCount, int minRange, void *
         return NULL;
     if (minRange < 1)
         minRange = 1;
-    if (pool->threadCount == 1 || itemCount <= minRange) {
+    if (pool->threadCount == 1 || itemCount <= minRange || atomic_flag_test_and_set(&pool->busy)) {
         task(0, itemCount, 0, taskData);
         return NULL;
     }
@@ -176,6 +181,7 @@ void *MeThreadPoolEnqueue(MdtTaskFnPtr task, int itemCount, int minRange, void *
     while (pool->finished < pool->threadCount - 1)
         pthread_cond_wait(&pool->done, &pool->lock);
     pthread_mutex_unlock(&pool->lock);
+    atomic_flag_clear(&pool->busy);
     return NULL;
 }
 
