@@ -37,6 +37,9 @@
  * non-finite state...) instead of printing them, and the remark column gives their count and the
  * first one's code.
  *
+ * Threads: with --threads=N above 1 the universe steps on a MeThreadPool of N threads (karma_threads,
+ * MeThreadPoolAttachUniverse), made once for the process; the trajectories are the same for any N.
+ *
  * Profile: with KARMA_BENCH_PROFILE=1 in the environment, each run prints to stderr the time per step
  * of every profile section (MstUniverseGetProfile: Collision = Farfield + Nearfield;
  * MdtWorldGetProfile: Dynamics = Partition, AutoDisable, LOD, Pack, Solve, Integrate, Unpack), mean
@@ -50,6 +53,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+
+#include <MeThreadPool.h>
 
 #include "bench_harness.h"
 
@@ -92,6 +97,9 @@ static double cpu_seconds(void)
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
+
+/* The pool of --threads=N (N > 1), made at the first world and kept for the process. */
+static MeThreadPool *threadPool;
 
 static double mean_dynamic_mass(const BenchScene *s)
 {
@@ -186,6 +194,15 @@ static void *karma_create(const BenchScene *scene, MeBool autoDisable)
         return NULL;
     }
     w->world = MstUniverseGetWorld(w->universe);
+    if (BenchThreads > 1) {
+        if (!threadPool)
+            threadPool = MeThreadPoolCreate(BenchThreads);
+        if (!threadPool) {
+            karma_destroy(w);
+            return NULL;
+        }
+        MeThreadPoolAttachUniverse(threadPool, w->universe);
+    }
     if (w->profile) {
         /* The universe hands out its profile read-only; setting its clock is all we change. */
         MeProfileSetTimer((MeProfile *)MstUniverseGetProfile(w->universe), cpu_seconds);

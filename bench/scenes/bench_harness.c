@@ -150,6 +150,8 @@ static void run_one(const BenchEngine *e, const BenchScene *scene, const Options
     free(pos), free(quat), free(times), free(cpuTimes);
 }
 
+int BenchThreads = 1;
+
 static int parse_options(int argc, char **argv, Options *opt)
 {
     memset(opt, 0, sizeof *opt);
@@ -175,6 +177,8 @@ static int parse_options(int argc, char **argv, Options *opt)
             opt->set = BENCH_OTHERS_SCENES;
         else if (strcmp(a, "--set=all") == 0)
             opt->set = BENCH_STANDARD_SCENES "," BENCH_OTHERS_SCENES;
+        else if (strncmp(a, "--threads=", 10) == 0)
+            BenchThreads = atoi(a + 10);
         else if (strcmp(a, "--header") == 0)
             opt->header = 1;
         else if (strcmp(a, "--list") == 0)
@@ -182,15 +186,15 @@ static int parse_options(int argc, char **argv, Options *opt)
         else {
             fprintf(stderr,
                     "unknown option '%s' (--scenes= --set=standard|others|all --variants= --steps= --budget= --trace= "
-                    "--header --list)\n",
+                    "--threads= --header --list)\n",
                     a);
             return 0;
         }
     }
     if (!opt->scenes)
         opt->scenes = opt->set;
-    if (opt->budget <= 0 || opt->steps < 0) {
-        fprintf(stderr, "--budget must be > 0 and --steps >= 0\n");
+    if (opt->budget <= 0 || opt->steps < 0 || BenchThreads < 1) {
+        fprintf(stderr, "--budget must be > 0, --steps >= 0 and --threads >= 1\n");
         return 0;
     }
     return 1;

@@ -55,9 +55,14 @@ typedef struct BenchEngine {
  *    --steps=N          override every scene's step count
  *    --budget=S         stop a run once its timed steps add up to S seconds of CPU time (default 60)
  *    --trace=I          print body I's pose every 60 steps to stderr
+ *    --threads=N        threads an engine may step with (BenchThreads; default 1; engines without
+ *                       threads ignore it)
  *    --header           print the CSV header first
  *    --list             list variants and scenes and exit
  *  Returns the process exit status (0, or 2 on a bad argument). */
+/** --threads=N: threads the engine may step a world with (1 = the calling thread only). */
+extern int BenchThreads;
+
 int BenchMain(int argc, char **argv, const BenchEngine *engines, int engineCount);
 
 #ifdef __cplusplus

@@ -23,6 +23,7 @@
 #include "MdtSkeletal.h"
 #include "MdtSpring.h"
 #include "MdtSpring6.h"
+#include "MdtTaskSystem.h"
 #include "MdtTypes.h"
 #include "MdtUniversal.h"
 #include "MdtUserConstraint.h"

@@ -46,7 +46,11 @@
     X(ME_ERR_PARALLEL_AXES,         116, ME_LEVEL_WARNING, "a constraint's primary and secondary axes are parallel") \
     X(ME_ERR_NO_BODY_ENABLED,       130, ME_LEVEL_WARNING, "hint: the world has bodies but none is enabled (bodies are created disabled), so nothing moves; once per world, MdtWorldSetHints silences it") \
     X(ME_ERR_NOTHING_ACTS,          131, ME_LEVEL_WARNING, "hint: gravity is zero and nothing acts on the enabled bodies, so nothing moves (and they fall asleep); once per world, MdtWorldSetHints silences it") \
-    X(ME_ERR_MASS_SCALE,            132, ME_LEVEL_WARNING, "a mass is far (over 100x) from the world's massScale: contacts and joints turn soft; set massScale to a typical mass (reported once per world)")
+    X(ME_ERR_MASS_SCALE,            132, ME_LEVEL_WARNING, "a mass is far (over 100x) from the world's massScale: contacts and joints turn soft; set massScale to a typical mass (reported once per world)") \
+    X(ME_ERR_TASK_CALLBACK,        140, ME_LEVEL_WARNING, "a task system was given without its enqueue or finish callback; the world keeps its task system") \
+    X(ME_ERR_WORKER_COUNT,         141, ME_LEVEL_WARNING, "a worker or thread count is below 1 or above MDT_MAX_WORKERS (64); nothing changed") \
+    X(ME_ERR_TASK_WORKER,          142, ME_LEVEL_WARNING, "the task system left work undone or gave a worker index outside 0 to workerCount - 1: that work ran on the stepping thread") \
+    X(ME_ERR_THREAD_START,         143, ME_LEVEL_WARNING, "a thread of a thread pool could not be started; no pool was made")
 
 #define ME_ERROR_LIST_KEA(X) \
     X(ME_ERR_KEA_MAX_ITERATIONS,    300, ME_LEVEL_DEBUG,   "the LCP solver stopped at its iteration cap; the result is approximate") \

@@ -11,6 +11,7 @@
 #define MST_UNIVERSE_H
 
 #include "McdTypes.h"
+#include "MdtTaskSystem.h"
 #include "MdtTypes.h"
 #include "MeProfile.h"
 #include "MstBridge.h"
@@ -50,6 +51,11 @@ ME_API McdSpaceID MstUniverseGetSpace(MstUniverseID u);
 ME_API MstBridgeID MstUniverseGetBridge(MstUniverseID u);
 /** The universe's collision framework (owned by the universe); NULL, reported, for a bad ID. */
 ME_API McdFrameworkID MstUniverseGetFramework(MstUniverseID u);
+/** Step the universe's dynamics on the application's task system (MdtTaskSystem.h): as
+ *  MdtWorldSetTaskSystem on its world, refusals (ME_ERR_TASK_CALLBACK, ME_ERR_WORKER_COUNT) in this
+ *  call's name. MeThreadPoolAttachUniverse (karma_threads) does it with the default pool. */
+ME_API void MstUniverseSetTaskSystem(MstUniverseID u, int workerCount, MdtEnqueueTaskCBPtr enqueue,
+                                     MdtFinishTaskCBPtr finish, void *user);
 
 /** A model of `geometry` with a new, **enabled** body whose mass and inertia come from the geometry
  *  at `density` (kg/m³), linked, inserted into the space; NULL (reported) when a pool is full. */

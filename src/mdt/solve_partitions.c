@@ -10,7 +10,16 @@
  * Simulation check. A partition whose rows are not finite (the solver refuses them as bad input) or,
  * with MdtWorldSetCheckSim on, whose impulses or velocity changes come out NaN or infinite, is marked
  * failed (MdtSimErrorSolver): its velocity changes are zeroed and the integrator restores, stops and
- * disables it instead of integrating it. Other partitions are not touched. */
+ * disables it instead of integrating it. Other partitions are not touched.
+ *
+ * On several cores (MdtTaskSystem.h). The partitions are solved as one task over the partition
+ * indices, each on a workspace of its worker's (the Kea chunk holds one per worker). A partition's
+ * solve reads only its own slice of the rows and writes only its own impulses, velocity changes and
+ * result record, so it does not matter which worker solves it or when: the result is the serial one,
+ * bit for bit, for any worker count. Statistics and messages are gathered afterwards, on the stepping
+ * thread, in partition order, as the serial loop gave them. A partition the task system did not solve
+ * (a range left out, a worker index out of range) is solved then on the stepping thread, and reported
+ * (ME_ERR_TASK_WORKER). */
 #include <string.h>
 
 #include "../me/check.h"
@@ -24,12 +33,129 @@ static MeBool allFinite(const MeReal *v, size_t n)
     return ok;
 }
 
+/* One partition's outcome, written by whichever worker solved it. */
+typedef struct PartitionResult {
+    KeaStats stats;
+    int solved;
+} PartitionResult;
+
+/* What the solve task shares: read-only during the task but for the partitions' own slices. */
+typedef struct SolveTask {
+    MdtWorldData *w;
+    unsigned char *workspaces; /* workerCount workspaces of `need` bytes each */
+    size_t need;
+    int workers;
+    PartitionResult *results;
+} SolveTask;
+
+/* Solve partition p on `workspace`: its slice of the rows, its impulses and velocity changes. */
+static void solvePartition(MdtWorldData *w, int p, void *workspace, size_t need, PartitionResult *res)
+{
+    const MdtPartitionLists *out = &w->partitions;
+    MdtStepRows *r = &w->rows;
+    int row0 = r->partitionRowStart[p], rows = r->partitionRowStart[p + 1] - row0;
+    int body0 = out->partitionStart[p], bodies = out->partitionStart[p + 1] - body0;
+    KeaProblem problem;
+    problem.nRows = rows;
+    problem.nBodies = bodies;
+    problem.bodies = r->bodies + body0;
+    problem.J = r->J + row0;
+    problem.rowBodies = (const int(*)[2])(r->rowBodies + row0);
+    problem.epsilon = r->epsilon + row0;
+    problem.rhs = r->rhs + row0;
+    problem.lo = r->lo + row0;
+    problem.hi = r->hi + row0;
+    problem.link = r->link + row0;
+    problem.mu = r->mu + row0;
+    problem.x0 = r->x + row0;
+    /* Links were written as step-global row indices: make them partition-local. */
+    for (int i = 0; i < rows; i++)
+        if (r->link[row0 + i] >= 0)
+            r->link[row0 + i] -= row0;
+    /* So were the declared contacts. */
+    int contact0 = r->partitionContactStart[p];
+    problem.nContacts = r->partitionContactStart[p + 1] - contact0;
+    problem.contacts = r->contacts + contact0;
+    for (int i = 0; i < problem.nContacts; i++)
+        r->contacts[contact0 + i].row -= row0;
+    KeaStatus status = KeaSolve(&problem, &w->kea, workspace, need, r->x + row0, r->dv + body0, &res->stats);
+    res->stats.status = status;
+    MeBool failed = status == KeaStatusBadInput;
+    if (!failed && w->checkSim && status != KeaStatusWorkspaceTooSmall)
+        failed = !allFinite(r->x + row0, (size_t)rows) || !allFinite((const MeReal *)(r->dv + body0), 6 * (size_t)bodies);
+    if (failed) {
+        /* Handled (reported, restored, disabled) by the integrator, before it would integrate. */
+        out->simError[p] = MdtSimErrorSolver;
+    }
+    if (failed || status == KeaStatusWorkspaceTooSmall) {
+        memset(r->x + row0, 0, sizeof(MeReal) * (size_t)rows);
+        memset(r->dv + body0, 0, sizeof(KeaBodyVelocity) * (size_t)bodies);
+    }
+    res->solved = 1;
+}
+
+/* The task: partitions [start, end) on worker `worker`'s workspace. A worker index out of range
+ * leaves its partitions unsolved; the stepping thread solves them afterwards. */
+static void solveTask(int start, int end, int worker, void *data)
+{
+    SolveTask *t = data;
+    if (worker < 0 || worker >= t->workers)
+        return;
+    const MdtPartitionLists *out = &t->w->partitions;
+    const MdtStepRows *r = &t->w->rows;
+    if (start < 0)
+        start = 0;
+    if (end > out->partitionCount)
+        end = out->partitionCount;
+    void *workspace = t->workspaces + (size_t)worker * t->need;
+    for (int p = start; p < end; p++)
+        if (r->partitionRowStart[p + 1] > r->partitionRowStart[p] && !t->results[p].solved)
+            solvePartition(t->w, p, workspace, t->need, &t->results[p]);
+}
+
+/* A partition's statistics into the step's, and its messages, in partition order. */
+static void gatherPartition(MdtWorldData *w, int p, const KeaStats *ks)
+{
+    MdtSolverStats *stats = &w->solverStats;
+    const MdtStepRows *r = &w->rows;
+    int rows = r->partitionRowStart[p + 1] - r->partitionRowStart[p];
+    KeaStatus status = ks->status;
+    stats->partitions++;
+    stats->rows += rows;
+    if (rows > stats->maxPartitionRows)
+        stats->maxPartitionRows = rows;
+    if (ks->path == KeaPathDirect)
+        stats->directPartitions++;
+    else
+        stats->iterativePartitions++;
+    stats->iterations += ks->iterations;
+    stats->pivots += ks->pivots;
+    if (status != KeaStatusOk)
+        stats->unconverged++;
+    if (ks->residual > stats->maxResidual)
+        stats->maxResidual = ks->residual;
+    w->partitions.solverStatus[p] = (int)status;
+    if (w->partitions.simError[p] == MdtSimErrorSolver)
+        return;
+    if (status == KeaStatusWorkspaceTooSmall)
+        ME_REPORT_IN("MdtWorldStep", ME_ERR_KEA_WORKSPACE,
+                     "the solver could not solve partition %d (%d rows): workspace too small; its constraints "
+                     "were ignored this step",
+                     p, rows);
+    else if (status != KeaStatusOk)
+        ME_REPORT_IN("MdtWorldStep", ME_ERR_KEA_MAX_ITERATIONS,
+                     "partition %d (%d rows) stopped at the solver's cap (status %d, residual %g m/s)", p, rows,
+                     (int)status, (double)ks->residual);
+}
+
+/* Bytes of `n` rounded up to a cache line, so that workers' workspaces do not share lines. */
+static size_t cacheLines(size_t n) { return (n + 63) & ~(size_t)63; }
+
 void MdtSolveStage(MdtWorldData *w)
 {
     const MdtPartitionLists *out = &w->partitions;
     MdtStepRows *r = &w->rows;
-    MdtSolverStats *stats = &w->solverStats;
-    memset(stats, 0, sizeof *stats);
+    memset(&w->solverStats, 0, sizeof w->solverStats);
     if (!w->rowsPacked)
         return; /* pack could not lay out its rows: the integrator uses no velocity change */
     for (int i = 0; i < out->bodyCount; i++)
@@ -37,7 +163,7 @@ void MdtSolveStage(MdtWorldData *w)
     if (r->count == 0)
         return;
 
-    /* One workspace for the largest partition. */
+    /* One workspace per worker, for the largest partition; then one result per partition. */
     size_t need = 0;
     for (int p = 0; p < out->partitionCount; p++) {
         int rows = r->partitionRowStart[p + 1] - r->partitionRowStart[p];
@@ -48,76 +174,35 @@ void MdtSolveStage(MdtWorldData *w)
         if (bytes > need)
             need = bytes;
     }
-    void *workspace = MeChunkGetMem(&w->keaChunk, need);
-    if (!workspace)
+    SolveTask task;
+    task.w = w;
+    task.workers = w->workerCount;
+    task.need = task.workers > 1 ? cacheLines(need) : need;
+    size_t workspaceBytes = task.need * (size_t)task.workers;
+    size_t resultBytes = sizeof(PartitionResult) * (size_t)out->partitionCount;
+    unsigned char *mem = MeChunkGetMem(&w->keaChunk, cacheLines(workspaceBytes) + resultBytes);
+    if (!mem)
         return; /* reported by the chunk; the constraints act as if absent this step */
+    task.workspaces = mem;
+    task.results = (PartitionResult *)(mem + cacheLines(workspaceBytes));
+    memset(task.results, 0, resultBytes);
 
+    MdtWorldRunTask(w, solveTask, out->partitionCount, 1, &task);
+
+    int missed = 0;
     for (int p = 0; p < out->partitionCount; p++) {
-        int row0 = r->partitionRowStart[p], rows = r->partitionRowStart[p + 1] - row0;
-        int body0 = out->partitionStart[p], bodies = out->partitionStart[p + 1] - body0;
-        if (rows == 0)
+        if (r->partitionRowStart[p + 1] == r->partitionRowStart[p])
             continue;
-        KeaProblem problem;
-        problem.nRows = rows;
-        problem.nBodies = bodies;
-        problem.bodies = r->bodies + body0;
-        problem.J = r->J + row0;
-        problem.rowBodies = (const int(*)[2])(r->rowBodies + row0);
-        problem.epsilon = r->epsilon + row0;
-        problem.rhs = r->rhs + row0;
-        problem.lo = r->lo + row0;
-        problem.hi = r->hi + row0;
-        problem.link = r->link + row0;
-        problem.mu = r->mu + row0;
-        problem.x0 = r->x + row0;
-        /* Links were written as step-global row indices: make them partition-local. */
-        for (int i = 0; i < rows; i++)
-            if (r->link[row0 + i] >= 0)
-                r->link[row0 + i] -= row0;
-        /* So were the declared contacts. */
-        int contact0 = r->partitionContactStart[p];
-        problem.nContacts = r->partitionContactStart[p + 1] - contact0;
-        problem.contacts = r->contacts + contact0;
-        for (int i = 0; i < problem.nContacts; i++)
-            r->contacts[contact0 + i].row -= row0;
-        KeaStats ks;
-        KeaStatus status = KeaSolve(&problem, &w->kea, workspace, need, r->x + row0, r->dv + body0, &ks);
-        stats->partitions++;
-        stats->rows += rows;
-        if (rows > stats->maxPartitionRows)
-            stats->maxPartitionRows = rows;
-        if (ks.path == KeaPathDirect)
-            stats->directPartitions++;
-        else
-            stats->iterativePartitions++;
-        stats->iterations += ks.iterations;
-        stats->pivots += ks.pivots;
-        if (status != KeaStatusOk)
-            stats->unconverged++;
-        if (ks.residual > stats->maxResidual)
-            stats->maxResidual = ks.residual;
-        out->solverStatus[p] = (int)status;
-        MeBool failed = status == KeaStatusBadInput;
-        if (!failed && w->checkSim && status != KeaStatusWorkspaceTooSmall)
-            failed = !allFinite(r->x + row0, (size_t)rows) ||
-                     !allFinite((const MeReal *)(r->dv + body0), 6 * (size_t)bodies);
-        if (failed) {
-            /* Handled (reported, restored, disabled) by the integrator, before it would integrate. */
-            out->simError[p] = MdtSimErrorSolver;
-            memset(r->x + row0, 0, sizeof(MeReal) * (size_t)rows);
-            memset(r->dv + body0, 0, sizeof(KeaBodyVelocity) * (size_t)bodies);
-        } else if (status == KeaStatusWorkspaceTooSmall) {
-            ME_REPORT_IN("MdtWorldStep", ME_ERR_KEA_WORKSPACE,
-                         "the solver could not solve partition %d (%d rows): workspace too small; its constraints "
-                         "were ignored this step",
-                         p, rows);
-            memset(r->x + row0, 0, sizeof(MeReal) * (size_t)rows);
-            memset(r->dv + body0, 0, sizeof(KeaBodyVelocity) * (size_t)bodies);
-        } else if (status != KeaStatusOk) {
-            ME_REPORT_IN("MdtWorldStep", ME_ERR_KEA_MAX_ITERATIONS,
-                         "partition %d (%d rows) stopped at the solver's cap (status %d, residual %g m/s)", p, rows,
-                         (int)status, (double)ks.residual);
+        if (!task.results[p].solved) {
+            missed++;
+            solvePartition(w, p, task.workspaces, task.need, &task.results[p]);
         }
+        gatherPartition(w, p, &task.results[p].stats);
     }
-    MeChunkPutMem(&w->keaChunk, workspace);
+    if (missed)
+        ME_REPORT_IN("MdtWorldStep", ME_ERR_TASK_WORKER,
+                     "the task system did not solve %d of %d partitions (a range left out, or a worker index "
+                     "outside [0, %d)); they were solved on the stepping thread",
+                     missed, out->partitionCount, task.workers);
+    MeChunkPutMem(&w->keaChunk, mem);
 }

@@ -97,6 +97,7 @@ MdtWorldID MdtWorldCreate(unsigned int maxBodies, unsigned int maxConstraints, M
     MeChunkInitNamed(&w->rowChunk, "constraint rows");
     MeChunkInitNamed(&w->lodChunk, "matrix capping");
     MeProfileInit(&w->profile);
+    w->workerCount = 1; /* no task system: the step runs on the calling thread */
     MdtWorldSetDefaults(w);
     return (MdtWorldID)w->id;
 }

@@ -10,6 +10,7 @@
 #include <karma/MeProfile.h>
 #include <karma/MdtKea.h>
 #include <karma/MdtLOD.h>
+#include <karma/MdtTaskSystem.h>
 #include <karma/MdtWorld.h>
 
 #include "body.h"
@@ -142,6 +143,12 @@ typedef struct MdtWorldData {
     MeChunk rowChunk;        /* the step's solver rows */
     MeChunk keaChunk;        /* solver workspace */
     KeaParameters kea;       /* solver settings (path, iterations, tolerance...) */
+    /* the application's task system (MdtTaskSystem.h, task_system.c); workerCount 1 and no
+       callbacks: the step runs on the calling thread */
+    int workerCount;
+    MdtEnqueueTaskCBPtr enqueueTask;
+    MdtFinishTaskCBPtr finishTask;
+    void *taskUser;
     MdtSolverStats solverStats;
     MeProfile profile;
     unsigned long steps;
@@ -155,6 +162,10 @@ MdtWorldData *MdtWorldFromID(MdtWorldID id, const char *function);
 void MdtWorldHintIfNothingMoves(MdtWorldData *w, const char *function);
 /* Set every setting to its default for the world's scales. */
 void MdtWorldSetDefaults(MdtWorldData *w);
+
+/* Run `task` over [0, itemCount) on the world's task system (task_system.c): on the calling thread
+ * as worker 0 without one (or for a single range), else enqueued and finished before returning. */
+void MdtWorldRunTask(MdtWorldData *w, MdtTaskFnPtr task, int itemCount, int minRange, void *taskData);
 
 /* The stages of the step (docs/step.md, MdtMainLoop.h); step.c wraps each in its public function. */
 void MdtPartitionStage(MdtWorldData *w);

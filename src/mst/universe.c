@@ -5,6 +5,7 @@
 #include <karma/McdModel.h>
 #include <karma/McdSpace.h>
 #include <karma/MdtBody.h>
+#include <karma/MdtTaskSystem.h>
 #include <karma/MdtWorld.h>
 #include <karma/MeMemory.h>
 #include <karma/MstUniverse.h>
@@ -311,6 +312,26 @@ UNIVERSE_GETTER(World, MdtWorldID, world)
 UNIVERSE_GETTER(Space, McdSpaceID, space)
 UNIVERSE_GETTER(Bridge, MstBridgeID, bridge)
 UNIVERSE_GETTER(Framework, McdFrameworkID, framework)
+
+void MstUniverseSetTaskSystem(MstUniverseID id, int workerCount, MdtEnqueueTaskCBPtr enqueue,
+                              MdtFinishTaskCBPtr finish, void *user)
+{
+    MstUniverseData *u = universeFromID(id, __func__);
+    if (!u)
+        return;
+    /* Checked here too, so that a refusal names the call the application made. */
+    if (!enqueue || !finish) {
+        ME_REPORT(ME_ERR_TASK_CALLBACK, "argument '%s' is NULL: a task system needs both callbacks; call ignored",
+                  !enqueue ? "enqueue" : "finish");
+        return;
+    }
+    if (workerCount < 1 || workerCount > MDT_MAX_WORKERS) {
+        ME_REPORT(ME_ERR_WORKER_COUNT, "argument 'workerCount' (%d) must lie in [1, MDT_MAX_WORKERS = %d]; call ignored",
+                  workerCount, MDT_MAX_WORKERS);
+        return;
+    }
+    MdtWorldSetTaskSystem(u->world, workerCount, enqueue, finish, user);
+}
 
 /* ---- mass properties from geometry ---------------------------------------------------------- */
 

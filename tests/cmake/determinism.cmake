@@ -43,3 +43,36 @@ foreach(level O0 O2)
   target_compile_options(${exe} PRIVATE -Wno-double-promotion)
   add_test(NAME ${exe} COMMAND ${exe})
 endforeach()
+
+# The same programs with every world stepping on a thread pool of 2 and of 4 threads (issue 17,
+# point 5): tests/determinism/threaded_worlds.c takes over MdtWorldCreate at link time (--wrap) and
+# attaches the pool, so each program checks its own golden hash, unchanged, from several threads.
+# At -O2 only (the O0 programs check the serial step). The pool's source is compiled in, since these
+# programs link their own build of the core (karma_threads links karma::karma).
+find_package(Threads REQUIRED)
+foreach(threads 2 4)
+  foreach(scene joints iterative topple) # determinism_scene has no constraint: nothing to split
+    set(exe test_determinism_${scene}_threads${threads})
+    set(sources ${CMAKE_CURRENT_SOURCE_DIR}/determinism/determinism_${scene}.c
+                ${CMAKE_CURRENT_SOURCE_DIR}/determinism/threaded_worlds.c
+                ${PROJECT_SOURCE_DIR}/threads/src/thread_pool.c ${KARMA_TEST_SUPPORT})
+    if(scene STREQUAL "topple")
+      list(APPEND sources ${KARMA_DETERMINISM_DEMO_SOURCES})
+    endif()
+    add_executable(${exe} ${sources})
+    target_include_directories(${exe} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/support ${CMOCKA_INCLUDE_DIR}
+                               ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR}/demos
+                               ${PROJECT_SOURCE_DIR}/threads/include)
+    target_compile_definitions(${exe} PRIVATE KARMA_TEST_THREADS=${threads})
+    if(KARMA_DOUBLE)
+      set(create MdtWorldCreate_d)
+    else()
+      set(create MdtWorldCreate_f)
+    endif()
+    target_link_options(${exe} PRIVATE -Wl,--wrap=${create})
+    target_link_libraries(${exe} PRIVATE karma_determinism_O2 ${CMOCKA_LIBRARY} Threads::Threads m)
+    karma_apply_warnings(${exe})
+    target_compile_options(${exe} PRIVATE -Wno-double-promotion)
+    add_test(NAME ${exe} COMMAND ${exe})
+  endforeach()
+endforeach()

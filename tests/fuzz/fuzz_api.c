@@ -9,6 +9,8 @@
  *    orientation, velocities, mass, forces, enabled flag: hashed before and after);
  *  - no body's state is ever NaN or infinite (the step's containment restores a failed partition);
  *  - nothing crashes, reads out of bounds or overflows (AddressSanitizer, UBSan).
+ * The universe steps on a task system of three workers (MdtTaskSystem.h) that runs the ranges on
+ * the calling thread, last first, so that every step goes through the threaded step's task.
  * A violated claim aborts, so libFuzzer keeps the input. Build: tests/fuzz/CMakeLists.txt (clang,
  * -fsanitize=fuzzer,address,undefined, `make fuzz`); seed inputs in tests/fuzz/corpus/fuzz_api/, replayed in
  * the suite by tests/cmake/fuzz_replay.cmake. */
@@ -342,6 +344,23 @@ static MeBool operate(State *s, Input *in, int op)
     }
 }
 
+/* The task system: ranges of minRange items run last first, worker indices in turn. */
+static void *reverseEnqueue(MdtTaskFnPtr task, int itemCount, int minRange, void *taskData, void *user)
+{
+    (void)user;
+    int ranges = (itemCount + minRange - 1) / minRange;
+    for (int k = ranges - 1; k >= 0; k--) {
+        int end = (k + 1) * minRange < itemCount ? (k + 1) * minRange : itemCount;
+        task(k * minRange, end, k % 3, taskData);
+    }
+    return NULL;
+}
+static void finishNothing(void *userTask, void *user)
+{
+    (void)userTask;
+    (void)user;
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -362,6 +381,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (!s.u)
         fail("MstUniverseCreate failed", -1);
     s.w = MstUniverseGetWorld(s.u);
+    MstUniverseSetTaskSystem(s.u, 3, reverseEnqueue, finishNothing, NULL);
     MdtWorldSetGravity(s.w, 0, 0, ME_R(-9.81));
     McdFrameworkID fw = MstUniverseGetFramework(s.u);
     static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};

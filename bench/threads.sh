@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# threads.sh -- wall-clock speed-up of the threaded step (issue 17, point 5): karma_scenes at 1 and at
+# N threads (--threads, MeThreadPool) in alternating runs on each scene, the ratio of each pair's
+# median wall ms per step (1 thread / N threads), then the median of those ratios. Wall time, not CPU
+# time: threads spend more CPU to take less wall time. Two runs seconds apart see about the same
+# machine; on a loaded machine the second thread may simply not get a core, so the load average is
+# printed before and after: rerun on an idle machine for the figure that counts.
+#
+#   bash bench/threads.sh                        # ragdolls and pile, nosleep, 1 vs 2 threads, 5 pairs
+#   bash bench/threads.sh "ragdolls pile" 2 8 300
+#
+# Arguments: SCENES ("ragdolls pile"), THREADS (2), PAIRS (5), STEPS (300; each run's step count);
+# KARMA_VARIANT (environment, default nosleep: every body awake). Uses BUILD (default build/bench),
+# which it builds if needed.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+SCENES=${1:-ragdolls pile}
+THREADS=${2:-2}
+PAIRS=${3:-5}
+STEPS=${4:-300}
+KARMA_VARIANT=${KARMA_VARIANT:-nosleep}
+BUILD=${BUILD:-build/bench}
+for n in "$THREADS" "$PAIRS" "$STEPS"; do
+    if ! [[ "$n" =~ ^[1-9][0-9]*$ ]]; then
+        echo "usage: bash bench/threads.sh [SCENES] [THREADS] [PAIRS] [STEPS] (positive numbers)" >&2
+        exit 2
+    fi
+done
+cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DKARMA_BUILD_BENCH=ON -DKARMA_BUILD_TESTS=OFF \
+      -DKARMA_BUILD_TOOLS=OFF >/dev/null
+cmake --build "$BUILD" --target karma_scenes >/dev/null
+
+# median wall ms per step of one run (column 7), and the run's quality figure (column 12)
+run() { # scene threads
+    "$BUILD/bench/karma_scenes" --variants="$KARMA_VARIANT" --scenes="$1" --steps="$STEPS" --threads="$2" \
+        2>/dev/null | awk -F, -v v="$KARMA_VARIANT" '$2 == v { print $7, $12 }'
+}
+median() { sort -g | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
+
+echo "load before: $(uptime | sed 's/.*load average/load average/'); $(nproc) cores"
+for scene in $SCENES; do
+    ratios=()
+    echo "$scene, Karma $KARMA_VARIANT, $STEPS steps, 1 vs $THREADS threads, $PAIRS alternating pairs (median wall ms per step):"
+    for ((i = 1; i <= PAIRS; i++)); do
+        read -r one q1 < <(run "$scene" 1)
+        read -r many qn < <(run "$scene" "$THREADS")
+        if [ "$q1" != "$qn" ]; then
+            echo "  pair $i: the quality figure differs ($q1 at 1 thread, $qn at $THREADS): not the same trajectory" >&2
+            exit 1
+        fi
+        ratio=$(awk -v a="$one" -v b="$many" 'BEGIN { printf "%.3f", a / b }')
+        ratios+=("$ratio")
+        echo "  pair $i: 1 thread $one ms, $THREADS threads $many ms, speed-up $ratio (figure $q1 both)"
+    done
+    echo "  median speed-up on $scene: $(printf '%s\n' "${ratios[@]}" | median)"
+done
+echo "load after: $(uptime | sed 's/.*load average/load average/')"

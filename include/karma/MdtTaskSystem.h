@@ -1,0 +1,56 @@
+/* MdtTaskSystem.h -- stepping a world on several threads through the application's job system
+ * (an addition: Karma 1.2 stepped on the calling thread only).
+ *
+ * The world does not create threads. It hands parallel work to a task system given by the
+ * application, as Box2D v3's enqueueTask / finishTask and Jolt's JobSystem do: a game plugs in its own
+ * job system, and karma_threads (MeThreadPool.h, a separate small library on POSIX threads) provides
+ * a default pool for programs that have none.
+ *
+ * The contract of a task system with `workerCount` workers:
+ *   enqueue(task, itemCount, minRange, taskData, user) must make task(start, end, worker, taskData)
+ *   run over ranges that cover [0, itemCount) exactly once, each range at least minRange items (the
+ *   last may be shorter), each call with a worker index in [0, workerCount) that no other call running
+ *   at the same time has. It may run the ranges before it returns (then it returns NULL and finish is
+ *   not called) or return a handle that finish(handle, user) waits on. The world calls finish before
+ *   it reads the results, on the thread that steps it.
+ *
+ * What runs in parallel: the partitions' solves (MdtKeaSolve), each with a workspace of its worker's.
+ * A partition's solve does not depend on which worker runs it or when, and the partitions' statistics
+ * and messages are gathered afterwards in partition order on the stepping thread: the trajectories are
+ * bit-identical to the serial step for every worker count and every task system (decision K-parallel).
+ * Messages and profile sections are reported from the stepping thread only.
+ *
+ * Memory: the solver's workspace chunk holds one workspace per worker; setting the worker count sizes
+ * it for that many at once (from the largest workspace seen so far), so a step after the first
+ * allocates nothing more than the serial step would. */
+#ifndef MDT_TASK_SYSTEM_H
+#define MDT_TASK_SYSTEM_H
+
+#include "MdtTypes.h"
+
+ME_EXTERN_C_BEGIN
+
+/** Largest worker count a world accepts (MdtWorldSetTaskSystem). */
+#define MDT_MAX_WORKERS 64
+
+/** Work of the step over items [startIndex, endIndex), run by worker `workerIndex`. */
+typedef void (*MdtTaskFnPtr)(int startIndex, int endIndex, int workerIndex, void *taskData);
+/** Run `task` over [0, itemCount) in ranges of at least `minRange` items; returns a handle for the
+ *  finish callback, or NULL when every range has already run. `user` is the task system's pointer. */
+typedef void *(*MdtEnqueueTaskCBPtr)(MdtTaskFnPtr task, int itemCount, int minRange, void *taskData, void *user);
+/** Wait until every range of the task behind `userTask` (a non-NULL handle from enqueue) has run. */
+typedef void (*MdtFinishTaskCBPtr)(void *userTask, void *user);
+
+/** Step `w` on a task system of `workerCount` workers (1..MDT_MAX_WORKERS). Refused, nothing changed:
+ *  NULL enqueue or finish (ME_ERR_TASK_CALLBACK), a worker count out of range (ME_ERR_WORKER_COUNT),
+ *  during a step (ME_ERR_WORLD_LOCKED). `user` is passed back to both callbacks, not owned. */
+ME_API void MdtWorldSetTaskSystem(MdtWorldID w, int workerCount, MdtEnqueueTaskCBPtr enqueue,
+                                  MdtFinishTaskCBPtr finish, void *user);
+/** Step `w` on the calling thread again (the default); refused during a step (ME_ERR_WORLD_LOCKED). */
+ME_API void MdtWorldClearTaskSystem(MdtWorldID w);
+/** Workers of the task system in use: 1 without one (the default); 0 for an invalid ID. */
+ME_API int MdtWorldGetWorkerCount(MdtWorldID w);
+
+ME_EXTERN_C_END
+
+#endif /* MDT_TASK_SYSTEM_H */

@@ -1,0 +1,256 @@
+/* The world's task system (MdtTaskSystem.h, issue 17 point 5): bad input refused with its code and
+ * nothing changed; and whatever order, worker indices or deferral a job system uses, the step gives
+ * the serial step's state bit for bit. The job systems here run on the calling thread, so that each
+ * ordering is exactly the one written (tests/threads/test_threaded_step.c runs real threads). */
+#include "karma_test.h"
+#include "karma_partitions.h"
+
+#include <string.h>
+
+#include <karma/karma.h>
+
+#define STACKS 6      /* separate stacks of boxes: one partition each */
+#define STACK_BOXES 3
+#define CHAINS 3      /* pendulum chains of ball joints: one partition each */
+#define CHAIN_LINKS 5
+#define STEPS 150
+
+/* ---- the scene: stacks and chains side by side, so the step has many partitions ----------------- */
+static MstUniverseID buildScene(void)
+{
+    MstUniverseID u = karma_partitions_scene(STACKS, STACK_BOXES, CHAINS, CHAIN_LINKS);
+    assert_non_null(u);
+    return u;
+}
+
+/* Step the scene; the hash of every step's state, and the last step's solver statistics. */
+static uint64_t runScene(MstUniverseID u, MdtSolverStats *last)
+{
+    uint64_t hash = KARMA_HASH_INIT;
+    for (int i = 0; i < STEPS; i++) {
+        MstUniverseStep(u, ME_R(1.0) / 60);
+        hash = karma_hash_world(hash, MstUniverseGetWorld(u));
+    }
+    MdtWorldGetSolverStats(MstUniverseGetWorld(u), last);
+    return hash;
+}
+
+/* The scene stepped without a task system. */
+static uint64_t runSerial(MdtSolverStats *last)
+{
+    MstUniverseID u = buildScene();
+    uint64_t hash = runScene(u, last);
+    MstUniverseDestroy(u);
+    return hash;
+}
+
+/* ---- job systems on the calling thread ------------------------------------------------------------ */
+typedef struct Jobs {
+    int workers;
+    int mode;            /* one of the enum below */
+    int enqueued, finished, maxItems;
+    /* a deferred task, run by finish */
+    MdtTaskFnPtr task;
+    void *taskData;
+    int itemCount, minRange;
+} Jobs;
+
+enum { REVERSE, DEFERRED_SHUFFLED, WORKER_OUT_OF_RANGE, HALF_LEFT_OUT };
+
+/* Ranges of minRange items, run in the order of `order(k, n)`, worker index k mod workers. */
+static void runRanges(Jobs *j, int shuffled)
+{
+    int n = (j->itemCount + j->minRange - 1) / j->minRange;
+    for (int i = 0; i < n; i++) {
+        int k = shuffled ? (i * 7 + 3) % n : n - 1 - i; /* 7 is prime to most n; fall back below */
+        if (shuffled && n % 7 == 0)
+            k = (i * 5 + 3) % n;
+        int start = k * j->minRange, end = start + j->minRange < j->itemCount ? start + j->minRange : j->itemCount;
+        int worker = j->mode == WORKER_OUT_OF_RANGE ? j->workers : (i * 5) % j->workers;
+        if (j->mode == HALF_LEFT_OUT && k % 2 == 1)
+            continue;
+        j->task(start, end, worker, j->taskData);
+    }
+}
+
+static void *enqueue(MdtTaskFnPtr task, int itemCount, int minRange, void *taskData, void *user)
+{
+    Jobs *j = user;
+    j->enqueued++;
+    if (itemCount > j->maxItems)
+        j->maxItems = itemCount;
+    j->task = task;
+    j->taskData = taskData;
+    j->itemCount = itemCount;
+    j->minRange = minRange;
+    if (j->mode == DEFERRED_SHUFFLED)
+        return j; /* run by finish */
+    runRanges(j, 0);
+    return NULL;
+}
+
+static void finish(void *userTask, void *user)
+{
+    Jobs *j = user;
+    assert_ptr_equal(userTask, j);
+    j->finished++;
+    runRanges(j, 1);
+}
+
+/* ---- tests ---------------------------------------------------------------------------------------- */
+static void any_job_system_gives_the_serial_state_bit_for_bit(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    MdtSolverStats serialStats, stats;
+    MstUniverseID u;
+    uint64_t serial = runSerial(&serialStats);
+    /* The scene is many partitions, solved by Kea (each stack and each chain its own). */
+    assert_true(serialStats.partitions >= STACKS + CHAINS - 2);
+    assert_true(serialStats.rows > 0);
+
+    const int modes[] = {REVERSE, DEFERRED_SHUFFLED};
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++)
+        for (int workers = 1; workers <= 5; workers += 2) {
+            Jobs jobs;
+            memset(&jobs, 0, sizeof jobs);
+            jobs.workers = workers;
+            jobs.mode = modes[m];
+            u = buildScene();
+            MstUniverseSetTaskSystem(u, workers, enqueue, finish, &jobs);
+            assert_int_equal(MdtWorldGetWorkerCount(MstUniverseGetWorld(u)), workers);
+            uint64_t hash = runScene(u, &stats);
+            MstUniverseDestroy(u);
+            assert_true(hash == serial);
+            assert_memory_equal(&stats, &serialStats, sizeof stats);
+            if (workers == 1) {
+                assert_int_equal(jobs.enqueued, 0); /* one worker: the step does not hand out work */
+            } else {
+                assert_true(jobs.enqueued >= STEPS / 2);
+                assert_true(jobs.maxItems >= STACKS);
+                assert_int_equal(jobs.finished, modes[m] == DEFERRED_SHUFFLED ? jobs.enqueued : 0);
+            }
+        }
+    assert_int_equal(karma_warning_count(), 0);
+}
+
+/* A job system that breaks the contract's indices or leaves ranges out: the work is done on the
+ * stepping thread, the state is still the serial one, and the step says so. */
+static void work_left_undone_is_done_on_the_stepping_thread_and_reported(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    MdtSolverStats serialStats, stats;
+    MstUniverseID u;
+    uint64_t serial = runSerial(&serialStats);
+
+    const int modes[] = {WORKER_OUT_OF_RANGE, HALF_LEFT_OUT};
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+        Jobs jobs;
+        memset(&jobs, 0, sizeof jobs);
+        jobs.workers = 3;
+        jobs.mode = modes[m];
+        u = buildScene();
+        MstUniverseSetTaskSystem(u, 3, enqueue, finish, &jobs);
+        unsigned long before = MeMessageGetCount(ME_ERR_TASK_WORKER);
+        uint64_t hash = runScene(u, &stats);
+        MstUniverseDestroy(u);
+        assert_true(hash == serial);
+        assert_memory_equal(&stats, &serialStats, sizeof stats);
+        /* once per step that handed work out */
+        assert_int_equal(MeMessageGetCount(ME_ERR_TASK_WORKER) - before, (unsigned long)jobs.enqueued);
+        assert_true(jobs.enqueued > 0);
+        assert_int_equal(karma_last_code(), ME_ERR_TASK_WORKER);
+    }
+}
+
+static void bad_task_systems_are_refused_and_change_nothing(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    Jobs jobs;
+    memset(&jobs, 0, sizeof jobs);
+    MdtWorldID w = MdtWorldCreate(4, 4, ME_R(1.0), ME_R(1.0));
+    assert_non_null(w);
+    assert_int_equal(MdtWorldGetWorkerCount(w), 1); /* the default: the calling thread */
+    MdtWorldSetTaskSystem(w, 3, enqueue, finish, &jobs);
+    assert_int_equal(MdtWorldGetWorkerCount(w), 3);
+
+    assert_reports(ME_ERR_TASK_CALLBACK, MdtWorldSetTaskSystem(w, 2, NULL, finish, &jobs));
+    assert_reports(ME_ERR_TASK_CALLBACK, MdtWorldSetTaskSystem(w, 2, enqueue, NULL, &jobs));
+    assert_reports(ME_ERR_WORKER_COUNT, MdtWorldSetTaskSystem(w, 0, enqueue, finish, &jobs));
+    assert_reports(ME_ERR_WORKER_COUNT, MdtWorldSetTaskSystem(w, -4, enqueue, finish, &jobs));
+    assert_reports(ME_ERR_WORKER_COUNT, MdtWorldSetTaskSystem(w, MDT_MAX_WORKERS + 1, enqueue, finish, &jobs));
+    assert_reports(ME_ERR_WORKER_COUNT, MdtWorldSetTaskSystem(w, 1 << 30, enqueue, finish, &jobs));
+    assert_int_equal(MdtWorldGetWorkerCount(w), 3);
+    assert_string_equal(karma_last_function(), "MdtWorldSetTaskSystem");
+
+    /* Not during a step (between the public stages the world is locked). */
+    MdtWorldStepBegin(w, ME_R(0.01));
+    assert_reports(ME_ERR_WORLD_LOCKED, MdtWorldSetTaskSystem(w, 2, enqueue, finish, &jobs));
+    assert_reports(ME_ERR_WORLD_LOCKED, MdtWorldClearTaskSystem(w));
+    MdtWorldUpdatePartitions(w);
+    MdtPack(w);
+    MdtKeaSolve(w);
+    MdtKeaIntegrate(w);
+    MdtUnpack(w);
+    MdtWorldStepEnd(w);
+    assert_int_equal(MdtWorldGetWorkerCount(w), 3);
+
+    /* Settings to their defaults keep the task system: it is the application's, not a setting. */
+    MdtWorldReCreate(w);
+    assert_int_equal(MdtWorldGetWorkerCount(w), 3);
+    MdtWorldSetTaskSystem(w, MDT_MAX_WORKERS, enqueue, finish, &jobs);
+    assert_int_equal(MdtWorldGetWorkerCount(w), MDT_MAX_WORKERS);
+    MdtWorldClearTaskSystem(w);
+    assert_int_equal(MdtWorldGetWorkerCount(w), 1);
+    MdtWorldDestroy(w);
+
+    /* A destroyed world: refused, 0 workers. */
+    unsigned long warnings = karma_warning_count();
+    assert_int_equal(MdtWorldGetWorkerCount(w), 0);
+    MdtWorldSetTaskSystem(w, 2, enqueue, finish, &jobs);
+    assert_int_equal(karma_warning_count() - warnings, 2);
+
+    /* The universe's call checks the same, in its own name. */
+    MstUniverseID u = buildScene();
+    assert_reports(ME_ERR_TASK_CALLBACK, MstUniverseSetTaskSystem(u, 2, enqueue, NULL, &jobs));
+    assert_string_equal(karma_last_function(), "MstUniverseSetTaskSystem");
+    assert_reports(ME_ERR_WORKER_COUNT, MstUniverseSetTaskSystem(u, 0, enqueue, finish, &jobs));
+    assert_string_equal(karma_last_function(), "MstUniverseSetTaskSystem");
+    assert_int_equal(MdtWorldGetWorkerCount(MstUniverseGetWorld(u)), 1);
+    MstUniverseDestroy(u);
+}
+
+/* Setting the worker count sizes the per-worker workspaces: after a serial warm-up, the threaded
+ * steps grow no chunk (the step allocates nothing). */
+static void the_threaded_step_allocates_nothing_after_the_worker_count_is_set(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    Jobs jobs;
+    memset(&jobs, 0, sizeof jobs);
+    jobs.workers = 4;
+    jobs.mode = REVERSE;
+    MstUniverseID u = buildScene();
+    for (int i = 0; i < 60; i++)
+        MstUniverseStep(u, ME_R(1.0) / 60);
+    MstUniverseSetTaskSystem(u, 4, enqueue, finish, &jobs);
+    unsigned long grown = MeMessageGetCount(ME_ERR_CHUNK_GROWTH);
+    for (int i = 0; i < 60; i++)
+        MstUniverseStep(u, ME_R(1.0) / 60);
+    assert_true(jobs.enqueued > 0);
+    assert_int_equal(MeMessageGetCount(ME_ERR_CHUNK_GROWTH) - grown, 0);
+    MstUniverseDestroy(u);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(any_job_system_gives_the_serial_state_bit_for_bit),
+        cmocka_unit_test(work_left_undone_is_done_on_the_stepping_thread_and_reported),
+        cmocka_unit_test(bad_task_systems_are_refused_and_change_nothing),
+        cmocka_unit_test(the_threaded_step_allocates_nothing_after_the_worker_count_is_set),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,153 @@
+/* The threaded step on the default pool (karma_threads, MeThreadPool.h; issue 17 point 5): a scene of
+ * many partitions (stacks falling and sliding, jointed chains swinging) stepped on pools of 2, 3 and
+ * 4 threads ends in exactly the serial step's state, every step; two universes stepped at the same
+ * time on two threads, each on a pool of its own or both on one, too. Run under ThreadSanitizer by the `tsan`
+ * configuration of tests/run_configs.sh: the proof that the partitions' solves share no data. */
+#include "karma_test.h"
+#include "karma_partitions.h"
+
+#include <string.h>
+#include <pthread.h>
+
+#include <karma/karma.h>
+
+#include <MeThreadPool.h>
+
+#define STACKS 8
+#define STACK_BOXES 3
+#define CHAINS 4
+#define CHAIN_LINKS 6
+#define STEPS 90
+
+static MstUniverseID buildScene(void)
+{
+    return karma_partitions_scene(STACKS, STACK_BOXES, CHAINS, CHAIN_LINKS);
+}
+
+/* The hash of every step's state (0 when the scene could not be built), on `pool` (NULL: serial). */
+static uint64_t runSceneOn(MeThreadPool *pool)
+{
+    MstUniverseID u = buildScene();
+    if (!u)
+        return 0;
+    if (pool) {
+        MeThreadPoolAttachUniverse(pool, u);
+        if (MdtWorldGetWorkerCount(MstUniverseGetWorld(u)) != MeThreadPoolGetThreadCount(pool))
+            return 0;
+    }
+    uint64_t hash = KARMA_HASH_INIT;
+    for (int i = 0; i < STEPS; i++) {
+        MstUniverseStep(u, ME_R(1.0) / 60);
+        hash = karma_hash_world(hash, MstUniverseGetWorld(u));
+    }
+    MstUniverseDestroy(u);
+    return hash;
+}
+
+/* As runSceneOn, on a pool of `threads` of its own (1: serial). */
+static uint64_t runScene(int threads)
+{
+    MeThreadPool *pool = threads > 1 ? MeThreadPoolCreate(threads) : NULL;
+    if (threads > 1 && !pool)
+        return 0;
+    uint64_t hash = runSceneOn(pool);
+    MeThreadPoolDestroy(pool);
+    return hash;
+}
+
+static void pools_of_any_size_give_the_serial_state(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    uint64_t serial = runScene(1);
+    assert_true(serial != 0);
+    for (int threads = 2; threads <= 4; threads++)
+        assert_true(runScene(threads) == serial);
+    assert_int_equal(karma_warning_count(), 0);
+}
+
+typedef struct Run {
+    int threads;
+    MeThreadPool *shared; /* a pool shared with the other run, or NULL: one of its own */
+    uint64_t hash;
+} Run;
+
+static void *runOnThread(void *arg)
+{
+    Run *r = arg;
+    r->hash = r->shared ? runSceneOn(r->shared) : runScene(r->threads);
+    return NULL;
+}
+
+static void two_universes_on_two_threads_each_with_a_pool(void **state)
+{
+    (void)state;
+    /* Two stepping threads report at once: the default handler, which is thread-safe (the tests'
+     * recorder is not; docs/conventions.md, Threads). */
+    MeSetMessageHandler(NULL, NULL, NULL);
+    MeSetMessageLevel(ME_LEVEL_WARNING);
+    uint64_t serial = runScene(1);
+    Run runs[2] = {{2, NULL, 0}, {3, NULL, 0}};
+    pthread_t t[2];
+    for (int i = 0; i < 2; i++)
+        assert_int_equal(pthread_create(&t[i], NULL, runOnThread, &runs[i]), 0);
+    for (int i = 0; i < 2; i++)
+        assert_int_equal(pthread_join(t[i], NULL), 0);
+    for (int i = 0; i < 2; i++)
+        assert_true(runs[i].hash == serial);
+}
+
+/* Two universes stepped at once on two threads that share one pool: each task finds the pool busy
+ * at times and then runs on its own thread; the states are still the serial ones. */
+static void two_universes_on_two_threads_sharing_a_pool(void **state)
+{
+    (void)state;
+    MeSetMessageHandler(NULL, NULL, NULL);
+    MeSetMessageLevel(ME_LEVEL_WARNING);
+    uint64_t serial = runScene(1);
+    MeThreadPool *pool = MeThreadPoolCreate(2);
+    assert_non_null(pool);
+    Run runs[2] = {{2, pool, 0}, {2, pool, 0}};
+    pthread_t t[2];
+    for (int i = 0; i < 2; i++)
+        assert_int_equal(pthread_create(&t[i], NULL, runOnThread, &runs[i]), 0);
+    for (int i = 0; i < 2; i++)
+        assert_int_equal(pthread_join(t[i], NULL), 0);
+    MeThreadPoolDestroy(pool);
+    for (int i = 0; i < 2; i++)
+        assert_true(runs[i].hash == serial);
+}
+
+static void bad_pools_are_refused(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    MeThreadPool *pool = NULL;
+    assert_reports(ME_ERR_WORKER_COUNT, pool = MeThreadPoolCreate(0));
+    assert_null(pool);
+    assert_reports(ME_ERR_WORKER_COUNT, pool = MeThreadPoolCreate(MDT_MAX_WORKERS + 1));
+    assert_null(pool);
+    MdtWorldID w = MdtWorldCreate(2, 2, ME_R(1.0), ME_R(1.0));
+    assert_reports(ME_ERR_TASK_CALLBACK, MeThreadPoolAttachWorld(NULL, w));
+    assert_int_equal(MdtWorldGetWorkerCount(w), 1);
+    pool = MeThreadPoolCreate(1);
+    assert_non_null(pool);
+    assert_int_equal(MeThreadPoolGetThreadCount(pool), 1);
+    MeThreadPoolAttachWorld(pool, w);
+    assert_int_equal(MdtWorldGetWorkerCount(w), 1);
+    MdtWorldDestroy(w);
+    MeThreadPoolDestroy(pool);
+    MeThreadPoolDestroy(NULL);
+    assert_int_equal(MeThreadPoolGetThreadCount(NULL), 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(pools_of_any_size_give_the_serial_state),
+        cmocka_unit_test(two_universes_on_two_threads_each_with_a_pool),
+        cmocka_unit_test(two_universes_on_two_threads_sharing_a_pool),
+        cmocka_unit_test(bad_pools_are_refused),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
