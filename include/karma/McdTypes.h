@@ -102,8 +102,7 @@ typedef void (*McdSpacePoolErrorFnPtr)(McdModelID model1, McdModelID model2);
 
 /* ---- Karma 1.2's interaction table entry (McdFrameworkGetInteractions, McdFrame.h) ------------- */
 
-/** Safe-time results: safe time is still to come; the struct is defined with it (write
- *  `struct McdSafeTimeResult { ... };` there, this typedef stays). */
+/** Safe-time results (struct in McdSafeTimeResult.h). */
 typedef struct McdSafeTimeResult McdSafeTimeResult;
 typedef MeBool (*McdHelloFn)(McdModelPair *pair);
 typedef void (*McdGoodbyeFn)(McdModelPair *pair);

@@ -61,7 +61,10 @@
     X(ME_ERR_MCD_HULL_FLAT,           405, ME_LEVEL_WARNING, "a convex hull's points span no volume: fewer than four, or all within the hull tolerance of a line or a plane") \
     X(ME_ERR_MCD_BAD_MESH,            420, ME_LEVEL_WARNING, "a triangle mesh or height field is empty, has an index out of range, a count out of range or a height or vertex that is not finite") \
     X(ME_ERR_MCD_DEGENERATE_TRIANGLE, 421, ME_LEVEL_WARNING, "a triangle of a mesh has no area (its vertices coincide or lie on a line)") \
-    X(ME_ERR_MCD_BAD_IMAGE,           422, ME_LEVEL_WARNING, "a height image cannot be read or is not an uncompressed 24-bit BMP of at least 2 x 2 pixels")
+    X(ME_ERR_MCD_BAD_IMAGE,           422, ME_LEVEL_WARNING, "a height image cannot be read or is not an uncompressed 24-bit BMP of at least 2 x 2 pixels") \
+    X(ME_ERR_MCD_SAFE_TIME_RANGE,     440, ME_LEVEL_WARNING, "a safe-time or sweep duration is negative or not finite") \
+    X(ME_ERR_MCD_SAFE_TIME_VELOCITY,  441, ME_LEVEL_WARNING, "a model velocity or sweep motion for a safe time is not finite") \
+    X(ME_ERR_MCD_CONTINUOUS_GEOMETRY, 442, ME_LEVEL_WARNING, "continuous collision asked for a model whose geometry cannot be swept (plane, terrain, aggregate, null or user type)")
 
 #define ME_ERROR_LIST_MST(X) \
     X(ME_ERR_MST_MATERIAL,            600, ME_LEVEL_WARNING, "a material index is out of range")

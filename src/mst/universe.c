@@ -11,6 +11,7 @@
 
 #include "../me/check.h"
 #include "bridge.h"
+#include "continuous.h"
 
 #include <limits.h>
 #include <stdatomic.h>
@@ -25,6 +26,7 @@ typedef struct MstUniverseData {
     MdtWorldID world;
     MstBridgeID bridge;
     MeProfile profile;        /* "Collision" = "Farfield" + "Nearfield" of each step */
+    MstContinuous continuous; /* start poses of the bodies of flagged models (continuous.c) */
 } MstUniverseData;
 
 /* The table of universes. An ID is valid when it is the address of an entry whose record is live;
@@ -235,6 +237,7 @@ void MstUniverseDestroy(MstUniverseID id)
         }
     }
     destroyParts(u);
+    MstContinuousFree(&u->continuous);
     MeMemoryDestroy(u);
 }
 
@@ -273,7 +276,9 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
     MeProfileSectionEnd(prof, MST_SECTION_NEARFIELD);
     MeProfileSectionEnd(prof, MST_SECTION_COLLISION);
     MeProfileFrameEnd(prof);
+    MstContinuousBeforeStep(&u->continuous, u->framework, u->space);
     MdtWorldStep(u->world, stepSize);
+    MstContinuousAfterStep(&u->continuous, stepSize);
     MdtWorldSetCallerName(u->world, worldCaller);
 }
 

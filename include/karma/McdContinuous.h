@@ -1,0 +1,38 @@
+/* McdContinuous.h -- continuous collision for fast models (additions to Karma 1.2).
+ *
+ * A model flagged with McdModelEnableContinuous is swept after each MstUniverseStep: when its body
+ * went through another model of the space during the step, the body is put back where it first
+ * came within half its contact tolerance of it (its velocity kept), and the contacts of the next
+ * step stop or bounce it. Other models are taken at rest where they are after the step. Models
+ * without the flag cost nothing. See docs/decisions.md (continuous collision) for the design. */
+#ifndef MCD_CONTINUOUS_H
+#define MCD_CONTINUOUS_H
+
+#include "McdTypes.h"
+
+ME_EXTERN_C_BEGIN
+
+/** Sweep this model's body after each universe step (convex primitives and convex meshes only:
+ *  others refused with ME_ERR_MCD_CONTINUOUS_GEOMETRY, no change). */
+ME_API void McdModelEnableContinuous(McdModelID m);
+/** Stop sweeping the model (the default). */
+ME_API void McdModelDisableContinuous(McdModelID m);
+/** Whether McdModelEnableContinuous is in force for the model (MEFALSE for an invalid ID, reported). */
+ME_API MeBool McdModelIsContinuous(McdModelID m);
+/** Models of the framework with the continuous flag (0 for an invalid ID, reported). */
+ME_API int McdFrameworkGetContinuousModelCount(McdFrameworkID fw);
+/** Sweep `m` (in a space, convex) from its followed transform `start` at constant velocities v (m/s,
+ *  of start's origin) and w (rad/s, about it) for `duration` s against the other models of its
+ *  space (each at rest where it is; those whose AABB of the last update misses the path skipped, as
+ *  are disabled pairs and models of the same body). Returns METRUE with *time (s, < duration) the
+ *  conservative first time m comes within `gap` (m) of another (*hit that model, if hit is not NULL);
+ *  MEFALSE with *time = duration when it passes none. A model already within gap of another at
+ *  the start hits it only when their signed distance (depth when overlapping) falls by 2 gap more.
+ *  Duration or gap negative or not finite: ME_ERR_MCD_SAFE_TIME_RANGE; start or velocities not finite:
+ *  ME_ERR_MCD_SAFE_TIME_VELOCITY; both return MEFALSE and leave *time unchanged. */
+ME_API MeBool McdSpaceSweepModel(McdModelID m, MeMatrix4 start, const MeVector3 v, const MeVector3 w, MeReal duration,
+                                 MeReal gap, MeReal *time, McdModelID *hit);
+
+ME_EXTERN_C_END
+
+#endif /* MCD_CONTINUOUS_H */

@@ -1,0 +1,137 @@
+/* continuous.c -- continuous collision for fast models: the per-model flag and the sweep of one model
+ * through its space (MstUniverseStep moves a flagged body back to its first time of impact).
+ *
+ * The sweep looks at the other models of the space whose AABB (of the last update) meets the box the
+ * model covers along its path, and takes each at rest where it is. A model that already touches
+ * another at the start (resting, sliding, rolling on it) hits it only when their signed distance (the
+ * depth, when they overlap) falls by the slop (twice the gap) below the start's: a body moving along
+ * a floor is not stopped by it, a body being driven through it is. */
+#include <karma/McdContinuous.h>
+#include <karma/McdInteraction.h>
+#include <karma/McdModel.h>
+#include <karma/McdSpace.h>
+
+#include "../me/check.h"
+#include "framework.h"
+#include "safe_time.h"
+
+#include <string.h>
+
+
+void McdModelContinuousForget(McdModelData *m)
+{
+    if (m->continuous)
+        m->framework->continuousCount--;
+    m->continuous = MEFALSE;
+}
+
+void McdModelEnableContinuous(McdModelID id)
+{
+    McdModelData *m = McdModelFromID(id, __func__);
+    if (!m)
+        return;
+    if (!m->geometry || !McdSafeTimeIsConvex(m->geometry->type)) {
+        ME_REPORT(ME_ERR_MCD_CONTINUOUS_GEOMETRY, "the model's geometry (type %d) cannot be swept: only convex "
+                  "primitives and convex meshes can; call ignored", m->geometry ? m->geometry->type : -1);
+        return;
+    }
+    if (!m->continuous)
+        m->framework->continuousCount++;
+    m->continuous = METRUE;
+}
+
+void McdModelDisableContinuous(McdModelID id)
+{
+    McdModelData *m = McdModelFromID(id, __func__);
+    if (m)
+        McdModelContinuousForget(m);
+}
+
+MeBool McdModelIsContinuous(McdModelID id)
+{
+    McdModelData *m = McdModelFromID(id, __func__);
+    return m && m->continuous;
+}
+
+int McdFrameworkGetContinuousModelCount(McdFrameworkID id)
+{
+    McdFrameworkData *fw = McdFrameworkFromID(id, __func__);
+    return fw ? fw->continuousCount : 0;
+}
+
+static MeReal (*relativeOf(McdModelData *m))[4]
+{
+    if (m->relativePtr)
+        return m->relativePtr;
+    return m->hasRelative ? m->relativeTransform : NULL;
+}
+
+MeBool McdSpaceSweepModel(McdModelID model, MeMatrix4 start, const MeVector3 v, const MeVector3 w, MeReal duration,
+                          MeReal gap, MeReal *time, McdModelID *hit)
+{
+    ME_CHECK_NOT_NULL(start, MEFALSE);
+    ME_CHECK_NOT_NULL(v, MEFALSE);
+    ME_CHECK_NOT_NULL(w, MEFALSE);
+    ME_CHECK_NOT_NULL(time, MEFALSE);
+    McdModelData *m = McdModelFromID(model, __func__);
+    if (!m)
+        return MEFALSE;
+    if (!(isfinite(duration) && duration >= 0) || !(isfinite(gap) && gap >= 0)) {
+        ME_REPORT(ME_ERR_MCD_SAFE_TIME_RANGE, "arguments 'duration' (%g) and 'gap' (%g) must be finite and >= 0; "
+                  "nothing swept", (double)duration, (double)gap);
+        return MEFALSE;
+    }
+    MeBool finite = MeVector3IsValid(v) && MeVector3IsValid(w);
+    for (int k = 0; k < 4 && finite; k++)
+        finite = MeVector3IsValid(start[k]);
+    if (!finite) {
+        ME_REPORT(ME_ERR_MCD_SAFE_TIME_VELOCITY, "the start transform or a velocity is not finite; nothing swept");
+        return MEFALSE;
+    }
+    *time = duration;
+    const MeReal slop = MeMAX(ME_R(2.0) * gap, MCD_SAFE_TIME_GAP * m->framework->lengthScale);
+    if (hit)
+        *hit = NULL;
+    if (!m->space || !m->geometry || !McdSafeTimeIsConvex(m->geometry->type))
+        return MEFALSE;
+    McdMotion a = {m->geometry, start, relativeOf(m), {v[0], v[1], v[2]}, {w[0], w[1], w[2]}, NULL};
+    /* The box the model covers: its reach about both ends of its frame's straight path. */
+    const MeReal reach = McdSafeTimeReach(m->geometry, a.relative) + gap;
+    MeVector3 lo, hi;
+    for (int k = 0; k < 3; k++) {
+        const MeReal end = start[3][k] + v[k] * duration;
+        lo[k] = MeMIN(start[3][k], end) - reach;
+        hi[k] = MeMAX(start[3][k], end) + reach;
+    }
+    MeBool found = MEFALSE;
+    McdSpaceModelIterator it;
+    McdModelID otherID;
+    McdSpaceModelIteratorBegin(m->spaceID, &it);
+    while (McdSpaceGetModel(m->spaceID, &it, &otherID)) {
+        McdModelData *o = McdModelFromID(otherID, __func__);
+        if (!o || o == m || !o->geometry || (m->body && o->body == m->body))
+            continue;
+        MeBool apart = MEFALSE;
+        for (int k = 0; k < 3 && !apart; k++)
+            apart = o->aabbMax[k] < lo[k] || o->aabbMin[k] > hi[k];
+        if (apart || !McdSpacePairIsEnabled(model, otherID))
+            continue;
+        McdModelPair pair;
+        memset(&pair, 0, sizeof pair);
+        pair.model1 = model;
+        pair.model2 = otherID;
+        McdMotion b = {o->geometry, McdModelTransformInternal(o), relativeOf(o), {0, 0, 0}, {0, 0, 0}, &pair};
+        a.pair = &pair;
+        MeReal t;
+        /* Touching already: only a further approach by the slop counts (a body resting, sliding or
+         * rolling on the other is not stopped; one being driven through it is). */
+        const McdSafeTimeOutcome out = McdSafeTimeMotions(m->framework, &a, &b, *time, gap, slop, &t);
+        if (out == MCD_SAFE_HIT && t < *time) {
+            *time = t;
+            found = METRUE;
+            if (hit)
+                *hit = otherID;
+        }
+    }
+    return found;
+}

@@ -1,0 +1,352 @@
+/* safe_time.c -- McdSafeTime and the conservative time of impact behind it.
+ *
+ * Conservative advancement (Mirtich): at time t the GJK distance d and its direction n (from a towards
+ * b) bound how fast the gap can close: no point of a moves towards b along n faster than
+ * (v_a - v_b).n + |w_a| R_a + |w_b| R_b (R: the reach of each geometry about the origin its frame
+ * rotates about), so the shapes cannot touch before t + d / that bound. Each advance is therefore safe
+ * and the time returned is never later than the true time of impact; the loop stops when the
+ * distance is within the stopping tolerance of the gap asked for. Sphere-sphere and sphere-plane whose
+ * centres move in straight lines have closed forms. */
+#include <karma/McdInteraction.h>
+
+#include "../me/check.h"
+#include "framework.h"
+#include "geometry/convex_hull.h"
+#include "nearfield/nearfield.h"
+#include "safe_time.h"
+#include "terrain/terrain.h"
+
+#include <string.h>
+
+/* Advances at most; a pair that has not come within the tolerance by then gets the (still safe) time
+ * reached. Head-on approaches take two or three. */
+#define MCD_SAFE_MAX_ADVANCES 64
+/* Angular speeds below this (rad/s) rotate nothing in the extrapolated pose (as McdIntersectAt). */
+#define MCD_SAFE_SPIN_EPS ME_R(1e-6)
+
+static MeMatrix4 identityTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+
+MeBool McdSafeTimeIsConvex(int type)
+{
+    switch (type) {
+    case kMcdGeometryTypeSphere:
+    case kMcdGeometryTypeBox:
+    case kMcdGeometryTypeCylinder:
+    case kMcdGeometryTypeSphyl:
+    case kMcdGeometryTypeCone:
+    case kMcdGeometryTypeConvexMesh:
+    case MCD_NF_TRIANGLE_TYPE:
+        return METRUE;
+    default:
+        return MEFALSE;
+    }
+}
+
+static MeBool isTerrain(int type)
+{
+    return type == kMcdGeometryTypeTriangleList || type == kMcdGeometryTypeTriangleMesh ||
+           type == kMcdGeometryTypeRGHeightField;
+}
+
+MeReal McdSafeTimeReach(const McdGeometryData *g, MeReal (*relative)[4])
+{
+    MeReal r = ME_R(0.0);
+    if (g->type == kMcdGeometryTypeSphere) {
+        r = g->u.sphere.radius;
+    } else if (g->type == MCD_NF_TRIANGLE_TYPE) {
+        for (int k = 0; k < 3; k++)
+            r = MeMAX(r, MeVector3Magnitude(g->u.triangle.v[k]));
+    } else {
+        MeVector3 lo, hi, corner;
+        McdGeometryAABBInternal(g, identityTM, lo, hi);
+        for (int k = 0; k < 3; k++)
+            corner[k] = MeMAX(MeFabs(lo[k]), MeFabs(hi[k]));
+        r = MeVector3Magnitude(corner);
+    }
+    return r + (relative ? MeVector3Magnitude(relative[3]) : ME_R(0.0));
+}
+
+/* The geometry-to-world transform of a motion at time t. */
+static void poseAt(const McdMotion *m, MeReal t, MeMatrix4 out)
+{
+    MeMatrix4 moved;
+    MeMatrix4TMUpdateFromVelocities(moved, MCD_SAFE_SPIN_EPS, t, m->v, m->w, m->start);
+    if (m->relative)
+        MeMatrix4TMCompound(out, m->relative, moved);
+    else
+        MeMatrix4Copy(out, moved);
+}
+
+/* Whether the geometry's origin moves in a straight line (no spin, or it sits on the spin's centre). */
+static MeBool centreMovesStraight(const McdMotion *m)
+{
+    return MeVector3MagnitudeSqr(m->w) == ME_R(0.0) || !m->relative || MeVector3MagnitudeSqr(m->relative[3]) == ME_R(0.0);
+}
+
+/* Signed distance between a (convex) and b (convex or plane) placed at ta, tb, and the unit direction
+ * from a towards b. */
+static MeReal distance(const McdGeometryData *a, MeMatrix4 ta, const McdGeometryData *b, MeMatrix4 tb, MeVector3 n)
+{
+    McdNfShape sa;
+    McdNfShapeInit(&sa, a, ta);
+    if (b->type == kMcdGeometryTypePlane) {
+        MeVector3 down, p;
+        MeVector3MultiplyScalar(down, tb[2], -ME_R(1.0));
+        McdNfCoreSupport(&sa, down, p);
+        MeVector3Copy(n, down);
+        return MeVector3Dot(tb[2], p) - MeVector3Dot(tb[2], tb[3]) - sa.radius;
+    }
+    McdNfShape sb;
+    McdNfDistance d;
+    McdNfShapeInit(&sb, b, tb);
+    McdNfCoreDistance(&sa, &sb, &d);
+    MeVector3Copy(n, d.normal);
+    return d.distance - sa.radius - sb.radius;
+}
+
+/* Conservative advancement of a (convex) against b (convex or plane) over [0, maxTime]: the time at
+ * which their signed distance first comes within eps of the target, which is gap, or (slop >= 0 and
+ * already within gap at the start) the start's distance less slop. */
+static McdSafeTimeOutcome advance(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap, MeReal slop,
+                                  MeReal eps, MeReal *time)
+{
+    const MeReal spin = MeVector3Magnitude(a->w) * McdSafeTimeReach(a->g, a->relative) +
+                        (b->g->type == kMcdGeometryTypePlane ? ME_R(0.0)
+                                                             : MeVector3Magnitude(b->w) * McdSafeTimeReach(b->g, b->relative));
+    MeVector3 rel;
+    MeVector3Subtract(rel, a->v, b->v);
+    const MeReal speed = MeVector3Magnitude(rel) + spin;
+    MeReal t = ME_R(0.0), target = gap;
+    for (int i = 0; i < MCD_SAFE_MAX_ADVANCES; i++) {
+        MeMatrix4 ta, tb;
+        MeVector3 n;
+        poseAt(a, t, ta);
+        poseAt(b, t, tb);
+        MeReal d = distance(a->g, ta, b->g, tb, n);
+        if (!isfinite(d))
+            break; /* degenerate arithmetic: stop at the time reached, which is safe */
+        if (i == 0 && slop >= ME_R(0.0) && d <= gap + eps)
+            target = d - slop; /* touching already: only going deeper by slop counts */
+        if (d <= target + eps) {
+            *time = t;
+            return MCD_SAFE_HIT;
+        }
+        /* A plane turning about its origin sweeps points arbitrarily far away: no bound. */
+        if (b->g->type == kMcdGeometryTypePlane && MeVector3MagnitudeSqr(b->w) > ME_R(0.0))
+            return MCD_SAFE_NO_METHOD;
+        /* Separated: no point closes the gap along n faster than this. Overlapping (the depth from
+         * EPA, or a plane): the distance changes no faster than the fastest point moves. */
+        MeReal closing = d > ME_R(0.0) || b->g->type == kMcdGeometryTypePlane ? MeVector3Dot(rel, n) + spin : speed;
+        if (!(closing > ME_R(0.0)))
+            return MCD_SAFE_CLEAR;
+        t += (d - target - ME_R(0.5) * eps) / closing;
+        if (t > maxTime)
+            return MCD_SAFE_CLEAR;
+    }
+    *time = t;
+    return MCD_SAFE_HIT;
+}
+
+/* Sphere against sphere, centres in straight lines: the first root of |p + u t| = reach. */
+static McdSafeTimeOutcome sphereSphere(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap, MeReal eps,
+                                       MeReal *time)
+{
+    MeMatrix4 ta, tb;
+    MeVector3 p, u;
+    poseAt(a, 0, ta);
+    poseAt(b, 0, tb);
+    MeVector3Subtract(p, tb[3], ta[3]);
+    MeVector3Subtract(u, b->v, a->v);
+    const MeReal reach = a->g->u.sphere.radius + b->g->u.sphere.radius + gap + ME_R(0.5) * eps;
+    const MeReal c = MeVector3Dot(p, p) - reach * reach;
+    if (MeVector3Magnitude(p) <= reach + ME_R(0.5) * eps) {
+        *time = 0;
+        return MCD_SAFE_HIT;
+    }
+    const MeReal uu = MeVector3Dot(u, u), pu = MeVector3Dot(p, u);
+    const MeReal disc = pu * pu - uu * c;
+    if (pu >= ME_R(0.0) || disc < ME_R(0.0))
+        return MCD_SAFE_CLEAR;
+    const MeReal t = c / (-pu + MeSqrt(disc)); /* the smaller root, without cancellation */
+    if (t > maxTime)
+        return MCD_SAFE_CLEAR;
+    *time = t;
+    return MCD_SAFE_HIT;
+}
+
+/* Sphere a against a plane b that does not turn: the height above the plane falls linearly. */
+static McdSafeTimeOutcome spherePlane(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap, MeReal eps,
+                                      MeReal *time)
+{
+    MeMatrix4 ta, tb;
+    MeVector3 rel;
+    poseAt(a, 0, ta);
+    poseAt(b, 0, tb);
+    const MeReal h = MeVector3Dot(tb[2], ta[3]) - MeVector3Dot(tb[2], tb[3]) - a->g->u.sphere.radius - gap -
+                     ME_R(0.5) * eps;
+    if (h <= ME_R(0.5) * eps) {
+        *time = 0;
+        return MCD_SAFE_HIT;
+    }
+    MeVector3Subtract(rel, a->v, b->v);
+    const MeReal rate = MeVector3Dot(tb[2], rel);
+    if (!(rate < ME_R(0.0)) || h > -rate * maxTime)
+        return MCD_SAFE_CLEAR;
+    *time = h / -rate;
+    return MCD_SAFE_HIT;
+}
+
+/* ---- a convex against the triangles of a terrain ---------------------------------------------- */
+
+typedef struct TerrainSweep {
+    const McdMotion *convex, *terrain;
+    MeReal maxTime, gap, slop, eps;
+    McdSafeTimeOutcome outcome;
+    MeReal best;
+} TerrainSweep;
+
+static MeBool sweepTriangle(void *ctx, const McdTerrainTriangle *tri)
+{
+    TerrainSweep *s = ctx;
+    McdGeometryData core;
+    memset(&core, 0, sizeof core);
+    core.type = MCD_NF_TRIANGLE_TYPE;
+    for (int k = 0; k < 3; k++)
+        MeVector3Copy(core.u.triangle.v[k], tri->v[k]);
+    McdMotion t = *s->terrain;
+    t.g = &core;
+    MeReal when;
+    /* Only a time earlier than the best so far matters. */
+    if (advance(s->convex, &t, s->best, s->gap, s->slop, s->eps, &when) == MCD_SAFE_HIT && when <= s->best) {
+        s->best = when;
+        s->outcome = MCD_SAFE_HIT;
+    }
+    return s->best > ME_R(0.0); /* nothing is earlier than now */
+}
+
+static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap,
+                                        MeReal slop, MeReal eps, MeReal *time)
+{
+    /* The world box the convex sweeps (its reach about both ends of its path), widened by the
+     * terrain's own travel, in the terrain's frame at t = 0; a turning terrain is searched whole. */
+    const MeReal reach = McdSafeTimeReach(a->g, a->relative) + gap + eps;
+    MeVector3 lo, hi, llo, lhi, centre;
+    const MeReal slide = MeVector3Magnitude(b->v) * maxTime;
+    for (int k = 0; k < 3; k++) {
+        const MeReal end = a->start[3][k] + a->v[k] * maxTime;
+        lo[k] = MeMIN(a->start[3][k], end) - reach - slide;
+        hi[k] = MeMAX(a->start[3][k], end) + reach + slide;
+    }
+    MeMatrix4 tb, inv;
+    poseAt(b, 0, tb);
+    if (MeVector3MagnitudeSqr(b->w) > ME_R(0.0)) {
+        McdGeometryAABBInternal(b->g, identityTM, llo, lhi);
+    } else {
+        MeMatrix4Copy(inv, tb);
+        MeMatrix4TMInvert(inv);
+        for (int c = 0; c < 8; c++) {
+            MeVector3 corner = {c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]}, local;
+            McdNfToWorld(local, inv, corner);
+            for (int k = 0; k < 3; k++) {
+                llo[k] = c ? MeMIN(llo[k], local[k]) : local[k];
+                lhi[k] = c ? MeMAX(lhi[k], local[k]) : local[k];
+            }
+        }
+    }
+    for (int k = 0; k < 3; k++)
+        centre[k] = ME_R(0.5) * (llo[k] + lhi[k]);
+    MeVector3 half;
+    MeVector3Subtract(half, lhi, llo);
+    TerrainSweep s = {a, b, maxTime, gap, slop, eps, MCD_SAFE_CLEAR, maxTime};
+    McdTerrainForEach(b->g, llo, lhi, centre, ME_R(0.5) * MeVector3Magnitude(half), b->pair, sweepTriangle, &s);
+    *time = s.best;
+    return s.outcome;
+}
+
+McdSafeTimeOutcome McdSafeTimeMotions(const McdFrameworkData *fw, const McdMotion *a, const McdMotion *b,
+                                      MeReal maxTime, MeReal gap, MeReal slop, MeReal *time)
+{
+    const MeReal eps = MCD_SAFE_TIME_GAP * (fw ? fw->lengthScale : ME_R(1.0));
+    McdSafeTimeOutcome out = MCD_SAFE_NO_METHOD;
+    *time = maxTime;
+    if (!a->g || !b->g)
+        return out;
+    const int ta = a->g->type, tb = b->g->type;
+    if (!McdSafeTimeIsConvex(ta) && McdSafeTimeIsConvex(tb)) {
+        const McdMotion *swap = a;
+        a = b;
+        b = swap;
+    }
+    const int ca = a->g->type, cb = b->g->type;
+    (void)ta;
+    (void)tb;
+    if (!McdSafeTimeIsConvex(ca))
+        return MCD_SAFE_NO_METHOD;
+    MeReal t = maxTime;
+    /* The closed forms answer "when within gap"; with a slop (a sweep) the advancement does it all. */
+    const MeBool closed = slop < ME_R(0.0);
+    if (closed && ca == kMcdGeometryTypeSphere && cb == kMcdGeometryTypeSphere && centreMovesStraight(a) &&
+        centreMovesStraight(b))
+        out = sphereSphere(a, b, maxTime, gap, eps, &t);
+    else if (closed && ca == kMcdGeometryTypeSphere && cb == kMcdGeometryTypePlane && centreMovesStraight(a) &&
+             MeVector3MagnitudeSqr(b->w) == ME_R(0.0))
+        out = spherePlane(a, b, maxTime, gap, eps, &t);
+    else if (McdSafeTimeIsConvex(cb) || cb == kMcdGeometryTypePlane)
+        out = advance(a, b, maxTime, gap, slop, eps, &t);
+    else if (isTerrain(cb))
+        out = convexTerrain(a, b, maxTime, gap, slop, eps, &t);
+    if (out == MCD_SAFE_HIT)
+        *time = t;
+    return out;
+}
+
+/* ---- Karma's entry point ------------------------------------------------------------------------ */
+
+static MeReal (*relativeOf(McdModelData *m))[4]
+{
+    if (m->relativePtr)
+        return m->relativePtr;
+    return m->hasRelative ? m->relativeTransform : NULL;
+}
+
+static MeBool velocityOf(const MeReal *ptr, MeVector3 out, const char *which)
+{
+    if (!ptr) {
+        MeVector3Set(out, 0, 0, 0);
+        return METRUE;
+    }
+    MeVector3Copy(out, ptr);
+    if (!MeVector3IsValid(out)) {
+        ME_REPORT_IN("McdSafeTime", ME_ERR_MCD_SAFE_TIME_VELOCITY,
+                     "the %s velocity (%g, %g, %g) is not finite; result unchanged", which, (double)out[0],
+                     (double)out[1], (double)out[2]);
+        return MEFALSE;
+    }
+    return METRUE;
+}
+
+MeBool McdSafeTime(McdModelPairID pair, MeReal maxTime, McdSafeTimeResult *result)
+{
+    ME_CHECK_NOT_NULL(pair, MEFALSE);
+    ME_CHECK_NOT_NULL(result, MEFALSE);
+    if (!(isfinite(maxTime) && maxTime >= ME_R(0.0))) {
+        ME_REPORT(ME_ERR_MCD_SAFE_TIME_RANGE, "argument 'maxTime' (%g) must be finite and >= 0; result unchanged",
+                  (double)maxTime);
+        return MEFALSE;
+    }
+    McdModelData *m1 = McdModelFromID(pair->model1, __func__), *m2 = McdModelFromID(pair->model2, __func__);
+    if (!m1 || !m2)
+        return MEFALSE;
+    McdMotion a = {m1->geometry, McdModelTransformInternal(m1), relativeOf(m1), {0, 0, 0}, {0, 0, 0}, pair};
+    McdMotion b = {m2->geometry, McdModelTransformInternal(m2), relativeOf(m2), {0, 0, 0}, {0, 0, 0}, pair};
+    if (!velocityOf(m1->linearVelocity, a.v, "first model's linear") ||
+        !velocityOf(m1->angularVelocity, a.w, "first model's angular") ||
+        !velocityOf(m2->linearVelocity, b.v, "second model's linear") ||
+        !velocityOf(m2->angularVelocity, b.w, "second model's angular"))
+        return MEFALSE;
+    MeReal t;
+    McdSafeTimeOutcome out = McdSafeTimeMotions(m1->framework, &a, &b, maxTime, ME_R(0.0), -ME_R(1.0), &t);
+    result->pair = pair;
+    result->time = t;
+    return out != MCD_SAFE_NO_METHOD;
+}

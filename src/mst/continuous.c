@@ -1,0 +1,106 @@
+/* continuous.c -- the universe's continuous-collision pass (see continuous.h and McdContinuous.h).
+ *
+ * The step's motion of a body is known exactly once the world has stepped: from the start pose to
+ * the end pose at the constant velocities that join them (the straight path of its origin and the
+ * one rotation between the orientations). McdSpaceSweepModel finds the first time the model comes
+ * within half its contact tolerance of another along that path; the body is put there with its
+ * velocity unchanged, so the next step's contacts (reported up to the full tolerance) stop it or
+ * bounce it. The time after the impact is lost to that body (Box2D v3's choice: no sub-step). */
+#include <karma/McdContinuous.h>
+#include <karma/McdModel.h>
+#include <karma/McdSpace.h>
+#include <karma/MdtBody.h>
+#include <karma/MeMath.h>
+#include <karma/MeMemory.h>
+#include <karma/MstBridge.h>
+
+#include "continuous.h"
+
+#include <string.h>
+
+/* Angular speeds below this (rad/s) are no rotation when the pose at the time of impact is made. */
+#define MST_SWEEP_SPIN_EPS ME_R(1e-6)
+
+static MeBool reserve(MstContinuous *c, int n)
+{
+    if (n <= c->capacity)
+        return METRUE;
+    int capacity = c->capacity ? c->capacity : 8;
+    while (capacity < n)
+        capacity *= 2;
+    MstSweepStart *grown = MeMemoryResize(c->starts, sizeof *grown * (size_t)capacity);
+    if (!grown)
+        return MEFALSE;
+    c->starts = grown;
+    c->capacity = capacity;
+    return METRUE;
+}
+
+void MstContinuousBeforeStep(MstContinuous *c, McdFrameworkID fw, McdSpaceID space)
+{
+    c->count = 0;
+    if (McdFrameworkGetContinuousModelCount(fw) == 0)
+        return; /* the cost without flagged models: this test */
+    McdSpaceModelIterator it;
+    McdModelID m;
+    McdSpaceModelIteratorBegin(space, &it);
+    while (McdSpaceGetModel(space, &it, &m)) {
+        if (!McdModelIsContinuous(m))
+            continue;
+        MdtBodyID b = McdModelGetBody(m);
+        if (!b || !MdtBodyIsEnabled(b) || !reserve(c, c->count + 1))
+            continue;
+        MstSweepStart *s = &c->starts[c->count++];
+        s->model = m;
+        s->body = b;
+        MeMatrix4Copy(s->start, MdtBodyGetTransformPtr(b));
+    }
+}
+
+/* The world angular velocity (rad/s) that turns orientation r0 into r1 in h seconds (the shorter
+ * way). TM rows are the body axes in world coordinates: the world rotation is M = (r0^T r1)^T. */
+static void spinBetween(MeMatrix4 r0, MeMatrix4 r1, MeReal h, MeVector3 w)
+{
+    MeReal m[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            m[i][j] = r0[0][j] * r1[0][i] + r0[1][j] * r1[1][i] + r0[2][j] * r1[2][i];
+    MeVector3 axis = {m[2][1] - m[1][2], m[0][2] - m[2][0], m[1][0] - m[0][1]}; /* 2 sin(angle) axis */
+    const MeReal s2 = MeVector3Magnitude(axis), c = ME_R(0.5) * (m[0][0] + m[1][1] + m[2][2] - ME_R(1.0));
+    if (s2 <= ME_R(0.0)) {
+        MeVector3Set(w, 0, 0, 0);
+        return;
+    }
+    const MeReal angle = MeAtan2(ME_R(0.5) * s2, c);
+    MeVector3MultiplyScalar(w, axis, angle / (s2 * h));
+}
+
+void MstContinuousAfterStep(MstContinuous *c, MeReal stepSize)
+{
+    for (int i = 0; i < c->count; i++) {
+        MstSweepStart *s = &c->starts[i];
+        if (!MdtBodyIsValid(s->body) || !McdModelIsValid(s->model))
+            continue; /* destroyed by a callback during the step */
+        MeReal(*end)[4] = MdtBodyGetTransformPtr(s->body);
+        MeVector3 v, w;
+        for (int k = 0; k < 3; k++)
+            v[k] = (end[3][k] - s->start[3][k]) / stepSize;
+        spinBetween(s->start, end, stepSize, w);
+        MeReal t;
+        const MeReal gap = ME_R(0.5) * McdModelGetContactTolerance(s->model);
+        if (!McdSpaceSweepModel(s->model, s->start, v, w, stepSize, gap, &t, NULL) || !(t < stepSize))
+            continue;
+        MeMatrix4 at;
+        MeVector4 q;
+        MeMatrix4TMUpdateFromVelocities(at, MST_SWEEP_SPIN_EPS, t, v, w, s->start);
+        MeQuaternionFromTM(q, at);
+        MdtBodySetQuaternion(s->body, q[0], q[1], q[2], q[3]);
+        MdtBodySetPosition(s->body, at[3][0], at[3][1], at[3][2]);
+    }
+}
+
+void MstContinuousFree(MstContinuous *c)
+{
+    MeMemoryDestroy(c->starts);
+    memset(c, 0, sizeof *c);
+}
