@@ -30,7 +30,8 @@ ME_API MeBool McdIntersectAt(McdModelPairID pair, McdIntersectResult *result, Me
  *  which the models, moving from the transforms they follow now at their velocities (as
  *  McdIntersectAt; a NULL velocity pointer is at rest), provably do not touch; 0 when they touch now,
  *  maxTime when they do not meet. Never later than the true time of impact; at the time returned the
- *  models are at most MCD_SAFE_TIME_GAP times the framework's lengthScale apart. Closed forms for
+ *  models are at most MCD_SAFE_TIME_GAP times the framework's lengthScale apart (unless 256 advances
+ *  do not get there, as a fast spin grazing past may need: the time is then earlier, still safe). Closed forms for
  *  sphere-sphere and sphere-plane, conservative advancement on GJK distances for every other pair of
  *  convex shapes (primitives, convex meshes), shape-plane and shape-terrain (triangle lists, meshes,
  *  height fields). Returns METRUE when the pair's types have a method; MEFALSE (time = maxTime) for

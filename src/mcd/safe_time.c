@@ -20,7 +20,7 @@
 
 /* Advances at most; a pair that has not come within the tolerance by then gets the (still safe) time
  * reached. Head-on approaches take two or three. */
-#define MCD_SAFE_MAX_ADVANCES 64
+#define MCD_SAFE_MAX_ADVANCES 256
 /* Angular speeds below this (rad/s) rotate nothing in the extrapolated pose (as McdIntersectAt). */
 #define MCD_SAFE_SPIN_EPS ME_R(1e-6)
 
@@ -51,17 +51,32 @@ static MeBool isTerrain(int type)
 MeReal McdSafeTimeReach(const McdGeometryData *g, MeReal (*relative)[4])
 {
     MeReal r = ME_R(0.0);
-    if (g->type == kMcdGeometryTypeSphere) {
-        r = g->u.sphere.radius;
-    } else if (g->type == MCD_NF_TRIANGLE_TYPE) {
+    switch (g->type) {
+    case kMcdGeometryTypeSphere: r = g->u.sphere.radius; break;
+    case kMcdGeometryTypeBox: r = MeVector3Magnitude(g->u.box.radii); break;
+    case kMcdGeometryTypeCylinder: r = MeSqrt(MeSqr(g->u.cylinder.radius) + MeSqr(g->u.cylinder.halfHeight)); break;
+    case kMcdGeometryTypeSphyl: r = g->u.sphyl.radius + g->u.sphyl.halfHeight; break;
+    case kMcdGeometryTypeCone:
+        r = MeMAX(MeSqrt(MeSqr(g->u.cone.lowerRadius) + MeSqr(g->u.cone.zLower)),
+                  MeSqrt(MeSqr(g->u.cone.upperRadius) + MeSqr(g->u.cone.zUpper)));
+        break;
+    case kMcdGeometryTypeConvexMesh: {
+        const struct McdHull *h = g->u.convex.hull;
+        r = MeVector3Magnitude(h->centre) + h->radius + g->u.convex.fatness;
+        break;
+    }
+    case MCD_NF_TRIANGLE_TYPE:
         for (int k = 0; k < 3; k++)
             r = MeMAX(r, MeVector3Magnitude(g->u.triangle.v[k]));
-    } else {
+        break;
+    default: { /* the corner of its box about its origin */
         MeVector3 lo, hi, corner;
         McdGeometryAABBInternal(g, identityTM, lo, hi);
         for (int k = 0; k < 3; k++)
             corner[k] = MeMAX(MeFabs(lo[k]), MeFabs(hi[k]));
         r = MeVector3Magnitude(corner);
+        break;
+    }
     }
     return r + (relative ? MeVector3Magnitude(relative[3]) : ME_R(0.0));
 }

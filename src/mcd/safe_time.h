@@ -8,7 +8,7 @@
 #ifndef MCD_SAFE_TIME_H
 #define MCD_SAFE_TIME_H
 
-#include "mcd_internal.h"
+#include "framework.h"
 
 typedef struct McdMotion {
     const McdGeometryData *g;
