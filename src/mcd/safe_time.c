@@ -48,6 +48,26 @@ static MeBool isTerrain(int type)
            type == kMcdGeometryTypeRGHeightField;
 }
 
+MeReal McdSafeTimeInnerRadius(const McdGeometryData *g)
+{
+    switch (g->type) {
+    case kMcdGeometryTypeSphere: return g->u.sphere.radius;
+    case kMcdGeometryTypeBox: return MeMIN3(g->u.box.radii[0], g->u.box.radii[1], g->u.box.radii[2]);
+    case kMcdGeometryTypeCylinder: return MeMIN(g->u.cylinder.radius, g->u.cylinder.halfHeight);
+    case kMcdGeometryTypeSphyl: return g->u.sphyl.radius;
+    case kMcdGeometryTypeCone:
+        return ME_R(0.5) * MeMIN(g->u.cone.lowerRadius, g->u.cone.zUpper - g->u.cone.zLower);
+    case kMcdGeometryTypeConvexMesh: {
+        const struct McdHull *h = g->u.convex.hull;
+        MeReal r = MEINFINITY;
+        for (int i = 0; i < h->polygonCount; i++)
+            r = MeMIN(r, h->offsets[i]);
+        return MeMAX(r, ME_R(0.0)) + g->u.convex.fatness;
+    }
+    default: return ME_R(0.0);
+    }
+}
+
 MeReal McdSafeTimeReach(const McdGeometryData *g, MeReal (*relative)[4])
 {
     MeReal r = ME_R(0.0);
@@ -140,8 +160,10 @@ static McdSafeTimeOutcome advance(const McdMotion *a, const McdMotion *b, MeReal
         MeReal d = distance(a->g, ta, b->g, tb, n);
         if (!isfinite(d))
             break; /* degenerate arithmetic: stop at the time reached, which is safe */
+        /* Touching already (resting, sliding, rolling): only going deeper than slop counts, or, when
+         * deeper already (the contacts will push it out), deeper by a quarter of slop. */
         if (i == 0 && slop >= ME_R(0.0) && d <= gap + eps)
-            target = d - slop; /* touching already: only going deeper by slop counts */
+            target = MeMIN(-slop, d - ME_R(0.25) * slop);
         if (d <= target + eps) {
             *time = t;
             return MCD_SAFE_HIT;
@@ -216,6 +238,8 @@ static McdSafeTimeOutcome spherePlane(const McdMotion *a, const McdMotion *b, Me
 typedef struct TerrainSweep {
     const McdMotion *convex, *terrain;
     MeReal maxTime, gap, slop, eps;
+    MeVector3 c1, c2; /* the convex's centre at the start and the end, in the terrain's frame */
+    MeReal core;      /* Box2D's core distance: a quarter of the convex's inner radius */
     McdSafeTimeOutcome outcome;
     MeReal best;
 } TerrainSweep;
@@ -228,6 +252,17 @@ static MeBool sweepTriangle(void *ctx, const McdTerrainTriangle *tri)
     core.type = MCD_NF_TRIANGLE_TYPE;
     for (int k = 0; k < 3; k++)
         MeVector3Copy(core.u.triangle.v[k], tri->v[k]);
+    if (s->slop >= ME_R(0.0)) {
+        /* A sweep skips a triangle whose plane the centre does not approach by the core distance, or
+         * that it ends above by more than it (rolling and sliding across a floor: Box2D v3's test for
+         * chain segments), and a one-sided triangle it starts behind. */
+        MeReal s1 = MeVector3Dot(tri->normal, s->c1) - MeVector3Dot(tri->normal, tri->v[0]);
+        MeReal s2 = MeVector3Dot(tri->normal, s->c2) - MeVector3Dot(tri->normal, tri->v[0]);
+        if (s1 < ME_R(0.0) && (tri->flags & kMcdTriangleTwoSided))
+            s1 = -s1, s2 = -s2;
+        if (s1 < ME_R(0.0) || (s1 - s2 < s->core && s2 > s->core))
+            return METRUE;
+    }
     McdMotion t = *s->terrain;
     t.g = &core;
     MeReal when;
@@ -272,7 +307,17 @@ static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, 
         centre[k] = ME_R(0.5) * (llo[k] + lhi[k]);
     MeVector3 half;
     MeVector3Subtract(half, lhi, llo);
-    TerrainSweep s = {a, b, maxTime, gap, slop, eps, MCD_SAFE_CLEAR, maxTime};
+    TerrainSweep s = {a, b, maxTime, gap, slop, eps, {0, 0, 0}, {0, 0, 0}, ME_R(0.25) * McdSafeTimeInnerRadius(a->g),
+                      MCD_SAFE_CLEAR, maxTime};
+    MeMatrix4 ta, tbEnd;
+    poseAt(a, 0, ta);
+    MeMatrix4Copy(inv, tb);
+    MeMatrix4TMInvert(inv);
+    McdNfToWorld(s.c1, inv, ta[3]);
+    poseAt(a, maxTime, ta);
+    poseAt(b, maxTime, tbEnd);
+    MeMatrix4TMInvert(tbEnd);
+    McdNfToWorld(s.c2, tbEnd, ta[3]);
     McdTerrainForEach(b->g, llo, lhi, centre, ME_R(0.5) * MeVector3Magnitude(half), b->pair, sweepTriangle, &s);
     *time = s.best;
     return s.outcome;

@@ -33,6 +33,8 @@ MeBool McdSafeTimeIsConvex(int type);
  *  they hit at 0 (McdSafeTime). */
 McdSafeTimeOutcome McdSafeTimeMotions(const McdFrameworkData *fw, const McdMotion *a, const McdMotion *b,
                                       MeReal maxTime, MeReal gap, MeReal slop, MeReal *time);
+/** Radius of a ball round the geometry's origin inside it (0 when unknown). */
+MeReal McdSafeTimeInnerRadius(const McdGeometryData *g);
 /** Radius about the followed frame's origin that holds the geometry placed at `relative` (NULL:
  *  identity). */
 MeReal McdSafeTimeReach(const McdGeometryData *g, MeReal (*relative)[4]);
