@@ -21,17 +21,27 @@ ME_API void McdModelDisableContinuous(McdModelID m);
 ME_API MeBool McdModelIsContinuous(McdModelID m);
 /** Models of the framework with the continuous flag (0 for an invalid ID, reported). */
 ME_API int McdFrameworkGetContinuousModelCount(McdFrameworkID fw);
+/** What McdSpaceSweepModel found. */
+typedef struct McdSweepResult {
+    MeReal time;      /**< s from the start: the first time of impact, or the duration when none */
+    McdModelID model; /**< the model hit first, or NULL */
+    MeVector3 normal; /**< unit, from the swept model towards the one hit, at the time */
+    MeBool touching;  /**< the two were within gap of each other already at the start */
+} McdSweepResult;
+
 /** Sweep `m` (in a space, convex) from its followed transform `start` at constant velocities v (m/s,
  *  of start's origin) and w (rad/s, about it) for `duration` s against the other models of its
  *  space (each at rest where it is; those whose AABB of the last update misses the path skipped, as
- *  are disabled pairs and models of the same body). Returns METRUE with *time (s, < duration) the
- *  conservative first time m comes within `gap` (m) of another (*hit that model, if hit is not NULL);
- *  MEFALSE with *time = duration when it passes none. A model already within gap of another at
- *  the start hits it only when their signed distance (depth when overlapping) falls by 2 gap more.
- *  Duration or gap negative or not finite: ME_ERR_MCD_SAFE_TIME_RANGE; start or velocities not finite:
- *  ME_ERR_MCD_SAFE_TIME_VELOCITY; both return MEFALSE and leave *time unchanged. */
+ *  are disabled pairs and models of the same body). Returns METRUE when m comes within `gap` (m) of
+ *  another before the duration: result->time (s) is the conservative first such time. A model
+ *  already within gap of another at the start hits it only when their signed distance (depth when
+ *  overlapping) falls below -2 gap; a triangle of a terrain only when m's centre also approaches its
+ *  plane by a quarter of m's inner radius (rolling and sliding across a mesh are not stopped).
+ *  MEFALSE: result->time = duration, model NULL. Duration or gap negative or not finite:
+ *  ME_ERR_MCD_SAFE_TIME_RANGE; start or velocities not finite: ME_ERR_MCD_SAFE_TIME_VELOCITY; both
+ *  return MEFALSE and leave result unchanged. */
 ME_API MeBool McdSpaceSweepModel(McdModelID m, MeMatrix4 start, const MeVector3 v, const MeVector3 w, MeReal duration,
-                                 MeReal gap, MeReal *time, McdModelID *hit);
+                                 MeReal gap, McdSweepResult *result);
 
 ME_EXTERN_C_END
 

@@ -67,12 +67,12 @@ static MeReal (*relativeOf(McdModelData *m))[4]
 }
 
 MeBool McdSpaceSweepModel(McdModelID model, MeMatrix4 start, const MeVector3 v, const MeVector3 w, MeReal duration,
-                          MeReal gap, MeReal *time, McdModelID *hit)
+                          MeReal gap, McdSweepResult *result)
 {
     ME_CHECK_NOT_NULL(start, MEFALSE);
     ME_CHECK_NOT_NULL(v, MEFALSE);
     ME_CHECK_NOT_NULL(w, MEFALSE);
-    ME_CHECK_NOT_NULL(time, MEFALSE);
+    ME_CHECK_NOT_NULL(result, MEFALSE);
     McdModelData *m = McdModelFromID(model, __func__);
     if (!m)
         return MEFALSE;
@@ -88,10 +88,11 @@ MeBool McdSpaceSweepModel(McdModelID model, MeMatrix4 start, const MeVector3 v, 
         ME_REPORT(ME_ERR_MCD_SAFE_TIME_VELOCITY, "the start transform or a velocity is not finite; nothing swept");
         return MEFALSE;
     }
-    *time = duration;
+    result->time = duration;
+    result->model = NULL;
+    result->touching = MEFALSE;
+    MeVector3Set(result->normal, 0, 0, 0);
     const MeReal slop = MeMAX(ME_R(2.0) * gap, MCD_SAFE_TIME_GAP * m->framework->lengthScale);
-    if (hit)
-        *hit = NULL;
     if (!m->space || !m->geometry || !McdSafeTimeIsConvex(m->geometry->type))
         return MEFALSE;
     McdMotion a = {m->geometry, start, relativeOf(m), {v[0], v[1], v[2]}, {w[0], w[1], w[2]}, NULL};
@@ -123,14 +124,16 @@ MeBool McdSpaceSweepModel(McdModelID model, MeMatrix4 start, const MeVector3 v, 
         McdMotion b = {o->geometry, McdModelTransformInternal(o), relativeOf(o), {0, 0, 0}, {0, 0, 0}, &pair};
         a.pair = &pair;
         MeReal t;
+        McdSafeTimeHit hit;
         /* Touching already: only a further approach by the slop counts (a body resting, sliding or
          * rolling on the other is not stopped; one being driven through it is). */
-        const McdSafeTimeOutcome out = McdSafeTimeMotions(m->framework, &a, &b, *time, gap, slop, &t);
-        if (out == MCD_SAFE_HIT && t < *time) {
-            *time = t;
+        const McdSafeTimeOutcome out = McdSafeTimeMotions(m->framework, &a, &b, result->time, gap, slop, &t, &hit);
+        if (out == MCD_SAFE_HIT && t < result->time) {
+            result->time = t;
+            result->model = otherID;
+            MeVector3Copy(result->normal, hit.normal);
+            result->touching = hit.touching;
             found = METRUE;
-            if (hit)
-                *hit = otherID;
         }
     }
     return found;

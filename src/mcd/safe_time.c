@@ -143,7 +143,7 @@ static MeReal distance(const McdGeometryData *a, MeMatrix4 ta, const McdGeometry
  * which their signed distance first comes within eps of the target, which is gap, or (slop >= 0 and
  * already within gap at the start) the start's distance less slop. */
 static McdSafeTimeOutcome advance(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap, MeReal slop,
-                                  MeReal eps, MeReal *time)
+                                  MeReal eps, MeReal *time, McdSafeTimeHit *hit)
 {
     const MeReal spin = MeVector3Magnitude(a->w) * McdSafeTimeReach(a->g, a->relative) +
                         (b->g->type == kMcdGeometryTypePlane ? ME_R(0.0)
@@ -166,6 +166,10 @@ static McdSafeTimeOutcome advance(const McdMotion *a, const McdMotion *b, MeReal
             target = MeMIN(-slop, d - ME_R(0.25) * slop);
         if (d <= target + eps) {
             *time = t;
+            if (hit) {
+                MeVector3Copy(hit->normal, n);
+                hit->touching = target != gap;
+            }
             return MCD_SAFE_HIT;
         }
         /* A plane turning about its origin sweeps points arbitrarily far away: no bound. */
@@ -179,6 +183,10 @@ static McdSafeTimeOutcome advance(const McdMotion *a, const McdMotion *b, MeReal
         t += (d - target - ME_R(0.5) * eps) / closing;
         if (t > maxTime)
             return MCD_SAFE_CLEAR;
+        if (hit) {
+            MeVector3Copy(hit->normal, n);
+            hit->touching = target != gap;
+        }
     }
     *time = t;
     return MCD_SAFE_HIT;
@@ -186,7 +194,7 @@ static McdSafeTimeOutcome advance(const McdMotion *a, const McdMotion *b, MeReal
 
 /* Sphere against sphere, centres in straight lines: the first root of |p + u t| = reach. */
 static McdSafeTimeOutcome sphereSphere(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap, MeReal eps,
-                                       MeReal *time)
+                                       MeReal *time, McdSafeTimeHit *hit)
 {
     MeMatrix4 ta, tb;
     MeVector3 p, u;
@@ -198,6 +206,12 @@ static McdSafeTimeOutcome sphereSphere(const McdMotion *a, const McdMotion *b, M
     const MeReal c = MeVector3Dot(p, p) - reach * reach;
     if (MeVector3Magnitude(p) <= reach + ME_R(0.5) * eps) {
         *time = 0;
+        if (hit) {
+            MeVector3Copy(hit->normal, p);
+            if (MeVector3Normalize(hit->normal) <= ME_R(0.0))
+                MeVector3Set(hit->normal, 1, 0, 0);
+            hit->touching = MEFALSE;
+        }
         return MCD_SAFE_HIT;
     }
     const MeReal uu = MeVector3Dot(u, u), pu = MeVector3Dot(p, u);
@@ -208,12 +222,17 @@ static McdSafeTimeOutcome sphereSphere(const McdMotion *a, const McdMotion *b, M
     if (t > maxTime)
         return MCD_SAFE_CLEAR;
     *time = t;
+    if (hit) {
+        MeVector3ScaleAndAdd(hit->normal, p, t, u);
+        MeVector3Normalize(hit->normal);
+        hit->touching = MEFALSE;
+    }
     return MCD_SAFE_HIT;
 }
 
 /* Sphere a against a plane b that does not turn: the height above the plane falls linearly. */
 static McdSafeTimeOutcome spherePlane(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap, MeReal eps,
-                                      MeReal *time)
+                                      MeReal *time, McdSafeTimeHit *hit)
 {
     MeMatrix4 ta, tb;
     MeVector3 rel;
@@ -221,6 +240,10 @@ static McdSafeTimeOutcome spherePlane(const McdMotion *a, const McdMotion *b, Me
     poseAt(b, 0, tb);
     const MeReal h = MeVector3Dot(tb[2], ta[3]) - MeVector3Dot(tb[2], tb[3]) - a->g->u.sphere.radius - gap -
                      ME_R(0.5) * eps;
+    if (hit) {
+        MeVector3MultiplyScalar(hit->normal, tb[2], -ME_R(1.0));
+        hit->touching = MEFALSE;
+    }
     if (h <= ME_R(0.5) * eps) {
         *time = 0;
         return MCD_SAFE_HIT;
@@ -240,6 +263,7 @@ typedef struct TerrainSweep {
     MeReal maxTime, gap, slop, eps;
     MeVector3 c1, c2; /* the convex's centre at the start and the end, in the terrain's frame */
     MeReal core;      /* Box2D's core distance: a quarter of the convex's inner radius */
+    McdSafeTimeHit hit;
     McdSafeTimeOutcome outcome;
     MeReal best;
 } TerrainSweep;
@@ -267,15 +291,17 @@ static MeBool sweepTriangle(void *ctx, const McdTerrainTriangle *tri)
     t.g = &core;
     MeReal when;
     /* Only a time earlier than the best so far matters. */
-    if (advance(s->convex, &t, s->best, s->gap, s->slop, s->eps, &when) == MCD_SAFE_HIT && when <= s->best) {
+    McdSafeTimeHit hit;
+    if (advance(s->convex, &t, s->best, s->gap, s->slop, s->eps, &when, &hit) == MCD_SAFE_HIT && when <= s->best) {
         s->best = when;
         s->outcome = MCD_SAFE_HIT;
+        s->hit = hit;
     }
     return s->best > ME_R(0.0); /* nothing is earlier than now */
 }
 
 static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap,
-                                        MeReal slop, MeReal eps, MeReal *time)
+                                        MeReal slop, MeReal eps, MeReal *time, McdSafeTimeHit *hit)
 {
     /* The world box the convex sweeps (its reach about both ends of its path), widened by the
      * terrain's own travel, in the terrain's frame at t = 0; a turning terrain is searched whole. */
@@ -307,8 +333,8 @@ static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, 
         centre[k] = ME_R(0.5) * (llo[k] + lhi[k]);
     MeVector3 half;
     MeVector3Subtract(half, lhi, llo);
-    TerrainSweep s = {a, b, maxTime, gap, slop, eps, {0, 0, 0}, {0, 0, 0}, ME_R(0.25) * McdSafeTimeInnerRadius(a->g),
-                      MCD_SAFE_CLEAR, maxTime};
+    TerrainSweep s = {.convex = a, .terrain = b, .maxTime = maxTime, .gap = gap, .slop = slop, .eps = eps,
+                      .core = ME_R(0.25) * McdSafeTimeInnerRadius(a->g), .outcome = MCD_SAFE_CLEAR, .best = maxTime};
     MeMatrix4 ta, tbEnd;
     poseAt(a, 0, ta);
     MeMatrix4Copy(inv, tb);
@@ -320,11 +346,13 @@ static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, 
     McdNfToWorld(s.c2, tbEnd, ta[3]);
     McdTerrainForEach(b->g, llo, lhi, centre, ME_R(0.5) * MeVector3Magnitude(half), b->pair, sweepTriangle, &s);
     *time = s.best;
+    if (hit && s.outcome == MCD_SAFE_HIT)
+        *hit = s.hit;
     return s.outcome;
 }
 
 McdSafeTimeOutcome McdSafeTimeMotions(const McdFrameworkData *fw, const McdMotion *a, const McdMotion *b,
-                                      MeReal maxTime, MeReal gap, MeReal slop, MeReal *time)
+                                      MeReal maxTime, MeReal gap, MeReal slop, MeReal *time, McdSafeTimeHit *hit)
 {
     const MeReal eps = MCD_SAFE_TIME_GAP * (fw ? fw->lengthScale : ME_R(1.0));
     McdSafeTimeOutcome out = MCD_SAFE_NO_METHOD;
@@ -332,7 +360,8 @@ McdSafeTimeOutcome McdSafeTimeMotions(const McdFrameworkData *fw, const McdMotio
     if (!a->g || !b->g)
         return out;
     const int ta = a->g->type, tb = b->g->type;
-    if (!McdSafeTimeIsConvex(ta) && McdSafeTimeIsConvex(tb)) {
+    const MeBool swapped = !McdSafeTimeIsConvex(ta) && McdSafeTimeIsConvex(tb);
+    if (swapped) {
         const McdMotion *swap = a;
         a = b;
         b = swap;
@@ -347,16 +376,19 @@ McdSafeTimeOutcome McdSafeTimeMotions(const McdFrameworkData *fw, const McdMotio
     const MeBool closed = slop < ME_R(0.0);
     if (closed && ca == kMcdGeometryTypeSphere && cb == kMcdGeometryTypeSphere && centreMovesStraight(a) &&
         centreMovesStraight(b))
-        out = sphereSphere(a, b, maxTime, gap, eps, &t);
+        out = sphereSphere(a, b, maxTime, gap, eps, &t, hit);
     else if (closed && ca == kMcdGeometryTypeSphere && cb == kMcdGeometryTypePlane && centreMovesStraight(a) &&
              MeVector3MagnitudeSqr(b->w) == ME_R(0.0))
-        out = spherePlane(a, b, maxTime, gap, eps, &t);
+        out = spherePlane(a, b, maxTime, gap, eps, &t, hit);
     else if (McdSafeTimeIsConvex(cb) || cb == kMcdGeometryTypePlane)
-        out = advance(a, b, maxTime, gap, slop, eps, &t);
+        out = advance(a, b, maxTime, gap, slop, eps, &t, hit);
     else if (isTerrain(cb))
-        out = convexTerrain(a, b, maxTime, gap, slop, eps, &t);
-    if (out == MCD_SAFE_HIT)
+        out = convexTerrain(a, b, maxTime, gap, slop, eps, &t, hit);
+    if (out == MCD_SAFE_HIT) {
         *time = t;
+        if (hit && swapped)
+            MeVector3Scale(hit->normal, -ME_R(1.0));
+    }
     return out;
 }
 
@@ -405,7 +437,7 @@ MeBool McdSafeTime(McdModelPairID pair, MeReal maxTime, McdSafeTimeResult *resul
         !velocityOf(m2->angularVelocity, b.w, "second model's angular"))
         return MEFALSE;
     MeReal t;
-    McdSafeTimeOutcome out = McdSafeTimeMotions(m1->framework, &a, &b, maxTime, ME_R(0.0), -ME_R(1.0), &t);
+    McdSafeTimeOutcome out = McdSafeTimeMotions(m1->framework, &a, &b, maxTime, ME_R(0.0), -ME_R(1.0), &t, NULL);
     result->pair = pair;
     result->time = t;
     return out != MCD_SAFE_NO_METHOD;

@@ -25,14 +25,21 @@ typedef enum McdSafeTimeOutcome {
     MCD_SAFE_HIT            /* they come within gap (+ tolerance) at *time (0: already) */
 } McdSafeTimeOutcome;
 
+/** Where a hit came from: the unit direction from a towards b at the time, and whether a was within
+ *  gap of b already at the start (a sweep's slop applied). */
+typedef struct McdSafeTimeHit {
+    MeVector3 normal;
+    MeBool touching;
+} McdSafeTimeHit;
+
 /** Whether a geometry type can be moved by the sweep: convex primitives and convex meshes. */
 MeBool McdSafeTimeIsConvex(int type);
 /** Conservative time at which a and b come within `gap` (>= 0) of each other; the stopping tolerance
  *  is MCD_SAFE_TIME_GAP * lengthScale. With slop >= 0 (a sweep), shapes already within gap at the
  *  start hit only when their signed distance (depth when overlapping) falls by slop more; slop < 0:
- *  they hit at 0 (McdSafeTime). */
+ *  they hit at 0 (McdSafeTime). `hit` (may be NULL) receives the hit's direction. */
 McdSafeTimeOutcome McdSafeTimeMotions(const McdFrameworkData *fw, const McdMotion *a, const McdMotion *b,
-                                      MeReal maxTime, MeReal gap, MeReal slop, MeReal *time);
+                                      MeReal maxTime, MeReal gap, MeReal slop, MeReal *time, McdSafeTimeHit *hit);
 /** Radius of a ball round the geometry's origin inside it (0 when unknown). */
 MeReal McdSafeTimeInnerRadius(const McdGeometryData *g);
 /** Radius about the followed frame's origin that holds the geometry placed at `relative` (NULL:

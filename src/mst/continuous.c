@@ -10,6 +10,7 @@
 #include <karma/McdModel.h>
 #include <karma/McdSpace.h>
 #include <karma/MdtBody.h>
+#include <karma/MdtContactParams.h>
 #include <karma/MeMath.h>
 #include <karma/MeMemory.h>
 #include <karma/MstBridge.h>
@@ -75,7 +76,25 @@ static void spinBetween(MeMatrix4 r0, MeMatrix4 r1, MeReal h, MeVector3 w)
     MeVector3MultiplyScalar(w, axis, angle / (s2 * h));
 }
 
-void MstContinuousAfterStep(MstContinuous *c, MeReal stepSize)
+/* A body that was touching what it hit and was driven into it all the same (the step's contacts did
+ * not hold it: a spin much faster than the step resolves, a push) loses its approach along the hit's
+ * normal at its centre of mass, reflected by the pair's restitution: no energy or momentum is added. */
+static void unjam(MdtBodyID body, McdModelID model, const McdSweepResult *hit, MstBridgeID bridge)
+{
+    MeVector3 v;
+    MdtBodyGetLinearVelocity(body, v);
+    const MeReal approach = MeVector3Dot(v, hit->normal);
+    if (!(approach > ME_R(0.0)))
+        return;
+    MeReal e = ME_R(0.0);
+    MdtContactParamsID p = MstBridgeGetContactParams(bridge, McdModelGetMaterial(model), McdModelGetMaterial(hit->model));
+    if (p && approach > MdtContactParamsGetRestitutionThreshold(p))
+        e = MdtContactParamsGetRestitution(p);
+    MeVector3ScaleAndAdd(v, v, -(ME_R(1.0) + e) * approach, hit->normal);
+    MdtBodySetLinearVelocity(body, v[0], v[1], v[2]);
+}
+
+void MstContinuousAfterStep(MstContinuous *c, MstBridgeID bridge, MeReal stepSize)
 {
     for (int i = 0; i < c->count; i++) {
         MstSweepStart *s = &c->starts[i];
@@ -86,16 +105,18 @@ void MstContinuousAfterStep(MstContinuous *c, MeReal stepSize)
         for (int k = 0; k < 3; k++)
             v[k] = (end[3][k] - s->start[3][k]) / stepSize;
         spinBetween(s->start, end, stepSize, w);
-        MeReal t;
+        McdSweepResult hit;
         const MeReal gap = ME_R(0.5) * McdModelGetContactTolerance(s->model);
-        if (!McdSpaceSweepModel(s->model, s->start, v, w, stepSize, gap, &t, NULL) || !(t < stepSize))
+        if (!McdSpaceSweepModel(s->model, s->start, v, w, stepSize, gap, &hit) || !(hit.time < stepSize))
             continue;
         MeMatrix4 at;
         MeVector4 q;
-        MeMatrix4TMUpdateFromVelocities(at, MST_SWEEP_SPIN_EPS, t, v, w, s->start);
+        MeMatrix4TMUpdateFromVelocities(at, MST_SWEEP_SPIN_EPS, hit.time, v, w, s->start);
         MeQuaternionFromTM(q, at);
         MdtBodySetQuaternion(s->body, q[0], q[1], q[2], q[3]);
         MdtBodySetPosition(s->body, at[3][0], at[3][1], at[3][2]);
+        if (hit.touching)
+            unjam(s->body, s->model, &hit, bridge);
     }
 }
 

@@ -6,6 +6,7 @@
 
 #include <karma/McdTypes.h>
 #include <karma/MdtTypes.h>
+#include <karma/MstTypes.h>
 
 typedef struct MstSweepStart {
     McdModelID model;
@@ -22,8 +23,9 @@ typedef struct MstContinuous {
  *  scan, when the framework has no flagged model). */
 void MstContinuousBeforeStep(MstContinuous *c, McdFrameworkID fw, McdSpaceID space);
 /** Sweep each recorded body over the step of `stepSize` s just taken and move it back to its first
- *  time of impact (velocity kept). */
-void MstContinuousAfterStep(MstContinuous *c, MeReal stepSize);
+ *  time of impact (velocity kept, unless it was touching what it hit and was driven into it all the
+ *  same: then its approach along the hit's normal is reflected by the pair's restitution). */
+void MstContinuousAfterStep(MstContinuous *c, MstBridgeID bridge, MeReal stepSize);
 /** Free the records. */
 void MstContinuousFree(MstContinuous *c);
 

@@ -278,7 +278,7 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
     MeProfileFrameEnd(prof);
     MstContinuousBeforeStep(&u->continuous, u->framework, u->space);
     MdtWorldStep(u->world, stepSize);
-    MstContinuousAfterStep(&u->continuous, stepSize);
+    MstContinuousAfterStep(&u->continuous, u->bridge, stepSize);
     MdtWorldSetCallerName(u->world, worldCaller);
 }
 

@@ -316,7 +316,7 @@ static void random_convex_pairs(void **state)
         a.v[0] += (MeReal)ref_uniform(&rng, 1, 6); /* mostly towards b */
         const MeReal gap = iter % 3 == 0 ? ME_R(0.01) : 0;
         MeReal t;
-        McdSafeTimeOutcome out = McdSafeTimeMotions(NULL, &a, &b, 1, gap, -1, &t);
+        McdSafeTimeOutcome out = McdSafeTimeMotions(NULL, &a, &b, 1, gap, -1, &t, NULL);
         assert_int_not_equal(out, MCD_SAFE_NO_METHOD);
         /* before t: never closer than the gap (less the reference's accuracy) */
         for (int i = 0; i < 24; i++) {
@@ -406,16 +406,18 @@ static void bad_input(void **state)
     MeMatrix4 start;
     MeMatrix4TMMakeIdentity(start);
     MeVector3 v = {1, 0, 0}, w = {0, 0, 0};
-    MeReal t = 7;
-    assert_reports(ME_ERR_MCD_SAFE_TIME_RANGE, assert_false(McdSpaceSweepModel(s.a, start, v, w, -1, 0, &t, NULL)));
-    assert_reports(ME_ERR_MCD_SAFE_TIME_RANGE, assert_false(McdSpaceSweepModel(s.a, start, v, w, 1, -1, &t, NULL)));
+    McdSweepResult sr;
+    sr.time = 7;
+    assert_reports(ME_ERR_MCD_SAFE_TIME_RANGE, assert_false(McdSpaceSweepModel(s.a, start, v, w, -1, 0, &sr)));
+    assert_reports(ME_ERR_MCD_SAFE_TIME_RANGE, assert_false(McdSpaceSweepModel(s.a, start, v, w, 1, -1, &sr)));
     v[2] = (MeReal)NAN;
-    assert_reports(ME_ERR_MCD_SAFE_TIME_VELOCITY, assert_false(McdSpaceSweepModel(s.a, start, v, w, 1, 0, &t, NULL)));
-    assert_true(t == 7);
+    assert_reports(ME_ERR_MCD_SAFE_TIME_VELOCITY, assert_false(McdSpaceSweepModel(s.a, start, v, w, 1, 0, &sr)));
+    assert_true(sr.time == 7);
     v[2] = 0;
-    assert_false(McdSpaceSweepModel(s.a, start, v, w, 1, 0, &t, NULL));
-    assert_true(t == 1);
-    assert_reports(ME_ERR_NULL_ARGUMENT, McdSpaceSweepModel(s.a, start, v, w, 1, 0, NULL, NULL));
+    assert_false(McdSpaceSweepModel(s.a, start, v, w, 1, 0, &sr));
+    assert_true(sr.time == 1);
+    assert_null(sr.model);
+    assert_reports(ME_ERR_NULL_ARGUMENT, McdSpaceSweepModel(s.a, start, v, w, 1, 0, NULL));
     McdModelPairDestroy(pp);
     McdModelDestroy(p1);
     McdModelDestroy(p2);

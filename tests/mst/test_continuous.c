@@ -4,8 +4,9 @@
  *  - without the flag each passes through (the test shows the tunnelling it prevents);
  *  - with it the body stays on the near side at every step (its centre never past the wall's near
  *    face, its penetration below 1 cm: the contacts' softness at a 100 m/s impact);
- *  - restitution 0: it stops at the wall (speed below 0.2 m/s after 1 s) and never gains momentum or
- *    energy; restitution 0.5 (frictionless): it leaves at half its speed (within 2 %);
+ *  - restitution 0: it stops at the wall (speed below 0.2 m/s after 1 s; the turning plate, whose
+ *    spin its impacts turn into motion, ends moving away) and never gains momentum or energy;
+ *    restitution 0.5 (frictionless): it leaves at half its speed (within 2 %);
  *  - a sphere rolling fast on a tessellated mesh floor is not snagged: its trajectory with the flag is
  *    the one without it, bit for bit (the sweep finds nothing to stop);
  *  - a flagged body that hits nothing moves bit for bit as an unflagged one. */
@@ -155,7 +156,10 @@ static void stops_with_flag(void **state)
             const double nearFace = wall == WALL_BOX ? -0.01 : 0.0;
             assert_true(o.maxX < nearFace);
             assert_true(o.maxPenetration < 0.01);
-            assert_true(fabs((double)o.v[0]) < 0.2);
+            if (shape == PLATE_TURNING)
+                assert_true(o.v[0] < 0.2); /* the spin may throw it back: not into the wall */
+            else
+                assert_true(fabs((double)o.v[0]) < 0.2);
             assert_true(o.maxMomentum <= o.startMomentum * (1 + 1e-4));
             assert_true(o.maxEnergy <= o.startEnergy * (1 + 1e-4));
         }
