@@ -26,6 +26,7 @@ typedef struct McdSweepResult {
     MeReal time;      /**< s from the start: the first time of impact, or the duration when none */
     McdModelID model; /**< the model hit first, or NULL */
     MeVector3 normal; /**< unit, from the swept model towards the one hit, at the time */
+    MeVector3 position; /**< the swept model's point nearest the one hit (deepest in it), world, m */
     MeBool touching;  /**< the two were within gap of each other already at the start */
 } McdSweepResult;
 

@@ -92,6 +92,7 @@ MeBool McdSpaceSweepModel(McdModelID model, MeMatrix4 start, const MeVector3 v, 
     result->model = NULL;
     result->touching = MEFALSE;
     MeVector3Set(result->normal, 0, 0, 0);
+    MeVector3Set(result->position, 0, 0, 0);
     const MeReal slop = MeMAX(ME_R(2.0) * gap, MCD_SAFE_TIME_GAP * m->framework->lengthScale);
     if (!m->space || !m->geometry || !McdSafeTimeIsConvex(m->geometry->type))
         return MEFALSE;
@@ -132,6 +133,7 @@ MeBool McdSpaceSweepModel(McdModelID model, MeMatrix4 start, const MeVector3 v, 
             result->time = t;
             result->model = otherID;
             MeVector3Copy(result->normal, hit.normal);
+            MeVector3Copy(result->position, hit.point);
             result->touching = hit.touching;
             found = METRUE;
         }

@@ -118,9 +118,10 @@ static MeBool centreMovesStraight(const McdMotion *m)
     return MeVector3MagnitudeSqr(m->w) == ME_R(0.0) || !m->relative || MeVector3MagnitudeSqr(m->relative[3]) == ME_R(0.0);
 }
 
-/* Signed distance between a (convex) and b (convex or plane) placed at ta, tb, and the unit direction
- * from a towards b. */
-static MeReal distance(const McdGeometryData *a, MeMatrix4 ta, const McdGeometryData *b, MeMatrix4 tb, MeVector3 n)
+/* Signed distance between a (convex) and b (convex or plane) placed at ta, tb, the unit direction
+ * from a towards b and the point of a nearest b (deepest in it when they overlap). */
+static MeReal distance(const McdGeometryData *a, MeMatrix4 ta, const McdGeometryData *b, MeMatrix4 tb, MeVector3 n,
+                       MeVector3 onA)
 {
     McdNfShape sa;
     McdNfShapeInit(&sa, a, ta);
@@ -129,6 +130,7 @@ static MeReal distance(const McdGeometryData *a, MeMatrix4 ta, const McdGeometry
         MeVector3MultiplyScalar(down, tb[2], -ME_R(1.0));
         McdNfCoreSupport(&sa, down, p);
         MeVector3Copy(n, down);
+        MeVector3ScaleAndAdd(onA, p, sa.radius, n);
         return MeVector3Dot(tb[2], p) - MeVector3Dot(tb[2], tb[3]) - sa.radius;
     }
     McdNfShape sb;
@@ -136,6 +138,7 @@ static MeReal distance(const McdGeometryData *a, MeMatrix4 ta, const McdGeometry
     McdNfShapeInit(&sb, b, tb);
     McdNfCoreDistance(&sa, &sb, &d);
     MeVector3Copy(n, d.normal);
+    MeVector3ScaleAndAdd(onA, d.p1, sa.radius, n);
     return d.distance - sa.radius - sb.radius;
 }
 
@@ -154,10 +157,10 @@ static McdSafeTimeOutcome advance(const McdMotion *a, const McdMotion *b, MeReal
     MeReal t = ME_R(0.0), target = gap;
     for (int i = 0; i < MCD_SAFE_MAX_ADVANCES; i++) {
         MeMatrix4 ta, tb;
-        MeVector3 n;
+        MeVector3 n, onA;
         poseAt(a, t, ta);
         poseAt(b, t, tb);
-        MeReal d = distance(a->g, ta, b->g, tb, n);
+        MeReal d = distance(a->g, ta, b->g, tb, n, onA);
         if (!isfinite(d))
             break; /* degenerate arithmetic: stop at the time reached, which is safe */
         /* Touching already (resting, sliding, rolling): only going deeper than slop counts, or, when
@@ -168,6 +171,7 @@ static McdSafeTimeOutcome advance(const McdMotion *a, const McdMotion *b, MeReal
             *time = t;
             if (hit) {
                 MeVector3Copy(hit->normal, n);
+                MeVector3Copy(hit->point, onA);
                 hit->touching = target != gap;
             }
             return MCD_SAFE_HIT;
@@ -185,6 +189,7 @@ static McdSafeTimeOutcome advance(const McdMotion *a, const McdMotion *b, MeReal
             return MCD_SAFE_CLEAR;
         if (hit) {
             MeVector3Copy(hit->normal, n);
+            MeVector3Copy(hit->point, onA);
             hit->touching = target != gap;
         }
     }
@@ -208,8 +213,8 @@ static McdSafeTimeOutcome sphereSphere(const McdMotion *a, const McdMotion *b, M
         *time = 0;
         if (hit) {
             MeVector3Copy(hit->normal, p);
-            if (MeVector3Normalize(hit->normal) <= ME_R(0.0))
-                MeVector3Set(hit->normal, 1, 0, 0);
+            MeVector3Normalize(hit->normal);
+            MeVector3ScaleAndAdd(hit->point, ta[3], a->g->u.sphere.radius, hit->normal);
             hit->touching = MEFALSE;
         }
         return MCD_SAFE_HIT;
@@ -225,6 +230,8 @@ static McdSafeTimeOutcome sphereSphere(const McdMotion *a, const McdMotion *b, M
     if (hit) {
         MeVector3ScaleAndAdd(hit->normal, p, t, u);
         MeVector3Normalize(hit->normal);
+        MeVector3ScaleAndAdd(hit->point, ta[3], t, a->v);
+        MeVector3ScaleAndAdd(hit->point, hit->point, a->g->u.sphere.radius, hit->normal);
         hit->touching = MEFALSE;
     }
     return MCD_SAFE_HIT;
@@ -242,6 +249,7 @@ static McdSafeTimeOutcome spherePlane(const McdMotion *a, const McdMotion *b, Me
                      ME_R(0.5) * eps;
     if (hit) {
         MeVector3MultiplyScalar(hit->normal, tb[2], -ME_R(1.0));
+        MeVector3ScaleAndAdd(hit->point, ta[3], a->g->u.sphere.radius, hit->normal);
         hit->touching = MEFALSE;
     }
     if (h <= ME_R(0.5) * eps) {
@@ -253,6 +261,8 @@ static McdSafeTimeOutcome spherePlane(const McdMotion *a, const McdMotion *b, Me
     if (!(rate < ME_R(0.0)) || h > -rate * maxTime)
         return MCD_SAFE_CLEAR;
     *time = h / -rate;
+    if (hit)
+        MeVector3ScaleAndAdd(hit->point, hit->point, *time, a->v);
     return MCD_SAFE_HIT;
 }
 
@@ -263,6 +273,7 @@ typedef struct TerrainSweep {
     MeReal maxTime, gap, slop, eps;
     MeVector3 c1, c2; /* the convex's centre at the start and the end, in the terrain's frame */
     MeReal core;      /* Box2D's core distance: a quarter of the convex's inner radius */
+    MeReal turn;      /* how much deeper its turning can take the convex below its centre */
     McdSafeTimeHit hit;
     McdSafeTimeOutcome outcome;
     MeReal best;
@@ -277,14 +288,14 @@ static MeBool sweepTriangle(void *ctx, const McdTerrainTriangle *tri)
     for (int k = 0; k < 3; k++)
         MeVector3Copy(core.u.triangle.v[k], tri->v[k]);
     if (s->slop >= ME_R(0.0)) {
-        /* A sweep skips a triangle whose plane the centre does not approach by the core distance, or
-         * that it ends above by more than it (rolling and sliding across a floor: Box2D v3's test for
-         * chain segments), and a one-sided triangle it starts behind. */
+        /* A sweep skips a triangle whose plane the convex does not approach by the core distance and
+         * ends above by more than it (rolling and sliding across a floor: Box2D v3's test for chain
+         * segments, with the depth its turning can add), and a one-sided triangle it starts behind. */
         MeReal s1 = MeVector3Dot(tri->normal, s->c1) - MeVector3Dot(tri->normal, tri->v[0]);
         MeReal s2 = MeVector3Dot(tri->normal, s->c2) - MeVector3Dot(tri->normal, tri->v[0]);
         if (s1 < ME_R(0.0) && (tri->flags & kMcdTriangleTwoSided))
             s1 = -s1, s2 = -s2;
-        if (s1 < ME_R(0.0) || (s1 - s2 < s->core && s2 > s->core))
+        if (s1 < ME_R(0.0) || (s1 - s2 + s->turn < s->core && s2 - s->turn > s->core))
             return METRUE;
     }
     McdMotion t = *s->terrain;
@@ -335,6 +346,10 @@ static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, 
     MeVector3Subtract(half, lhi, llo);
     TerrainSweep s = {.convex = a, .terrain = b, .maxTime = maxTime, .gap = gap, .slop = slop, .eps = eps,
                       .core = ME_R(0.25) * McdSafeTimeInnerRadius(a->g), .outcome = MCD_SAFE_CLEAR, .best = maxTime};
+    /* Turning about its centre moves the convex's lowest point by at most reach - inner radius, and
+     * by no more than its fastest point travels. */
+    const MeReal own = McdSafeTimeReach(a->g, NULL);
+    s.turn = MeMIN(own - McdSafeTimeInnerRadius(a->g), MeVector3Magnitude(a->w) * maxTime * McdSafeTimeReach(a->g, a->relative));
     MeMatrix4 ta, tbEnd;
     poseAt(a, 0, ta);
     MeMatrix4Copy(inv, tb);
@@ -386,8 +401,10 @@ McdSafeTimeOutcome McdSafeTimeMotions(const McdFrameworkData *fw, const McdMotio
         out = convexTerrain(a, b, maxTime, gap, slop, eps, &t, hit);
     if (out == MCD_SAFE_HIT) {
         *time = t;
-        if (hit && swapped)
+        if (hit && swapped) { /* the point on the other: along the normal by the gap */
+            MeVector3ScaleAndAdd(hit->point, hit->point, gap, hit->normal);
             MeVector3Scale(hit->normal, -ME_R(1.0));
+        }
     }
     return out;
 }

@@ -25,10 +25,10 @@ typedef enum McdSafeTimeOutcome {
     MCD_SAFE_HIT            /* they come within gap (+ tolerance) at *time (0: already) */
 } McdSafeTimeOutcome;
 
-/** Where a hit came from: the unit direction from a towards b at the time, and whether a was within
- *  gap of b already at the start (a sweep's slop applied). */
+/** Where a hit came from: the unit direction from a towards b at the time, the point of a nearest b
+ *  then (world), and whether a was within gap of b already at the start (a sweep's slop applied). */
 typedef struct McdSafeTimeHit {
-    MeVector3 normal;
+    MeVector3 normal, point;
     MeBool touching;
 } McdSafeTimeHit;
 

@@ -77,21 +77,47 @@ static void spinBetween(MeMatrix4 r0, MeMatrix4 r1, MeReal h, MeVector3 w)
 }
 
 /* A body that was touching what it hit and was driven into it all the same (the step's contacts did
- * not hold it: a spin much faster than the step resolves, a push) loses its approach along the hit's
- * normal at its centre of mass, reflected by the pair's restitution: no energy or momentum is added. */
+ * not hold it: a spin much faster than the step resolves, a push) gets the frictionless impulse at
+ * the point of the hit that reverses its approach there times the pair's restitution: the contact
+ * law at that point, which adds neither energy nor momentum along the normal. */
 static void unjam(MdtBodyID body, McdModelID model, const McdSweepResult *hit, MstBridgeID bridge)
 {
-    MeVector3 v;
+    MeVector3 v, w, com, r, rxn, vp;
     MdtBodyGetLinearVelocity(body, v);
-    const MeReal approach = MeVector3Dot(v, hit->normal);
+    MdtBodyGetAngularVelocity(body, w);
+    MdtBodyGetCenterOfMassPosition(body, com);
+    MeVector3Subtract(r, hit->position, com);
+    MeVector3Cross(vp, w, r);
+    MeVector3Add(vp, vp, v);
+    const MeReal approach = MeVector3Dot(vp, hit->normal);
     if (!(approach > ME_R(0.0)))
         return;
     MeReal e = ME_R(0.0);
     MdtContactParamsID p = MstBridgeGetContactParams(bridge, McdModelGetMaterial(model), McdModelGetMaterial(hit->model));
     if (p && approach > MdtContactParamsGetRestitutionThreshold(p))
         e = MdtContactParamsGetRestitution(p);
-    MeVector3ScaleAndAdd(v, v, -(ME_R(1.0) + e) * approach, hit->normal);
+    /* The inverse inertia in world axes applied to r x n: through the body frame (TM rows = axes). */
+    MeMatrix3 inv;
+    MdtBodyGetInertiaTensor(body, inv);
+    if (!MeMatrix3Invert(inv))
+        return;
+    MeMatrix4Ptr tm = MdtBodyGetCenterOfMassTransformPtr(body);
+    MeVector3Cross(rxn, r, hit->normal);
+    MeVector3 local, turn, dw = {0, 0, 0};
+    for (int i = 0; i < 3; i++)
+        local[i] = MeVector3Dot(rxn, tm[i]);
+    for (int i = 0; i < 3; i++)
+        turn[i] = inv[i][0] * local[0] + inv[i][1] * local[1] + inv[i][2] * local[2];
+    for (int i = 0; i < 3; i++)
+        MeVector3ScaleAndAdd(dw, dw, turn[i], tm[i]);
+    const MeReal k = ME_R(1.0) / MdtBodyGetMass(body) + MeVector3Dot(rxn, dw);
+    if (!(k > ME_R(0.0)))
+        return;
+    const MeReal j = (ME_R(1.0) + e) * approach / k;
+    MeVector3ScaleAndAdd(v, v, -j / MdtBodyGetMass(body), hit->normal);
+    MeVector3ScaleAndAdd(w, w, -j, dw);
     MdtBodySetLinearVelocity(body, v[0], v[1], v[2]);
+    MdtBodySetAngularVelocity(body, w[0], w[1], w[2]);
 }
 
 void MstContinuousAfterStep(MstContinuous *c, MstBridgeID bridge, MeReal stepSize)
