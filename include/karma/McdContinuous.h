@@ -38,7 +38,8 @@ typedef struct McdSweepResult {
  *  already within gap of another at the start hits it only when their signed distance (depth when
  *  overlapping) falls below -2 gap; a triangle of a terrain only when m's centre also approaches its
  *  plane by a quarter of m's inner radius (rolling and sliding across a mesh are not stopped).
- *  MEFALSE: result->time = duration, model NULL. Duration or gap negative or not finite:
+ *  A model whose points all move less than half its inner radius in the duration is not swept (the
+ *  contacts catch it). MEFALSE: result->time = duration, model NULL. Duration or gap negative or not finite:
  *  ME_ERR_MCD_SAFE_TIME_RANGE; start or velocities not finite: ME_ERR_MCD_SAFE_TIME_VELOCITY; both
  *  return MEFALSE and leave result unchanged. */
 ME_API MeBool McdSpaceSweepModel(McdModelID m, MeMatrix4 start, const MeVector3 v, const MeVector3 w, MeReal duration,
