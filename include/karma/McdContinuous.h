@@ -21,6 +21,9 @@ ME_API void McdModelDisableContinuous(McdModelID m);
 ME_API MeBool McdModelIsContinuous(McdModelID m);
 /** Models of the framework with the continuous flag (0 for an invalid ID, reported). */
 ME_API int McdFrameworkGetContinuousModelCount(McdFrameworkID fw);
+/** The first maxCount of them into models (in the order they were flagged, a model unflagged
+ *  replaced by the last); returns how many there are. models may be NULL when maxCount is 0. */
+ME_API int McdFrameworkGetContinuousModels(McdFrameworkID fw, McdModelID *models, int maxCount);
 /** What McdSpaceSweepModel found. */
 typedef struct McdSweepResult {
     MeReal time;      /**< s from the start: the first time of impact, or the duration when none */

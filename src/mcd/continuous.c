@@ -16,13 +16,19 @@
 #include "safe_time.h"
 #include "space.h"
 
+#include <karma/MeMemory.h>
+
 #include <string.h>
 
 
 void McdModelContinuousForget(McdModelData *m)
 {
-    if (m->continuous)
-        m->framework->continuousCount--;
+    if (m->continuous) {
+        McdFrameworkData *fw = m->framework;
+        McdModelData *last = fw->continuousModels[--fw->continuousCount];
+        fw->continuousModels[m->continuousIndex] = last;
+        last->continuousIndex = m->continuousIndex;
+    }
     m->continuous = MEFALSE;
 }
 
@@ -36,8 +42,18 @@ void McdModelEnableContinuous(McdModelID id)
                   "primitives and convex meshes can; call ignored", m->geometry ? m->geometry->type : -1);
         return;
     }
-    if (!m->continuous)
-        m->framework->continuousCount++;
+    if (m->continuous)
+        return;
+    McdFrameworkData *fw = m->framework;
+    if (!fw->continuousModels) { /* room for every model of the pool, made once */
+        fw->continuousModels = MeMemoryCreate(sizeof *fw->continuousModels * (size_t)fw->modelPool.capacity);
+        if (!fw->continuousModels) {
+            ME_REPORT(ME_ERR_OUT_OF_MEMORY, "no memory for the list of continuous models; call ignored");
+            return;
+        }
+    }
+    m->continuousIndex = fw->continuousCount;
+    fw->continuousModels[fw->continuousCount++] = m;
     m->continuous = METRUE;
 }
 
@@ -58,6 +74,18 @@ int McdFrameworkGetContinuousModelCount(McdFrameworkID id)
 {
     McdFrameworkData *fw = McdFrameworkFromID(id, __func__);
     return fw ? fw->continuousCount : 0;
+}
+
+int McdFrameworkGetContinuousModels(McdFrameworkID id, McdModelID *models, int maxCount)
+{
+    McdFrameworkData *fw = McdFrameworkFromID(id, __func__);
+    if (!fw)
+        return 0;
+    if (maxCount > 0)
+        ME_CHECK_NOT_NULL(models, 0);
+    for (int i = 0; i < fw->continuousCount && i < maxCount; i++)
+        models[i] = McdModelToID(fw->continuousModels[i]);
+    return fw->continuousCount;
 }
 
 static MeReal (*relativeOf(McdModelData *m))[4]

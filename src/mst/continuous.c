@@ -37,19 +37,31 @@ static MeBool reserve(MstContinuous *c, int n)
     return METRUE;
 }
 
+static MeBool reserveModels(MstContinuous *c, int n)
+{
+    if (n <= c->modelCapacity)
+        return METRUE;
+    McdModelID *grown = MeMemoryResize(c->models, sizeof *grown * (size_t)n);
+    if (!grown)
+        return MEFALSE;
+    c->models = grown;
+    c->modelCapacity = n;
+    return METRUE;
+}
+
 void MstContinuousBeforeStep(MstContinuous *c, McdFrameworkID fw, McdSpaceID space)
 {
     c->count = 0;
-    if (McdFrameworkGetContinuousModelCount(fw) == 0)
+    const int n = McdFrameworkGetContinuousModelCount(fw);
+    if (n == 0)
         return; /* the cost without flagged models: this test */
-    McdSpaceModelIterator it;
-    McdModelID m;
-    McdSpaceModelIteratorBegin(space, &it);
-    while (McdSpaceGetModel(space, &it, &m)) {
-        if (!McdModelIsContinuous(m))
-            continue;
+    if (!reserve(c, n) || !reserveModels(c, n))
+        return;
+    McdFrameworkGetContinuousModels(fw, c->models, n);
+    for (int i = 0; i < n; i++) {
+        McdModelID m = c->models[i];
         MdtBodyID b = McdModelGetBody(m);
-        if (!b || !MdtBodyIsEnabled(b) || !reserve(c, c->count + 1))
+        if (!b || !MdtBodyIsEnabled(b) || McdModelGetSpace(m) != space)
             continue;
         MstSweepStart *s = &c->starts[c->count++];
         s->model = m;
@@ -149,5 +161,6 @@ void MstContinuousAfterStep(MstContinuous *c, MstBridgeID bridge, MeReal stepSiz
 void MstContinuousFree(MstContinuous *c)
 {
     MeMemoryDestroy(c->starts);
+    MeMemoryDestroy(c->models);
     memset(c, 0, sizeof *c);
 }

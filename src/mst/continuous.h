@@ -17,6 +17,8 @@ typedef struct MstSweepStart {
 typedef struct MstContinuous {
     MstSweepStart *starts;
     int count, capacity;
+    McdModelID *models; /* the framework's flagged models, read each step */
+    int modelCapacity;
 } MstContinuous;
 
 /** Record the start poses of the enabled bodies of the space's flagged models (nothing, and no

@@ -401,7 +401,13 @@ static void bad_input(void **state)
     McdModelEnableContinuous(s.a);
     McdModelDisableContinuous(s.a);
     assert_int_equal(McdFrameworkGetContinuousModelCount(s.fw), 0);
+    McdModelEnableContinuous(s.a);
     McdModelEnableContinuous(s.b);
+    McdModelDisableContinuous(s.a); /* the last one takes its place */
+    McdModelID listed[2] = {NULL, NULL};
+    assert_int_equal(McdFrameworkGetContinuousModels(s.fw, listed, 2), 1);
+    assert_ptr_equal(listed[0], s.b);
+    assert_int_equal(McdFrameworkGetContinuousModels(s.fw, NULL, 0), 1);
     /* the sweep refuses bad durations and motions, and does nothing for a model in no space */
     MeMatrix4 start;
     MeMatrix4TMMakeIdentity(start);
