@@ -1,11 +1,11 @@
 /* mcd_continuous_bench -- the cost of continuous collision (issue 18 point 4): a scene of many slow
- * bodies (400 boxes of 6.4 kg falling onto a plane and resting there, kept awake) and a few fast ones (4 spheres of 0.05 m fired
- * at 100 m/s at a 2 cm wall, refired when they come to rest), stepped through MstUniverseStep at
- * 1/60 s, z up.
+ * bodies (400 boxes of 6.4 kg resting on a plane, kept awake) and a few fast ones (4 spheres of
+ * 0.05 m fired at 100 m/s at a 2 cm wall, fired again when they stop or pass it), stepped through
+ * MstUniverseStep at 1/60 s, z up.
  *   mcd_continuous_bench MODE [STEPS]    MODE: off (no flag), fast (the 4 spheres flagged), all
- * Prints ms per step (median of the steps after the first 60) and how many fast spheres ended beyond
- * the wall. Instructions per step: run it under valgrind --tool=callgrind for two step counts and
- * divide the difference (bench/README.md). */
+ * Prints ms per step (median of the steps after the first 60) and how many times a fast sphere went
+ * through the wall. Instructions per step: run it under valgrind --tool=callgrind for two step
+ * counts and divide the difference. */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
 #include <stdio.h>

@@ -115,7 +115,7 @@ typedef int (*McdSafeTimeFn)(McdModelPair *pair, MeReal maxTime, McdSafeTimeResu
  *  intersectFn runs the registered test (NULL when the pair of types has none), swap says the test
  *  was registered for the types in the other order (the view's intersectFn handles either order),
  *  warned mirrors McdFrameworkGetInteractionsWarned; helloFn, goodbyeFn and safetimeFn are NULL and
- *  cull is 0 (no per-pair hooks, no safe time yet). Writing the fields changes nothing: register
+ *  cull is 0 (no per-pair hooks; McdSafeTime does not go through the table). Writing the fields changes nothing: register
  *  tests with McdFrameworkSetUserInteraction. */
 typedef struct McdInteractions {
     McdHelloFn helloFn;

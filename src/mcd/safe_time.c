@@ -115,7 +115,8 @@ static void poseAt(const McdMotion *m, MeReal t, MeMatrix4 out)
 /* Whether the geometry's origin moves in a straight line (no spin, or it sits on the spin's centre). */
 static MeBool centreMovesStraight(const McdMotion *m)
 {
-    return MeVector3MagnitudeSqr(m->w) == ME_R(0.0) || !m->relative || MeVector3MagnitudeSqr(m->relative[3]) == ME_R(0.0);
+    return MeVector3MagnitudeSqr(m->w) == ME_R(0.0) || !m->relative ||
+           MeVector3MagnitudeSqr(m->relative[3]) == ME_R(0.0);
 }
 
 /* Signed distance between a (convex) and b (convex or plane) placed at ta, tb, the unit direction
@@ -148,9 +149,10 @@ static MeReal distance(const McdGeometryData *a, MeMatrix4 ta, const McdGeometry
 static McdSafeTimeOutcome advance(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap, MeReal slop,
                                   MeReal eps, MeReal *time, McdSafeTimeHit *hit)
 {
-    const MeReal spin = MeVector3Magnitude(a->w) * McdSafeTimeReach(a->g, a->relative) +
-                        (b->g->type == kMcdGeometryTypePlane ? ME_R(0.0)
-                                                             : MeVector3Magnitude(b->w) * McdSafeTimeReach(b->g, b->relative));
+    const MeReal spinB = b->g->type == kMcdGeometryTypePlane
+                             ? ME_R(0.0)
+                             : MeVector3Magnitude(b->w) * McdSafeTimeReach(b->g, b->relative);
+    const MeReal spin = MeVector3Magnitude(a->w) * McdSafeTimeReach(a->g, a->relative) + spinB;
     MeVector3 rel;
     MeVector3Subtract(rel, a->v, b->v);
     const MeReal speed = MeVector3Magnitude(rel) + spin;
@@ -349,7 +351,8 @@ static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, 
     /* Turning about its centre moves the convex's lowest point by at most reach - inner radius, and
      * by no more than its fastest point travels. */
     const MeReal own = McdSafeTimeReach(a->g, NULL);
-    s.turn = MeMIN(own - McdSafeTimeInnerRadius(a->g), MeVector3Magnitude(a->w) * maxTime * McdSafeTimeReach(a->g, a->relative));
+    s.turn = MeMIN(own - McdSafeTimeInnerRadius(a->g),
+                   MeVector3Magnitude(a->w) * maxTime * McdSafeTimeReach(a->g, a->relative));
     MeMatrix4 ta, tbEnd;
     poseAt(a, 0, ta);
     MeMatrix4Copy(inv, tb);

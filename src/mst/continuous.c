@@ -105,7 +105,8 @@ static void unjam(MdtBodyID body, McdModelID model, const McdSweepResult *hit, M
     if (!(approach > ME_R(0.0)))
         return;
     MeReal e = ME_R(0.0);
-    MdtContactParamsID p = MstBridgeGetContactParams(bridge, McdModelGetMaterial(model), McdModelGetMaterial(hit->model));
+    MdtContactParamsID p =
+        MstBridgeGetContactParams(bridge, McdModelGetMaterial(model), McdModelGetMaterial(hit->model));
     if (p && approach > MdtContactParamsGetRestitutionThreshold(p))
         e = MdtContactParamsGetRestitution(p);
     /* The inverse inertia in world axes applied to r x n: through the body frame (TM rows = axes). */
