@@ -91,7 +91,8 @@ static void spinBetween(MeMatrix4 r0, MeMatrix4 r1, MeReal h, MeVector3 w)
 /* A body that was touching what it hit and was driven into it all the same (the step's contacts did
  * not hold it: a spin much faster than the step resolves, a push) gets the frictionless impulse at
  * the point of the hit that reverses its approach there times the pair's restitution: the contact
- * law at that point, which adds neither energy nor momentum along the normal. */
+ * law at that point (or at its centre of mass, below), which adds neither energy nor momentum
+ * along the normal. */
 static void unjam(MdtBodyID body, McdModelID model, const McdSweepResult *hit, MstBridgeID bridge)
 {
     MeVector3 v, w, com, r, rxn, vp;
@@ -101,7 +102,15 @@ static void unjam(MdtBodyID body, McdModelID model, const McdSweepResult *hit, M
     MeVector3Subtract(r, hit->position, com);
     MeVector3Cross(vp, w, r);
     MeVector3Add(vp, vp, v);
-    const MeReal approach = MeVector3Dot(vp, hit->normal);
+    MeReal approach = MeVector3Dot(vp, hit->normal);
+    /* A body turning about the point it touches (a spin of radians per step, which the contacts
+     * linearise) drives other points in while that one stands still: the impulse then goes through
+     * its centre of mass, against the centre's approach. */
+    const MeBool throughCentre = !(approach > ME_R(0.0));
+    if (throughCentre) {
+        approach = MeVector3Dot(v, hit->normal);
+        MeVector3Set(r, 0, 0, 0);
+    }
     if (!(approach > ME_R(0.0)))
         return;
     MeReal e = ME_R(0.0);

@@ -10,7 +10,8 @@
  *    restitution 0.5 (frictionless): it leaves at half its speed (within 2 %);
  *  - a sphere rolling fast on a tessellated mesh floor is not snagged: its trajectory with the flag is
  *    the one without it, bit for bit (the sweep finds nothing to stop);
- *  - a flagged body that hits nothing moves bit for bit as an unflagged one. */
+ *  - a flagged body that hits nothing moves bit for bit as an unflagged one;
+ *  - thirty random fast convex bodies (random shapes, sizes, poses and spins) stay in front. */
 #include "karma_test.h"
 #include "karma_terrain.h"
 
@@ -262,12 +263,94 @@ static void flag_without_impact_changes_nothing(void **state)
     assert_memory_equal(x[0], x[1], sizeof x[0]);
 }
 
+/* Random fast convex bodies (sphere, box, cylinder, sphyl, convex hull; random sizes down to 2 cm,
+ * random orientations, spins up to 10 rad/s, 30 to 120 m/s) thrown at the box wall and the mesh
+ * wall: with the flag every one stays on the near side (its centre before the wall's middle, never
+ * deeper in it than 2 cm) and none gains energy. */
+static double uniform(unsigned long long *state, double lo, double hi)
+{
+    *state = *state * 6364136223846793005ull + 1442695040888963407ull;
+    return lo + (hi - lo) * (double)(*state >> 11) / 9007199254740992.0;
+}
+
+static void random_fast_bodies_stay_in_front(void **state)
+{
+    (void)state;
+    unsigned long long rng = 0xcc11d5ull;
+    for (int iter = 0; iter < 30; iter++) {
+        static MeMatrix4 wallTM;
+        const int wall = iter % 2, kind = (iter / 2) % 5;
+        MstUniverseID u = MstUniverseCreate(&MstUniverseDefaultSizes);
+        McdFrameworkID fw = MstUniverseGetFramework(u);
+        MeMatrix4TMMakeIdentity(wallTM);
+        McdGeometryID wallGeo = wall == WALL_BOX ? McdBoxCreate(fw, ME_R(0.02), 3, 3) : karma_floor_mesh(fw, 1.5, 6, 0.3, 9);
+        if (wall == WALL_MESH) {
+            MeVector3Set(wallTM[0], 0, 0, 1);
+            MeVector3Set(wallTM[1], 0, 1, 0);
+            MeVector3Set(wallTM[2], -1, 0, 0);
+        }
+        McdModelID wallModel = MstFixedModelCreate(u, wallGeo, wallTM);
+        McdGeometryID g;
+        const MeReal a = (MeReal)uniform(&rng, 0.02, 0.3), b = (MeReal)uniform(&rng, 0.02, 0.5);
+        switch (kind) {
+        case 0: g = McdSphereCreate(fw, a); break;
+        case 1: g = McdBoxCreate(fw, a, b, (MeReal)uniform(&rng, 0.02, 0.5)); break;
+        case 2: g = McdCylinderCreate(fw, a, b); break;
+        case 3: g = McdSphylCreate(fw, a, b); break;
+        default: {
+            MeVector3 pts[12];
+            for (int k = 0; k < 12; k++)
+                MeVector3Set(pts[k], (MeReal)uniform(&rng, -a, a), (MeReal)uniform(&rng, -b, b), (MeReal)uniform(&rng, -0.2, 0.2));
+            g = McdConvexMeshCreateHull(fw, (const MeVector3 *)pts, 12, 0);
+            break;
+        }
+        }
+        assert_non_null(g);
+        McdModelID m = MstModelAndBodyCreate(u, g, 1000);
+        assert_non_null(m);
+        McdModelEnableContinuous(m);
+        MdtBodyID body = McdModelGetBody(m);
+        MeVector3 axis = {(MeReal)uniform(&rng, -1, 1), (MeReal)uniform(&rng, -1, 1), (MeReal)uniform(&rng, -1, 1)};
+        MeVector3Normalize(axis);
+        MeVector4 q;
+        MeQuaternionMake(q, axis, (MeReal)uniform(&rng, 0, 3.14));
+        MdtBodySetQuaternion(body, q[0], q[1], q[2], q[3]);
+        MdtBodySetPosition(body, -2, (MeReal)uniform(&rng, -0.5, 0.5), (MeReal)uniform(&rng, -0.5, 0.5));
+        MdtBodySetLinearVelocity(body, (MeReal)uniform(&rng, 30, 120), (MeReal)uniform(&rng, -5, 5), 0);
+        MdtBodySetAngularVelocity(body, (MeReal)uniform(&rng, -6, 6), (MeReal)uniform(&rng, -6, 6), (MeReal)uniform(&rng, -6, 6));
+        const double e0 = energyOf(body);
+        McdModelPairID pair = McdModelPairCreate(m, wallModel);
+        McdHello(pair);
+        for (int i = 0; i < 45; i++) {
+            MstUniverseStep(u, (MeReal)STEP);
+            MeVector3 x;
+            MdtBodyGetPosition(body, x);
+            McdModelUpdate(m);
+            McdContact c[8];
+            McdIntersectResult r;
+            memset(&r, 0, sizeof r);
+            r.contacts = c;
+            r.contactMaxCount = 8;
+            McdIntersect(pair, &r);
+            double deep = 0;
+            for (int k = 0; k < r.contactCount; k++)
+                deep = fmax(deep, -(double)c[k].separation);
+            if (!(x[0] < 0) || deep > 0.02 || energyOf(body) > e0 * (1 + 1e-4))
+                fail_msg("body %d (kind %d, %s) step %d: x %g, %g m deep, energy %g of %g", iter, kind, wallNames[wall], i,
+                         (double)x[0], deep, energyOf(body), e0);
+        }
+        McdGoodbye(pair);
+        McdModelPairDestroy(pair);
+        MstUniverseDestroy(u);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(tunnels_without_flag),  cmocka_unit_test(stops_with_flag),
         cmocka_unit_test(bounces_with_flag),     cmocka_unit_test(rolling_does_not_snag),
-        cmocka_unit_test(flag_without_impact_changes_nothing),
+        cmocka_unit_test(flag_without_impact_changes_nothing), cmocka_unit_test(random_fast_bodies_stay_in_front),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
