@@ -67,7 +67,7 @@ typedef struct McdFrameworkData {
     int termActionCount;
     McdInteractions *interactionViews; /* typeCapacity^2 entries of McdFrameworkGetInteractions, or NULL */
     MeU32 nextPairId;              /* identities of pairs made by McdModelPairCreate */
-    int continuousCount;           /* models with McdModelEnableContinuous (continuous.c), listed in */
+    int continuousCount;           /* models with McdModelEnableContinuous (model_sweep.c), listed in */
     struct McdModelData **continuousModels; /* enable order (a removal moves the last one in), or NULL */
     /* McdFrameworkGetCounters (atomic: pairs may be tested on several threads) */
     atomic_ulong pairFallbacks, droppedContacts, segmentFallbacks;

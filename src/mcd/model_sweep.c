@@ -1,4 +1,4 @@
-/* continuous.c -- continuous collision for fast models: the per-model flag and the sweep of one model
+/* model_sweep.c -- continuous collision for fast models: the per-model flag and the sweep of one model
  * through its space (MstUniverseStep moves a flagged body back to its first time of impact).
  *
  * The sweep looks at the other models of the space whose AABB (of the last update) meets the box the
