@@ -7,6 +7,7 @@
 #include "McdCTypes.h"
 #include "McdCone.h"
 #include "McdContact.h"
+#include "McdContinuous.h"
 #include "McdConvexMesh.h"
 #include "McdCullingTable.h"
 #include "McdCylinder.h"

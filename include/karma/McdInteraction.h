@@ -9,6 +9,7 @@
 #ifndef MCD_INTERACTION_H
 #define MCD_INTERACTION_H
 
+#include "McdSafeTimeResult.h"
 #include "McdSpace.h"
 #include "McdTypes.h"
 
@@ -25,6 +26,21 @@ ME_API void McdGoodbye(McdModelPairID pair);
  *  McdModelSetAngularVelocityPtr; a NULL pointer is at rest) from the transforms they follow now;
  *  their relative transforms apply. The models themselves are not moved. Returns `touch`. */
 ME_API MeBool McdIntersectAt(McdModelPairID pair, McdIntersectResult *result, MeReal time);
+/** Conservative time of impact (Karma 1.2): result->time is the largest time in [0, maxTime] (s) up to
+ *  which the models, moving from the transforms they follow now at their velocities (as
+ *  McdIntersectAt; a NULL velocity pointer is at rest), provably do not touch; 0 when they touch now,
+ *  maxTime when they do not meet. Never later than the true time of impact; at the time returned the
+ *  models are at most MCD_SAFE_TIME_GAP times the framework's lengthScale apart (unless 256 advances
+ *  do not get there, as a fast spin grazing past may need: the time is then earlier, still safe). Closed forms for
+ *  sphere-sphere and sphere-plane, conservative advancement on GJK distances for every other pair of
+ *  convex shapes (primitives, convex meshes), shape-plane and shape-terrain (triangle lists, meshes,
+ *  height fields). Returns METRUE when the pair's types have a method; MEFALSE (time = maxTime) for
+ *  the others (aggregates, user types, two static shapes). NULL pair or result: ME_ERR_NULL_ARGUMENT;
+ *  maxTime negative or not finite: ME_ERR_MCD_SAFE_TIME_RANGE; a velocity not finite:
+ *  ME_ERR_MCD_SAFE_TIME_VELOCITY; both return MEFALSE and leave result unchanged. */
+ME_API MeBool McdSafeTime(McdModelPairID pair, MeReal maxTime, McdSafeTimeResult *result);
+/** Distance (times lengthScale) the models may still be apart at the time McdSafeTime returns. */
+#define MCD_SAFE_TIME_GAP ME_R(1e-4)
 /** Whether the two models' AABBs (of their last update) overlap. */
 ME_API MeBool McdNearby(McdModelPairID pair);
 

@@ -105,8 +105,7 @@ typedef void (*McdSpacePoolErrorFnPtr)(McdModelID model1, McdModelID model2);
 
 /* ---- Karma 1.2's interaction table entry (McdFrameworkGetInteractions, McdFrame.h) ------------- */
 
-/** Safe-time results: safe time is still to come; the struct is defined with it (write
- *  `struct McdSafeTimeResult { ... };` there, this typedef stays). */
+/** Safe-time results (struct in McdSafeTimeResult.h). */
 typedef struct McdSafeTimeResult McdSafeTimeResult;
 typedef MeBool (*McdHelloFn)(McdModelPair *pair);
 typedef void (*McdGoodbyeFn)(McdModelPair *pair);
@@ -119,7 +118,7 @@ typedef int (*McdSafeTimeFn)(McdModelPair *pair, MeReal maxTime, McdSafeTimeResu
  *  intersectFn runs the registered test (NULL when the pair of types has none), swap says the test
  *  was registered for the types in the other order (the view's intersectFn handles either order),
  *  warned mirrors McdFrameworkGetInteractionsWarned; helloFn, goodbyeFn and safetimeFn are NULL and
- *  cull is 0 (no per-pair hooks, no safe time yet). Writing the fields changes nothing: register
+ *  cull is 0 (no per-pair hooks; McdSafeTime does not go through the table). Writing the fields changes nothing: register
  *  tests with McdFrameworkSetUserInteraction. */
 typedef struct McdInteractions {
     McdHelloFn helloFn;

@@ -17,7 +17,7 @@
  * What runs in parallel: the partitions' solves (MdtKeaSolve), each with a workspace of its worker's.
  * A partition's solve does not depend on which worker runs it or when, and the partitions' statistics
  * and messages are gathered afterwards in partition order on the stepping thread: the trajectories are
- * bit-identical to the serial step for every worker count and every task system (decision K-parallel).
+ * bit-identical to the serial step for every worker count and every task system (decision K33).
  * Messages and profile sections are reported from the stepping thread only.
  *
  * Memory: the solver's workspace chunk holds one workspace per worker; setting the worker count sizes

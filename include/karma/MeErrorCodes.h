@@ -70,7 +70,10 @@
     X(ME_ERR_MCD_AGGREGATE_INDEX,     431, ME_LEVEL_WARNING, "an aggregate element index is out of range or names an empty slot") \
     X(ME_ERR_MCD_AGGREGATE_TRANSFORM, 432, ME_LEVEL_WARNING, "an aggregate element's relative transform is not finite, not rigid or out of range") \
     X(ME_ERR_MCD_AGGREGATE_CYCLE,     433, ME_LEVEL_WARNING, "an aggregate would contain itself, or nest deeper than 16 levels") \
-    X(ME_ERR_MCD_AGGREGATE_MASS,      434, ME_LEVEL_WARNING, "an aggregate has an element without finite volume (plane, terrain, empty aggregate): no mass properties")
+    X(ME_ERR_MCD_AGGREGATE_MASS,      434, ME_LEVEL_WARNING, "an aggregate has an element without finite volume (plane, terrain, empty aggregate): no mass properties") \
+    X(ME_ERR_MCD_SAFE_TIME_RANGE,     440, ME_LEVEL_WARNING, "a safe-time or sweep duration is negative or not finite") \
+    X(ME_ERR_MCD_SAFE_TIME_VELOCITY,  441, ME_LEVEL_WARNING, "a model velocity or sweep motion for a safe time is not finite") \
+    X(ME_ERR_MCD_CONTINUOUS_GEOMETRY, 442, ME_LEVEL_WARNING, "continuous collision asked for a model whose geometry cannot be swept (plane, terrain, aggregate, null or user type)")
 
 #define ME_ERROR_LIST_MST(X) \
     X(ME_ERR_MST_MATERIAL,            600, ME_LEVEL_WARNING, "a material index is out of range")

@@ -65,6 +65,7 @@ static void freeFramework(McdFrameworkData *fw)
     MeMemoryDestroy(fw->interactions);
     MeMemoryDestroy(fw->warnedPairs);
     MeMemoryDestroy(fw->interactionViews);
+    MeMemoryDestroy(fw->continuousModels);
     MeMemoryDestroy(fw);
 }
 

@@ -69,6 +69,8 @@ typedef struct McdFrameworkData {
     int termActionCount;
     McdInteractions *interactionViews; /* typeCapacity^2 entries of McdFrameworkGetInteractions, or NULL */
     MeU32 nextPairId;              /* identities of pairs made by McdModelPairCreate */
+    int continuousCount;           /* models with McdModelEnableContinuous (model_sweep.c), listed in */
+    struct McdModelData **continuousModels; /* enable order (a removal moves the last one in), or NULL */
     /* McdFrameworkGetCounters (atomic: pairs may be tested on several threads) */
     atomic_ulong pairFallbacks, droppedContacts, segmentFallbacks;
 } McdFrameworkData;
@@ -120,6 +122,8 @@ MeBool McdGeometryLineSegInternal(const McdGeometryData *g, const MeVector3 p0, 
 /* ---- models ----------------------------------------------------------------------------------- */
 /** The transform the model follows (the pointer given or its own). */
 MeMatrix4Ptr McdModelTransformInternal(McdModelData *m);
+/** Drop the model's continuous flag and its count in the framework (destroy, reset). */
+void McdModelContinuousForget(McdModelData *m);
 void McdModelUpdateInternal(McdModelData *m);
 /** Record the space a model is in (space NULL, index -1 when removed). */
 void McdModelSetSpaceInternal(McdModelData *m, struct McdSpaceData *space, McdSpaceID spaceID, int index);

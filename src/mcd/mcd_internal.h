@@ -83,6 +83,8 @@ typedef struct McdModelData {
     McdModelUpdateFnPtr updateFn;      /* called first by each update */
     McdModelIntersectFnPtr intersectFn; /* called by McdIntersect after the contacts are made */
     MeBool inUpdateFn;                 /* updateFn is running (an update it calls does not call it again) */
+    MeBool continuous;                 /* McdModelEnableContinuous: swept after each universe step */
+    int continuousIndex;               /* its place in the framework's list of such models */
 } McdModelData;
 
 /** A pair test: contacts (world frame, normal from g2 towards g1, separation < 0 when overlapping) for g1

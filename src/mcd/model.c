@@ -43,6 +43,7 @@ static void setDefaults(McdModelData *m)
     m->updateFn = NULL;
     m->intersectFn = NULL;
     m->inUpdateFn = MEFALSE;
+    m->continuous = MEFALSE;
 }
 
 MeMatrix4Ptr McdModelTransformInternal(McdModelData *m) { return m->transform ? m->transform : m->ownTransform; }
@@ -189,6 +190,7 @@ void McdModelDestroy(McdModelID id)
         ME_REPORT(ME_ERR_MCD_IN_USE, "the model is in a space; remove it (McdSpaceRemoveModel) first; call ignored");
         return;
     }
+    McdModelContinuousForget(m);
     m->geometry->refCount--;
     McdInstanceTreeDestroy(m);
     MePoolPutStruct(&m->framework->modelPool, m);
@@ -197,6 +199,7 @@ void McdModelDestroy(McdModelID id)
 void McdModelReset(McdModelID id)
 {
     MODEL_OR_RETURN(m, id, ME_NOTHING);
+    McdModelContinuousForget(m);
     setDefaults(m);
     update(m, __func__);
 }
@@ -526,6 +529,7 @@ void McdFrameworkDestroyAllModelsAndGeometries(McdFrameworkID id)
         McdModelData *m = MePoolSlot(&fw->modelPool, i);
         if (m->space)
             McdSpaceForgetModel(m);
+        McdModelContinuousForget(m);
         m->geometry->refCount--;
         McdInstanceTreeDestroy(m);
         MePoolPutStruct(&fw->modelPool, m);

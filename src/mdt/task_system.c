@@ -1,7 +1,7 @@
 /* task_system.c -- the world's task system (MdtTaskSystem.h): the application's enqueue / finish
  * callbacks and worker count, and the one place the step hands work to them.
  *
- * The core creates no thread and links nothing but libm (decision K-parallel): threads belong to the
+ * The core creates no thread and links nothing but libm (decision K33): threads belong to the
  * application's job system or to karma_threads' default pool, which plug in here. */
 #include "../me/check.h"
 #include "world.h"

@@ -12,6 +12,7 @@
 
 #include "../me/check.h"
 #include "bridge.h"
+#include "continuous.h"
 
 #include <limits.h>
 #include <stdatomic.h>
@@ -26,6 +27,7 @@ typedef struct MstUniverseData {
     MdtWorldID world;
     MstBridgeID bridge;
     MeProfile profile;        /* "Collision" = "Farfield" + "Nearfield" of each step */
+    MstContinuous continuous; /* start poses of the bodies of flagged models (continuous.c) */
 } MstUniverseData;
 
 /* The table of universes. An ID is valid when it is the address of an entry whose record is live;
@@ -236,6 +238,7 @@ void MstUniverseDestroy(MstUniverseID id)
         }
     }
     destroyParts(u);
+    MstContinuousFree(&u->continuous);
     MeMemoryDestroy(u);
 }
 
@@ -274,7 +277,9 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
     MeProfileSectionEnd(prof, MST_SECTION_NEARFIELD);
     MeProfileSectionEnd(prof, MST_SECTION_COLLISION);
     MeProfileFrameEnd(prof);
+    MstContinuousBeforeStep(&u->continuous, u->framework, u->space);
     MdtWorldStep(u->world, stepSize);
+    MstContinuousAfterStep(&u->continuous, u->bridge, stepSize);
     MdtWorldSetCallerName(u->world, worldCaller);
 }
 

@@ -1,6 +1,6 @@
 /* MeThreadPool.h -- karma_threads: the default task system for MdtTaskSystem.h, a fixed pool of POSIX
  * threads. A separate library: the core (karma) creates no thread and links only libm; a program
- * with a job system of its own plugs that in with MdtWorldSetTaskSystem instead (decision K-parallel).
+ * with a job system of its own plugs that in with MdtWorldSetTaskSystem instead (decision K33).
  *
  * A pool of N threads is the calling thread (worker 0) and N - 1 threads it starts once, at
  * creation; they sleep between tasks. One task runs on the pool at a time: worlds that share a pool

@@ -12,7 +12,7 @@
  * written so that this does not change their results (MdtTaskSystem.h).
  *
  * POSIX threads rather than C11 <threads.h>: ThreadSanitizer (the tsan configuration) understands
- * them, and every platform Karma's CI builds on has them (decision K-parallel). */
+ * them, and every platform Karma's CI builds on has them (decision K33). */
 #include <stdatomic.h>
 #include <stdlib.h>
 
