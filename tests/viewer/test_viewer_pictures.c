@@ -349,6 +349,85 @@ static void test_paused_is_shown(void **state)
     assert_int_equal(brightPixelsTopRight(), 0);
 }
 
+/* Mean brightness of the 5 × 5 pixels about world point p (on the picture). */
+static double brightnessAt(const double p[3])
+{
+    int px, py;
+    assert_true(project(p, &px, &py));
+    double sum = 0;
+    for (int dy = -2; dy <= 2; dy++)
+        for (int dx = -2; dx <= 2; dx++) {
+            const unsigned char *q = pixel(px + dx, py + dy);
+            sum += 0.3 * q[0] + 0.59 * q[1] + 0.11 * q[2];
+        }
+    return sum / 25;
+}
+
+/* The key light (directional light 1) casts shadows: a box 1 m above the ground darkens the ground
+ * where the ray from its centre away from the light meets it, c − l·(c_y / l_y), and not the point
+ * as far on the other side; with the light turned round, the other way round. Each pixel is
+ * compared with itself in a picture without the box, so the checkerboard does not matter. */
+static void test_shadow_falls_away_from_the_key_light(void **state)
+{
+    const float grey[4] = {0.8f, 0.8f, 0.8f, 1}, red[4] = {1, 0.2f, 0.2f, 1};
+    RGraphic *ground = RGraphicGroundPlaneCreate(rc, 40, 20, grey, 0);
+    MeMatrix4 tm = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, ME_R(1.0), 0, 1}};
+    RGraphic *box = RGraphicBoxCreate(rc, ME_R(0.8), ME_R(0.8), ME_R(0.8), red, tm);
+    const AcmeVector3 at = {0, 0, 0};
+    RCameraSetLookAt(rc, at);
+    RCameraSetView(rc, 14, ME_R(0.2), ME_R(1.1));
+    AcmeReal *dir = rc->m_DirectLight1.m_Direction, saved[3] = {dir[0], dir[1], dir[2]};
+    const double c[3] = {0, 1, 0};
+    for (int turn = 0; turn < 2; turn++) {
+        double sign = turn ? -1 : 1;
+        dir[0] = (AcmeReal)(sign * 0.86), dir[1] = ME_R(0.26), dir[2] = (AcmeReal)(sign * 0.43);
+        double n = sqrt(0.86 * 0.86 + 0.26 * 0.26 + 0.43 * 0.43), l[3] = {sign * 0.86 / n, 0.26 / n, sign * 0.43 / n};
+        double t = c[1] / l[1];
+        double shadow[3] = {c[0] - t * l[0], 0, c[2] - t * l[2]}, lit[3] = {-shadow[0], 0, -shadow[2]};
+        draw();
+        double withShadow = brightnessAt(shadow), withLit = brightnessAt(lit);
+        RGraphicRemoveFromList(rc, box, 0);
+        draw();
+        double bareShadow = brightnessAt(shadow), bareLit = brightnessAt(lit);
+        RGraphicAddToList(rc, box, 0);
+        if (!(withShadow < 0.85 * bareShadow && fabs(withLit - bareLit) < 2))
+            fail_msg("light %+.0f: ground at the shadow %.1f (%.1f without the box), on the other side %.1f (%.1f)", sign,
+                     withShadow, bareShadow, withLit, bareLit);
+    }
+    memcpy(dir, saved, sizeof saved);
+    RGraphicDelete(rc, box, 0);
+    RGraphicDelete(rc, ground, 0);
+}
+
+/* Graphics of equal vertices are drawn together (one instanced draw) but each with its own matrix
+ * and colour: three equal boxes in three colours, each centre shows its own. */
+static void test_equal_meshes_keep_their_own_place_and_colour(void **state)
+{
+    const float colors[3][4] = {{1, 0.1f, 0.1f, 1}, {0.1f, 1, 0.1f, 1}, {0.1f, 0.1f, 1, 1}};
+    MeMatrix4 tm[3];
+    RGraphic *boxes[3];
+    for (int i = 0; i < 3; i++) {
+        memset(tm[i], 0, sizeof tm[i]);
+        for (int k = 0; k < 4; k++)
+            tm[i][k][k] = 1;
+        tm[i][3][0] = (MeReal)(2 * (i - 1));
+        boxes[i] = RGraphicBoxCreate(rc, 1, 1, 1, colors[i], tm[i]);
+    }
+    const AcmeVector3 at = {0, 0, 0};
+    RCameraSetLookAt(rc, at);
+    RCameraSetView(rc, 10, 0, ME_R(0.2));
+    draw();
+    for (int i = 0; i < 3; i++) {
+        double p[3] = {2.0 * (i - 1), 0, 0};
+        int px, py;
+        assert_true(project(p, &px, &py));
+        if (chromaDistance(pixel(px, py), colors[i]) > 0.1)
+            fail_msg("box %d at (%d, %d) is not its colour", i, px, py);
+    }
+    for (int i = 0; i < 3; i++)
+        RGraphicDelete(rc, boxes[i], 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -359,6 +438,8 @@ int main(void)
         cmocka_unit_test(test_png_written),
         cmocka_unit_test(test_graphic_outlives_its_context),
         cmocka_unit_test(test_paused_is_shown),
+        cmocka_unit_test(test_shadow_falls_away_from_the_key_light),
+        cmocka_unit_test(test_equal_meshes_keep_their_own_place_and_colour),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -3,6 +3,8 @@
 #ifndef R_INTERNAL_H
 #define R_INTERNAL_H
 
+#include <stddef.h>
+
 #include <karma/MeMessage.h>
 
 #include "MeViewer.h"
@@ -17,10 +19,10 @@ struct RGraphicPrivate {
     RGraphicKind kind;
     int inList;              /**< 0 none, 1 the 3D list, 2 the 2D list */
     int dirty;               /**< vertices changed since the last upload */
-    unsigned int vao, vbo;   /**< GL objects (0 until first drawn) */
-    struct RGL *gl;          /**< the GL state that made them (NULL when none); it frees them when it goes */
+    struct RMesh *mesh;      /**< the vertex buffer it draws (NULL until first drawn; shared when equal) */
+    struct RGL *gl;          /**< the GL state that made it (NULL when none); it frees it when it goes */
     RGraphic *glPrev, *glNext; /**< in that state's list of graphics holding GL objects */
-    int uploaded;            /**< vertices in the buffer */
+    float radius;            /**< of the sphere about the local origin holding the vertices (m) */
     float checkerCell;       /**< > 0: checkerboard of this cell size (local units) */
     char *text;              /**< kRKindText: the string */
     float x, y;              /**< kRKindText: top left in the virtual 640×448 screen */
@@ -67,10 +69,49 @@ void RGLDestroy(struct RGL *gl);
 /** Draw every graphic of both lists into the multisampled framebuffer, resolve it into the picture
  *  RGLReadPixels reads and, with toWindow, copy it to the window's framebuffer. */
 void RGLDrawFrame(struct RGL *gl, RRender *rc, int toWindow);
+/** A program from a vertex and a fragment shader's sources; 0 with a message. */
+unsigned int RGLLink(const char *vertexSource, const char *fragmentSource);
+/** Point the bound vertex array's per-instance attributes (2–5 the model matrix, 6–9 the
+ *  material) at `offset` bytes into the instance buffer `buffer`. */
+void RGLInstanceAttributes(unsigned int buffer, size_t offset);
+/** Draws the frame's batches; castersOnly: only those that cast shadows, without material state. */
+typedef void (*RGLBatchDraw)(void *data, int castersOnly);
 /** Read the resolved picture (RGBA, top row first). */
 void RGLReadPixels(struct RGL *gl, unsigned char *rgba);
 /** Free a graphic's GL objects in the context that made them (nothing when it has none). */
 void RGLReleaseGraphic(RGraphic *rg);
+
+/* ---- RMesh.c: vertex buffers shared by graphics of equal vertices ------------------------- */
+typedef struct RMesh {
+    unsigned long long hash; /**< of the vertex bytes */
+    int count;               /**< vertices */
+    int shared, refs;        /**< found by its vertices (triangle graphics); graphics holding it */
+    float *data;             /**< the bytes, to compare (shared meshes) */
+    unsigned int vao, vbo;
+    struct RMesh *next;      /**< in the cache (shared meshes) */
+} RMesh;
+typedef struct RMeshCache {
+    RMesh *meshes;           /**< shared meshes */
+    unsigned int instances;  /**< the per-instance buffer every mesh's vertex array reads */
+} RMeshCache;
+/** The mesh of rg's vertices: with `shared`, one already made from equal vertices (one more
+ *  holder) or a new one; else one of its own. Its radius in *radius. NULL when out of memory. */
+RMesh *RMeshAcquire(RMeshCache *cache, const RGraphic *rg, int shared, float *radius);
+/** Rewrite an unshared mesh from rg's vertices; 0 (nothing done) for a shared one. */
+int RMeshUpdate(RMesh *m, const RGraphic *rg, float *radius);
+/** One holder fewer; freed with the last (NULL is accepted). */
+void RMeshRelease(RMeshCache *cache, RMesh *m);
+
+/* ---- RShadow.c: the key light's shadow map ------------------------------------------------- */
+/** Depth map, its framebuffer and program; NULL when they cannot be made (no shadows then). */
+struct RShadow *RShadowCreate(void);
+void RShadowDestroy(struct RShadow *s);
+/** Whether a graphic casts a shadow: filled triangles but checkerboard planes (the ground). */
+int RShadowCasts(const RGraphic *rg, const RRender *rc);
+/** Draw the map from directional light 1 over the region the camera looks at; `draw` draws the casters. */
+void RShadowDraw(struct RShadow *s, RRender *rc, RGLBatchDraw draw, void *data);
+/** Bind the map on texture `unit` and set the lit program's uniforms (light matrix, texel size, sampler). */
+void RShadowBind(const struct RShadow *s, int uLightVP, int uTexel, int uMap, int unit);
 
 /* ---- backends ------------------------------------------------------------------------------ */
 /** An offscreen OpenGL 3.3 core context through EGL (RBackendEGL.c); NULL with a message. */
