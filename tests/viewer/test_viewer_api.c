@@ -9,19 +9,17 @@
 #include <MeViewer.h>
 
 #include "RInternal.h"
+#include "viewer_null_context.h"
 #include "viewer_project.h"
 
 #define PI 3.14159265358979323846
 
 static RRender *nullContext(const char *extra1, const char *extra2)
 {
-    const char *argv[4] = {"test", "-null", extra1, extra2};
-    int argc = 2 + (extra1 != NULL) + (extra2 != NULL);
-    MeCommandLineOptions *o = MeCommandLineOptionsCreate(argc, argv);
-    RRender *rc = RRenderContextCreate(o, NULL, METRUE);
+    int left;
+    RRender *rc = viewerNullContext(extra1, extra2, &left);
     assert_non_null(rc);
-    assert_int_equal(o->m_argc, 1); /* the viewer's options were eaten, the program name kept */
-    MeCommandLineOptionsDestroy(o);
+    assert_int_equal(left, 1); /* the viewer's options were eaten, the program name kept */
     return rc;
 }
 

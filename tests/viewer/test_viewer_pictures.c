@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "RInternal.h"
 #include "demo_view.h"
 #include "viewer_project.h"
 
@@ -428,6 +429,30 @@ static void test_equal_meshes_keep_their_own_place_and_colour(void **state)
         RGraphicDelete(rc, boxes[i], 0);
 }
 
+/* The performance bar as drawn: 2, 4, 6 and 2 ms of collision, dynamics, rendering and idle time
+ * laid end to end from x = 20 of the virtual screen at 12 units a millisecond, each in its colour
+ * (orange, green, blue, grey), on the bar's row at the bottom. */
+static void test_performance_bar_drawn(void **state)
+{
+    for (int k = 0; k < 3; k++)
+        rc->m_backgroundColour[k] = 0;
+    assert_non_null(RPerformanceBarCreate(rc));
+    RPerformanceBarUpdate(rc, 2, 4, 6, 2);
+    draw();
+    const double ms[4] = {1, 4.5, 9, 13};
+    const float colors[4][4] = {{1, 0.55f, 0.1f, 1}, {0.2f, 0.8f, 0.3f, 1}, {0.3f, 0.5f, 1, 1}, {0.6f, 0.6f, 0.6f, 1}};
+    int y = (int)(432.0 / 448 * H);
+    for (int k = 0; k < 4; k++) {
+        int x = (int)((20 + 12 * ms[k]) / 640 * W);
+        const unsigned char *p = pixel(x, y);
+        if (chromaDistance(p, colors[k]) > 0.03 || p[0] + p[1] + p[2] < 100)
+            fail_msg("bar part %d at (%d, %d) is (%d, %d, %d)", k, x, y, p[0], p[1], p[2]);
+    }
+    const unsigned char *beyond = pixel((int)((20 + 12 * 15.0) / 640 * W), y);
+    assert_true(beyond[0] + beyond[1] + beyond[2] < 10); /* 14 ms in all: background after it */
+    RPerformanceBarDestroy(rc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -440,6 +465,7 @@ int main(void)
         cmocka_unit_test(test_paused_is_shown),
         cmocka_unit_test(test_shadow_falls_away_from_the_key_light),
         cmocka_unit_test(test_equal_meshes_keep_their_own_place_and_colour),
+        cmocka_unit_test(test_performance_bar_drawn),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -52,7 +52,7 @@ struct RGL {
     GLuint fbo, color;                /* resolved picture (offscreen) */
     GLuint prog3D, prog2D;
     GLint u3[32];                     /* uniform locations of prog3D, by the enum below */
-    GLint u2Screen, u2Color, u2Font;
+    GLint u2Screen, u2Color, u2Font, u2Solid;
     GLuint fontTexture, textVao, textVbo;
     stbtt_bakedchar glyphs[96];
     int haveFont;
@@ -176,7 +176,8 @@ static const char *const fragment2D =
     "uniform sampler2D uFont;\n"
     "in vec2 vUV;\n"
     "out vec4 fragColor;\n"
-    "void main() { fragColor = vec4(uColor.rgb, uColor.a * texture(uFont, vUV).r); }\n";
+    "uniform int uSolid;\n"
+    "void main() { fragColor = vec4(uColor.rgb, uColor.a * (uSolid != 0 ? 1.0 : texture(uFont, vUV).r)); }\n";
 
 static GLuint compile(GLenum type, const char *source)
 {
@@ -316,6 +317,7 @@ struct RGL *RGLCreate(RBackend *backend, int width, int height)
     gl->u2Screen = glGetUniformLocation(gl->prog2D, "uScreen");
     gl->u2Color = glGetUniformLocation(gl->prog2D, "uColor");
     gl->u2Font = glGetUniformLocation(gl->prog2D, "uFont");
+    gl->u2Solid = glGetUniformLocation(gl->prog2D, "uSolid");
     glGenVertexArrays(1, &gl->textVao);
     glGenBuffers(1, &gl->textVbo);
     glBindVertexArray(gl->textVao);
@@ -563,17 +565,17 @@ static void draw3D(struct RGL *gl, RRender *rc)
             m[4 * i + j] = (float)rc->m_ProjMatrix[i][j];
     glUniformMatrix4fv(u[U_PROJ], 1, GL_FALSE, m);
     setLights(gl, rc);
-    int shadows = gl->shadow && rc->m_DirectLight1.m_bUseLight;
+    int shadows = gl->shadow && rc->m_DirectLight1.m_bUseLight && !rc->m_private->noShadows;
     glUniform1i(u[U_SHADOW_ON], shadows);
     if (shadows)
         RShadowBind(gl->shadow, u[U_SHADOW_VP], u[U_SHADOW_TEXEL], u[U_SHADOW_MAP], R_SHADOW_UNIT);
     drawBatches(gl, 0);
 }
 
-/* Text: one quad per glyph, in pixels, scaled from Karma's virtual 640×448 screen. */
+/* Text (one quad per glyph) and rectangles, in pixels, scaled from Karma's virtual 640×448 screen. */
 static void draw2D(struct RGL *gl, RRender *rc)
 {
-    if (!gl->haveFont || !rc->m_pRG_First2D)
+    if (!rc->m_pRG_First2D)
         return;
     float sx = (float)gl->width / R_VIRTUAL_W, sy = (float)gl->height / R_VIRTUAL_H;
     float scale = R_TEXT_HEIGHT / R_FONT_BAKE_PX * sy;
@@ -586,8 +588,19 @@ static void draw2D(struct RGL *gl, RRender *rc)
     glBindBuffer(GL_ARRAY_BUFFER, gl->textVbo);
     glDisable(GL_DEPTH_TEST);
     for (RGraphic *rg = rc->m_pRG_First2D; rg; rg = rg->m_pNext) {
-        const char *text = rg->m_private->text;
-        if (rg->m_private->kind != kRKindText || !text || !*text)
+        const struct RGraphicPrivate *p = rg->m_private;
+        if (p->kind == kRKindRect2D) {
+            float x0 = p->x * sx, y0 = p->y * sy, x1 = (p->x + p->w) * sx, y1 = (p->y + p->h) * sy;
+            float v[24] = {x0, y0, 0, 0, x1, y0, 0, 0, x1, y1, 0, 0, x0, y0, 0, 0, x1, y1, 0, 0, x0, y1, 0, 0};
+            glUniform1i(gl->u2Solid, 1);
+            glUniform4fv(gl->u2Color, 1, rg->m_pObject->m_ColorDiffuse);
+            glBufferData(GL_ARRAY_BUFFER, sizeof v, v, GL_STREAM_DRAW);
+            glDrawArrays(GL_TRIANGLES, 0, 6);
+            glUniform1i(gl->u2Solid, 0);
+            continue;
+        }
+        const char *text = p->text;
+        if (p->kind != kRKindText || !text || !*text || !gl->haveFont)
             continue;
         size_t n = strlen(text);
         float *quads = malloc(sizeof(float) * 24 * n);
@@ -619,7 +632,7 @@ static void draw2D(struct RGL *gl, RRender *rc)
 void RGLDrawFrame(struct RGL *gl, RRender *rc, int toWindow)
 {
     int ready = prepare(gl, rc);
-    if (ready && gl->shadow && rc->m_DirectLight1.m_bUseLight)
+    if (ready && gl->shadow && rc->m_DirectLight1.m_bUseLight && !rc->m_private->noShadows)
         RShadowDraw(gl->shadow, rc, drawBatches, gl);
     glBindFramebuffer(GL_FRAMEBUFFER, gl->msFbo);
     glViewport(0, 0, gl->width, gl->height);

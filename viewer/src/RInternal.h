@@ -13,7 +13,7 @@
 #define R_REPORT(code, fn, ...) MeReport((code), (fn), __FILE__, __LINE__, __VA_ARGS__)
 
 /** What a graphic draws. */
-typedef enum { kRKindTriangles, kRKindLines, kRKindText } RGraphicKind;
+typedef enum { kRKindTriangles, kRKindLines, kRKindText, kRKindRect2D } RGraphicKind;
 
 struct RGraphicPrivate {
     RGraphicKind kind;
@@ -25,7 +25,8 @@ struct RGraphicPrivate {
     float radius;            /**< of the sphere about the local origin holding the vertices (m) */
     float checkerCell;       /**< > 0: checkerboard of this cell size (local units) */
     char *text;              /**< kRKindText: the string */
-    float x, y;              /**< kRKindText: top left in the virtual 640×448 screen */
+    float x, y;              /**< kRKindText, kRKindRect2D: top left in the virtual 640×448 screen */
+    float w, h;              /**< kRKindRect2D: size in the virtual screen */
 };
 
 typedef struct RBackend RBackend;
@@ -44,12 +45,46 @@ struct RRenderPrivate {
     int drawn;               /**< a frame has been drawn */
     RDrag drag;
     RGraphic *pausedText;    /**< "Paused", in the 2D list while paused */
+    struct RMenu *menus;     /**< the application's menus (RMenuCreate) */
+    struct RMenu *menuShown, *menuDefault, *menuViewer; /**< on screen; the m key's; F12's */
+    char **help;             /**< the application's help lines, substituted */
+    int helpCount, helpShown, pausedBeforeHelp, helpTextCount;
+    RGraphic **helpText, *helpPanel;
+    struct RPerformanceBar *perfBar;
+    int showFps;             /**< RRun shows the frame rate */
+    RGraphic *fpsText;
+    double fps;              /**< frames a second, averaged over the last half second */
+    int noShadows;           /**< the F12 menu turned shadows off */
     char title[128];
 };
 
 /* ---- RGraphic.c ---------------------------------------------------------------------------- */
 /** A graphic of `kind` with room for n vertices, coloured, following matrix, put in the 3D list. */
 RGraphic *RGraphicNew(RRender *rc, RGraphicKind kind, int n, const float color[4], MeMatrix4Ptr matrix);
+
+/** Replace a text graphic's string (copied). Returns 0, or −1 for anything but text. */
+int RGraphicTextSet(RGraphic *rg, const char *text);
+/** Move and size a 2D rectangle (virtual screen units; negative sizes become 0). */
+void RRectangleSet(RGraphic *rg, float x, float y, float width, float height);
+
+/* ---- RMenu.c, RHelp.c, RPerformanceBar.c ---------------------------------------------------- */
+/** An entry of the viewer's own menu: with set < 0 returns its state (1, 0, or −1 for none); else
+ *  acts (set 1: Right, 0: Left). */
+typedef int (*RViewerEntryFn)(RRender *rc, int set);
+/** Add an entry of the viewer's own (F12) menu. */
+void RMenuAddViewerEntry(RMenu *rm, const char *name, RViewerEntryFn fn);
+/** A key while a menu is shown: the arrows work it. Returns 1 when the menu took the key. */
+int RMenuKey(RRender *rc, int key);
+/** Hide the menu shown; show rm unless it was the one shown (NULL: only hide). */
+void RMenuToggle(RRender *rc, RMenu *rm);
+/** The context goes: menus lose their graphics and their context (the application still destroys its own). */
+void RMenuContextGone(RRender *rc);
+/** The context goes: help lines freed. */
+void RHelpContextGone(RRender *rc);
+/** The context goes: the performance bar freed. */
+void RPerformanceBarDestroy(RRender *rc);
+/** The viewer's own menu (F12), made on first use. */
+RMenu *RViewerMenu(RRender *rc);
 
 /* ---- RCamera.c ----------------------------------------------------------------------------- */
 /** Karma's default camera and projection for a context whose size is set. */
@@ -135,7 +170,8 @@ struct RBackend {
 /** Key codes the backends translate to (GLFW's values for printable keys: their ASCII capitals). */
 enum {
     RKEY_ESCAPE = 256, RKEY_ENTER = 257, RKEY_RIGHT = 262, RKEY_LEFT = 263, RKEY_DOWN = 264, RKEY_UP = 265,
-    RKEY_PAGE_UP = 266, RKEY_PAGE_DOWN = 267, RKEY_F1 = 290, RKEY_F2 = 291, RKEY_F8 = 297, RKEY_KP_ADD = 334,
+    RKEY_PAGE_UP = 266, RKEY_PAGE_DOWN = 267, RKEY_F1 = 290, RKEY_F2 = 291, RKEY_F3 = 292, RKEY_F8 = 297,
+    RKEY_F12 = 301, RKEY_KP_ADD = 334,
     RKEY_KP_SUBTRACT = 333
 };
 /** A key pressed with modifiers (RCONTROL, RSHIFT, RALT): Karma's key map. */

@@ -38,6 +38,15 @@ static float *vertexData(const RGraphic *rg, int n, float *radius)
     return data;
 }
 
+/* The vertices a graphic draws: its count, within what it has room for. */
+static int drawnCount(const RGraphic *rg)
+{
+    int n = rg->m_pObject->m_nNumVertices;
+    if (n > rg->m_nMaxNumVertices)
+        n = rg->m_nMaxNumVertices;
+    return n > 0 ? n : 0;
+}
+
 static RMesh *meshNew(RMeshCache *cache, float *data, int n, unsigned long long hash, int shared)
 {
     RMesh *m = calloc(1, sizeof *m);
@@ -67,11 +76,7 @@ static RMesh *meshNew(RMeshCache *cache, float *data, int n, unsigned long long 
 
 RMesh *RMeshAcquire(RMeshCache *cache, const RGraphic *rg, int shared, float *radius)
 {
-    int n = rg->m_pObject->m_nNumVertices;
-    if (n > rg->m_nMaxNumVertices)
-        n = rg->m_nMaxNumVertices;
-    if (n < 0)
-        n = 0;
+    int n = drawnCount(rg);
     float *data = vertexData(rg, n, radius);
     if (!data)
         return NULL;
@@ -94,11 +99,7 @@ int RMeshUpdate(RMesh *m, const RGraphic *rg, float *radius)
 {
     if (m->shared || m->refs != 1)
         return 0;
-    int n = rg->m_pObject->m_nNumVertices;
-    if (n > rg->m_nMaxNumVertices)
-        n = rg->m_nMaxNumVertices;
-    if (n < 0)
-        n = 0;
+    int n = drawnCount(rg);
     float *data = vertexData(rg, n, radius);
     if (!data)
         return 0;

@@ -5,6 +5,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
+
+#include <karma/MeProfile.h>
 
 #include <stb_image_write.h>
 
@@ -157,6 +160,9 @@ int MEAPI RRenderContextDestroy(RRender *rc)
     struct RRenderPrivate *p = rc->m_private;
     if (p->backend)
         p->backend->makeCurrent(p->backend);
+    RMenuContextGone(rc);
+    RHelpContextGone(rc);
+    RPerformanceBarDestroy(rc);
     deleteList(rc, 0);
     deleteList(rc, 1); /* the "Paused" text too */
     RGLDestroy(p->gl);
@@ -243,22 +249,54 @@ void MEAPI RRenderDrawFrame(RRender *rc)
     p->drawn = 1;
 }
 
+static double seconds(void)
+{
+    struct timespec t;
+    timespec_get(&t, TIME_UTC);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/** The frame rate shown is averaged over this many seconds. */
+#define R_FPS_PERIOD 0.5
+
 void MEAPI RRun(RRender *rc, RMainLoopCallBack func, void *userdata)
 {
     if (!rc)
         return;
     struct RRenderPrivate *p = rc->m_private;
     rc->m_bQuitNextFrame = 0;
+    double periodStart = seconds();
+    unsigned long periodFrames = 0;
     for (unsigned long frame = 0; !rc->m_bQuitNextFrame; frame++) {
         if (rc->m_nTimeout && frame >= rc->m_nTimeout)
             break;
+        /* Idle: waiting for and handling input; then the application's tick (its MeProfile sections
+         * "Collision" and "Dynamics"), then drawing. */
+        double t0 = seconds();
         if (p->backend && p->backend->poll && !p->backend->poll(p->backend, rc))
             break;
+        double t1 = seconds();
+        if (p->perfBar)
+            MeProfileStartFrame();
         if (func && (!rc->m_bPause || p->singleStep))
             func(rc, userdata);
+        if (p->perfBar)
+            MeProfileEndFrame();
         p->singleStep = 0;
+        double t2 = seconds();
         RRenderDrawFrame(rc);
+        double t3 = seconds();
         p->frames++;
+        if (p->perfBar)
+            RPerformanceBarUpdate(rc, MeProfileGetSectionTime("Collision"), MeProfileGetSectionTime("Dynamics"),
+                                  (AcmeReal)(1e3 * (t3 - t2)), (AcmeReal)(1e3 * (t1 - t0)));
+        periodFrames++;
+        if (t3 - periodStart >= R_FPS_PERIOD) {
+            p->fps = (double)periodFrames / (t3 - periodStart);
+            periodStart = t3, periodFrames = 0;
+            if (p->showFps)
+                RRenderDisplayFps(rc, (AcmeReal)p->fps);
+        }
     }
 }
 
