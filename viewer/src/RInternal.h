@@ -55,6 +55,7 @@ struct RRenderPrivate {
     RGraphic *fpsText;
     double fps;              /**< frames a second, averaged over the last half second */
     int noShadows;           /**< the F12 menu turned shadows off */
+    unsigned int profileFrames; /**< -profile N: frames to profile (0: -timeout's, or 1,000) */
     char title[128];
 };
 
