@@ -42,6 +42,7 @@ typedef struct RDrawItem {
     int plain;   /* filled, lit, opaque, no checkerboard: drawn instanced with its mesh's other plain graphics */
     int casts;
     int order;   /* in the render list */
+    float depth; /* of its origin along the camera's view direction */
 } RDrawItem;
 
 struct RGL {
@@ -432,7 +433,8 @@ static void setLights(struct RGL *gl, RRender *rc)
                 (float)pl->m_AttenuationQuadratic);
 }
 
-/* Plain graphics first, grouped by mesh (in list order within a mesh), then the others in list order. */
+/* Plain graphics first, grouped by mesh, nearest the camera first within a mesh (what is hidden
+ * then fails the depth test before it is shaded); then the others in list order. */
 static int itemOrder(const void *a, const void *b)
 {
     const RDrawItem *x = a, *y = b;
@@ -440,6 +442,8 @@ static int itemOrder(const void *a, const void *b)
         return y->plain - x->plain;
     if (x->plain && x->mesh != y->mesh)
         return (uintptr_t)x->mesh < (uintptr_t)y->mesh ? -1 : 1;
+    if (x->plain && x->depth != y->depth)
+        return x->depth < y->depth ? -1 : 1;
     return x->order - y->order;
 }
 
@@ -456,6 +460,23 @@ static void instanceData(const RGraphic *rg, float *d)
     memcpy(d + 24, h->m_ColorSpecular, 3 * sizeof(float));
     d[27] = (float)h->m_SpecularPower;
     memcpy(d + 28, h->m_ColorEmissive, 4 * sizeof(float));
+}
+
+/** A round graphic whose radius covers fewer pixels than these is drawn with its coarser copies. */
+#define R_LOD_PIXELS_HALF 24.0
+#define R_LOD_PIXELS_QUARTER 8.0
+
+/* What to draw for rg at `depth` in front of the camera: itself, or a coarser copy when it is small
+ * on the picture (its radius in pixels from the projection's vertical scale). */
+static RGraphic *lodFor(const struct RGL *gl, const RRender *rc, RGraphic *rg, float depth)
+{
+    const struct RGraphicPrivate *p = rg->m_private;
+    if (!p->lod[0] || !(depth > 0))
+        return rg;
+    double pixels = p->lodExtent * rc->m_ProjMatrix[1][1] * 0.5 * gl->height / depth;
+    if (pixels < R_LOD_PIXELS_QUARTER && p->lod[1])
+        return p->lod[1];
+    return pixels < R_LOD_PIXELS_HALF ? p->lod[0] : rg;
 }
 
 /* This frame's graphics: matrices copied from what they follow, meshes uploaded, batched, and the
@@ -484,11 +505,15 @@ static int prepare(struct RGL *gl, RRender *rc)
         /* Karma's composite matrix: the followed transform, copied in each frame. */
         if (rg->m_pLWMatrix)
             memcpy(h->m_Matrix, rg->m_pLWMatrix, sizeof h->m_Matrix);
-        upload(gl, rg);
-        if (!p->mesh || p->mesh->count <= 0)
+        /* Eye-space z (negative in front): −z is the distance along the view direction. */
+        const MeReal(*c)[4] = (const MeReal(*)[4])rc->m_CamMatrix, *t = h->m_Matrix[3];
+        float depth = -(float)(t[0] * c[0][2] + t[1] * c[1][2] + t[2] * c[2][2] + c[3][2]);
+        RGraphic *shape = lodFor(gl, rc, rg, depth);
+        upload(gl, shape);
+        if (!shape->m_private->mesh || shape->m_private->mesh->count <= 0)
             continue;
         RDrawItem *it = &gl->items[count++];
-        it->g = rg, it->mesh = p->mesh, it->order = order;
+        it->g = rg, it->mesh = shape->m_private->mesh, it->order = order, it->depth = depth;
         it->plain = p->kind == kRKindTriangles && p->checkerCell <= 0 && !h->m_bIsWireFrame &&
                     !rc->m_options.m_bWireFrame && h->m_ColorDiffuse[3] >= 1.0f;
         it->casts = RShadowCasts(rg, rc);

@@ -89,6 +89,8 @@ void MEAPI RGraphicDestroy(RGraphic *rg)
     if (rg->m_private->inList)
         R_REPORT(ME_ERR_BAD_STATE, "RGraphicDestroy", "the graphic is still in a render list: use RGraphicDelete");
     RGLReleaseGraphic(rg);
+    for (int k = 0; k < R_LOD_LEVELS; k++)
+        RGraphicDestroy(rg->m_private->lod[k]);
     free(rg->m_private->text);
     free(rg->m_private);
     free(rg->m_pVertices);

@@ -12,6 +12,9 @@
 /** Report a coded message (docs/errors.md) from viewer function `fn`. */
 #define R_REPORT(code, fn, ...) MeReport((code), (fn), __FILE__, __LINE__, __VA_ARGS__)
 
+/** Coarser copies a round graphic keeps for when it is small on the picture. */
+#define R_LOD_LEVELS 2
+
 /** What a graphic draws. */
 typedef enum { kRKindTriangles, kRKindLines, kRKindText, kRKindRect2D } RGraphicKind;
 
@@ -27,6 +30,8 @@ struct RGraphicPrivate {
     char *text;              /**< kRKindText: the string */
     float x, y;              /**< kRKindText, kRKindRect2D: top left in the virtual 640×448 screen */
     float w, h;              /**< kRKindRect2D: size in the virtual screen */
+    RGraphic *lod[R_LOD_LEVELS]; /**< spheres, sphyls: the same shape with 1/2 and 1/4 of the sides (in no list) */
+    float lodExtent;         /**< their farthest point from the local origin (m) */
 };
 
 typedef struct RBackend RBackend;

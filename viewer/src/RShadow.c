@@ -11,7 +11,7 @@
 #include "RInternal.h"
 
 /** Texels along each side of the shadow map. */
-#define R_SHADOW_SIZE 2048
+#define R_SHADOW_SIZE 1024
 /** The region shadowed reaches at most this many camera distances from the look-at point, so a few
  *  bodies far away (balls parked before they are shot) do not spread the map's texels thin. */
 #define R_SHADOW_REACH 2.0
