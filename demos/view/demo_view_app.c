@@ -3,6 +3,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include <karma/McduDebugDraw.h>
+#include <karma/MeDebugDraw.h>
 #include <karma/MeProfile.h>
 
 #include "demo_view_app.h"
@@ -26,10 +28,67 @@ static void MEAPI onShoot(RRender *rc, void *userdata)
     DemoViewAppShoot(userdata);
 }
 
+/* Debug drawing on or off: the world's contacts (and their forces), the space's shapes and boxes,
+ * centres of mass and joints, all through MeDebugDrawAPI into the viewer. */
+static void setDebug(DemoViewApp *a, MeBool on)
+{
+    a->debugDraw = on;
+    RRenderSetDebugDrawing(a->rc, on);
+    if (a->demo.world)
+        MdtWorldSetDebugDrawing(a->demo.world, on ? (MdtDebugDrawOptions)(MdtDebugDrawContacts | MdtDebugDrawContactForce)
+                                                  : (MdtDebugDrawOptions)0);
+}
+
+static void MEAPI onDebug(RRender *rc, void *userdata)
+{
+    (void)rc;
+    DemoViewApp *a = userdata;
+    setDebug(a, !a->debugDraw);
+}
+
+/* After a step: shapes and boxes (white), centres of mass (three short axes), joints (cyan, from
+ * each body's centre to the joint's position). */
+static void drawDebug(DemoViewApp *a)
+{
+    static const MeReal white[3] = {1, 1, 1};
+    if (a->demo.universe)
+        McduDebugDrawSpace(MstUniverseGetSpace(a->demo.universe), kMcduDebugDrawAABB, white);
+    for (int i = 0; i < a->view.count; i++) {
+        MdtBodyID b = a->view.body[i];
+        if (!b)
+            continue;
+        MeVector3 c;
+        MdtBodyGetPosition(b, c);
+        for (int k = 0; k < 3; k++) {
+            MeVector3 e = {c[0], c[1], c[2]};
+            e[k] += ME_R(0.2);
+            MeDebugDrawAPI.line(c, e, k == 0, k == 1, k == 2);
+        }
+        for (MdtConstraintID j = MdtBodyGetFirstConstraint(b); j; j = MdtBodyGetNextConstraint(b, j)) {
+            if (MdtConstraintGetType(j) == MdtBclCONTACTGROUP || MdtConstraintGetBody(j, 0) != b)
+                continue; /* contacts are drawn by the world; each joint once, from its first body */
+            MeVector3 p, q;
+            MdtConstraintGetPosition(j, p);
+            MeDebugDrawAPI.line(c, p, 0, 1, 1);
+            MdtBodyID other = MdtConstraintGetBody(j, 1);
+            if (other) {
+                MdtBodyGetPosition(other, q);
+                MeDebugDrawAPI.line(p, q, 0, 1, 1);
+            }
+        }
+    }
+}
+
 static void MEAPI onGravity(MeReal g)
 {
     if (menuApp && menuApp->demo.world)
         MdtWorldSetGravity(menuApp->demo.world, 0, -g, 0);
+}
+
+static void MEAPI onDebugToggle(MeBool on)
+{
+    if (menuApp)
+        setDebug(menuApp, on);
 }
 
 static void MEAPI onContacts(MeBool on)
@@ -64,6 +123,7 @@ static void makeMenu(DemoViewApp *a)
     a->menu = RMenuCreate(a->rc, title);
     RMenuAddValueEntry(a->menu, "Gravity (m/s2, down)", onGravity, 30, 0, 1, -g[1]);
     RMenuAddToggleEntry(a->menu, "Draw contacts", onContacts, a->drawContacts);
+    RMenuAddToggleEntry(a->menu, "Debug drawing", onDebugToggle, a->debugDraw);
     RRenderSetDefaultMenu(a->rc, a->menu);
 }
 
@@ -75,6 +135,7 @@ static void makeHelp(DemoViewApp *a)
                     "$ACTION2: reset the scene",
                     a->demo.universe ? "$ACTION3: shoot a ball" : "$ACTION3: shoot (scenes with collision only)",
                     "$ACTION1: the scene's options menu",
+                    "$ACTION4: debug drawing (contacts, joints, boxes, centres of mass)",
                     "$MOUSE: pick and drag a body",
                     "mouse: left orbits, middle zooms, right pans",
                     "F1 this help, F2 wireframe, F8 single step, Ctrl+F8 pause",
@@ -102,6 +163,7 @@ MeBool DemoViewAppCreate(DemoViewApp *a, const DemoScene *scene, RRender *rc)
     RRenderSetAppName(rc, scene->name);
     RRenderSetActionNCallBack(rc, 2, onReset, a);
     RRenderSetActionNCallBack(rc, 3, onShoot, a);
+    RRenderSetActionNCallBack(rc, 4, onDebug, a);
     startApp(a);
     makeMenu(a);
     makeHelp(a);
@@ -119,6 +181,8 @@ void DemoViewAppStep(DemoViewApp *a)
         MeProfileStartSection("Dynamics", 0);
         DemoStep(d, h);
         MeProfileEndSection("Dynamics");
+        if (a->debugDraw)
+            drawDebug(a);
         return;
     }
     /* MstUniverseStep's two halves (it is exactly these calls), each in its section. */
@@ -135,6 +199,8 @@ void DemoViewAppStep(DemoViewApp *a)
     d->time += h;
     if (a->scene->afterStep)
         a->scene->afterStep(d, h);
+    if (a->debugDraw)
+        drawDebug(a);
 }
 
 McdModelID DemoViewAppShoot(DemoViewApp *a)
@@ -200,6 +266,7 @@ MeBool DemoViewAppReset(DemoViewApp *a)
     RCameraSetLookAt(a->rc, at); /* the person's camera stays where they put it */
     RCameraSetView(a->rc, dist, theta, phi);
     startApp(a);
+    setDebug(a, a->debugDraw); /* the new world draws its contacts too */
     RMenuDestroy(a->menu); /* made again: its values are the new scene's */
     makeMenu(a);
     a->resets++;
@@ -208,6 +275,8 @@ MeBool DemoViewAppReset(DemoViewApp *a)
 
 void DemoViewAppDestroy(DemoViewApp *a)
 {
+    if (a->debugDraw)
+        setDebug(a, MEFALSE);
     tearDown(a);
     RRenderSetDefaultMenu(a->rc, NULL);
     RMenuDestroy(a->menu);

@@ -1,6 +1,7 @@
 /* demo_view_app.h -- a registry scene as a Karma demo program in the viewer: its help text (F1,
  * with Karma's $ACTION2... names), its actions (Enter resets the scene, Space shoots a ball from
- * the camera towards the look-at point, m shows its options menu), picking and dragging with the
+ * the camera towards the look-at point, m shows its options menu, o turns debug drawing on: contacts,
+ * joints, shapes and bounding boxes, centres of mass), picking and dragging with the
  * mouse (MeApp), and a step timed in MeProfile's "Collision" and "Dynamics" sections for the
  * performance bar. Every scene of the registry gets all of it: the registry stays the one place
  * where a scene is defined. */
@@ -28,6 +29,7 @@ typedef struct DemoViewApp {
     RGraphic *ballGraphic[DEMO_VIEW_APP_BALLS];
     int shots, resets;
     MeBool drawContacts;
+    MeBool debugDraw;                            /**< contacts, joints, boxes, centres of mass (o) */
     RMenu *menu;                                 /**< the scene's options (m) */
 } DemoViewApp;
 

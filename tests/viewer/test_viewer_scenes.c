@@ -8,6 +8,7 @@
 
 #include <string.h>
 
+#include <karma/MeDebugDraw.h>
 #include <karma/MeProfile.h>
 
 #include "RInternal.h"
@@ -196,6 +197,67 @@ static void test_profiled_step_is_the_registrys_step(void **state)
     MeProfileStopTiming();
 }
 
+/* A line graphic of colour (r, g, b) in the 3D list holding the segment a–b (to 1e-5), or 0. */
+static int hasSegment(RRender *rc, const float rgb[3], const MeVector3 a, const MeVector3 b)
+{
+    for (RGraphic *g = rc->m_pRG_First; g; g = g->m_pNext) {
+        const float *c = g->m_pObject->m_ColorDiffuse;
+        if (g->m_private->kind != kRKindLines || c[0] != rgb[0] || c[1] != rgb[1] || c[2] != rgb[2])
+            continue;
+        for (int i = 0; i + 1 < g->m_pObject->m_nNumVertices; i += 2) {
+            const RObjectVertex *v = &g->m_pVertices[i];
+            if (fabs(v[0].m_X - a[0]) + fabs(v[0].m_Y - a[1]) + fabs(v[0].m_Z - a[2]) < 1e-5 &&
+                fabs(v[1].m_X - b[0]) + fabs(v[1].m_Y - b[1]) + fabs(v[1].m_Z - b[2]) < 1e-5)
+                return 1;
+        }
+    }
+    return 0;
+}
+
+/* o: debug drawing through MeDebugDrawAPI shows, after a step, each body's centre of mass (a red
+ * line 0.2 m along x from it) and each joint (cyan, from its first body's centre to the joint); o
+ * again takes it all away and silences the hook. */
+static void test_o_draws_centres_joints_and_contacts(void **state)
+{
+    (void)state;
+    const DemoScene *scene = DemoSceneFind("hinge");
+    assert_non_null(scene);
+    RRender *rc = nullContext();
+    DemoViewApp a;
+    assert_true(DemoViewAppCreate(&a, scene, rc));
+    RInputKey(rc, 'O', 0);
+    assert_true(a.debugDraw);
+    DemoViewAppStep(&a);
+    RRenderDrawFrame(rc);
+    const float red[3] = {1, 0, 0}, cyan[3] = {0, 1, 1};
+    int joints = 0;
+    for (int i = 0; i < a.view.count; i++) {
+        MdtBodyID b = a.view.body[i];
+        if (!b)
+            continue;
+        MeVector3 c, e;
+        MdtBodyGetPosition(b, c);
+        e[0] = c[0] + ME_R(0.2), e[1] = c[1], e[2] = c[2];
+        assert_true(hasSegment(rc, red, c, e));
+        for (MdtConstraintID j = MdtBodyGetFirstConstraint(b); j; j = MdtBodyGetNextConstraint(b, j))
+            if (MdtConstraintGetType(j) != MdtBclCONTACTGROUP && MdtConstraintGetBody(j, 0) == b) {
+                MeVector3 p;
+                MdtConstraintGetPosition(j, p);
+                assert_true(hasSegment(rc, cyan, c, p));
+                joints++;
+            }
+    }
+    assert_true(joints >= 2); /* the door's and the paddle's hinges */
+    RInputKey(rc, 'O', 0);
+    assert_false(a.debugDraw);
+    for (RGraphic *g = rc->m_pRG_First; g; g = g->m_pNext) /* only MeApp's (empty) contact lines are lines */
+        assert_true(g->m_private->kind != kRKindLines || g->m_pObject->m_nNumVertices <= 2);
+    MeVector3 p0 = {0, 0, 0}, p1 = {1, 1, 1};
+    MeDebugDrawAPI.line(p0, p1, 1, 1, 1); /* silent again */
+    DemoViewAppDestroy(&a);
+    RRenderContextDestroy(rc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -203,6 +265,7 @@ int main(void)
         cmocka_unit_test(test_space_shoots_towards_the_look_at_point),
         cmocka_unit_test(test_enter_resets_the_scene),
         cmocka_unit_test(test_profiled_step_is_the_registrys_step),
+        cmocka_unit_test(test_o_draws_centres_joints_and_contacts),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -174,6 +174,12 @@ void MEAPI RRenderDisplayFps(RRender *rc, AcmeReal fps);
 /** Have RRun show the frame rate it measures (Ctrl+F3 flips it). */
 void MEAPI RRenderSetDisplayFps(RRender *rc, int bVal);
 
+/** Addition: show Karma's debug lines (MeDebugDraw.h: MdtWorldSetDebugDrawing's contacts,
+ *  McduDebugDraw*'s shapes and boxes) in this context: MeDebugDrawAPI.line collects the lines drawn
+ *  between two frames and the next frame shows them (one context at a time: the hook is
+ *  process-wide). MEFALSE stops it and silences the hook. */
+void MEAPI RRenderSetDebugDrawing(RRender *rc, MeBool on);
+
 /* ---- lights -------------------------------------------------------------------------------- */
 
 /** Switch a light on: the ambient light, directional lights 1 and 2, the point light. */

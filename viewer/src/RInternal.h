@@ -61,6 +61,7 @@ struct RRenderPrivate {
     double fps;              /**< frames a second, averaged over the last half second */
     int noShadows;           /**< the F12 menu turned shadows off */
     unsigned int profileFrames; /**< -profile N: frames to profile (0: -timeout's, or 1,000) */
+    struct RDebugDraw *debugDraw; /**< lines from MeDebugDrawAPI (RRenderSetDebugDrawing), or NULL */
     char title[128];
 };
 
@@ -89,6 +90,12 @@ void RMenuContextGone(RRender *rc);
 void RHelpContextGone(RRender *rc);
 /** The context goes: the performance bar freed. */
 void RPerformanceBarDestroy(RRender *rc);
+/** Show the debug lines drawn since the last frame (RDebugDraw.c). */
+void RDebugDrawFrame(RRender *rc);
+/** The context goes or stops debug drawing: its lines freed, the hook silent again. */
+void RDebugDrawDestroy(RRender *rc);
+/** A debug-line hook that draws nothing. */
+void MEAPI RDebugDrawNothing(MeVector3 start, MeVector3 end, MeReal r, MeReal g, MeReal b);
 /** The viewer's own menu (F12), made on first use. */
 RMenu *RViewerMenu(RRender *rc);
 

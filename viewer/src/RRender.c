@@ -171,6 +171,7 @@ int MEAPI RRenderContextDestroy(RRender *rc)
         p->backend->makeCurrent(p->backend);
     RMenuContextGone(rc);
     RHelpContextGone(rc);
+    RDebugDrawDestroy(rc);
     RPerformanceBarDestroy(rc);
     deleteList(rc, 0);
     deleteList(rc, 1); /* the "Paused" text too */
@@ -249,6 +250,7 @@ void MEAPI RRenderDrawFrame(RRender *rc)
     if (!rc)
         return;
     struct RRenderPrivate *p = rc->m_private;
+    RDebugDrawFrame(rc); /* the null renderer too: the lines are there to be read */
     if (!p->gl) /* the null renderer draws nothing */
         return;
     p->backend->makeCurrent(p->backend);
