@@ -2,7 +2,8 @@
  * (EGL on Mesa, no display): every registry scene at its first and last frame is neither blank nor
  * uniform; for a few scenes the centre of each body, projected with the camera's matrices, lands on
  * pixels of that body's colour; the ground and the sky are where the camera says; a graphic follows
- * the body it was given. The test fails, never skips, when no headless context can be made. */
+ * the body it was given; shadows fall away from the key light; textures (BMP, PNG) show; the
+ * performance bar is drawn. The test fails, never skips, when no headless context can be made. */
 #include "karma_test.h"
 
 #include <stdlib.h>
@@ -453,6 +454,69 @@ static void test_performance_bar_drawn(void **state)
     RPerformanceBarDestroy(rc);
 }
 
+/* A 2 × 1 BMP written by hand (24-bit, rows bottom up, padded to 4 bytes): left red, right blue. */
+static void writeBmp(const char *path)
+{
+    unsigned char file[62] = {'B', 'M', 62, 0, 0, 0, 0, 0, 0, 0, 54, 0, 0, 0, /* size, offset of the pixels */
+                              40, 0, 0, 0, 2, 0, 0, 0, 1, 0, 0, 0, 1, 0, 24, 0}; /* 2 × 1, 1 plane, 24 bits */
+    const unsigned char pixels[8] = {0, 0, 255, 255, 0, 0, 0, 0};                 /* BGR red, BGR blue, padding */
+    memcpy(file + 54, pixels, sizeof pixels);
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(file, 1, sizeof file, f), sizeof file);
+    fclose(f);
+}
+
+/* The same picture as a PNG, drawn by the viewer itself: two 2D rectangles on a 2 × 1 picture. */
+static void writePng(const char *path)
+{
+    RRender *small = RRenderContextCreateHeadless(2, 1);
+    assert_non_null(small);
+    const float red[4] = {1, 0, 0, 1}, blue[4] = {0, 0, 1, 1};
+    RGraphic2DRectangleCreate(small, 0, 0, 320, 448, red);
+    RGraphic2DRectangleCreate(small, 320, 0, 320, 448, blue);
+    RRenderDrawFrame(small);
+    assert_int_equal(RRenderSavePNG(small, path), 0);
+    RRenderContextDestroy(small);
+}
+
+/* Textures as Karma names them (no extension: .bmp, then .png) multiply the graphic's colour at its
+ * texture coordinates: a white box's front face (u along x) shows the image's red left half on the
+ * left and its blue right half on the right, from the BMP and from the PNG alike; -notextures
+ * (m_bTextures off) shows the box white; an unreadable file is refused and changes nothing. */
+static void test_textures_bmp_and_png(void **state)
+{
+    writeBmp("viewer_texture_bmp.bmp");
+    writePng("viewer_texture_png.png");
+    const float white[4] = {1, 1, 1, 1}, red[4] = {1, 0, 0, 1}, blue[4] = {0, 0, 1, 1};
+    for (int k = 0; k < 3; k++)
+        rc->m_backgroundColour[k] = 0;
+    const AcmeVector3 at = {0, 0, 0};
+    RCameraSetLookAt(rc, at);
+    RCameraSetView(rc, 8, 0, 0);
+    const char *names[2] = {"viewer_texture_bmp", "viewer_texture_png"};
+    for (int i = 0; i < 2; i++) {
+        RGraphic *box = RGraphicBoxCreate(rc, 2, 2, 2, white, NULL);
+        int id = RGraphicSetTexture(rc, box, names[i]);
+        assert_true(id >= 0);
+        assert_int_equal(RRenderTextureCreate(rc, names[i]), id); /* the same name: the same texture */
+        draw();
+        double left[3] = {-0.5, 0, 1}, right[3] = {0.5, 0, 1};
+        int lx, ly, rx, ry;
+        assert_true(project(left, &lx, &ly) && project(right, &rx, &ry));
+        if (chromaDistance(pixel(lx, ly), red) > 0.1 || chromaDistance(pixel(rx, ry), blue) > 0.1)
+            fail_msg("%s: left (%d, %d, %d), right (%d, %d, %d)", names[i], pixel(lx, ly)[0], pixel(lx, ly)[1],
+                     pixel(lx, ly)[2], pixel(rx, ry)[0], pixel(rx, ry)[1], pixel(rx, ry)[2]);
+        rc->m_options.m_bTextures = MEFALSE;
+        draw();
+        assert_true(chromaDistance(pixel(lx, ly), white) < 0.05 && chromaDistance(pixel(rx, ry), white) < 0.05);
+        rc->m_options.m_bTextures = METRUE;
+        assert_reports(ME_ERR_ARGUMENT_RANGE, assert_int_equal(RGraphicSetTexture(rc, box, "no_such_texture"), -1));
+        assert_int_equal(box->m_pObject->m_nTextureID, id);
+        RGraphicDelete(rc, box, 0);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -465,6 +529,7 @@ int main(void)
         cmocka_unit_test(test_paused_is_shown),
         cmocka_unit_test(test_shadow_falls_away_from_the_key_light),
         cmocka_unit_test(test_equal_meshes_keep_their_own_place_and_colour),
+        cmocka_unit_test(test_textures_bmp_and_png),
         cmocka_unit_test(test_performance_bar_drawn),
     };
     return cmocka_run_group_tests(tests, setup, teardown);

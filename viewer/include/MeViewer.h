@@ -111,6 +111,16 @@ RGraphic *MEAPI RGraphicCreateFromModel(RRender *rc, McdModelID m, float color[4
 /** The graphic of a geometry, following `matrix`. NULL for a type it cannot draw. */
 RGraphic *MEAPI RGraphicCreateFromGeometry(RRender *rc, McdGeometryID g, float color[4], MeMatrix4Ptr matrix);
 
+/** Load a texture (BMP, PNG or another format stb_image reads) from `filename`, tried as given, then
+ *  with ".bmp" and ".png" when it has no extension (Karma names textures without one); the same
+ *  name twice gives the same texture. Returns its id (0 … 24), or −1 with a message (unreadable, or
+ *  25 textures already). */
+int MEAPI RRenderTextureCreate(RRender *rc, const char *filename);
+/** Texture a graphic (RRenderTextureCreate's file names): the image, at the graphic's texture
+ *  coordinates, multiplies its colour (unless -notextures). Returns the texture id, or −1 with a
+ *  message (the graphic unchanged). */
+int MEAPI RGraphicSetTexture(RRender *rc, RGraphic *rg, const char *filename);
+
 /** Put a graphic in the 3D (is2D = 0) or 2D list (primitives are put there when created). */
 void MEAPI RGraphicAddToList(RRender *rc, RGraphic *rg, int is2D);
 /** Take a graphic out of its list (it is kept, hidden). */

@@ -28,8 +28,9 @@
 
 /** Floats per instance: the model matrix (16), ambient, diffuse, specular (rgb, shininess), emissive (4 each). */
 #define R_INSTANCE_FLOATS 32
-/** Texture unit of the shadow map (the font uses unit 0). */
+/** Texture units of the shadow map and of graphics' textures (the font uses unit 0). */
 #define R_SHADOW_UNIT 1
+#define R_TEXTURE_UNIT 2
 /** In the key light's shadow its ambient part is scaled by this too (its diffuse and specular
  *  parts vanish): Karma's light 1 is mostly ambient (0.7 of 1.3), and a shadow of its diffuse
  *  part alone would hardly show. */
@@ -63,19 +64,20 @@ struct RGL {
     float *instances;                 /* their instance data */
     int itemCount, itemCapacity;
     RRender *rc;                      /* the context being drawn */
+    GLuint textures[R_MAX_TEXTURES];  /* the context's textures, uploaded when first used (0: not yet) */
 };
 
 enum {
     U_VIEW, U_PROJ, U_GLOBAL_AMBIENT, U_EYE,
     U_L1_ON, U_L1_DIR, U_L1_AMB, U_L1_DIF, U_L1_SPEC, U_L2_ON, U_L2_DIR, U_L2_AMB, U_L2_DIF, U_L2_SPEC,
     U_P_ON, U_P_POS, U_P_AMB, U_P_DIF, U_P_SPEC, U_P_ATT, U_UNLIT, U_CHECKER, U_CHECKER_U, U_CHECKER_V,
-    U_SHADOW_ON, U_SHADOW_VP, U_SHADOW_TEXEL, U_SHADOW_MAP, U_COUNT
+    U_SHADOW_ON, U_SHADOW_VP, U_SHADOW_TEXEL, U_SHADOW_MAP, U_TEXTURED, U_TEXTURE, U_COUNT
 };
 static const char *const uniformNames[U_COUNT] = {
     "uView", "uProj", "uGlobalAmbient",
     "uEye", "uL1.on", "uL1.dir", "uL1.amb", "uL1.dif", "uL1.spec", "uL2.on", "uL2.dir", "uL2.amb", "uL2.dif",
     "uL2.spec", "uPointOn", "uPointPos", "uPointAmb", "uPointDif", "uPointSpec", "uPointAtt", "uUnlit",
-    "uChecker", "uCheckerU", "uCheckerV", "uShadowOn", "uShadowVP", "uShadowTexel", "uShadowMap"};
+    "uChecker", "uCheckerU", "uCheckerV", "uShadowOn", "uShadowVP", "uShadowTexel", "uShadowMap", "uTextured", "uTexture"};
 
 /* Per instance (divisor 1): the model matrix and the material, passed on flat. */
 static const char *const vertex3D =
@@ -87,12 +89,14 @@ static const char *const vertex3D =
     "layout(location = 7) in vec4 aDiffuse;\n"
     "layout(location = 8) in vec4 aSpecular;\n"
     "layout(location = 9) in vec4 aEmissive;\n"
+    "layout(location = 10) in vec2 aUV;\n"
     "uniform mat4 uView, uProj;\n"
     "out vec3 vWorld, vNormal, vLocal;\n"
+    "out vec2 vUV;\n"
     "flat out vec4 vAmbient, vDiffuse, vSpecular, vEmissive;\n"
     "void main() {\n"
     "  vec4 w = aModel * vec4(aPos, 1.0);\n"
-    "  vWorld = w.xyz; vNormal = mat3(aModel) * aNormal; vLocal = aPos;\n"
+    "  vWorld = w.xyz; vNormal = mat3(aModel) * aNormal; vLocal = aPos; vUV = aUV;\n"
     "  vAmbient = aAmbient; vDiffuse = aDiffuse; vSpecular = aSpecular; vEmissive = aEmissive;\n"
     "  gl_Position = uProj * uView * w;\n"
     "}\n";
@@ -113,7 +117,10 @@ static const char *const fragment3D =
     "uniform mat4 uShadowVP;\n"
     "uniform float uShadowTexel;\n"
     "uniform sampler2DShadow uShadowMap;\n"
+    "uniform int uTextured;\n"
+    "uniform sampler2D uTexture;\n"
     "in vec3 vWorld, vNormal, vLocal;\n"
+    "in vec2 vUV;\n"
     "flat in vec4 vAmbient, vDiffuse, vSpecular, vEmissive;\n"
     "out vec4 fragColor;\n"
     "vec3 shade(vec3 n, vec3 v, vec3 l, vec3 amb, vec3 dif, vec3 spec, vec3 ka, vec3 kd, float lit) {\n"
@@ -143,6 +150,7 @@ static const char *const fragment3D =
     "    float k = mix(0.74, 1.0, 0.5 + 0.5 * i.x * i.y);\n"
     "    kd *= k; ka *= k;\n"
     "  }\n"
+    "  if (uTextured != 0) { vec3 t = texture(uTexture, vUV).rgb; kd *= t; ka *= t; }\n"
     "  if (uUnlit != 0) { fragColor = vec4(kd, vDiffuse.a); return; }\n"
     "  vec3 n = normalize(vNormal);\n"
     "  if (!gl_FrontFacing) n = -n;\n"
@@ -340,6 +348,7 @@ void RGLDestroy(struct RGL *gl)
         RGLReleaseGraphic(gl->graphics);
     freeTargets(gl);
     RShadowDestroy(gl->shadow);
+    glDeleteTextures(R_MAX_TEXTURES, gl->textures); /* 0s are ignored */
     glDeleteBuffers(1, &gl->cache.instances);
     glDeleteProgram(gl->prog3D);
     glDeleteProgram(gl->prog2D);
@@ -462,6 +471,13 @@ static void instanceData(const RGraphic *rg, float *d)
     memcpy(d + 28, h->m_ColorEmissive, 4 * sizeof(float));
 }
 
+/* The texture a graphic is drawn with: its id when textures are on and it names one, else −1. */
+static int textureOf(const RRender *rc, const RGraphic *rg)
+{
+    int id = rg->m_pObject->m_nTextureID;
+    return rc->m_options.m_bTextures && id >= 0 && id < rc->m_private->textureCount ? id : -1;
+}
+
 /** A round graphic whose radius covers fewer pixels than these is drawn with its coarser copies. */
 #define R_LOD_PIXELS_HALF 24.0
 #define R_LOD_PIXELS_QUARTER 8.0
@@ -515,7 +531,7 @@ static int prepare(struct RGL *gl, RRender *rc)
         RDrawItem *it = &gl->items[count++];
         it->g = rg, it->mesh = shape->m_private->mesh, it->order = order, it->depth = depth;
         it->plain = p->kind == kRKindTriangles && p->checkerCell <= 0 && !h->m_bIsWireFrame &&
-                    !rc->m_options.m_bWireFrame && h->m_ColorDiffuse[3] >= 1.0f;
+                    !rc->m_options.m_bWireFrame && h->m_ColorDiffuse[3] >= 1.0f && textureOf(rc, rg) < 0;
         it->casts = RShadowCasts(rg, rc);
     }
     qsort(gl->items, (size_t)count, sizeof *gl->items, itemOrder);
@@ -529,7 +545,25 @@ static int prepare(struct RGL *gl, RRender *rc)
     return 1;
 }
 
-/* The per-graphic state of a graphic drawn alone (lines, planes, wireframe, translucent). */
+/* The GL texture of the context's texture `id`, uploaded (with mipmaps, repeating) when first used. */
+static GLuint textureFor(struct RGL *gl, const RRender *rc, int id)
+{
+    if (!gl->textures[id]) {
+        const RTexture *t = &rc->m_private->textures[id];
+        glGenTextures(1, &gl->textures[id]);
+        glBindTexture(GL_TEXTURE_2D, gl->textures[id]);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t->width, t->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, t->rgba);
+        glGenerateMipmap(GL_TEXTURE_2D);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    }
+    return gl->textures[id];
+}
+
+/* The per-graphic state of a graphic drawn alone (lines, planes, wireframe, translucent, textured). */
 static void setGraphicState(struct RGL *gl, const RGraphic *rg)
 {
     const GLint *u = gl->u3;
@@ -544,6 +578,13 @@ static void setGraphicState(struct RGL *gl, const RGraphic *rg)
     }
     int wire = rg->m_pObject->m_bIsWireFrame || gl->rc->m_options.m_bWireFrame;
     glPolygonMode(GL_FRONT_AND_BACK, wire ? GL_LINE : GL_FILL);
+    int texture = textureOf(gl->rc, rg);
+    glUniform1i(u[U_TEXTURED], texture >= 0);
+    if (texture >= 0) {
+        glActiveTexture(GL_TEXTURE0 + R_TEXTURE_UNIT);
+        glBindTexture(GL_TEXTURE_2D, textureFor(gl, gl->rc, texture));
+        glActiveTexture(GL_TEXTURE0);
+    }
 }
 
 /* Draw the batches: each run of plain graphics sharing a mesh in one instanced call, the others one by one. */
@@ -563,6 +604,7 @@ static void drawBatches(void *data, int castersOnly)
             plainState = 0;
         } else if (!castersOnly && !plainState) {
             glUniform1i(u[U_UNLIT], 0);
+            glUniform1i(u[U_TEXTURED], 0);
             glUniform1f(u[U_CHECKER], 0);
             glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
             plainState = 1;
@@ -592,6 +634,7 @@ static void draw3D(struct RGL *gl, RRender *rc)
     setLights(gl, rc);
     int shadows = gl->shadow && rc->m_DirectLight1.m_bUseLight && !rc->m_private->noShadows;
     glUniform1i(u[U_SHADOW_ON], shadows);
+    glUniform1i(u[U_TEXTURE], R_TEXTURE_UNIT);
     if (shadows)
         RShadowBind(gl->shadow, u[U_SHADOW_VP], u[U_SHADOW_TEXEL], u[U_SHADOW_MAP], R_SHADOW_UNIT);
     drawBatches(gl, 0);

@@ -12,6 +12,16 @@
 /** Report a coded message (docs/errors.md) from viewer function `fn`. */
 #define R_REPORT(code, fn, ...) MeReport((code), (fn), __FILE__, __LINE__, __VA_ARGS__)
 
+/** Textures a context holds (Karma's limit). */
+#define R_MAX_TEXTURES 25
+
+/** A texture's pixels, kept by the context (RTexture.c). */
+typedef struct RTexture {
+    char name[128];          /**< as RRenderTextureCreate was given it */
+    int width, height;
+    unsigned char *rgba;     /**< bottom row first */
+} RTexture;
+
 /** Coarser copies a round graphic keeps for when it is small on the picture. */
 #define R_LOD_LEVELS 2
 
@@ -62,6 +72,8 @@ struct RRenderPrivate {
     int noShadows;           /**< the F12 menu turned shadows off */
     unsigned int profileFrames; /**< -profile N: frames to profile (0: -timeout's, or 1,000) */
     struct RDebugDraw *debugDraw; /**< lines from MeDebugDrawAPI (RRenderSetDebugDrawing), or NULL */
+    RTexture textures[R_MAX_TEXTURES]; /**< RRenderTextureCreate's, by id */
+    int textureCount;
     char title[128];
 };
 
@@ -90,6 +102,8 @@ void RMenuContextGone(RRender *rc);
 void RHelpContextGone(RRender *rc);
 /** The context goes: the performance bar freed. */
 void RPerformanceBarDestroy(RRender *rc);
+/** The context goes: the textures' pixels freed (RTexture.c). */
+void RTexturesContextGone(RRender *rc);
 /** Show the debug lines drawn since the last frame (RDebugDraw.c). */
 void RDebugDrawFrame(RRender *rc);
 /** The context goes or stops debug drawing: its lines freed, the hook silent again. */

@@ -9,6 +9,9 @@
 
 #include "RInternal.h"
 
+/** Floats a vertex: position, normal, texture coordinates. */
+#define R_VERTEX_FLOATS 8
+
 /* FNV-1a over the vertex bytes: equal vertices give equal keys; the bytes are compared on a match. */
 static unsigned long long hashBytes(const float *data, size_t bytes)
 {
@@ -19,18 +22,19 @@ static unsigned long long hashBytes(const float *data, size_t bytes)
     return h;
 }
 
-/* Positions and normals as floats (6 a vertex), and the radius of the sphere about the origin holding them. */
+/* Positions, normals and texture coordinates as floats (8 a vertex), and the radius of the sphere about the origin holding them. */
 static float *vertexData(const RGraphic *rg, int n, float *radius)
 {
-    float *data = malloc(sizeof(float) * 6 * (size_t)(n > 0 ? n : 1));
+    float *data = malloc(sizeof(float) * R_VERTEX_FLOATS * (size_t)(n > 0 ? n : 1));
     double r2 = 0;
     if (!data)
         return NULL;
     for (int i = 0; i < n; i++) {
         const RObjectVertex *v = &rg->m_pVertices[i];
-        float *d = data + 6 * i;
+        float *d = data + R_VERTEX_FLOATS * i;
         d[0] = (float)v->m_X, d[1] = (float)v->m_Y, d[2] = (float)v->m_Z;
         d[3] = (float)v->m_NX, d[4] = (float)v->m_NY, d[5] = (float)v->m_NZ;
+        d[6] = (float)v->m_U, d[7] = (float)v->m_V;
         double s = (double)d[0] * d[0] + (double)d[1] * d[1] + (double)d[2] * d[2];
         r2 = s > r2 ? s : r2;
     }
@@ -57,11 +61,14 @@ static RMesh *meshNew(RMeshCache *cache, float *data, int n, unsigned long long 
     glGenBuffers(1, &m->vbo);
     glBindVertexArray(m->vao);
     glBindBuffer(GL_ARRAY_BUFFER, m->vbo);
-    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(sizeof(float) * 6 * (size_t)n), data, GL_STATIC_DRAW);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), NULL);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), (const void *)(3 * sizeof(float)));
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(sizeof(float) * R_VERTEX_FLOATS * (size_t)n), data, GL_STATIC_DRAW);
+    const GLsizei stride = R_VERTEX_FLOATS * sizeof(float);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, NULL);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, (const void *)(3 * sizeof(float)));
+    glVertexAttribPointer(10, 2, GL_FLOAT, GL_FALSE, stride, (const void *)(6 * sizeof(float)));
     glEnableVertexAttribArray(0);
     glEnableVertexAttribArray(1);
+    glEnableVertexAttribArray(10);
     RGLInstanceAttributes(cache->instances, 0);
     glBindVertexArray(0);
     if (shared) {
@@ -80,7 +87,7 @@ RMesh *RMeshAcquire(RMeshCache *cache, const RGraphic *rg, int shared, float *ra
     float *data = vertexData(rg, n, radius);
     if (!data)
         return NULL;
-    size_t bytes = sizeof(float) * 6 * (size_t)n;
+    size_t bytes = sizeof(float) * R_VERTEX_FLOATS * (size_t)n;
     unsigned long long hash = hashBytes(data, bytes);
     if (shared)
         for (RMesh *m = cache->meshes; m; m = m->next)
@@ -104,7 +111,7 @@ int RMeshUpdate(RMesh *m, const RGraphic *rg, float *radius)
     if (!data)
         return 0;
     glBindBuffer(GL_ARRAY_BUFFER, m->vbo);
-    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(sizeof(float) * 6 * (size_t)n), data, GL_DYNAMIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(sizeof(float) * R_VERTEX_FLOATS * (size_t)n), data, GL_DYNAMIC_DRAW);
     m->count = n;
     free(data);
     return 1;

@@ -176,6 +176,7 @@ int MEAPI RRenderContextDestroy(RRender *rc)
     deleteList(rc, 0);
     deleteList(rc, 1); /* the "Paused" text too */
     RGLDestroy(p->gl);
+    RTexturesContextGone(rc);
     if (p->backend)
         p->backend->destroy(p->backend);
     free(rc->m_pCallBacks);
