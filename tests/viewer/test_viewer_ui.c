@@ -171,11 +171,17 @@ static void test_help_shows_substituted_and_pauses(void **state)
     RRenderContextDestroy(rc);
 }
 
-/* F12: the viewer's menu; its entries pause, turn shadows off, and exit. */
+/* F12: the viewer's menu; its entries pause, turn shadows off, and exit. Shift+F2 turns textures
+ * off and on, F2 alone the wireframe. */
 static void test_f12_menu(void **state)
 {
     (void)state;
     RRender *rc = nullContext(NULL, NULL);
+    RInputKey(rc, RKEY_F2, RSHIFT);
+    assert_false(rc->m_options.m_bTextures);
+    assert_false(rc->m_options.m_bWireFrame);
+    RInputKey(rc, RKEY_F2, RSHIFT);
+    assert_true(rc->m_options.m_bTextures);
     RInputKey(rc, RKEY_F12, 0);
     assert_non_null(rc->m_private->menuShown);
     assert_non_null(findText(rc, "Pause"));

@@ -1,7 +1,7 @@
 /* RInput.c -- Karma's PC key map and mouse, and the application's callbacks:
  * arrows Up/Down/Left/Right (a menu's while one is shown), w s a d Up2/Down2/Left2/Right2, h m
  * Enter Space o p actions 0–5 (m shows the default menu when there is one), Esc quits, + and −
- * zoom, F1 help, F2 wireframe, Ctrl+F3 frame rate, F8 single step (pausing), Ctrl+F8 pause/play,
+ * zoom, F1 help, F2 wireframe (Shift+F2 textures), Ctrl+F3 frame rate, F8 single step (pausing), Ctrl+F8 pause/play,
  * F12 the viewer's menu, PgUp/PgDn move the look-at point along z. Mouse without modifier: left drag orbits, middle drag zooms, right drag
  * pans; with Ctrl, Shift or Alt events go to the application's mouse callback. */
 #include <ctype.h>
@@ -103,7 +103,12 @@ void RInputKey(RRender *rc, int key, int modifiers)
     case RKEY_PAGE_DOWN: RCameraPanZ(rc, -R_KEY_PAN); return;
     case RKEY_KP_ADD: case '=': RCameraZoom(rc, R_KEY_ZOOM); return;
     case RKEY_KP_SUBTRACT: case '-': RCameraZoom(rc, -R_KEY_ZOOM); return;
-    case RKEY_F2: RRenderSetWireframe(rc, !rc->m_options.m_bWireFrame); return;
+    case RKEY_F2: /* Shift+F2: textures on and off */
+        if (modifiers & RSHIFT)
+            rc->m_options.m_bTextures = rc->m_options.m_bTextures ? MEFALSE : METRUE;
+        else
+            RRenderSetWireframe(rc, !rc->m_options.m_bWireFrame);
+        return;
     case RKEY_F8:
         if (modifiers & RCONTROL) {
             RRenderSetPause(rc, !rc->m_bPause);
