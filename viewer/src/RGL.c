@@ -534,7 +534,8 @@ static int prepare(struct RGL *gl, RRender *rc)
                     !rc->m_options.m_bWireFrame && h->m_ColorDiffuse[3] >= 1.0f && textureOf(rc, rg) < 0;
         it->casts = RShadowCasts(rg, rc);
     }
-    qsort(gl->items, (size_t)count, sizeof *gl->items, itemOrder);
+    if (count > 1) /* an empty list may have no array at all */
+        qsort(gl->items, (size_t)count, sizeof *gl->items, itemOrder);
     for (int i = 0; i < count; i++)
         instanceData(gl->items[i].g, gl->instances + R_INSTANCE_FLOATS * i);
     glBindBuffer(GL_ARRAY_BUFFER, gl->cache.instances);
