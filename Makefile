@@ -30,9 +30,10 @@ JOBS    ?= 2
 FUZZ_SECONDS ?= 60
 FUZZERS := fuzz_pairs fuzz_lineseg fuzz_space fuzz_api
 # The viewer (viewer/, karma render/view): GLFW, libepoxy, stb, the DejaVu font, and Mesa's EGL and
-# software renderer for pictures without a display, Xvfb for the window test (all run in make test).
+# software renderer for pictures without a display, Xvfb for the window test, ffmpeg for videos
+# (`karma render --mp4`) (all run in make test).
 VIEWER_PACKAGES := libglfw3-dev libepoxy-dev libstb-dev fonts-dejavu-core libegl1 libegl-mesa0 libgl1-mesa-dri \
-                   xvfb xauth
+                   xvfb xauth ffmpeg
 DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config gcovr gnuplot-nox doxygen clang libclang-rt-14-dev \
                    $(VIEWER_PACKAGES)
 

@@ -3,8 +3,8 @@
  *     karma list
  *     karma run SCENE [--steps N] [--dt H] [--csv FILE [--long]]
  *     karma plot SCENE [--steps N] [--dt H] [--csv FILE] [--png FILE]
- *     karma render SCENE [--frames N] [--size WxH] [--out FILE]     (built with the viewer)
- *     karma view SCENE [-size WxH] [-timeout N]                       (built with the viewer)
+ *     karma render SCENE [--frames N] [--size WxH] [--out FILE] [--mp4 FILE]   (built with the viewer)
+ *     karma view SCENE [-size WxH] [-timeout N] [-null] [-bench] [-profile [N]] (built with the viewer)
  *     karma version
  *     karma --help
  *
@@ -47,11 +47,14 @@ static void printUsage(FILE *out)
             "  render SCENE [options]    draw SCENE without a display (EGL) and write a PNG picture\n"
             "      --frames N            frames before the picture, one step each (default: the scene's steps)\n"
             "      --size WxH            picture size in pixels (default 1280x720)\n"
-            "      --out FILE            the PNG file (default SCENE.png)\n"
+            "      --out FILE            the PNG file (default SCENE.png; with --mp4 only when given)\n"
+            "      --mp4 FILE            also draw every frame into an H.264 video (needs ffmpeg)\n"
             "  view SCENE [options]      open a window on SCENE (mouse: left orbits, middle zooms, right pans;\n"
-            "                            Ctrl+left drags a body, Esc quits, F8 single step, Ctrl+F8 pause);\n"
-            "                            options: -size WxH, -timeout N (frames), -headless, -null,\n"
-            "                            -wireframe\n"
+            "                            Ctrl+left drags a body, Enter resets, Space shoots, m options menu,\n"
+            "                            F1 help, F12 viewer menu, Esc quits, F8 single step, Ctrl+F8 pause);\n"
+            "                            options: -size WxH, -timeout N (frames), -headless, -null (no\n"
+            "                            drawing), -bench (no drawing, timings), -profile [N] (N frames\n"
+            "                            profiled, default 1000), -wireframe\n"
             "  version                   print the library version and precision\n"
             "  help, --help, -h          print this help\n"
             "\n"

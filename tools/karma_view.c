@@ -8,9 +8,10 @@
 #include <string.h>
 #include <time.h>
 
-#include <MeApp.h>
+#include <karma/MeProfile.h>
 
-#include "demo_view.h"
+#include "demo_view_app.h"
+#include "karma_view_video.h"
 #include "karma_view.h"
 
 /* The scene a viewer command names first (argv[0]), or NULL after saying what is wrong. */
@@ -33,6 +34,43 @@ static double seconds(void)
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
+/* --mp4: every frame drawn (the camera framed once, on the first) and piped to ffmpeg; the last
+ * also written as a PNG when --out was given. Frees the view, the context and the scene. */
+static int renderVideo(const DemoScene *scene, DemoInstance *demo, DemoView *view, long frames, const char *mp4,
+                       const char *png)
+{
+    RRender *rc = view->rc;
+    int width, height;
+    RRenderGetSize(rc, &width, &height);
+    int fps = (int)(1.0 / (double)scene->defaultStepSize + 0.5);
+    KarmaVideo video;
+    int status = EXIT_FAILURE;
+    double drawing = 0;
+    if (KarmaVideoOpen(&video, mp4, width, height, fps > 0 ? fps : 1) == 0) {
+        int ok = 1;
+        for (long f = 0; f < frames && ok; f++) {
+            DemoStep(demo, scene->defaultStepSize);
+            double t0 = seconds();
+            RRenderDrawFrame(rc);
+            ok = RRenderReadPixels(rc, video.rgba) == 0 && KarmaVideoWrite(&video, video.rgba) == 0;
+            drawing += seconds() - t0;
+        }
+        ok = KarmaVideoClose(&video) == 0 && ok;
+        if (ok && png)
+            ok = RRenderSavePNG(rc, png) == 0;
+        if (ok) {
+            printf("%s: %ld frames (%.3f s simulated), %dx%d at %d frames/s, video written to %s; drawing %.1f ms a frame\n",
+                   scene->name, frames, (double)demo->time, width, height, fps, mp4,
+                   frames ? 1e3 * drawing / (double)frames : 0.0);
+            status = EXIT_SUCCESS;
+        }
+    }
+    DemoViewDestroy(view);
+    RRenderContextDestroy(rc);
+    DemoDestroy(demo);
+    return status;
+}
+
 int KarmaRender(int argc, char **argv)
 {
     const DemoScene *scene = commandScene("render", argc, argv);
@@ -42,7 +80,8 @@ int KarmaRender(int argc, char **argv)
     int width = 1280, height = 720;
     char defaultOut[64];
     snprintf(defaultOut, sizeof defaultOut, "%s.png", scene->name);
-    const char *out = defaultOut;
+    const char *out = defaultOut, *mp4 = NULL;
+    MeBool outGiven = MEFALSE;
     for (int i = 1; i < argc; i++) {
         const char *option = argv[i];
         if (i + 1 >= argc)
@@ -58,7 +97,9 @@ int KarmaRender(int argc, char **argv)
             if (!RRenderParseSize(value, &width, &height))
                 return KarmaUsageError("--size takes WxH, each 1 to 8192 (got '%s')", value);
         } else if (strcmp(option, "--out") == 0) {
-            out = value;
+            out = value, outGiven = METRUE;
+        } else if (strcmp(option, "--mp4") == 0) {
+            mp4 = value;
         } else {
             return KarmaUsageError("unknown option '%s' of `render`", option);
         }
@@ -76,6 +117,8 @@ int KarmaRender(int argc, char **argv)
         DemoDestroy(&demo);
         return EXIT_FAILURE;
     }
+    if (mp4)
+        return renderVideo(scene, &demo, &view, frames, mp4, outGiven ? out : NULL);
     double physics = 0, drawing = 0;
     for (long f = 0; f < frames; f++) {
         double t0 = seconds();
@@ -97,19 +140,10 @@ int KarmaRender(int argc, char **argv)
     return status;
 }
 
-/** What `view`'s tick steps: the scene, and MeApp's mouse spring before each step. */
-typedef struct ViewTick {
-    DemoInstance *demo;
-    MeApp *app;
-} ViewTick;
-
 static void MEAPI tick(RRender *rc, void *userdata)
 {
     (void)rc;
-    ViewTick *t = userdata;
-    if (t->app)
-        MeAppStep(t->app);
-    DemoStep(t->demo, t->demo->scene->defaultStepSize);
+    DemoViewAppStep(userdata);
 }
 
 int KarmaView(int argc, char **argv)
@@ -119,10 +153,15 @@ int KarmaView(int argc, char **argv)
         return KARMA_EXIT_USAGE;
     /* Everything after the scene is for the viewer; checked before a window opens. */
     for (int i = 1; i < argc; i++) {
-        static const char *const flags[] = {"-gl", "-null", "-headless", "-wireframe", "-notextures"};
+        static const char *const flags[] = {"-gl", "-null", "-bench", "-headless", "-wireframe", "-notextures"};
         MeBool known = MEFALSE;
         for (size_t k = 0; k < sizeof flags / sizeof flags[0]; k++)
             known = known || strcmp(argv[i], flags[k]) == 0;
+        if (!known && strcmp(argv[i], "-profile") == 0) { /* -profile [frames] */
+            known = METRUE;
+            if (i + 1 < argc && argv[i + 1][0] >= '0' && argv[i + 1][0] <= '9')
+                i++;
+        }
         if (!known && (strcmp(argv[i], "-size") == 0 || strcmp(argv[i], "-timeout") == 0)) {
             if (i + 1 >= argc)
                 return KarmaUsageError("'%s' needs a value", argv[i]);
@@ -143,30 +182,24 @@ int KarmaView(int argc, char **argv)
     }
     if (!rc)
         return EXIT_FAILURE;
-    DemoInstance demo;
-    DemoView view;
-    if (!DemoCreate(scene, &demo)) {
-        RRenderContextDestroy(rc);
-        return EXIT_FAILURE;
-    }
-    if (!DemoViewCreate(&view, rc, &demo)) {
-        RRenderContextDestroy(rc);
-        DemoDestroy(&demo);
-        return EXIT_FAILURE;
-    }
     char title[128];
     snprintf(title, sizeof title, "Karma: %s (%s)", scene->name, scene->description);
     RRenderSetWindowTitle(rc, title);
-    RRenderSetAppName(rc, scene->name);
-    /* Ctrl, Shift or Alt + left button picks a body and drags it (MeApp's mouse spring). */
-    ViewTick t = {&demo, demo.universe ? MeAppCreateFromUniverse(demo.universe, rc) : MeAppCreate(demo.world, NULL, rc)};
-    if (t.app)
-        RRenderSetMouseCallBack(rc, MeAppMousePickCB, t.app);
-    RRun(rc, tick, &t);
-    MeAppDestroy(t.app);
-    printf("%s: %lu steps (%.3f s simulated)\n", scene->name, demo.steps, (double)demo.time);
-    DemoViewDestroy(&view);
+    DemoViewApp app;
+    if (!DemoViewAppCreate(&app, scene, rc)) {
+        RRenderContextDestroy(rc);
+        return EXIT_FAILURE;
+    }
+    /* The performance bar's collision and dynamics times (-profile starts its own timing). */
+    MeProfileTimerMode mode = {0};
+    if (!rc->m_bProfiling)
+        MeProfileStartTiming(mode, kMeProfileDontLog);
+    RRun(rc, tick, &app);
+    if (!rc->m_bProfiling)
+        MeProfileStopTiming();
+    printf("%s: %lu steps (%.3f s simulated), %d balls shot, %d resets\n", scene->name, app.demo.steps,
+           (double)app.demo.time, app.shots, app.resets);
+    DemoViewAppDestroy(&app);
     RRenderContextDestroy(rc);
-    DemoDestroy(&demo);
     return EXIT_SUCCESS;
 }

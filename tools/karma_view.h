@@ -11,10 +11,11 @@
  *  `karma --help` on stderr; returns KARMA_EXIT_USAGE. Defined in karma.c, shared by every command. */
 int KarmaUsageError(const char *format, const char *argument);
 
-/** `karma render SCENE [--frames N] [--size WxH] [--out FILE]`: exit status 0, 1 (scene or
- *  renderer failed), 2 (bad command line). argv[0] is the scene. */
+/** `karma render SCENE [--frames N] [--size WxH] [--out FILE] [--mp4 FILE]`: exit status 0, 1 (scene,
+ *  renderer or ffmpeg failed), 2 (bad command line). argv[0] is the scene. */
 int KarmaRender(int argc, char **argv);
-/** `karma view SCENE [--size WxH] [viewer options]`: the scene in a window until it is closed. */
+/** `karma view SCENE [viewer options: -size WxH -timeout N -null -bench -profile [N] -headless ...]`: the
+ *  scene in a window, with its help, actions and menu, until it is closed. */
 int KarmaView(int argc, char **argv);
 
 #endif /* KARMA_TOOL_VIEW_H */

@@ -15,8 +15,28 @@ add_test(NAME viewer_tool_render
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_tool_render.cmake)
 add_test(NAME viewer_tool_view_headless COMMAND karma view bounce -headless -size 160x100 -timeout 30)
 set_tests_properties(viewer_tool_view_headless PROPERTIES PASS_REGULAR_EXPRESSION "bounce: 30 steps")
+# Karma's options: -null runs without drawing, -bench also prints the timings, -profile N profiles N
+# frames and prints MeProfile's sections (the scene's collision and dynamics, the viewer's rendering).
+add_test(NAME viewer_tool_view_null COMMAND karma view bounce -null -timeout 25)
+set_tests_properties(viewer_tool_view_null PROPERTIES PASS_REGULAR_EXPRESSION "bounce: 25 steps")
+add_test(NAME viewer_tool_view_bench COMMAND karma view topple -bench -timeout 20)
+set_tests_properties(viewer_tool_view_bench PROPERTIES
+                     PASS_REGULAR_EXPRESSION "Benchmark: 20 frames in [0-9.]+ s, [0-9.]+ ms a frame.*topple: 20 steps")
+add_test(NAME viewer_tool_view_profile COMMAND karma view drop -null -profile 12)
+set_tests_properties(viewer_tool_view_profile PROPERTIES
+                     PASS_REGULAR_EXPRESSION "Karma profile: 12 frames.*Collision.*Dynamics.*Rendering.*drop: 12 steps")
+# Videos through ffmpeg (in make deps and .ci/run); without ffprobe the test fails and says what to install.
+find_program(KARMA_FFPROBE ffprobe)
+if(KARMA_FFPROBE)
+  add_test(NAME viewer_tool_render_mp4
+           COMMAND ${CMAKE_COMMAND} -DKARMA=$<TARGET_FILE:karma> -DFFPROBE=${KARMA_FFPROBE}
+                   -DOUT=${CMAKE_CURRENT_BINARY_DIR}/viewer_render.mp4 -P ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_tool_mp4.cmake)
+else()
+  add_test(NAME viewer_tool_render_mp4 COMMAND ${CMAKE_COMMAND} -E echo "ffprobe not found: install ffmpeg (make deps)")
+  set_tests_properties(viewer_tool_render_mp4 PROPERTIES FAIL_REGULAR_EXPRESSION "not found")
+endif()
 foreach(bad "render;nosuchscene" "render;bounce;--frames;-3" "render;bounce;--size;12by7" "render;bounce;--frames"
-            "render;bounce;--frobnicate;1" "render" "view;bounce;-frobnicate")
+            "render;bounce;--frobnicate;1" "render" "view;bounce;-frobnicate" "render;bounce;--mp4")
   string(REPLACE ";" "_" name "${bad}")
   add_test(NAME viewer_tool_rejects_${name}
            COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:karma> "-DARGS=${bad}" -DEXPECT_EXIT=2

@@ -9,19 +9,17 @@
 #include <MeViewer.h>
 
 #include "RInternal.h"
+#include "viewer_null_context.h"
 #include "viewer_project.h"
 
 #define PI 3.14159265358979323846
 
 static RRender *nullContext(const char *extra1, const char *extra2)
 {
-    const char *argv[4] = {"test", "-null", extra1, extra2};
-    int argc = 2 + (extra1 != NULL) + (extra2 != NULL);
-    MeCommandLineOptions *o = MeCommandLineOptionsCreate(argc, argv);
-    RRender *rc = RRenderContextCreate(o, NULL, METRUE);
+    int left;
+    RRender *rc = viewerNullContext(extra1, extra2, &left);
     assert_non_null(rc);
-    assert_int_equal(o->m_argc, 1); /* the viewer's options were eaten, the program name kept */
-    MeCommandLineOptionsDestroy(o);
+    assert_int_equal(left, 1); /* the viewer's options were eaten, the program name kept */
     return rc;
 }
 
@@ -336,10 +334,22 @@ static void test_primitives_are_their_shapes(void **state)
     RRender *rc = nullContext(NULL, NULL);
     const float red[4] = {1, 0, 0, 1};
     const double origin[3] = {0, 0, 0};
-    checkMesh(RGraphicSphereCreate(rc, ME_R(0.7), red, NULL), sphereDistance, 1e-5, origin);
+    RGraphic *sphere = RGraphicSphereCreate(rc, ME_R(0.7), red, NULL);
+    checkMesh(sphere, sphereDistance, 1e-5, origin);
+    /* Its coarser copies (drawn when it is small on the picture) are the same sphere, in fewer triangles. */
+    for (int k = 0, n = sphere->m_pObject->m_nNumVertices; k < R_LOD_LEVELS; k++) {
+        RGraphic *lod = sphere->m_private->lod[k];
+        checkMesh(lod, sphereDistance, 1e-5, origin);
+        assert_true(lod->m_pObject->m_nNumVertices < n / 2);
+        n = lod->m_pObject->m_nNumVertices;
+    }
+    assert_near(sphere->m_private->lodExtent, 0.7, 1e-6);
     checkMesh(RGraphicBoxCreate(rc, 1, 2, 3, red, NULL), boxDistance, 1e-5, origin);
     checkMesh(RGraphicCylinderCreate(rc, ME_R(0.7), ME_R(1.2), red, NULL), cylinderDistance, 1e-5, origin);
-    checkMesh(RGraphicSphylCreate(rc, ME_R(0.7), ME_R(1.2), red, NULL), sphylDistance, 1e-5, origin);
+    RGraphic *sphyl = RGraphicSphylCreate(rc, ME_R(0.7), ME_R(1.2), red, NULL);
+    checkMesh(sphyl, sphylDistance, 1e-5, origin);
+    for (int k = 0; k < R_LOD_LEVELS; k++)
+        checkMesh(sphyl->m_private->lod[k], sphylDistance, 1e-5, origin);
     checkMesh(RGraphicTorusCreate(rc, ME_R(0.5), 2, red, NULL), torusDistance, 1e-5, NULL);
     const double axis[3] = {0, 0, 0.1};
     checkMesh(RGraphicConeCreate(rc, ME_R(0.7), ME_R(0.9), ME_R(0.3), red, NULL), coneDistance, 1e-5, axis);

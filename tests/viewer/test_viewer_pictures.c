@@ -2,12 +2,14 @@
  * (EGL on Mesa, no display): every registry scene at its first and last frame is neither blank nor
  * uniform; for a few scenes the centre of each body, projected with the camera's matrices, lands on
  * pixels of that body's colour; the ground and the sky are where the camera says; a graphic follows
- * the body it was given. The test fails, never skips, when no headless context can be made. */
+ * the body it was given; shadows fall away from the key light; textures (BMP, PNG) show; the
+ * performance bar is drawn. The test fails, never skips, when no headless context can be made. */
 #include "karma_test.h"
 
 #include <stdlib.h>
 #include <string.h>
 
+#include "RInternal.h"
 #include "demo_view.h"
 #include "viewer_project.h"
 
@@ -349,6 +351,172 @@ static void test_paused_is_shown(void **state)
     assert_int_equal(brightPixelsTopRight(), 0);
 }
 
+/* Mean brightness of the 5 × 5 pixels about world point p (on the picture). */
+static double brightnessAt(const double p[3])
+{
+    int px, py;
+    assert_true(project(p, &px, &py));
+    double sum = 0;
+    for (int dy = -2; dy <= 2; dy++)
+        for (int dx = -2; dx <= 2; dx++) {
+            const unsigned char *q = pixel(px + dx, py + dy);
+            sum += 0.3 * q[0] + 0.59 * q[1] + 0.11 * q[2];
+        }
+    return sum / 25;
+}
+
+/* The key light (directional light 1) casts shadows: a box 1 m above the ground darkens the ground
+ * where the ray from its centre away from the light meets it, c − l·(c_y / l_y), and not the point
+ * as far on the other side; with the light turned round, the other way round. Each pixel is
+ * compared with itself in a picture without the box, so the checkerboard does not matter. */
+static void test_shadow_falls_away_from_the_key_light(void **state)
+{
+    const float grey[4] = {0.8f, 0.8f, 0.8f, 1}, red[4] = {1, 0.2f, 0.2f, 1};
+    RGraphic *ground = RGraphicGroundPlaneCreate(rc, 40, 20, grey, 0);
+    MeMatrix4 tm = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, ME_R(1.0), 0, 1}};
+    RGraphic *box = RGraphicBoxCreate(rc, ME_R(0.8), ME_R(0.8), ME_R(0.8), red, tm);
+    const AcmeVector3 at = {0, 0, 0};
+    RCameraSetLookAt(rc, at);
+    RCameraSetView(rc, 14, ME_R(0.2), ME_R(1.1));
+    AcmeReal *dir = rc->m_DirectLight1.m_Direction, saved[3] = {dir[0], dir[1], dir[2]};
+    const double c[3] = {0, 1, 0};
+    for (int turn = 0; turn < 2; turn++) {
+        double sign = turn ? -1 : 1;
+        dir[0] = (AcmeReal)(sign * 0.86), dir[1] = ME_R(0.26), dir[2] = (AcmeReal)(sign * 0.43);
+        double n = sqrt(0.86 * 0.86 + 0.26 * 0.26 + 0.43 * 0.43), l[3] = {sign * 0.86 / n, 0.26 / n, sign * 0.43 / n};
+        double t = c[1] / l[1];
+        double shadow[3] = {c[0] - t * l[0], 0, c[2] - t * l[2]}, lit[3] = {-shadow[0], 0, -shadow[2]};
+        draw();
+        double withShadow = brightnessAt(shadow), withLit = brightnessAt(lit);
+        RGraphicRemoveFromList(rc, box, 0);
+        draw();
+        double bareShadow = brightnessAt(shadow), bareLit = brightnessAt(lit);
+        RGraphicAddToList(rc, box, 0);
+        if (!(withShadow < 0.85 * bareShadow && fabs(withLit - bareLit) < 2))
+            fail_msg("light %+.0f: ground at the shadow %.1f (%.1f without the box), on the other side %.1f (%.1f)", sign,
+                     withShadow, bareShadow, withLit, bareLit);
+    }
+    memcpy(dir, saved, sizeof saved);
+    RGraphicDelete(rc, box, 0);
+    RGraphicDelete(rc, ground, 0);
+}
+
+/* Graphics of equal vertices are drawn together (one instanced draw) but each with its own matrix
+ * and colour: three equal boxes in three colours, each centre shows its own. */
+static void test_equal_meshes_keep_their_own_place_and_colour(void **state)
+{
+    const float colors[3][4] = {{1, 0.1f, 0.1f, 1}, {0.1f, 1, 0.1f, 1}, {0.1f, 0.1f, 1, 1}};
+    MeMatrix4 tm[3];
+    RGraphic *boxes[3];
+    for (int i = 0; i < 3; i++) {
+        memset(tm[i], 0, sizeof tm[i]);
+        for (int k = 0; k < 4; k++)
+            tm[i][k][k] = 1;
+        tm[i][3][0] = (MeReal)(2 * (i - 1));
+        boxes[i] = RGraphicBoxCreate(rc, 1, 1, 1, colors[i], tm[i]);
+    }
+    const AcmeVector3 at = {0, 0, 0};
+    RCameraSetLookAt(rc, at);
+    RCameraSetView(rc, 10, 0, ME_R(0.2));
+    draw();
+    for (int i = 0; i < 3; i++) {
+        double p[3] = {2.0 * (i - 1), 0, 0};
+        int px, py;
+        assert_true(project(p, &px, &py));
+        if (chromaDistance(pixel(px, py), colors[i]) > 0.1)
+            fail_msg("box %d at (%d, %d) is not its colour", i, px, py);
+    }
+    for (int i = 0; i < 3; i++)
+        RGraphicDelete(rc, boxes[i], 0);
+}
+
+/* The performance bar as drawn: 2, 4, 6 and 2 ms of collision, dynamics, rendering and idle time
+ * laid end to end from x = 20 of the virtual screen at 12 units a millisecond, each in its colour
+ * (orange, green, blue, grey), on the bar's row at the bottom. */
+static void test_performance_bar_drawn(void **state)
+{
+    for (int k = 0; k < 3; k++)
+        rc->m_backgroundColour[k] = 0;
+    assert_non_null(RPerformanceBarCreate(rc));
+    RPerformanceBarUpdate(rc, 2, 4, 6, 2);
+    draw();
+    const double ms[4] = {1, 4.5, 9, 13};
+    const float colors[4][4] = {{1, 0.55f, 0.1f, 1}, {0.2f, 0.8f, 0.3f, 1}, {0.3f, 0.5f, 1, 1}, {0.6f, 0.6f, 0.6f, 1}};
+    int y = (int)(432.0 / 448 * H);
+    for (int k = 0; k < 4; k++) {
+        int x = (int)((20 + 12 * ms[k]) / 640 * W);
+        const unsigned char *p = pixel(x, y);
+        if (chromaDistance(p, colors[k]) > 0.03 || p[0] + p[1] + p[2] < 100)
+            fail_msg("bar part %d at (%d, %d) is (%d, %d, %d)", k, x, y, p[0], p[1], p[2]);
+    }
+    const unsigned char *beyond = pixel((int)((20 + 12 * 15.0) / 640 * W), y);
+    assert_true(beyond[0] + beyond[1] + beyond[2] < 10); /* 14 ms in all: background after it */
+    RPerformanceBarDestroy(rc);
+}
+
+/* A 2 × 1 BMP written by hand (24-bit, rows bottom up, padded to 4 bytes): left red, right blue. */
+static void writeBmp(const char *path)
+{
+    unsigned char file[62] = {'B', 'M', 62, 0, 0, 0, 0, 0, 0, 0, 54, 0, 0, 0, /* size, offset of the pixels */
+                              40, 0, 0, 0, 2, 0, 0, 0, 1, 0, 0, 0, 1, 0, 24, 0}; /* 2 × 1, 1 plane, 24 bits */
+    const unsigned char pixels[8] = {0, 0, 255, 255, 0, 0, 0, 0};                 /* BGR red, BGR blue, padding */
+    memcpy(file + 54, pixels, sizeof pixels);
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(file, 1, sizeof file, f), sizeof file);
+    fclose(f);
+}
+
+/* The same picture as a PNG, drawn by the viewer itself: two 2D rectangles on a 2 × 1 picture. */
+static void writePng(const char *path)
+{
+    RRender *small = RRenderContextCreateHeadless(2, 1);
+    assert_non_null(small);
+    const float red[4] = {1, 0, 0, 1}, blue[4] = {0, 0, 1, 1};
+    RGraphic2DRectangleCreate(small, 0, 0, 320, 448, red);
+    RGraphic2DRectangleCreate(small, 320, 0, 320, 448, blue);
+    RRenderDrawFrame(small);
+    assert_int_equal(RRenderSavePNG(small, path), 0);
+    RRenderContextDestroy(small);
+}
+
+/* Textures as Karma names them (no extension: .bmp, then .png) multiply the graphic's colour at its
+ * texture coordinates: a white box's front face (u along x) shows the image's red left half on the
+ * left and its blue right half on the right, from the BMP and from the PNG alike; -notextures
+ * (m_bTextures off) shows the box white; an unreadable file is refused and changes nothing. */
+static void test_textures_bmp_and_png(void **state)
+{
+    writeBmp("viewer_texture_bmp.bmp");
+    writePng("viewer_texture_png.png");
+    const float white[4] = {1, 1, 1, 1}, red[4] = {1, 0, 0, 1}, blue[4] = {0, 0, 1, 1};
+    for (int k = 0; k < 3; k++)
+        rc->m_backgroundColour[k] = 0;
+    const AcmeVector3 at = {0, 0, 0};
+    RCameraSetLookAt(rc, at);
+    RCameraSetView(rc, 8, 0, 0);
+    const char *names[2] = {"viewer_texture_bmp", "viewer_texture_png"};
+    for (int i = 0; i < 2; i++) {
+        RGraphic *box = RGraphicBoxCreate(rc, 2, 2, 2, white, NULL);
+        int id = RGraphicSetTexture(rc, box, names[i]);
+        assert_true(id >= 0);
+        assert_int_equal(RRenderTextureCreate(rc, names[i]), id); /* the same name: the same texture */
+        draw();
+        double left[3] = {-0.5, 0, 1}, right[3] = {0.5, 0, 1};
+        int lx, ly, rx, ry;
+        assert_true(project(left, &lx, &ly) && project(right, &rx, &ry));
+        if (chromaDistance(pixel(lx, ly), red) > 0.1 || chromaDistance(pixel(rx, ry), blue) > 0.1)
+            fail_msg("%s: left (%d, %d, %d), right (%d, %d, %d)", names[i], pixel(lx, ly)[0], pixel(lx, ly)[1],
+                     pixel(lx, ly)[2], pixel(rx, ry)[0], pixel(rx, ry)[1], pixel(rx, ry)[2]);
+        rc->m_options.m_bTextures = MEFALSE;
+        draw();
+        assert_true(chromaDistance(pixel(lx, ly), white) < 0.05 && chromaDistance(pixel(rx, ry), white) < 0.05);
+        rc->m_options.m_bTextures = METRUE;
+        assert_reports(ME_ERR_ARGUMENT_RANGE, assert_int_equal(RGraphicSetTexture(rc, box, "no_such_texture"), -1));
+        assert_int_equal(box->m_pObject->m_nTextureID, id);
+        RGraphicDelete(rc, box, 0);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -359,6 +527,10 @@ int main(void)
         cmocka_unit_test(test_png_written),
         cmocka_unit_test(test_graphic_outlives_its_context),
         cmocka_unit_test(test_paused_is_shown),
+        cmocka_unit_test(test_shadow_falls_away_from_the_key_light),
+        cmocka_unit_test(test_equal_meshes_keep_their_own_place_and_colour),
+        cmocka_unit_test(test_textures_bmp_and_png),
+        cmocka_unit_test(test_performance_bar_drawn),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -15,6 +15,8 @@
 
 #include <MeViewer.h>
 
+#include "RInternal.h"
+
 static double seconds(void)
 {
     struct timespec t;
@@ -33,7 +35,7 @@ static double cpuSeconds(void)
 
 int main(int argc, char **argv)
 {
-    int bodies = 1000, width = 1280, height = 720, frames = 200, spheres = 0;
+    int bodies = 1000, width = 1280, height = 720, frames = 200, spheres = 0, shadows = 1;
     for (int i = 1; i + 1 < argc; i += 2) {
         if (strcmp(argv[i], "--bodies") == 0)
             bodies = atoi(argv[i + 1]);
@@ -43,8 +45,11 @@ int main(int argc, char **argv)
             frames = atoi(argv[i + 1]);
         else if (strcmp(argv[i], "--shape") == 0)
             spheres = strcmp(argv[i + 1], "sphere") == 0;
+        else if (strcmp(argv[i], "--shadows") == 0)
+            shadows = strcmp(argv[i + 1], "off") != 0;
         else {
-            fprintf(stderr, "usage: %s [--bodies N] [--size WxH] [--frames F] [--shape box|sphere]\n", argv[0]);
+            fprintf(stderr, "usage: %s [--bodies N] [--size WxH] [--frames F] [--shape box|sphere] [--shadows on|off]\n",
+                    argv[0]);
             return 2;
         }
     }
@@ -55,6 +60,7 @@ int main(int argc, char **argv)
     RRender *rc = RRenderContextCreateHeadless(width, height);
     if (!rc)
         return 1;
+    rc->m_private->noShadows = !shadows; /* what the F12 menu's "Shadows" does */
     MeMatrix4 *tm = calloc((size_t)bodies, sizeof *tm);
     if (!tm)
         return 1;
@@ -90,8 +96,9 @@ int main(int argc, char **argv)
     unsigned char *rgba = malloc((size_t)width * (size_t)height * 4);
     RRenderReadPixels(rc, rgba); /* waits for the last frame */
     double elapsed = seconds() - start, cpu = cpuSeconds() - cpuStart;
-    printf("%d %s at %dx%d: %d frames in %.2f s, %.1f frames/s; processor time %.1f ms per frame (all threads)\n",
-           bodies, spheres ? "spheres" : "boxes", width, height, frames, elapsed, frames / elapsed, 1e3 * cpu / frames);
+    printf("%d %s at %dx%d, shadows %s: %d frames in %.2f s, %.1f frames/s; processor time %.1f ms per frame (all threads)\n",
+           bodies, spheres ? "spheres" : "boxes", width, height, shadows ? "on" : "off", frames, elapsed, frames / elapsed,
+           1e3 * cpu / frames);
     free(rgba);
     RRenderContextDestroy(rc);
     free(tm);

@@ -111,6 +111,16 @@ RGraphic *MEAPI RGraphicCreateFromModel(RRender *rc, McdModelID m, float color[4
 /** The graphic of a geometry, following `matrix`. NULL for a type it cannot draw. */
 RGraphic *MEAPI RGraphicCreateFromGeometry(RRender *rc, McdGeometryID g, float color[4], MeMatrix4Ptr matrix);
 
+/** Load a texture (BMP, PNG or another format stb_image reads) from `filename`, tried as given, then
+ *  with ".bmp" and ".png" when it has no extension (Karma names textures without one); the same
+ *  name twice gives the same texture. Returns its id (0 … 24), or −1 with a message (unreadable, or
+ *  25 textures already). */
+int MEAPI RRenderTextureCreate(RRender *rc, const char *filename);
+/** Texture a graphic (RRenderTextureCreate's file names): the image, at the graphic's texture
+ *  coordinates, multiplies its colour (unless -notextures). Returns the texture id, or −1 with a
+ *  message (the graphic unchanged). */
+int MEAPI RGraphicSetTexture(RRender *rc, RGraphic *rg, const char *filename);
+
 /** Put a graphic in the 3D (is2D = 0) or 2D list (primitives are put there when created). */
 void MEAPI RGraphicAddToList(RRender *rc, RGraphic *rg, int is2D);
 /** Take a graphic out of its list (it is kept, hidden). */
@@ -127,6 +137,58 @@ void MEAPI RGraphicSetColor(RGraphic *g, const float color[4]);
 void MEAPI RGraphicGetColor(RGraphic *g, float color[4]);
 /** Draw this graphic as wireframe (b true) or filled. */
 void MEAPI RGraphicSetWireframe(RGraphic *g, MeBool b);
+
+/** A filled rectangle in the 2D list at (orig_x, orig_y) (top left) of width × height, in the
+ *  virtual 640×448 screen; alpha < 1 blends. */
+RGraphic *MEAPI RGraphic2DRectangleCreate(RRender *rc, AcmeReal orig_x, AcmeReal orig_y, AcmeReal width,
+                                          AcmeReal height, const float color[4]);
+
+/* ---- menus, help, performance bar ---------------------------------------------------------- */
+
+/** An empty menu titled `name`, shown with RMenuDisplay or, as the default menu, with the menu key
+ *  (m). While shown, Up and Down choose an entry; Right and Left flip a toggle, raise or lower a
+ *  value, open a submenu. Destroy it with RMenuDestroy (before or after the context). */
+RMenu *MEAPI RMenuCreate(RRender *rc, const char *name);
+/** Free a menu (hidden first if shown; submenu entries pointing at it then open nothing). */
+void MEAPI RMenuDestroy(RMenu *rm);
+/** The menu the menu key (m, action 1) shows and hides; NULL: none (the key calls action 1). */
+void MEAPI RRenderSetDefaultMenu(RRender *rc, RMenu *menu);
+/** Show a menu (hiding the one shown). */
+void MEAPI RMenuDisplay(RMenu *rm);
+/** An entry flipped by Right or Left; func (may be NULL) gets the new state. */
+void MEAPI RMenuAddToggleEntry(RMenu *rm, const char *name, RMenuToggleCallback func, MeBool defaultValue);
+/** An entry raised (Right) or lowered (Left) by increment (> 0) within [lo, hi]; func gets the new
+ *  value; the default is brought within the bounds. lo > hi or increment ≤ 0 is refused. */
+void MEAPI RMenuAddValueEntry(RMenu *rm, const char *name, RMenuValueCallback func, MeReal hi, MeReal lo,
+                              MeReal increment, MeReal defaultValue);
+/** An entry that shows `submenu` when chosen. */
+void MEAPI RMenuAddSubmenuEntry(RMenu *rm, const char *name, RMenu *submenu);
+
+/** Copy text_in to text_out (at most outbuffersize bytes with the final 0) with Karma's names
+ *  replaced by this key map's keys: $UP $DOWN $LEFT $RIGHT (arrows), $UP2 $DOWN2 $LEFT2 $RIGHT2
+ *  (w s a d), $ACTION0 … $ACTION5 (h m and the keys of actions 2–5), $MOUSE, $JOYSTICK, $APPNAME. */
+void MEAPI RParseText(RRender *rc, const char *text_in, char *text_out, int outbuffersize);
+/** The help F1 shows: arraySize lines (at most 40, each substituted by RParseText and copied). */
+void MEAPI RRenderCreateUserHelp(RRender *rc, char *help[], int arraySize);
+/** Show or hide the help; the simulation pauses while it is shown. */
+void MEAPI RRenderToggleUserHelp(RRender *rc);
+
+/** The performance bar at the bottom of the picture (one a context; made once, then returned):
+ *  RRun feeds it each frame from MeProfile's "Collision" and "Dynamics" sections (the application
+ *  times them, MeProfileStartSection) and its own rendering and idle times. */
+RPerformanceBar *MEAPI RPerformanceBarCreate(RRender *rc);
+/** Show these times of the last frame (ms): collision, dynamics, rendering, idle. */
+void MEAPI RPerformanceBarUpdate(RRender *rc, AcmeReal coltime, AcmeReal dyntime, AcmeReal rentime, AcmeReal idletime);
+/** Show "FPS: fps" at the top left. */
+void MEAPI RRenderDisplayFps(RRender *rc, AcmeReal fps);
+/** Have RRun show the frame rate it measures (Ctrl+F3 flips it). */
+void MEAPI RRenderSetDisplayFps(RRender *rc, int bVal);
+
+/** Addition: show Karma's debug lines (MeDebugDraw.h: MdtWorldSetDebugDrawing's contacts,
+ *  McduDebugDraw*'s shapes and boxes) in this context: MeDebugDrawAPI.line collects the lines drawn
+ *  between two frames and the next frame shows them (one context at a time: the hook is
+ *  process-wide). MEFALSE stops it and silences the hook. */
+void MEAPI RRenderSetDebugDrawing(RRender *rc, MeBool on);
 
 /* ---- lights -------------------------------------------------------------------------------- */
 

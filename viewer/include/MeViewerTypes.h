@@ -184,6 +184,15 @@ typedef struct RRenderCallBacks {
     unsigned char m_actionKeys[NUM_ACTION_CALLBACKS - 2];
 } RRenderCallBacks;
 
+/** An on-screen menu of toggles, values and submenus (RMenuCreate); its parts are the viewer's. */
+typedef struct RMenu RMenu;
+/** Called with a toggle entry's new state. */
+typedef void (MEAPI *RMenuToggleCallback)(MeBool on);
+/** Called with a value entry's new value. */
+typedef void (MEAPI *RMenuValueCallback)(MeReal value);
+/** The performance bar (RPerformanceBarCreate): collision, dynamics, rendering and idle time a frame. */
+typedef struct RPerformanceBar RPerformanceBar;
+
 ME_EXTERN_C_END
 
 #endif /* ME_VIEWER_TYPES_H */

@@ -2,6 +2,7 @@
  * lines (Karma's lights, Blinn-Phong, an anti-aliased checkerboard for planes), one for 2D text,
  * a multisampled framebuffer resolved into the window or into an offscreen picture. */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,6 +26,26 @@
 #define R_VIRTUAL_W 640.0f
 #define R_VIRTUAL_H 448.0f
 
+/** Floats per instance: the model matrix (16), ambient, diffuse, specular (rgb, shininess), emissive (4 each). */
+#define R_INSTANCE_FLOATS 32
+/** Texture units of the shadow map and of graphics' textures (the font uses unit 0). */
+#define R_SHADOW_UNIT 1
+#define R_TEXTURE_UNIT 2
+/** In the key light's shadow its ambient part is scaled by this too (its diffuse and specular
+ *  parts vanish): Karma's light 1 is mostly ambient (0.7 of 1.3), and a shadow of its diffuse
+ *  part alone would hardly show. */
+#define R_SHADOW_AMBIENT "0.55"
+
+/** One graphic drawn this frame: its mesh, whether it may be batched with others of that mesh. */
+typedef struct RDrawItem {
+    RGraphic *g;
+    RMesh *mesh;
+    int plain;   /* filled, lit, opaque, no checkerboard: drawn instanced with its mesh's other plain graphics */
+    int casts;
+    int order;   /* in the render list */
+    float depth; /* of its origin along the camera's view direction */
+} RDrawItem;
+
 struct RGL {
     RBackend *backend;                /* whose context holds every object below */
     RGraphic *graphics;               /* graphics holding GL objects of this context */
@@ -33,56 +54,95 @@ struct RGL {
     GLuint fbo, color;                /* resolved picture (offscreen) */
     GLuint prog3D, prog2D;
     GLint u3[32];                     /* uniform locations of prog3D, by the enum below */
-    GLint u2Screen, u2Color, u2Font;
+    GLint u2Screen, u2Color, u2Font, u2Solid;
     GLuint fontTexture, textVao, textVbo;
     stbtt_bakedchar glyphs[96];
     int haveFont;
+    RMeshCache cache;                 /* meshes, and the instance buffer */
+    struct RShadow *shadow;           /* NULL: no shadows */
+    RDrawItem *items;                 /* this frame's graphics, batched */
+    float *instances;                 /* their instance data */
+    int itemCount, itemCapacity;
+    RRender *rc;                      /* the context being drawn */
+    GLuint textures[R_MAX_TEXTURES];  /* the context's textures, uploaded when first used (0: not yet) */
 };
 
 enum {
-    U_MODEL, U_VIEW, U_PROJ, U_AMBIENT, U_DIFFUSE, U_SPECULAR, U_SHININESS, U_EMISSIVE, U_GLOBAL_AMBIENT, U_EYE,
+    U_VIEW, U_PROJ, U_GLOBAL_AMBIENT, U_EYE,
     U_L1_ON, U_L1_DIR, U_L1_AMB, U_L1_DIF, U_L1_SPEC, U_L2_ON, U_L2_DIR, U_L2_AMB, U_L2_DIF, U_L2_SPEC,
-    U_P_ON, U_P_POS, U_P_AMB, U_P_DIF, U_P_SPEC, U_P_ATT, U_UNLIT, U_CHECKER, U_CHECKER_U, U_CHECKER_V, U_COUNT
+    U_P_ON, U_P_POS, U_P_AMB, U_P_DIF, U_P_SPEC, U_P_ATT, U_UNLIT, U_CHECKER, U_CHECKER_U, U_CHECKER_V,
+    U_SHADOW_ON, U_SHADOW_VP, U_SHADOW_TEXEL, U_SHADOW_MAP, U_TEXTURED, U_TEXTURE, U_COUNT
 };
 static const char *const uniformNames[U_COUNT] = {
-    "uModel", "uView", "uProj", "uAmbient", "uDiffuse", "uSpecular", "uShininess", "uEmissive", "uGlobalAmbient",
+    "uView", "uProj", "uGlobalAmbient",
     "uEye", "uL1.on", "uL1.dir", "uL1.amb", "uL1.dif", "uL1.spec", "uL2.on", "uL2.dir", "uL2.amb", "uL2.dif",
     "uL2.spec", "uPointOn", "uPointPos", "uPointAmb", "uPointDif", "uPointSpec", "uPointAtt", "uUnlit",
-    "uChecker", "uCheckerU", "uCheckerV"};
+    "uChecker", "uCheckerU", "uCheckerV", "uShadowOn", "uShadowVP", "uShadowTexel", "uShadowMap", "uTextured", "uTexture"};
 
+/* Per instance (divisor 1): the model matrix and the material, passed on flat. */
 static const char *const vertex3D =
     "#version 330 core\n"
     "layout(location = 0) in vec3 aPos;\n"
     "layout(location = 1) in vec3 aNormal;\n"
-    "uniform mat4 uModel, uView, uProj;\n"
+    "layout(location = 2) in mat4 aModel;\n"
+    "layout(location = 6) in vec4 aAmbient;\n"
+    "layout(location = 7) in vec4 aDiffuse;\n"
+    "layout(location = 8) in vec4 aSpecular;\n"
+    "layout(location = 9) in vec4 aEmissive;\n"
+    "layout(location = 10) in vec2 aUV;\n"
+    "uniform mat4 uView, uProj;\n"
     "out vec3 vWorld, vNormal, vLocal;\n"
+    "out vec2 vUV;\n"
+    "flat out vec4 vAmbient, vDiffuse, vSpecular, vEmissive;\n"
     "void main() {\n"
-    "  vec4 w = uModel * vec4(aPos, 1.0);\n"
-    "  vWorld = w.xyz; vNormal = mat3(uModel) * aNormal; vLocal = aPos;\n"
+    "  vec4 w = aModel * vec4(aPos, 1.0);\n"
+    "  vWorld = w.xyz; vNormal = mat3(aModel) * aNormal; vLocal = aPos; vUV = aUV;\n"
+    "  vAmbient = aAmbient; vDiffuse = aDiffuse; vSpecular = aSpecular; vEmissive = aEmissive;\n"
     "  gl_Position = uProj * uView * w;\n"
     "}\n";
 
 /* Karma's lights as OpenGL's fixed pipeline lit them (ambient + diffuse + specular per light, the
- * global ambient), two-sided; the checkerboard is box-filtered so it fades to grey far away instead
- * of shimmering. */
+ * global ambient), two-sided; light 1 shadowed through its depth map (4 taps, each a bilinear
+ * 2 × 2 comparison; a point deeper than the map's box compares as its far end, so the ground far
+ * below the casters still receives their shadows), the sample point pushed a texel and a half along the normal against acne;
+ * the checkerboard is box-filtered so it fades to grey far away instead of shimmering. */
 static const char *const fragment3D =
     "#version 330 core\n"
     "struct Light { int on; vec3 dir, amb, dif, spec; };\n"
-    "uniform vec4 uAmbient, uDiffuse, uSpecular, uEmissive;\n"
-    "uniform float uShininess, uChecker;\n"
+    "uniform float uChecker;\n"
     "uniform vec3 uGlobalAmbient, uEye, uCheckerU, uCheckerV;\n"
     "uniform Light uL1, uL2;\n"
-    "uniform int uPointOn, uUnlit;\n"
+    "uniform int uPointOn, uUnlit, uShadowOn;\n"
     "uniform vec3 uPointPos, uPointAmb, uPointDif, uPointSpec, uPointAtt;\n"
+    "uniform mat4 uShadowVP;\n"
+    "uniform float uShadowTexel;\n"
+    "uniform sampler2DShadow uShadowMap;\n"
+    "uniform int uTextured;\n"
+    "uniform sampler2D uTexture;\n"
     "in vec3 vWorld, vNormal, vLocal;\n"
+    "in vec2 vUV;\n"
+    "flat in vec4 vAmbient, vDiffuse, vSpecular, vEmissive;\n"
     "out vec4 fragColor;\n"
-    "vec3 shade(vec3 n, vec3 v, vec3 l, vec3 amb, vec3 dif, vec3 spec, vec3 ka, vec3 kd) {\n"
+    "vec3 shade(vec3 n, vec3 v, vec3 l, vec3 amb, vec3 dif, vec3 spec, vec3 ka, vec3 kd, float lit) {\n"
     "  float d = max(dot(n, l), 0.0);\n"
-    "  float s = d > 0.0 ? pow(max(dot(n, normalize(l + v)), 0.0), uShininess) : 0.0;\n"
-    "  return amb * ka + dif * kd * d + spec * uSpecular.rgb * s;\n"
+    "  float s = d > 0.0 ? pow(max(dot(n, normalize(l + v)), 0.0), vSpecular.a) : 0.0;\n"
+    "  return amb * ka * mix(" R_SHADOW_AMBIENT ", 1.0, lit) + lit * (dif * kd * d + spec * vSpecular.rgb * s);\n"
+    "}\n"
+    "float lightFraction(vec3 n, vec3 l) {\n"
+    "  if (uShadowOn == 0) return 1.0;\n"
+    "  vec3 p = vWorld + (dot(n, l) < 0.0 ? -n : n) * 1.5 * uShadowTexel;\n"
+    "  vec4 c = uShadowVP * vec4(p, 1.0);\n"
+    "  vec3 t = c.xyz * 0.5 + 0.5;\n"
+    "  if (t.x <= 0.0 || t.x >= 1.0 || t.y <= 0.0 || t.y >= 1.0) return 1.0;\n"
+    "  t.z = min(t.z, 1.0);\n"
+    "  vec2 o = vec2(0.5) / vec2(textureSize(uShadowMap, 0));\n"
+    "  return 0.25 * (texture(uShadowMap, vec3(t.xy + vec2(-o.x, -o.y), t.z)) +\n"
+    "                 texture(uShadowMap, vec3(t.xy + vec2(o.x, -o.y), t.z)) +\n"
+    "                 texture(uShadowMap, vec3(t.xy + vec2(-o.x, o.y), t.z)) +\n"
+    "                 texture(uShadowMap, vec3(t.xy + vec2(o.x, o.y), t.z)));\n"
     "}\n"
     "void main() {\n"
-    "  vec3 kd = uDiffuse.rgb, ka = uAmbient.rgb;\n"
+    "  vec3 kd = vDiffuse.rgb, ka = vAmbient.rgb;\n"
     "  if (uChecker > 0.0) {\n"
     "    vec2 p = vec2(dot(vLocal, uCheckerU), dot(vLocal, uCheckerV)) / uChecker;\n"
     "    vec2 w = fwidth(p) + 1e-4;\n"
@@ -90,19 +150,23 @@ static const char *const fragment3D =
     "    float k = mix(0.74, 1.0, 0.5 + 0.5 * i.x * i.y);\n"
     "    kd *= k; ka *= k;\n"
     "  }\n"
-    "  if (uUnlit != 0) { fragColor = vec4(kd, uDiffuse.a); return; }\n"
+    "  if (uTextured != 0) { vec3 t = texture(uTexture, vUV).rgb; kd *= t; ka *= t; }\n"
+    "  if (uUnlit != 0) { fragColor = vec4(kd, vDiffuse.a); return; }\n"
     "  vec3 n = normalize(vNormal);\n"
     "  if (!gl_FrontFacing) n = -n;\n"
     "  vec3 v = normalize(uEye - vWorld);\n"
-    "  vec3 c = uEmissive.rgb + uGlobalAmbient * ka;\n"
-    "  if (uL1.on != 0) c += shade(n, v, normalize(uL1.dir), uL1.amb, uL1.dif, uL1.spec, ka, kd);\n"
-    "  if (uL2.on != 0) c += shade(n, v, normalize(uL2.dir), uL2.amb, uL2.dif, uL2.spec, ka, kd);\n"
+    "  vec3 c = vEmissive.rgb + uGlobalAmbient * ka;\n"
+    "  if (uL1.on != 0) {\n"
+    "    vec3 l = normalize(uL1.dir);\n"
+    "    c += shade(n, v, l, uL1.amb, uL1.dif, uL1.spec, ka, kd, lightFraction(n, l));\n"
+    "  }\n"
+    "  if (uL2.on != 0) c += shade(n, v, normalize(uL2.dir), uL2.amb, uL2.dif, uL2.spec, ka, kd, 1.0);\n"
     "  if (uPointOn != 0) {\n"
     "    vec3 l = uPointPos - vWorld; float r = length(l);\n"
     "    float a = 1.0 / max(uPointAtt.x + uPointAtt.y * r + uPointAtt.z * r * r, 1e-6);\n"
-    "    c += a * shade(n, v, l / r, uPointAmb, uPointDif, uPointSpec, ka, kd);\n"
+    "    c += a * shade(n, v, l / r, uPointAmb, uPointDif, uPointSpec, ka, kd, 1.0);\n"
     "  }\n"
-    "  fragColor = vec4(min(c, vec3(1.0)), uDiffuse.a);\n"
+    "  fragColor = vec4(min(c, vec3(1.0)), vDiffuse.a);\n"
     "}\n";
 
 static const char *const vertex2D =
@@ -121,7 +185,8 @@ static const char *const fragment2D =
     "uniform sampler2D uFont;\n"
     "in vec2 vUV;\n"
     "out vec4 fragColor;\n"
-    "void main() { fragColor = vec4(uColor.rgb, uColor.a * texture(uFont, vUV).r); }\n";
+    "uniform int uSolid;\n"
+    "void main() { fragColor = vec4(uColor.rgb, uColor.a * (uSolid != 0 ? 1.0 : texture(uFont, vUV).r)); }\n";
 
 static GLuint compile(GLenum type, const char *source)
 {
@@ -140,7 +205,7 @@ static GLuint compile(GLenum type, const char *source)
     return s;
 }
 
-static GLuint link(const char *vs, const char *fs)
+unsigned int RGLLink(const char *vs, const char *fs)
 {
     GLuint v = compile(GL_VERTEX_SHADER, vs), f = compile(GL_FRAGMENT_SHADER, fs);
     if (!v || !f) { /* the one that compiled is not kept */
@@ -228,6 +293,17 @@ static void freeTargets(struct RGL *gl)
     glDeleteRenderbuffers(3, rbs);
 }
 
+void RGLInstanceAttributes(unsigned int buffer, size_t offset)
+{
+    const GLsizei stride = R_INSTANCE_FLOATS * sizeof(float);
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    for (GLuint k = 0; k < 8; k++) { /* 2–5: the matrix's columns; 6–9: the material */
+        glVertexAttribPointer(2 + k, 4, GL_FLOAT, GL_FALSE, stride, (const void *)(offset + 4 * sizeof(float) * k));
+        glVertexAttribDivisor(2 + k, 1);
+        glEnableVertexAttribArray(2 + k);
+    }
+}
+
 struct RGL *RGLCreate(RBackend *backend, int width, int height)
 {
     struct RGL *gl = calloc(1, sizeof *gl);
@@ -238,8 +314,8 @@ struct RGL *RGLCreate(RBackend *backend, int width, int height)
     GLint maxSamples = 1;
     glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
     gl->samples = maxSamples < R_MSAA_SAMPLES ? maxSamples : R_MSAA_SAMPLES;
-    gl->prog3D = link(vertex3D, fragment3D);
-    gl->prog2D = link(vertex2D, fragment2D);
+    gl->prog3D = RGLLink(vertex3D, fragment3D);
+    gl->prog2D = RGLLink(vertex2D, fragment2D);
     if (!gl->prog3D || !gl->prog2D || !makeTargets(gl)) {
         R_REPORT(ME_ERR_BAD_STATE, "RRenderContextCreate", "OpenGL 3.3 programs or framebuffers could not be made");
         RGLDestroy(gl);
@@ -250,6 +326,7 @@ struct RGL *RGLCreate(RBackend *backend, int width, int height)
     gl->u2Screen = glGetUniformLocation(gl->prog2D, "uScreen");
     gl->u2Color = glGetUniformLocation(gl->prog2D, "uColor");
     gl->u2Font = glGetUniformLocation(gl->prog2D, "uFont");
+    gl->u2Solid = glGetUniformLocation(gl->prog2D, "uSolid");
     glGenVertexArrays(1, &gl->textVao);
     glGenBuffers(1, &gl->textVbo);
     glBindVertexArray(gl->textVao);
@@ -257,6 +334,8 @@ struct RGL *RGLCreate(RBackend *backend, int width, int height)
     glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), NULL);
     glEnableVertexAttribArray(0);
     glBindVertexArray(0);
+    glGenBuffers(1, &gl->cache.instances);
+    gl->shadow = RShadowCreate();
     loadFont(gl);
     return gl;
 }
@@ -268,11 +347,16 @@ void RGLDestroy(struct RGL *gl)
     while (gl->graphics) /* graphics taken out of the lists outlive the context */
         RGLReleaseGraphic(gl->graphics);
     freeTargets(gl);
+    RShadowDestroy(gl->shadow);
+    glDeleteTextures(R_MAX_TEXTURES, gl->textures); /* 0s are ignored */
+    glDeleteBuffers(1, &gl->cache.instances);
     glDeleteProgram(gl->prog3D);
     glDeleteProgram(gl->prog2D);
     glDeleteTextures(1, &gl->fontTexture);
     glDeleteVertexArrays(1, &gl->textVao);
     glDeleteBuffers(1, &gl->textVbo);
+    free(gl->items);
+    free(gl->instances);
     free(gl);
 }
 
@@ -283,10 +367,8 @@ void RGLReleaseGraphic(RGraphic *rg)
     if (!gl)
         return;
     gl->backend->makeCurrent(gl->backend); /* names belong to the context that made them */
-    glDeleteVertexArrays(1, &p->vao);
-    glDeleteBuffers(1, &p->vbo);
-    p->vao = p->vbo = 0;
-    p->uploaded = 0;
+    RMeshRelease(&gl->cache, p->mesh);
+    p->mesh = NULL;
     p->dirty = 1;
     if (p->glPrev)
         p->glPrev->m_private->glNext = p->glNext;
@@ -298,58 +380,33 @@ void RGLReleaseGraphic(RGraphic *rg)
     p->glPrev = p->glNext = NULL;
 }
 
-/* Positions and normals as floats, uploaded when the vertices changed. A graphic drawn by a second
- * context moves its objects there. */
+/* The graphic's mesh, made or renewed when its vertices changed: triangle lists share a mesh with
+ * graphics of equal vertices, lines keep one of their own (they move). A graphic drawn by a second
+ * context moves its mesh there. */
 static void upload(struct RGL *gl, RGraphic *rg)
 {
     struct RGraphicPrivate *p = rg->m_private;
-    int n = rg->m_pObject->m_nNumVertices;
-    if (n > rg->m_nMaxNumVertices)
-        n = rg->m_nMaxNumVertices;
     if (p->gl != gl) {
         RGLReleaseGraphic(rg);
         gl->backend->makeCurrent(gl->backend);
     }
-    if (!p->vao) {
+    if (p->mesh && !p->dirty)
+        return;
+    if (p->mesh && RMeshUpdate(p->mesh, rg, &p->radius)) {
+        p->dirty = 0;
+        return;
+    }
+    RMeshRelease(&gl->cache, p->mesh);
+    p->mesh = RMeshAcquire(&gl->cache, rg, p->kind == kRKindTriangles, &p->radius);
+    if (!p->gl) {
         p->gl = gl;
         p->glPrev = NULL;
         p->glNext = gl->graphics;
         if (gl->graphics)
             gl->graphics->m_private->glPrev = rg;
         gl->graphics = rg;
-        glGenVertexArrays(1, &p->vao);
-        glGenBuffers(1, &p->vbo);
-        glBindVertexArray(p->vao);
-        glBindBuffer(GL_ARRAY_BUFFER, p->vbo);
-        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), NULL);
-        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), (const void *)(3 * sizeof(float)));
-        glEnableVertexAttribArray(0);
-        glEnableVertexAttribArray(1);
-        p->dirty = 1;
     }
-    if (!p->dirty)
-        return;
-    float *data = malloc(sizeof(float) * 6 * (size_t)(n > 0 ? n : 1));
-    if (!data)
-        return;
-    for (int i = 0; i < n; i++) {
-        const RObjectVertex *v = &rg->m_pVertices[i];
-        float *d = data + 6 * i;
-        d[0] = (float)v->m_X, d[1] = (float)v->m_Y, d[2] = (float)v->m_Z;
-        d[3] = (float)v->m_NX, d[4] = (float)v->m_NY, d[5] = (float)v->m_NZ;
-    }
-    glBindBuffer(GL_ARRAY_BUFFER, p->vbo);
-    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(sizeof(float) * 6 * (size_t)n), data, GL_STATIC_DRAW);
-    free(data);
-    p->uploaded = n;
-    p->dirty = 0;
-}
-
-static void matrixToFloat(MeMatrix4Ptr m, float out[16])
-{
-    for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++)
-            out[4 * i + j] = (float)m[i][j];
+    p->dirty = p->mesh == NULL;
 }
 
 static void uniform3(GLint location, const AcmeReal v[3])
@@ -385,17 +442,78 @@ static void setLights(struct RGL *gl, RRender *rc)
                 (float)pl->m_AttenuationQuadratic);
 }
 
-static void draw3D(struct RGL *gl, RRender *rc)
+/* Plain graphics first, grouped by mesh, nearest the camera first within a mesh (what is hidden
+ * then fails the depth test before it is shaded); then the others in list order. */
+static int itemOrder(const void *a, const void *b)
 {
-    const GLint *u = gl->u3;
-    float m[16];
-    glUseProgram(gl->prog3D);
-    matrixToFloat(rc->m_CamMatrix, m);
-    glUniformMatrix4fv(u[U_VIEW], 1, GL_FALSE, m);
-    matrixToFloat(rc->m_ProjMatrix, m);
-    glUniformMatrix4fv(u[U_PROJ], 1, GL_FALSE, m);
-    setLights(gl, rc);
-    for (RGraphic *rg = rc->m_pRG_First; rg; rg = rg->m_pNext) {
+    const RDrawItem *x = a, *y = b;
+    if (x->plain != y->plain)
+        return y->plain - x->plain;
+    if (x->plain && x->mesh != y->mesh)
+        return (uintptr_t)x->mesh < (uintptr_t)y->mesh ? -1 : 1;
+    if (x->plain && x->depth != y->depth)
+        return x->depth < y->depth ? -1 : 1;
+    return x->order - y->order;
+}
+
+static void instanceData(const RGraphic *rg, float *d)
+{
+    const RObjectHeader *h = rg->m_pObject;
+    /* Karma's matrices are row-vector (p·M): read as OpenGL's column-major they are the
+     * column-vector matrices the shader multiplies. */
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            d[4 * i + j] = (float)h->m_Matrix[i][j];
+    memcpy(d + 16, h->m_ColorAmbient, 4 * sizeof(float));
+    memcpy(d + 20, h->m_ColorDiffuse, 4 * sizeof(float));
+    memcpy(d + 24, h->m_ColorSpecular, 3 * sizeof(float));
+    d[27] = (float)h->m_SpecularPower;
+    memcpy(d + 28, h->m_ColorEmissive, 4 * sizeof(float));
+}
+
+/* The texture a graphic is drawn with: its id when textures are on and it names one, else −1. */
+static int textureOf(const RRender *rc, const RGraphic *rg)
+{
+    int id = rg->m_pObject->m_nTextureID;
+    return rc->m_options.m_bTextures && id >= 0 && id < rc->m_private->textureCount ? id : -1;
+}
+
+/** A round graphic whose radius covers fewer pixels than these is drawn with its coarser copies. */
+#define R_LOD_PIXELS_HALF 24.0
+#define R_LOD_PIXELS_QUARTER 8.0
+
+/* What to draw for rg at `depth` in front of the camera: itself, or a coarser copy when it is small
+ * on the picture (its radius in pixels from the projection's vertical scale). */
+static RGraphic *lodFor(const struct RGL *gl, const RRender *rc, RGraphic *rg, float depth)
+{
+    const struct RGraphicPrivate *p = rg->m_private;
+    if (!p->lod[0] || !(depth > 0))
+        return rg;
+    double pixels = p->lodExtent * rc->m_ProjMatrix[1][1] * 0.5 * gl->height / depth;
+    if (pixels < R_LOD_PIXELS_QUARTER && p->lod[1])
+        return p->lod[1];
+    return pixels < R_LOD_PIXELS_HALF ? p->lod[0] : rg;
+}
+
+/* This frame's graphics: matrices copied from what they follow, meshes uploaded, batched, and the
+ * instance data of all of them in one buffer. Returns 0 when out of memory. */
+static int prepare(struct RGL *gl, RRender *rc)
+{
+    int n = 0;
+    for (RGraphic *rg = rc->m_pRG_First; rg; rg = rg->m_pNext)
+        n++;
+    if (n > gl->itemCapacity) {
+        RDrawItem *items = realloc(gl->items, sizeof *items * (size_t)n);
+        float *instances = items ? realloc(gl->instances, sizeof(float) * R_INSTANCE_FLOATS * (size_t)n) : NULL;
+        if (items)
+            gl->items = items;
+        if (!instances)
+            return 0;
+        gl->instances = instances;
+        gl->itemCapacity = n;
+    }
+    int count = 0, order = 0;
+    for (RGraphic *rg = rc->m_pRG_First; rg; rg = rg->m_pNext, order++) {
         RObjectHeader *h = rg->m_pObject;
         struct RGraphicPrivate *p = rg->m_private;
         if (h->m_nNumVertices <= 0)
@@ -403,39 +521,130 @@ static void draw3D(struct RGL *gl, RRender *rc)
         /* Karma's composite matrix: the followed transform, copied in each frame. */
         if (rg->m_pLWMatrix)
             memcpy(h->m_Matrix, rg->m_pLWMatrix, sizeof h->m_Matrix);
-        upload(gl, rg);
-        matrixToFloat(h->m_Matrix, m);
-        /* Karma's matrices are row-vector (p·M): read as OpenGL's column-major they are the
-         * column-vector matrices the shader multiplies. */
-        glUniformMatrix4fv(u[U_MODEL], 1, GL_FALSE, m);
-        glUniform4fv(u[U_AMBIENT], 1, h->m_ColorAmbient);
-        glUniform4fv(u[U_DIFFUSE], 1, h->m_ColorDiffuse);
-        glUniform4fv(u[U_SPECULAR], 1, h->m_ColorSpecular);
-        glUniform4fv(u[U_EMISSIVE], 1, h->m_ColorEmissive);
-        glUniform1f(u[U_SHININESS], (float)h->m_SpecularPower);
-        glUniform1i(u[U_UNLIT], p->kind == kRKindLines);
-        glUniform1f(u[U_CHECKER], p->checkerCell);
-        if (p->checkerCell > 0) {
-            /* A ground plane's cells lie in its x–z plane, a square's in its x–y plane. */
-            int ground = rg->m_pVertices[0].m_Y == 0 && rg->m_pVertices[1].m_Y == 0 && rg->m_pVertices[2].m_Y == 0;
-            glUniform3f(u[U_CHECKER_U], 1, 0, 0);
-            glUniform3f(u[U_CHECKER_V], 0, ground ? 0.0f : 1.0f, ground ? 1.0f : 0.0f);
-        }
-        int wire = h->m_bIsWireFrame || rc->m_options.m_bWireFrame;
-        if (wire)
-            glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-        glBindVertexArray(p->vao);
-        glDrawArrays(p->kind == kRKindLines ? GL_LINES : GL_TRIANGLES, 0, p->uploaded);
-        if (wire)
-            glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        /* Eye-space z (negative in front): −z is the distance along the view direction. */
+        const MeReal(*c)[4] = (const MeReal(*)[4])rc->m_CamMatrix, *t = h->m_Matrix[3];
+        float depth = -(float)(t[0] * c[0][2] + t[1] * c[1][2] + t[2] * c[2][2] + c[3][2]);
+        RGraphic *shape = lodFor(gl, rc, rg, depth);
+        upload(gl, shape);
+        if (!shape->m_private->mesh || shape->m_private->mesh->count <= 0)
+            continue;
+        RDrawItem *it = &gl->items[count++];
+        it->g = rg, it->mesh = shape->m_private->mesh, it->order = order, it->depth = depth;
+        it->plain = p->kind == kRKindTriangles && p->checkerCell <= 0 && !h->m_bIsWireFrame &&
+                    !rc->m_options.m_bWireFrame && h->m_ColorDiffuse[3] >= 1.0f && textureOf(rc, rg) < 0;
+        it->casts = RShadowCasts(rg, rc);
     }
+    if (count > 1) /* an empty list may have no array at all */
+        qsort(gl->items, (size_t)count, sizeof *gl->items, itemOrder);
+    for (int i = 0; i < count; i++)
+        instanceData(gl->items[i].g, gl->instances + R_INSTANCE_FLOATS * i);
+    glBindBuffer(GL_ARRAY_BUFFER, gl->cache.instances);
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(sizeof(float) * R_INSTANCE_FLOATS * (size_t)(count ? count : 1)),
+                 gl->instances, GL_STREAM_DRAW);
+    gl->itemCount = count;
+    gl->rc = rc;
+    return 1;
+}
+
+/* The GL texture of the context's texture `id`, uploaded (with mipmaps, repeating) when first used. */
+static GLuint textureFor(struct RGL *gl, const RRender *rc, int id)
+{
+    if (!gl->textures[id]) {
+        const RTexture *t = &rc->m_private->textures[id];
+        glGenTextures(1, &gl->textures[id]);
+        glBindTexture(GL_TEXTURE_2D, gl->textures[id]);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t->width, t->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, t->rgba);
+        glGenerateMipmap(GL_TEXTURE_2D);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    }
+    return gl->textures[id];
+}
+
+/* The per-graphic state of a graphic drawn alone (lines, planes, wireframe, translucent, textured). */
+static void setGraphicState(struct RGL *gl, const RGraphic *rg)
+{
+    const GLint *u = gl->u3;
+    const struct RGraphicPrivate *p = rg->m_private;
+    glUniform1i(u[U_UNLIT], p->kind == kRKindLines);
+    glUniform1f(u[U_CHECKER], p->checkerCell);
+    if (p->checkerCell > 0) {
+        /* A ground plane's cells lie in its x–z plane, a square's in its x–y plane. */
+        int ground = rg->m_pVertices[0].m_Y == 0 && rg->m_pVertices[1].m_Y == 0 && rg->m_pVertices[2].m_Y == 0;
+        glUniform3f(u[U_CHECKER_U], 1, 0, 0);
+        glUniform3f(u[U_CHECKER_V], 0, ground ? 0.0f : 1.0f, ground ? 1.0f : 0.0f);
+    }
+    int wire = rg->m_pObject->m_bIsWireFrame || gl->rc->m_options.m_bWireFrame;
+    glPolygonMode(GL_FRONT_AND_BACK, wire ? GL_LINE : GL_FILL);
+    int texture = textureOf(gl->rc, rg);
+    glUniform1i(u[U_TEXTURED], texture >= 0);
+    if (texture >= 0) {
+        glActiveTexture(GL_TEXTURE0 + R_TEXTURE_UNIT);
+        glBindTexture(GL_TEXTURE_2D, textureFor(gl, gl->rc, texture));
+        glActiveTexture(GL_TEXTURE0);
+    }
+}
+
+/* Draw the batches: each run of plain graphics sharing a mesh in one instanced call, the others one by one. */
+static void drawBatches(void *data, int castersOnly)
+{
+    struct RGL *gl = data;
+    const GLint *u = gl->u3;
+    int plainState = 0;
+    for (int i = 0, j; i < gl->itemCount; i = j) {
+        const RDrawItem *it = &gl->items[i];
+        for (j = i + 1; it->plain && j < gl->itemCount && gl->items[j].plain && gl->items[j].mesh == it->mesh; j++)
+            ;
+        if (castersOnly && !it->casts)
+            continue;
+        if (!castersOnly && !it->plain) {
+            setGraphicState(gl, it->g);
+            plainState = 0;
+        } else if (!castersOnly && !plainState) {
+            glUniform1i(u[U_UNLIT], 0);
+            glUniform1i(u[U_TEXTURED], 0);
+            glUniform1f(u[U_CHECKER], 0);
+            glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+            plainState = 1;
+        }
+        glBindVertexArray(it->mesh->vao);
+        RGLInstanceAttributes(gl->cache.instances, sizeof(float) * R_INSTANCE_FLOATS * (size_t)i);
+        GLenum mode = it->g->m_private->kind == kRKindLines ? GL_LINES : GL_TRIANGLES;
+        glDrawArraysInstanced(mode, 0, it->mesh->count, j - i);
+    }
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     glBindVertexArray(0);
 }
 
-/* Text: one quad per glyph, in pixels, scaled from Karma's virtual 640×448 screen. */
+static void draw3D(struct RGL *gl, RRender *rc)
+{
+    const GLint *u = gl->u3;
+    float m[16];
+    glUseProgram(gl->prog3D);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            m[4 * i + j] = (float)rc->m_CamMatrix[i][j];
+    glUniformMatrix4fv(u[U_VIEW], 1, GL_FALSE, m);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            m[4 * i + j] = (float)rc->m_ProjMatrix[i][j];
+    glUniformMatrix4fv(u[U_PROJ], 1, GL_FALSE, m);
+    setLights(gl, rc);
+    int shadows = gl->shadow && rc->m_DirectLight1.m_bUseLight && !rc->m_private->noShadows;
+    glUniform1i(u[U_SHADOW_ON], shadows);
+    glUniform1i(u[U_TEXTURE], R_TEXTURE_UNIT);
+    if (shadows)
+        RShadowBind(gl->shadow, u[U_SHADOW_VP], u[U_SHADOW_TEXEL], u[U_SHADOW_MAP], R_SHADOW_UNIT);
+    drawBatches(gl, 0);
+}
+
+/* Text (one quad per glyph) and rectangles, in pixels, scaled from Karma's virtual 640×448 screen. */
 static void draw2D(struct RGL *gl, RRender *rc)
 {
-    if (!gl->haveFont || !rc->m_pRG_First2D)
+    if (!rc->m_pRG_First2D)
         return;
     float sx = (float)gl->width / R_VIRTUAL_W, sy = (float)gl->height / R_VIRTUAL_H;
     float scale = R_TEXT_HEIGHT / R_FONT_BAKE_PX * sy;
@@ -448,8 +657,19 @@ static void draw2D(struct RGL *gl, RRender *rc)
     glBindBuffer(GL_ARRAY_BUFFER, gl->textVbo);
     glDisable(GL_DEPTH_TEST);
     for (RGraphic *rg = rc->m_pRG_First2D; rg; rg = rg->m_pNext) {
-        const char *text = rg->m_private->text;
-        if (rg->m_private->kind != kRKindText || !text || !*text)
+        const struct RGraphicPrivate *p = rg->m_private;
+        if (p->kind == kRKindRect2D) {
+            float x0 = p->x * sx, y0 = p->y * sy, x1 = (p->x + p->w) * sx, y1 = (p->y + p->h) * sy;
+            float v[24] = {x0, y0, 0, 0, x1, y0, 0, 0, x1, y1, 0, 0, x0, y0, 0, 0, x1, y1, 0, 0, x0, y1, 0, 0};
+            glUniform1i(gl->u2Solid, 1);
+            glUniform4fv(gl->u2Color, 1, rg->m_pObject->m_ColorDiffuse);
+            glBufferData(GL_ARRAY_BUFFER, sizeof v, v, GL_STREAM_DRAW);
+            glDrawArrays(GL_TRIANGLES, 0, 6);
+            glUniform1i(gl->u2Solid, 0);
+            continue;
+        }
+        const char *text = p->text;
+        if (p->kind != kRKindText || !text || !*text || !gl->haveFont)
             continue;
         size_t n = strlen(text);
         float *quads = malloc(sizeof(float) * 24 * n);
@@ -480,6 +700,9 @@ static void draw2D(struct RGL *gl, RRender *rc)
 
 void RGLDrawFrame(struct RGL *gl, RRender *rc, int toWindow)
 {
+    int ready = prepare(gl, rc);
+    if (ready && gl->shadow && rc->m_DirectLight1.m_bUseLight && !rc->m_private->noShadows)
+        RShadowDraw(gl->shadow, rc, drawBatches, gl);
     glBindFramebuffer(GL_FRAMEBUFFER, gl->msFbo);
     glViewport(0, 0, gl->width, gl->height);
     const AcmeReal *bg = rc->m_backgroundColour;
@@ -489,7 +712,8 @@ void RGLDrawFrame(struct RGL *gl, RRender *rc, int toWindow)
     glEnable(GL_MULTISAMPLE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    draw3D(gl, rc);
+    if (ready)
+        draw3D(gl, rc);
     draw2D(gl, rc);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, gl->msFbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, gl->fbo);

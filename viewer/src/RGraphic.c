@@ -51,7 +51,7 @@ RGraphic *RGraphicNew(RRender *rc, RGraphicKind kind, int n, const float color[4
     if (color)
         RGraphicSetColor(rg, color);
     rg->m_pLWMatrix = matrix;
-    RGraphicAddToList(rc, rg, kind == kRKindText);
+    RGraphicAddToList(rc, rg, kind == kRKindText || kind == kRKindRect2D);
     return rg;
 }
 
@@ -89,6 +89,8 @@ void MEAPI RGraphicDestroy(RGraphic *rg)
     if (rg->m_private->inList)
         R_REPORT(ME_ERR_BAD_STATE, "RGraphicDestroy", "the graphic is still in a render list: use RGraphicDelete");
     RGLReleaseGraphic(rg);
+    for (int k = 0; k < R_LOD_LEVELS; k++)
+        RGraphicDestroy(rg->m_private->lod[k]);
     free(rg->m_private->text);
     free(rg->m_private);
     free(rg->m_pVertices);
@@ -178,4 +180,35 @@ RGraphic *MEAPI RGraphicTextCreate(RRender *rc, char *text, AcmeReal orig_x, Acm
     rg->m_private->x = (float)orig_x;
     rg->m_private->y = (float)orig_y;
     return rg;
+}
+
+int RGraphicTextSet(RGraphic *rg, const char *text)
+{
+    if (!rg || !text || rg->m_private->kind != kRKindText)
+        return -1;
+    size_t n = strlen(text);
+    char *copy = malloc(n + 1);
+    if (!copy)
+        return -1;
+    memcpy(copy, text, n + 1);
+    free(rg->m_private->text);
+    rg->m_private->text = copy;
+    return 0;
+}
+
+RGraphic *MEAPI RGraphic2DRectangleCreate(RRender *rc, AcmeReal orig_x, AcmeReal orig_y, AcmeReal width, AcmeReal height,
+                                          const float color[4])
+{
+    RGraphic *rg = RGraphicNew(rc, kRKindRect2D, 0, color, NULL);
+    if (rg)
+        RRectangleSet(rg, (float)orig_x, (float)orig_y, (float)width, (float)height);
+    return rg;
+}
+
+void RRectangleSet(RGraphic *rg, float x, float y, float width, float height)
+{
+    if (!rg || rg->m_private->kind != kRKindRect2D)
+        return;
+    rg->m_private->x = x, rg->m_private->y = y;
+    rg->m_private->w = width > 0 ? width : 0, rg->m_private->h = height > 0 ? height : 0;
 }

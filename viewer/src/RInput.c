@@ -1,7 +1,8 @@
 /* RInput.c -- Karma's PC key map and mouse, and the application's callbacks:
- * arrows Up/Down/Left/Right, w s a d Up2/Down2/Left2/Right2, h m Enter Space o p actions 0–5, Esc
- * quits, + and − zoom, F2 wireframe, F8 single step (pausing), Ctrl+F8 pause/play, PgUp/PgDn move
- * the look-at point along z. Mouse without modifier: left drag orbits, middle drag zooms, right drag
+ * arrows Up/Down/Left/Right (a menu's while one is shown), w s a d Up2/Down2/Left2/Right2, h m
+ * Enter Space o p actions 0–5 (m shows the default menu when there is one), Esc quits, + and −
+ * zoom, F1 help, F2 wireframe (Shift+F2 textures), Ctrl+F3 frame rate, F8 single step (pausing), Ctrl+F8 pause/play,
+ * F12 the viewer's menu, PgUp/PgDn move the look-at point along z. Mouse without modifier: left drag orbits, middle drag zooms, right drag
  * pans; with Ctrl, Shift or Alt events go to the application's mouse callback. */
 #include <ctype.h>
 
@@ -84,8 +85,16 @@ static int keyChar(int key)
 void RInputKey(RRender *rc, int key, int modifiers)
 {
     RRenderCallBacks *cb = rc->m_pCallBacks;
+    if (RMenuKey(rc, key)) /* a menu on screen takes the arrows */
+        return;
     switch (key) {
     case RKEY_ESCAPE: RRenderQuit(rc); return;
+    case RKEY_F1: RRenderToggleUserHelp(rc); return;
+    case RKEY_F12: RMenuToggle(rc, rc->m_private->menuShown ? NULL : RViewerMenu(rc)); return;
+    case RKEY_F3:
+        if (modifiers & RCONTROL)
+            RRenderSetDisplayFps(rc, !rc->m_private->showFps);
+        return;
     case RKEY_UP: press(rc, &cb->m_Button[kRButtonUp]); return;
     case RKEY_DOWN: press(rc, &cb->m_Button[kRButtonDown]); return;
     case RKEY_LEFT: press(rc, &cb->m_Button[kRButtonLeft]); return;
@@ -94,7 +103,12 @@ void RInputKey(RRender *rc, int key, int modifiers)
     case RKEY_PAGE_DOWN: RCameraPanZ(rc, -R_KEY_PAN); return;
     case RKEY_KP_ADD: case '=': RCameraZoom(rc, R_KEY_ZOOM); return;
     case RKEY_KP_SUBTRACT: case '-': RCameraZoom(rc, -R_KEY_ZOOM); return;
-    case RKEY_F2: RRenderSetWireframe(rc, !rc->m_options.m_bWireFrame); return;
+    case RKEY_F2: /* Shift+F2: textures on and off */
+        if (modifiers & RSHIFT)
+            rc->m_options.m_bTextures = rc->m_options.m_bTextures ? MEFALSE : METRUE;
+        else
+            RRenderSetWireframe(rc, !rc->m_options.m_bWireFrame);
+        return;
     case RKEY_F8:
         if (modifiers & RCONTROL) {
             RRenderSetPause(rc, !rc->m_bPause);
@@ -112,7 +126,14 @@ void RInputKey(RRender *rc, int key, int modifiers)
     case 'a': press(rc, &cb->m_Button[kRButtonLeft2]); return;
     case 'd': press(rc, &cb->m_Button[kRButtonRight2]); return;
     case 'h': press(rc, &cb->m_Action[0]); return;
-    case 'm': press(rc, &cb->m_Action[1]); return;
+    case 'm': /* the default menu when there is one, else action 1 */
+        if (rc->m_private->menuShown) /* whichever menu is shown: hidden */
+            RMenuToggle(rc, NULL);
+        else if (rc->m_private->menuDefault)
+            RMenuDisplay(rc->m_private->menuDefault);
+        else
+            press(rc, &cb->m_Action[1]);
+        return;
     default: break;
     }
     for (int n = 2; c && n < NUM_ACTION_CALLBACKS; n++)

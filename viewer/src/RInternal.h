@@ -3,6 +3,8 @@
 #ifndef R_INTERNAL_H
 #define R_INTERNAL_H
 
+#include <stddef.h>
+
 #include <karma/MeMessage.h>
 
 #include "MeViewer.h"
@@ -10,20 +12,36 @@
 /** Report a coded message (docs/errors.md) from viewer function `fn`. */
 #define R_REPORT(code, fn, ...) MeReport((code), (fn), __FILE__, __LINE__, __VA_ARGS__)
 
+/** Textures a context holds (Karma's limit). */
+#define R_MAX_TEXTURES 25
+
+/** A texture's pixels, kept by the context (RTexture.c). */
+typedef struct RTexture {
+    char name[128];          /**< as RRenderTextureCreate was given it */
+    int width, height;
+    unsigned char *rgba;     /**< bottom row first */
+} RTexture;
+
+/** Coarser copies a round graphic keeps for when it is small on the picture. */
+#define R_LOD_LEVELS 2
+
 /** What a graphic draws. */
-typedef enum { kRKindTriangles, kRKindLines, kRKindText } RGraphicKind;
+typedef enum { kRKindTriangles, kRKindLines, kRKindText, kRKindRect2D } RGraphicKind;
 
 struct RGraphicPrivate {
     RGraphicKind kind;
     int inList;              /**< 0 none, 1 the 3D list, 2 the 2D list */
     int dirty;               /**< vertices changed since the last upload */
-    unsigned int vao, vbo;   /**< GL objects (0 until first drawn) */
-    struct RGL *gl;          /**< the GL state that made them (NULL when none); it frees them when it goes */
+    struct RMesh *mesh;      /**< the vertex buffer it draws (NULL until first drawn; shared when equal) */
+    struct RGL *gl;          /**< the GL state that made it (NULL when none); it frees it when it goes */
     RGraphic *glPrev, *glNext; /**< in that state's list of graphics holding GL objects */
-    int uploaded;            /**< vertices in the buffer */
+    float radius;            /**< of the sphere about the local origin holding the vertices (m) */
     float checkerCell;       /**< > 0: checkerboard of this cell size (local units) */
     char *text;              /**< kRKindText: the string */
-    float x, y;              /**< kRKindText: top left in the virtual 640×448 screen */
+    float x, y;              /**< kRKindText, kRKindRect2D: top left in the virtual 640×448 screen */
+    float w, h;              /**< kRKindRect2D: size in the virtual screen */
+    RGraphic *lod[R_LOD_LEVELS]; /**< spheres, sphyls: the same shape with 1/2 and 1/4 of the sides (in no list) */
+    float lodExtent;         /**< their farthest point from the local origin (m) */
 };
 
 typedef struct RBackend RBackend;
@@ -42,12 +60,58 @@ struct RRenderPrivate {
     int drawn;               /**< a frame has been drawn */
     RDrag drag;
     RGraphic *pausedText;    /**< "Paused", in the 2D list while paused */
+    struct RMenu *menus;     /**< the application's menus (RMenuCreate) */
+    struct RMenu *menuShown, *menuDefault, *menuViewer; /**< on screen; the m key's; F12's */
+    char **help;             /**< the application's help lines, substituted */
+    int helpCount, helpShown, pausedBeforeHelp, helpTextCount;
+    RGraphic **helpText, *helpPanel;
+    struct RPerformanceBar *perfBar;
+    int showFps;             /**< RRun shows the frame rate */
+    RGraphic *fpsText;
+    double fps;              /**< frames a second, averaged over the last half second */
+    int noShadows;           /**< the F12 menu turned shadows off */
+    unsigned int profileFrames; /**< -profile N: frames to profile (0: -timeout's, or 1,000) */
+    struct RDebugDraw *debugDraw; /**< lines from MeDebugDrawAPI (RRenderSetDebugDrawing), or NULL */
+    RTexture textures[R_MAX_TEXTURES]; /**< RRenderTextureCreate's, by id */
+    int textureCount;
     char title[128];
 };
 
 /* ---- RGraphic.c ---------------------------------------------------------------------------- */
 /** A graphic of `kind` with room for n vertices, coloured, following matrix, put in the 3D list. */
 RGraphic *RGraphicNew(RRender *rc, RGraphicKind kind, int n, const float color[4], MeMatrix4Ptr matrix);
+
+/** Replace a text graphic's string (copied). Returns 0, or −1 for anything but text. */
+int RGraphicTextSet(RGraphic *rg, const char *text);
+/** Move and size a 2D rectangle (virtual screen units; negative sizes become 0). */
+void RRectangleSet(RGraphic *rg, float x, float y, float width, float height);
+
+/* ---- RMenu.c, RHelp.c, RPerformanceBar.c ---------------------------------------------------- */
+/** An entry of the viewer's own menu: with set < 0 returns its state (1, 0, or −1 for none); else
+ *  acts (set 1: Right, 0: Left). */
+typedef int (*RViewerEntryFn)(RRender *rc, int set);
+/** Add an entry of the viewer's own (F12) menu. */
+void RMenuAddViewerEntry(RMenu *rm, const char *name, RViewerEntryFn fn);
+/** A key while a menu is shown: the arrows work it. Returns 1 when the menu took the key. */
+int RMenuKey(RRender *rc, int key);
+/** Hide the menu shown; show rm unless it was the one shown (NULL: only hide). */
+void RMenuToggle(RRender *rc, RMenu *rm);
+/** The context goes: menus lose their graphics and their context (the application still destroys its own). */
+void RMenuContextGone(RRender *rc);
+/** The context goes: help lines freed. */
+void RHelpContextGone(RRender *rc);
+/** The context goes: the performance bar freed. */
+void RPerformanceBarDestroy(RRender *rc);
+/** The context goes: the textures' pixels freed (RTexture.c). */
+void RTexturesContextGone(RRender *rc);
+/** Show the debug lines drawn since the last frame (RDebugDraw.c). */
+void RDebugDrawFrame(RRender *rc);
+/** The context goes or stops debug drawing: its lines freed, the hook silent again. */
+void RDebugDrawDestroy(RRender *rc);
+/** A debug-line hook that draws nothing. */
+void MEAPI RDebugDrawNothing(MeVector3 start, MeVector3 end, MeReal r, MeReal g, MeReal b);
+/** The viewer's own menu (F12), made on first use. */
+RMenu *RViewerMenu(RRender *rc);
 
 /* ---- RCamera.c ----------------------------------------------------------------------------- */
 /** Karma's default camera and projection for a context whose size is set. */
@@ -67,10 +131,49 @@ void RGLDestroy(struct RGL *gl);
 /** Draw every graphic of both lists into the multisampled framebuffer, resolve it into the picture
  *  RGLReadPixels reads and, with toWindow, copy it to the window's framebuffer. */
 void RGLDrawFrame(struct RGL *gl, RRender *rc, int toWindow);
+/** A program from a vertex and a fragment shader's sources; 0 with a message. */
+unsigned int RGLLink(const char *vertexSource, const char *fragmentSource);
+/** Point the bound vertex array's per-instance attributes (2–5 the model matrix, 6–9 the
+ *  material) at `offset` bytes into the instance buffer `buffer`. */
+void RGLInstanceAttributes(unsigned int buffer, size_t offset);
+/** Draws the frame's batches; castersOnly: only those that cast shadows, without material state. */
+typedef void (*RGLBatchDraw)(void *data, int castersOnly);
 /** Read the resolved picture (RGBA, top row first). */
 void RGLReadPixels(struct RGL *gl, unsigned char *rgba);
 /** Free a graphic's GL objects in the context that made them (nothing when it has none). */
 void RGLReleaseGraphic(RGraphic *rg);
+
+/* ---- RMesh.c: vertex buffers shared by graphics of equal vertices ------------------------- */
+typedef struct RMesh {
+    unsigned long long hash; /**< of the vertex bytes */
+    int count;               /**< vertices */
+    int shared, refs;        /**< found by its vertices (triangle graphics); graphics holding it */
+    float *data;             /**< the bytes, to compare (shared meshes) */
+    unsigned int vao, vbo;
+    struct RMesh *next;      /**< in the cache (shared meshes) */
+} RMesh;
+typedef struct RMeshCache {
+    RMesh *meshes;           /**< shared meshes */
+    unsigned int instances;  /**< the per-instance buffer every mesh's vertex array reads */
+} RMeshCache;
+/** The mesh of rg's vertices: with `shared`, one already made from equal vertices (one more
+ *  holder) or a new one; else one of its own. Its radius in *radius. NULL when out of memory. */
+RMesh *RMeshAcquire(RMeshCache *cache, const RGraphic *rg, int shared, float *radius);
+/** Rewrite an unshared mesh from rg's vertices; 0 (nothing done) for a shared one. */
+int RMeshUpdate(RMesh *m, const RGraphic *rg, float *radius);
+/** One holder fewer; freed with the last (NULL is accepted). */
+void RMeshRelease(RMeshCache *cache, RMesh *m);
+
+/* ---- RShadow.c: the key light's shadow map ------------------------------------------------- */
+/** Depth map, its framebuffer and program; NULL when they cannot be made (no shadows then). */
+struct RShadow *RShadowCreate(void);
+void RShadowDestroy(struct RShadow *s);
+/** Whether a graphic casts a shadow: filled triangles but checkerboard planes (the ground). */
+int RShadowCasts(const RGraphic *rg, const RRender *rc);
+/** Draw the map from directional light 1 over the region the camera looks at; `draw` draws the casters. */
+void RShadowDraw(struct RShadow *s, RRender *rc, RGLBatchDraw draw, void *data);
+/** Bind the map on texture `unit` and set the lit program's uniforms (light matrix, texel size, sampler). */
+void RShadowBind(const struct RShadow *s, int uLightVP, int uTexel, int uMap, int unit);
 
 /* ---- backends ------------------------------------------------------------------------------ */
 /** An offscreen OpenGL 3.3 core context through EGL (RBackendEGL.c); NULL with a message. */
@@ -94,7 +197,8 @@ struct RBackend {
 /** Key codes the backends translate to (GLFW's values for printable keys: their ASCII capitals). */
 enum {
     RKEY_ESCAPE = 256, RKEY_ENTER = 257, RKEY_RIGHT = 262, RKEY_LEFT = 263, RKEY_DOWN = 264, RKEY_UP = 265,
-    RKEY_PAGE_UP = 266, RKEY_PAGE_DOWN = 267, RKEY_F1 = 290, RKEY_F2 = 291, RKEY_F8 = 297, RKEY_KP_ADD = 334,
+    RKEY_PAGE_UP = 266, RKEY_PAGE_DOWN = 267, RKEY_F1 = 290, RKEY_F2 = 291, RKEY_F3 = 292, RKEY_F8 = 297,
+    RKEY_F12 = 301, RKEY_KP_ADD = 334,
     RKEY_KP_SUBTRACT = 333
 };
 /** A key pressed with modifiers (RCONTROL, RSHIFT, RALT): Karma's key map. */

@@ -131,6 +131,21 @@ static RGraphic *roundCreate(RRender *rc, const char *fn, AcmeReal radius, AcmeR
         return NULL;
     Emit e = {rg->m_pVertices, 0};
     revolve(&e, (const double(*)[4])profile, points, n);
+    /* Coarser copies for when it is small on the picture (RGL.c picks one by its size there):
+     * half and a quarter of the sides, never fewer than 6. */
+    rg->m_private->lodExtent = (float)(radius + half);
+    for (int k = 0; k < R_LOD_LEVELS; k++) {
+        int m = n >> (k + 1), r = m / 2 < R_MAX_RINGS ? (m / 2) * 2 : R_MAX_RINGS;
+        if (m < 6 || r < 2)
+            break;
+        int q = roundProfile(profile, radius, half, r);
+        RGraphic *lod = RGraphicCreateEmpty(6 * m * (q - 1));
+        if (!lod)
+            break;
+        Emit el = {lod->m_pVertices, 0};
+        revolve(&el, (const double(*)[4])profile, q, m);
+        rg->m_private->lod[k] = lod;
+    }
     return rg;
 }
 

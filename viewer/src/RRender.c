@@ -5,6 +5,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
+
+#include <karma/MeProfile.h>
 
 #include <stb_image_write.h>
 
@@ -42,6 +45,15 @@ static MeBool readOptions(RRender *rc, MeCommandLineOptions *o, int eat, int *w,
         rc->m_options.m_renderType = kRNull;
     if (MeCommandLineOptionsCheckFor(o, "-headless", (MeBool)eat))
         rc->m_options.m_renderType = kRHeadless;
+    if (MeCommandLineOptionsCheckFor(o, "-bench", (MeBool)eat))
+        rc->m_options.m_renderType = kRBenchmark;
+    /* -profile [frames]: the frame count is optional. */
+    int profileFrames = MeCommandLineOptionsGetNumeric(o, "-profile", (MeBool)eat);
+    if (profileFrames >= 0 || MeCommandLineOptionsCheckFor(o, "-profile", (MeBool)eat)) {
+        rc->m_bProfiling = 1;
+        if (profileFrames > 0)
+            rc->m_private->profileFrames = (unsigned int)profileFrames;
+    }
     if (MeCommandLineOptionsCheckFor(o, "-wireframe", (MeBool)eat))
         rc->m_options.m_bWireFrame = METRUE;
     if (MeCommandLineOptionsCheckFor(o, "-notextures", (MeBool)eat))
@@ -157,9 +169,14 @@ int MEAPI RRenderContextDestroy(RRender *rc)
     struct RRenderPrivate *p = rc->m_private;
     if (p->backend)
         p->backend->makeCurrent(p->backend);
+    RMenuContextGone(rc);
+    RHelpContextGone(rc);
+    RDebugDrawDestroy(rc);
+    RPerformanceBarDestroy(rc);
     deleteList(rc, 0);
     deleteList(rc, 1); /* the "Paused" text too */
     RGLDestroy(p->gl);
+    RTexturesContextGone(rc);
     if (p->backend)
         p->backend->destroy(p->backend);
     free(rc->m_pCallBacks);
@@ -234,6 +251,7 @@ void MEAPI RRenderDrawFrame(RRender *rc)
     if (!rc)
         return;
     struct RRenderPrivate *p = rc->m_private;
+    RDebugDrawFrame(rc); /* the null renderer too: the lines are there to be read */
     if (!p->gl) /* the null renderer draws nothing */
         return;
     p->backend->makeCurrent(p->backend);
@@ -243,23 +261,93 @@ void MEAPI RRenderDrawFrame(RRender *rc)
     p->drawn = 1;
 }
 
+static double seconds(void)
+{
+    struct timespec t;
+    timespec_get(&t, TIME_UTC);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/** The frame rate shown is averaged over this many seconds. */
+#define R_FPS_PERIOD 0.5
+/** Frames -profile runs when neither it nor -timeout gives a count. */
+#define R_PROFILE_FRAMES 1000
+
+/* -profile's report and -bench's figures, after the loop. */
+static void report(RRender *rc, unsigned long frames, double seconds, double applicationSeconds)
+{
+    if (rc->m_bProfiling) {
+        MeProfileOutputResults();
+        MeProfileStopTiming();
+    }
+    if (rc->m_options.m_renderType == kRBenchmark && frames > 0)
+        printf("Benchmark: %lu frames in %.3f s, %.3f ms a frame (%.3f ms in the application's tick)\n", frames,
+               seconds, 1e3 * seconds / (double)frames, 1e3 * applicationSeconds / (double)frames);
+}
+
 void MEAPI RRun(RRender *rc, RMainLoopCallBack func, void *userdata)
 {
     if (!rc)
         return;
     struct RRenderPrivate *p = rc->m_private;
     rc->m_bQuitNextFrame = 0;
-    for (unsigned long frame = 0; !rc->m_bQuitNextFrame; frame++) {
-        if (rc->m_nTimeout && frame >= rc->m_nTimeout)
+    unsigned long limit = rc->m_nTimeout;
+    if (rc->m_bProfiling) {
+        MeProfileTimerMode mode = {0};
+        MeProfileStartTiming(mode, kMeProfileLogTotals);
+        if (p->profileFrames)
+            limit = p->profileFrames;
+        else if (!limit)
+            limit = R_PROFILE_FRAMES;
+    }
+    double start = seconds(), periodStart = start, application = 0;
+    unsigned long periodFrames = 0, frame = 0;
+    for (; !rc->m_bQuitNextFrame && !(limit && frame >= limit); frame++) {
+        /* Idle: waiting for and handling input; then the application's tick (its MeProfile sections
+         * "Collision" and "Dynamics"), then drawing ("Rendering"). */
+        int timing = p->perfBar || rc->m_bProfiling;
+        if (timing) {
+            MeProfileStartFrame();
+            MeProfileStartSection("Idle Time", 0);
+        }
+        double t0 = seconds();
+        int open = !(p->backend && p->backend->poll && !p->backend->poll(p->backend, rc));
+        double t1 = seconds();
+        if (timing)
+            MeProfileEndSection("Idle Time");
+        if (!open) {
+            if (timing)
+                MeProfileEndFrame();
             break;
-        if (p->backend && p->backend->poll && !p->backend->poll(p->backend, rc))
-            break;
+        }
         if (func && (!rc->m_bPause || p->singleStep))
             func(rc, userdata);
         p->singleStep = 0;
+        double t2 = seconds();
+        if (timing)
+            MeProfileStartSection("Rendering", 0);
         RRenderDrawFrame(rc);
+        if (timing) {
+            MeProfileEndSection("Rendering");
+            MeProfileEndFrame();
+        }
+        double t3 = seconds();
+        application += t2 - t1;
         p->frames++;
+        if (p->perfBar) { /* -profile keeps totals: the bar shows their average a frame */
+            AcmeReal per = rc->m_bProfiling ? (AcmeReal)(1.0 / (double)(frame + 1)) : 1;
+            RPerformanceBarUpdate(rc, per * MeProfileGetSectionTime("Collision"), per * MeProfileGetSectionTime("Dynamics"),
+                                  (AcmeReal)(1e3 * (t3 - t2)), (AcmeReal)(1e3 * (t1 - t0)));
+        }
+        periodFrames++;
+        if (t3 - periodStart >= R_FPS_PERIOD) {
+            p->fps = (double)periodFrames / (t3 - periodStart);
+            periodStart = t3, periodFrames = 0;
+            if (p->showFps)
+                RRenderDisplayFps(rc, (AcmeReal)p->fps);
+        }
     }
+    report(rc, frame, seconds() - start, application);
 }
 
 int MEAPI RRenderReadPixels(RRender *rc, unsigned char *rgba)
