@@ -199,12 +199,6 @@ void McdFrameworkGetCounters(McdFrameworkID id, McdFrameworkCounters *counters)
     counters->segmentFallbacks = atomic_load(&fw->segmentFallbacks);
 }
 
-MeBool McdPositionInRange(const McdFrameworkData *fw, const MeReal *p)
-{
-    const MeReal limit = MCD_POSITION_MAX * (fw ? fw->lengthScale : ME_R(1.0));
-    return MeFabs(p[0]) <= limit && MeFabs(p[1]) <= limit && MeFabs(p[2]) <= limit;
-}
-
 MeBool McdCheckTolerance(MeReal tolerance, const char *function)
 {
     ME_CHECK_FINITE_IN(function, tolerance, MEFALSE);

@@ -84,8 +84,12 @@ static inline McdModelID McdModelToID(const McdModelData *m) { return (McdModelI
 static inline McdFrameworkID McdFrameworkToID(const McdFrameworkData *fw) { return (McdFrameworkID)fw->id; }
 
 /** Whether the point lies within MCD_POSITION_MAX * lengthScale of the origin (finite, per axis; fw
- *  NULL: lengthScale 1). */
-MeBool McdPositionInRange(const McdFrameworkData *fw, const MeReal *p);
+ *  NULL: lengthScale 1). Inline: every model update tests it. */
+static inline MeBool McdPositionInRange(const McdFrameworkData *fw, const MeReal *p)
+{
+    const MeReal limit = MCD_POSITION_MAX * (fw ? fw->lengthScale : ME_R(1.0));
+    return MeFabs(p[0]) <= limit && MeFabs(p[1]) <= limit && MeFabs(p[2]) <= limit;
+}
 /** A contact tolerance must be finite and >= 0; reports in `function`'s name. */
 MeBool McdCheckTolerance(MeReal tolerance, const char *function);
 

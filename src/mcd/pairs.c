@@ -132,7 +132,7 @@ void McdGoodbye(McdModelPairID pair)
 
 /* The representative normal: the mean of the contact normals, or the deepest contact's normal when
  * they cancel out. */
-static void representativeNormal(const McdContact *c, int count, MeVector3 normal)
+static inline void representativeNormal(const McdContact *c, int count, MeVector3 normal)
 {
     MeVector3 sum = {0, 0, 0};
     int deepest = 0;
@@ -148,7 +148,7 @@ static void representativeNormal(const McdContact *c, int count, MeVector3 norma
 }
 
 /* For a pair test that overran its room: McdNfCallCentred checks the contacts of a count in range
- * (keepPlausible), not these, so a contact with a non-finite value or a normal that is not of unit
+ * (McdNfKeepPlausible), not these, so a contact with a non-finite value or a normal that is not of unit
  * length is dropped (and counted) here, and none reaches the bridge. */
 static int dropInvalidContacts(McdFrameworkData *fw, McdContact *c, int n)
 {
@@ -204,22 +204,14 @@ MeBool McdModelPairGetModelInfo(McdModelPairID pair, McdModelPairModelInfo *info
     return modelInfo(pair, m, info, __func__);
 }
 
-MeBool McdIntersectForResponse(McdModelPairID pair, McdModelPairModelInfo *info, McdIntersectResult *result)
-{
-    ME_CHECK_NOT_NULL(info, MEFALSE);
-    ME_CHECK_NOT_NULL(result, MEFALSE);
-    McdModelData *m[2];
-    if (!modelInfo(pair, m, info, __func__) || (info->frozen[0] && info->frozen[1]) ||
-        (!info->bodyData[0] && !info->bodyData[1])) {
-        clearResult(pair, result);
-        return MEFALSE;
-    }
-    McdIntersectModels(pair, m[0], m[1], result, __func__);
-    return METRUE;
-}
-
-int McdIntersectModels(McdModelPair *pair, McdModelData *m1, McdModelData *m2, McdIntersectResult *result,
-                       const char *function)
+/* McdIntersectModels. Inlined into McdIntersectForResponse, which a bridge calls for every pair of
+ * every step; gcc's heuristics decline it (it is long and has two callers), so it is asked by
+ * attribute where the compiler has one. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int intersectModels(McdModelPair *pair, McdModelData *m1, McdModelData *m2, McdIntersectResult *result,
+                                  const char *function)
 {
     clearResult(pair, result);
     if (result->contactMaxCount > 0 && !result->contacts) {
@@ -243,10 +235,9 @@ int McdIntersectModels(McdModelPair *pair, McdModelData *m1, McdModelData *m2, M
     MeReal tolerance = m1->contactTolerance + m2->contactTolerance;
     McdContact *c = result->contacts;
     const unsigned long fallbacksBefore = McdNfFallbackCount();
-    int n = pair->swapped ? McdNfCallCentred(fn, m2->geometry, m2->worldTransform, m1->geometry, m1->worldTransform,
-                                             tolerance, c, maxCount, &pair->cache)
-                          : McdNfCallCentred(fn, m1->geometry, m1->worldTransform, m2->geometry, m2->worldTransform,
-                                             tolerance, c, maxCount, &pair->cache);
+    McdModelData *first = pair->swapped ? m2 : m1, *second = pair->swapped ? m1 : m2; /* the test's order */
+    int n = McdNfCallCentred(fn, first->geometry, first->worldTransform, second->geometry, second->worldTransform,
+                             tolerance, c, maxCount, &pair->cache);
     if (n < 0 || n > maxCount) {
         ME_REPORT_IN(function, ME_ERR_INTERNAL, "a pair test returned %d contacts for room for %d", n, maxCount);
         n = n < 0 ? 0 : dropInvalidContacts(fw, c, maxCount);
@@ -273,6 +264,26 @@ int McdIntersectModels(McdModelPair *pair, McdModelData *m1, McdModelData *m2, M
     if (m2->intersectFn)
         m2->intersectFn((McdModel *)McdModelToID(m2), result);
     return result->touch;
+}
+
+int McdIntersectModels(McdModelPair *pair, McdModelData *m1, McdModelData *m2, McdIntersectResult *result,
+                       const char *function)
+{
+    return intersectModels(pair, m1, m2, result, function);
+}
+
+MeBool McdIntersectForResponse(McdModelPairID pair, McdModelPairModelInfo *info, McdIntersectResult *result)
+{
+    ME_CHECK_NOT_NULL(info, MEFALSE);
+    ME_CHECK_NOT_NULL(result, MEFALSE);
+    McdModelData *m[2];
+    if (!modelInfo(pair, m, info, __func__) || (info->frozen[0] && info->frozen[1]) ||
+        (!info->bodyData[0] && !info->bodyData[1])) {
+        clearResult(pair, result);
+        return MEFALSE;
+    }
+    intersectModels(pair, m[0], m[1], result, __func__);
+    return METRUE;
 }
 
 MeBool McdNearby(McdModelPairID pair)

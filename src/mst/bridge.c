@@ -243,12 +243,17 @@ void MstHandleTransitions(McdModelPairContainer *pairs, McdSpaceID space, MdtWor
  * new contacts have a dynamics contact in b->newContacts. */
 static int matchContacts(MstBridgeData *b, MdtContactGroupID g, const McdContact *in, int n)
 {
-    const int groupCount = MdtContactGroupGetCount(g);
-    if (!reserveMatchScratch(b, groupCount > n ? groupCount : n))
-        return 0; /* out of memory: reported by MeMemory; the group keeps last step's contacts */
+    /* One call reads the group when the scratch holds it, as it does unless the group has grown
+     * beyond every earlier one: a full read may have left some out, so the group is counted then. */
+    int oldCount = MdtContactGroupGetContactsAndPositions(g, b->oldContacts, b->oldPositions, b->matchCapacity);
+    if (oldCount == b->matchCapacity || n > b->matchCapacity) {
+        const int groupCount = MdtContactGroupGetCount(g);
+        if (!reserveMatchScratch(b, groupCount > n ? groupCount : n))
+            return 0; /* out of memory: reported by MeMemory; the group keeps last step's contacts */
+        oldCount = MdtContactGroupGetContactsAndPositions(g, b->oldContacts, b->oldPositions, b->matchCapacity);
+    }
     MdtContactID *old = b->oldContacts, *out = b->newContacts;
     MeBool *used = b->oldUsed;
-    const int oldCount = MdtContactGroupGetContactsAndPositions(g, old, b->oldPositions, b->matchCapacity);
     for (int k = 0; k < oldCount; k++)
         used[k] = MEFALSE;
     for (int i = 0; i < n; i++) {

@@ -372,6 +372,57 @@ static void invalid_contacts_are_dropped_and_counted(void **state)
     assert_int_equal(karma_warning_count(), 1);
 }
 
+/* The field (0-2 position, 3-5 normal, 6 separation) and value that oneBadFieldTest spoils. */
+static int badField;
+static MeReal badValue;
+
+/* A pair test that writes a good contact and a copy of it with one field spoilt. */
+static int oneBadFieldTest(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
+                           MeReal tol, McdContact *c, int max, void **cache)
+{
+    (void)g1, (void)tm1, (void)g2, (void)tm2, (void)tol, (void)cache;
+    assert_true(max >= 2);
+    memset(c, 0, 2 * sizeof *c);
+    MeVector3Set(c[0].position, 0, 1, 0);
+    MeVector3Set(c[0].normal, 0, -1, 0);
+    c[0].separation = -ME_R(0.01);
+    c[1] = c[0];
+    if (badField < 3)
+        c[1].position[badField] = badValue;
+    else if (badField < 6)
+        c[1].normal[badField - 3] = badValue;
+    else
+        c[1].separation = badValue;
+    return 2;
+}
+
+/* A NaN or an infinity in any one field of a contact is dropped and counted by the pair-test wrapper,
+ * for built-in shapes (whose finite reach bounds the position and depth, and so rejects them) and for
+ * a user type (no bound: each field tested). */
+static void every_non_finite_field_is_dropped(void **state)
+{
+    (void)state;
+    const MeReal bad[] = {(MeReal)NAN, (MeReal)INFINITY, -(MeReal)INFINITY};
+    McdGeometryData a, b;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    a.u.sphere.radius = b.u.sphere.radius = 1;
+    MeMatrix4 t1 = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+    MeMatrix4 t2 = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, ME_R(1.99), 0, 1}};
+    for (int builtIn = 1; builtIn >= 0; builtIn--) {
+        a.type = b.type = builtIn ? kMcdGeometryTypeSphere : kMcdGeometryBuiltInTypes; /* a user type number */
+        for (badField = 0; badField < 7; badField++)
+            for (int v = 0; v < 3; v++) {
+                badValue = bad[v];
+                McdContact c[4];
+                const unsigned long before = McdNfFallbackCount();
+                assert_int_equal(McdNfCallCentred(oneBadFieldTest, &a, t1, &b, t2, ME_R(0.02), c, 4, NULL), 1);
+                assert_int_equal(McdNfFallbackCount(), before + 1);
+                assert_true(c[0].position[1] == 1 && c[0].normal[1] == -1 && c[0].separation == -ME_R(0.01));
+            }
+    }
+}
+
 /* ---- point 5: the smaller findings ------------------------------------------------------------- */
 
 /* Deepest separation of models a and b (1e30 when no contact); *count gets the number of contacts. */
@@ -542,6 +593,7 @@ int main(void)
         cmocka_unit_test(box_box_degenerate_axes_fall_back),
         cmocka_unit_test(nearly_touching_faces_claim_no_overlap),
         cmocka_unit_test(invalid_contacts_are_dropped_and_counted),
+        cmocka_unit_test(every_non_finite_field_is_dropped),
         cmocka_unit_test(implausible_contacts_are_dropped),
         cmocka_unit_test(identical_orientations_overlap_with_their_depth),
         cmocka_unit_test(cylinder_cap_parallel_to_plane),

@@ -106,13 +106,19 @@ int McdNfConvexConvex(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometr
 void McdNfCountFallback(void);
 /** Fallbacks counted so far (all threads). */
 unsigned long McdNfFallbackCount(void);
+/** Whether a contact's normal is of unit length (|n|² within 1e-3 of 1); false for a NaN or infinite
+ *  component too. */
+static inline MeBool McdNfNormalIsUnit(const McdContact *c)
+{
+    return MeFabs(MeVector3MagnitudeSqr(c->normal) - ME_R(1.0)) <= ME_R(1e-3);
+}
 /** Whether a contact is usable: finite position and separation, finite unit normal (|n|² within 1e-3
  *  of 1). Inline: it runs on every contact of every pair test. */
 static inline MeBool McdNfContactIsValid(const McdContact *c)
 {
     if (!MeVector3IsValid(c->position) || !MeVector3IsValid(c->normal) || !isfinite(c->separation))
         return MEFALSE;
-    return MeFabs(MeVector3MagnitudeSqr(c->normal) - ME_R(1.0)) <= ME_R(1e-3);
+    return McdNfNormalIsUnit(c);
 }
 
 /* ---- contact writing (contact.c) ------------------------------------------------------------ */
@@ -159,13 +165,56 @@ typedef struct McdNfPairEntry {
 const McdNfPairEntry *McdNfPairTable(int *count);
 /** The test for (type1, type2), or NULL; *swapped says that it takes them as (type2, type1). */
 McdNearfieldFn McdNfFind(int type1, int type2, int *swapped);
+/** McdNfReach for the types other than sphere and box. */
+MeReal McdNfReachOther(const McdGeometryData *g);
+/** A bound on a built-in primitive's distance from its origin (0 for the plane, which has no size, and
+ *  for types McdNfReachOther does not know). Inline for the commonest two: it runs twice a pair. */
+static inline MeReal McdNfReach(const McdGeometryData *g)
+{
+    if (g->type == kMcdGeometryTypeSphere)
+        return g->u.sphere.radius;
+    if (g->type == kMcdGeometryTypeBox)
+        return MeFabs(g->u.box.radii[0]) + MeFabs(g->u.box.radii[1]) + MeFabs(g->u.box.radii[2]);
+    return McdNfReachOther(g);
+}
+/** Keep the n > 0 contacts of a built-in pair test that it could have meant, in place, and return how
+ *  many: finite, unit normal, not beyond the tolerance, no deeper and no farther from geometry 1 than
+ *  the two shapes reach (`reach`, the sum of their McdNfReach). Others are dropped and counted
+ *  (McdNfCountFallback): they come from arithmetic beyond the precision (an aspect ratio of 1e11 in
+ *  float, say). */
+int McdNfKeepPlausible(MeReal reach, MeMatrix4 tm1, MeMatrix4 tm2, MeReal tolerance, McdContact *contacts, int n);
+/** McdNfKeepPlausible for a user type's test, which has no reach: finite, unit normal, not beyond the
+ *  tolerance. */
+int McdNfKeepValid(MeReal tolerance, McdContact *contacts, int n);
+/** McdNfCallCentred's far case: the built-in test in a frame centred on geometry 1, its contacts
+ *  kept as McdNfKeepPlausible keeps them and put back into the world frame. */
+int McdNfCallInPairFrame(McdNearfieldFn fn, const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2,
+                         MeMatrix4 tm2, MeReal reach, MeReal tolerance, McdContact *contacts, int maxContacts,
+                         void **cache);
 /** Call a pair test; when geometry 1 lies farther from the world origin than MCD_NF_CENTRE_RATIO
  *  times the pair's size, in a frame centred on geometry 1 (its translation taken out of both
  *  transforms, put back into the contact positions): the test's arithmetic is then relative to the
  *  pair, so a small pair far from the origin keeps its own precision (a 2e-6 m box at 4e6 m gave depths
- *  of 1e10 in float). Nearer the origin the test gets the transforms as they are (same bits). */
-int McdNfCallCentred(McdNearfieldFn fn, const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2,
-                     MeMatrix4 tm2, MeReal tolerance, McdContact *contacts, int maxContacts, void **cache);
+ *  of 1e10 in float). Nearer the origin the test gets the transforms as they are (same bits). The
+ *  contacts are then kept as McdNfKeepPlausible keeps them (McdNfKeepValid for a user type). Inline:
+ *  it runs for every pair tested, and the far case, rare, is out of line. */
+static inline int McdNfCallCentred(McdNearfieldFn fn, const McdGeometryData *g1, MeMatrix4 tm1,
+                                   const McdGeometryData *g2, MeMatrix4 tm2, MeReal tolerance, McdContact *contacts,
+                                   int maxContacts, void **cache)
+{
+    const MeBool builtIn = g1->type < kMcdGeometryBuiltInTypes && g2->type < kMcdGeometryBuiltInTypes;
+    const MeReal reach = builtIn ? McdNfReach(g1) + McdNfReach(g2) : ME_R(0.0);
+    /* Near the origin (within MCD_NF_CENTRE_RATIO sizes of the pair) rounding of the world coordinates
+     * costs nothing worth the copies: the test sees the models' own transforms. User types too. */
+    if (builtIn && MeMAX3(MeFabs(tm1[3][0]), MeFabs(tm1[3][1]), MeFabs(tm1[3][2])) > MCD_NF_CENTRE_RATIO * reach)
+        return McdNfCallInPairFrame(fn, g1, tm1, g2, tm2, reach, tolerance, contacts, maxContacts, cache);
+    const int n = fn(g1, tm1, g2, tm2, tolerance, contacts, maxContacts, cache);
+    if (n <= 0 || n > maxContacts)
+        return n; /* none (most pairs of a scene: boxes that overlap, shapes that do not touch), or the
+                   * dispatcher reports it */
+    return builtIn ? McdNfKeepPlausible(reach, tm1, tm2, tolerance, contacts, n)
+                   : McdNfKeepValid(tolerance, contacts, n);
+}
 /** Run the built-in test for any order of the two geometries (swapping contacts back if needed),
  *  centred as McdNfCallCentred. */
 int McdNfCollide(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2, MeReal tolerance,

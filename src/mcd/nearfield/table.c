@@ -58,13 +58,9 @@ McdNearfieldFn McdNfFind(int type1, int type2, int *swapped)
     return NULL;
 }
 
-/* A bound on a built-in primitive's distance from its origin (0 for the plane, which has no size, and
- * for types this file does not know). */
-static inline MeReal reachOf(const McdGeometryData *g)
+MeReal McdNfReachOther(const McdGeometryData *g)
 {
     switch (g->type) {
-    case kMcdGeometryTypeSphere: return g->u.sphere.radius;
-    case kMcdGeometryTypeBox: return MeFabs(g->u.box.radii[0]) + MeFabs(g->u.box.radii[1]) + MeFabs(g->u.box.radii[2]);
     case kMcdGeometryTypeCylinder: return g->u.cylinder.radius + g->u.cylinder.halfHeight;
     case kMcdGeometryTypeSphyl: return g->u.sphyl.radius + g->u.sphyl.halfHeight;
     case kMcdGeometryTypeCone:
@@ -91,27 +87,18 @@ static MeBool withinDistance(const MeVector3 p, const MeVector3 origin, MeReal b
     return MeSqrt(d2) <= bound;
 }
 
-/* Keep the contacts a pair test could have meant: finite, unit normal, not beyond the tolerance, and
- * (built-in types, whose reach `reach` is the sum of the two shapes' reachOf) no deeper and no farther
- * from geometry 1 than the two shapes reach. Others are dropped and counted: they come from arithmetic
- * beyond the precision (an aspect ratio of 1e11 in float, say). */
-static int keepPlausible(MeBool builtIn, MeReal reach, MeMatrix4 tm1, MeMatrix4 tm2, MeReal tolerance,
-                         McdContact *contacts, int n)
+/* McdNfKeepPlausible's loop, for constant `finiteTests` and `distanceTest` (inlined into each use and
+ * specialised): the contacts within [deepest, shallowest] of separation, with a unit normal, finite
+ * (`finiteTests`) and within `bound` of `origin` (`distanceTest`), kept in place and the others
+ * counted. */
+static inline int keepIf(McdContact *contacts, int n, MeBool finiteTests, MeBool distanceTest, MeReal deepest,
+                         MeReal shallowest, const MeVector3 origin, MeReal bound, MeReal boundSqr)
 {
-    MeReal bound = MEINFINITY, boundSqr = MEINFINITY;
-    int k, kept = 0;
-    if (n == 0)
-        return 0; /* most pairs of a scene: boxes that overlap, shapes that do not touch */
-    if (builtIn) {
-        bound = MeVector3Distance(tm1[3], tm2[3]) + ME_R(2.0) * reach + tolerance;
-        boundSqr = bound * bound;
-    }
-    const MeReal deepest = -bound;
-    const MeReal shallowest = tolerance * ME_R(1.01) + MCD_NF_REL_EPS * (builtIn ? bound : ME_R(0.0));
-    for (k = 0; k < n; k++) {
+    int kept = 0;
+    for (int k = 0; k < n; k++) {
         const McdContact *c = &contacts[k];
-        if (McdNfContactIsValid(c) && c->separation >= deepest && c->separation <= shallowest &&
-            (!builtIn || withinDistance(c->position, tm1[3], bound, boundSqr))) {
+        if ((finiteTests ? McdNfContactIsValid(c) : McdNfNormalIsUnit(c)) && c->separation >= deepest &&
+            c->separation <= shallowest && (!distanceTest || withinDistance(c->position, origin, bound, boundSqr))) {
             if (kept != k)
                 contacts[kept] = *c;
             kept++;
@@ -122,32 +109,39 @@ static int keepPlausible(MeBool builtIn, MeReal reach, MeMatrix4 tm1, MeMatrix4 
     return kept;
 }
 
-int McdNfCallCentred(McdNearfieldFn fn, const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2,
-                     MeMatrix4 tm2, MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
+int McdNfKeepValid(MeReal tolerance, McdContact *contacts, int n)
 {
-    const MeBool builtIn = g1->type < kMcdGeometryBuiltInTypes && g2->type < kMcdGeometryBuiltInTypes;
-    const MeReal reach = builtIn ? reachOf(g1) + reachOf(g2) : ME_R(0.0);
-    int n, k;
-    /* Near the origin (within MCD_NF_CENTRE_RATIO sizes of the pair) rounding of the world coordinates
-     * costs nothing worth the copies: the test sees the models' own transforms. User types too. */
-    if (!builtIn ||
-        !(MeMAX3(MeFabs(tm1[3][0]), MeFabs(tm1[3][1]), MeFabs(tm1[3][2])) > MCD_NF_CENTRE_RATIO * reach)) {
-        n = fn(g1, tm1, g2, tm2, tolerance, contacts, maxContacts, cache);
-        if (n < 0 || n > maxContacts)
-            return n; /* the dispatcher reports it */
-        return keepPlausible(builtIn, reach, tm1, tm2, tolerance, contacts, n);
-    }
+    return keepIf(contacts, n, METRUE, MEFALSE, -MEINFINITY, tolerance * ME_R(1.01), NULL, MEINFINITY, MEINFINITY);
+}
+
+int McdNfKeepPlausible(MeReal reach, MeMatrix4 tm1, MeMatrix4 tm2, MeReal tolerance, McdContact *contacts, int n)
+{
+    const MeReal bound = MeVector3Distance(tm1[3], tm2[3]) + ME_R(2.0) * reach + tolerance;
+    const MeReal shallowest = tolerance * ME_R(1.01) + MCD_NF_REL_EPS * bound;
+    /* Finite bounds reject by themselves what McdNfContactIsValid's finiteness tests would: a NaN or
+     * infinite separation fails the depth range, a NaN or infinite position withinDistance, and a NaN
+     * or infinite normal is not of unit length. So with them only the normal's length is tested. */
+    const MeBool finiteTests = !(isfinite(bound) && isfinite(shallowest));
+    return finiteTests ? keepIf(contacts, n, METRUE, METRUE, -bound, shallowest, tm1[3], bound, bound * bound)
+                       : keepIf(contacts, n, MEFALSE, METRUE, -bound, shallowest, tm1[3], bound, bound * bound);
+}
+
+int McdNfCallInPairFrame(McdNearfieldFn fn, const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2,
+                         MeMatrix4 tm2, MeReal reach, MeReal tolerance, McdContact *contacts, int maxContacts,
+                         void **cache)
+{
     MeMatrix4 a, b;
     MeVector3 origin;
+    int n, k;
     MeVector3Copy(origin, tm1[3]);
     MeMatrix4Copy(a, tm1);
     MeMatrix4Copy(b, tm2);
     MeVector3Set(a[3], ME_R(0.0), ME_R(0.0), ME_R(0.0));
     MeVector3Subtract(b[3], tm2[3], origin);
     n = fn(g1, a, g2, b, tolerance, contacts, maxContacts, cache);
-    if (n < 0 || n > maxContacts)
-        return n;
-    n = keepPlausible(builtIn, reach, a, b, tolerance, contacts, n);
+    if (n <= 0 || n > maxContacts)
+        return n; /* none, or the dispatcher reports it */
+    n = McdNfKeepPlausible(reach, a, b, tolerance, contacts, n);
     for (k = 0; k < n; k++)
         MeVector3Add(contacts[k].position, contacts[k].position, origin);
     return n;
