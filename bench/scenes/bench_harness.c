@@ -16,6 +16,7 @@ typedef struct Options {
     double budget;   /* s of CPU time in timed steps per run */
     int header, list;
     int trace;       /* >= 0: print this body's pose every 60 steps to stderr */
+    int stepTimes;   /* print every step's CPU time to stderr */
 } Options;
 
 static double clock_seconds(clockid_t clock)
@@ -37,6 +38,15 @@ static double median(double *v, int n)
         return NAN;
     qsort(v, (size_t)n, sizeof *v, compare_double);
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* The 99th percentile (nearest rank) of v[0..n), which median() has sorted. */
+static double percentile99(const double *sorted, int n)
+{
+    if (n <= 0)
+        return NAN;
+    int rank = (99 * n + 99) / 100; /* ceil(0.99 n), 1-based */
+    return sorted[rank - 1];
 }
 
 /* Is `name` one of the comma-separated `list` (NULL: everything)? */
@@ -95,6 +105,8 @@ static void run_one(const BenchEngine *e, const BenchScene *scene, const Options
                 note = why;
                 break;
             }
+            if (opt->stepTimes)
+                fprintf(stderr, "    step %5d cpu_ms %.4f wall_ms %.4f\n", done + 1, dc * 1e3, dt * 1e3);
             cpuTimes[done] = dc;
             times[done++] = dt;
             spent += dt;
@@ -123,18 +135,21 @@ static void run_one(const BenchEngine *e, const BenchScene *scene, const Options
         note = "non-finite state";
     double mean = done ? spent / done * 1e3 : (double)NAN;
     double med = median(times, done) * 1e3, cpu = median(cpuTimes, done) * 1e3;
+    double p99 = percentile99(times, done) * 1e3, cpuP99 = percentile99(cpuTimes, done) * 1e3;
     const char *standing = quality.standing < 0 ? "-" : quality.standing ? "yes" : "no";
     if (done == steps || quality.nonFinite)
-        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,%.6g,%s,%.4f,%.6g,%s\n", e->engine, e->variant, scene->name,
-               scene->dynamicCount, steps, done, med, mean, cpu, done ? contacts / done : 0.0, scene->qualityName,
-               quality.value, standing, quality.floorPenetration, quality.meanJointError, note);
+        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,%.6g,%s,%.4f,%.6g,%s,%.4f,%.4f\n", e->engine, e->variant,
+               scene->name, scene->dynamicCount, steps, done, med, mean, cpu, done ? contacts / done : 0.0,
+               scene->qualityName, quality.value, standing, quality.floorPenetration, quality.meanJointError, note, p99,
+               cpuP99);
     else /* an incomplete run has no quality figure: it was not measured at the scene's time */
-        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,,-,,,%s\n", e->engine, e->variant, scene->name,
+        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,,-,,,%s,%.4f,%.4f\n", e->engine, e->variant, scene->name,
                scene->dynamicCount, steps, done, med, mean, cpu, done ? contacts / done : 0.0, scene->qualityName,
-               note);
+               note, p99, cpuP99);
     fflush(stdout);
-    fprintf(stderr, "  %-6s %-14s %-10s %5d steps, %8.3f ms/step (CPU %.3f), %s\n", e->engine, e->variant,
-            scene->name, done, med, cpu, *note ? note : "ok");
+    fprintf(stderr, "  %-6s %-14s %-10s %5d steps, %8.3f ms/step (CPU %.3f, CPU p99 %.3f = %.2f x median), %s\n",
+            e->engine, e->variant, scene->name, done, med, cpu, cpuP99, cpu > 0 ? cpuP99 / cpu : (double)NAN,
+            *note ? note : "ok");
     free(pos), free(quat), free(times), free(cpuTimes);
 }
 
@@ -156,12 +171,14 @@ static int parse_options(int argc, char **argv, Options *opt)
             opt->budget = atof(a + 9);
         else if (strncmp(a, "--trace=", 8) == 0)
             opt->trace = atoi(a + 8);
+        else if (strcmp(a, "--step-times") == 0)
+            opt->stepTimes = 1;
         else if (strcmp(a, "--header") == 0)
             opt->header = 1;
         else if (strcmp(a, "--list") == 0)
             opt->list = 1;
         else {
-            fprintf(stderr, "unknown option '%s' (--scenes= --variants= --steps= --budget= --trace= --header --list)\n", a);
+            fprintf(stderr, "unknown option '%s' (--scenes= --variants= --steps= --budget= --trace= --step-times --header --list)\n", a);
             return 0;
         }
     }

@@ -112,6 +112,8 @@ BenchScene *BenchSceneChain(int links);
 BenchScene *BenchSceneRagdolls(int count);
 /** `boxes` unit boxes (1 kg) stacked exactly on top of each other; 1200 steps (20 s). */
 BenchScene *BenchSceneColumn(int boxes);
+/** `boxes` boxes of random sizes dropped at random onto the open ground: a heap that settles (sleeping). */
+BenchScene *BenchSceneHeap(int boxes);
 
 /** A scene by name: pyramid<N>, pile[<N>] (N spheres and N boxes, default 500), chain[<N>] (default
  *  100), ragdolls[<N>] (default 100), column[<N>] (default 20). NULL for an unknown name. */
