@@ -10,9 +10,9 @@
  * The four quantities are, by default, the body's mean velocities and fitted accelerations over the
  * world's averaging time (rest_window.c: a settled heap's solver noise averages out there, steady
  * motion does not); MdtWorldSetAutoDisableAveragingTime(w, 0) judges the last step alone, as Karma
- * 1.2 did. A body the partitioner woke this step
- * has no window yet and is judged by its last step (it was asleep: all zero). MdtBodyIsMovingTest,
- * whose parameters are 1.2's, keeps 1.2's test of the body's present velocities and accelerations. */
+ * 1.2 did. A body the partitioner woke this step has no record yet and is judged by its last step
+ * (it was asleep: all zero). MdtBodyIsMovingTest, whose parameters are 1.2's, keeps 1.2's test of the
+ * body's present velocities and accelerations. */
 #include <karma/MdtPartition.h>
 
 #include "../me/check.h"
