@@ -17,6 +17,7 @@ typedef struct Options {
     int header, list;
     int trace;       /* >= 0: print this body's pose every 60 steps to stderr */
     const char *set; /* the scenes --list lists and --scenes defaults to */
+    int stepTimes;   /* print every step's CPU time to stderr */
 } Options;
 
 static double clock_seconds(clockid_t clock)
@@ -105,6 +106,8 @@ static void run_one(const BenchEngine *e, const BenchScene *scene, const Options
                 note = why;
                 break;
             }
+            if (opt->stepTimes)
+                fprintf(stderr, "    step %5d cpu_ms %.4f wall_ms %.4f\n", done + 1, dc * 1e3, dt * 1e3);
             cpuTimes[done] = dc;
             times[done++] = dt;
             spent += dt;
@@ -145,8 +148,9 @@ static void run_one(const BenchEngine *e, const BenchScene *scene, const Options
                scene->dynamicCount, steps, done, med, mean, cpu, done ? contacts / done : 0.0, scene->qualityName,
                note, p99, p99cpu);
     fflush(stdout);
-    fprintf(stderr, "  %-6s %-14s %-10s %5d steps, %8.3f ms/step (CPU %.3f), %s\n", e->engine, e->variant,
-            scene->name, done, med, cpu, *note ? note : "ok");
+    fprintf(stderr, "  %-6s %-14s %-10s %5d steps, %8.3f ms/step (CPU %.3f, CPU p99 %.3f = %.2f x median), %s\n",
+            e->engine, e->variant, scene->name, done, med, cpu, p99cpu, cpu > 0 ? p99cpu / cpu : (double)NAN,
+            *note ? note : "ok");
     free(pos), free(quat), free(times), free(cpuTimes);
 }
 
@@ -179,6 +183,8 @@ static int parse_options(int argc, char **argv, Options *opt)
             opt->set = BENCH_STANDARD_SCENES "," BENCH_OTHERS_SCENES;
         else if (strncmp(a, "--threads=", 10) == 0)
             BenchThreads = atoi(a + 10);
+        else if (strcmp(a, "--step-times") == 0)
+            opt->stepTimes = 1;
         else if (strcmp(a, "--header") == 0)
             opt->header = 1;
         else if (strcmp(a, "--list") == 0)
@@ -186,7 +192,7 @@ static int parse_options(int argc, char **argv, Options *opt)
         else {
             fprintf(stderr,
                     "unknown option '%s' (--scenes= --set=standard|others|all --variants= --steps= --budget= --trace= "
-                    "--threads= --header --list)\n",
+                    "--threads= --step-times --header --list)\n",
                     a);
             return 0;
         }

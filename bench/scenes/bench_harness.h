@@ -10,9 +10,9 @@
  *   engine,variant,scene,bodies,steps,steps_run,median_ms,mean_ms,median_cpu_ms,mean_contacts,
  *   quality_name,quality_value,standing,floor_pen_m,mean_joint_err_m,note,p99_ms,p99_cpu_ms
  * median_ms and mean_ms are wall time (CLOCK_MONOTONIC); median_cpu_ms is the process CPU time of
- * the step (CLOCK_PROCESS_CPUTIME_ID), which a loaded machine inflates far less; p99_ms and p99_cpu_ms
- * are the 99th percentiles (nearest rank) of the same (after note, so that readers of the older
- * columns by position are unchanged).
+ * the step (CLOCK_PROCESS_CPUTIME_ID), which a loaded machine inflates far less.
+ * p99_ms and p99_cpu_ms are the 99th-percentile step (nearest rank), wall and CPU: a game budgets for
+ * its worst frames, and p99 / median says how steady the steps are (issue 17 point 4).
  * standing is yes / no / - (no verdict); note says why a run stopped early (no commas). Progress goes
  * to stderr. */
 #ifndef KARMA_BENCH_HARNESS_H
@@ -57,6 +57,7 @@ typedef struct BenchEngine {
  *    --trace=I          print body I's pose every 60 steps to stderr
  *    --threads=N        threads an engine may step with (BenchThreads; default 1; engines without
  *                       threads ignore it)
+ *    --step-times       print every timed step's CPU and wall time (ms) to stderr
  *    --header           print the CSV header first
  *    --list             list variants and scenes and exit
  *  Returns the process exit status (0, or 2 on a bad argument). */

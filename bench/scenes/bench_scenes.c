@@ -258,6 +258,43 @@ BenchScene *BenchScenePile(int spheres, int boxes)
     return s;
 }
 
+BenchScene *BenchSceneHeap(int boxes)
+{
+    if (boxes < 1)
+        return NULL;
+    BenchScene *s = scene_new("heap", boxes, 200, boxes, 0);
+    if (!s)
+        return NULL;
+    /* Boxes of 0.6 to 1.2 m sides at random orientations, 16 to a layer on a 4 x 4 grid 1.6 m apart
+     * (jittered by ±0.1 m; no two overlap), layers 1.6 m apart, dropped onto the open ground: a heap
+     * that collapses, spreads and settles, the case of a fallen stack (issue 17 point 6). 30 s: long
+     * enough to go to sleep. */
+    unsigned long long rng = 17;
+    for (int i = 0; i < boxes; i++) {
+        int layer = i / 16, j = i % 16;
+        double p[3] = {((j % 4) - 1.5) * 1.6 + 0.1 * jitter(&rng), 1.0 + 1.6 * layer,
+                       ((j / 4) - 1.5) * 1.6 + 0.1 * jitter(&rng)};
+        double axis[3] = {jitter(&rng), jitter(&rng), jitter(&rng)}, q[4];
+        double len = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]) + 1e-9;
+        for (int k = 0; k < 3; k++)
+            axis[k] /= len;
+        BenchQuatFromAxisAngle(q, axis, 3.14159265358979 * jitter(&rng));
+        double hx = 0.45 + 0.15 * jitter(&rng), hy = 0.45 + 0.15 * jitter(&rng), hz = 0.45 + 0.15 * jitter(&rng);
+        add_body(s, BENCH_BOX, hx, hy, hz, 8.0 * hx * hy * hz, p, q, 0);
+    }
+    snprintf(s->description, sizeof s->description,
+             "%d boxes (0.6-1.2 m) dropped at random onto the open ground, a heap that settles, 30 s", boxes);
+    s->steps = 1800;
+    s->quality = BENCH_Q_ESCAPED;
+    s->qualityName = "escaped";
+    s->container[0][0] = s->container[0][2] = -1e6;
+    s->container[1][0] = s->container[1][2] = 1e6;
+    s->container[0][1] = -0.1;
+    s->container[1][1] = 1e6;
+    scene_finish(s);
+    return s;
+}
+
 BenchScene *BenchSceneChain(int links)
 {
     if (links < 1)
@@ -488,6 +525,8 @@ BenchScene *BenchSceneCreate(const char *name)
         return BenchSceneRagdolls(n);
     if ((n = parse_count(name, "column", 20)) > 0)
         return BenchSceneColumn(n);
+    if ((n = parse_count(name, "heap", 200)) > 0)
+        return BenchSceneHeap(n);
     return BenchSceneOthersCreate(name);
 }
 

@@ -126,6 +126,8 @@ BenchScene *BenchSceneChain(int links);
 BenchScene *BenchSceneRagdolls(int count);
 /** `boxes` unit boxes (1 kg) stacked exactly on top of each other; 1200 steps (20 s). */
 BenchScene *BenchSceneColumn(int boxes);
+/** `boxes` boxes of random sizes dropped at random onto the open ground: a heap that settles (sleeping). */
+BenchScene *BenchSceneHeap(int boxes);
 
 /* The scene set of others' making (issue 17; sources and mappings in bench/scenes/README.md). */
 /** Box2D's large pyramid: touching unit boxes (1 kg), `base` at the bottom, one deep (x), rows along z. */

@@ -19,6 +19,9 @@
 #define MDTWORLD_DEFAULT_ACC_THRESH ME_R(0.05)
 #define MDTWORLD_DEFAULT_ACCROT_THRESH ME_R(0.05)
 #define MDTWORLD_DEFAULT_ALIVE_TIME_THRESH ME_R(0.2)
+/* Seconds auto-disable averages a body's motion over (not in Karma 1.2, whose test is the last step's:
+ * MdtWorldSetAutoDisableAveragingTime, src/mdt/rest_window.c). */
+#define MDTWORLD_DEFAULT_AVERAGING_TIME ME_R(0.5)
 
 /* Runaway reports and the contacts' correction speed (not in Karma 1.2; docs/step.md): m/s scaled by
  * lengthScale, rad/s unscaled. */

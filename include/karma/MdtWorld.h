@@ -155,6 +155,16 @@ ME_API void MdtWorldSetAutoDisableAccelerationThreshold(MdtWorldID w, MeReal at)
 ME_API void MdtWorldSetAutoDisableAngularAccelerationThreshold(MdtWorldID w, MeReal aat);
 /** Seconds a body must have been enabled before it may be auto-disabled. Default 0.2. */
 ME_API void MdtWorldSetAutoDisableAliveTime(MdtWorldID w, MeReal aw);
+/** Seconds over which auto-disable averages each body's motion before comparing it with the four
+ *  thresholds (this library's addition, docs/api_changes.md): the mean velocity and angular velocity
+ *  and the fitted (least-squares) acceleration and angular acceleration over that time, so that a
+ *  settled heap's solver noise averages out while steady motion is judged as in Karma 1.2. A body can
+ *  be disabled only once it has been enabled that long (and longer than the alive time). 0 judges the
+ *  last step alone: Karma 1.2's test. Default MDTWORLD_DEFAULT_AVERAGING_TIME (0.5 s); rejects a
+ *  negative or non-finite time (message, no change). */
+ME_API void MdtWorldSetAutoDisableAveragingTime(MdtWorldID w, MeReal t);
+/** MdtWorldSetAutoDisableAveragingTime's setting (s); 0 for a bad world. */
+ME_API MeReal MdtWorldGetAutoDisableAveragingTime(MdtWorldID w);
 /** Iteration cap of the LCP solver (≥ 1). Default 10. */
 ME_API void MdtWorldSetMaxLCPIterations(MdtWorldID w, int mi);
 /** Choose the LCP method (default MdtLCPSolverAuto). */

@@ -5,19 +5,37 @@
  * acceleration below the world's thresholds, and has been enabled for longer than the alive window
  * (bodies woken by the partitioner this step are exempt from the window: a resting stack that a
  * constraint touched goes back to sleep at once). Disabling calls the world's disable callback, which
- * the bridge uses to freeze the collision models. Forces do not wake bodies; constraints do. */
+ * the bridge uses to freeze the collision models. Forces do not wake bodies; constraints do.
+ *
+ * The four quantities are, by default, the body's mean velocities and fitted accelerations over the
+ * world's averaging time (rest_window.c: a settled heap's solver noise averages out there, steady
+ * motion does not); MdtWorldSetAutoDisableAveragingTime(w, 0) judges the last step alone, as Karma
+ * 1.2 did. A body the partitioner woke this step has no record yet and is judged by its last step
+ * (it was asleep: all zero). MdtBodyIsMovingTest, whose parameters are 1.2's, keeps 1.2's test of the
+ * body's present velocities and accelerations. */
 #include <karma/MdtPartition.h>
 
 #include "../me/check.h"
 #include "constraint.h"
 #include "world.h"
 
-MeBool MdtBodyAtRest(const MdtBodyData *b, const MdtAutoDisableParams *p)
+static MeBool underThresholds(const MeVector3 vel, const MeVector3 velrot, const MeVector3 accel,
+                              const MeVector3 accelrot, const MdtAutoDisableParams *p)
 {
-    return MeVector3MagnitudeSqr(b->vel) < p->velocity && MeVector3MagnitudeSqr(b->velrot) < p->angularVelocity &&
-           MeVector3MagnitudeSqr(b->accel) < p->acceleration &&
-           MeVector3MagnitudeSqr(b->accelrot) < p->angularAcceleration &&
-           (b->enabledTime > p->aliveTime || b->enabledByPartitioner);
+    return MeVector3MagnitudeSqr(vel) < p->velocity && MeVector3MagnitudeSqr(velrot) < p->angularVelocity &&
+           MeVector3MagnitudeSqr(accel) < p->acceleration && MeVector3MagnitudeSqr(accelrot) < p->angularAcceleration;
+}
+
+MeBool MdtBodyAtRest(const MdtBodyData *b, const MdtAutoDisableParams *p, MeReal h)
+{
+    if (b->enabledByPartitioner || !(p->averagingTime > 0))
+        return underThresholds(b->vel, b->velrot, b->accel, b->accelrot, p) &&
+               (b->enabledTime > p->aliveTime || b->enabledByPartitioner);
+    if (!(b->enabledTime > p->aliveTime))
+        return MEFALSE;
+    MeVector3 vel, velrot, accel, accelrot;
+    return MdtBodyRestWindowMeans(b, h, vel, velrot, accel, accelrot) &&
+           underThresholds(vel, velrot, accel, accelrot, p);
 }
 
 void MdtAutoDisableStage(MdtWorldData *w)
@@ -31,7 +49,7 @@ void MdtAutoDisableStage(MdtWorldData *w)
         int cStart = out->constraintStart[p], cEnd = out->constraintStart[p + 1];
         MeBool rest = METRUE;
         for (int i = start; i < end && rest; i++)
-            rest = MdtBodyAtRest(out->bodies[i], &w->autoDisable);
+            rest = MdtBodyAtRest(out->bodies[i], &w->autoDisable, w->stepSize);
         if (rest) {
             for (int i = start; i < end; i++) {
                 MdtBodyData *b = out->bodies[i];
@@ -78,6 +96,7 @@ MeBool MdtBodyIsMovingTest(MdtBodyID id, const MdtPartitionParams *params)
                                     .angularVelocity = params->velrot_thresh,
                                     .acceleration = params->acc_thresh,
                                     .angularAcceleration = params->accrot_thresh,
-                                    .aliveTime = params->alive_time_thresh};
-    return !MdtBodyAtRest(b, &p);
+                                    .aliveTime = params->alive_time_thresh,
+                                    .averagingTime = 0}; /* 1.2's test of the body's present state */
+    return !MdtBodyAtRest(b, &p, b->world->stepSize);
 }

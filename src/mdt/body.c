@@ -109,6 +109,7 @@ void MdtBodySetEnabledInternal(MdtBodyData *b, MeBool enabled)
     if (enabled) {
         w->enabledBodyCount++;
         b->enabledTime = 0;
+        MdtBodyRestWindowRestart(b);
         if (w->bodyEnableCB)
             w->bodyEnableCB((MdtBodyID)b->id, w->bodyEnableData);
     } else {
@@ -147,6 +148,7 @@ static void setDefaults(MdtBodyData *b)
     MeVector3Set(b->impulse, 0, 0, 0);
     MeVector3Set(b->angularImpulse, 0, 0, 0);
     b->enabledTime = 0;
+    MdtBodyRestWindowRestart(b);
     b->partition = -1;
     b->stepIndex = -1;
     b->speedWarned = MEFALSE;
@@ -664,6 +666,7 @@ void MdtBodySetLinearVelocity(MdtBodyID id, MeReal dx, MeReal dy, MeReal dz)
     BODY_OR_RETURN(b, id, ME_NOTHING);
     ME_CHECK_FINITE3(dx, dy, dz, ME_NOTHING);
     MeVector3Set(b->vel, dx, dy, dz);
+    MdtBodyRestWindowRestart(b); /* its motion so far no longer says whether it is at rest */
 }
 
 void MdtBodySetAngularVelocity(MdtBodyID id, MeReal wx, MeReal wy, MeReal wz)
@@ -671,6 +674,7 @@ void MdtBodySetAngularVelocity(MdtBodyID id, MeReal wx, MeReal wy, MeReal wz)
     BODY_OR_RETURN(b, id, ME_NOTHING);
     ME_CHECK_FINITE3(wx, wy, wz, ME_NOTHING);
     MeVector3Set(b->velrot, wx, wy, wz);
+    MdtBodyRestWindowRestart(b);
 }
 
 static MeBool checkDamping(MeReal d, const char *function)

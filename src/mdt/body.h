@@ -15,6 +15,9 @@
 
 struct MdtWorldData;
 
+/* Blocks the rest window is cut into (mdt/rest_window.c); one more holds the block being filled. */
+#define MDT_REST_BLOCKS 8
+
 typedef struct MdtBodyData {
     uintptr_t id;            /* this body's own checked ID */
     struct MdtWorldData *world;
@@ -63,6 +66,14 @@ typedef struct MdtBodyData {
     MeVector4 stepStartQ;
     MeBool speedWarned;            /* reported over a speed limit, not yet back under both */
     MeBool energyWarned;           /* in a partition reported for an energy jump that has not calmed */
+
+    /* rest window (rest_window.c): sums of velocity and angular velocity over blocks of steps since
+     * the body was enabled or its velocity set; a ring of MDT_REST_BLOCKS + 1 blocks, the newest being
+     * filled */
+    MeReal restSum[MDT_REST_BLOCKS + 1][6];
+    int restCount[MDT_REST_BLOCKS + 1]; /* steps summed in each block */
+    int restNewest;                     /* ring index of the block being filled */
+    int restFull;                       /* complete blocks (saturates at MDT_REST_BLOCKS) */
 
     /* constraints attached to this body: a singly linked list through the constraints (later) */
     void *firstConstraint;

@@ -47,7 +47,7 @@ static MeBool stateIsFinite(const MdtBodyData *b)
     return ok;
 }
 
-static void integrateBody(MdtBodyData *b, const MeReal *dv, const MeReal *dw, MeReal h)
+static void integrateBody(MdtBodyData *b, const MeReal *dv, const MeReal *dw, MeReal h, int restBlockSteps)
 {
     MeVector3 oldVel, oldVelrot, com;
     MeVector3Copy(oldVel, b->vel);
@@ -62,6 +62,7 @@ static void integrateBody(MdtBodyData *b, const MeReal *dv, const MeReal *dw, Me
     integrateOrientation(b, h);
     MdtBodyUpdateTransforms(b, com);
     b->enabledTime += h;
+    MdtBodyRestWindowRecord(b, restBlockSteps);
 }
 
 void MdtIntegrateStage(MdtWorldData *w)
@@ -69,6 +70,7 @@ void MdtIntegrateStage(MdtWorldData *w)
     MdtPartitionLists *out = &w->partitions;
     const MeReal *deltaVelocities = w->rowsPacked ? (const MeReal *)w->rows.dv : NULL;
     static const MeReal zero[3] = {0, 0, 0};
+    const int restBlockSteps = MdtRestWindowBlockSteps(w->autoDisable.averagingTime, w->stepSize);
     for (int p = 0; p < out->partitionCount; p++) {
         if (out->simError[p])
             continue; /* the solver failed it: restored below, never integrated */
@@ -84,7 +86,7 @@ void MdtIntegrateStage(MdtWorldData *w)
             const MeReal *dw = deltaVelocities ? deltaVelocities + 6 * (size_t)i + 3 : zero;
             if (sumEnergies)
                 predicted += MdtBodyKineticEnergy(b, b->velStar, b->velrotStar);
-            integrateBody(b, dv, dw, w->stepSize);
+            integrateBody(b, dv, dw, w->stepSize, restBlockSteps);
             if (sumEnergies)
                 after += MdtBodyKineticEnergy(b, b->vel, b->velrot);
             finite &= stateIsFinite(b);

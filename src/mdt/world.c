@@ -47,6 +47,7 @@ void MdtWorldSetDefaults(MdtWorldData *w)
     w->autoDisable.acceleration = DEFAULT_AD_ACCELERATION * l2;
     w->autoDisable.angularAcceleration = DEFAULT_AD_ANGULAR_ACCELERATION;
     w->autoDisable.aliveTime = DEFAULT_AD_ALIVE_TIME;
+    w->autoDisable.averagingTime = MDTWORLD_DEFAULT_AVERAGING_TIME;
     w->checkSim = METRUE;
     w->speedLimit = MDTWORLD_DEFAULT_SPEED_LIMIT * w->lengthScale;
     w->angularSpeedLimit = MDTWORLD_DEFAULT_ANGULAR_SPEED_LIMIT;
@@ -384,6 +385,12 @@ void MdtWorldSetAutoDisable(MdtWorldID id, MeBool d)
     w->autoDisable.enabled = d ? METRUE : MEFALSE;
 }
 
+MeReal MdtWorldGetAutoDisableAveragingTime(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return w->autoDisable.averagingTime;
+}
+
 /* All auto-disable thresholds share one check: finite and not negative. */
 static void setThreshold(MdtWorldID id, MeReal value, size_t offset, const char *function)
 {
@@ -425,6 +432,11 @@ void MdtWorldSetAutoDisableAngularAccelerationThreshold(MdtWorldID id, MeReal aa
 void MdtWorldSetAutoDisableAliveTime(MdtWorldID id, MeReal aw)
 {
     setThreshold(id, aw, offsetof(MdtAutoDisableParams, aliveTime), __func__);
+}
+
+void MdtWorldSetAutoDisableAveragingTime(MdtWorldID id, MeReal t)
+{
+    setThreshold(id, t, offsetof(MdtAutoDisableParams, averagingTime), __func__);
 }
 
 void MdtWorldSetMaxLCPIterations(MdtWorldID id, int mi)

@@ -30,6 +30,7 @@ typedef struct MdtAutoDisableParams {
     MeBool enabled;
     MeReal velocity, angularVelocity, acceleration, angularAcceleration; /* squared magnitudes */
     MeReal aliveTime;                                                    /* seconds */
+    MeReal averagingTime; /* seconds the motion is averaged over (rest_window.c); 0: the last step alone */
 } MdtAutoDisableParams;
 
 struct MdtConstraintData;
@@ -183,8 +184,18 @@ void MdtWorldLogMatrixSize(MdtWorldData *w, int rows);
 void MdtWorldDebugDraw(MdtWorldData *w);
 /* Add one constraint to Karma 1.2's counts of a partition (partition_info.c). */
 void MdtPartitionInfoAdd(MdtPartitionInfo *info, const struct MdtConstraintData *c);
-/* Whether a body counts as at rest for auto-disable under `p` (autodisable.c). */
-MeBool MdtBodyAtRest(const MdtBodyData *b, const MdtAutoDisableParams *p);
+/* Whether a body counts as at rest for auto-disable under `p` and step size h (autodisable.c). */
+MeBool MdtBodyAtRest(const MdtBodyData *b, const MdtAutoDisableParams *p, MeReal h);
+/* Rest window (rest_window.c): forget the body's motion (it was enabled or its velocity set). */
+void MdtBodyRestWindowRestart(MdtBodyData *b);
+/* Rest window: add the body's velocities after a step, in blocks of blockSteps steps. */
+void MdtBodyRestWindowRecord(MdtBodyData *b, int blockSteps);
+/* Rest window: the steps per block for an averaging time (s) and step size h (s). */
+int MdtRestWindowBlockSteps(MeReal averagingTime, MeReal h);
+/* Rest window: mean velocity and angular velocity and fitted acceleration and angular acceleration
+ * over the window, for steps of size h; MEFALSE while the window is not yet complete. */
+MeBool MdtBodyRestWindowMeans(const MdtBodyData *b, MeReal h, MeVector3 vel, MeVector3 velrot, MeVector3 accel,
+                              MeVector3 accelrot);
 /* Kinetic energy of a body for velocities v, w (world frame), with its inertia in use (runaway.c). */
 MeReal MdtBodyKineticEnergy(const MdtBodyData *b, const MeVector3 v, const MeVector3 w);
 /* After integrating partition p: report its bodies over the speed limits and an energy jump from

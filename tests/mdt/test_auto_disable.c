@@ -6,6 +6,8 @@
 
 #include <karma/Mdt.h>
 
+#include <math.h>
+
 static const MeVector3 half = {0.5f, 0.5f, 0.5f}, up = {0, 0, 1};
 static int enabledCalls, disabledCalls;
 static void onEnable(MdtBodyID b, void *d)
@@ -127,11 +129,110 @@ static void one_moving_body_keeps_its_partition_awake(void **state)
     MdtWorldDestroy(s.world);
 }
 
+/* ---- the averaging time (MdtWorldSetAutoDisableAveragingTime, src/mdt/rest_window.c) ------------- */
+
+/* A lone body in a world without gravity, pushed by `force` (N, along x, 1 kg) from velocity v0 (m/s);
+ * the step at which it was disabled (0 if never) within `steps` steps of 1/60 s. `alternate` flips the
+ * force's sign every step (a body shaken in place: its velocity alternates, its mean does not grow). */
+static int stepsToSleep(MeReal averagingTime, MeReal v0, MeReal force, MeBool alternate, int steps)
+{
+    MdtWorldID w = MdtWorldCreate(2, 2, 1, 1);
+    MdtWorldSetAutoDisableAveragingTime(w, averagingTime);
+    MdtWorldSetAutoDisableAccelerationThreshold(w, ME_R(0.01)); /* |a| < 0.1 m/s² */
+    MdtBodyID b = MdtBodyCreate(w);
+    MdtBodySetMass(b, 1);
+    MdtBodyEnable(b);
+    MdtBodySetLinearVelocity(b, v0, 0, 0);
+    int slept = 0;
+    for (int i = 1; i <= steps && !slept; i++) {
+        MdtBodyAddForce(b, alternate && (i % 2) ? -force : force, 0, 0);
+        MdtWorldStep(w, ME_R(1.0) / 60);
+        if (!MdtBodyIsEnabled(b))
+            slept = i;
+    }
+    MdtWorldDestroy(w);
+    return slept;
+}
+
+/* Steady motion is judged as Karma 1.2 judges it, averaged or not: a body coasting at a squared speed
+ * 10 % over the threshold (0.02) never sleeps, 10 % under it sleeps once the window is full; a body
+ * under a constant acceleration 10 % over the threshold (squared 0.011 against 0.01) stays awake while
+ * its speed is still under that threshold (1.2 s), 10 % under it sleeps. */
+static void steady_motion_is_judged_as_in_karma_12(void **state)
+{
+    (void)state;
+    const MeReal over = MeSqrt(ME_R(0.022)), under = MeSqrt(ME_R(0.018));
+    const MeReal push = MeSqrt(ME_R(0.011)), pushUnder = MeSqrt(ME_R(0.009));
+    const MeReal times[2] = {MDTWORLD_DEFAULT_AVERAGING_TIME, 0};
+    for (int k = 0; k < 2; k++) {
+        const MeReal t = times[k];
+        const int coastOver = stepsToSleep(t, over, 0, MEFALSE, 180);
+        const int coastUnder = stepsToSleep(t, under, 0, MEFALSE, 180);
+        const int pushedOver = stepsToSleep(t, 0, push, MEFALSE, 72);
+        const int pushedUnder = stepsToSleep(t, 0, pushUnder, MEFALSE, 72);
+        print_message("averaging %.1f s: coasting over / under the speed threshold: asleep at step %d / %d; "
+                      "accelerating over / under: %d / %d (0: awake)\n",
+                      (double)t, coastOver, coastUnder, pushedOver, pushedUnder);
+        assert_int_equal(coastOver, 0);
+        assert_int_equal(pushedOver, 0);
+        /* the alive window (12 steps), and with averaging the window's 8 blocks of 4 steps */
+        const int latest = t > 0 ? 34 : 14;
+        assert_true(coastUnder > 12 && coastUnder <= latest);
+        assert_true(pushedUnder > 12 && pushedUnder <= latest);
+    }
+}
+
+/* A body shaken in place (its velocity alternates between 0 and 0.1 m/s: one step's acceleration is
+ * 6 m/s², its mean is nothing) never sleeps under 1.2's last-step test and sleeps when averaged: the
+ * heap's case in miniature. */
+static void shaking_in_place_sleeps_only_when_averaged(void **state)
+{
+    (void)state;
+    const MeReal kick = ME_R(0.1) * 60; /* N on 1 kg: 0.1 m/s in one step */
+    const int averaged = stepsToSleep(MDTWORLD_DEFAULT_AVERAGING_TIME, ME_R(0.05), kick, METRUE, 180);
+    const int lastStep = stepsToSleep(0, ME_R(0.05), kick, METRUE, 180);
+    print_message("shaken in place: asleep at step %d averaged, %d judged by the last step (0: awake)\n", averaged,
+                  lastStep);
+    assert_true(averaged > 0 && averaged <= 40);
+    assert_int_equal(lastStep, 0);
+}
+
+/* The setting: default, read back, rejected when negative or not finite (message, no change); the
+ * body's window restarts when its velocity is set, so a body set moving is judged on its new motion. */
+static void averaging_time_setting(void **state)
+{
+    (void)state;
+    MdtWorldID w = MdtWorldCreate(2, 2, 1, 1);
+    assert_true(MdtWorldGetAutoDisableAveragingTime(w) == MDTWORLD_DEFAULT_AVERAGING_TIME);
+    MdtWorldSetAutoDisableAveragingTime(w, ME_R(0.25));
+    assert_true(MdtWorldGetAutoDisableAveragingTime(w) == ME_R(0.25));
+    karma_capture_messages();
+    assert_reports(ME_ERR_NEGATIVE_VALUE, MdtWorldSetAutoDisableAveragingTime(w, -1));
+    assert_reports(ME_ERR_NONFINITE_ARGUMENT, MdtWorldSetAutoDisableAveragingTime(w, (MeReal)NAN));
+    assert_true(MdtWorldGetAutoDisableAveragingTime(w) == ME_R(0.25));
+    assert_reports(ME_ERR_NULL_ARGUMENT, MdtWorldGetAutoDisableAveragingTime(NULL));
+    MdtWorldSetAutoDisableAveragingTime(w, MDTWORLD_DEFAULT_AVERAGING_TIME);
+    /* At rest for 2 s, then set moving at 0.5 m/s just before the step that would have judged it. */
+    MdtBodyID b = MdtBodyCreate(w);
+    MdtBodyEnable(b);
+    MdtWorldSetAutoDisable(w, MEFALSE);
+    for (int i = 0; i < 120; i++)
+        MdtWorldStep(w, ME_R(1.0) / 60);
+    MdtWorldSetAutoDisable(w, METRUE);
+    MdtBodySetLinearVelocity(b, ME_R(0.5), 0, 0);
+    MdtWorldStep(w, ME_R(1.0) / 60);
+    assert_true(MdtBodyIsEnabled(b)); /* its quiet past does not put it to sleep moving */
+    MdtWorldDestroy(w);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(resting_stack_sleeps_and_a_new_constraint_wakes_it),
         cmocka_unit_test(one_moving_body_keeps_its_partition_awake),
+        cmocka_unit_test(steady_motion_is_judged_as_in_karma_12),
+        cmocka_unit_test(shaking_in_place_sleeps_only_when_averaged),
+        cmocka_unit_test(averaging_time_setting),
     };
     MeSetMessageLevel(ME_LEVEL_WARNING);
     return cmocka_run_group_tests(tests, NULL, NULL);

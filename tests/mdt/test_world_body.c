@@ -136,12 +136,14 @@ static void onDisable(MdtBodyID b, void *data)
     disables++;
 }
 
-/* A body at rest sleeps after the alive window; a falling one never does. */
+/* A body at rest sleeps after the alive window; a falling one never does. Karma 1.2's last-step test
+ * (averaging time 0); the averaged test waits for its averaging time too (test_auto_disable.c). */
 static void auto_disable_after_alive_time(void **state)
 {
     (void)state;
     int tag = 0;
     MdtWorldID w = MdtWorldCreate(4, 4, 1, 1);
+    MdtWorldSetAutoDisableAveragingTime(w, 0);
     MdtWorldSetBodyEnableCallback(w, onEnable, &tag);
     MdtWorldSetBodyDisableCallback(w, onDisable, NULL);
     MdtBodyID still = MdtBodyCreate(w), moving = MdtBodyCreate(w);
