@@ -2,8 +2,9 @@
  *
  * Two variants on the same scenes:
  *   default  Karma's defaults: Kea with MdtLCPSolverAuto (exact up to 128 rows per partition,
- *            iterative with 10 sweeps above), ε = 0.01 / massScale, γ = 0.2, auto-disable on with
- *            Karma's thresholds (bodies at rest go to sleep, their models are frozen)
+ *            iterative with 10 sweeps above), ε = 0.01 / massScale (but see "Heavy jointed
+ *            bodies"), γ = 0.2, auto-disable on with Karma's thresholds (bodies at rest go to
+ *            sleep, their models are frozen)
  *   nosleep  the same with auto-disable off (compare with bullet si10-nosleep)
  *
  * What a Karma user writes: one MstUniverse sized from the scene, a plane for the ground and static
@@ -23,6 +24,15 @@
  * typical mass of the scene (docs/decisions.md M5; every demo does), or heavy bodies sink into soft
  * contacts. We pass the mean mass of the scene's dynamic bodies: 1 kg for the boxes, spheres and
  * chain links, 58/11 = 5.3 kg for the ragdolls. lengthScale is 1 (metre-sized bodies).
+ *
+ * Heavy jointed bodies (b2spinner's bar, b2tumbler's walls): Karma's ε is one world-wide compliance,
+ * so every joint row is a spring of stiffness γ/(ε h²) whatever the masses it holds, and a body of
+ * mass m hanging on a joint sags by ε m g h²/γ = 0.01 (m / massScale) g h²/γ (1.4 mm per unit of
+ * m / massScale at 60 Hz, γ 0.2). Karma asks for masses within 100 times massScale (ME_ERR_MASS_SCALE);
+ * where a jointed body is heavier than that, we do what a Karma user does on that warning and set the
+ * world's ε (MdtWorldSetEpsilon) from that body's mass, 0.01 / m: its joints then hold to a tenth of a
+ * millimetre per g, while the light bodies' contacts, already rigid (ε m ≪ 1), do not change. The
+ * other scenes keep ε = 0.01 / massScale (docs/decisions.md, "K-quality" entries).
  *
  * Motors (b2spinner, b2tumbler): a hinge's limit motor (MdtLimitSetLimitedForceMotor) with the scene's
  * speed and torque bound; Karma's angle, body 0 relative to body 1, is the sense the scene's motor
@@ -113,6 +123,19 @@ static double mean_dynamic_mass(const BenchScene *s)
     return n ? sum / n : 1.0;
 }
 
+/* The heaviest dynamic body held by a joint (0 kg when none). */
+static double heaviest_jointed_mass(const BenchScene *s)
+{
+    double heaviest = 0;
+    for (int k = 0; k < s->jointCount; k++)
+        for (int side = 0; side < 2; side++) {
+            int b = s->joints[k].body[side];
+            if (b >= 0 && !s->bodies[b].fixed && s->bodies[b].mass > heaviest)
+                heaviest = s->bodies[b].mass;
+        }
+    return heaviest;
+}
+
 static McdGeometryID make_geometry(McdFrameworkID fw, const BenchBody *b)
 {
     switch (b->shape) {
@@ -177,15 +200,17 @@ static void *karma_create(const BenchScene *scene, MeBool autoDisable)
 
     /* Pools. Models: every body and the ground. Pairs (overlapping boxes, the ground's with every
      * body among them, and one entry per disabled pair): the pile's bottom layers and the pyramids
-     * have up to ~8 neighbours per body. Constraints: joints, one contact group per touching pair and
-     * up to 4 contacts per group (the framework's default contactMaxCount). */
+     * have up to ~8 neighbours per body. Constraints: joints, and for every pair the space can hold a
+     * contact group and up to 4 contacts (the framework's default contactMaxCount): a touching 3-D
+     * block (b2smash) has up to 13 pairs per box, and a full pool drops contacts (the projectile
+     * then passes through the block). */
     int models = scene->bodyCount + 1;
     int pairs = 10 * scene->bodyCount + scene->jointCount + 256;
     MstUniverseSizes sizes = MstUniverseDefaultSizes;
     sizes.dynamicBodiesMaxCount = scene->dynamicCount > 0 ? scene->dynamicCount : 1;
     sizes.collisionModelsMaxCount = models;
     sizes.collisionPairsMaxCount = pairs;
-    sizes.dynamicConstraintsMaxCount = scene->jointCount + 6 * 5 * scene->bodyCount + 256;
+    sizes.dynamicConstraintsMaxCount = scene->jointCount + 5 * pairs;
     sizes.lengthScale = 1;
     sizes.massScale = (MeReal)mean_dynamic_mass(scene);
     w->universe = MstUniverseCreate(&sizes);
@@ -210,6 +235,9 @@ static void *karma_create(const BenchScene *scene, MeBool autoDisable)
     }
     MdtWorldSetGravity(w->world, (MeReal)scene->gravity[0], (MeReal)scene->gravity[1], (MeReal)scene->gravity[2]);
     MdtWorldSetAutoDisable(w->world, autoDisable);
+    double heavy = heaviest_jointed_mass(scene);
+    if (heavy > 100 * (double)sizes.massScale) /* joints on bodies past Karma's mass range: ε for them */
+        MdtWorldSetEpsilon(w->world, (MeReal)((double)MDTWORLD_DEFAULT_EPSILON / heavy));
 
     MdtContactParamsID params = MstBridgeGetContactParams(MstUniverseGetBridge(w->universe), 0, 0);
     MdtContactParamsSetType(params, MdtContactTypeFriction2D);
@@ -380,7 +408,7 @@ int main(int argc, char **argv)
     static const BenchEngine engines[] = {
         {"karma", "default",
          "MstUniverseStep; Kea auto (exact up to 128 rows; else 10 iterations); eps 0.01/massScale (massScale = "
-         "mean body mass); gamma 0.2; auto-disable on; 2D friction NormalForce mu 0.6",
+         "mean body mass; 0.01/m for jointed bodies over 100 x massScale); gamma 0.2; auto-disable on; 2D friction NormalForce mu 0.6",
          karma_create_default, karma_step, karma_contacts, karma_read, karma_destroy, karma_remark},
         {"karma", "nosleep", "as default with auto-disable off", karma_create_nosleep, karma_step, karma_contacts,
          karma_read, karma_destroy, karma_remark},

@@ -1,0 +1,7 @@
+# Karma's side of the benchmark scenes (bench/karma/karma_scenes.c, included by
+# tests/bench/test_karma_scenes.c) with the scenes and the harness it plugs into; the peers are not built.
+target_sources(test_karma_scenes PRIVATE ${PROJECT_SOURCE_DIR}/bench/scenes/bench_scenes.c
+                                         ${PROJECT_SOURCE_DIR}/bench/scenes/bench_scenes_others.c
+                                         ${PROJECT_SOURCE_DIR}/bench/scenes/bench_harness.c)
+target_include_directories(test_karma_scenes PRIVATE ${PROJECT_SOURCE_DIR}/bench/scenes)
+target_link_libraries(test_karma_scenes PRIVATE karma_threads)
