@@ -6,8 +6,8 @@
  * indices, dHeightfield of the same heights (ODE's field is y-up and centred: it is turned by +90
  * degrees about x, local z onto world -y, so its rows are stored in reverse), dBox, dSphere, dCapsule.
  * ODE's own triangulation of the field's cells is kept (the penetration figure measures against the
- * mesh's diagonal). ODE has no convex-trimesh nor convex-heightfield collider of its own in every
- * build: pairs it does not collide are reported by the "fell" column. The pair test: dCollide on the
+ * mesh's diagonal). The mesh is preprocessed for face angles, which ODE's convex-trimesh collider
+ * (libccd) requires. The pair test: dCollide on the
  * two dConvex geoms of each pose, up to 4 contacts. */
 #include <karma/karma.h>
 #include <ode/ode.h>
@@ -170,6 +170,8 @@ static void *ode_create(const CvxScene *s)
         w->mesh = dGeomTriMeshDataCreate();
         dGeomTriMeshDataBuildDouble(w->mesh, w->vertices, 3 * sizeof(dReal), n * n, w->indices,
                                     3 * s->triangleCount, 3 * sizeof(dTriIndex));
+        /* ODE's convex-trimesh collider (libccd) asks for the face angles */
+        dGeomTriMeshDataPreprocess2(w->mesh, 1U << dTRIDATAPREPROCESS_BUILD_FACE_ANGLES, NULL);
         dCreateTriMesh(w->space, w->mesh, NULL, NULL, NULL);
     } else {
         /* ODE's sample (x, row) is at local (x - c, h, row - c), c = (n - 1) / 2; turned +90 degrees

@@ -423,6 +423,9 @@ static void run_scene(const CvxEngine *e, const char *name, int steps, int from)
         sumDepth += d;
         if (d > maxDepth)
             maxDepth = d;
+        if (d > 0.01 && getenv("CVX_VERBOSE")) /* which bodies sink: shape, depth, position */
+            fprintf(stderr, "  body %d (shape %d) %.1f mm deep at (%.2f %.2f %.2f)\n", i, (int)s->bodies[i].shape,
+                    1e3 * d, pos[i][0], pos[i][1], pos[i][2]);
     }
     int counted = s->bodyCount - fell - nonfinite;
     qsort(times, (size_t)s->steps, sizeof *times, cmp_double);

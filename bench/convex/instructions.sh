@@ -1,6 +1,6 @@
 #!/bin/bash
 # Issue 18 point 6: instructions per pair test and per step of the convex and terrain scenes, Karma
-# and Bullet, counted by callgrind over steps FROM+1 ... TO only (the client requests of
+# Bullet and ODE, counted by callgrind over steps FROM+1 ... TO only (the client requests of
 # convex_scenes.c switch the instrumentation on and off), then the top functions of each run.
 # Usage: bash bench/convex/instructions.sh [FROM] [TO] [BUILD]   (default 300 310 build/bench)
 set -e
@@ -10,7 +10,7 @@ B=${3:-build/bench}/bench/convex
 OUT=$(mktemp -d)
 echo "| engine | scene | instructions per test or step |"
 echo "|---|---|---|"
-for e in karma bullet; do
+for e in karma bullet ode; do
   valgrind --tool=callgrind --instr-atstart=no --callgrind-out-file=$OUT/$e.pairs.out $B/convex_$e pairs >/dev/null 2>&1
   ir=$(awk '/^totals:/ {print $2}' $OUT/$e.pairs.out)
   echo "| $e | pairs | $((ir / 2048)) |"
