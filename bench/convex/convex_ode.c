@@ -5,9 +5,9 @@
  * from the same points: ODE takes planes and polygons, not points), dTriMesh over the same vertices and
  * indices, dHeightfield of the same heights (ODE's field is y-up and centred: it is turned by +90
  * degrees about x, local z onto world -y, so its rows are stored in reverse), dBox, dSphere, dCapsule.
- * Its cells then split on the same diagonal as the mesh's (vertical rays hit the measure's surface). The mesh is preprocessed for face angles, which ODE's convex-trimesh collider
- * (libccd) requires. The pair test: dCollide on the
- * two dConvex geoms of each pose, up to 4 contacts. */
+ * Its cells then split on the same diagonal as the mesh's (vertical rays hit the measure's surface).
+ * The mesh is preprocessed for face angles, which ODE's convex-trimesh collider (libccd) requires.
+ * The pair test: dCollide on the two dConvex geoms of each pose, up to 4 contacts. */
 #include <karma/karma.h>
 #include <ode/ode.h>
 
