@@ -144,7 +144,9 @@ typedef struct KeaStats {
     KeaStatus status;   /**< same as KeaSolve's return value */
     int rows;           /**< nRows */
     int bodies;         /**< nBodies */
-    int iterations;     /**< iterative: Gauss-Seidel sweeps done */
+    int iterations;     /**< iterative: Gauss-Seidel sweeps done (maxIterations and the extra effort's) */
+    int effortRounds;   /**< iterative: pairs of sweeps added because the residual stayed high
+                             (KEA_EFFORT_RESIDUAL, kea_tuning.h) */
     int subspaceSteps;  /**< iterative: conjugate-gradient steps done (all sweeps) */
     int subspaceSkipped; /**< iterative: subspace minimisations skipped (the active set still moving,
                               or the last one did not pay) */
