@@ -136,6 +136,10 @@ typedef struct KeaParameters {
                                  3 or more); 1 = scalar PGS; at most KEA_MAX_BLOCK_ROWS; default 12 */
     int maxPivots;          /**< direct: cap on active-set changes; 0 = automatic (8 n + 64) */
     int maxFrictionPasses;  /**< direct: box-QP passes for friction links; default 8 */
+    MeReal effortResidual;  /**< iterative: extra effort (kea_iterative.c): while a round's last sweep
+                                 leaves a residual above this (velocity units), two more sweeps, up to
+                                 KEA_EFFORT_FACTOR maxIterations more; 0 = none, the default here (the
+                                 world sets KEA_EFFORT_RESIDUAL x its length scale, docs/kea.md) */
 } KeaParameters;
 
 /** What a solve did. */

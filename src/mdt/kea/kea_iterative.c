@@ -198,20 +198,21 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
             w.dv[b].ang[k] = dv[b].ang[k];
         }
 
-    /* maxIterations sweeps, then the extra effort (kea_tuning.h): while the last sweep leaves a
-     * residual above KEA_EFFORT_RESIDUAL, two more (so that the last still runs backwards), up to
+    /* maxIterations sweeps, then the extra effort (params->effortResidual, kea_tuning.h): while the
+     * last sweep leaves a residual above it, two more (so that the last still runs backwards), up to
      * KEA_EFFORT_FACTOR maxIterations more in all. */
     limit = params->maxIterations;
     for (it = 1; it <= limit; ++it) {
-        const int mayExtend = it == limit && limit < params->maxIterations * (1 + KEA_EFFORT_FACTOR);
-        const MeReal measureUpTo = mayExtend ? KeaMax(params->tolerance, KEA_EFFORT_RESIDUAL) : params->tolerance;
+        const int mayExtend = it == limit && params->effortResidual > ME_R(0.0) &&
+                              limit < params->maxIterations * (1 + KEA_EFFORT_FACTOR);
+        const MeReal measureUpTo = mayExtend ? KeaMax(params->tolerance, params->effortResidual) : params->tolerance;
         const MeReal sweepResidual = KeaSweep(problem, &w, params, x, stats, (it & 1) == 0, measureUpTo);
         stats->iterations = it;
         if (sweepResidual <= params->tolerance) {
             status = KeaStatusOk;
             break;
         }
-        if (mayExtend && sweepResidual > KEA_EFFORT_RESIDUAL) {
+        if (mayExtend && sweepResidual > params->effortResidual) {
             limit += 2;
             ++stats->effortRounds;
         }

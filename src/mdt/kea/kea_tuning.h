@@ -21,16 +21,6 @@
 #else
 #  define KEA_PIVOT_FLOOR ME_R(1e-6)
 #  define KEA_DIRECT_TOL ME_R(2e-6)
-/** The extra effort (kea_iterative.c): when the last of a partition's maxIterations sweeps leaves a
- *  residual above KEA_EFFORT_RESIDUAL (m/s), the solve sweeps on, two sweeps at a time with SM
- *  between, until a round's last sweep is within it or KEA_EFFORT_FACTOR maxIterations sweeps were
- *  added. Touching pyramids of 30 to 60 rows need it: at a fixed 10 sweeps an under-converged x
- *  (out-of-plane) mode grows from step to step until a box is kicked (docs/kea_log.md, "Touching
- *  stacks"), and the first settle of a tall stack, cold-started, lets its top boxes fall freely.
- *  Resting stacks that converge leave residuals of 1e-4 to 2e-3 m/s and never pay for it. */
-#define KEA_EFFORT_RESIDUAL ME_R(5e-3)
-#define KEA_EFFORT_FACTOR 1
-
 #endif
 
 /** Auto takes the direct path up to this many times maxDirectRows rows when the factor is sparse:
@@ -80,14 +70,16 @@
  *  precision's small epsilon, below which the residual is rounding noise. */
 #define KEA_SM_CG_STOP (ME_SMALL_EPSILON * ME_SMALL_EPSILON)
 
-/** The extra effort (kea_iterative.c): when the last of a partition's maxIterations sweeps leaves a
- *  residual above KEA_EFFORT_RESIDUAL (m/s), the solve sweeps on, two sweeps at a time with SM
- *  between, until a round's last sweep is within it or KEA_EFFORT_FACTOR maxIterations sweeps were
- *  added. Touching pyramids of 30 to 60 rows need it: at a fixed 10 sweeps an under-converged x
- *  (out-of-plane) mode grows from step to step until a box is kicked (docs/kea_log.md, "Touching
- *  stacks"), and the first settle of a tall stack, cold-started, lets its top boxes fall freely.
- *  Resting stacks that converge leave residuals of 1e-4 to 2e-3 m/s and never pay for it. */
+/** The extra effort (kea_iterative.c, KeaParameters.effortResidual): when the last of a partition's
+ *  maxIterations sweeps leaves a residual above effortResidual, the solve sweeps on, two sweeps at a
+ *  time with SM between, until a round's last sweep is within it or KEA_EFFORT_FACTOR maxIterations
+ *  sweeps were added. The world sets effortResidual to KEA_EFFORT_RESIDUAL (m/s) times its length
+ *  scale. Touching pyramids of 30 to 60 rows need it: at a fixed 10 sweeps an under-converged
+ *  out-of-plane mode grows from step to step until a box is kicked, and the first settle of a tall
+ *  stack, cold-started, lets its top boxes fall freely (docs/kea_log.md, "Touching stacks": 2 mm/s
+ *  costs more sweeps for the same result, 10 mm/s holds less margin; a factor of 2 rather than 1 for
+ *  the 60-row pyramid's first settle). */
 #define KEA_EFFORT_RESIDUAL ME_R(5e-3)
-#define KEA_EFFORT_FACTOR 1
+#define KEA_EFFORT_FACTOR 2
 
 #endif
