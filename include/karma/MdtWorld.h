@@ -155,8 +155,8 @@ ME_API void MdtWorldSetAutoDisableAccelerationThreshold(MdtWorldID w, MeReal at)
 ME_API void MdtWorldSetAutoDisableAngularAccelerationThreshold(MdtWorldID w, MeReal aat);
 /** Seconds a body must have been enabled before it may be auto-disabled. Default 0.2. */
 ME_API void MdtWorldSetAutoDisableAliveTime(MdtWorldID w, MeReal aw);
-/** Sweeps of the iterative LCP solver (≥ 1). Default 10. A partition whose residual stays above
- *  5 mm/s after them gets up to twice as many more (docs/kea.md, "Extra effort"). */
+/** Sweeps of the iterative LCP solver (≥ 1). Default 10. A resting partition whose residual stays
+ *  above 5 mm/s after them gets up to twice as many more (docs/kea.md, "Extra effort"). */
 ME_API void MdtWorldSetMaxLCPIterations(MdtWorldID w, int mi);
 /** Choose the LCP method (default MdtLCPSolverAuto). */
 ME_API void MdtWorldSetLCPSolver(MdtWorldID w, MdtLCPSolver solver);

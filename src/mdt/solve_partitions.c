@@ -51,6 +51,10 @@ void MdtSolveStage(MdtWorldData *w)
     void *workspace = MeChunkGetMem(&w->keaChunk, need);
     if (!workspace)
         return; /* reported by the chunk; the constraints act as if absent this step */
+    /* The extra effort's rest speed is above what gravity adds in this step (kea_tuning.h). */
+    KeaParameters kea = w->kea;
+    if (kea.effortRestSpeed > 0)
+        kea.effortRestSpeed += MeVector3Magnitude(w->gravity) * w->stepSize;
 
     for (int p = 0; p < out->partitionCount; p++) {
         int row0 = r->partitionRowStart[p], rows = r->partitionRowStart[p + 1] - row0;
@@ -81,7 +85,7 @@ void MdtSolveStage(MdtWorldData *w)
         for (int i = 0; i < problem.nContacts; i++)
             r->contacts[contact0 + i].row -= row0;
         KeaStats ks;
-        KeaStatus status = KeaSolve(&problem, &w->kea, workspace, need, r->x + row0, r->dv + body0, &ks);
+        KeaStatus status = KeaSolve(&problem, &kea, workspace, need, r->x + row0, r->dv + body0, &ks);
         stats->partitions++;
         stats->rows += rows;
         if (rows > stats->maxPartitionRows)

@@ -44,6 +44,7 @@ void MdtWorldSetDefaults(MdtWorldData *w)
     w->kea.maxIterations = DEFAULT_LCP_ITERATIONS;
     /* the iterative path's extra effort where the residual stays high (docs/kea.md, decision K33-touch) */
     w->kea.effortResidual = KEA_EFFORT_RESIDUAL * w->lengthScale;
+    w->kea.effortRestSpeed = KEA_EFFORT_REST_SPEED * w->lengthScale;
     w->autoDisable.enabled = METRUE;
     w->autoDisable.velocity = DEFAULT_AD_VELOCITY * l2;
     w->autoDisable.angularVelocity = DEFAULT_AD_ANGULAR_VELOCITY;

@@ -28,10 +28,10 @@
 #define HASH_EVERY 10
 
 #if KARMA_DOUBLE
-#  define GOLDEN_PILE 0xd71a96b325fc6780ull
+#  define GOLDEN_PILE 0x464c6fd646137e18ull
 #  define GOLDEN_PYRAMID 0xa1e9c5ce0d056e8bull
 #else
-#  define GOLDEN_PILE 0xae7369b5a616fe69ull
+#  define GOLDEN_PILE 0x0b340a84cc3feaddull
 #  define GOLDEN_PYRAMID 0xa700b7de664479bcull
 #endif
 

@@ -527,6 +527,46 @@ static void extra_effort_sweeps_on_while_the_residual_is_high(void **state)
     kt_free(&t);
 }
 
+/* The extra effort only for a partition at rest (KeaParameters.effortRestSpeed): with a rest speed
+ * below the problem's largest |rhs| (a row that must change its velocity fast: bodies colliding or
+ * sliding) the solve stops at the cap, bit for bit as without the effort; with one at that largest
+ * |rhs| (every row within it) it sweeps on as before. */
+static void extra_effort_only_where_the_partition_rests(void **state)
+{
+    KtProblem t;
+    MeReal plain[36], longer[36], effort[36];
+    KeaParameters iter = kt_params(KeaPathIterative);
+    KeaStats st;
+    MeReal largest = ME_R(0.0);
+    int i;
+    (void)state;
+    make_problem(&t, 11);
+    for (i = 0; i < t.p.nRows; ++i)
+        if ((MeReal)fabs((double)t.p.rhs[i]) > largest)
+            largest = (MeReal)fabs((double)t.p.rhs[i]);
+    assert_true(largest > ME_R(0.0));
+    assert_true(iter.effortRestSpeed == ME_R(0.0)); /* Kea's own default: no limit */
+    iter.tolerance = ME_R(0.0);
+    iter.maxIterations = 3;
+    kt_solve(&t.p, &iter, plain, NULL, &st);
+    iter.maxIterations = 3 * (1 + KEA_EFFORT_FACTOR);
+    kt_solve(&t.p, &iter, longer, NULL, &st);
+    iter.maxIterations = 3;
+    iter.effortResidual = ME_R(1e-30);
+    iter.effortRestSpeed = ME_R(0.999) * largest;
+    kt_solve(&t.p, &iter, effort, NULL, &st);
+    assert_int_equal(st.iterations, 3);
+    assert_int_equal(st.effortRounds, 0);
+    for (i = 0; i < 36; ++i)
+        assert_true(effort[i] == plain[i]);
+    iter.effortRestSpeed = largest;
+    kt_solve(&t.p, &iter, effort, NULL, &st);
+    assert_int_equal(st.iterations, 3 * (1 + KEA_EFFORT_FACTOR));
+    for (i = 0; i < 36; ++i)
+        assert_true(effort[i] == longer[i]);
+    kt_free(&t);
+}
+
 /* Warm-started from the exact solution, one sweep changes nothing and reports convergence. */
 static void warm_start_at_solution_stays(void **state)
 {
@@ -635,6 +675,7 @@ int main(void)
         cmocka_unit_test(sor_converges_to_the_same_solution),
         cmocka_unit_test(tolerance_stops_early),
         cmocka_unit_test(extra_effort_sweeps_on_while_the_residual_is_high),
+        cmocka_unit_test(extra_effort_only_where_the_partition_rests),
         cmocka_unit_test(warm_start_at_solution_stays),
         cmocka_unit_test(subspace_steps_wait_for_the_active_set),
         cmocka_unit_test(subspace_steps_that_do_not_pay_wait),

@@ -140,6 +140,9 @@ typedef struct KeaParameters {
                                  leaves a residual above this (velocity units), two more sweeps, up to
                                  KEA_EFFORT_FACTOR maxIterations more; 0 = none, the default here (the
                                  world sets KEA_EFFORT_RESIDUAL x its length scale, docs/kea.md) */
+    MeReal effortRestSpeed; /**< iterative: the extra effort only for a partition at rest, every row's
+                                 |rhs| at most this (velocity units); 0 = no limit, the default here
+                                 (the world sets KEA_EFFORT_REST_SPEED x its length scale) */
 } KeaParameters;
 
 /** What a solve did. */

@@ -149,6 +149,22 @@ static MeReal KeaIterativeResidual(const KeaProblem *problem, const KeaIterative
     return worst;
 }
 
+/* Whether the extra effort may run on this partition (kea_tuning.h, KEA_EFFORT_REST_SPEED): every
+ * row's target velocity change |r_i| within params->effortRestSpeed (0 = no limit), i.e. a resting
+ * partition and not one where bodies collide or slide fast; stops at the first row over it. */
+static int KeaEffortAllowed(const KeaProblem *problem, const KeaParameters *params)
+{
+    int i;
+    if (!(params->effortResidual > ME_R(0.0)))
+        return 0;
+    if (!(params->effortRestSpeed > ME_R(0.0)))
+        return 1;
+    for (i = 0; i < problem->nRows; ++i)
+        if (!(KeaFabs(problem->rhs[i]) <= params->effortRestSpeed))
+            return 0;
+    return 1;
+}
+
 KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
                             MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
 {
@@ -156,6 +172,7 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
     KeaIterativeWork w;
     KeaStatus status = KeaStatusMaxIterations;
     const int nb = problem->nBodies;
+    const int effort = KeaEffortAllowed(problem, params);
     int i, it, b, k, limit;
 
     KeaIterativeLayout(arena, n, nb, KEA_MAX_BLOCK_ROWS, &w);
@@ -198,12 +215,12 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
             w.dv[b].ang[k] = dv[b].ang[k];
         }
 
-    /* maxIterations sweeps, then the extra effort (params->effortResidual, kea_tuning.h): while the
-     * last sweep leaves a residual above it, two more (so that the last still runs backwards), up to
-     * KEA_EFFORT_FACTOR maxIterations more in all. */
+    /* maxIterations sweeps, then the extra effort (params->effortResidual, kea_tuning.h) if the
+     * partition rests (KeaEffortAllowed): while the last sweep leaves a residual above it, two more
+     * (so that the last still runs backwards), up to KEA_EFFORT_FACTOR maxIterations more in all. */
     limit = params->maxIterations;
     for (it = 1; it <= limit; ++it) {
-        const int mayExtend = it == limit && params->effortResidual > ME_R(0.0) &&
+        const int mayExtend = it == limit && effort &&
                               limit < params->maxIterations * (1 + KEA_EFFORT_FACTOR);
         const MeReal measureUpTo = mayExtend ? KeaMax(params->tolerance, params->effortResidual) : params->tolerance;
         const MeReal sweepResidual = KeaSweep(problem, &w, params, x, stats, (it & 1) == 0, measureUpTo);
