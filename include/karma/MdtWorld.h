@@ -165,7 +165,8 @@ ME_API void MdtWorldSetAutoDisableAliveTime(MdtWorldID w, MeReal aw);
 ME_API void MdtWorldSetAutoDisableAveragingTime(MdtWorldID w, MeReal t);
 /** MdtWorldSetAutoDisableAveragingTime's setting (s); 0 for a bad world. */
 ME_API MeReal MdtWorldGetAutoDisableAveragingTime(MdtWorldID w);
-/** Iteration cap of the LCP solver (≥ 1). Default 10. */
+/** Sweeps of the iterative LCP solver (≥ 1). Default 10. A resting partition whose residual stays
+ *  above 5 mm/s after them gets up to twice as many more (docs/kea.md, "Extra effort"). */
 ME_API void MdtWorldSetMaxLCPIterations(MdtWorldID w, int mi);
 /** Choose the LCP method (default MdtLCPSolverAuto). */
 ME_API void MdtWorldSetLCPSolver(MdtWorldID w, MdtLCPSolver solver);

@@ -42,6 +42,7 @@ typedef struct PartitionResult {
 /* What the solve task shares: read-only during the task but for the partitions' own slices. */
 typedef struct SolveTask {
     MdtWorldData *w;
+    const KeaParameters *kea;  /* the world's, with the step's rest speed for the extra effort */
     unsigned char *workspaces; /* workerCount workspaces of `need` bytes each */
     size_t need;
     int workers;
@@ -49,7 +50,8 @@ typedef struct SolveTask {
 } SolveTask;
 
 /* Solve partition p on `workspace`: its slice of the rows, its impulses and velocity changes. */
-static void solvePartition(MdtWorldData *w, int p, void *workspace, size_t need, PartitionResult *res)
+static void solvePartition(MdtWorldData *w, const KeaParameters *kea, int p, void *workspace, size_t need,
+                           PartitionResult *res)
 {
     const MdtPartitionLists *out = &w->partitions;
     MdtStepRows *r = &w->rows;
@@ -78,7 +80,7 @@ static void solvePartition(MdtWorldData *w, int p, void *workspace, size_t need,
     problem.contacts = r->contacts + contact0;
     for (int i = 0; i < problem.nContacts; i++)
         r->contacts[contact0 + i].row -= row0;
-    KeaStatus status = KeaSolve(&problem, &w->kea, workspace, need, r->x + row0, r->dv + body0, &res->stats);
+    KeaStatus status = KeaSolve(&problem, kea, workspace, need, r->x + row0, r->dv + body0, &res->stats);
     res->stats.status = status;
     MeBool failed = status == KeaStatusBadInput;
     if (!failed && w->checkSim && status != KeaStatusWorkspaceTooSmall)
@@ -110,7 +112,7 @@ static void solveTask(int start, int end, int worker, void *data)
     void *workspace = t->workspaces + (size_t)worker * t->need;
     for (int p = start; p < end; p++)
         if (r->partitionRowStart[p + 1] > r->partitionRowStart[p] && !t->results[p].solved)
-            solvePartition(t->w, p, workspace, t->need, &t->results[p]);
+            solvePartition(t->w, t->kea, p, workspace, t->need, &t->results[p]);
 }
 
 /* A partition's statistics into the step's, and its messages, in partition order. */
@@ -186,6 +188,11 @@ void MdtSolveStage(MdtWorldData *w)
     task.workspaces = mem;
     task.results = (PartitionResult *)(mem + cacheLines(workspaceBytes));
     memset(task.results, 0, resultBytes);
+    /* The extra effort's rest speed is above what gravity adds in this step (kea_tuning.h). */
+    KeaParameters kea = w->kea;
+    if (kea.effortRestSpeed > 0)
+        kea.effortRestSpeed += MeVector3Magnitude(w->gravity) * w->stepSize;
+    task.kea = &kea;
 
     MdtWorldRunTask(w, solveTask, out->partitionCount, 1, &task);
 
@@ -195,7 +202,7 @@ void MdtSolveStage(MdtWorldData *w)
             continue;
         if (!task.results[p].solved) {
             missed++;
-            solvePartition(w, p, task.workspaces, task.need, &task.results[p]);
+            solvePartition(w, &kea, p, task.workspaces, task.need, &task.results[p]);
         }
         gatherPartition(w, p, &task.results[p].stats);
     }

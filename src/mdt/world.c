@@ -7,6 +7,7 @@
 #include "../me/check.h"
 #include "../me/handle.h"
 #include "constraint.h"
+#include "kea/kea_tuning.h"
 #include "world.h"
 
 /* Karma's defaults (docs/karma12.md §5.1, decision D1 for auto-disable). */
@@ -41,6 +42,9 @@ void MdtWorldSetDefaults(MdtWorldData *w)
     w->maxLCPIterations = DEFAULT_LCP_ITERATIONS;
     KeaParametersDefault(&w->kea);
     w->kea.maxIterations = DEFAULT_LCP_ITERATIONS;
+    /* the iterative path's extra effort where the residual stays high (docs/kea.md, decision K36) */
+    w->kea.effortResidual = KEA_EFFORT_RESIDUAL * w->lengthScale;
+    w->kea.effortRestSpeed = KEA_EFFORT_REST_SPEED * w->lengthScale;
     w->autoDisable.enabled = METRUE;
     w->autoDisable.velocity = DEFAULT_AD_VELOCITY * l2;
     w->autoDisable.angularVelocity = DEFAULT_AD_ANGULAR_VELOCITY;

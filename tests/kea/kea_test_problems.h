@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "mdt/kea/kea.h"
+#include "mdt/kea/kea_tuning.h"
 
 /* ---- random numbers ------------------------------------------------------------------------- */
 

@@ -484,6 +484,89 @@ static void tolerance_stops_early(void **state)
     kt_free(&t);
 }
 
+/* The extra effort (KeaParameters.effortResidual): a threshold no sweep reaches adds two sweeps at a
+ * time, SM between, up to KEA_EFFORT_FACTOR times the cap, which is the same sequence as a cap that
+ * many sweeps higher, bit for bit; a threshold every sweep is within adds none; one in between stops
+ * at the first round whose last sweep is within it, with a smaller residual than the cap alone. */
+static void extra_effort_sweeps_on_while_the_residual_is_high(void **state)
+{
+    KtProblem t;
+    MeReal plain[36], longer[36], effort[36];
+    KeaParameters iter = kt_params(KeaPathIterative);
+    KeaStats st, stLonger, stPlain;
+    int i;
+    (void)state;
+    make_problem(&t, 11);
+    iter.tolerance = ME_R(0.0);
+    iter.maxIterations = 3;
+    assert_true(iter.effortResidual == ME_R(0.0)); /* Kea's own default: none */
+    kt_solve(&t.p, &iter, plain, NULL, &stPlain);
+    assert_int_equal(stPlain.iterations, 3);
+    assert_int_equal(stPlain.effortRounds, 0);
+    iter.maxIterations = 3 * (1 + KEA_EFFORT_FACTOR);
+    kt_solve(&t.p, &iter, longer, NULL, &stLonger);
+    iter.maxIterations = 3;
+    iter.effortResidual = ME_R(1e-30);
+    kt_solve(&t.p, &iter, effort, NULL, &st);
+    assert_int_equal(st.iterations, 3 * (1 + KEA_EFFORT_FACTOR));
+    assert_int_equal(st.effortRounds, 3 * KEA_EFFORT_FACTOR / 2);
+    for (i = 0; i < 36; ++i)
+        assert_true(effort[i] == longer[i]);
+    iter.effortResidual = ME_R(1e30);
+    kt_solve(&t.p, &iter, effort, NULL, &st);
+    assert_int_equal(st.iterations, 3);
+    for (i = 0; i < 36; ++i)
+        assert_true(effort[i] == plain[i]);
+    iter.effortResidual = ME_R(0.5) * (stPlain.residual + stLonger.residual);
+    kt_solve(&t.p, &iter, effort, NULL, &st);
+    print_message("effort at %g: %d sweeps, residual %g (cap alone %g, three times the cap %g)\n",
+                  (double)iter.effortResidual, st.iterations, (double)st.residual, (double)stPlain.residual,
+                  (double)stLonger.residual);
+    assert_true(st.iterations > 3 && st.iterations <= 3 * (1 + KEA_EFFORT_FACTOR) && st.iterations % 2 == 1);
+    assert_true(st.residual < stPlain.residual);
+    kt_free(&t);
+}
+
+/* The extra effort only for a partition at rest (KeaParameters.effortRestSpeed): with a rest speed
+ * below the problem's largest |rhs| (a row that must change its velocity fast: bodies colliding or
+ * sliding) the solve stops at the cap, bit for bit as without the effort; with one at that largest
+ * |rhs| (every row within it) it sweeps on as before. */
+static void extra_effort_only_where_the_partition_rests(void **state)
+{
+    KtProblem t;
+    MeReal plain[36], longer[36], effort[36];
+    KeaParameters iter = kt_params(KeaPathIterative);
+    KeaStats st;
+    MeReal largest = ME_R(0.0);
+    int i;
+    (void)state;
+    make_problem(&t, 11);
+    for (i = 0; i < t.p.nRows; ++i)
+        if ((MeReal)fabs((double)t.p.rhs[i]) > largest)
+            largest = (MeReal)fabs((double)t.p.rhs[i]);
+    assert_true(largest > ME_R(0.0));
+    assert_true(iter.effortRestSpeed == ME_R(0.0)); /* Kea's own default: no limit */
+    iter.tolerance = ME_R(0.0);
+    iter.maxIterations = 3;
+    kt_solve(&t.p, &iter, plain, NULL, &st);
+    iter.maxIterations = 3 * (1 + KEA_EFFORT_FACTOR);
+    kt_solve(&t.p, &iter, longer, NULL, &st);
+    iter.maxIterations = 3;
+    iter.effortResidual = ME_R(1e-30);
+    iter.effortRestSpeed = ME_R(0.999) * largest;
+    kt_solve(&t.p, &iter, effort, NULL, &st);
+    assert_int_equal(st.iterations, 3);
+    assert_int_equal(st.effortRounds, 0);
+    for (i = 0; i < 36; ++i)
+        assert_true(effort[i] == plain[i]);
+    iter.effortRestSpeed = largest;
+    kt_solve(&t.p, &iter, effort, NULL, &st);
+    assert_int_equal(st.iterations, 3 * (1 + KEA_EFFORT_FACTOR));
+    for (i = 0; i < 36; ++i)
+        assert_true(effort[i] == longer[i]);
+    kt_free(&t);
+}
+
 /* Warm-started from the exact solution, one sweep changes nothing and reports convergence. */
 static void warm_start_at_solution_stays(void **state)
 {
@@ -591,6 +674,8 @@ int main(void)
         cmocka_unit_test(broken_contact_declarations_are_bad_input),
         cmocka_unit_test(sor_converges_to_the_same_solution),
         cmocka_unit_test(tolerance_stops_early),
+        cmocka_unit_test(extra_effort_sweeps_on_while_the_residual_is_high),
+        cmocka_unit_test(extra_effort_only_where_the_partition_rests),
         cmocka_unit_test(warm_start_at_solution_stays),
         cmocka_unit_test(subspace_steps_wait_for_the_active_set),
         cmocka_unit_test(subspace_steps_that_do_not_pay_wait),

@@ -136,6 +136,13 @@ typedef struct KeaParameters {
                                  3 or more); 1 = scalar PGS; at most KEA_MAX_BLOCK_ROWS; default 12 */
     int maxPivots;          /**< direct: cap on active-set changes; 0 = automatic (8 n + 64) */
     int maxFrictionPasses;  /**< direct: box-QP passes for friction links; default 8 */
+    MeReal effortResidual;  /**< iterative: extra effort (kea_iterative.c): while a round's last sweep
+                                 leaves a residual above this (velocity units), two more sweeps, up to
+                                 KEA_EFFORT_FACTOR maxIterations more; 0 = none, the default here (the
+                                 world sets KEA_EFFORT_RESIDUAL x its length scale, docs/kea.md) */
+    MeReal effortRestSpeed; /**< iterative: the extra effort only for a partition at rest, every row's
+                                 |rhs| at most this (velocity units); 0 = no limit, the default here
+                                 (the world sets KEA_EFFORT_REST_SPEED x its length scale) */
 } KeaParameters;
 
 /** What a solve did. */
@@ -144,7 +151,9 @@ typedef struct KeaStats {
     KeaStatus status;   /**< same as KeaSolve's return value */
     int rows;           /**< nRows */
     int bodies;         /**< nBodies */
-    int iterations;     /**< iterative: Gauss-Seidel sweeps done */
+    int iterations;     /**< iterative: Gauss-Seidel sweeps done (maxIterations and the extra effort's) */
+    int effortRounds;   /**< iterative: pairs of sweeps added because the residual stayed high
+                             (KEA_EFFORT_RESIDUAL, kea_tuning.h) */
     int subspaceSteps;  /**< iterative: conjugate-gradient steps done (all sweeps) */
     int subspaceSkipped; /**< iterative: subspace minimisations skipped (the active set still moving,
                               or the last one did not pay) */

@@ -80,11 +80,12 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
 }
 
 /* One PGS sweep over the blocks, forwards or backwards; returns the largest residual met (the rows'
- * residuals before their steps). Only whether that is within the tolerance matters, so once a row is
- * above it the block steps stop measuring (a sizeable part of a contact step's work, and a pile
- * rarely converges within its sweeps); the steps themselves are the same either way. */
+ * residuals before their steps). Only whether that is within `measureUpTo` (the tolerance, or the
+ * extra effort's threshold in a round's last sweep) matters, so once a row is above it the block
+ * steps stop measuring (a sizeable part of a contact step's work, and a pile rarely converges within
+ * its sweeps); the steps themselves are the same either way. */
 static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params, MeReal *x,
-                       KeaStats *stats, int backward)
+                       KeaStats *stats, int backward, MeReal measureUpTo)
 {
     const MeReal omega = params->sor > ME_R(0.0) && params->sor < ME_R(2.0) ? params->sor : ME_R(1.0);
     MeReal worst = ME_R(0.0);
@@ -99,7 +100,7 @@ static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const Kea
         const int block = backward ? w->nBlocks - 1 - k : k;
         const int i = w->blockStart[block];
         MeReal lo, hi, wi, xNew, r;
-        sweep.measure = worst <= params->tolerance;
+        sweep.measure = worst <= measureUpTo;
         if (w->blockContact[block]) { /* one call site: the step is inlined into the sweep */
             worst = KeaMax(worst, KeaContactBlockStep(problem, w, block, x, &sweep));
             continue;
@@ -148,6 +149,22 @@ static MeReal KeaIterativeResidual(const KeaProblem *problem, const KeaIterative
     return worst;
 }
 
+/* Whether the extra effort may run on this partition (kea_tuning.h, KEA_EFFORT_REST_SPEED): every
+ * row's target velocity change |r_i| within params->effortRestSpeed (0 = no limit), i.e. a resting
+ * partition and not one where bodies collide or slide fast; stops at the first row over it. */
+static int KeaEffortAllowed(const KeaProblem *problem, const KeaParameters *params)
+{
+    int i;
+    if (!(params->effortResidual > ME_R(0.0)))
+        return 0;
+    if (!(params->effortRestSpeed > ME_R(0.0)))
+        return 1;
+    for (i = 0; i < problem->nRows; ++i)
+        if (!(KeaFabs(problem->rhs[i]) <= params->effortRestSpeed))
+            return 0;
+    return 1;
+}
+
 KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
                             MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
 {
@@ -155,7 +172,8 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
     KeaIterativeWork w;
     KeaStatus status = KeaStatusMaxIterations;
     const int nb = problem->nBodies;
-    int i, it, b, k;
+    const int effort = KeaEffortAllowed(problem, params);
+    int i, it, b, k, limit;
 
     KeaIterativeLayout(arena, n, nb, KEA_MAX_BLOCK_ROWS, &w);
     KeaBodyColumnsFill(problem, w.bodyColumns);
@@ -197,17 +215,28 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
             w.dv[b].ang[k] = dv[b].ang[k];
         }
 
-    for (it = 1; it <= params->maxIterations; ++it) {
-        const MeReal sweepResidual = KeaSweep(problem, &w, params, x, stats, (it & 1) == 0);
+    /* maxIterations sweeps, then the extra effort (params->effortResidual, kea_tuning.h) if the
+     * partition rests (KeaEffortAllowed): while the last sweep leaves a residual above it, two more
+     * (so that the last still runs backwards), up to KEA_EFFORT_FACTOR maxIterations more in all. */
+    limit = params->maxIterations;
+    for (it = 1; it <= limit; ++it) {
+        const int mayExtend = it == limit && effort &&
+                              limit < params->maxIterations * (1 + KEA_EFFORT_FACTOR);
+        const MeReal measureUpTo = mayExtend ? KeaMax(params->tolerance, params->effortResidual) : params->tolerance;
+        const MeReal sweepResidual = KeaSweep(problem, &w, params, x, stats, (it & 1) == 0, measureUpTo);
         stats->iterations = it;
         if (sweepResidual <= params->tolerance) {
             status = KeaStatusOk;
             break;
         }
+        if (mayExtend && sweepResidual > params->effortResidual) {
+            limit += 2;
+            ++stats->effortRounds;
+        }
         if (w.smRan) /* did the last SM step lower the objective more than this sweep? */
             w.smUnpaid = w.sweepDecrease > w.smDecrease;
         w.smRan = 0;
-        if (params->subspaceIterations > 0 && it < params->maxIterations) {
+        if (params->subspaceIterations > 0 && it < limit) {
             const int steps = KeaSubspaceMinimise(problem, &w, params->subspaceIterations, x);
             if (steps < 0)
                 ++stats->subspaceSkipped;

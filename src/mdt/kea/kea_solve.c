@@ -20,6 +20,8 @@ void KeaParametersDefault(KeaParameters *params)
     params->maxBlockRows = 12;
     params->maxPivots = 0;
     params->maxFrictionPasses = 8;
+    params->effortResidual = ME_R(0.0);
+    params->effortRestSpeed = ME_R(0.0);
 }
 
 KeaPath KeaSelectPath(int nRows, const KeaParameters *params)

@@ -70,4 +70,25 @@
  *  precision's small epsilon, below which the residual is rounding noise. */
 #define KEA_SM_CG_STOP (ME_SMALL_EPSILON * ME_SMALL_EPSILON)
 
+/** The extra effort (kea_iterative.c, KeaParameters.effortResidual): when the last of a partition's
+ *  maxIterations sweeps leaves a residual above effortResidual, the solve sweeps on, two sweeps at a
+ *  time with SM between, until a round's last sweep is within it or KEA_EFFORT_FACTOR maxIterations
+ *  sweeps were added. The world sets effortResidual to KEA_EFFORT_RESIDUAL (m/s) times its length
+ *  scale. Touching pyramids of 30 to 60 rows need it: at a fixed 10 sweeps an under-converged
+ *  out-of-plane mode grows from step to step until a box is kicked, and the first settle of a tall
+ *  stack, cold-started, lets its top boxes fall freely (docs/kea_log.md, "Touching stacks": 2 mm/s
+ *  costs more sweeps for the same result, 10 mm/s holds less margin; a factor of 2 rather than 1 for
+ *  the 60-row pyramid's first settle). */
+#define KEA_EFFORT_RESIDUAL ME_R(5e-3)
+#define KEA_EFFORT_FACTOR 2
+/** The extra effort is for a resting stack that has not converged, not for a pile whose bodies
+ *  collide (KeaParameters.effortRestSpeed): it runs only where every row's target velocity change
+ *  |r_i| is at most KEA_EFFORT_REST_SPEED (m/s) times the world's length scale, plus what gravity
+ *  adds in one step (the world adds it per step). In a resting pyramid the largest |r_i| is gravity's
+ *  step (0.16 m/s at 60 Hz) plus a little correction, at most 0.20 m/s in the 60-row one; in the
+ *  bench's pile of 1,000 bodies it never fell below 1.6 m/s in 460 steps, although its residual after
+ *  the cap is 10 to 100 times 5 mm/s (docs/kea_log.md, "Touching stacks": a threshold relative to the
+ *  velocity scale does not separate them). */
+#define KEA_EFFORT_REST_SPEED ME_R(0.5)
+
 #endif
