@@ -105,11 +105,19 @@ RGraphic *MEAPI RGraphicLineCreate(RRender *rc, AcmeReal origin[3], AcmeReal end
 int MEAPI RGraphicLineMoveEnds(RGraphic *lineG, AcmeReal *origin, AcmeReal *end);
 /** Text at (orig_x, orig_y) in the virtual 640×448 screen (top left of the text), in the 2D list. */
 RGraphic *MEAPI RGraphicTextCreate(RRender *rc, char *text, AcmeReal orig_x, AcmeReal orig_y, const float color[4]);
-/** The graphic of a model's geometry (sphere, box, cylinder, cone, sphyl, plane), following the
- *  model's transform. NULL (with a message) for a geometry type it cannot draw. */
+/** The graphic of a model's geometry (sphere, box, cylinder, cone, sphyl, plane, convex mesh,
+ *  triangle mesh, height field), following the model's transform. An aggregate model's graphic
+ *  holds no vertices: a graphic for each element follows that element's geometry instance (its
+ *  world transform at the model's last update, nested aggregates included) and goes with it (lists,
+ *  colour, wireframe, delete). NULL (with a message) for a geometry type it cannot draw. */
 RGraphic *MEAPI RGraphicCreateFromModel(RRender *rc, McdModelID m, float color[4]);
-/** The graphic of a geometry, following `matrix`. NULL for a type it cannot draw. */
+/** The graphic of a geometry, following `matrix` (an aggregate: RGraphicAggregateCreate). NULL
+ *  (with a message) for a type it cannot draw (a triangle list: its triangles exist only in queries). */
 RGraphic *MEAPI RGraphicCreateFromGeometry(RRender *rc, McdGeometryID g, float color[4], MeMatrix4Ptr matrix);
+/** One graphic of all of aggregate ag's elements placed by their relative transforms (nested ones
+ *  composed) as they are now, following `tm`, as Karma 1.2's. NULL (with a message) for a NULL
+ *  context or a geometry that is not an aggregate. */
+RGraphic *MEAPI RGraphicAggregateCreate(RRender *rc, McdAggregateID ag, float color[4], MeMatrix4Ptr tm);
 
 /** Load a texture (BMP, PNG or another format stb_image reads) from `filename`, tried as given, then
  *  with ".bmp" and ".png" when it has no extension (Karma names textures without one); the same

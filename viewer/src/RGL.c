@@ -304,6 +304,19 @@ void RGLInstanceAttributes(unsigned int buffer, size_t offset)
     }
 }
 
+int RGLResize(struct RGL *gl, int width, int height)
+{
+    int oldWidth = gl->width, oldHeight = gl->height;
+    freeTargets(gl);
+    gl->width = width, gl->height = height;
+    if (makeTargets(gl))
+        return 0;
+    freeTargets(gl);
+    gl->width = oldWidth, gl->height = oldHeight;
+    makeTargets(gl);
+    return -1;
+}
+
 struct RGL *RGLCreate(RBackend *backend, int width, int height)
 {
     struct RGL *gl = calloc(1, sizeof *gl);

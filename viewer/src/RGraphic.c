@@ -57,7 +57,10 @@ RGraphic *RGraphicNew(RRender *rc, RGraphicKind kind, int n, const float color[4
 
 void MEAPI RGraphicAddToList(RRender *rc, RGraphic *rg, int is2D)
 {
-    if (!rc || !rg || rg->m_private->inList)
+    if (!rc || !rg)
+        return;
+    RGraphicAddToList(rc, rg->m_private->part, is2D);
+    if (rg->m_private->inList)
         return;
     RGraphic **head = is2D ? &rc->m_pRG_First2D : &rc->m_pRG_First;
     /* Appended, so graphics draw in the order they were made (later text over earlier). */
@@ -72,6 +75,7 @@ void MEAPI RGraphicRemoveFromList(RRender *rc, RGraphic *rg, int is2D)
 {
     if (!rc || !rg)
         return;
+    RGraphicRemoveFromList(rc, rg->m_private->part, is2D);
     RGraphic **head = is2D ? &rc->m_pRG_First2D : &rc->m_pRG_First;
     for (; *head; head = &(*head)->m_pNext)
         if (*head == rg) {
@@ -88,6 +92,7 @@ void MEAPI RGraphicDestroy(RGraphic *rg)
         return;
     if (rg->m_private->inList)
         R_REPORT(ME_ERR_BAD_STATE, "RGraphicDestroy", "the graphic is still in a render list: use RGraphicDelete");
+    RGraphicDestroy(rg->m_private->part);
     RGLReleaseGraphic(rg);
     for (int k = 0; k < R_LOD_LEVELS; k++)
         RGraphicDestroy(rg->m_private->lod[k]);
@@ -116,6 +121,7 @@ void MEAPI RGraphicSetColor(RGraphic *g, const float color[4])
 {
     if (!g || !color)
         return;
+    RGraphicSetColor(g->m_private->part, color);
     RObjectHeader *h = g->m_pObject;
     for (int i = 0; i < 3; i++) {
         h->m_ColorAmbient[i] = 0.5f * color[i]; /* with Karma's lights: lit faces bright, unlit ones still coloured */
@@ -135,8 +141,10 @@ void MEAPI RGraphicGetColor(RGraphic *g, float color[4])
 
 void MEAPI RGraphicSetWireframe(RGraphic *g, MeBool b)
 {
-    if (g)
+    if (g) {
+        RGraphicSetWireframe(g->m_private->part, b);
         g->m_pObject->m_bIsWireFrame = b ? 1 : 0;
+    }
 }
 
 int MEAPI RGraphicLineMoveEnds(RGraphic *lineG, AcmeReal *origin, AcmeReal *end)
