@@ -330,7 +330,7 @@ static void test_terrain_triangles(void **state)
     MeReal h[6] = {0, ME_R(0.2), ME_R(0.4), ME_R(0.1), ME_R(0.3), ME_R(0.5)};
     McdGeometryID field = McdRGHeightFieldCreate(fw, h, 3, 2, 1, 2, -1, -1);
     assert_non_null(field);
-    g = RGraphicCreateFromGeometry(rc, field, (float *)red, NULL);
+    g = RGraphicCreateFromGeometry(rc, field, (float *)red);
     assert_non_null(g);
     assert_int_equal(g->m_pObject->m_nNumVertices, 12);
     for (int i = 0; i < 12; i++) {
@@ -346,7 +346,7 @@ static void test_terrain_triangles(void **state)
     MeVector3 lo = {-1, -1, -1}, hi = {1, 1, 1};
     McdGeometryID list = McdTriangleListCreate(fw, lo, hi, 4, noTriangles);
     assert_non_null(list);
-    assert_reports(ME_ERR_WRONG_HANDLE_KIND, g = RGraphicCreateFromGeometry(rc, list, (float *)red, NULL));
+    assert_reports(ME_ERR_WRONG_HANDLE_KIND, g = RGraphicCreateFromGeometry(rc, list, (float *)red));
     assert_null(g);
     McdGeometryDestroy(list);
 }

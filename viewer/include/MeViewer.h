@@ -111,9 +111,10 @@ RGraphic *MEAPI RGraphicTextCreate(RRender *rc, char *text, AcmeReal orig_x, Acm
  *  world transform at the model's last update, nested aggregates included) and goes with it (lists,
  *  colour, wireframe, delete). NULL (with a message) for a geometry type it cannot draw. */
 RGraphic *MEAPI RGraphicCreateFromModel(RRender *rc, McdModelID m, float color[4]);
-/** The graphic of a geometry, following `matrix` (an aggregate: RGraphicAggregateCreate). NULL
- *  (with a message) for a type it cannot draw (a triangle list: its triangles exist only in queries). */
-RGraphic *MEAPI RGraphicCreateFromGeometry(RRender *rc, McdGeometryID g, float color[4], MeMatrix4Ptr matrix);
+/** The graphic of a geometry in its own frame (no matrix followed: set one with
+ *  RGraphicSetTransformPtr), as Karma 1.2's; an aggregate as RGraphicAggregateCreate. NULL (with a
+ *  message) for a type it cannot draw (a triangle list: its triangles exist only in queries). */
+RGraphic *MEAPI RGraphicCreateFromGeometry(RRender *rc, McdGeometryID g, float color[4]);
 /** One graphic of all of aggregate ag's elements placed by their relative transforms (nested ones
  *  composed) as they are now, following `tm`, as Karma 1.2's. NULL (with a message) for a NULL
  *  context or a geometry that is not an aggregate. */
@@ -191,6 +192,17 @@ void MEAPI RPerformanceBarUpdate(RRender *rc, AcmeReal coltime, AcmeReal dyntime
 void MEAPI RRenderDisplayFps(RRender *rc, AcmeReal fps);
 /** Have RRun show the frame rate it measures (Ctrl+F3 flips it). */
 void MEAPI RRenderSetDisplayFps(RRender *rc, int bVal);
+/** Lock the frame rate or unlock it (F3): a window waits for its display's refresh (vsync, on when
+ *  it opens); without a window RRun keeps its frames 1/rate s apart (off when it starts). */
+void MEAPI RRenderToggleFrameLock(RRender *rc);
+/** The locked rate without a window's refresh, frames a second (1 … 1000; 60 until set); others
+ *  refused (ME_ERR_ARGUMENT_RANGE, unchanged). */
+void MEAPI RRenderSetFrameLockRate(RRender *rc, unsigned int iRate);
+/** A sky: a sphere textured with `name` (as RRenderTextureCreate finds it) repeated tileU times
+ *  around and tileV times from pole to pole, drawn unlit and without shadows, always centred on the
+ *  camera (400 m away, inside the far plane). One a context: a second call replaces it. An
+ *  unreadable texture or tiles below 1 are refused (with a message, no sky). */
+void MEAPI RRenderSkydomeCreate(RRender *const rc, const char *name, int tileU, int tileV);
 
 /** Addition: show Karma's debug lines (MeDebugDraw.h: MdtWorldSetDebugDrawing's contacts,
  *  McduDebugDraw*'s shapes and boxes) in this context: MeDebugDrawAPI.line collects the lines drawn

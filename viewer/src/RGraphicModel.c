@@ -20,10 +20,11 @@
 /** Its checkerboard cells (m): metres can be counted on the ground. */
 #define R_PLANE_CELL 1.0f
 
-RGraphic *MEAPI RGraphicCreateFromGeometry(RRender *rc, McdGeometryID g, float color[4], MeMatrix4Ptr matrix)
+/* The graphic of geometry g following matrix; fn names the caller in messages. */
+static RGraphic *geometryGraphic(RRender *rc, McdGeometryID g, float color[4], MeMatrix4Ptr matrix, const char *fn)
 {
     if (!rc || !g) {
-        R_REPORT(ME_ERR_NULL_ARGUMENT, "RGraphicCreateFromGeometry", "NULL %s", rc ? "geometry" : "render context");
+        R_REPORT(ME_ERR_NULL_ARGUMENT, fn, "NULL %s", rc ? "geometry" : "render context");
         return NULL;
     }
     int type = McdGeometryGetTypeId(g);
@@ -55,10 +56,14 @@ RGraphic *MEAPI RGraphicCreateFromGeometry(RRender *rc, McdGeometryID g, float c
         return RGraphicTriangleMeshCreate(rc, g, color, matrix);
     if (type == McdRGHeightFieldGetTypeId())
         return RGraphicHeightFieldCreate(rc, g, color, matrix);
-    R_REPORT(ME_ERR_WRONG_HANDLE_KIND, "RGraphicCreateFromGeometry", "cannot draw a geometry of type %s%s",
-             McdGeometryGetTypeName(g),
+    R_REPORT(ME_ERR_WRONG_HANDLE_KIND, fn, "cannot draw a geometry of type %s%s", McdGeometryGetTypeName(g),
              type == McdTriangleListGetTypeId() ? " (its triangles exist only inside its generator's queries)" : "");
     return NULL;
+}
+
+RGraphic *MEAPI RGraphicCreateFromGeometry(RRender *rc, McdGeometryID g, float color[4])
+{
+    return geometryGraphic(rc, g, color, NULL, "RGraphicCreateFromGeometry");
 }
 
 /* Row-vector transforms (Karma's): out = a then b, i.e. p·a·b. out may not alias a or b. */
@@ -95,7 +100,7 @@ static int appendElements(RRender *rc, McdGeometryID ag, const MeReal rel[4][4],
                 return 0;
             continue;
         }
-        RGraphic *e = RGraphicCreateFromGeometry(rc, g, NULL, NULL);
+        RGraphic *e = geometryGraphic(rc, g, NULL, NULL, "RGraphicAggregateCreate");
         if (!e)
             continue; /* reported: an element it cannot draw is left out */
         int n = e->m_pObject->m_nNumVertices;
@@ -162,7 +167,7 @@ static void addElementGraphics(RRender *rc, McdGeometryInstanceID ins, float col
             addElementGraphics(rc, child, color, last);
             continue;
         }
-        RGraphic *e = RGraphicCreateFromGeometry(rc, g, color, McdGeometryInstanceGetTransformPtr(child));
+        RGraphic *e = geometryGraphic(rc, g, color, McdGeometryInstanceGetTransformPtr(child), "RGraphicCreateFromModel");
         if (e) {
             (*last)->m_private->part = e;
             *last = e;
@@ -178,7 +183,7 @@ RGraphic *MEAPI RGraphicCreateFromModel(RRender *rc, McdModelID m, float color[4
     }
     McdGeometryID g = McdModelGetGeometry(m);
     if (!rc || !g || McdGeometryGetTypeId(g) != McdAggregateGetTypeId())
-        return RGraphicCreateFromGeometry(rc, g, color, McdModelGetTransformPtr(m));
+        return geometryGraphic(rc, g, color, McdModelGetTransformPtr(m), "RGraphicCreateFromModel");
     /* The model's graphic holds no vertices: it follows the model and carries the elements. */
     RGraphic *rg = RGraphicNew(rc, kRKindTriangles, 0, color, McdModelGetTransformPtr(m)), *last = rg;
     if (rg)

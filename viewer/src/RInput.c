@@ -96,7 +96,7 @@ void RInputKey(RRender *rc, int key, int modifiers)
         if (modifiers & RCONTROL)
             RRenderSetDisplayFps(rc, !rc->m_private->showFps);
         else
-            RRenderSetFrameRateLock(rc, !rc->m_private->frameLock);
+            RRenderToggleFrameLock(rc);
         return;
     case RKEY_F9: /* Alt+F9: the aspect kept through resizes; F9: fullscreen */
         if (modifiers & RALT)

@@ -42,6 +42,7 @@ struct RGraphicPrivate {
     float w, h;              /**< kRKindRect2D: size in the virtual screen */
     RGraphic *lod[R_LOD_LEVELS]; /**< spheres, sphyls: the same shape with 1/2 and 1/4 of the sides (in no list) */
     float lodExtent;         /**< their farthest point from the local origin (m) */
+    int unlit;               /**< drawn in its colour (and texture) alone: no light, no shadow (the skydome) */
     RGraphic *part;          /**< the next graphic of the same model (an aggregate's elements, chained
                                   from the model's graphic): listed, coloured and destroyed with it */
 };
@@ -74,6 +75,8 @@ struct RRenderPrivate {
     int noShadows;           /**< the F12 menu turned shadows off */
     int frameLock;           /**< F3: at most R_LOCKED_RATE frames a second (a window: its refresh, vsync) */
     int aspectLock;          /**< Alt+F9: the projection keeps its aspect when the picture is resized */
+    RGraphic *skydome;       /**< RRenderSkydomeCreate's sphere (in the 3D list), centred on the camera each frame */
+    int lockRate;            /**< frames a second of the frame-rate lock without vsync (RRenderSetFrameLockRate) */
     int fullscreen;          /**< F9: the window covers its monitor (offscreen: only remembered) */
     unsigned int profileFrames; /**< -profile N: frames to profile (0: -timeout's, or 1,000) */
     struct RDebugDraw *debugDraw; /**< lines from MeDebugDrawAPI (RRenderSetDebugDrawing), or NULL */
@@ -122,7 +125,8 @@ void MEAPI RDebugDrawNothing(MeVector3 start, MeVector3 end, MeReal r, MeReal g,
 /** The viewer's own menu (F12), made on first use. */
 RMenu *RViewerMenu(RRender *rc);
 
-/** Frames a second RRun keeps to when the frame rate is locked (F3) and no window's refresh paces it. */
+/** Frames a second RRun keeps to by default when the frame rate is locked (F3) and no window's
+ *  refresh paces it. */
 #define R_LOCKED_RATE 60
 /** The picture becomes width × height pixels (a window's framebuffer was resized): the framebuffers
  *  follow and, unless the aspect is locked (Alt+F9), the projection's aspect. Returns 0, or −1 (with

@@ -163,6 +163,23 @@ void RRenderSetFrameRateLock(RRender *rc, int on)
         p->backend->setSwapInterval(p->backend, p->frameLock);
 }
 
+void MEAPI RRenderToggleFrameLock(RRender *rc)
+{
+    if (rc)
+        RRenderSetFrameRateLock(rc, !rc->m_private->frameLock);
+}
+
+void MEAPI RRenderSetFrameLockRate(RRender *rc, unsigned int iRate)
+{
+    if (!rc)
+        return;
+    if (iRate < 1 || iRate > 1000) {
+        R_REPORT(ME_ERR_ARGUMENT_RANGE, "RRenderSetFrameLockRate", "%u frames a second is not 1 to 1000", iRate);
+        return;
+    }
+    rc->m_private->lockRate = (int)iRate;
+}
+
 void RRenderSetFullscreen(RRender *rc, int on)
 {
     struct RRenderPrivate *p = rc->m_private;
@@ -388,7 +405,7 @@ void MEAPI RRun(RRender *rc, RMainLoopCallBack func, void *userdata)
         double drawn = seconds(), t3 = drawn;
         /* The frame-rate lock without a window's vsync: frames start 1/R_LOCKED_RATE s apart (idle time). */
         if (p->frameLock && !(p->backend && p->backend->setSwapInterval)) {
-            sleepUntil(t0 + 1.0 / R_LOCKED_RATE, drawn);
+            sleepUntil(t0 + 1.0 / (p->lockRate > 0 ? p->lockRate : R_LOCKED_RATE), drawn);
             t3 = seconds();
         }
         application += t2 - t1;
