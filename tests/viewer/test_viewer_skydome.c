@@ -8,24 +8,12 @@
 #include <string.h>
 
 #include "RInternal.h"
+#include "viewer_two_colour_png.h"
 
 #define W 160
 #define H 100
 
 static unsigned char rgba[W * H * 4];
-
-/* A 2 × 1 picture, left red, right blue, saved as a PNG by the viewer itself. */
-static void writeSky(const char *path)
-{
-    RRender *small = RRenderContextCreateHeadless(2, 1);
-    assert_non_null(small);
-    const float red[4] = {1, 0, 0, 1}, blue[4] = {0, 0, 1, 1};
-    RGraphic2DRectangleCreate(small, 0, 0, 320, 448, red);
-    RGraphic2DRectangleCreate(small, 320, 0, 320, 448, blue);
-    RRenderDrawFrame(small);
-    assert_int_equal(RRenderSavePNG(small, path), 0);
-    RRenderContextDestroy(small);
-}
 
 /* Pixels that are the sky's: no green (the background is green), bright red or blue or a blend. */
 static int skyPixels(RRender *rc)
@@ -44,7 +32,7 @@ static void test_sky_covers_the_background_wherever_the_camera_goes(void **state
 {
     (void)state;
     karma_capture_messages();
-    writeSky("viewer_sky.png");
+    assert_int_equal(viewerWriteTwoColourPng("viewer_sky.png"), 0);
     RRender *rc = RRenderContextCreateHeadless(W, H);
     assert_non_null(rc);
     rc->m_backgroundColour[0] = 0, rc->m_backgroundColour[1] = 1, rc->m_backgroundColour[2] = 0;
