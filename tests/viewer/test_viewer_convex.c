@@ -351,6 +351,53 @@ static void test_terrain_triangles(void **state)
     McdGeometryDestroy(list);
 }
 
+static void setVertex(RObjectVertex *v, double x, double y, double z)
+{
+    memset(v, 0, sizeof *v);
+    v->m_X = (AcmeReal)x, v->m_Y = (AcmeReal)y, v->m_Z = (AcmeReal)z, v->m_NZ = 1;
+}
+
+/* RConvertTriStripToTriList, as 1.2 built hulls: a strip of 4 and one of 3 give 3 triangles, every
+ * one counter-clockwise seen from +z like the strip's first; too many for the graphic is refused.
+ * RGraphicScale: a unit cube scaled (2, 3, 4) spans those sizes, normals still unit and on the axes. */
+static void test_strips_and_scaling(void **state)
+{
+    RObjectVertex strips[7];
+    setVertex(&strips[0], 0, 0, 0), setVertex(&strips[1], 1, 0, 0), setVertex(&strips[2], 0, 1, 0);
+    setVertex(&strips[3], 1, 1, 0);
+    setVertex(&strips[4], 2, 0, 0), setVertex(&strips[5], 3, 0, 0), setVertex(&strips[6], 2, 1, 0);
+    int size[2] = {4, 3}, start[2] = {0, 4};
+    RGraphic *g = RGraphicCreateEmpty(9);
+    RConvertTriStripToTriList(g, strips, size, start, 2);
+    assert_int_equal(g->m_pObject->m_nNumVertices, 9);
+    double area = 0;
+    for (int t = 0; t < 3; t++) {
+        const RObjectVertex *a = &g->m_pVertices[3 * t], *b = a + 1, *c = a + 2;
+        double z = (b->m_X - a->m_X) * (c->m_Y - a->m_Y) - (b->m_Y - a->m_Y) * (c->m_X - a->m_X);
+        assert_true(z > 0);
+        area += z / 2;
+    }
+    assert_float_equal(area, 1.5, 1e-6); /* the quad and the triangle: nothing lost or doubled */
+    RGraphic *small = RGraphicCreateEmpty(5);
+    assert_reports(ME_ERR_ARGUMENT_RANGE, RConvertTriStripToTriList(small, strips, size, start, 2));
+    assert_int_equal(small->m_pObject->m_nNumVertices, 5);
+    RGraphicDestroy(small);
+    RGraphicDestroy(g);
+
+    g = RGraphicBoxCreate(rc, 1, 1, 1, red, NULL);
+    RGraphicScale(g, 2, 3, 4);
+    for (int i = 0; i < g->m_pObject->m_nNumVertices; i++) {
+        const RObjectVertex *v = &g->m_pVertices[i];
+        assert_float_equal(fabs(v->m_X), 1, 1e-6);
+        assert_float_equal(fabs(v->m_Y), 1.5, 1e-6);
+        assert_float_equal(fabs(v->m_Z), 2, 1e-6);
+        assert_float_equal(fabs(v->m_NX) + fabs(v->m_NY) + fabs(v->m_NZ), 1, 1e-6);
+    }
+    assert_reports(ME_ERR_ARGUMENT_RANGE, RGraphicScale(g, 1, 0, 1));
+    assert_float_equal(fabs(g->m_pVertices[0].m_Y), 1.5, 1e-6);
+    RGraphicDelete(rc, g, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -358,6 +405,7 @@ int main(void)
         cmocka_unit_test(test_aggregate_model_element_by_element),
         cmocka_unit_test(test_aggregate_geometry_as_one_graphic),
         cmocka_unit_test(test_terrain_triangles),
+        cmocka_unit_test(test_strips_and_scaling),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

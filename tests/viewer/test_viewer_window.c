@@ -1,7 +1,7 @@
 /* test_viewer_window.c -- what a window does with its picture, through the paths a window takes but
  * without a display: resizing (the framebuffer's new size; the projection follows it, so a cube stays
  * square on the picture, unless Alt+F9 locked the aspect), F3's frame-rate lock (RRun keeps to 60
- * frames a second), F9's fullscreen and Alt+F9 through Karma's key map. */
+ * frames a second), F9's fullscreen, Alt+F9 and Alt+F4 through Karma's key map. */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 #include "karma_test.h"
 
@@ -138,6 +138,11 @@ static void test_f9_fullscreen_through_the_key_map(void **state)
     RInputKey(rc, RKEY_F9, RALT);
     assert_int_equal(rc->m_private->aspectLock, 1);
     assert_int_equal(rc->m_private->fullscreen, 0);
+    /* Alt+F4 quits (F4 alone does nothing). */
+    RInputKey(rc, RKEY_F4, 0);
+    assert_int_equal(rc->m_bQuitNextFrame, 0);
+    RInputKey(rc, RKEY_F4, RALT);
+    assert_int_equal(rc->m_bQuitNextFrame, 1);
     RRenderContextDestroy(rc);
 }
 

@@ -146,6 +146,14 @@ void MEAPI RGraphicSetColor(RGraphic *g, const float color[4]);
 void MEAPI RGraphicGetColor(RGraphic *g, float color[4]);
 /** Draw this graphic as wireframe (b true) or filled. */
 void MEAPI RGraphicSetWireframe(RGraphic *g, MeBool b);
+/** Scale a graphic's vertices along its local axes (each factor finite and non-zero; others refused
+ *  with ME_ERR_ARGUMENT_RANGE, nothing changed); normals follow (inverse scale, renormalised). */
+void MEAPI RGraphicScale(RGraphic *rg, AcmeReal xScale, AcmeReal yScale, AcmeReal zScale);
+/** Write numStrips triangle strips (strip i: stripSize[i] vertices from strips[stripStart[i]]) into
+ *  rg's vertices as a triangle list, every triangle with the first one's winding (a strip's odd
+ *  triangles are turned); a strip of n vertices gives n − 2 triangles. Refused (ME_ERR_ARGUMENT_RANGE,
+ *  nothing written) when they do not fit in rg's m_nMaxNumVertices; sets its vertex count. */
+void MEAPI RConvertTriStripToTriList(RGraphic *rg, RObjectVertex *strips, int *stripSize, int *stripStart, int numStrips);
 
 /** A filled rectangle in the 2D list at (orig_x, orig_y) (top left) of width × height, in the
  *  virtual 640×448 screen; alpha < 1 blends. */

@@ -1,6 +1,7 @@
 /* RGraphic.c -- graphics: creation, render lists, colour, the matrix they follow. The primitives'
  * triangle lists are built in RPrimitives.c; GL buffers are made when a graphic is first drawn, so
  * graphics can be made and changed without a GL context (the null renderer). */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -219,4 +220,53 @@ void RRectangleSet(RGraphic *rg, float x, float y, float width, float height)
         return;
     rg->m_private->x = x, rg->m_private->y = y;
     rg->m_private->w = width > 0 ? width : 0, rg->m_private->h = height > 0 ? height : 0;
+}
+
+void MEAPI RGraphicScale(RGraphic *rg, AcmeReal xScale, AcmeReal yScale, AcmeReal zScale)
+{
+    const double s[3] = {xScale, yScale, zScale};
+    if (!rg)
+        return;
+    for (int k = 0; k < 3; k++)
+        if (!(isfinite(s[k]) && s[k] != 0)) {
+            R_REPORT(ME_ERR_ARGUMENT_RANGE, "RGraphicScale", "scale (%g, %g, %g): each must be finite and not 0",
+                     s[0], s[1], s[2]);
+            return;
+        }
+    for (int i = 0; i < rg->m_pObject->m_nNumVertices; i++) {
+        RObjectVertex *v = &rg->m_pVertices[i];
+        double n[3] = {v->m_NX / s[0], v->m_NY / s[1], v->m_NZ / s[2]};
+        double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        v->m_X = (AcmeReal)(v->m_X * s[0]), v->m_Y = (AcmeReal)(v->m_Y * s[1]), v->m_Z = (AcmeReal)(v->m_Z * s[2]);
+        if (l > 0)
+            v->m_NX = (AcmeReal)(n[0] / l), v->m_NY = (AcmeReal)(n[1] / l), v->m_NZ = (AcmeReal)(n[2] / l);
+    }
+    rg->m_private->dirty = 1;
+}
+
+void MEAPI RConvertTriStripToTriList(RGraphic *rg, RObjectVertex *strips, int *stripSize, int *stripStart, int numStrips)
+{
+    if (!rg || (numStrips > 0 && (!strips || !stripSize || !stripStart)))
+        return;
+    long need = 0;
+    for (int i = 0; i < numStrips; i++)
+        need += stripSize[i] >= 3 ? 3L * (stripSize[i] - 2) : 0;
+    if (numStrips < 0 || need > rg->m_nMaxNumVertices) {
+        R_REPORT(ME_ERR_ARGUMENT_RANGE, "RConvertTriStripToTriList", "%ld vertices do not fit in the graphic's %d",
+                 need, rg->m_nMaxNumVertices);
+        return;
+    }
+    RObjectVertex *out = rg->m_pVertices;
+    for (int i = 0; i < numStrips; i++) {
+        const RObjectVertex *s = strips + stripStart[i];
+        for (int k = 0; k + 2 < stripSize[i]; k++) {
+            /* Strip triangle k is (k, k+1, k+2); the odd ones wind the other way: swap two corners. */
+            int odd = k & 1;
+            *out++ = s[k];
+            *out++ = s[k + 1 + odd];
+            *out++ = s[k + 2 - odd];
+        }
+    }
+    rg->m_pObject->m_nNumVertices = (int)need;
+    rg->m_private->dirty = 1;
 }

@@ -227,7 +227,7 @@ struct RBackend {
 /** Key codes the backends translate to (GLFW's values for printable keys: their ASCII capitals). */
 enum {
     RKEY_ESCAPE = 256, RKEY_ENTER = 257, RKEY_RIGHT = 262, RKEY_LEFT = 263, RKEY_DOWN = 264, RKEY_UP = 265,
-    RKEY_PAGE_UP = 266, RKEY_PAGE_DOWN = 267, RKEY_F1 = 290, RKEY_F2 = 291, RKEY_F3 = 292, RKEY_F8 = 297, RKEY_F9 = 298,
+    RKEY_PAGE_UP = 266, RKEY_PAGE_DOWN = 267, RKEY_F1 = 290, RKEY_F2 = 291, RKEY_F3 = 292, RKEY_F4 = 293, RKEY_F8 = 297, RKEY_F9 = 298,
     RKEY_F12 = 301, RKEY_KP_ADD = 334,
     RKEY_KP_SUBTRACT = 333
 };
