@@ -3,7 +3,8 @@
  * element of an aggregate (nested aggregates included) lands on pixels of its colour, the gap between
  * two elements does not, and the elements follow the model when it moves and turns. The triangles
  * themselves are checked against the geometry: every hull vertex carries its polygon's outward
- * normal, a triangle mesh and a height field give their own triangles. */
+ * normal, a triangle mesh and a height field give their own triangles; triangle strips become a list
+ * of one winding, and a scaled box spans its new sizes. */
 #include "karma_test.h"
 
 #include <stdlib.h>

@@ -1,4 +1,6 @@
-/* RGraphic.c -- graphics: creation, render lists, colour, the matrix they follow. The primitives'
+/* RGraphic.c -- graphics: creation, render lists, colour, the matrix they follow, scaling and
+ * strips to triangle lists. A graphic may carry others (`part`: an aggregate model's elements) that
+ * are listed, coloured and destroyed with it. The primitives'
  * triangle lists are built in RPrimitives.c; GL buffers are made when a graphic is first drawn, so
  * graphics can be made and changed without a GL context (the null renderer). */
 #include <math.h>
