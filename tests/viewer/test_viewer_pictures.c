@@ -12,6 +12,7 @@
 #include "RInternal.h"
 #include "demo_view.h"
 #include "viewer_project.h"
+#include "viewer_two_colour_png.h"
 
 /* Small pictures keep the software renderer fast; the checks do not depend on the size. */
 #define W 320
@@ -467,19 +468,6 @@ static void writeBmp(const char *path)
     fclose(f);
 }
 
-/* The same picture as a PNG, drawn by the viewer itself: two 2D rectangles on a 2 × 1 picture. */
-static void writePng(const char *path)
-{
-    RRender *small = RRenderContextCreateHeadless(2, 1);
-    assert_non_null(small);
-    const float red[4] = {1, 0, 0, 1}, blue[4] = {0, 0, 1, 1};
-    RGraphic2DRectangleCreate(small, 0, 0, 320, 448, red);
-    RGraphic2DRectangleCreate(small, 320, 0, 320, 448, blue);
-    RRenderDrawFrame(small);
-    assert_int_equal(RRenderSavePNG(small, path), 0);
-    RRenderContextDestroy(small);
-}
-
 /* Textures as Karma names them (no extension: .bmp, then .png) multiply the graphic's colour at its
  * texture coordinates: a white box's front face (u along x) shows the image's red left half on the
  * left and its blue right half on the right, from the BMP and from the PNG alike; -notextures
@@ -487,7 +475,7 @@ static void writePng(const char *path)
 static void test_textures_bmp_and_png(void **state)
 {
     writeBmp("viewer_texture_bmp.bmp");
-    writePng("viewer_texture_png.png");
+    assert_int_equal(viewerWriteTwoColourPng("viewer_texture_png.png"), 0); /* the same picture */
     const float white[4] = {1, 1, 1, 1}, red[4] = {1, 0, 0, 1}, blue[4] = {0, 0, 1, 1};
     for (int k = 0; k < 3; k++)
         rc->m_backgroundColour[k] = 0;

@@ -105,11 +105,20 @@ RGraphic *MEAPI RGraphicLineCreate(RRender *rc, AcmeReal origin[3], AcmeReal end
 int MEAPI RGraphicLineMoveEnds(RGraphic *lineG, AcmeReal *origin, AcmeReal *end);
 /** Text at (orig_x, orig_y) in the virtual 640×448 screen (top left of the text), in the 2D list. */
 RGraphic *MEAPI RGraphicTextCreate(RRender *rc, char *text, AcmeReal orig_x, AcmeReal orig_y, const float color[4]);
-/** The graphic of a model's geometry (sphere, box, cylinder, cone, sphyl, plane), following the
- *  model's transform. NULL (with a message) for a geometry type it cannot draw. */
+/** The graphic of a model's geometry (sphere, box, cylinder, cone, sphyl, plane, convex mesh,
+ *  triangle mesh, height field), following the model's transform. An aggregate model's graphic
+ *  holds no vertices: a graphic for each element follows that element's geometry instance (its
+ *  world transform at the model's last update, nested aggregates included) and goes with it (lists,
+ *  colour, wireframe, delete). NULL (with a message) for a geometry type it cannot draw. */
 RGraphic *MEAPI RGraphicCreateFromModel(RRender *rc, McdModelID m, float color[4]);
-/** The graphic of a geometry, following `matrix`. NULL for a type it cannot draw. */
-RGraphic *MEAPI RGraphicCreateFromGeometry(RRender *rc, McdGeometryID g, float color[4], MeMatrix4Ptr matrix);
+/** The graphic of a geometry in its own frame (no matrix followed: set one with
+ *  RGraphicSetTransformPtr), as Karma 1.2's; an aggregate as RGraphicAggregateCreate. NULL (with a
+ *  message) for a type it cannot draw (a triangle list: its triangles exist only in queries). */
+RGraphic *MEAPI RGraphicCreateFromGeometry(RRender *rc, McdGeometryID g, float color[4]);
+/** One graphic of all of aggregate ag's elements placed by their relative transforms (nested ones
+ *  composed) as they are now, following `tm`, as Karma 1.2's. NULL (with a message) for a NULL
+ *  context or a geometry that is not an aggregate. */
+RGraphic *MEAPI RGraphicAggregateCreate(RRender *rc, McdAggregateID ag, float color[4], MeMatrix4Ptr tm);
 
 /** Load a texture (BMP, PNG or another format stb_image reads) from `filename`, tried as given, then
  *  with ".bmp" and ".png" when it has no extension (Karma names textures without one); the same
@@ -137,6 +146,14 @@ void MEAPI RGraphicSetColor(RGraphic *g, const float color[4]);
 void MEAPI RGraphicGetColor(RGraphic *g, float color[4]);
 /** Draw this graphic as wireframe (b true) or filled. */
 void MEAPI RGraphicSetWireframe(RGraphic *g, MeBool b);
+/** Scale a graphic's vertices along its local axes (each factor finite and non-zero; others refused
+ *  with ME_ERR_ARGUMENT_RANGE, nothing changed); normals follow (inverse scale, renormalised). */
+void MEAPI RGraphicScale(RGraphic *rg, AcmeReal xScale, AcmeReal yScale, AcmeReal zScale);
+/** Write numStrips triangle strips (strip i: stripSize[i] vertices from strips[stripStart[i]]) into
+ *  rg's vertices as a triangle list, every triangle with the first one's winding (a strip's odd
+ *  triangles are turned); a strip of n vertices gives n − 2 triangles. Refused (ME_ERR_ARGUMENT_RANGE,
+ *  nothing written) when they do not fit in rg's m_nMaxNumVertices; sets its vertex count. */
+void MEAPI RConvertTriStripToTriList(RGraphic *rg, RObjectVertex *strips, int *stripSize, int *stripStart, int numStrips);
 
 /** A filled rectangle in the 2D list at (orig_x, orig_y) (top left) of width × height, in the
  *  virtual 640×448 screen; alpha < 1 blends. */
@@ -183,6 +200,17 @@ void MEAPI RPerformanceBarUpdate(RRender *rc, AcmeReal coltime, AcmeReal dyntime
 void MEAPI RRenderDisplayFps(RRender *rc, AcmeReal fps);
 /** Have RRun show the frame rate it measures (Ctrl+F3 flips it). */
 void MEAPI RRenderSetDisplayFps(RRender *rc, int bVal);
+/** Lock the frame rate or unlock it (F3): a window waits for its display's refresh (vsync, on when
+ *  it opens); without a window RRun keeps its frames 1/rate s apart (off when it starts). */
+void MEAPI RRenderToggleFrameLock(RRender *rc);
+/** The locked rate without a window's refresh, frames a second (1 … 1000; 60 until set); others
+ *  refused (ME_ERR_ARGUMENT_RANGE, unchanged). */
+void MEAPI RRenderSetFrameLockRate(RRender *rc, unsigned int iRate);
+/** A sky: a sphere textured with `name` (as RRenderTextureCreate finds it) repeated tileU times
+ *  around and tileV times from pole to pole, drawn unlit and without shadows, always centred on the
+ *  camera (400 m away, inside the far plane). One a context: a second call replaces it. An
+ *  unreadable texture or tiles below 1 are refused (with a message, no sky). */
+void MEAPI RRenderSkydomeCreate(RRender *const rc, const char *name, int tileU, int tileV);
 
 /** Addition: show Karma's debug lines (MeDebugDraw.h: MdtWorldSetDebugDrawing's contacts,
  *  McduDebugDraw*'s shapes and boxes) in this context: MeDebugDrawAPI.line collects the lines drawn

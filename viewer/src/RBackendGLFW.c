@@ -11,6 +11,7 @@ typedef struct GLFWBackend {
     RBackend base;
     GLFWwindow *window;
     RRender *rc;
+    int windowed[4];         /**< x, y, width, height before fullscreen */
 } GLFWBackend;
 
 /** Windows open at once: GLFW is terminated when the last closes. */
@@ -62,6 +63,33 @@ static void onMove(GLFWwindow *w, double x, double y)
     RInputMouseMove(g->rc, (int)x, (int)y, heldModifiers(w), buttons);
 }
 
+static void onResize(GLFWwindow *w, int width, int height)
+{
+    GLFWBackend *g = glfwGetWindowUserPointer(w);
+    if (width > 0 && height > 0) /* 0 × 0 while iconified: keep the picture */
+        RRenderResize(g->rc, width, height);
+}
+
+static void glfwSwap(RBackend *b, int interval)
+{
+    glfwMakeContextCurrent(((GLFWBackend *)b)->window);
+    glfwSwapInterval(interval);
+}
+
+static void glfwFullscreen(RBackend *b, int on)
+{
+    GLFWBackend *g = (GLFWBackend *)b;
+    GLFWmonitor *monitor = glfwGetPrimaryMonitor();
+    const GLFWvidmode *mode = monitor ? glfwGetVideoMode(monitor) : NULL;
+    if (on && mode && !glfwGetWindowMonitor(g->window)) {
+        glfwGetWindowPos(g->window, &g->windowed[0], &g->windowed[1]);
+        glfwGetWindowSize(g->window, &g->windowed[2], &g->windowed[3]);
+        glfwSetWindowMonitor(g->window, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+    } else if (!on && glfwGetWindowMonitor(g->window)) {
+        glfwSetWindowMonitor(g->window, NULL, g->windowed[0], g->windowed[1], g->windowed[2], g->windowed[3], 0);
+    }
+}
+
 static void glfwBackendDestroy(RBackend *b)
 {
     GLFWBackend *g = (GLFWBackend *)b;
@@ -109,7 +137,7 @@ RBackend *RBackendGLFWCreate(RRender *rc, int width, int height, const char *tit
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE); /* the picture's size is fixed at creation */
+    glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE); /* the picture follows the framebuffer (RRenderResize) */
     g->window = glfwCreateWindow(width, height, title, NULL, NULL);
     if (!g->window) {
         R_REPORT(ME_ERR_BAD_STATE, "RRenderContextCreate", "GLFW cannot open a window with OpenGL 3.3 core");
@@ -125,11 +153,14 @@ RBackend *RBackendGLFWCreate(RRender *rc, int width, int height, const char *tit
     g->base.poll = glfwPoll;
     g->base.present = glfwPresent;
     g->base.setTitle = glfwTitle;
+    g->base.setSwapInterval = glfwSwap;
+    g->base.setFullscreen = glfwFullscreen;
     g->base.drawsToWindow = 1;
     glfwSetWindowUserPointer(g->window, g);
     glfwSetKeyCallback(g->window, onKey);
     glfwSetMouseButtonCallback(g->window, onButton);
     glfwSetCursorPosCallback(g->window, onMove);
+    glfwSetFramebufferSizeCallback(g->window, onResize);
     glfwMakeContextCurrent(g->window);
     glfwSwapInterval(1);
     return &g->base;

@@ -304,6 +304,19 @@ void RGLInstanceAttributes(unsigned int buffer, size_t offset)
     }
 }
 
+int RGLResize(struct RGL *gl, int width, int height)
+{
+    int oldWidth = gl->width, oldHeight = gl->height;
+    freeTargets(gl);
+    gl->width = width, gl->height = height;
+    if (makeTargets(gl))
+        return 0;
+    freeTargets(gl);
+    gl->width = oldWidth, gl->height = oldHeight;
+    makeTargets(gl);
+    return -1;
+}
+
 struct RGL *RGLCreate(RBackend *backend, int width, int height)
 {
     struct RGL *gl = calloc(1, sizeof *gl);
@@ -521,6 +534,12 @@ static int prepare(struct RGL *gl, RRender *rc)
         /* Karma's composite matrix: the followed transform, copied in each frame. */
         if (rg->m_pLWMatrix)
             memcpy(h->m_Matrix, rg->m_pLWMatrix, sizeof h->m_Matrix);
+        if (rg == rc->m_private->skydome) { /* the sky is as far away wherever the camera goes */
+            AcmeVector3 eye;
+            RCameraGetPosition(rc, eye);
+            for (int k = 0; k < 3; k++)
+                h->m_Matrix[3][k] = eye[k];
+        }
         /* Eye-space z (negative in front): −z is the distance along the view direction. */
         const MeReal(*c)[4] = (const MeReal(*)[4])rc->m_CamMatrix, *t = h->m_Matrix[3];
         float depth = -(float)(t[0] * c[0][2] + t[1] * c[1][2] + t[2] * c[2][2] + c[3][2]);
@@ -530,7 +549,7 @@ static int prepare(struct RGL *gl, RRender *rc)
             continue;
         RDrawItem *it = &gl->items[count++];
         it->g = rg, it->mesh = shape->m_private->mesh, it->order = order, it->depth = depth;
-        it->plain = p->kind == kRKindTriangles && p->checkerCell <= 0 && !h->m_bIsWireFrame &&
+        it->plain = p->kind == kRKindTriangles && !p->unlit && p->checkerCell <= 0 && !h->m_bIsWireFrame &&
                     !rc->m_options.m_bWireFrame && h->m_ColorDiffuse[3] >= 1.0f && textureOf(rc, rg) < 0;
         it->casts = RShadowCasts(rg, rc);
     }
@@ -569,7 +588,7 @@ static void setGraphicState(struct RGL *gl, const RGraphic *rg)
 {
     const GLint *u = gl->u3;
     const struct RGraphicPrivate *p = rg->m_private;
-    glUniform1i(u[U_UNLIT], p->kind == kRKindLines);
+    glUniform1i(u[U_UNLIT], p->kind == kRKindLines || p->unlit);
     glUniform1f(u[U_CHECKER], p->checkerCell);
     if (p->checkerCell > 0) {
         /* A ground plane's cells lie in its x–z plane, a square's in its x–y plane. */

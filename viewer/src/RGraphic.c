@@ -1,6 +1,9 @@
-/* RGraphic.c -- graphics: creation, render lists, colour, the matrix they follow. The primitives'
+/* RGraphic.c -- graphics: creation, render lists, colour, the matrix they follow, scaling and
+ * strips to triangle lists. A graphic may carry others (`part`: an aggregate model's elements) that
+ * are listed, coloured and destroyed with it. The primitives'
  * triangle lists are built in RPrimitives.c; GL buffers are made when a graphic is first drawn, so
  * graphics can be made and changed without a GL context (the null renderer). */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -57,7 +60,10 @@ RGraphic *RGraphicNew(RRender *rc, RGraphicKind kind, int n, const float color[4
 
 void MEAPI RGraphicAddToList(RRender *rc, RGraphic *rg, int is2D)
 {
-    if (!rc || !rg || rg->m_private->inList)
+    if (!rc || !rg)
+        return;
+    RGraphicAddToList(rc, rg->m_private->part, is2D);
+    if (rg->m_private->inList)
         return;
     RGraphic **head = is2D ? &rc->m_pRG_First2D : &rc->m_pRG_First;
     /* Appended, so graphics draw in the order they were made (later text over earlier). */
@@ -72,6 +78,7 @@ void MEAPI RGraphicRemoveFromList(RRender *rc, RGraphic *rg, int is2D)
 {
     if (!rc || !rg)
         return;
+    RGraphicRemoveFromList(rc, rg->m_private->part, is2D);
     RGraphic **head = is2D ? &rc->m_pRG_First2D : &rc->m_pRG_First;
     for (; *head; head = &(*head)->m_pNext)
         if (*head == rg) {
@@ -88,6 +95,7 @@ void MEAPI RGraphicDestroy(RGraphic *rg)
         return;
     if (rg->m_private->inList)
         R_REPORT(ME_ERR_BAD_STATE, "RGraphicDestroy", "the graphic is still in a render list: use RGraphicDelete");
+    RGraphicDestroy(rg->m_private->part);
     RGLReleaseGraphic(rg);
     for (int k = 0; k < R_LOD_LEVELS; k++)
         RGraphicDestroy(rg->m_private->lod[k]);
@@ -116,6 +124,7 @@ void MEAPI RGraphicSetColor(RGraphic *g, const float color[4])
 {
     if (!g || !color)
         return;
+    RGraphicSetColor(g->m_private->part, color);
     RObjectHeader *h = g->m_pObject;
     for (int i = 0; i < 3; i++) {
         h->m_ColorAmbient[i] = 0.5f * color[i]; /* with Karma's lights: lit faces bright, unlit ones still coloured */
@@ -135,8 +144,10 @@ void MEAPI RGraphicGetColor(RGraphic *g, float color[4])
 
 void MEAPI RGraphicSetWireframe(RGraphic *g, MeBool b)
 {
-    if (g)
+    if (g) {
+        RGraphicSetWireframe(g->m_private->part, b);
         g->m_pObject->m_bIsWireFrame = b ? 1 : 0;
+    }
 }
 
 int MEAPI RGraphicLineMoveEnds(RGraphic *lineG, AcmeReal *origin, AcmeReal *end)
@@ -211,4 +222,53 @@ void RRectangleSet(RGraphic *rg, float x, float y, float width, float height)
         return;
     rg->m_private->x = x, rg->m_private->y = y;
     rg->m_private->w = width > 0 ? width : 0, rg->m_private->h = height > 0 ? height : 0;
+}
+
+void MEAPI RGraphicScale(RGraphic *rg, AcmeReal xScale, AcmeReal yScale, AcmeReal zScale)
+{
+    const double s[3] = {xScale, yScale, zScale};
+    if (!rg)
+        return;
+    for (int k = 0; k < 3; k++)
+        if (!(isfinite(s[k]) && s[k] != 0)) {
+            R_REPORT(ME_ERR_ARGUMENT_RANGE, "RGraphicScale", "scale (%g, %g, %g): each must be finite and not 0",
+                     s[0], s[1], s[2]);
+            return;
+        }
+    for (int i = 0; i < rg->m_pObject->m_nNumVertices; i++) {
+        RObjectVertex *v = &rg->m_pVertices[i];
+        double n[3] = {v->m_NX / s[0], v->m_NY / s[1], v->m_NZ / s[2]};
+        double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        v->m_X = (AcmeReal)(v->m_X * s[0]), v->m_Y = (AcmeReal)(v->m_Y * s[1]), v->m_Z = (AcmeReal)(v->m_Z * s[2]);
+        if (l > 0)
+            v->m_NX = (AcmeReal)(n[0] / l), v->m_NY = (AcmeReal)(n[1] / l), v->m_NZ = (AcmeReal)(n[2] / l);
+    }
+    rg->m_private->dirty = 1;
+}
+
+void MEAPI RConvertTriStripToTriList(RGraphic *rg, RObjectVertex *strips, int *stripSize, int *stripStart, int numStrips)
+{
+    if (!rg || (numStrips > 0 && (!strips || !stripSize || !stripStart)))
+        return;
+    long need = 0;
+    for (int i = 0; i < numStrips; i++)
+        need += stripSize[i] >= 3 ? 3L * (stripSize[i] - 2) : 0;
+    if (numStrips < 0 || need > rg->m_nMaxNumVertices) {
+        R_REPORT(ME_ERR_ARGUMENT_RANGE, "RConvertTriStripToTriList", "%ld vertices do not fit in the graphic's %d",
+                 need, rg->m_nMaxNumVertices);
+        return;
+    }
+    RObjectVertex *out = rg->m_pVertices;
+    for (int i = 0; i < numStrips; i++) {
+        const RObjectVertex *s = strips + stripStart[i];
+        for (int k = 0; k + 2 < stripSize[i]; k++) {
+            /* Strip triangle k is (k, k+1, k+2); the odd ones wind the other way: swap two corners. */
+            int odd = k & 1;
+            *out++ = s[k];
+            *out++ = s[k + 1 + odd];
+            *out++ = s[k + 2 - odd];
+        }
+    }
+    rg->m_pObject->m_nNumVertices = (int)need;
+    rg->m_private->dirty = 1;
 }

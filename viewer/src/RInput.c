@@ -1,7 +1,8 @@
 /* RInput.c -- Karma's PC key map and mouse, and the application's callbacks:
  * arrows Up/Down/Left/Right (a menu's while one is shown), w s a d Up2/Down2/Left2/Right2, h m
- * Enter Space o p actions 0–5 (m shows the default menu when there is one), Esc quits, + and −
- * zoom, F1 help, F2 wireframe (Shift+F2 textures), Ctrl+F3 frame rate, F8 single step (pausing), Ctrl+F8 pause/play,
+ * Enter Space o p actions 0–5 (m shows the default menu when there is one), Esc and Alt+F4 quit, + and −
+ * zoom, F1 help, F2 wireframe (Shift+F2 textures), F3 frame-rate lock (Ctrl+F3 frame rate shown), F8 single
+ * step (pausing), Ctrl+F8 pause/play, F9 fullscreen (Alt+F9 aspect lock),
  * F12 the viewer's menu, PgUp/PgDn move the look-at point along z. Mouse without modifier: left drag orbits, middle drag zooms, right drag
  * pans; with Ctrl, Shift or Alt events go to the application's mouse callback. */
 #include <ctype.h>
@@ -89,11 +90,23 @@ void RInputKey(RRender *rc, int key, int modifiers)
         return;
     switch (key) {
     case RKEY_ESCAPE: RRenderQuit(rc); return;
+    case RKEY_F4: /* Alt+F4 quits, where the window manager leaves it to the window */
+        if (modifiers & RALT)
+            RRenderQuit(rc);
+        return;
     case RKEY_F1: RRenderToggleUserHelp(rc); return;
     case RKEY_F12: RMenuToggle(rc, rc->m_private->menuShown ? NULL : RViewerMenu(rc)); return;
-    case RKEY_F3:
+    case RKEY_F3: /* Ctrl+F3: the frame rate shown; F3: the rate locked */
         if (modifiers & RCONTROL)
             RRenderSetDisplayFps(rc, !rc->m_private->showFps);
+        else
+            RRenderToggleFrameLock(rc);
+        return;
+    case RKEY_F9: /* Alt+F9: the aspect kept through resizes; F9: fullscreen */
+        if (modifiers & RALT)
+            rc->m_private->aspectLock = !rc->m_private->aspectLock;
+        else
+            RRenderSetFullscreen(rc, !rc->m_private->fullscreen);
         return;
     case RKEY_UP: press(rc, &cb->m_Button[kRButtonUp]); return;
     case RKEY_DOWN: press(rc, &cb->m_Button[kRButtonDown]); return;

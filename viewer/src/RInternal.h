@@ -42,6 +42,9 @@ struct RGraphicPrivate {
     float w, h;              /**< kRKindRect2D: size in the virtual screen */
     RGraphic *lod[R_LOD_LEVELS]; /**< spheres, sphyls: the same shape with 1/2 and 1/4 of the sides (in no list) */
     float lodExtent;         /**< their farthest point from the local origin (m) */
+    int unlit;               /**< drawn in its colour (and texture) alone: no light, no shadow (the skydome) */
+    RGraphic *part;          /**< the next graphic of the same model (an aggregate's elements, chained
+                                  from the model's graphic): listed, coloured and destroyed with it */
 };
 
 typedef struct RBackend RBackend;
@@ -70,6 +73,11 @@ struct RRenderPrivate {
     RGraphic *fpsText;
     double fps;              /**< frames a second, averaged over the last half second */
     int noShadows;           /**< the F12 menu turned shadows off */
+    int frameLock;           /**< F3: at most R_LOCKED_RATE frames a second (a window: its refresh, vsync) */
+    int aspectLock;          /**< Alt+F9: the projection keeps its aspect when the picture is resized */
+    RGraphic *skydome;       /**< RRenderSkydomeCreate's sphere (in the 3D list), centred on the camera each frame */
+    int lockRate;            /**< frames a second of the frame-rate lock without vsync (RRenderSetFrameLockRate) */
+    int fullscreen;          /**< F9: the window covers its monitor (offscreen: only remembered) */
     unsigned int profileFrames; /**< -profile N: frames to profile (0: -timeout's, or 1,000) */
     struct RDebugDraw *debugDraw; /**< lines from MeDebugDrawAPI (RRenderSetDebugDrawing), or NULL */
     RTexture textures[R_MAX_TEXTURES]; /**< RRenderTextureCreate's, by id */
@@ -80,6 +88,10 @@ struct RRenderPrivate {
 /* ---- RGraphic.c ---------------------------------------------------------------------------- */
 /** A graphic of `kind` with room for n vertices, coloured, following matrix, put in the 3D list. */
 RGraphic *RGraphicNew(RRender *rc, RGraphicKind kind, int n, const float color[4], MeMatrix4Ptr matrix);
+
+/** A triangle mesh's triangles / a height field's cells (RGraphicTerrain.c), following matrix. */
+RGraphic *RGraphicTriangleMeshCreate(RRender *rc, McdGeometryID g, const float color[4], MeMatrix4Ptr matrix);
+RGraphic *RGraphicHeightFieldCreate(RRender *rc, McdGeometryID g, const float color[4], MeMatrix4Ptr matrix);
 
 /** Replace a text graphic's string (copied). Returns 0, or −1 for anything but text. */
 int RGraphicTextSet(RGraphic *rg, const char *text);
@@ -113,6 +125,18 @@ void MEAPI RDebugDrawNothing(MeVector3 start, MeVector3 end, MeReal r, MeReal g,
 /** The viewer's own menu (F12), made on first use. */
 RMenu *RViewerMenu(RRender *rc);
 
+/** Frames a second RRun keeps to by default when the frame rate is locked (F3) and no window's
+ *  refresh paces it. */
+#define R_LOCKED_RATE 60
+/** The picture becomes width × height pixels (a window's framebuffer was resized): the framebuffers
+ *  follow and, unless the aspect is locked (Alt+F9), the projection's aspect. Returns 0, or −1 (with
+ *  a message, size unchanged) for a size outside 1 … 8192 or framebuffers that cannot be made. */
+int RRenderResize(RRender *rc, int width, int height);
+/** F3: lock or unlock the frame rate (a window's swap interval, else RRun's own pacing). */
+void RRenderSetFrameRateLock(RRender *rc, int on);
+/** F9: fullscreen on or off (a window only; offscreen the state is kept for when it matters). */
+void RRenderSetFullscreen(RRender *rc, int on);
+
 /* ---- RCamera.c ----------------------------------------------------------------------------- */
 /** Karma's default camera and projection for a context whose size is set. */
 void RCameraSetDefaults(RRender *rc);
@@ -128,6 +152,8 @@ struct RGL *RGLCreate(RBackend *backend, int width, int height);
 /** Free the GL objects, those of every graphic drawn with it too (which stay usable: they upload
  *  again when drawn by another context). */
 void RGLDestroy(struct RGL *gl);
+/** Remake the framebuffers at width × height (the context current); 0, or −1 when they cannot be made. */
+int RGLResize(struct RGL *gl, int width, int height);
 /** Draw every graphic of both lists into the multisampled framebuffer, resolve it into the picture
  *  RGLReadPixels reads and, with toWindow, copy it to the window's framebuffer. */
 void RGLDrawFrame(struct RGL *gl, RRender *rc, int toWindow);
@@ -190,6 +216,10 @@ struct RBackend {
     /** Show the frame drawn (windows); NULL offscreen. */
     void (*present)(RBackend *b);
     void (*setTitle)(RBackend *b, const char *title);
+    /** Windows: vsync on or off (the frame-rate lock); NULL offscreen (RRun paces itself). */
+    void (*setSwapInterval)(RBackend *b, int interval);
+    /** Windows: cover the primary monitor, or back to the window's size and place; NULL offscreen. */
+    void (*setFullscreen)(RBackend *b, int on);
     int drawsToWindow;
 };
 
@@ -197,7 +227,7 @@ struct RBackend {
 /** Key codes the backends translate to (GLFW's values for printable keys: their ASCII capitals). */
 enum {
     RKEY_ESCAPE = 256, RKEY_ENTER = 257, RKEY_RIGHT = 262, RKEY_LEFT = 263, RKEY_DOWN = 264, RKEY_UP = 265,
-    RKEY_PAGE_UP = 266, RKEY_PAGE_DOWN = 267, RKEY_F1 = 290, RKEY_F2 = 291, RKEY_F3 = 292, RKEY_F8 = 297,
+    RKEY_PAGE_UP = 266, RKEY_PAGE_DOWN = 267, RKEY_F1 = 290, RKEY_F2 = 291, RKEY_F3 = 292, RKEY_F4 = 293, RKEY_F8 = 297, RKEY_F9 = 298,
     RKEY_F12 = 301, RKEY_KP_ADD = 334,
     RKEY_KP_SUBTRACT = 333
 };

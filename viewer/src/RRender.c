@@ -1,5 +1,6 @@
 /* RRender.c -- render contexts: options, creation on a backend (window, offscreen, none), the main
- * loop RRun with pause and single step, and reading the picture back. */
+ * loop RRun with pause, single step and the frame-rate lock, resizing, and reading the picture back. */
+#define _POSIX_C_SOURCE 200809L /* nanosleep */
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
@@ -125,7 +126,77 @@ static RRender *contextStart(RRender *rc, int width, int height)
         RRenderContextDestroy(rc);
         return NULL;
     }
+    p->frameLock = p->backend->drawsToWindow; /* a window starts with vsync, as Karma's locked rate */
     return rc;
+}
+
+int RRenderResize(RRender *rc, int width, int height)
+{
+    if (!rc)
+        return -1;
+    if (width < 1 || height < 1 || width > R_MAX_SIZE || height > R_MAX_SIZE) {
+        R_REPORT(ME_ERR_ARGUMENT_RANGE, "RRenderResize", "size %d x %d is outside 1 to %d", width, height, R_MAX_SIZE);
+        return -1;
+    }
+    struct RRenderPrivate *p = rc->m_private;
+    if (p->gl) {
+        p->backend->makeCurrent(p->backend);
+        if (RGLResize(p->gl, width, height) != 0) {
+            R_REPORT(ME_ERR_BAD_STATE, "RRenderResize", "no framebuffers of %d x %d: the picture keeps its size", width,
+                     height);
+            return -1;
+        }
+        p->drawn = 0; /* the picture read back must be one of the new size */
+    }
+    p->width = width, p->height = height;
+    if (!p->aspectLock)
+        rc->m_AspectRatio = (AcmeReal)width / (AcmeReal)height;
+    RCameraUpdate(rc);
+    return 0;
+}
+
+void RRenderSetFrameRateLock(RRender *rc, int on)
+{
+    struct RRenderPrivate *p = rc->m_private;
+    p->frameLock = on ? 1 : 0;
+    if (p->backend && p->backend->setSwapInterval)
+        p->backend->setSwapInterval(p->backend, p->frameLock);
+}
+
+void MEAPI RRenderToggleFrameLock(RRender *rc)
+{
+    if (rc)
+        RRenderSetFrameRateLock(rc, !rc->m_private->frameLock);
+}
+
+void MEAPI RRenderSetFrameLockRate(RRender *rc, unsigned int iRate)
+{
+    if (!rc)
+        return;
+    if (iRate < 1 || iRate > 1000) {
+        R_REPORT(ME_ERR_ARGUMENT_RANGE, "RRenderSetFrameLockRate", "%u frames a second is not 1 to 1000", iRate);
+        return;
+    }
+    rc->m_private->lockRate = (int)iRate;
+}
+
+void RRenderSetFullscreen(RRender *rc, int on)
+{
+    struct RRenderPrivate *p = rc->m_private;
+    p->fullscreen = on ? 1 : 0;
+    if (p->backend && p->backend->setFullscreen)
+        p->backend->setFullscreen(p->backend, p->fullscreen);
+}
+
+/* Sleep until `until` (seconds of `seconds()`'s clock); nothing when it has passed. */
+static void sleepUntil(double until, double now)
+{
+    if (until <= now)
+        return;
+    double wait = until - now;
+    struct timespec t = {(time_t)wait, (long)((wait - (double)(time_t)wait) * 1e9)};
+    while (nanosleep(&t, &t) != 0 && errno == EINTR)
+        ;
 }
 
 RRender *MEAPI RRenderContextCreate(MeCommandLineOptions *options, MeCommandLineOptions *overrideoptions, int eat)
@@ -331,13 +402,18 @@ void MEAPI RRun(RRender *rc, RMainLoopCallBack func, void *userdata)
             MeProfileEndSection("Rendering");
             MeProfileEndFrame();
         }
-        double t3 = seconds();
+        double drawn = seconds(), t3 = drawn;
+        /* The frame-rate lock without a window's vsync: frames start 1/R_LOCKED_RATE s apart (idle time). */
+        if (p->frameLock && !(p->backend && p->backend->setSwapInterval)) {
+            sleepUntil(t0 + 1.0 / (p->lockRate > 0 ? p->lockRate : R_LOCKED_RATE), drawn);
+            t3 = seconds();
+        }
         application += t2 - t1;
         p->frames++;
         if (p->perfBar) { /* -profile keeps totals: the bar shows their average a frame */
             AcmeReal per = rc->m_bProfiling ? (AcmeReal)(1.0 / (double)(frame + 1)) : 1;
             RPerformanceBarUpdate(rc, per * MeProfileGetSectionTime("Collision"), per * MeProfileGetSectionTime("Dynamics"),
-                                  (AcmeReal)(1e3 * (t3 - t2)), (AcmeReal)(1e3 * (t1 - t0)));
+                                  (AcmeReal)(1e3 * (drawn - t2)), (AcmeReal)(1e3 * (t1 - t0 + t3 - drawn)));
         }
         periodFrames++;
         if (t3 - periodStart >= R_FPS_PERIOD) {

@@ -80,7 +80,7 @@ void RShadowDestroy(struct RShadow *s)
 int RShadowCasts(const RGraphic *rg, const RRender *rc)
 {
     const struct RGraphicPrivate *p = rg->m_private;
-    return p->kind == kRKindTriangles && p->checkerCell <= 0 && !rg->m_pObject->m_bIsWireFrame &&
+    return p->kind == kRKindTriangles && !p->unlit && p->checkerCell <= 0 && !rg->m_pObject->m_bIsWireFrame &&
            !rc->m_options.m_bWireFrame;
 }
 
