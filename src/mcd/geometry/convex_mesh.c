@@ -18,8 +18,7 @@
 #define CLIMB_MIN_VERTICES 48
 
 /* Index of the vertex farthest along dir (local). Small hulls: every vertex (ties: the first). Large
- * ones: from vertex 0, to the best neighbour while it is farther along dir; on a convex polyhedron a
- * vertex no neighbour improves on is the farthest (ties: one of them). */
+ * ones: climbed to from vertex 0 (McdHullClimb). */
 static int supportIndex(const McdHull *h, const MeVector3 dir)
 {
     int i, best = 0;
@@ -34,9 +33,16 @@ static int supportIndex(const McdHull *h, const MeVector3 dir)
         }
         return best;
     }
+    return McdHullClimb(h, dir, 0);
+}
+
+int McdHullClimb(const McdHull *h, const MeVector3 dir, int start)
+{
+    int best = start >= 0 && start < h->vertexCount ? start : 0;
+    MeReal bestD = MeVector3Dot(h->vertices[best], dir);
     for (int steps = 0; steps < h->vertexCount; steps++) {
         int from = best;
-        for (i = h->neighbourStart[from]; i < h->neighbourStart[from + 1]; i++) {
+        for (int i = h->neighbourStart[from]; i < h->neighbourStart[from + 1]; i++) {
             int w = h->neighbours[i];
             MeReal d = MeVector3Dot(h->vertices[w], dir);
             if (d > bestD) {

@@ -93,28 +93,6 @@ int McdNfConvexMeshConvex(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeo
     return McdNfManifoldCoherent(&s1, &s2, &d, tolerance, contacts, maxContacts, &c->refSide);
 }
 
-/* The hull's lowest vertex along the local direction `down`, climbing the vertex graph from `start`
- * (a vertex no neighbour lies lower than is the lowest on a convex polyhedron). */
-static int lowestFrom(const McdHull *h, const MeVector3 down, int start)
-{
-    int best = start >= 0 && start < h->vertexCount ? start : 0;
-    MeReal bestD = MeVector3Dot(h->vertices[best], down);
-    for (int steps = 0; steps < h->vertexCount; steps++) {
-        int from = best;
-        for (int i = h->neighbourStart[from]; i < h->neighbourStart[from + 1]; i++) {
-            int w = h->neighbours[i];
-            MeReal dw = MeVector3Dot(h->vertices[w], down);
-            if (dw > bestD) {
-                bestD = dw;
-                best = w;
-            }
-        }
-        if (best == from)
-            break;
-    }
-    return best;
-}
-
 int McdNfConvexMeshPlaneCached(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                                MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
@@ -124,7 +102,7 @@ int McdNfConvexMeshPlaneCached(const McdGeometryData *g1, MeMatrix4 tm1, const M
         MeVector3 down, local, p, dp;
         MeVector3MultiplyScalar(down, tm2[2], -ME_R(1.0));
         toLocalDir(local, tm1, down);
-        c->vertex = lowestFrom(h, local, c->vertex);
+        c->vertex = McdHullClimb(h, local, c->vertex); /* the lowest vertex */
         McdNfToWorld(p, tm1, h->vertices[c->vertex]);
         MeVector3Subtract(dp, p, tm2[3]);
         if (MeVector3Dot(dp, tm2[2]) - g1->u.convex.fatness > tolerance)
