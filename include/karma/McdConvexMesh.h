@@ -40,7 +40,7 @@ ME_API int McdConvexMeshGetVertexCount(McdConvexMeshID g);
 ME_API void McdConvexMeshGetVertex(McdConvexMeshID g, int index, MeVector3 position);
 /** The rounding radius (m) given at creation; 0 for an invalid ID or another type (reported). */
 ME_API MeReal McdConvexMeshGetFatness(McdConvexMeshID g);
-/** Unit-density mass properties of the polyhedron without its fatness (m³, m⁵; centre of mass in
+/** Unit-density mass properties of the rounded solid, fatness included, exact (m³, m⁵; centre of mass in
  *  relTM[3], rotation identity); 0 on success, non-zero for another type (reported). */
 ME_API MeI16 McdConvexMeshGetMassProperties(McdConvexMeshID g, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume);
 /** The convex mesh type's number (kMcdGeometryTypeConvexMesh), the same in every framework. */

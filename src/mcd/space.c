@@ -2,6 +2,7 @@
  * McdSpace.h). Models enter and leave in space_model.c; the engine is space_sort.c + space_pairs.c. */
 #include <string.h>
 
+#include <karma/McdInteraction.h>
 #include <karma/MeMemory.h>
 
 #include "../me/check.h"
@@ -56,6 +57,9 @@ McdSpaceData *McdSpaceCreateInternal(struct McdFrameworkData *fw, int axes, int 
 
 void McdSpaceDestroyInternal(McdSpaceData *s)
 {
+    for (int p = 0; p < s->maxPairs; p++) /* pairs still holding a pair test's cache: their goodbye */
+        if (s->pairs[p].pair.cache)
+            McdGoodbye(&s->pairs[p].pair);
     for (int slot = 0; slot < s->maxObjects; slot++) /* release the culling tables */
         if (s->obj[slot].flags & MCD_OBJ_LIVE)
             McdSpaceObjectSetCulling(s, slot, NULL, 0, 0);

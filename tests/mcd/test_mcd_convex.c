@@ -368,33 +368,217 @@ static void prism_mass_properties_and_the_cylinder(void **state)
     McdGeometryDestroy(cyl);
 }
 
-/* A rounded cube (edge 1, fatness r): its exact volume is Steiner's 1 + 6 r + 3 pi r^2 + 4/3 pi r^3;
- * the mass properties take the hull of the vertices moved by r in 62 directions, inside the solid and
- * within r (1 - cos 19 deg) of its surface (18.7 deg: the directions' covering radius): the volume is below by at most area x that. */
-static void rounded_mass_properties(void **state)
+/* The rounded box (half-extents h, radius r) in closed form: its second moment along x, int x^2 dV,
+ * from its cross-sections at x (a rectangle 2hy x 2hz rounded by r for |x| <= hx, by sqrt(r^2 - d^2)
+ * at d = |x| - hx beyond), integrated by hand. */
+static double roundedBoxSecondMoment(double hx, double hy, double hz, double r)
+{
+    const double rect = 4 * hy * hz, perim = 4 * (hy + hz);
+    const double core = 2 * hx * hx * hx / 3 * (rect + perim * r + PI * r * r);
+    const double cap = rect * (pow(hx + r, 3) - pow(hx, 3)) / 3 +
+                       perim * (PI * r * r / 4 * hx * hx + 2 * hx * r * r * r / 3 + PI * pow(r, 4) / 16) +
+                       PI * (2.0 / 3 * hx * hx * r * r * r + hx * pow(r, 4) / 2 + 2.0 / 15 * pow(r, 5));
+    return core + 2 * cap;
+}
+
+/* A rounded box (1 x 2 x 3, fatness 0.3, off the origin and rotated) against the analytic rounded box:
+ * Steiner's volume abc + 2r(ab + bc + ca) + pi r^2 (a + b + c) + 4/3 pi r^3, the centre, and the
+ * inertia from the second moments above, rotated. */
+static void rounded_box_mass_properties_are_exact(void **state)
 {
     (void)state;
+    const double hx = 0.5, hy = 1, hz = 1.5, r = 0.3, a = 2 * hx, b = 2 * hy, c = 2 * hz;
+    const double exact = a * b * c + 2 * r * (a * b + b * c + c * a) + PI * r * r * (a + b + c) + 4.0 / 3 * PI * r * r * r;
+    const double sx = roundedBoxSecondMoment(hx, hy, hz, r), sy = roundedBoxSecondMoment(hy, hz, hx, r),
+                 sz = roundedBoxSecondMoment(hz, hx, hy, r);
+    const double Ibox[3] = {sy + sz, sz + sx, sx + sy};
+    MeMatrix4 rot, rel;
+    MeMatrix3 I;
+    MeReal V;
     MeVector3 pts[8];
+    ref_tm_axis_angle(rot, 0.3, -0.5, 0.8, 1.1, 4, -1, 2);
+    boxCorners(pts, hx, hy, hz, 0, 0, 0);
+    for (int k = 0; k < 8; k++) {
+        MeVector3 local;
+        MeVector3Copy(local, pts[k]);
+        MeMatrix4TMTransform(pts[k], rot, local);
+    }
+    McdConvexMeshID g = hullOf(pts, 8, (MeReal)r);
+    assert_int_equal(McdGeometryGetMassProperties(g, rel, I, &V), 0);
+    printf("rounded box 1 x 2 x 3, r 0.3: volume %.9f, Steiner %.9f (%.1e)\n", (double)V, exact, V / exact - 1);
+    assert_rel(V, exact, ME_TOL(1e-12, 2e-6));
+    for (int k = 0; k < 3; k++)
+        assert_near(rel[3][k], rot[3][k], ME_TOL(1e-12, 2e-6));
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            double s = 0; /* I_world = R^T I_box R, rows of rot the box axes */
+            for (int m = 0; m < 3; m++)
+                s += rot[m][i] * Ibox[m] * rot[m][j];
+            assert_near(I[i][j], s, ME_TOL(1e-11, 3e-6) * Ibox[0]);
+        }
+    McdGeometryDestroy(g);
+}
+
+/* Distance from x to the triangle t (Ericson's closest point by Voronoi regions). */
+static double triangleDistance(const double x[3], double t[3][3])
+{
+    double ab[3], ac[3], ap[3], q[3], d = 0;
+    for (int k = 0; k < 3; k++) {
+        ab[k] = t[1][k] - t[0][k];
+        ac[k] = t[2][k] - t[0][k];
+        ap[k] = x[k] - t[0][k];
+    }
+#define DOT(u, v) ((u)[0] * (v)[0] + (u)[1] * (v)[1] + (u)[2] * (v)[2])
+    double d1 = DOT(ab, ap), d2 = DOT(ac, ap), bp[3], cp[3];
+    for (int k = 0; k < 3; k++) {
+        bp[k] = x[k] - t[1][k];
+        cp[k] = x[k] - t[2][k];
+    }
+    double d3 = DOT(ab, bp), d4 = DOT(ac, bp), d5 = DOT(ab, cp), d6 = DOT(ac, cp);
+    double va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2, s, w;
+#undef DOT
+    if (d1 <= 0 && d2 <= 0)
+        s = 0, w = 0;
+    else if (d3 >= 0 && d4 <= d3)
+        s = 1, w = 0;
+    else if (d6 >= 0 && d5 <= d6)
+        s = 0, w = 1;
+    else if (vc <= 0 && d1 >= 0 && d3 <= 0)
+        s = d1 / (d1 - d3), w = 0;
+    else if (vb <= 0 && d2 >= 0 && d6 <= 0)
+        s = 0, w = d2 / (d2 - d6);
+    else if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+        w = (d4 - d3) / ((d4 - d3) + (d5 - d6)), s = 1 - w;
+    else {
+        double den = 1 / (va + vb + vc);
+        s = vb * den, w = vc * den;
+    }
+    for (int k = 0; k < 3; k++) {
+        q[k] = t[0][k] + s * ab[k] + w * ac[k] - x[k];
+        d += q[k] * q[k];
+    }
+    return sqrt(d);
+}
+
+/* Distance from x to the solid tetrahedron v[4] (0 inside). */
+static double tetraDistance(const double x[3], const double v[4][3])
+{
+    static const int face[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+    double best = INFINITY;
+    int outside = 0;
+    for (int f = 0; f < 4; f++) {
+        double t[3][3], e1[3], e2[3], n[3], opp = 0, here = 0;
+        for (int j = 0; j < 3; j++)
+            for (int k = 0; k < 3; k++)
+                t[j][k] = v[face[f][j]][k];
+        for (int k = 0; k < 3; k++) {
+            e1[k] = t[1][k] - t[0][k];
+            e2[k] = t[2][k] - t[0][k];
+        }
+        n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+        n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+        n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+        for (int k = 0; k < 3; k++) { /* the side of the face the fourth vertex is not on */
+            opp += n[k] * (v[f][k] - t[0][k]);
+            here += n[k] * (x[k] - t[0][k]);
+        }
+        if (here * opp < 0)
+            outside = 1;
+        best = fmin(best, triangleDistance(x, t));
+    }
+    return outside ? best : 0;
+}
+
+/* A rounded tetrahedron against an independent numerical integration: the solid {x : distance to the
+ * tetrahedron <= r} is convex, so each vertical line (a 240 x 240 grid of columns, midpoints) meets it
+ * in one interval, found by bisection on the distance; the interval's moments in z are exact. The
+ * columns' error is of the order of the silhouette's (1e-4 relative). */
+static void rounded_tetrahedron_mass_properties_against_integration(void **state)
+{
+    (void)state;
+    const double v[4][3] = {{0.1, -0.2, 0.05}, {1.3, 0.1, -0.1}, {0.2, 0.9, 0.2}, {0.4, 0.3, 1.1}}, r = 0.25;
+    MeVector3 pts[4];
+    for (int i = 0; i < 4; i++)
+        MeVector3Set(pts[i], (MeReal)v[i][0], (MeReal)v[i][1], (MeReal)v[i][2]);
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; k++) {
+        lo[k] = fmin(fmin(v[0][k], v[1][k]), fmin(v[2][k], v[3][k])) - r;
+        hi[k] = fmax(fmax(v[0][k], v[1][k]), fmax(v[2][k], v[3][k])) + r;
+    }
+    const int N = 240;
+    const double hx = (hi[0] - lo[0]) / N, hy = (hi[1] - lo[1]) / N;
+    double vol = 0, m1[3] = {0, 0, 0}, m2[3][3] = {{0}};
+    for (int i = 0; i < N; i++)
+        for (int j = 0; j < N; j++) {
+            double x[3] = {lo[0] + (i + 0.5) * hx, lo[1] + (j + 0.5) * hy, 0}, best = INFINITY, zb = 0;
+            /* the lowest point of the distance along the column: golden-free ternary search (convex) */
+            double a = lo[2], b = hi[2];
+            for (int it = 0; it < 60; it++) {
+                double z1 = a + (b - a) / 3, z2 = b - (b - a) / 3, p1[3] = {x[0], x[1], z1}, p2[3] = {x[0], x[1], z2};
+                if (tetraDistance(p1, v) < tetraDistance(p2, v))
+                    b = z2;
+                else
+                    a = z1;
+            }
+            zb = (a + b) / 2;
+            x[2] = zb;
+            best = tetraDistance(x, v);
+            if (best > r)
+                continue;
+            double ends[2];
+            for (int side = 0; side < 2; side++) { /* bisection for distance = r on each side of zb */
+                double in = zb, out = side ? hi[2] : lo[2];
+                for (int it = 0; it < 50; it++) {
+                    double mid = (in + out) / 2, p[3] = {x[0], x[1], mid};
+                    if (tetraDistance(p, v) <= r)
+                        in = mid;
+                    else
+                        out = mid;
+                }
+                ends[side] = (in + out) / 2;
+            }
+            const double z0 = ends[0], z1 = ends[1], L = (z1 - z0) * hx * hy;
+            const double mz = (z1 * z1 - z0 * z0) / 2 * hx * hy, mzz = (z1 * z1 * z1 - z0 * z0 * z0) / 3 * hx * hy;
+            vol += L;
+            m1[0] += x[0] * L, m1[1] += x[1] * L, m1[2] += mz;
+            m2[0][0] += x[0] * x[0] * L, m2[1][1] += x[1] * x[1] * L, m2[0][1] += x[0] * x[1] * L;
+            m2[0][2] += x[0] * mz, m2[1][2] += x[1] * mz, m2[2][2] += mzz;
+        }
+    m2[1][0] = m2[0][1], m2[2][0] = m2[0][2], m2[2][1] = m2[1][2];
+    double g[3], C[3][3], Inum[3][3];
+    for (int k = 0; k < 3; k++)
+        g[k] = m1[k] / vol;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            C[i][j] = m2[i][j] - vol * g[i] * g[j];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            Inum[i][j] = (i == j ? C[0][0] + C[1][1] + C[2][2] : 0) - C[i][j];
+    McdConvexMeshID h = hullOf(pts, 4, (MeReal)r);
     MeMatrix4 rel;
     MeMatrix3 I;
     MeReal V;
-    const double r = 0.1, exact = 1 + 6 * r + 3 * PI * r * r + 4.0 / 3 * PI * r * r * r;
-    const double area = 6 + 6 * PI * r + 4 * PI * r * r, bound = area * r * (1 - cos(18.8 * PI / 180)) / exact;
-    boxCorners(pts, 0.5, 0.5, 0.5, 1, 2, 3);
-    McdConvexMeshID g = hullOf(pts, 8, (MeReal)r);
-    assert_int_equal(McdGeometryGetMassProperties(g, rel, I, &V), 0);
-    printf("rounded cube: volume %.6f, Steiner %.6f (%.2e below, bound %.2e)\n", (double)V, exact, 1 - V / exact, bound);
-    assert_true(1 - V / exact > -ME_TOL(1e-12, 1e-6) && 1 - V / exact < bound);
-    assert_near(rel[3][0], 1, 1e-5);
-    assert_near(rel[3][1], 2, 1e-5);
-    assert_near(rel[3][2], 3, 1e-5);
-    /* cubic symmetry: equal moments, no products; between the core cube's and its circumscribed
-     * cube's (edge 1 + 2r) */
-    assert_rel(I[0][0], I[1][1], 1e-3);
-    assert_rel(I[0][0], I[2][2], 1e-3);
-    assert_near(I[0][1], 0, 1e-3 * I[0][0]);
-    assert_true(I[0][0] > 1.0 / 6 && I[0][0] < pow(1 + 2 * r, 5) / 6);
-    McdGeometryDestroy(g);
+    assert_int_equal(McdGeometryGetMassProperties(h, rel, I, &V), 0);
+    printf("rounded tetrahedron: volume %.6f, integrated %.6f (%.1e); Ixx %.6f, integrated %.6f (%.1e)\n", (double)V,
+           vol, V / vol - 1, (double)I[0][0], Inum[0][0], I[0][0] / Inum[0][0] - 1);
+    assert_rel(V, vol, 1e-4);
+    for (int k = 0; k < 3; k++)
+        assert_near(rel[3][k], g[k], 3e-4);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            assert_near(I[i][j], Inum[i][j], 1e-3 * Inum[0][0]);
+    /* and a rounding of 0 is the polyhedron: the tetrahedron's volume |det| / 6 */
+    McdConvexMeshID h0 = hullOf(pts, 4, 0);
+    double e[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int k = 0; k < 3; k++)
+            e[i][k] = v[i + 1][k] - v[0][k];
+    const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                       e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+    assert_int_equal(McdGeometryGetMassProperties(h0, rel, I, &V), 0);
+    assert_rel(V, fabs(det) / 6, ME_TOL(1e-12, 1e-6));
+    McdGeometryDestroy(h);
+    McdGeometryDestroy(h0);
 }
 
 /* McdConvexMeshCreateSphyl against the sphyl primitive: the same mass properties, support points
@@ -770,7 +954,8 @@ int main(void)
         cmocka_unit_test(bad_input_is_refused),
         cmocka_unit_test(box_hull_mass_properties_are_the_box_s),
         cmocka_unit_test(prism_mass_properties_and_the_cylinder),
-        cmocka_unit_test(rounded_mass_properties),
+        cmocka_unit_test(rounded_box_mass_properties_are_exact),
+        cmocka_unit_test(rounded_tetrahedron_mass_properties_against_integration),
         cmocka_unit_test(convex_sphyl_is_the_sphyl),
         cmocka_unit_test(aabb_bsphere_and_segments_match_the_box),
         cmocka_unit_test(analytic_face_edge_vertex),

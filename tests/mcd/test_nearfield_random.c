@@ -117,7 +117,7 @@ static void run_pair(void **state)
     Stats st = {0};
     RefRng rng = {0x1234567ull + (uint64_t)(e->type1 * 31 + e->type2)};
     int pose;
-    MeBool generic = e->fn == McdNfConvexConvex || e->type1 == e->type2;
+    MeBool generic = e->fn == McdNfConvexConvex || e->fn == McdNfConvexMeshConvex || e->type1 == e->type2;
     McdGeometryData g1 = {0}, g2 = {0};
     for (pose = 0; pose < POSES; pose++) {
         MeMatrix4 tm1, tm2;

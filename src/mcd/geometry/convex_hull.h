@@ -44,6 +44,10 @@ typedef enum McdHullStatus {
 double McdHullTolerance(const MeVector3 *points, int n);
 /** Build the hull of n finite points into *hull (arrays from MeMemoryCreate; free with McdHullFree). */
 McdHullStatus McdHullBuild(const MeVector3 *points, int n, McdHull *hull);
+/** Index of the vertex farthest along dir (local), climbing the vertex graph from vertex `start` to
+ *  the best neighbour while it is farther (on a convex polyhedron, a vertex no neighbour improves on
+ *  is the farthest; ties: one of them). In convex_mesh.c. */
+int McdHullClimb(const McdHull *h, const MeVector3 dir, int start);
 /** Free the arrays of a built hull (the struct itself is the caller's). */
 void McdHullFree(McdHull *hull);
 

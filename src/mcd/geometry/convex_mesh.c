@@ -11,14 +11,14 @@
 
 #include "../../me/check.h"
 #include "convex_hull.h"
+#include "convex_mass.h"
 #include "geometry.h"
 
 /* Hulls with more vertices than this climb the vertex graph instead of reading every vertex. */
 #define CLIMB_MIN_VERTICES 48
 
 /* Index of the vertex farthest along dir (local). Small hulls: every vertex (ties: the first). Large
- * ones: from vertex 0, to the best neighbour while it is farther along dir; on a convex polyhedron a
- * vertex no neighbour improves on is the farthest (ties: one of them). */
+ * ones: climbed to from vertex 0 (McdHullClimb). */
 static int supportIndex(const McdHull *h, const MeVector3 dir)
 {
     int i, best = 0;
@@ -33,9 +33,16 @@ static int supportIndex(const McdHull *h, const MeVector3 dir)
         }
         return best;
     }
+    return McdHullClimb(h, dir, 0);
+}
+
+int McdHullClimb(const McdHull *h, const MeVector3 dir, int start)
+{
+    int best = start >= 0 && start < h->vertexCount ? start : 0;
+    MeReal bestD = MeVector3Dot(h->vertices[best], dir);
     for (int steps = 0; steps < h->vertexCount; steps++) {
         int from = best;
-        for (i = h->neighbourStart[from]; i < h->neighbourStart[from + 1]; i++) {
+        for (int i = h->neighbourStart[from]; i < h->neighbourStart[from + 1]; i++) {
             int w = h->neighbours[i];
             MeReal d = MeVector3Dot(h->vertices[w], dir);
             if (d > bestD) {
@@ -81,138 +88,6 @@ static void convexSupport(McdGeometryID g, void *data, const MeVector3 dir, MeVe
     MeVector3Copy(u, dir);
     if (c->fatness > 0 && MeVector3NormalizeSafe(u))
         MeVector3MultiplyAdd(point, c->fatness, u);
-}
-
-/* Volume, centre of mass and inertia (about the centre of mass) of the polyhedron h, unit density:
- * each polygon is a fan of triangles, each triangle with a reference point inside the hull a
- * tetrahedron whose moments are exact (the second moment of a tetrahedron with a vertex at the origin
- * and the others a, b, c is V/20 (aa' + bb' + cc' + ss'), s = a + b + c). In double, relative to
- * that point. */
-static void polyhedronMass(const McdHull *h, MeReal *volume, MeVector3 com, MeMatrix3 inertia)
-{
-    double ref[3] = {0, 0, 0}, vol = 0, first[3] = {0, 0, 0}, second[3][3] = {{0}};
-    int i, j, k, p;
-    for (i = 0; i < h->vertexCount; i++)
-        for (k = 0; k < 3; k++)
-            ref[k] += (double)h->vertices[i][k] / h->vertexCount;
-    for (p = 0; p < h->polygonCount; p++) {
-        const int *pv = &h->polygonVertices[h->polygonStart[p]];
-        int n = h->polygonStart[p + 1] - h->polygonStart[p];
-        for (i = 1; i + 1 < n; i++) {
-            double x[3][3], s[3], v;
-            const int idx[3] = {pv[0], pv[i], pv[i + 1]};
-            for (j = 0; j < 3; j++)
-                for (k = 0; k < 3; k++)
-                    x[j][k] = (double)h->vertices[idx[j]][k] - ref[k];
-            v = (x[0][0] * (x[1][1] * x[2][2] - x[1][2] * x[2][1]) - x[0][1] * (x[1][0] * x[2][2] - x[1][2] * x[2][0]) +
-                 x[0][2] * (x[1][0] * x[2][1] - x[1][1] * x[2][0])) /
-                6;
-            for (k = 0; k < 3; k++)
-                s[k] = x[0][k] + x[1][k] + x[2][k];
-            vol += v;
-            for (k = 0; k < 3; k++)
-                first[k] += v * s[k] / 4;
-            for (j = 0; j < 3; j++)
-                for (k = 0; k < 3; k++)
-                    second[j][k] += v / 20 * (x[0][j] * x[0][k] + x[1][j] * x[1][k] + x[2][j] * x[2][k] + s[j] * s[k]);
-        }
-    }
-    {
-        double g3[3], c[3][3], tr;
-        for (k = 0; k < 3; k++)
-            g3[k] = first[k] / vol;
-        for (j = 0; j < 3; j++)
-            for (k = 0; k < 3; k++)
-                c[j][k] = second[j][k] - vol * g3[j] * g3[k]; /* about the centre of mass */
-        tr = c[0][0] + c[1][1] + c[2][2];
-        for (j = 0; j < 3; j++)
-            for (k = 0; k < 3; k++)
-                inertia[j][k] = (MeReal)((j == k ? tr : 0) - c[j][k]);
-        MeVector3Set(com, (MeReal)(ref[0] + g3[0]), (MeReal)(ref[1] + g3[1]), (MeReal)(ref[2] + g3[2]));
-        *volume = (MeReal)vol;
-    }
-}
-
-/* Directions that sample the sphere for the rounded solid's mass: the 12 vertices, 20 face centres
- * and 30 edge midpoints of an icosahedron (unnormalised; every direction of the sphere lies within
- * 19 degrees (18.7) of one of them). */
-#define ROUND_DIRECTIONS 62
-static int roundDirections(double d[ROUND_DIRECTIONS][3])
-{
-    const double t = (1 + sqrt(5.0)) / 2;
-    double v[12][3];
-    int n = 0, i, j, k, c = 0;
-    for (i = 0; i < 4; i++) { /* (0, +-1, +-t) and its cyclic permutations */
-        double a = (i & 1) ? -1 : 1, b = (i & 2) ? -t : t;
-        for (k = 0; k < 3; k++) {
-            v[c][k] = 0;
-            v[c][(k + 1) % 3] = a;
-            v[c][(k + 2) % 3] = b;
-            c++;
-        }
-    }
-    for (i = 0; i < 12; i++, n++)
-        for (k = 0; k < 3; k++)
-            d[n][k] = v[i][k];
-    /* neighbours are 2 apart; face centres from triples of mutual neighbours */
-    for (i = 0; i < 12; i++)
-        for (j = i + 1; j < 12; j++) {
-            double e = 0;
-            for (k = 0; k < 3; k++)
-                e += (v[i][k] - v[j][k]) * (v[i][k] - v[j][k]);
-            if (fabs(e - 4) > 1e-9)
-                continue;
-            for (k = 0; k < 3; k++)
-                d[n][k] = v[i][k] + v[j][k];
-            n++;
-            for (c = j + 1; c < 12; c++) {
-                double e1 = 0, e2 = 0;
-                for (k = 0; k < 3; k++) {
-                    e1 += (v[i][k] - v[c][k]) * (v[i][k] - v[c][k]);
-                    e2 += (v[j][k] - v[c][k]) * (v[j][k] - v[c][k]);
-                }
-                if (fabs(e1 - 4) < 1e-9 && fabs(e2 - 4) < 1e-9) {
-                    for (k = 0; k < 3; k++)
-                        d[n][k] = v[i][k] + v[j][k] + v[c][k];
-                    n++;
-                }
-            }
-        }
-    return n;
-}
-
-/* The mass properties of the solid: the polyhedron's exactly when it is not rounded; a rounded one
- * (fatness r) as the hull of every vertex moved by r along ROUND_DIRECTIONS directions, an inner
- * approximation of the rounded solid within r (1 - cos 19 deg) = 0.054 r of its surface. Returns
- * MEFALSE when memory ran out. */
-static MeBool computeMass(McdHull *h, MeReal fatness)
-{
-    double dir[ROUND_DIRECTIONS][3];
-    McdHull round;
-    MeVector3 *pts;
-    int i, k, n = h->vertexCount * ROUND_DIRECTIONS;
-    if (fatness <= 0) {
-        polyhedronMass(h, &h->volume, h->centreOfMass, h->inertia);
-        return METRUE;
-    }
-    if (roundDirections(dir) != ROUND_DIRECTIONS)
-        return MEFALSE;
-    pts = MeMemoryCreate((size_t)n * sizeof(MeVector3));
-    if (!pts)
-        return MEFALSE;
-    for (i = 0; i < h->vertexCount; i++)
-        for (k = 0; k < ROUND_DIRECTIONS; k++) {
-            double len = sqrt(dir[k][0] * dir[k][0] + dir[k][1] * dir[k][1] + dir[k][2] * dir[k][2]);
-            for (int j = 0; j < 3; j++)
-                pts[i * ROUND_DIRECTIONS + k][j] = h->vertices[i][j] + (MeReal)((double)fatness * dir[k][j] / len);
-        }
-    McdHullStatus st = McdHullBuild((const MeVector3 *)pts, n, &round);
-    MeMemoryDestroy(pts);
-    if (st != MCD_HULL_OK)
-        return MEFALSE;
-    polyhedronMass(&round, &h->volume, h->centreOfMass, h->inertia);
-    McdHullFree(&round);
-    return METRUE;
 }
 
 static void convexMass(McdGeometryID g, void *data, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume)
@@ -335,7 +210,7 @@ McdConvexMeshID McdConvexMeshCreateHull(McdFrameworkID fwId, const MeVector3 *ve
         MeMemoryDestroy(hull);
         return NULL;
     }
-    McdGeometryData *g = computeMass(hull, fatnessRadius) ? McdGeometryNew(fw, kMcdGeometryTypeConvexMesh, __func__)
+    McdGeometryData *g = McdHullComputeMass(hull, fatnessRadius) ? McdGeometryNew(fw, kMcdGeometryTypeConvexMesh, __func__)
                                                            : NULL;
     if (!g) {
         McdHullFree(hull);

@@ -262,6 +262,12 @@ static int singlePoint(const Side *f1, const Side *f2, const McdNfDistance *d, M
 int McdNfManifold(const McdNfShape *s1, const McdNfShape *s2, const McdNfDistance *d, MeReal tolerance,
                   McdContact *contacts, int maxContacts)
 {
+    return McdNfManifoldCoherent(s1, s2, d, tolerance, contacts, maxContacts, NULL);
+}
+
+int McdNfManifoldCoherent(const McdNfShape *s1, const McdNfShape *s2, const McdNfDistance *d, MeReal tolerance,
+                          McdContact *contacts, int maxContacts, int *refSide)
+{
     McdContact buf[CLIP_MAX];
     Side f1, f2;
     MeVector3 hint1, hint2;
@@ -279,7 +285,14 @@ int McdNfManifold(const McdNfShape *s1, const McdNfShape *s2, const McdNfDistanc
             MeVector3 m1, m2;
             MeReal a1 = f1.n >= 3 ? polygonNormal(&f1, m1) : -ME_R(1.0);
             MeReal a2 = f2.n >= 3 ? polygonNormal(&f2, m2) : -ME_R(1.0);
-            if (a1 >= a2)
+            MeBool firstRef = a1 >= a2;
+            if (refSide && *refSide == 1 && a1 >= ME_R(0.0) && a1 >= a2 - (ME_R(1.0) - MCD_NF_FEATURE_COS))
+                firstRef = METRUE; /* the last frame's reference side, while its face is as aligned */
+            else if (refSide && *refSide == 2 && a2 >= ME_R(0.0) && a2 >= a1 - (ME_R(1.0) - MCD_NF_FEATURE_COS))
+                firstRef = MEFALSE;
+            if (refSide)
+                *refSide = firstRef ? 1 : 2;
+            if (firstRef)
                 count = clipFaces(&f1, &f2, d->normal, METRUE, tolerance, buf, CLIP_MAX);
             else
                 count = clipFaces(&f2, &f1, d->normal, MEFALSE, tolerance, buf, CLIP_MAX);

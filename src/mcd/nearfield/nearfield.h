@@ -94,9 +94,29 @@ void McdNfRefineSeparated(const McdNfShape *s1, const McdNfShape *s2, McdNfDista
 int McdNfManifold(const McdNfShape *s1, const McdNfShape *s2, const McdNfDistance *d, MeReal tolerance,
                   McdContact *contacts, int maxContacts);
 
+/** McdNfManifold keeping the reference polygon on side *refSide (1, 2; 0: none yet) while its face
+ *  is as aligned as the other's within MCD_NF_FEATURE_COS; *refSide then says the side used. */
+int McdNfManifoldCoherent(const McdNfShape *s1, const McdNfShape *s2, const McdNfDistance *d, MeReal tolerance,
+                          McdContact *contacts, int maxContacts, int *refSide);
+
 /** The general pair test: GJK/EPA on the cores and the clipped contact set. */
 int McdNfConvexConvex(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                       MeReal tolerance, McdContact *contacts, int maxContacts, void **cache);
+
+/* ---- the convex meshes' pair cache (convex_cache.c) ---------------------------------------- */
+
+/** The general test for pairs with a convex mesh, with the pair's cache (cached separating axis,
+ *  reference side); NULL cache: McdNfConvexConvex. */
+int McdNfConvexMeshConvex(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
+                          MeReal tolerance, McdContact *contacts, int maxContacts, void **cache);
+/** McdNfConvexMeshPlane with the pair's cache (the lowest vertex, climbed to from last time's). */
+int McdNfConvexMeshPlaneCached(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
+                               MeReal tolerance, McdContact *contacts, int maxContacts, void **cache);
+/** Free a cache made by the two tests above. */
+void McdNfConvexCacheRelease(void *cache);
+typedef void (*McdNfCacheReleaseFn)(void *cache);
+/** The function that frees the cache the built-in test fn makes, or NULL when it makes none. */
+McdNfCacheReleaseFn McdNfCacheReleaseFor(McdNearfieldFn fn);
 
 /* ---- degenerate arithmetic (contact.c) ------------------------------------------------------ */
 

@@ -11,7 +11,8 @@ void McdNearfieldRegisterPrimitives(McdFrameworkData *fw)
     int count, k;
     const McdNfPairEntry *table = McdNfPairTable(&count);
     for (k = 0; k < count; k++)
-        McdFrameworkSetInteraction(fw, table[k].type1, table[k].type2, table[k].fn, "McdPrimitivesRegisterInteractions");
+        McdFrameworkSetInteractionWithCache(fw, table[k].type1, table[k].type2, table[k].fn,
+                                            McdNfCacheReleaseFor(table[k].fn), "McdPrimitivesRegisterInteractions");
     table = McdTerrainPairTable(&count);
     for (k = 0; k < count; k++)
         McdFrameworkSetInteraction(fw, table[k].type1, table[k].type2, table[k].fn, "McdPrimitivesRegisterInteractions");

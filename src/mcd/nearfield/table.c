@@ -26,13 +26,13 @@ static const McdNfPairEntry pairTable[] = {
     {kMcdGeometryTypeCylinder, kMcdGeometryTypePlane, McdNfCylinderPlane, "cylinder-plane"},
     {kMcdGeometryTypeSphyl, kMcdGeometryTypePlane, McdNfSphylPlane, "sphyl-plane"},
     {kMcdGeometryTypeCone, kMcdGeometryTypePlane, McdNfConePlane, "cone-plane"},
-    {kMcdGeometryTypeSphere, kMcdGeometryTypeConvexMesh, McdNfConvexConvex, "sphere-convex"},
-    {kMcdGeometryTypeBox, kMcdGeometryTypeConvexMesh, McdNfConvexConvex, "box-convex"},
-    {kMcdGeometryTypeCylinder, kMcdGeometryTypeConvexMesh, McdNfConvexConvex, "cylinder-convex"},
-    {kMcdGeometryTypeSphyl, kMcdGeometryTypeConvexMesh, McdNfConvexConvex, "sphyl-convex"},
-    {kMcdGeometryTypeCone, kMcdGeometryTypeConvexMesh, McdNfConvexConvex, "cone-convex"},
-    {kMcdGeometryTypeConvexMesh, kMcdGeometryTypeConvexMesh, McdNfConvexConvex, "convex-convex"},
-    {kMcdGeometryTypeConvexMesh, kMcdGeometryTypePlane, McdNfConvexMeshPlane, "convex-plane"},
+    {kMcdGeometryTypeSphere, kMcdGeometryTypeConvexMesh, McdNfConvexMeshConvex, "sphere-convex"},
+    {kMcdGeometryTypeBox, kMcdGeometryTypeConvexMesh, McdNfConvexMeshConvex, "box-convex"},
+    {kMcdGeometryTypeCylinder, kMcdGeometryTypeConvexMesh, McdNfConvexMeshConvex, "cylinder-convex"},
+    {kMcdGeometryTypeSphyl, kMcdGeometryTypeConvexMesh, McdNfConvexMeshConvex, "sphyl-convex"},
+    {kMcdGeometryTypeCone, kMcdGeometryTypeConvexMesh, McdNfConvexMeshConvex, "cone-convex"},
+    {kMcdGeometryTypeConvexMesh, kMcdGeometryTypeConvexMesh, McdNfConvexMeshConvex, "convex-convex"},
+    {kMcdGeometryTypeConvexMesh, kMcdGeometryTypePlane, McdNfConvexMeshPlaneCached, "convex-plane"},
 };
 
 const McdNfPairEntry *McdNfPairTable(int *count)
