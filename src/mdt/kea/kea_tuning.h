@@ -88,7 +88,8 @@
  *  step (0.16 m/s at 60 Hz) plus a little correction, at most 0.20 m/s in the 60-row one; in the
  *  bench's pile of 1,000 bodies it never fell below 1.6 m/s in 460 steps, although its residual after
  *  the cap is 10 to 100 times 5 mm/s (docs/kea_log.md, "Touching stacks": a threshold relative to the
- *  velocity scale does not separate them). */
-#define KEA_EFFORT_REST_SPEED ME_R(0.5)
+ *  velocity scale does not separate them). 0.5 let a settled heap's jittering partitions take the
+ *  effort, which left them noisier (docs/kea_log.md). */
+#define KEA_EFFORT_REST_SPEED ME_R(0.25)
 
 #endif
