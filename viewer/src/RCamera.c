@@ -223,28 +223,27 @@ void MEAPI RCameraZoom(RRender *rc, AcmeReal dist)
     RCameraUpdate(rc);
 }
 
-void MEAPI RCameraSetRotation(RRender *rc, const MeReal rotation)
+/* Set one of the orbit's values if finite (else report `who`), then recompute the matrices. */
+static void setOrbitValue(RRender *rc, AcmeReal *value, MeReal to, const char *who)
 {
-    if (!rc)
-        return;
-    if (!isfinite(rotation)) {
-        R_REPORT(ME_ERR_NONFINITE_ARGUMENT, "RCameraSetRotation", "the rotation must be finite");
+    if (!isfinite(to)) {
+        R_REPORT(ME_ERR_NONFINITE_ARGUMENT, who, "the value must be finite");
         return;
     }
-    rc->m_CameraTheta = rotation;
+    *value = to;
     RCameraUpdate(rc);
+}
+
+void MEAPI RCameraSetRotation(RRender *rc, const MeReal rotation)
+{
+    if (rc)
+        setOrbitValue(rc, &rc->m_CameraTheta, rotation, "RCameraSetRotation");
 }
 
 void MEAPI RCameraSetOffset(RRender *rc, const MeReal offset)
 {
-    if (!rc)
-        return;
-    if (!isfinite(offset)) {
-        R_REPORT(ME_ERR_NONFINITE_ARGUMENT, "RCameraSetOffset", "the distance must be finite");
-        return;
-    }
-    rc->m_CameraDist = offset;
-    RCameraUpdate(rc);
+    if (rc)
+        setOrbitValue(rc, &rc->m_CameraDist, offset, "RCameraSetOffset");
 }
 
 void MEAPI RCameraGetLookDir(RRender *rc, AcmeVector3 dir)
