@@ -28,11 +28,11 @@
 #define HASH_EVERY 10
 
 #if KARMA_DOUBLE
-#  define GOLDEN_PILE 0x464c6fd646137e18ull
-#  define GOLDEN_PYRAMID 0xa1e9c5ce0d056e8bull
+#  define GOLDEN_PILE 0x68e95dc90a5e3223ull
+#  define GOLDEN_PYRAMID 0xf792a5ceef33643dull
 #else
-#  define GOLDEN_PILE 0x0b340a84cc3feaddull
-#  define GOLDEN_PYRAMID 0xa700b7de664479bcull
+#  define GOLDEN_PILE 0x4a52b542ec88b8d7ull
+#  define GOLDEN_PYRAMID 0x18701b2344ba6c5full
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
