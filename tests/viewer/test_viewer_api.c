@@ -141,6 +141,108 @@ static void test_camera_matrices_are_the_geometry(void **state)
     RRenderContextDestroy(rc);
 }
 
+/* Presets put the camera on their axis, at its distance, looking at the look-at point; the look
+ * direction is the matrix's; SetOffset, SetRotation and SetMatrix round-trip. */
+static void test_camera_presets_offset_matrix(void **state)
+{
+    karma_capture_messages();
+    RRender *rc = nullContext(NULL, NULL);
+    const AcmeVector3 target = {1, -2, 3};
+    RCameraSetLookAt(rc, target);
+    RCameraSetView(rc, 8, ME_R(0.9), ME_R(0.3));
+    static const double axis[6][3] = {{0, 0, 1}, {0, 0, -1}, {-1, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
+    const RCameraPreset presets[6] = {kRCameraFront, kRCameraBack, kRCameraLeft,
+                                      kRCameraRight, kRCameraTop,  kRCameraBottom};
+    for (int k = 0; k < 6; k++) {
+        RCameraSetPreset(rc, presets[k]);
+        AcmeVector3 pos, dir, at;
+        RCameraGetPosition(rc, pos);
+        RCameraGetLookDir(rc, dir);
+        RCameraGetLookAt(rc, at);
+        double ndc[3], p[3] = {target[0], target[1], target[2]};
+        project(rc, p, ndc);
+        assert_near(ndc[0], 0, 1e-5), assert_near(ndc[1], 0, 1e-5);
+        assert_near(RCameraGetDistance(rc), 8, 1e-5);
+        for (int i = 0; i < 3; i++) {
+            assert_near(at[i], target[i], 1e-6);
+            /* On the axis (top and bottom within the elevation's 1 mrad margin from the pole). */
+            assert_near(pos[i], target[i] + 8 * axis[k][i], 1e-2);
+            assert_near(dir[i], -axis[k][i], 2e-3);
+        }
+    }
+    /* Top looks down: the ground's +x is to the right on the picture, as in the front view. */
+    RCameraSetPreset(rc, kRCameraTop);
+    double ndc[3], px[3] = {target[0] + 1, target[1], target[2]};
+    project(rc, px, ndc);
+    assert_true(ndc[0] > 0.01);
+    assert_reports(ME_ERR_ARGUMENT_RANGE, RCameraSetPreset(rc, (RCameraPreset)6));
+    AcmeVector3 pos;
+    RCameraGetPosition(rc, pos);
+    assert_near(pos[1], target[1] + 8, 1e-2); /* unchanged */
+
+    RCameraSetOffset(rc, ME_R(12.5));
+    assert_near(RCameraGetDistance(rc), 12.5, 1e-6);
+    RCameraSetRotation(rc, ME_R(-0.4));
+    assert_near(RCameraGetRotation(rc), -0.4, 1e-6);
+    assert_reports(ME_ERR_NONFINITE_ARGUMENT, RCameraSetOffset(rc, (MeReal)NAN));
+    assert_near(RCameraGetDistance(rc), 12.5, 1e-6);
+
+    /* SetMatrix then GetMatrix gives the same matrix back, and the look direction follows it. */
+    RCameraSetView(rc, 5, ME_R(0.2), ME_R(0.1));
+    MeMatrix4 m, back;
+    RCameraGetMatrix(rc, m);
+    RCameraSetView(rc, 7, ME_R(2.0), ME_R(-0.5));
+    RCameraSetMatrix(rc, m);
+    RCameraGetMatrix(rc, back);
+    assert_memory_equal(m, back, sizeof m);
+    AcmeVector3 dir;
+    RCameraGetLookDir(rc, dir);
+    double t = 0.2, ph = 0.1;
+    assert_near(dir[0], -sin(t) * cos(ph), 1e-5);
+    assert_near(dir[1], -sin(ph), 1e-5);
+    assert_near(dir[2], -cos(t) * cos(ph), 1e-5);
+    m[3][1] = (MeReal)INFINITY;
+    assert_reports(ME_ERR_NONFINITE_ARGUMENT, RCameraSetMatrix(rc, m));
+    RCameraGetMatrix(rc, m);
+    assert_memory_equal(m, back, sizeof m);
+    RRenderContextDestroy(rc);
+}
+
+/* Orthographic: a square's projected size does not change with its depth; perspective's does; the
+ * look-at plane keeps its scale when switching. */
+static void test_camera_orthographic(void **state)
+{
+    RRender *rc = nullContext(NULL, NULL);
+    const AcmeVector3 target = {0, 0, 0};
+    RCameraSetLookAt(rc, target);
+    RCameraSetView(rc, 10, ME_R(0.5), ME_R(0.2));
+    AcmeVector3 up, dir;
+    RCameraGetUp(rc, up);
+    RCameraGetLookDir(rc, dir);
+    double size[2][3];
+    for (int ortho = 0; ortho < 2; ortho++) {
+        RCameraSetOrthographic(rc, (MeBool)ortho);
+        assert_int_equal(RCameraIsOrthographic(rc), ortho);
+        for (int k = 0; k < 3; k++) {
+            double depth = 4.0 * (k - 1); /* square 1 m tall, 4 m nearer, at, 4 m farther */
+            double lo[3], hi[3], a[3], b[3];
+            for (int i = 0; i < 3; i++)
+                lo[i] = depth * dir[i], hi[i] = lo[i] + up[i];
+            project(rc, lo, a);
+            project(rc, hi, b);
+            size[ortho][k] = b[1] - a[1];
+        }
+    }
+    assert_true(size[0][0] > 1.5 * size[0][2]);          /* perspective: nearer is bigger */
+    assert_near(size[1][0], size[1][1], 1e-5);           /* orthographic: the same at every depth */
+    assert_near(size[1][2], size[1][1], 1e-5);
+    assert_near(size[1][1], size[0][1], 1e-5);           /* and the same as perspective at the look-at */
+    assert_near(size[1][1], 1 / (10 * tan(PI / 6)), 1e-5);
+    RCameraSetOrthographic(rc, 0);
+    assert_int_equal(RCameraIsOrthographic(rc), 0);
+    RRenderContextDestroy(rc);
+}
+
 static int ticks;
 static void MEAPI countTick(RRender *rc, void *userdata)
 {
@@ -453,6 +555,8 @@ int main(void)
         cmocka_unit_test(test_karma_defaults),
         cmocka_unit_test(test_parse_size),
         cmocka_unit_test(test_camera_matrices_are_the_geometry),
+        cmocka_unit_test(test_camera_presets_offset_matrix),
+        cmocka_unit_test(test_camera_orthographic),
         cmocka_unit_test(test_run_timeout_pause_single_step),
         cmocka_unit_test(test_pc_key_map),
         cmocka_unit_test(test_mouse_orbits_or_goes_to_the_application),

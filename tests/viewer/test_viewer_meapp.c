@@ -165,6 +165,42 @@ static void test_pick_drag_release(void **state)
     sceneDestroy(&s);
 }
 
+/* Under the orthographic projection the cursor's ray runs along the look direction from the pixel's
+ * point: a press on box 0's centre picks it on its face towards the camera, and the drag target stays
+ * under the cursor at the grab depth. */
+static void test_pick_drag_orthographic(void **state)
+{
+    (void)state;
+    Scene s;
+    sceneCreate(&s, 8, 8, METRUE);
+    tick(&s, 60);
+    RCameraSetOrthographic(s.rc, METRUE);
+    const MeReal *c0 = MdtBodyGetTransformPtr(s.body[0])[3];
+    int x, y;
+    pixelOf(s.rc, c0, &x, &y);
+    press(&s, x, y);
+    assert_ptr_equal(s.app->mouseInfo.dragBody, s.body[0]);
+    MeVector3 grab, look, dir, to;
+    grabbedPoint(&s, grab);
+    assert_near(grab[2], HALF, 2e-3); /* the face towards the camera (+z) */
+    RCameraGetLookDir(s.rc, look);
+    MeAppFindClickDir(s.app, x + 100, y - 50, dir); /* every pixel's ray is parallel to the look */
+    for (int i = 0; i < 3; i++)
+        assert_near(dir[i], look[i], 1e-5);
+    drag(&s, x, y - 80);
+    MeVector3Copy(to, s.app->mouseInfo.desiredPosition);
+    int tx, ty;
+    pixelOf(s.rc, to, &tx, &ty);
+    assert_int_equal(tx, x), assert_int_equal(ty, y - 80);
+    double depth = 0;
+    for (int i = 0; i < 3; i++)
+        depth += (to[i] - grab[i]) * look[i];
+    assert_near(depth, 0, 1e-3);
+    release(&s, x, y - 80);
+    assert_null(s.app->mouseInfo.dragBody);
+    sceneDestroy(&s);
+}
+
 static void test_click_on_sky_or_ground_picks_nothing(void **state)
 {
     (void)state;
@@ -335,6 +371,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_pick_drag_release),
+        cmocka_unit_test(test_pick_drag_orthographic),
         cmocka_unit_test(test_click_on_sky_or_ground_picks_nothing),
         cmocka_unit_test(test_heavy_and_light_follow_alike),
         cmocka_unit_test(test_contacts_drawn_on_contacts),

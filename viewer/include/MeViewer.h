@@ -265,6 +265,32 @@ void MEAPI RCameraRotateElevation(RRender *rc, AcmeReal d_phi);
 void MEAPI RCameraZoom(RRender *rc, AcmeReal dist);
 /** Recompute the camera and projection matrices (the setters above call it). */
 void MEAPI RCameraUpdate(RRender *rc);
+/** Set θ, the rotation about y from +z (rad); rejects a non-finite value. */
+void MEAPI RCameraSetRotation(RRender *rc, const MeReal rotation);
+/** Set the camera's distance from the look-at point (m, at least 0.01); rejects a non-finite value. */
+void MEAPI RCameraSetOffset(RRender *rc, const MeReal offset);
+/** Unit vector (world) along which the camera looks, read from the camera matrix. */
+void MEAPI RCameraGetLookDir(RRender *rc, AcmeVector3 dir);
+/** Set the world → eye matrix directly (copied; rejects non-finite entries); the next camera move
+ *  (or RCameraUpdate) recomputes it from the orbit. */
+void MEAPI RCameraSetMatrix(RRender *rc, MeMatrix4Ptr m);
+/** The orbit camera's preset views: the camera on the named side of the look-at point. */
+typedef enum {
+    kRCameraFront, /**< on +z, looking along −z */
+    kRCameraBack,  /**< on −z */
+    kRCameraLeft,  /**< on −x */
+    kRCameraRight, /**< on +x */
+    kRCameraTop,   /**< above (+y), looking down */
+    kRCameraBottom /**< below (−y) */
+} RCameraPreset;
+/** Put the camera on a preset side of the look-at point, distance and look-at kept (new: 1.2's
+ *  header has no preset function); rejects an unknown preset. */
+void MEAPI RCameraSetPreset(RRender *rc, RCameraPreset preset);
+/** Parallel projection (on) or perspective (off); orthographic shows the height the perspective shows
+ *  at the look-at point, whatever the depth (new, not in 1.2's header). */
+void MEAPI RCameraSetOrthographic(RRender *rc, MeBool on);
+/** Whether the projection is orthographic. */
+MeBool MEAPI RCameraIsOrthographic(RRender *rc);
 
 /* ---- input callbacks ----------------------------------------------------------------------- */
 

@@ -29,14 +29,31 @@ static void clickRay(const RRender *rc, int x, int y, MeVector3 world)
                             rc->m_CamMatrix[i][2] * eye[2]);
 }
 
+/* The cursor's ray: from the camera through the pixel (perspective), or, under a parallel
+ * projection, from the pixel's point of the plane through the camera along the look direction. */
+static void cursorRay(RRender *rc, int x, int y, MeVector3 origin, MeVector3 dir)
+{
+    RCameraGetPosition(rc, origin);
+    if (!RCameraIsOrthographic(rc)) {
+        clickRay(rc, x, y, dir);
+        MeVector3Normalize(dir);
+        return;
+    }
+    MeVector3 offset;
+    clickRay(rc, x, y, offset); /* eye (x, y) scaled by the projection, plus the look direction */
+    RCameraGetLookDir(rc, dir);
+    for (int i = 0; i < 3; i++)
+        origin[i] += offset[i] - dir[i];
+}
+
 void MEAPI MeAppFindClickDir(const MeApp *const app, int x, int y, MeVector3 normClickDir)
 {
     if (!app || !normClickDir) {
         R_REPORT(ME_ERR_NULL_ARGUMENT, "MeAppFindClickDir", "the %s is NULL", !app ? "app" : "output vector");
         return;
     }
-    clickRay(app->rc, x, y, normClickDir);
-    MeVector3Normalize(normClickDir);
+    MeVector3 origin;
+    cursorRay(app->rc, x, y, origin, normClickDir);
 }
 
 void MEAPI MeAppFindClickPos(const MeApp *const app, int x, int y, MeVector3 clickPos)
@@ -46,8 +63,12 @@ void MEAPI MeAppFindClickPos(const MeApp *const app, int x, int y, MeVector3 cli
         return;
     }
     MeVector3 ray, cam;
-    clickRay(app->rc, x, y, ray);
-    RCameraGetPosition(app->rc, cam);
+    if (RCameraIsOrthographic(app->rc)) {
+        cursorRay(app->rc, x, y, cam, ray); /* ray is the unit look direction: the near plane is NEARZ along */
+    } else {
+        clickRay(app->rc, x, y, ray);       /* eye z = −1: the near plane is NEARZ times it */
+        RCameraGetPosition(app->rc, cam);
+    }
     for (int i = 0; i < 3; i++)
         clickPos[i] = cam[i] + NEARZ * ray[i];
 }
@@ -61,7 +82,7 @@ McdModelID MEAPI MeAppPickMcdModel(const MeApp *const app, int x, int y, MeVecto
     }
     MeVector3 from, to;
     MeAppFindClickDir(app, x, y, normClickDir);
-    if (orth) {
+    if (orth || RCameraIsOrthographic(app->rc)) {
         MeAppFindClickPos(app, x, y, from);
         for (int i = 0; i < 3; i++) /* forward is −(the eye's z axis) */
             to[i] = from[i] - ME_APP_PICK_RANGE * app->rc->m_CamMatrix[i][2];
@@ -164,13 +185,12 @@ void MEAPI MeAppMousePickCB(RRender *rc, int x, int y, int modifiers, RMouseButt
         m->dragBody = body;
         MdtConvertPositionVector(NULL, pos, body, m->grabPosition);
         MeVector3Copy(m->desiredPosition, pos);
-        RCameraGetPosition(rc, cam);
+        cursorRay(rc, x, y, cam, dir);
         m->range = MeVector3Distance(pos, cam);
     } else if (event == kRStillPressed) {
         if (!m->dragBody)
             return;
-        MeAppFindClickDir(app, x, y, dir);
-        RCameraGetPosition(rc, cam);
+        cursorRay(rc, x, y, cam, dir);
         for (int i = 0; i < 3; i++)
             m->desiredPosition[i] = cam[i] + m->range * dir[i];
     } else {

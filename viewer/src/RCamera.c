@@ -43,6 +43,30 @@ static void eyeFrame(RRender *rc, double r[3], double u[3], double f[3])
     u[0] = r[1] * f[2] - r[2] * f[1], u[1] = r[2] * f[0] - r[0] * f[2], u[2] = r[0] * f[1] - r[1] * f[0];
 }
 
+/* The projection: perspective with half-angle m_Fov, or (orthographic) a parallel box whose half
+ * height is what the perspective shows at the look-at point, so switching keeps that plane's scale. */
+static void updateProjection(RRender *rc)
+{
+    double aspect = rc->m_AspectRatio > 0 ? rc->m_AspectRatio : 640.0 / 448.0;
+    double k = 1 / tan(rc->m_Fov), n = NEARZ, fz = FARZ;
+    MeReal(*p)[4] = rc->m_ProjMatrix;
+    memset(p, 0, sizeof rc->m_ProjMatrix);
+    if (rc->m_private && rc->m_private->orthographic) {
+        double h = rc->m_CameraDist / k;
+        p[0][0] = (MeReal)(1 / (h * aspect));
+        p[1][1] = (MeReal)(1 / h);
+        p[2][2] = (MeReal)(2 / (n - fz));
+        p[3][2] = (MeReal)((fz + n) / (n - fz));
+        p[3][3] = 1;
+        return;
+    }
+    p[0][0] = (MeReal)(k / aspect);
+    p[1][1] = (MeReal)k;
+    p[2][2] = (MeReal)((fz + n) / (n - fz));
+    p[2][3] = -1;
+    p[3][2] = (MeReal)(2 * fz * n / (n - fz));
+}
+
 void MEAPI RCameraUpdate(RRender *rc)
 {
     if (!rc)
@@ -65,15 +89,7 @@ void MEAPI RCameraUpdate(RRender *rc)
     }
     m[3][0] = (MeReal)-rp, m[3][1] = (MeReal)-up, m[3][2] = (MeReal)fp, m[3][3] = 1;
 
-    double aspect = rc->m_AspectRatio > 0 ? rc->m_AspectRatio : 640.0 / 448.0;
-    double k = 1 / tan(rc->m_Fov), n = NEARZ, fz = FARZ;
-    MeReal(*p)[4] = rc->m_ProjMatrix;
-    memset(p, 0, sizeof rc->m_ProjMatrix);
-    p[0][0] = (MeReal)(k / aspect);
-    p[1][1] = (MeReal)k;
-    p[2][2] = (MeReal)((fz + n) / (n - fz));
-    p[2][3] = -1;
-    p[3][2] = (MeReal)(2 * fz * n / (n - fz));
+    updateProjection(rc);
 }
 
 void MEAPI RCameraSetView(RRender *rc, AcmeReal dist, AcmeReal theta, AcmeReal phi)
@@ -204,5 +220,78 @@ void MEAPI RCameraRotateElevation(RRender *rc, AcmeReal d_phi)
 void MEAPI RCameraZoom(RRender *rc, AcmeReal dist)
 {
     rc->m_CameraDist -= dist;
+    RCameraUpdate(rc);
+}
+
+/* Set one of the orbit's values if finite (else report `who`), then recompute the matrices. */
+static void setOrbitValue(RRender *rc, AcmeReal *value, MeReal to, const char *who)
+{
+    if (!isfinite(to)) {
+        R_REPORT(ME_ERR_NONFINITE_ARGUMENT, who, "the value must be finite");
+        return;
+    }
+    *value = to;
+    RCameraUpdate(rc);
+}
+
+void MEAPI RCameraSetRotation(RRender *rc, const MeReal rotation)
+{
+    if (rc)
+        setOrbitValue(rc, &rc->m_CameraTheta, rotation, "RCameraSetRotation");
+}
+
+void MEAPI RCameraSetOffset(RRender *rc, const MeReal offset)
+{
+    if (rc)
+        setOrbitValue(rc, &rc->m_CameraDist, offset, "RCameraSetOffset");
+}
+
+void MEAPI RCameraGetLookDir(RRender *rc, AcmeVector3 dir)
+{
+    /* The eye looks down its −z: the matrix's third column, negated (row-vector convention). */
+    for (int i = 0; i < 3; i++)
+        dir[i] = -rc->m_CamMatrix[i][2];
+}
+
+void MEAPI RCameraSetMatrix(RRender *rc, MeMatrix4Ptr m)
+{
+    if (!rc || !m)
+        return;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            if (!isfinite(m[i][j])) {
+                R_REPORT(ME_ERR_NONFINITE_ARGUMENT, "RCameraSetMatrix", "the matrix must be finite");
+                return;
+            }
+    memcpy(rc->m_CamMatrix, m, sizeof rc->m_CamMatrix);
+}
+
+void MEAPI RCameraSetOrthographic(RRender *rc, MeBool on)
+{
+    if (!rc || !rc->m_private)
+        return;
+    rc->m_private->orthographic = on ? 1 : 0;
+    RCameraUpdate(rc);
+}
+
+MeBool MEAPI RCameraIsOrthographic(RRender *rc)
+{
+    return rc && rc->m_private && rc->m_private->orthographic;
+}
+
+void MEAPI RCameraSetPreset(RRender *rc, RCameraPreset preset)
+{
+    if (!rc)
+        return;
+    /* θ from +z in the x–z plane, φ elevation: front looks along −z, right along −x, top down −y. */
+    static const double angles[6][2] = {
+        {0, 0}, {R_PI, 0}, {-R_PI / 2, 0}, {R_PI / 2, 0}, {0, R_PI / 2}, {0, -R_PI / 2},
+    };
+    if ((int)preset < 0 || (int)preset >= 6) {
+        R_REPORT(ME_ERR_ARGUMENT_RANGE, "RCameraSetPreset", "unknown preset %d", (int)preset);
+        return;
+    }
+    rc->m_CameraTheta = (AcmeReal)angles[preset][0];
+    rc->m_CameraPhi = (AcmeReal)angles[preset][1];
     RCameraUpdate(rc);
 }

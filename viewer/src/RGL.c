@@ -502,7 +502,9 @@ static RGraphic *lodFor(const struct RGL *gl, const RRender *rc, RGraphic *rg, f
     const struct RGraphicPrivate *p = rg->m_private;
     if (!p->lod[0] || !(depth > 0))
         return rg;
-    double pixels = p->lodExtent * rc->m_ProjMatrix[1][1] * 0.5 * gl->height / depth;
+    /* A parallel projection (clip w = 1) draws the same size at every depth. */
+    double perDepth = rc->m_ProjMatrix[3][3] != 0 ? 1.0 : 1.0 / depth;
+    double pixels = p->lodExtent * rc->m_ProjMatrix[1][1] * 0.5 * gl->height * perDepth;
     if (pixels < R_LOD_PIXELS_QUARTER && p->lod[1])
         return p->lod[1];
     return pixels < R_LOD_PIXELS_HALF ? p->lod[0] : rg;

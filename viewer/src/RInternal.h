@@ -60,6 +60,7 @@ struct RRenderPrivate {
     struct RGL *gl;          /**< programs, framebuffers, font (RGL.c) */
     unsigned long frames;    /**< frames drawn or run */
     int singleStep;          /**< a single step is pending */
+    int orthographic;        /**< RCameraSetOrthographic: parallel projection instead of perspective */
     int drawn;               /**< a frame has been drawn */
     RDrag drag;
     RGraphic *pausedText;    /**< "Paused", in the 2D list while paused */
