@@ -145,9 +145,13 @@ static void hanging_chain_iterative(void **state)
                   "max separation in 2 s m");
     for (int k = 0; k < NCAPS; k++)
         print_message("%48d %14.3e %16.3e\n", caps[k], residual[k], sep[k]);
+    /* At caps 1 and 10 the chain is far from converged (a third of a metre apart) and the extra
+     * effort (decision K36) adds sweeps to both, so the order of their separations says nothing;
+     * from 10 sweeps on each cap holds the chain closer. */
     for (int k = 1; k < NCAPS; k++) {
         assert_true(residual[k] < residual[k - 1]);
-        assert_true(sep[k] < sep[k - 1]);
+        if (k >= 2)
+            assert_true(sep[k] < sep[k - 1]);
     }
     assert_true(sep[NCAPS - 1] < 0.1 * sep[0]);
 }
