@@ -33,6 +33,8 @@ if(KARMA_COVERAGE)
   if(KARMA_SANITIZE OR KARMA_TSAN)
     message(FATAL_ERROR "KARMA_COVERAGE cannot be combined with a sanitizer")
   endif()
-  add_compile_options(--coverage)
-  add_link_options(--coverage)
+  # atomic counters: the threaded tests step partitions on several threads, and plain counters
+  # updated by two threads at once come out negative, which gcovr refuses
+  add_compile_options(--coverage -fprofile-update=atomic)
+  add_link_options(--coverage -fprofile-update=atomic)
 endif()
