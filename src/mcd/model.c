@@ -131,7 +131,8 @@ static void update(McdModelData *m, const char *function)
         m->aabbMin[j] -= m->contactTolerance;
         m->aabbMax[j] += m->contactTolerance;
     }
-    McdInstanceTreeUpdate(m, function); /* aggregate children: transforms and AABBs */
+    if (m->geometry->type == kMcdGeometryTypeAggregate) /* other roots have no children to place */
+        McdInstanceTreeUpdate(m, function);
 }
 
 void McdModelUpdateInternal(McdModelData *m) { update(m, "McdSpaceUpdateAll"); }

@@ -47,6 +47,7 @@ static MeBool stateIsFinite(const MdtBodyData *b)
     return ok;
 }
 
+/* restBlockSteps is 0 when auto-disable is off: no rest window is kept then. */
 static void integrateBody(MdtBodyData *b, const MeReal *dv, const MeReal *dw, MeReal h, int restBlockSteps)
 {
     MeVector3 oldVel, oldVelrot, com;
@@ -62,7 +63,8 @@ static void integrateBody(MdtBodyData *b, const MeReal *dv, const MeReal *dw, Me
     integrateOrientation(b, h);
     MdtBodyUpdateTransforms(b, com);
     b->enabledTime += h;
-    MdtBodyRestWindowRecord(b, restBlockSteps);
+    if (restBlockSteps > 0)
+        MdtBodyRestWindowRecord(b, restBlockSteps);
 }
 
 void MdtIntegrateStage(MdtWorldData *w)
@@ -70,7 +72,8 @@ void MdtIntegrateStage(MdtWorldData *w)
     MdtPartitionLists *out = &w->partitions;
     const MeReal *deltaVelocities = w->rowsPacked ? (const MeReal *)w->rows.dv : NULL;
     static const MeReal zero[3] = {0, 0, 0};
-    const int restBlockSteps = MdtRestWindowBlockSteps(w->autoDisable.averagingTime, w->stepSize);
+    const int restBlockSteps =
+        w->autoDisable.enabled ? MdtRestWindowBlockSteps(w->autoDisable.averagingTime, w->stepSize) : 0;
     for (int p = 0; p < out->partitionCount; p++) {
         if (out->simError[p])
             continue; /* the solver failed it: restored below, never integrated */

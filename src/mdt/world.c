@@ -386,7 +386,14 @@ void MdtWorldResetForces(MdtWorldID id)
 void MdtWorldSetAutoDisable(MdtWorldID id, MeBool d)
 {
     WORLD_OR_RETURN(w, id, ME_NOTHING);
-    w->autoDisable.enabled = d ? METRUE : MEFALSE;
+    const MeBool enable = d ? METRUE : MEFALSE;
+    if (enable && !w->autoDisable.enabled) {
+        /* The rest windows were not kept while auto-disable was off: each starts afresh. */
+        for (int i = 0; i < w->bodyPool.capacity; i++)
+            if (MePoolSlotIsLive(&w->bodyPool, i))
+                MdtBodyRestWindowRestart(MePoolSlot(&w->bodyPool, i));
+    }
+    w->autoDisable.enabled = enable;
 }
 
 MeReal MdtWorldGetAutoDisableAveragingTime(MdtWorldID id)

@@ -225,6 +225,32 @@ static void averaging_time_setting(void **state)
     MdtWorldDestroy(w);
 }
 
+/* No rest window is kept while auto-disable is off (the step skips it), so switching auto-disable on
+ * starts every body's window afresh: a body that rested for 2 s with it off is judged on what follows,
+ * and sleeps once a whole window (8 blocks of 4 steps) has passed, not at the first step. */
+static void switching_auto_disable_on_starts_the_windows_afresh(void **state)
+{
+    (void)state;
+    MdtWorldID w = MdtWorldCreate(2, 2, 1, 1);
+    MdtBodyID b = MdtBodyCreate(w);
+    MdtBodyEnable(b);
+    MdtWorldSetAutoDisable(w, MEFALSE);
+    for (int i = 0; i < 120; i++)
+        MdtWorldStep(w, ME_R(1.0) / 60);
+    assert_true(MdtBodyIsEnabled(b));
+    MdtWorldSetAutoDisable(w, METRUE);
+    MdtWorldSetAutoDisable(w, METRUE); /* already on: the window it is filling is kept */
+    int slept = 0;
+    for (int i = 1; i <= 60 && !slept; i++) {
+        MdtWorldStep(w, ME_R(1.0) / 60);
+        if (!MdtBodyIsEnabled(b))
+            slept = i;
+    }
+    print_message("asleep %d steps after auto-disable was switched on\n", slept);
+    assert_true(slept >= 32 && slept <= 36);
+    MdtWorldDestroy(w);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -233,6 +259,7 @@ int main(void)
         cmocka_unit_test(steady_motion_is_judged_as_in_karma_12),
         cmocka_unit_test(shaking_in_place_sleeps_only_when_averaged),
         cmocka_unit_test(averaging_time_setting),
+        cmocka_unit_test(switching_auto_disable_on_starts_the_windows_afresh),
     };
     MeSetMessageLevel(ME_LEVEL_WARNING);
     return cmocka_run_group_tests(tests, NULL, NULL);

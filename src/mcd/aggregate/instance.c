@@ -134,6 +134,7 @@ MeBool McdInstanceTreeCreate(McdModelData *m, const char *function)
         return MEFALSE;
     }
     root->model = m;
+    root->geometry = McdGeometryToID(m->geometry); /* McdModelSetGeometry keeps it current */
     m->instance = root;
     return METRUE;
 }
