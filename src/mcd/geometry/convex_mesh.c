@@ -103,8 +103,8 @@ static void convexMass(McdGeometryID g, void *data, MeMatrix4 relTM, MeMatrix3 i
     *volume = h->volume;
 }
 
-/* The polyhedron is the intersection of its polygons' half-spaces; with a fatness each plane moves out
- * by it (exact on the faces, up to fatness (sqrt 3 - 1) too far out near edges and corners). */
+/* The polyhedron is the intersection of its polygons' half-spaces; a rounded one is met exactly by
+ * McdRoundedHullSegment (a segment of no length: the half-spaces moved out by the fatness). */
 static int convexSegment(McdGeometryID g, void *data, const MeVector3 p0, const MeVector3 p1, MeReal *t,
                          MeVector3 normal)
 {
@@ -114,6 +114,8 @@ static int convexSegment(McdGeometryID g, void *data, const MeVector3 p0, const 
     McdLineInterval iv;
     MeVector3 d;
     MeVector3Subtract(d, p1, p0);
+    if (c->fatness > 0 && MeVector3MagnitudeSqr(d) > 0)
+        return McdRoundedHullSegment(h, c->fatness, p0, p1, t, normal);
     McdLineIntervalAll(&iv);
     for (int p = 0; p < h->polygonCount && iv.tIn <= iv.tOut; p++) {
         MeReal den = MeVector3Dot(h->normals[p], d);
