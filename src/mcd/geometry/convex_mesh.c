@@ -232,7 +232,7 @@ McdConvexMeshID McdConvexMeshCreateHull(McdFrameworkID fwId, const MeVector3 *ve
         return NULL;
     McdConvexMeshID id = McdGeometryToID(g);
     McdConvexHull *poly = MeMemoryCreateZeroed(sizeof *poly);
-    if (!poly || !McdConvexHullFromHull(g->u.convex.hull, poly)) {
+    if (!poly || !McdConvexHullFromHull(g->u.convex.hull, poly, __func__)) {
         MeMemoryDestroy(poly);
         McdGeometryDestroy(id);
         return NULL;

@@ -121,14 +121,14 @@ static void countsOf(const McdHull *h, McdConvexHull *cnv)
     cnv->numEdge = h->polygonStart[h->polygonCount];
 }
 
-MeBool McdConvexHullFromHull(const McdHull *h, McdConvexHull *cnv)
+MeBool McdConvexHullFromHull(const McdHull *h, McdConvexHull *cnv, const char *function)
 {
     countsOf(h, cnv);
     if (!allocateArrays(cnv))
         return MEFALSE;
     if (fillFromHull(h, cnv))
         return METRUE;
-    ME_REPORT(ME_ERR_INTERNAL, "the hull's polygons do not close around a vertex (or memory ran out)");
+    ME_REPORT_IN(function, ME_ERR_INTERNAL, "the hull's polygons do not close around a vertex (or memory ran out)");
     McdDeallocateHull(cnv);
     return MEFALSE;
 }
@@ -152,7 +152,7 @@ int McdComputeHull(McdConvexHull *cnv, int numpoints, const MeVector3 *points)
     if (!buildHull(points, numpoints, &h, __func__))
         return 0;
     McdConvexHull built;
-    MeBool ok = McdConvexHullFromHull(&h, &built);
+    MeBool ok = McdConvexHullFromHull(&h, &built, __func__);
     McdHullFree(&h);
     if (ok)
         *cnv = built;

@@ -13,8 +13,8 @@
 #define MCD_HULL_CHECK_REL_TOL 1e-4
 
 /** Allocate cnv's arrays and fill them from the built hull h (same vertex and polygon order); MEFALSE
- *  (cnv's pointers NULL, reported) when memory runs out. */
-MeBool McdConvexHullFromHull(const McdHull *h, McdConvexHull *cnv);
+ *  (cnv's pointers NULL, reported in `function`'s name) when memory runs out. */
+MeBool McdConvexHullFromHull(const McdHull *h, McdConvexHull *cnv, const char *function);
 /** A copy of cnv's vertex positions (MeMemoryCreate: the caller frees it); NULL when memory runs out. */
 MeVector3 *McdConvexHullPositions(const McdConvexHull *cnv);
 /** Points for a hull: not NULL, at least 4 (ME_ERR_MCD_HULL_FLAT), finite (ME_ERR_NONFINITE_ARGUMENT);
