@@ -514,6 +514,7 @@ static void bad_arrays_are_refused_and_left_to_the_caller(void **state)
     for (int k = 0; k < 12; k++)
         h.edge[k].invLength *= ME_R(1e7);
     assert_reports(ME_ERR_MCD_SIZE_RANGE, assert_null(McdConvexMeshCreate(fw, &h, 0)));
+    McdDeallocateHull(&h);
     /* a flat set: every point in z = 0 cannot be wound both ways, the upper face is against its winding */
     fillTetrahedron(&h);
     h.vertex[3].position[2] = 0;
