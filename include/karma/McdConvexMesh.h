@@ -3,11 +3,13 @@
  *
  * The vertices stay in the frame they were given in (as Karma 1.2): the geometry's origin is the
  * cloud's origin, and McdGeometryGetMassProperties gives the centre of mass in relTM[3]. Polygons are
- * the hull's faces with coplanar triangles merged (tolerance: docs/collision.md, "Convex meshes"),
- * their vertices counter-clockwise seen from outside. */
+ * the hull's faces with coplanar triangles merged (tolerance: docs/collision.md, "Convex meshes"), or
+ * the faces of the McdConvexHull given to McdConvexMeshCreate, their vertices counter-clockwise seen
+ * from outside. */
 #ifndef MCD_CONVEX_MESH_H
 #define MCD_CONVEX_MESH_H
 
+#include "McdQHullTypes.h"
 #include "McdTypes.h"
 
 ME_EXTERN_C_BEGIN
@@ -18,6 +20,14 @@ ME_EXTERN_C_BEGIN
  *  too small or far (ME_ERR_MCD_SIZE_RANGE), or the fatness is negative or out of range. */
 ME_API McdConvexMeshID McdConvexMeshCreateHull(McdFrameworkID fw, const MeVector3 *vertices, int vertexCount,
                                                MeReal fatnessRadius);
+/** The convex mesh of a hull given as 1.2's arrays (computed by McdComputeHull or filled by the
+ *  application), rounded by fatness (m, >= 0). The geometry takes the arrays over (1.2's shallow copy:
+ *  do not free them; McdConvexMeshGetPolyhedron gives them back) and collides with the hull rebuilt
+ *  from their vertices. Refused, NULL, the arrays still the caller's: a NULL poly or array, counts,
+ *  indices or adjacency that disagree (ME_ERR_MCD_HULL_INCONSISTENT), NaN (ME_ERR_NONFINITE_ARGUMENT),
+ *  a hull not convex within 1e-4 of its vertices' bounding-box diagonal (ME_ERR_MCD_HULL_NOT_CONVEX), and what
+ *  McdConvexMeshCreateHull refuses. */
+ME_API McdConvexMeshID McdConvexMeshCreate(McdFrameworkID fw, McdConvexHull *poly, MeReal fatness);
 /** A sphyl (capsule along z: cylinder part `height` >= 0, caps of `radius` > 0, m) as a rounded
  *  polyhedron (within 1e-3 radius + 1e-5 height of the true surface); mass properties exact. */
 ME_API McdConvexMeshID McdConvexMeshCreateSphyl(McdFrameworkID fw, MeReal radius, MeReal height);
@@ -34,6 +44,9 @@ ME_API void McdConvexMeshGetPolygonVertex(McdConvexMeshID g, int polyID, int ver
 ME_API const MeReal *McdConvexMeshGetPolygonVertexPtr(McdConvexMeshID g, int polyID, int vertexID);
 /** Outward unit normal of polygon polyID (local); out of range refused, normal left unchanged. */
 ME_API void McdConvexMeshGetPolygonNormal(McdConvexMeshID g, int polyID, MeVector3 normal);
+/** The mesh's hull as 1.2's arrays (owned by the mesh, valid until it is destroyed; its polygon and
+ *  vertex numbers are the accessors'); NULL for an invalid ID or another type (reported). */
+ME_API const McdConvexHull *McdConvexMeshGetPolyhedron(McdConvexMeshID g);
 /** Number of distinct hull vertices (ours: 1.2 reached them through its McdConvexHull); 0 when invalid. */
 ME_API int McdConvexMeshGetVertexCount(McdConvexMeshID g);
 /** Copy hull vertex `index` (local, m); out of range refused (ME_ERR_ARGUMENT_RANGE). */

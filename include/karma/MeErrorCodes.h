@@ -73,7 +73,9 @@
     X(ME_ERR_MCD_AGGREGATE_MASS,      434, ME_LEVEL_WARNING, "an aggregate has an element without finite volume (plane, terrain, empty aggregate): no mass properties") \
     X(ME_ERR_MCD_SAFE_TIME_RANGE,     440, ME_LEVEL_WARNING, "a safe-time or sweep duration is negative or not finite") \
     X(ME_ERR_MCD_SAFE_TIME_VELOCITY,  441, ME_LEVEL_WARNING, "a model velocity or sweep motion for a safe time is not finite") \
-    X(ME_ERR_MCD_CONTINUOUS_GEOMETRY, 442, ME_LEVEL_WARNING, "continuous collision asked for a model whose geometry cannot be swept (plane, terrain, aggregate, null or user type)")
+    X(ME_ERR_MCD_CONTINUOUS_GEOMETRY, 442, ME_LEVEL_WARNING, "continuous collision asked for a model whose geometry cannot be swept (plane, terrain, aggregate, null or user type)") \
+    X(ME_ERR_MCD_HULL_INCONSISTENT,   443, ME_LEVEL_WARNING, "an McdConvexHull's counts, sentinels, indices, face rings, reverse edges or vertex edge order disagree: not a closed polyhedron") \
+    X(ME_ERR_MCD_HULL_NOT_CONVEX,     444, ME_LEVEL_WARNING, "an McdConvexHull is not convex: a vertex off its face's plane or in front of another face, a reflex polygon corner, or a face normal not unit or against its winding")
 
 #define ME_ERROR_LIST_MST(X) \
     X(ME_ERR_MST_MATERIAL,            600, ME_LEVEL_WARNING, "a material index is out of range")

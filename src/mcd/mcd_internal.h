@@ -26,7 +26,9 @@ typedef struct McdSphylData { MeReal radius, halfHeight; } McdSphylData;       /
 typedef struct McdConeData { MeReal lowerRadius, upperRadius, zLower, zUpper; } McdConeData;
 struct McdHull;
 /* A convex polyhedron (geometry/convex_hull.h, owned by the geometry) rounded by `fatness`. */
-typedef struct McdConvexMeshData { struct McdHull *hull; MeReal fatness; } McdConvexMeshData;
+/* hull: the polygons the pair tests use; poly: 1.2's arrays the accessors read (the application's
+ * for McdConvexMeshCreate, made from hull for McdConvexMeshCreateHull). Both owned. */
+typedef struct McdConvexMeshData { struct McdHull *hull; struct McdConvexHull *poly; MeReal fatness; } McdConvexMeshData;
 /* A triangle as a core for the nearfield's GJK/EPA (never a geometry of the framework: the terrain
  * pair tests make one per triangle, type MCD_NF_TRIANGLE_TYPE). */
 typedef struct McdTriangleCoreData { MeVector3 v[3]; } McdTriangleCoreData;

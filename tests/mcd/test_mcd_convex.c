@@ -685,6 +685,108 @@ static McdGeometryData cubeHull(double half, double fat)
 
 static void identityAt(MeMatrix4 tm, double x, double y, double z) { ref_tm_axis_angle(tm, 0, 0, 1, 0, x, y, z); }
 
+/* Distance from p to the box |x| <= h (closed form). */
+static double boxDistance(const double p[3], const double h[3])
+{
+    double s = 0;
+    for (int k = 0; k < 3; k++) {
+        double e = fabs(p[k]) - h[k];
+        s += e > 0 ? e * e : 0;
+    }
+    return sqrt(s);
+}
+
+/* A box hull rounded by r is the set within r of the box: segments at its face, edge and corner meet
+ * it where that set begins (the faces' half-spaces moved out by r would meet it up to r (sqrt 3 - 1)
+ * early at a corner), and 500 random segments against the first point within r of the box found by
+ * bisection on the closed-form distance. */
+static void rounded_hull_segments_are_exact(void **state)
+{
+    (void)state;
+    const double h[3] = {0.5, 0.3, 0.2}, r = 0.1;
+    MeVector3 pts[8];
+    boxCorners(pts, h[0], h[1], h[2], 0, 0, 0);
+    McdConvexMeshID g = hullOf(pts, 8, (MeReal)r);
+    McdModelID m = McdModelCreate(g);
+    MeMatrix4TMMakeIdentity(McdModelGetTransformPtr(m));
+    McdModelUpdate(m);
+    McdLineSegIntersectResult res;
+    const double s2 = sqrt(0.5), s3 = sqrt(1.0 / 3);
+    struct {
+        double from[3], dir[3], hit[3];
+    } cases[] = {
+        {{2, 0.1, 0.05}, {-1, 0, 0}, {0.6, 0.1, 0.05}},                                      /* face */
+        {{0.5 + 2 * s2, 0.3 + 2 * s2, 0}, {-s2, -s2, 0}, {0.5 + 0.1 * s2, 0.3 + 0.1 * s2, 0}}, /* edge */
+        {{0.5 + 2 * s3, 0.3 + 2 * s3, 0.2 + 2 * s3},
+         {-s3, -s3, -s3},
+         {0.5 + 0.1 * s3, 0.3 + 0.1 * s3, 0.2 + 0.1 * s3}}, /* corner */
+    };
+    for (int i = 0; i < 3; i++) {
+        MeVector3 p0, p1;
+        for (int k = 0; k < 3; k++) {
+            p0[k] = (MeReal)cases[i].from[k];
+            p1[k] = (MeReal)(cases[i].from[k] + 4 * cases[i].dir[k]);
+        }
+        assert_true(McdLineSegIntersect(m, p0, p1, &res));
+        for (int k = 0; k < 3; k++) {
+            assert_near(res.position[k], cases[i].hit[k], 1e-5);
+            assert_near(res.normal[k], -cases[i].dir[k], 1e-5);
+        }
+    }
+    MeRealRandomSeed(5);
+    int hits = 0;
+    for (int trial = 0; trial < 500; trial++) {
+        MeVector3 p0, p1;
+        double a[3], b[3];
+        for (int k = 0; k < 3; k++) {
+            p0[k] = MeRealRandomInRange(-1.5, 1.5);
+            p1[k] = MeRealRandomInRange(-0.8, 0.8);
+            a[k] = (double)p0[k];
+            b[k] = (double)p1[k];
+        }
+        if (boxDistance(a, h) <= r)
+            continue; /* starts inside: distance 0, tested elsewhere */
+        /* the first t where the distance reaches r: a sample below it, then bisection */
+        double lo = 0, hi = -1;
+        for (int k = 1; k <= 2000 && hi < 0; k++) {
+            double q[3], t = k / 2000.0;
+            for (int j = 0; j < 3; j++)
+                q[j] = a[j] + t * (b[j] - a[j]);
+            if (boxDistance(q, h) <= r)
+                hi = t;
+            else
+                lo = t;
+        }
+        int hit = McdLineSegIntersect(m, p0, p1, &res);
+        assert_int_equal(hit, hi >= 0);
+        if (!hit)
+            continue;
+        hits++;
+        for (int it = 0; it < 60; it++) {
+            double q[3], t = (lo + hi) / 2;
+            for (int j = 0; j < 3; j++)
+                q[j] = a[j] + t * (b[j] - a[j]);
+            *(boxDistance(q, h) <= r ? &hi : &lo) = t;
+        }
+        double len = sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]));
+        assert_near(res.distance, hi * len, 2e-5);
+        /* the normal: from the closest box point to the hit point */
+        double q[3], c[3], n[3], nl = 0;
+        for (int j = 0; j < 3; j++) {
+            q[j] = (double)res.position[j];
+            c[j] = fmax(-h[j], fmin(h[j], q[j]));
+            n[j] = q[j] - c[j];
+            nl += n[j] * n[j];
+        }
+        for (int j = 0; j < 3; j++)
+            assert_near(res.normal[j], n[j] / sqrt(nl), 1e-3);
+    }
+    printf("rounded hull: %d of 500 random segments hit, each where the box's r-neighbourhood begins\n", hits);
+    assert_true(hits > 100);
+    McdModelDestroy(m);
+    McdConvexMeshDestroy(g);
+}
+
 static void analytic_face_edge_vertex(void **state)
 {
     (void)state;
@@ -958,6 +1060,7 @@ int main(void)
         cmocka_unit_test(rounded_tetrahedron_mass_properties_against_integration),
         cmocka_unit_test(convex_sphyl_is_the_sphyl),
         cmocka_unit_test(aabb_bsphere_and_segments_match_the_box),
+        cmocka_unit_test(rounded_hull_segments_are_exact),
         cmocka_unit_test(analytic_face_edge_vertex),
         cmocka_unit_test(rounded_hull_on_a_plane),
         cmocka_unit_test(sphere_on_face_edge_vertex),

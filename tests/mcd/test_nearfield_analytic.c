@@ -1,6 +1,7 @@
 /* Analytic cases for every pair test: touching, separated within and beyond the tolerance,
  * penetrating by a known depth, face, edge and vertex contacts, coincident centres, parallel faces,
- * shapes resting on faces and planes. Each case states the expected number of contacts, the normal
+ * shapes resting on faces and planes; convex hulls (a box's hull and a rounded one) stacked on, centred
+ * in and pointing an edge or a vertex at every shape. Each case states the expected number of contacts, the normal
  * (from geometry 2 towards geometry 1, as Karma's pair tests) and the deepest separation; the pair is
  * also run swapped (normal negated, same depth), and geometry 1 moved along the deepest contact's
  * normal by the depth must come apart. */
@@ -315,11 +316,24 @@ typedef struct AxisShape {
     double e[3];             /* half extents along x, y, z (symmetric shapes) */
 } AxisShape;
 
+#define AXIS_SHAPES 8
+#define AXIS_CONE 4
+#define AXIS_PLANE 7 /* last: only ever below */
+
 /* Sphere r 0.5; box 1 x 0.8 x 0.6; cylinder r 0.4, height 1; sphyl r 0.3, cylinder part 0.8;
- * pointed cone, base radius 0.5, height 1 (base 0.25 below the centroid, apex 0.75 above); plane. */
+ * pointed cone, base radius 0.5, height 1 (base 0.25 below the centroid, apex 0.75 above); the box
+ * as a convex hull of its corners; a hull of a 0.8 x 0.6 x 0.4 box rounded by 0.1 (the same extents
+ * along the axes, flat faces, rounded edges and corners); plane. */
 static void axisShapes(AxisShape *sh)
 {
-    memset(sh, 0, 6 * sizeof *sh);
+    static MeVector3 corners[8], inner[8];
+    memset(sh, 0, AXIS_SHAPES * sizeof *sh);
+    for (int k = 0; k < 8; k++) {
+        MeVector3Set(corners[k], (k & 1) ? ME_R(0.5) : ME_R(-0.5), (k & 2) ? ME_R(0.4) : ME_R(-0.4),
+                     (k & 4) ? ME_R(0.3) : ME_R(-0.3));
+        MeVector3Set(inner[k], (k & 1) ? ME_R(0.4) : ME_R(-0.4), (k & 2) ? ME_R(0.3) : ME_R(-0.3),
+                     (k & 4) ? ME_R(0.2) : ME_R(-0.2));
+    }
     sh[0].name = "sphere", ref_make_sphere(&sh[0].g, 0.5), sh[0].top = sh[0].bottom = 0.5;
     sh[0].e[0] = sh[0].e[1] = sh[0].e[2] = 0.5;
     sh[1].name = "box", ref_make_box(&sh[1].g, 1, 0.8, 0.6), sh[1].top = sh[1].bottom = 0.3;
@@ -330,7 +344,19 @@ static void axisShapes(AxisShape *sh)
     sh[3].e[0] = sh[3].e[1] = 0.3, sh[3].e[2] = 0.7;
     sh[4].name = "cone", ref_make_cone(&sh[4].g, 0.5, 0, 1), sh[4].top = 0.75, sh[4].bottom = 0.25;
     sh[4].flatBottom = 1;
-    sh[5].name = "plane", ref_make_plane(&sh[5].g), sh[5].top = 0, sh[5].flatTop = 1;
+    for (int k = 5; k <= 6; k++) {
+        sh[k].name = k == 5 ? "convex box" : "rounded hull";
+        ref_make_convex(&sh[k].g, k == 5 ? corners : inner, 8, k == 5 ? 0 : 0.1);
+        sh[k].top = sh[k].bottom = 0.3, sh[k].flatTop = sh[k].flatBottom = 1;
+        sh[k].e[0] = 0.5, sh[k].e[1] = 0.4, sh[k].e[2] = 0.3;
+    }
+    sh[7].name = "plane", ref_make_plane(&sh[7].g), sh[7].top = 0, sh[7].flatTop = 1;
+}
+
+static void freeAxisShapes(AxisShape *sh)
+{
+    for (int k = 0; k < AXIS_SHAPES; k++)
+        ref_free_convex(&sh[k].g);
 }
 
 /* Shape B above shape A on the common z axis (plane only below), every combination both ways round
@@ -342,14 +368,14 @@ static void every_pair_stacked_on_axis(void **state)
 {
     static const double gaps[] = {0.05, 0.01, 0.0, -0.01, -0.1};
     const double e = ME_TOL(1e-7, 2e-5);
-    AxisShape sh[6];
+    AxisShape sh[AXIS_SHAPES];
     Case c;
     char name[96];
     int a, b, k, cases = 0;
     (void)state;
     axisShapes(sh);
-    for (a = 0; a < 6; a++)
-        for (b = 0; b < 5; b++)
+    for (a = 0; a < AXIS_SHAPES; a++)
+        for (b = 0; b < AXIS_PLANE; b++)
             for (k = 0; k < 5; k++) {
                 double gap = gaps[k];
                 int flat = sh[a].flatTop && sh[b].flatBottom;
@@ -366,6 +392,73 @@ static void every_pair_stacked_on_axis(void **state)
                 cases++;
             }
     printf("%d stacked cases\n", cases);
+    freeAxisShapes(sh);
+}
+
+/* An edge and a vertex of the box, the convex box and the rounded hull pointing down onto the top of
+ * every shape on the axis (the plane too): the hull is turned (45 degrees about x for an edge along
+ * x; about (1, -1, 0) by acos(1/sqrt 3) for a vertex) and moved so that its lowest edge's middle or
+ * lowest vertex is on the axis, `gap` above the shape's top. The closest features are those two
+ * points (or the edge and the top), so the separation is the gap and the normal -z (from the upper
+ * shape, geometry 2, towards the lower). Gaps 0.01, 0 and -0.005 (shallow, so the minimum
+ * translation stays vertical); on the cone's apex only 0.01 (point against point). */
+static void edge_and_vertex_down_on_every_shape(void **state)
+{
+    static const int upper[] = {1, 5, 6};
+    static const double gaps[] = {0.01, 0.0, -0.005};
+    const double e = ME_TOL(1e-7, 2e-5);
+    AxisShape sh[AXIS_SHAPES];
+    Case c;
+    char name[128];
+    int cases = 0;
+    (void)state;
+    axisShapes(sh);
+    for (int u = 0; u < 3; u++)
+        for (int vertex = 0; vertex < 2; vertex++) {
+            const AxisShape *up = &sh[upper[u]];
+            const double fat = upper[u] == 6 ? 0.1 : 0;
+            MeMatrix4 turn;
+            if (vertex)
+                place(turn, 1, -1, 0, acos(S3), 0, 0, 0);
+            else
+                place(turn, 1, 0, 0, 3.14159265358979 / 4, 0, 0, 0);
+            /* the lowest core corners (the core: the box less the rounding), turned */
+            double low[3] = {0, 0, 1e300}, second[3] = {0, 0, 1e300};
+            for (int k = 0; k < 8; k++) {
+                double p[3], q[3] = {((k & 1) ? 1 : -1) * (up->e[0] - fat), ((k & 2) ? 1 : -1) * (up->e[1] - fat),
+                                     ((k & 4) ? 1 : -1) * (up->e[2] - fat)};
+                for (int j = 0; j < 3; j++)
+                    p[j] = turn[0][j] * q[0] + turn[1][j] * q[1] + turn[2][j] * q[2];
+                if (p[2] < low[2] - 1e-9) {
+                    memcpy(second, low, sizeof low);
+                    memcpy(low, p, sizeof p);
+                } else if (p[2] < second[2] - 1e-9)
+                    memcpy(second, p, sizeof p);
+            }
+            double at[3];
+            for (int j = 0; j < 3; j++)
+                at[j] = vertex ? low[j] : (low[j] + second[j]) / 2;
+            assert_near(at[2], vertex ? low[2] : second[2], 1e-6); /* the edge is level */
+            for (int b = 0; b < AXIS_SHAPES; b++)
+                for (int k = 0; k < 3; k++) {
+                    if (b == AXIS_CONE && k > 0)
+                        continue;
+                    c.g1 = sh[b].g;
+                    c.g2 = up->g;
+                    memcpy(c.tm2, turn, sizeof turn);
+                    c.tm2[3][0] = (MeReal)-at[0];
+                    c.tm2[3][1] = (MeReal)-at[1];
+                    c.tm2[3][2] = (MeReal)(sh[b].top + gaps[k] + fat - at[2]);
+                    identity(c.tm1, 0, 0, 0);
+                    snprintf(name, sizeof name, "%s %s down on %s, gap %+.3f", up->name, vertex ? "vertex" : "edge",
+                             sh[b].name, gaps[k]);
+                    expect(&c, name, 1, vertex ? 1 : 2, 0, 0, -1, gaps[k], e);
+                    run(&c);
+                    cases++;
+                }
+        }
+    printf("%d edge and vertex cases\n", cases);
+    freeAxisShapes(sh);
 }
 
 /* Deepest contact of g1 at the origin and g2 at the origin (turned by tm2's rotation only). */
@@ -406,16 +499,20 @@ static void coincident(const char *name, const McdGeometryData *g1, const McdGeo
  * over unit n is on an axis: the depth is the least over the axes of the summed half extents. Against
  * the cone (centroid at the origin): +z, lifting the cone by the other's half extent plus the 0.25 from
  * the centroid to the base, except the sphyl (sideways: 0.3 + the base radius 0.5, see below). Against
- * the plane: the shape's extent below its centre. */
+ * the plane: the shape's extent below its centre. The two hulls count as symmetric shapes: the convex
+ * box is the box, and the rounded hull's h(n) = 0.4|n_x| + 0.3|n_y| + 0.2|n_z| + 0.1 has the box's
+ * values on the axes. */
 static void every_pair_coincident_centres(void **state)
 {
-    AxisShape sh[6];
+    static const int symmetric[] = {0, 1, 2, 3, 5, 6};
+    AxisShape sh[AXIS_SHAPES];
     char name[96];
-    int a, b, k;
+    int i, j, k;
     (void)state;
     axisShapes(sh);
-    for (a = 0; a < 4; a++)
-        for (b = a; b < 4; b++) {
+    for (i = 0; i < 6; i++)
+        for (j = i; j < 6; j++) {
+            int a = symmetric[i], b = symmetric[j];
             double best = 1e300;
             int axis = -1, ties = 0;
             for (k = 0; k < 3; k++) {
@@ -435,10 +532,15 @@ static void every_pair_coincident_centres(void **state)
     coincident("box-cone coincident centres", &sh[1].g, &sh[4].g, 0.55, 2);
     coincident("cylinder-cone coincident centres", &sh[2].g, &sh[4].g, 0.75, 2);
     coincident("sphyl-cone coincident centres", &sh[3].g, &sh[4].g, 0.8, -1);
-    for (a = 0; a < 5; a++) {
-        snprintf(name, sizeof name, "%s centred on the plane", sh[a].name);
-        coincident(name, &sh[a].g, &sh[5].g, sh[a].bottom, 2);
+    /* the hulls as the box: 0.9 s + 0.25 c + 0.3 c at least for the convex box, and for the rounded
+     * hull 0.4 s + 0.2 c + 0.1 + 0.5 s + 0.25 c, least at s = 0 (0.55) */
+    coincident("convex box-cone coincident centres", &sh[5].g, &sh[AXIS_CONE].g, 0.55, 2);
+    coincident("rounded hull-cone coincident centres", &sh[6].g, &sh[AXIS_CONE].g, 0.55, 2);
+    for (k = 0; k < AXIS_PLANE; k++) {
+        snprintf(name, sizeof name, "%s centred on the plane", sh[k].name);
+        coincident(name, &sh[k].g, &sh[AXIS_PLANE].g, sh[k].bottom, 2);
     }
+    freeAxisShapes(sh);
 }
 
 /* Four contacts on a face are its corners (well spread), not four points bunched together. */
@@ -515,7 +617,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(sphere_cases), cmocka_unit_test(box_cases), cmocka_unit_test(rest_on_box),
         cmocka_unit_test(plane_cases), cmocka_unit_test(every_pair_stacked_on_axis),
-        cmocka_unit_test(every_pair_coincident_centres), cmocka_unit_test(face_contacts_are_the_corners),
+        cmocka_unit_test(every_pair_coincident_centres), cmocka_unit_test(edge_and_vertex_down_on_every_shape), cmocka_unit_test(face_contacts_are_the_corners),
         cmocka_unit_test(max_contacts),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

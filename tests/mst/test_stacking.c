@@ -1,7 +1,8 @@
 /* Resting contact through the whole pipeline: a column of 10 boxes stands for 20 s and a 20-base
- * pyramid of 210 boxes for 10 s on a plane, with the solver's default settings and friction μ = 0.6
- * from the material table. Auto-disable is off, so the contacts (box–box and box–plane manifolds,
- * warm-started impulses, the solver) must hold the piles up by themselves for the whole run.
+ * pyramid of 210 boxes for 10 s on a plane, each as primitive boxes and as convex hulls, with the
+ * solver's default settings and friction μ = 0.6 from the material table. Auto-disable is off, so
+ * the contacts (box–box and box–plane manifolds, warm-started impulses, the solver) must hold the
+ * piles up by themselves for the whole run.
  *
  * massScale: the boxes weigh 125 kg (0.5 m cubes at 1000 kg/m³); the world's ε (constraint
  * softness) scales with 1/massScale, so massScale = 125 makes the contacts as stiff as the defaults
@@ -162,28 +163,41 @@ static void column_of_ten_convex_boxes_stands(void **state)
     columnStands(makeConvexBox, "column of 10 convex boxes");
 }
 
-/* Rows of 20, 19, ..., 1 boxes in the xz plane, 2 % of an edge apart sideways, each box on the two
- * below it. */
-static void pyramid_of_210_stands(void **state)
+/* Rows of 20, 19, ..., 1 of `make`'s box in the xz plane, 2 % of an edge apart sideways, each on the
+ * two below it, 10 s: every box within 5 % of an edge of where it started. */
+static void pyramidStands(McdGeometryID (*make)(McdFrameworkID fw), const char *label)
 {
-    (void)state;
     const int base = 20;
     Pile s;
     pileInit(&s, base * (base + 1) / 2);
-    McdGeometryID box = McdBoxCreate(MstUniverseGetFramework(s.u), EDGE, EDGE, EDGE);
+    McdGeometryID box = make(MstUniverseGetFramework(s.u));
+    assert_non_null(box);
     const MeReal pitch = EDGE * ME_R(1.02);
     for (int row = 0; row < base; row++)
         for (int i = 0; i < base - row; i++)
             pileAdd(&s, box, ((MeReal)i - (MeReal)(base - row - 1) / 2) * pitch, 0, EDGE / 2 + (MeReal)row * EDGE);
     assert_int_equal(s.count, 210);
-    MeReal worst = pileRun(&s, 10, "pyramid of 210");
+    MeReal worst = pileRun(&s, 10, label);
     MeVector3 top;
     MdtBodyGetPosition(s.bodies[s.count - 1], top);
-    printf("pyramid of 210 boxes, 10 s: max drift %.3e m = %.3f %% of the edge; top box height %.4f m (start "
-           "%.4f)\n",
+    printf("%s, 10 s: max drift %.3e m = %.3f %% of the edge; top box height %.4f m (start %.4f)\n", label,
            (double)worst, (double)(100 * worst / EDGE), (double)top[2], (double)s.start[s.count - 1][2]);
     assert_true(worst < 0.05 * EDGE); /* standing: every box within 5 % of an edge of where it started */
     pileFree(&s);
+}
+
+static void pyramid_of_210_stands(void **state)
+{
+    (void)state;
+    pyramidStands(makeBox, "pyramid of 210");
+}
+
+/* The same pyramid of convex hulls (convex-convex and convex-plane manifolds) stands to the boxes'
+ * bound (issue 18, point 5). */
+static void pyramid_of_210_convex_hulls_stands(void **state)
+{
+    (void)state;
+    pyramidStands(makeConvexBox, "pyramid of 210 convex hulls");
 }
 
 int main(void)
@@ -192,6 +206,7 @@ int main(void)
         cmocka_unit_test(column_of_ten_stands),
         cmocka_unit_test(column_of_ten_convex_boxes_stands),
         cmocka_unit_test(pyramid_of_210_stands),
+        cmocka_unit_test(pyramid_of_210_convex_hulls_stands),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -48,6 +48,11 @@ McdHullStatus McdHullBuild(const MeVector3 *points, int n, McdHull *hull);
  *  the best neighbour while it is farther (on a convex polyhedron, a vertex no neighbour improves on
  *  is the farthest; ties: one of them). In convex_mesh.c. */
 int McdHullClimb(const McdHull *h, const MeVector3 dir, int start);
+/** First entry of the segment p0 -> p1 (local) into the hull h rounded by r > 0, exactly (t in [0, 1],
+ *  outward unit normal there; t = 0 and normal -(p1 - p0) when p0 is inside); 0 on a miss. In
+ *  convex_segment.c. */
+int McdRoundedHullSegment(const McdHull *h, MeReal r, const MeVector3 p0, const MeVector3 p1, MeReal *t,
+                          MeVector3 normal);
 /** Free the arrays of a built hull (the struct itself is the caller's). */
 void McdHullFree(McdHull *hull);
 

@@ -1,6 +1,8 @@
 /* convex_mesh.c -- the convex mesh: a hull (convex_hull.c) rounded by a fatness radius; its API and
  * protocol. The vertices stay in the frame they were given in (Karma 1.2): the centre of mass is
- * reported by the mass properties, not moved to the origin. */
+ * reported by the mass properties, not moved to the origin. Built from points (McdConvexMeshCreateHull)
+ * or from 1.2's McdConvexHull arrays (McdConvexMeshCreate, checked by hull_check.c); either way the pair
+ * tests use the hull rebuilt from the vertices and the accessors read the McdConvexHull. */
 #include <math.h>
 #include <string.h>
 
@@ -13,6 +15,7 @@
 #include "convex_hull.h"
 #include "convex_mass.h"
 #include "geometry.h"
+#include "hull_arrays.h"
 
 /* Hulls with more vertices than this climb the vertex graph instead of reading every vertex. */
 #define CLIMB_MIN_VERTICES 48
@@ -100,8 +103,8 @@ static void convexMass(McdGeometryID g, void *data, MeMatrix4 relTM, MeMatrix3 i
     *volume = h->volume;
 }
 
-/* The polyhedron is the intersection of its polygons' half-spaces; with a fatness each plane moves out
- * by it (exact on the faces, up to fatness (sqrt 3 - 1) too far out near edges and corners). */
+/* The polyhedron is the intersection of its polygons' half-spaces; a rounded one is met exactly by
+ * McdRoundedHullSegment (a segment of no length: the half-spaces moved out by the fatness). */
 static int convexSegment(McdGeometryID g, void *data, const MeVector3 p0, const MeVector3 p1, MeReal *t,
                          MeVector3 normal)
 {
@@ -111,6 +114,8 @@ static int convexSegment(McdGeometryID g, void *data, const MeVector3 p0, const 
     McdLineInterval iv;
     MeVector3 d;
     MeVector3Subtract(d, p1, p0);
+    if (c->fatness > 0 && MeVector3MagnitudeSqr(d) > 0)
+        return McdRoundedHullSegment(h, c->fatness, p0, p1, t, normal);
     McdLineIntervalAll(&iv);
     for (int p = 0; p < h->polygonCount && iv.tIn <= iv.tOut; p++) {
         MeReal den = MeVector3Dot(h->normals[p], d);
@@ -141,6 +146,11 @@ static void convexDestroy(McdGeometryID g, void *data)
         MeMemoryDestroy(c->hull);
         c->hull = NULL;
     }
+    if (c->poly) {
+        McdDeallocateHull(c->poly);
+        MeMemoryDestroy(c->poly);
+        c->poly = NULL;
+    }
 }
 
 /* Wire-frame: every edge once. */
@@ -159,30 +169,19 @@ static void convexDraw(McdGeometryID g, void *data, MeMatrix4 tm, const float co
 const McdGeometryTypeDesc McdConvexMeshTypeDesc = {"ConvexMesh", convexDestroy, convexAABB, convexBSphere,
                                                    convexSupport, convexMass, convexSegment, convexDraw};
 
-McdConvexMeshID McdConvexMeshCreateHull(McdFrameworkID fwId, const MeVector3 *vertices, int vertexCount,
-                                        MeReal fatnessRadius)
+/* The convex mesh of `vertexCount` points (reported in `function`'s name), its McdConvexHull not yet set. */
+static McdGeometryData *createFromPoints(McdFrameworkData *fw, const MeVector3 *vertices, int vertexCount,
+                                         MeReal fatnessRadius, const char *function)
 {
-    McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
-    if (!fw)
+    if (!McdCheckDimension(fw, fatnessRadius, "fatnessRadius", METRUE, function) ||
+        !McdHullCheckPoints(vertices, vertexCount, function))
         return NULL;
-    ME_CHECK_NOT_NULL(vertices, NULL);
-    if (!McdCheckDimension(fw, fatnessRadius, "fatnessRadius", METRUE, __func__))
-        return NULL;
-    if (vertexCount < 4) {
-        ME_REPORT(ME_ERR_MCD_HULL_FLAT, "vertexCount (%d) must be at least 4; call ignored", vertexCount);
-        return NULL;
-    }
     MeReal far = 0;
-    for (int i = 0; i < vertexCount; i++) {
-        if (!MeVector3IsValid(vertices[i])) {
-            ME_REPORT(ME_ERR_NONFINITE_ARGUMENT, "vertices[%d] holds NaN or infinity; call ignored", i);
-            return NULL;
-        }
+    for (int i = 0; i < vertexCount; i++)
         far = MeMAX(far, MeMAX3(MeFabs(vertices[i][0]), MeFabs(vertices[i][1]), MeFabs(vertices[i][2])));
-    }
     if (far > MCD_SIZE_MAX * fw->lengthScale) {
-        ME_REPORT(ME_ERR_MCD_SIZE_RANGE, "a vertex lies %g from the origin, beyond %g (1e6 times the framework's "
-                  "lengthScale); call ignored", (double)far, (double)(MCD_SIZE_MAX * fw->lengthScale));
+        ME_REPORT_IN(function, ME_ERR_MCD_SIZE_RANGE, "a vertex lies %g from the origin, beyond %g (1e6 times the "
+                     "framework's lengthScale); call ignored", (double)far, (double)(MCD_SIZE_MAX * fw->lengthScale));
         return NULL;
     }
     McdHull *hull = MeMemoryCreate(sizeof *hull);
@@ -192,8 +191,9 @@ McdConvexMeshID McdConvexMeshCreateHull(McdFrameworkID fwId, const MeVector3 *ve
     if (status != MCD_HULL_OK) {
         MeMemoryDestroy(hull);
         if (status == MCD_HULL_FLAT)
-            ME_REPORT(ME_ERR_MCD_HULL_FLAT, "the %d points span no volume: they lie within %g of a line or a plane "
-                      "(the hull tolerance); call ignored", vertexCount, McdHullTolerance(vertices, vertexCount));
+            ME_REPORT_IN(function, ME_ERR_MCD_HULL_FLAT, "the %d points span no volume: they lie within %g of a line "
+                         "or a plane (the hull tolerance); call ignored", vertexCount,
+                         McdHullTolerance(vertices, vertexCount));
         return NULL;
     }
     /* the hull's smallest extent (its thickness along some polygon normal) must be a valid size */
@@ -204,13 +204,13 @@ McdConvexMeshID McdConvexMeshCreateHull(McdFrameworkID fwId, const MeVector3 *ve
         thin = MeMIN(thin, hull->offsets[p] + MeVector3Dot(hull->vertices[supportIndex(hull, neg)], neg));
     }
     if (!(thin >= MCD_SIZE_MIN * fw->lengthScale)) {
-        ME_REPORT(ME_ERR_MCD_SIZE_RANGE, "the hull is %g thick, below %g (1e-6 times the framework's lengthScale); "
-                  "call ignored", (double)thin, (double)(MCD_SIZE_MIN * fw->lengthScale));
+        ME_REPORT_IN(function, ME_ERR_MCD_SIZE_RANGE, "the hull is %g thick, below %g (1e-6 times the framework's "
+                     "lengthScale); call ignored", (double)thin, (double)(MCD_SIZE_MIN * fw->lengthScale));
         McdHullFree(hull);
         MeMemoryDestroy(hull);
         return NULL;
     }
-    McdGeometryData *g = McdHullComputeMass(hull, fatnessRadius) ? McdGeometryNew(fw, kMcdGeometryTypeConvexMesh, __func__)
+    McdGeometryData *g = McdHullComputeMass(hull, fatnessRadius) ? McdGeometryNew(fw, kMcdGeometryTypeConvexMesh, function)
                                                            : NULL;
     if (!g) {
         McdHullFree(hull);
@@ -218,7 +218,47 @@ McdConvexMeshID McdConvexMeshCreateHull(McdFrameworkID fwId, const MeVector3 *ve
         return NULL;
     }
     g->u.convex.hull = hull;
+    g->u.convex.poly = NULL;
     g->u.convex.fatness = fatnessRadius;
+    return g;
+}
+
+McdConvexMeshID McdConvexMeshCreateHull(McdFrameworkID fwId, const MeVector3 *vertices, int vertexCount,
+                                        MeReal fatnessRadius)
+{
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
+    McdGeometryData *g = fw ? createFromPoints(fw, vertices, vertexCount, fatnessRadius, __func__) : NULL;
+    if (!g)
+        return NULL;
+    McdConvexMeshID id = McdGeometryToID(g);
+    McdConvexHull *poly = MeMemoryCreateZeroed(sizeof *poly);
+    if (!poly || !McdConvexHullFromHull(g->u.convex.hull, poly, __func__)) {
+        MeMemoryDestroy(poly);
+        McdGeometryDestroy(id);
+        return NULL;
+    }
+    g->u.convex.poly = poly;
+    return id;
+}
+
+McdConvexMeshID McdConvexMeshCreate(McdFrameworkID fwId, McdConvexHull *poly, MeReal fatness)
+{
+    McdFrameworkData *fw = McdFrameworkFromID(fwId, __func__);
+    if (!fw || !McdConvexHullCheck(poly, __func__))
+        return NULL;
+    MeVector3 *points = McdConvexHullPositions(poly);
+    if (!points)
+        return NULL;
+    McdGeometryData *g = createFromPoints(fw, (const MeVector3 *)points, poly->numVertex, fatness, __func__);
+    MeMemoryDestroy(points);
+    McdConvexHull *kept = g ? MeMemoryCreate(sizeof *kept) : NULL;
+    if (!kept) {
+        if (g)
+            McdGeometryDestroy(McdGeometryToID(g));
+        return NULL;
+    }
+    *kept = *poly; /* 1.2's shallow copy: the geometry now owns the arrays */
+    g->u.convex.poly = kept;
     return McdGeometryToID(g);
 }
 
@@ -256,7 +296,7 @@ McdConvexMeshID McdConvexMeshCreateSphyl(McdFrameworkID fwId, MeReal radius, MeR
     McdGeometryData *c##G = McdGeometryOfType((id), kMcdGeometryTypeConvexMesh, __func__);           \
     if (!c##G)                                                                                       \
         return ret;                                                                                  \
-    const McdHull *c = c##G->u.convex.hull
+    const McdConvexHull *c = c##G->u.convex.poly
 
 void McdConvexMeshDestroy(McdConvexMeshID id)
 {
@@ -267,30 +307,30 @@ void McdConvexMeshDestroy(McdConvexMeshID id)
 int McdConvexMeshGetPolygonCount(McdConvexMeshID id)
 {
     CONVEX_OR_RETURN(h, id, 0);
-    return h->polygonCount;
+    return h->numFace;
 }
 
-static MeBool polygonInRange(const McdHull *h, int polyID, const char *function)
+static MeBool polygonInRange(const McdConvexHull *h, int polyID, const char *function)
 {
-    if (polyID < 0 || polyID >= h->polygonCount) {
+    if (polyID < 0 || polyID >= h->numFace) {
         ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE, "polyID (%d) must lie in 0 ... %d; call ignored", polyID,
-                     h->polygonCount - 1);
+                     h->numFace - 1);
         return MEFALSE;
     }
     return METRUE;
 }
 
-static const MeReal *polygonVertex(const McdHull *h, int polyID, int vertexID, const char *function)
+static const MeReal *polygonVertex(const McdConvexHull *h, int polyID, int vertexID, const char *function)
 {
     if (!polygonInRange(h, polyID, function))
         return NULL;
-    int n = h->polygonStart[polyID + 1] - h->polygonStart[polyID];
+    int n = h->face[polyID + 1].firstEdge - h->face[polyID].firstEdge;
     if (vertexID < 0 || vertexID >= n) {
         ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE, "vertexID (%d) must lie in 0 ... %d; call ignored", vertexID,
                      n - 1);
         return NULL;
     }
-    return h->vertices[h->polygonVertices[h->polygonStart[polyID] + vertexID]];
+    return h->vertex[h->edge[h->face[polyID].firstEdge + vertexID].fromVert].position;
 }
 
 int McdConvexMeshGetPolygonVertexCount(McdConvexMeshID id, int polyID)
@@ -298,7 +338,7 @@ int McdConvexMeshGetPolygonVertexCount(McdConvexMeshID id, int polyID)
     CONVEX_OR_RETURN(h, id, 0);
     if (!polygonInRange(h, polyID, __func__))
         return 0;
-    return h->polygonStart[polyID + 1] - h->polygonStart[polyID];
+    return h->face[polyID + 1].firstEdge - h->face[polyID].firstEdge;
 }
 
 void McdConvexMeshGetPolygonVertex(McdConvexMeshID id, int polyID, int vertexID, MeVector3 coords)
@@ -321,24 +361,30 @@ void McdConvexMeshGetPolygonNormal(McdConvexMeshID id, int polyID, MeVector3 nor
     CONVEX_OR_RETURN(h, id, ME_NOTHING);
     ME_CHECK_NOT_NULL(normal, ME_NOTHING);
     if (polygonInRange(h, polyID, __func__))
-        MeVector3Copy(normal, h->normals[polyID]);
+        MeVector3Copy(normal, h->face[polyID].normal);
 }
 
 int McdConvexMeshGetVertexCount(McdConvexMeshID id)
 {
     CONVEX_OR_RETURN(h, id, 0);
-    return h->vertexCount;
+    return h->numVertex;
 }
 
 void McdConvexMeshGetVertex(McdConvexMeshID id, int index, MeVector3 position)
 {
     CONVEX_OR_RETURN(h, id, ME_NOTHING);
     ME_CHECK_NOT_NULL(position, ME_NOTHING);
-    if (index < 0 || index >= h->vertexCount) {
-        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "index (%d) must lie in 0 ... %d; call ignored", index, h->vertexCount - 1);
+    if (index < 0 || index >= h->numVertex) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "index (%d) must lie in 0 ... %d; call ignored", index, h->numVertex - 1);
         return;
     }
-    MeVector3Copy(position, h->vertices[index]);
+    MeVector3Copy(position, h->vertex[index].position);
+}
+
+const McdConvexHull *McdConvexMeshGetPolyhedron(McdConvexMeshID id)
+{
+    CONVEX_OR_RETURN(h, id, NULL);
+    return h;
 }
 
 MeReal McdConvexMeshGetFatness(McdConvexMeshID id)
