@@ -50,6 +50,12 @@ ME_API void MdtWorldSetTaskSystem(MdtWorldID w, int workerCount, MdtEnqueueTaskC
 ME_API void MdtWorldClearTaskSystem(MdtWorldID w);
 /** Workers of the task system in use: 1 without one (the default); 0 for an invalid ID. */
 ME_API int MdtWorldGetWorkerCount(MdtWorldID w);
+/** Run `task` over [0, itemCount) on `w`'s task system in ranges of at least `minRange` items (values
+ *  below 1 mean 1), returning when every item has run: on the calling thread without a task system;
+ *  items the task system leaves out (or gives a worker index out of range) run afterwards on the
+ *  calling thread as worker 0 (ME_ERR_TASK_WORKER). For the application's per-item work that must
+ *  share the world's workers (the bridge's pair tests use it). NULL task: ME_ERR_TASK_CALLBACK. */
+ME_API void MdtWorldRunTask(MdtWorldID w, MdtTaskFnPtr task, int itemCount, int minRange, void *taskData);
 
 ME_EXTERN_C_END
 
