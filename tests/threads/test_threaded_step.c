@@ -2,7 +2,8 @@
  * many partitions (stacks falling and sliding, jointed chains swinging) stepped on pools of 2, 3 and
  * 4 threads ends in exactly the serial step's state, every step; two universes stepped at the same
  * time on two threads, each on a pool of its own or both on one, too. Run under ThreadSanitizer by the `tsan`
- * configuration of tests/run_configs.sh: the proof that the partitions' solves share no data. */
+ * configuration of tests/run_configs.sh: the proof that the threaded stages (prediction, rows, solves,
+ * integration, unpack, the bridge's pair tests) share no data. */
 #include "karma_test.h"
 #include "karma_partitions.h"
 
@@ -13,7 +14,7 @@
 
 #include <MeThreadPool.h>
 
-#define STACKS 8
+#define STACKS 16 /* 48 boxes and 24 links: more bodies than one range of the prediction task */
 #define STACK_BOXES 3
 #define CHAINS 4
 #define CHAIN_LINKS 6
