@@ -64,6 +64,13 @@ for scene in $SCENES; do
         printf "%-10s %14.0f %14.0f %14.0f %14.0f %7.1f%% %7.1f%% %9.2fx\n", s, t1 / steps, t2 / steps, w / steps,
                sv / steps, 100 * w / t2, 100 * serial / t2, t1 / span
     }'
+    # W by stage: what each task's items cost per step (pair tests: the bridge's, through MdtWorldRunTask)
+    line="  by stage per step:"
+    for f in predictTask packTask solveTask integrateTask unpackTask testPairs; do
+        v=$(inclusive "$work/two.out" "$f")
+        line="$line $f $((v / STEPS))"
+    done
+    echo "$line"
 done
 echo "(instructions per step over $STEPS steps from the start, Karma $KARMA_VARIANT; the bound is an upper bound:"
 echo " it assumes the tasks' work divides evenly and the hand-outs cost nothing but their instructions)"
