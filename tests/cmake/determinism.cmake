@@ -67,8 +67,8 @@ foreach(threads 2 4)
     target_compile_definitions(${exe} PRIVATE KARMA_TEST_THREADS=${threads})
     if(scene STREQUAL "islands")
       # six stages split every step (prediction, rows, solves, integration, unpack, the bridge's pair
-      # tests), 240 steps, two runs
-      target_compile_definitions(${exe} PRIVATE KARMA_TEST_MIN_SPLITS=2880)
+      # tests), 240 steps, two runs of two scenes
+      target_compile_definitions(${exe} PRIVATE KARMA_TEST_MIN_SPLITS=5760)
     endif()
     if(KARMA_DOUBLE)
       set(create MdtWorldCreate_d)

@@ -8,6 +8,10 @@
  * - 2 pendulums held by a user constraint (whose function the step calls on the stepping thread);
  * - 40 balls dropped apart onto the ground (many one-body partitions: prediction and integration).
  *
+ * Friction bounded by the normal force (linked rows), and the scene run twice: with the world's
+ * solver choice (small partitions: the exact path) and forced onto the iterative path (which reads
+ * the declared contacts), so that every step-global row index the threaded pack rewrites is used.
+ *
  * Built on the public API (MstUniverse). tests/cmake/determinism.cmake builds it against the -O0 and
  * -O2 cores and, with tests/determinism/threaded_worlds.c, on pools of 2 and 4 threads: one golden
  * hash per precision for all of them. KARMA_DETERMINISM_PRINT=1 prints the new value after a change
@@ -29,9 +33,11 @@
 #define BODIES (STACKS * STACK_HEIGHT + CHAINS * LINKS + PENDULUMS + BALLS)
 
 #if KARMA_DOUBLE
-#  define GOLDEN 0xdea69ad6a975f522ull
+#  define GOLDEN_DIRECT 0xe45fd0e26951e694ull
+#  define GOLDEN_ITERATIVE 0xcfeb154a0ec1aacbull
 #else
-#  define GOLDEN 0x65f5b61336ace0e8ull
+#  define GOLDEN_DIRECT 0xe279e5e663381afbull
+#  define GOLDEN_ITERATIVE 0x17475ab088284812ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
@@ -68,7 +74,7 @@ static MdtBodyID addBody(MstUniverseID u, McdGeometryID g, MeReal x, MeReal y, M
 
 static Rod rods[PENDULUMS];
 
-static MstUniverseID buildScene(void)
+static MstUniverseID buildScene(MeBool iterative)
 {
     MstUniverseSizes sizes = MstUniverseDefaultSizes;
     sizes.dynamicBodiesMaxCount = BODIES;
@@ -81,10 +87,13 @@ static MstUniverseID buildScene(void)
     MdtWorldID w = MstUniverseGetWorld(u);
     MdtWorldSetGravity(w, 0, 0, ME_R(-9.81));
     MdtWorldSetAutoDisable(w, MEFALSE);
+    if (iterative)
+        MdtWorldSetLCPSolver(w, MdtLCPSolverIterative);
     McdFrameworkID fw = MstUniverseGetFramework(u);
     assert_non_null(MstFixedModelCreate(u, McdPlaneCreate(fw), groundTM));
     MdtContactParamsID p = MstBridgeGetContactParams(MstUniverseGetBridge(u), 0, 0);
     MdtContactParamsSetType(p, MdtContactTypeFriction2D);
+    MdtContactParamsSetFrictionModel(p, MdtFrictionModelNormalForce);
     MdtContactParamsSetFrictionCoeffecient(p, ME_R(0.6));
 
     McdGeometryID box = McdBoxCreate(fw, ME_R(0.4), ME_R(0.4), ME_R(0.4));
@@ -137,9 +146,9 @@ static MstUniverseID buildScene(void)
 
 /* Run the scene; returns the hash chained every HASH_EVERY steps. Counts the steps with contacts and
  * with more than one partition of rows, so that the scene cannot pass without the work it is for. */
-static uint64_t runScene(MeBool trace, int *mostContacts, int *mostPartitions)
+static uint64_t runScene(MeBool iterative, MeBool trace, int *mostContacts, int *mostPartitions)
 {
-    MstUniverseID u = buildScene();
+    MstUniverseID u = buildScene(iterative);
     MdtWorldID w = MstUniverseGetWorld(u);
     uint64_t hash = KARMA_HASH_INIT;
     *mostContacts = *mostPartitions = 0;
@@ -163,32 +172,44 @@ static uint64_t runScene(MeBool trace, int *mostContacts, int *mostPartitions)
     return hash;
 }
 
-static void islands_same_hash_twice_and_golden(void **state)
+static void checkScene(const char *name, MeBool iterative, uint64_t golden)
 {
-    (void)state;
     karma_capture_messages();
     const MeBool trace = getenv("KARMA_DETERMINISM_TRACE") != NULL;
     int contacts1, partitions1, contacts2, partitions2;
-    uint64_t first = runScene(trace, &contacts1, &partitions1);
-    uint64_t second = runScene(MEFALSE, &contacts2, &partitions2);
-    print_message("islands: hash 0x%016llx (run 1), 0x%016llx (run 2), golden 0x%016llx (%s); most contacts %d, "
+    uint64_t first = runScene(iterative, trace, &contacts1, &partitions1);
+    uint64_t second = runScene(iterative, MEFALSE, &contacts2, &partitions2);
+    print_message("%s: hash 0x%016llx (run 1), 0x%016llx (run 2), golden 0x%016llx (%s); most contacts %d, "
                   "most partitions with rows %d\n",
-                  (unsigned long long)first, (unsigned long long)second, (unsigned long long)GOLDEN,
+                  name, (unsigned long long)first, (unsigned long long)second, (unsigned long long)golden,
                   KARMA_DOUBLE ? "double" : "float", contacts1, partitions1);
     if (getenv("KARMA_DETERMINISM_PRINT"))
-        printf("#  define GOLDEN 0x%016llxull\n", (unsigned long long)first);
+        printf("#  define GOLDEN_%s 0x%016llxull\n", name, (unsigned long long)first);
     /* Contacts under every stack and ball, a row partition per stack, chain and pendulum at least. */
     assert_true(contacts1 >= 4 * (STACKS * STACK_HEIGHT + BALLS / 2));
     assert_true(partitions1 >= STACKS + CHAINS + PENDULUMS);
     assert_true(first == second);
-    assert_true(first == GOLDEN);
+    assert_true(first == golden);
     assert_int_equal(karma_warning_count(), 0);
+}
+
+static void islands_exact_path_same_hash_twice_and_golden(void **state)
+{
+    (void)state;
+    checkScene("DIRECT", MEFALSE, GOLDEN_DIRECT);
+}
+
+static void islands_iterative_path_same_hash_twice_and_golden(void **state)
+{
+    (void)state;
+    checkScene("ITERATIVE", METRUE, GOLDEN_ITERATIVE);
 }
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(islands_same_hash_twice_and_golden),
+        cmocka_unit_test(islands_exact_path_same_hash_twice_and_golden),
+        cmocka_unit_test(islands_iterative_path_same_hash_twice_and_golden),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
