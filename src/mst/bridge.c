@@ -146,6 +146,8 @@ void MstBridgeSetModelPairBufferSize(MstBridgeID id, int size)
     McdModelPairContainerDestroy(b->pairs);
     b->pairs = c;
     b->pairBufferSize = size;
+    if (b->tested)
+        MstBridgeReserveParallel(b); /* the parallel pair tests' records follow, now */
 }
 
 int MstBridgeGetModelPairBufferSize(MstBridgeID id)
@@ -171,6 +173,8 @@ void MstBridgeSetContactBufferSize(MstBridgeID id, int size)
     MeMemoryDestroy(b->contacts);
     b->contacts = c;
     b->contactBufferSize = size;
+    if (b->tested)
+        MstBridgeReserveParallel(b); /* the parallel pair tests' records follow, now */
 }
 
 int MstBridgeGetContactBufferSize(MstBridgeID id)

@@ -42,8 +42,8 @@ typedef struct MstBridgeData {
     int matchCapacity;
     int lastPairCount, lastContactCount;
     /* The pair tests on several workers (parallel_pairs.c): one record per pair of a chunk and
-     * contactBufferSize contacts each; made at the first threaded update, remade when a buffer size
-     * changes. */
+     * contactBufferSize contacts each; made when the universe gets a task system (else at the first
+     * threaded update), remade when a buffer size changes. */
     MstTestedPair *tested;
     McdContact *testedContacts;
     int testedPairs, testedContactsPerPair;
@@ -63,6 +63,9 @@ void MstBridgeReadPairs(MstBridgeData *b, McdSpaceID space, MdtWorldID world, Me
  *  there is no memory for the records: then the caller tests them itself. */
 MeBool MstBridgeCollideInParallel(MstBridgeData *b, MdtWorldID world, McdModelPairID *hello, int helloCount,
                                   McdModelPairID *staying, int stayingCount);
+/** Make (or remake, for new buffer sizes) the records of the parallel pair tests: one per pair of the
+ *  pair buffer, with the contact buffer's room each. MEFALSE, reported by MeMemory, without memory. */
+MeBool MstBridgeReserveParallel(MstBridgeData *b);
 /** Free the records of the parallel pair tests. */
 void MstBridgeFreeParallel(MstBridgeData *b);
 

@@ -47,8 +47,7 @@ void MstBridgeFreeParallel(MstBridgeData *b)
     b->testedPairs = b->testedContactsPerPair = 0;
 }
 
-/* Records for a chunk of the pair buffer's size with the contact buffer's room each. */
-static MeBool reserve(MstBridgeData *b)
+MeBool MstBridgeReserveParallel(MstBridgeData *b)
 {
     if (b->tested && b->testedPairs == b->pairBufferSize && b->testedContactsPerPair == b->contactBufferSize)
         return METRUE;
@@ -69,7 +68,9 @@ MeBool MstBridgeCollideInParallel(MstBridgeData *b, MdtWorldID world, McdModelPa
                                   McdModelPairID *staying, int stayingCount)
 {
     const int count = helloCount + stayingCount;
-    if (MdtWorldGetWorkerCount(world) <= 1 || count <= PAIR_MIN_RANGE || count > b->pairBufferSize || !reserve(b))
+    if (MdtWorldGetWorkerCount(world) <= 1 || count <= PAIR_MIN_RANGE || count > b->pairBufferSize)
+        return MEFALSE;
+    if (!MstBridgeReserveParallel(b))
         return MEFALSE;
     PairTask task = {b, hello, staying, helloCount};
     MdtWorldRunTask(world, testPairs, count, PAIR_MIN_RANGE, &task);
