@@ -14,15 +14,19 @@
  *   not called) or return a handle that finish(handle, user) waits on. The world calls finish before
  *   it reads the results, on the thread that steps it.
  *
- * What runs in parallel: the partitions' solves (MdtKeaSolve), each with a workspace of its worker's.
- * A partition's solve does not depend on which worker runs it or when, and the partitions' statistics
- * and messages are gathered afterwards in partition order on the stepping thread: the trajectories are
- * bit-identical to the serial step for every worker count and every task system (decision K33).
- * Messages and profile sections are reported from the stepping thread only.
+ * What runs in parallel (docs/step.md, "The step on several cores"): the prediction of the bodies'
+ * velocities, the writing of each partition's rows, the partitions' solves (each on a workspace of its
+ * worker's), their integration, the unpacking of the constraints' forces, and, with MstUniverseStep or
+ * MstBridgeUpdateContacts, the bridge's pair tests. Each item writes only its own data and everything
+ * that must happen in order (messages, counters, the application's callbacks) happens afterwards on the
+ * stepping thread in the serial order: the trajectories are bit-identical to the serial step for every
+ * worker count and every task system (decisions K33, K38-cores). Messages a stage reports from inside an
+ * item (a row writer's, a pair test's) and Karma's per-model intersect callbacks may run on a worker.
  *
  * Memory: the solver's workspace chunk holds one workspace per worker; setting the worker count sizes
- * it for that many at once (from the largest workspace seen so far), so a step after the first
- * allocates nothing more than the serial step would. */
+ * it for that many at once (from the largest workspace seen so far), and the marks of the items each
+ * task ran for the pools, so a step after the first allocates nothing more than the serial step would
+ * (the bridge makes its per-pair records once, at its first threaded update). */
 #ifndef MDT_TASK_SYSTEM_H
 #define MDT_TASK_SYSTEM_H
 
@@ -50,6 +54,12 @@ ME_API void MdtWorldSetTaskSystem(MdtWorldID w, int workerCount, MdtEnqueueTaskC
 ME_API void MdtWorldClearTaskSystem(MdtWorldID w);
 /** Workers of the task system in use: 1 without one (the default); 0 for an invalid ID. */
 ME_API int MdtWorldGetWorkerCount(MdtWorldID w);
+/** Run `task` over [0, itemCount) on `w`'s task system in ranges of at least `minRange` items (values
+ *  below 1 mean 1), returning when every item has run: on the calling thread without a task system;
+ *  items the task system leaves out (or gives a worker index out of range) run afterwards on the
+ *  calling thread as worker 0 (ME_ERR_TASK_WORKER). For the application's per-item work that must
+ *  share the world's workers (the bridge's pair tests use it). NULL task: ME_ERR_TASK_CALLBACK. */
+ME_API void MdtWorldRunTask(MdtWorldID w, MdtTaskFnPtr task, int itemCount, int minRange, void *taskData);
 
 ME_EXTERN_C_END
 

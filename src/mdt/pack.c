@@ -5,7 +5,11 @@
  * each MdtRow (Jacobian, desired velocity, position error, softness, force bounds) into the solver's
  * arrays:  r = c − γ φ / h − J v*,  ε = ε_world + ε_row,  bounds·h,  and the warm start x0 from the
  * constraint's impulses of the last step. All partitions' rows go into one set of arrays (in the
- * world's row chunk), partition after partition, constraint after constraint. */
+ * world's row chunk), partition after partition, constraint after constraint.
+ *
+ * On several cores (MdtTaskSystem.h) the prediction is one task over the bodies and the row writing
+ * one task over the partitions, each partition into room for its rows' bound; the rows are then moved
+ * together. Every value is computed as in the serial step, so the rows are the same, bit for bit. */
 #include <string.h>
 
 #include "../me/check.h"
@@ -84,7 +88,8 @@ static MeBool allocateRows(MdtWorldData *w, int rows, int bodies, int partitions
     size_t nr = (size_t)(rows > 0 ? rows : 1), nb = (size_t)(bodies > 0 ? bodies : 1);
     size_t bytes = sizeof(KeaJacobianRow) * nr + sizeof(KeaBody) * nb + sizeof(KeaBodyVelocity) * nb +
                    sizeof(MeReal) * 6 * nr + sizeof(int) * (3 * nr + (size_t)partitions + 1) +
-                   sizeof(KeaContact) * (nr / 3 + 1) + sizeof(int) * ((size_t)partitions + 1) + 64;
+                   sizeof(KeaContact) * (nr / 3 + 1) + sizeof(int) * ((size_t)partitions + 1) +
+                   sizeof(int) * 4 * ((size_t)partitions + 1) + 64;
     unsigned char *mem = MeChunkGetMem(&w->rowChunk, bytes);
     if (!mem)
         return MEFALSE;
@@ -108,14 +113,109 @@ static MeBool allocateRows(MdtWorldData *w, int rows, int bodies, int partitions
     r->partitionRowStart = ints + 3 * nr;
     r->partitionContactStart = r->partitionRowStart + partitions + 1;
     r->contacts = (KeaContact *)(r->partitionContactStart + partitions + 1); /* ints: KeaContact is one */
+    r->packRowRoom = (int *)(r->contacts + nr / 3 + 1);
+    r->packContactRoom = r->packRowRoom + partitions + 1;
+    r->packRows = r->packContactRoom + partitions + 1;
+    r->packContacts = r->packRows + partitions + 1;
     return METRUE;
+}
+
+/* What the row-writing task shares: the writer's arrays and the step's constants, read-only. */
+typedef struct PackTask {
+    MdtWorldData *w;
+    MdtRowWriter proto;
+} PackTask;
+
+/* Write partition p's bodies and rows, its rows from `row` and its declared contacts from `contact`
+ * on; records how many of each it wrote. Touches only its own bodies' solver entries, its own
+ * constraints and its own rows, so partitions may be written on any worker in any order. */
+static void packPartition(const PackTask *t, int p, int row, int contact)
+{
+    MdtWorldData *w = t->w;
+    const MdtPartitionLists *out = &w->partitions;
+    MdtStepRows *r = &w->rows;
+    int bodyBase = out->partitionStart[p];
+    /* Bodies: inverse mass and world inverse inertia, in step order. */
+    for (int i = bodyBase; i < out->partitionStart[p + 1]; i++) {
+        const MdtBodyData *b = out->bodies[i];
+        r->bodies[i].invMass = b->invMass;
+        MdtBodyWorldInverseInertia(b, r->bodies[i].invInertia);
+    }
+    MdtRowWriter writer = t->proto;
+    writer.count = row;
+    writer.contactCount = contact;
+    for (int i = out->constraintStart[p]; i < out->constraintStart[p + 1]; i++) {
+        MdtConstraintData *c = out->constraints[i];
+        writer.constraint = c;
+        writer.first = writer.count;
+        writer.capacity = writer.count + MdtConstraintRowBound(c);
+        writer.localBody[0] = c->body[0]->stepIndex - bodyBase;
+        writer.localBody[1] = c->body[1] ? c->body[1]->stepIndex - bodyBase : KEA_WORLD;
+        c->cls->addRows(c, &writer);
+        c->rowStart = writer.first;
+        c->rowCount = writer.count - writer.first;
+    }
+    r->packRows[p] = writer.count - row;
+    r->packContacts[p] = writer.contactCount - contact;
+}
+
+/* Partitions whose rows the task writes; those with a user constraint are written on the stepping
+ * thread afterwards, since a user constraint calls the application's function. */
+static void packTask(int start, int end, int worker, void *data)
+{
+    (void)worker;
+    const PackTask *t = data;
+    const MdtStepRows *r = &t->w->rows;
+    for (int p = start; p < end; p++)
+        if (r->packRowRoom[p] >= 0)
+            packPartition(t, p, r->packRowRoom[p], r->packContactRoom[p]);
+}
+
+/* Move partition p's rows (written at their room) down to `row`, and its declared contacts to
+ * `contact`, rewriting the step-global row indices they hold. */
+static void moveRows(MdtWorldData *w, int p, int row, int contact)
+{
+    MdtStepRows *r = &w->rows;
+    const MdtPartitionLists *out = &w->partitions;
+    const int from = r->packRowRoom[p], shift = from - row, n = r->packRows[p];
+    const size_t m = (size_t)n;
+    if (shift != 0 && n > 0) {
+        memmove(r->J + row, r->J + from, sizeof *r->J * m);
+        memmove(r->rowBodies + row, r->rowBodies + from, sizeof *r->rowBodies * m);
+        MeReal *reals[] = {r->epsilon, r->rhs, r->lo, r->hi, r->mu, r->x};
+        for (size_t k = 0; k < sizeof reals / sizeof reals[0]; k++)
+            memmove(reals[k] + row, reals[k] + from, sizeof(MeReal) * m);
+        memmove(r->link + row, r->link + from, sizeof(int) * m);
+        for (int i = row; i < row + n; i++)
+            if (r->link[i] >= 0)
+                r->link[i] -= shift;
+        for (int i = out->constraintStart[p]; i < out->constraintStart[p + 1]; i++)
+            out->constraints[i]->rowStart -= shift;
+    }
+    const int fromContact = r->packContactRoom[p], nc = r->packContacts[p];
+    if ((shift != 0 || fromContact != contact) && nc > 0) {
+        memmove(r->contacts + contact, r->contacts + fromContact, sizeof *r->contacts * (size_t)nc);
+        for (int i = contact; i < contact + nc; i++)
+            r->contacts[i].row -= shift;
+    }
+}
+
+/* Bodies per range of the prediction task (a body's prediction is a few hundred operations). */
+#define PREDICT_MIN_RANGE 64
+/* Partitions per range of the row-writing task. */
+#define PACK_MIN_RANGE 4
+
+static void predictTask(int start, int end, int worker, void *data)
+{
+    (void)worker;
+    MdtPredictVelocitiesOf(data, start, end);
 }
 
 void MdtPackStage(MdtWorldData *w)
 {
     MdtPartitionLists *out = &w->partitions;
     MdtStepRows *r = &w->rows;
-    MdtPredictVelocities(w);
+    MdtRunStepTask(w, predictTask, out->bodyCount, PREDICT_MIN_RANGE, w);
 
     int total = 0;
     for (int i = 0; i < out->constraintCount; i++)
@@ -130,52 +230,75 @@ void MdtPackStage(MdtWorldData *w)
         return;
     }
 
-    /* Bodies: inverse mass and world inverse inertia, in step order. */
-    for (int i = 0; i < out->bodyCount; i++) {
-        const MdtBodyData *b = out->bodies[i];
-        r->bodies[i].invMass = b->invMass;
-        MdtBodyWorldInverseInertia(b, r->bodies[i].invInertia);
-    }
+    PackTask task;
+    MdtRowWriter *writer = &task.proto;
+    task.w = w;
+    writer->J = r->J;
+    writer->rowBodies = r->rowBodies;
+    writer->epsilon = r->epsilon;
+    writer->rhs = r->rhs;
+    writer->lo = r->lo;
+    writer->hi = r->hi;
+    writer->mu = r->mu;
+    writer->x0 = r->x;
+    writer->link = r->link;
+    writer->count = 0;
+    writer->captured = NULL;
+    writer->contacts = r->contacts;
+    writer->contactCount = 0;
+    writer->h = w->stepSize;
+    writer->gamma = w->gamma;
+    writer->epsilon0 = w->epsilon;
+    writer->maxCorrection = w->maxCorrectingVelocity;
 
-    MdtRowWriter writer;
-    writer.J = r->J;
-    writer.rowBodies = r->rowBodies;
-    writer.epsilon = r->epsilon;
-    writer.rhs = r->rhs;
-    writer.lo = r->lo;
-    writer.hi = r->hi;
-    writer.mu = r->mu;
-    writer.x0 = r->x;
-    writer.link = r->link;
-    writer.count = 0;
-    writer.captured = NULL;
-    writer.contacts = r->contacts;
-    writer.contactCount = 0;
-    writer.h = w->stepSize;
-    writer.gamma = w->gamma;
-    writer.epsilon0 = w->epsilon;
-    writer.maxCorrection = w->maxCorrectingVelocity;
-    for (int p = 0; p < out->partitionCount; p++) {
-        int bodyBase = out->partitionStart[p];
-        r->partitionRowStart[p] = writer.count;
-        r->partitionContactStart[p] = writer.contactCount;
-        for (int i = out->constraintStart[p]; i < out->constraintStart[p + 1]; i++) {
-            MdtConstraintData *c = out->constraints[i];
-            writer.constraint = c;
-            writer.first = writer.count;
-            writer.capacity = writer.count + MdtConstraintRowBound(c);
-            writer.localBody[0] = c->body[0]->stepIndex - bodyBase;
-            writer.localBody[1] = c->body[1] ? c->body[1]->stepIndex - bodyBase : KEA_WORLD;
-            c->cls->addRows(c, &writer);
-            c->rowStart = writer.first;
-            c->rowCount = writer.count - writer.first;
+    int row = 0, contact = 0;
+    if (w->workerCount <= 1 || !w->enqueueTask || out->partitionCount <= PACK_MIN_RANGE) {
+        /* One thread: each partition's rows straight after the last one's. */
+        for (int p = 0; p < out->partitionCount; p++) {
+            r->packRowRoom[p] = row;
+            r->packContactRoom[p] = contact;
+            packPartition(&task, p, row, contact);
+            r->partitionRowStart[p] = row;
+            r->partitionContactStart[p] = contact;
+            row += r->packRows[p];
+            contact += r->packContacts[p];
+            MdtWorldLogMatrixSize(w, r->packRows[p]);
         }
-        MdtWorldLogMatrixSize(w, writer.count - r->partitionRowStart[p]);
+    } else {
+        /* Several: each partition writes into room for its rows' bound (a contact is at least three
+         * rows), in parallel; then the rows are moved down to lie partition after partition, as the
+         * serial step lays them out. The values are the same wherever they are written. */
+        int room = 0, contactRoom = 0;
+        for (int p = 0; p < out->partitionCount; p++) {
+            int bound = 0;
+            MeBool user = MEFALSE;
+            for (int i = out->constraintStart[p]; i < out->constraintStart[p + 1]; i++) {
+                bound += MdtConstraintRowBound(out->constraints[i]);
+                user |= out->constraints[i]->type == MdtBclUSER;
+            }
+            r->packRowRoom[p] = user ? -1 - room : room; /* negative: written on the stepping thread */
+            r->packContactRoom[p] = contactRoom;
+            room += bound;
+            contactRoom += bound / 3;
+        }
+        MdtRunStepTask(w, packTask, out->partitionCount, PACK_MIN_RANGE, &task);
+        for (int p = 0; p < out->partitionCount; p++) {
+            if (r->packRowRoom[p] < 0) {
+                r->packRowRoom[p] = -1 - r->packRowRoom[p];
+                packPartition(&task, p, r->packRowRoom[p], r->packContactRoom[p]);
+            }
+            moveRows(w, p, row, contact);
+            r->partitionRowStart[p] = row;
+            r->partitionContactStart[p] = contact;
+            row += r->packRows[p];
+            contact += r->packContacts[p];
+            MdtWorldLogMatrixSize(w, r->packRows[p]);
+        }
     }
-    r->partitionRowStart[out->partitionCount] = writer.count;
-    r->partitionContactStart[out->partitionCount] = writer.contactCount;
-    r->count = writer.count;
-    w->lastRowCount = writer.count;
+    r->partitionRowStart[out->partitionCount] = row;
+    r->partitionContactStart[out->partitionCount] = contact;
+    r->count = row;
+    w->lastRowCount = row;
     w->rowsPacked = METRUE;
 }
 

@@ -83,21 +83,23 @@ static MeBool allocateOutput(MdtWorldData *w, MdtBodyData ***seeds, int maxBodie
     MdtPartitionLists *out = &w->partitions;
     size_t nb = (size_t)maxBodies + 1, nc = (size_t)maxConstraints + 1;
     size_t bytes = sizeof(MdtBodyData *) * 2 * nb + sizeof(MdtBodyID) * nb + sizeof(MdtConstraintData *) * nc +
-                   sizeof(int) * 5 * nb + 64;
+                   sizeof(MeReal) * 2 * nb + sizeof(int) * 6 * nb + 64;
     unsigned char *mem = MeChunkGetMem(&w->partitionChunk, bytes);
     if (!mem)
         return MEFALSE;
     MeChunkPutMem(&w->partitionChunk, mem); /* the arrays stay valid until the next step */
-    /* Pointer arrays first (strictest alignment), then ints. */
+    /* Pointer arrays first (strictest alignment), then reals, then ints. */
     out->bodies = (MdtBodyData **)mem;
     *seeds = out->bodies + nb;
     out->ids = (MdtBodyID *)(*seeds + nb);
     out->constraints = (MdtConstraintData **)(out->ids + nb);
-    out->partitionStart = (int *)(out->constraints + nc);
+    out->energies = (MeReal *)(out->constraints + nc);
+    out->partitionStart = (int *)(out->energies + 2 * nb);
     out->constraintStart = out->partitionStart + nb;
     out->droppedRows = out->constraintStart + nb;
     out->simError = out->droppedRows + nb;
     out->solverStatus = out->simError + nb;
+    out->runawayReports = out->solverStatus + nb;
     return METRUE;
 }
 

@@ -159,9 +159,9 @@ static void predictBody(MdtBodyData *b, const MdtWorldData *w, MeReal h)
     }
 }
 
-void MdtPredictVelocities(MdtWorldData *w)
+void MdtPredictVelocitiesOf(MdtWorldData *w, int start, int end)
 {
     const MdtPartitionLists *out = &w->partitions;
-    for (int i = 0; i < out->bodyCount; i++)
+    for (int i = start; i < end; i++)
         predictBody(out->bodies[i], w, w->stepSize);
 }

@@ -6,7 +6,8 @@
 #include "world.h"
 
 /* v*, ω*: velocities after external forces, impulses, gyroscopic term and damping, before
- * constraints. Also records the start-of-step pose. For every body of the step's partitions. */
-void MdtPredictVelocities(MdtWorldData *w);
+ * constraints. Also records the start-of-step pose. For the step's bodies [start, end) (partition
+ * order); each body's prediction reads only it and the world's settings, so ranges may run at once. */
+void MdtPredictVelocitiesOf(MdtWorldData *w, int start, int end);
 
 #endif

@@ -68,11 +68,51 @@ MeBool MdtRunawayEnergyBelowFloor(const MdtWorldData *w, int p, const MeReal *de
     return energy * (1 + margin) <= mass * v * v * (1 - margin);
 }
 
-static void checkSpeed(MdtWorldData *w, MdtBodyData *b)
+/* What the judging of a partition leaves for the stepping thread to report (MdtRunawayReportPartition). */
+enum { REPORT_SPEED = 1, REPORT_ENERGY = 2 };
+
+static MeBool overSpeedLimit(const MdtWorldData *w, const MdtBodyData *b)
 {
     MeReal v2 = MeVector3MagnitudeSqr(b->vel), w2 = MeVector3MagnitudeSqr(b->velrot);
-    MeBool over = v2 > w->speedLimit * w->speedLimit || w2 > w->angularSpeedLimit * w->angularSpeedLimit;
-    if (over && !b->speedWarned) {
+    return v2 > w->speedLimit * w->speedLimit || w2 > w->angularSpeedLimit * w->angularSpeedLimit;
+}
+
+int MdtRunawayJudgePartition(MdtWorldData *w, int p, MeReal predicted, MeReal after)
+{
+    const MdtPartitionLists *out = &w->partitions;
+    int start = out->partitionStart[p], end = out->partitionStart[p + 1];
+    int reports = 0;
+    MeReal mass = 0;
+    MeBool warned = MEFALSE;
+    for (int i = start; i < end; i++) {
+        MdtBodyData *b = out->bodies[i];
+        MeBool over = overSpeedLimit(w, b);
+        if (over && !b->speedWarned)
+            reports |= REPORT_SPEED; /* its flag is set when it is reported */
+        else
+            b->speedWarned = over;
+        mass += b->mass;
+        warned |= b->energyWarned;
+    }
+    MeReal v = w->maxCorrectingVelocity;
+    MeReal floor = ME_IS_FINITE(v) ? ME_R(0.5) * mass * v * v : MEINFINITY;
+    MeBool jump = after > ENERGY_JUMP_FACTOR * predicted + floor;
+    if (jump && !warned)
+        reports |= REPORT_ENERGY;
+    for (int i = start; i < end; i++)
+        out->bodies[i]->energyWarned = jump;
+    return reports;
+}
+
+void MdtRunawayReportPartition(MdtWorldData *w, int p, int reports, MeReal predicted, MeReal after)
+{
+    const MdtPartitionLists *out = &w->partitions;
+    int start = out->partitionStart[p], end = out->partitionStart[p + 1];
+    for (int i = start; (reports & REPORT_SPEED) && i < end; i++) {
+        MdtBodyData *b = out->bodies[i];
+        if (b->speedWarned || !overSpeedLimit(w, b))
+            continue;
+        MeReal v2 = MeVector3MagnitudeSqr(b->vel), w2 = MeVector3MagnitudeSqr(b->velrot);
         w->speedWarnings++;
         ME_REPORT_IN("MdtWorldStep", ME_ERR_SPEED_LIMIT,
                      "body %p moves at %g m/s and spins at %g rad/s, over the world's limits (%g m/s, %g rad/s: "
@@ -80,26 +120,9 @@ static void checkSpeed(MdtWorldData *w, MdtBodyData *b)
                      "it is back under both",
                      (void *)b->id, (double)MeSqrt(v2), (double)MeSqrt(w2), (double)w->speedLimit,
                      (double)w->angularSpeedLimit);
+        b->speedWarned = METRUE;
     }
-    b->speedWarned = over;
-}
-
-void MdtRunawayCheckPartition(MdtWorldData *w, int p, MeReal predicted, MeReal after)
-{
-    const MdtPartitionLists *out = &w->partitions;
-    int start = out->partitionStart[p], end = out->partitionStart[p + 1];
-    MeReal mass = 0;
-    MeBool warned = MEFALSE;
-    for (int i = start; i < end; i++) {
-        MdtBodyData *b = out->bodies[i];
-        checkSpeed(w, b);
-        mass += b->mass;
-        warned |= b->energyWarned;
-    }
-    MeReal v = w->maxCorrectingVelocity;
-    MeReal floor = ME_IS_FINITE(v) ? ME_R(0.5) * mass * v * v : MEINFINITY;
-    MeBool jump = after > ENERGY_JUMP_FACTOR * predicted + floor;
-    if (jump && !warned) {
+    if (reports & REPORT_ENERGY) {
         w->energyWarnings++;
         ME_REPORT_IN("MdtWorldStep", ME_ERR_ENERGY_JUMP,
                      "partition %d (%d bodies, first %p): kinetic energy %g J after the constraints, from %g J with "
@@ -107,6 +130,4 @@ void MdtRunawayCheckPartition(MdtWorldData *w, int p, MeReal predicted, MeReal a
                      "meet?); reported once until it calms",
                      p, end - start, (void *)out->bodies[start]->id, (double)after, (double)predicted);
     }
-    for (int i = start; i < end; i++)
-        out->bodies[i]->energyWarned = jump;
 }

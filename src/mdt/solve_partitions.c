@@ -19,7 +19,7 @@
  * bit for bit, for any worker count. Statistics and messages are gathered afterwards, on the stepping
  * thread, in partition order, as the serial loop gave them. A partition the task system did not solve
  * (a range left out, a worker index out of range) is solved then on the stepping thread, and reported
- * (ME_ERR_TASK_WORKER). */
+ * (ME_ERR_TASK_WORKER, task_system.c). */
 #include <string.h>
 
 #include "../me/check.h"
@@ -36,7 +36,6 @@ static MeBool allFinite(const MeReal *v, size_t n)
 /* One partition's outcome, written by whichever worker solved it. */
 typedef struct PartitionResult {
     KeaStats stats;
-    int solved;
 } PartitionResult;
 
 /* What the solve task shares: read-only during the task but for the partitions' own slices. */
@@ -93,25 +92,17 @@ static void solvePartition(MdtWorldData *w, const KeaParameters *kea, int p, voi
         memset(r->x + row0, 0, sizeof(MeReal) * (size_t)rows);
         memset(r->dv + body0, 0, sizeof(KeaBodyVelocity) * (size_t)bodies);
     }
-    res->solved = 1;
 }
 
-/* The task: partitions [start, end) on worker `worker`'s workspace. A worker index out of range
- * leaves its partitions unsolved; the stepping thread solves them afterwards. */
+/* The task: partitions [start, end) on worker `worker`'s workspace (MdtRunStepTask checks the
+ * range and the worker index). */
 static void solveTask(int start, int end, int worker, void *data)
 {
     SolveTask *t = data;
-    if (worker < 0 || worker >= t->workers)
-        return;
-    const MdtPartitionLists *out = &t->w->partitions;
     const MdtStepRows *r = &t->w->rows;
-    if (start < 0)
-        start = 0;
-    if (end > out->partitionCount)
-        end = out->partitionCount;
     void *workspace = t->workspaces + (size_t)worker * t->need;
     for (int p = start; p < end; p++)
-        if (r->partitionRowStart[p + 1] > r->partitionRowStart[p] && !t->results[p].solved)
+        if (r->partitionRowStart[p + 1] > r->partitionRowStart[p])
             solvePartition(t->w, t->kea, p, workspace, t->need, &t->results[p]);
 }
 
@@ -194,22 +185,10 @@ void MdtSolveStage(MdtWorldData *w)
         kea.effortRestSpeed += MeVector3Magnitude(w->gravity) * w->stepSize;
     task.kea = &kea;
 
-    MdtWorldRunTask(w, solveTask, out->partitionCount, 1, &task);
+    MdtRunStepTask(w, solveTask, out->partitionCount, 1, &task);
 
-    int missed = 0;
-    for (int p = 0; p < out->partitionCount; p++) {
-        if (r->partitionRowStart[p + 1] == r->partitionRowStart[p])
-            continue;
-        if (!task.results[p].solved) {
-            missed++;
-            solvePartition(w, &kea, p, task.workspaces, task.need, &task.results[p]);
-        }
-        gatherPartition(w, p, &task.results[p].stats);
-    }
-    if (missed)
-        ME_REPORT_IN("MdtWorldStep", ME_ERR_TASK_WORKER,
-                     "the task system did not solve %d of %d partitions (a range left out, or a worker index "
-                     "outside [0, %d)); they were solved on the stepping thread",
-                     missed, out->partitionCount, task.workers);
+    for (int p = 0; p < out->partitionCount; p++)
+        if (r->partitionRowStart[p + 1] > r->partitionRowStart[p])
+            gatherPartition(w, p, &task.results[p].stats);
     MeChunkPutMem(&w->keaChunk, mem);
 }

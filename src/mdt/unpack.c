@@ -5,7 +5,8 @@
  * Jacobian halves weighted by the row impulses, divided by the step (world frame; torque about the
  * body's centre of mass). The impulses are kept as the next step's warm start, and the type may
  * derive its own outputs (a contact's normal force, a limit's force) through its unpack hook. A
- * partition that failed the simulation check gets zero impulses: no NaN is kept for the next step. */
+ * partition that failed the simulation check gets zero impulses: no NaN is kept for the next step.
+ * On several cores the constraints are unpacked as one task over the step's constraints. */
 #include <string.h>
 
 #include "constraint.h"
@@ -28,18 +29,16 @@ static void clearAccumulators(MdtWorldData *w)
     }
 }
 
-void MdtUnpackStage(MdtWorldData *w)
+/* Constraints [start, end) of the step: forces, torques, warm starts, the type's own outputs. Each
+ * writes only its own constraint (and a group its own contacts), so ranges may run at once. */
+static void unpackTask(int start, int end, int worker, void *data)
 {
+    (void)worker;
+    const MdtWorldData *w = data;
     const MdtPartitionLists *out = &w->partitions;
     const MdtStepRows *r = &w->rows;
     const MeReal invH = 1 / w->stepSize;
-    if (w->rowsPacked) {
-        for (int p = 0; p < out->partitionCount; p++)
-            if (out->simError[p])
-                memset(r->x + r->partitionRowStart[p], 0,
-                       sizeof(MeReal) * (size_t)(r->partitionRowStart[p + 1] - r->partitionRowStart[p]));
-    }
-    for (int i = 0; w->rowsPacked && i < out->constraintCount; i++) {
+    for (int i = start; i < end; i++) {
         MdtConstraintData *c = out->constraints[i];
         MeVector3 f0 = {0, 0, 0}, t0 = {0, 0, 0}, f1 = {0, 0, 0}, t1 = {0, 0, 0};
         for (int k = 0; k < c->rowCount; k++) {
@@ -63,6 +62,22 @@ void MdtUnpackStage(MdtWorldData *w)
         }
         if (c->cls->unpack)
             c->cls->unpack(c, r->x + c->rowStart, c->rowCount, w->stepSize);
+    }
+}
+
+/* Constraints per range of the unpack task. */
+#define UNPACK_MIN_RANGE 32
+
+void MdtUnpackStage(MdtWorldData *w)
+{
+    const MdtPartitionLists *out = &w->partitions;
+    const MdtStepRows *r = &w->rows;
+    if (w->rowsPacked) {
+        for (int p = 0; p < out->partitionCount; p++)
+            if (out->simError[p])
+                memset(r->x + r->partitionRowStart[p], 0,
+                       sizeof(MeReal) * (size_t)(r->partitionRowStart[p + 1] - r->partitionRowStart[p]));
+        MdtRunStepTask(w, unpackTask, out->constraintCount, UNPACK_MIN_RANGE, w);
     }
     clearAccumulators(w);
     if (w->debugOptions)

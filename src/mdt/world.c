@@ -101,6 +101,7 @@ MdtWorldID MdtWorldCreate(unsigned int maxBodies, unsigned int maxConstraints, M
     MeChunkInitNamed(&w->keaChunk, "Kea workspace");
     MeChunkInitNamed(&w->rowChunk, "constraint rows");
     MeChunkInitNamed(&w->lodChunk, "matrix capping");
+    MeChunkInitNamed(&w->taskChunk, "task marks");
     MeProfileInit(&w->profile);
     w->workerCount = 1; /* no task system: the step runs on the calling thread */
     MdtWorldSetDefaults(w);
@@ -119,6 +120,7 @@ void MdtWorldDestroy(MdtWorldID id)
     MeChunkTerm(&w->keaChunk);
     MeChunkTerm(&w->rowChunk);
     MeChunkTerm(&w->lodChunk);
+    MeChunkTerm(&w->taskChunk);
     MePoolDestroy(&w->bodyPool);
     MePoolDestroy(&w->constraintPool);
     MeMemoryDestroy(w);

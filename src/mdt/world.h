@@ -47,6 +47,8 @@ typedef struct MdtPartitionLists {
     int *droppedRows;        /* per partition: rows removed by matrix capping */
     int *simError;           /* per partition: 0, or the MdtSimErrorKind that failed it */
     int *solverStatus;       /* per partition: the KeaStatus of its solve */
+    int *runawayReports;     /* per partition: what the integrator's runaway check left to report */
+    MeReal *energies;        /* per partition: kinetic energy predicted and after integration (2 each) */
     MdtBodyID *ids;          /* scratch for the sim-error callback's body list (maxBodies) */
 } MdtPartitionLists;
 
@@ -73,6 +75,8 @@ typedef struct MdtStepRows {
     int *partitionRowStart;  /* partitionCount + 1 offsets */
     KeaContact *contacts;    /* declared contacts (MdtRowWriterDeclareContact), partition after partition */
     int *partitionContactStart; /* partitionCount + 1 offsets into contacts */
+    int *packRowRoom, *packContactRoom; /* per partition: where pack wrote its rows and contacts */
+    int *packRows, *packContacts;       /* per partition: how many it wrote */
     KeaBody *bodies;         /* per step body (partition order) */
     KeaBodyVelocity *dv;     /* per step body: velocity change from the constraints */
     size_t workspaceBytes;   /* Kea workspace for the largest partition */
@@ -143,6 +147,7 @@ typedef struct MdtWorldData {
     MeChunk partitionChunk;  /* body and constraint lists, partition offsets */
     MeChunk rowChunk;        /* the step's solver rows */
     MeChunk keaChunk;        /* solver workspace */
+    MeChunk taskChunk;       /* marks of the items a task system ran (task_system.c) */
     KeaParameters kea;       /* solver settings (path, iterations, tolerance...) */
     /* the application's task system (MdtTaskSystem.h, task_system.c); workerCount 1 and no
        callbacks: the step runs on the calling thread */
@@ -165,8 +170,9 @@ void MdtWorldHintIfNothingMoves(MdtWorldData *w, const char *function);
 void MdtWorldSetDefaults(MdtWorldData *w);
 
 /* Run `task` over [0, itemCount) on the world's task system (task_system.c): on the calling thread
- * as worker 0 without one (or for a single range), else enqueued and finished before returning. */
-void MdtWorldRunTask(MdtWorldData *w, MdtTaskFnPtr task, int itemCount, int minRange, void *taskData);
+ * as worker 0 without one (or for a single range), else enqueued and finished before returning; items
+ * the task system left out are run afterwards on the calling thread (reported, ME_ERR_TASK_WORKER). */
+void MdtRunStepTask(MdtWorldData *w, MdtTaskFnPtr task, int itemCount, int minRange, void *taskData);
 
 /* The stages of the step (docs/step.md, MdtMainLoop.h); step.c wraps each in its public function. */
 void MdtPartitionStage(MdtWorldData *w);
@@ -198,9 +204,13 @@ MeBool MdtBodyRestWindowMeans(const MdtBodyData *b, MeReal h, MeVector3 vel, MeV
                               MeVector3 accelrot);
 /* Kinetic energy of a body for velocities v, w (world frame), with its inertia in use (runaway.c). */
 MeReal MdtBodyKineticEnergy(const MdtBodyData *b, const MeVector3 v, const MeVector3 w);
-/* After integrating partition p: report its bodies over the speed limits and an energy jump from
- * `predicted` (kinetic energy with the applied forces, before constraints) to `after` (runaway.c). */
-void MdtRunawayCheckPartition(MdtWorldData *w, int p, MeReal predicted, MeReal after);
+/* After integrating partition p, on any worker: judge its bodies against the speed limits and its
+ * energy from `predicted` (kinetic energy with the applied forces, before constraints) to `after`,
+ * updating the bodies' warning flags; returns what MdtRunawayReportPartition must report (runaway.c). */
+int MdtRunawayJudgePartition(MdtWorldData *w, int p, MeReal predicted, MeReal after);
+/* On the stepping thread, in partition order: the reports MdtRunawayJudgePartition returned for p
+ * (messages and the world's warning counters). */
+void MdtRunawayReportPartition(MdtWorldData *w, int p, int reports, MeReal predicted, MeReal after);
 /* Whether partition p's kinetic energy after integration (velocities v* + Δv from `deltaVelocities`,
  * 6 per body, or NULL for none) is certainly at most the energy check's floor, so that the check
  * finds no jump whatever the energy before: the integration then need not sum the energies

@@ -120,6 +120,7 @@ void MstBridgeDestroy(MstBridgeID id)
     MstBridgeData *b = MstBridgeFromID(id, __func__);
     if (!b)
         return;
+    MstBridgeFreeParallel(b);
     MeHandleUnregisterOwner(b->ownerSlot);
     McdModelPairContainerDestroy(b->pairs);
     MeMemoryDestroy(b->contacts);
@@ -145,6 +146,8 @@ void MstBridgeSetModelPairBufferSize(MstBridgeID id, int size)
     McdModelPairContainerDestroy(b->pairs);
     b->pairs = c;
     b->pairBufferSize = size;
+    if (b->tested)
+        MstBridgeReserveParallel(b); /* the parallel pair tests' records follow, now */
 }
 
 int MstBridgeGetModelPairBufferSize(MstBridgeID id)
@@ -170,6 +173,8 @@ void MstBridgeSetContactBufferSize(MstBridgeID id, int size)
     MeMemoryDestroy(b->contacts);
     b->contacts = c;
     b->contactBufferSize = size;
+    if (b->tested)
+        MstBridgeReserveParallel(b); /* the parallel pair tests' records follow, now */
 }
 
 int MstBridgeGetContactBufferSize(MstBridgeID id)
@@ -285,27 +290,24 @@ static int matchContacts(MstBridgeData *b, MdtContactGroupID g, const McdContact
     return n;
 }
 
-/* Test one pair and convert its contacts; returns the number of dynamics contacts made. */
-static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
+/* Convert one tested pair's contacts (`tested`: what McdIntersectForResponse returned for it) into
+ * its contact group; returns the number of dynamics contacts made. On the thread that steps. */
+static int convertPair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world, MeBool tested,
+                       const McdModelPairModelInfo *models, McdIntersectResult *result)
 {
-    McdModelPairModelInfo models;
-    McdIntersectResult result;
-    memset(&result, 0, sizeof result);
-    result.contacts = b->contacts;
-    result.contactMaxCount = b->contactBufferSize;
-    if (!McdIntersectForResponse(pair, &models, &result)) { /* not tested: */
-        if (models.frozen[0] && models.frozen[1])
+    if (!tested) { /* not tested: */
+        if (models->frozen[0] && models->frozen[1])
             return MdtContactGroupGetCount((MdtContactGroupID)pair->userData); /* kept as they were */
         return 0; /* two pieces of the world, or a bad model (reported) */
     }
-    MdtBodyID b1 = (MdtBodyID)models.bodyData[0], b2 = (MdtBodyID)models.bodyData[1];
-    MstMaterialPairData *mat = MstBridgeMaterialPair(b, models.material[0], models.material[1], "MstHandleCollisions");
+    MdtBodyID b1 = (MdtBodyID)models->bodyData[0], b2 = (MdtBodyID)models->bodyData[1];
+    MstMaterialPairData *mat = MstBridgeMaterialPair(b, models->material[0], models->material[1], "MstHandleCollisions");
     if (!mat)
         return 0;
-    if (result.contactCount > 0 && mat->intersectCB)
-        mat->intersectCB(&result);
+    if (result->contactCount > 0 && mat->intersectCB)
+        mat->intersectCB(result);
     MdtContactGroupID g = (MdtContactGroupID)pair->userData;
-    if (result.contactCount <= 0) {
+    if (result->contactCount <= 0) {
         if (g)
             emptyGroup(g);
         return 0;
@@ -324,31 +326,43 @@ static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
         pair->userData = g;
     }
     /* An intersect callback may have set a count beyond the buffer it was given. */
-    int n = result.contactCount < b->contactBufferSize ? result.contactCount : b->contactBufferSize;
-    n = matchContacts(b, g, result.contacts, n);
+    int n = result->contactCount < b->contactBufferSize ? result->contactCount : b->contactBufferSize;
+    n = matchContacts(b, g, result->contacts, n);
     MdtContactID *dyn = b->newContacts;
     int kept = 0;
     for (int i = 0; i < n; i++) {
-        const McdContact *c = &result.contacts[i];
+        const McdContact *c = &result->contacts[i];
         if (swapped) {
             const MeVector3 normal = {-c->normal[0], -c->normal[1], -c->normal[2]};
             MdtContactSetFromCollision(dyn[i], &mat->params, c->position, normal, -c->separation);
         } else {
             MdtContactSetFromCollision(dyn[i], &mat->params, c->position, c->normal, -c->separation);
         }
-        if (mat->perContactCB && !mat->perContactCB(&result, &result.contacts[i], dyn[i]))
+        if (mat->perContactCB && !mat->perContactCB(result, &result->contacts[i], dyn[i]))
             MdtContactGroupDestroyContact(g, dyn[i]);
         else
             kept++;
     }
     /* A per-pair callback returning 0 removes the pair's contacts (Karma's MstPerPairCBPtr), not the
      * group, which lives until Goodbye. */
-    if (kept == 0 || (mat->perPairCB && !mat->perPairCB(&result, g))) {
+    if (kept == 0 || (mat->perPairCB && !mat->perPairCB(result, g))) {
         emptyGroup(g);
         return 0;
     }
     MdtConstraintEnable(MdtContactGroupQuaConstraint(g));
     return kept;
+}
+
+/* Test one pair and convert its contacts; returns the number of dynamics contacts made. */
+static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
+{
+    McdModelPairModelInfo models;
+    McdIntersectResult result;
+    memset(&result, 0, sizeof result);
+    result.contacts = b->contacts;
+    result.contactMaxCount = b->contactBufferSize;
+    MeBool tested = McdIntersectForResponse(pair, &models, &result);
+    return convertPair(b, pair, world, tested, &models, &result);
 }
 
 void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorldID world, MstBridgeID id)
@@ -365,16 +379,25 @@ void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorl
     const char *caller = MdtWorldGetCallerName(world);
     if (!caller)
         MdtWorldSetCallerName(world, __func__);
-    int n;
+    int n, ns;
     McdModelPairID *hello = McdModelPairContainerGetHelloArray(pairs, &n);
-    for (int i = 0; i < n; i++) {
-        b->lastContactCount += collidePair(b, hello[i], world);
-        b->lastPairCount++;
-    }
-    McdModelPairID *staying = McdModelPairContainerGetStayingArray(pairs, &n);
-    for (int i = 0; i < n; i++) {
-        b->lastContactCount += collidePair(b, staying[i], world);
-        b->lastPairCount++;
+    McdModelPairID *staying = McdModelPairContainerGetStayingArray(pairs, &ns);
+    if (MstBridgeCollideInParallel(b, world, hello, n, staying, ns)) {
+        for (int i = 0; i < n + ns; i++) {
+            MstTestedPair *t = &b->tested[i];
+            b->lastContactCount += convertPair(b, i < n ? hello[i] : staying[i - n], world, t->tested, &t->info,
+                                               &t->result);
+        }
+        b->lastPairCount += n + ns;
+    } else {
+        for (int i = 0; i < n; i++) {
+            b->lastContactCount += collidePair(b, hello[i], world);
+            b->lastPairCount++;
+        }
+        for (int i = 0; i < ns; i++) {
+            b->lastContactCount += collidePair(b, staying[i], world);
+            b->lastPairCount++;
+        }
     }
     if (!caller)
         MdtWorldSetCallerName(world, NULL);

@@ -4,6 +4,7 @@
 
 #include <stdint.h>
 
+#include <karma/McdModelPair.h>
 #include <karma/MstBridge.h>
 
 /** One entry of the symmetric material table. */
@@ -13,6 +14,14 @@ typedef struct MstMaterialPairData {
     MstPerContactCBPtr perContactCB;
     MstPerPairCBPtr perPairCB;
 } MstMaterialPairData;
+
+/** One pair tested by a worker (parallel_pairs.c): McdIntersectForResponse's answer, the models'
+ *  information and the result, whose contacts are the pair's own slice of the bridge's scratch. */
+typedef struct MstTestedPair {
+    MeBool tested;
+    McdModelPairModelInfo info;
+    McdIntersectResult result;
+} MstTestedPair;
 
 typedef struct MstBridgeData {
     int ownerSlot;
@@ -32,6 +41,12 @@ typedef struct MstBridgeData {
     MeBool *oldUsed;
     int matchCapacity;
     int lastPairCount, lastContactCount;
+    /* The pair tests on several workers (parallel_pairs.c): one record per pair of a chunk and
+     * contactBufferSize contacts each; made when the universe gets a task system (else at the first
+     * threaded update), remade when a buffer size changes. */
+    MstTestedPair *tested;
+    McdContact *testedContacts;
+    int testedPairs, testedContactsPerPair;
     const char *materialsSizeName;     /* what sets maxMaterials, for "pool full" messages */
 } MstBridgeData;
 
@@ -42,5 +57,16 @@ MstMaterialPairData *MstBridgeMaterialPair(MstBridgeData *b, MstMaterialID m1, M
 /** Read the space's pairs chunk by chunk (ending and reopening its change block) and hand each
  *  chunk to MstHandleTransitions and, when `collisions`, to MstHandleCollisions. */
 void MstBridgeReadPairs(MstBridgeData *b, McdSpaceID space, MdtWorldID world, MeBool collisions);
+
+/** Test the chunk's pairs (hellos, then stayings) on `world`'s task system, each into its own record
+ *  b->tested[i]; MEFALSE (nothing tested) when the world has one worker, the chunk is a single pair or
+ *  there is no memory for the records: then the caller tests them itself. */
+MeBool MstBridgeCollideInParallel(MstBridgeData *b, MdtWorldID world, McdModelPairID *hello, int helloCount,
+                                  McdModelPairID *staying, int stayingCount);
+/** Make (or remake, for new buffer sizes) the records of the parallel pair tests: one per pair of the
+ *  pair buffer, with the contact buffer's room each. MEFALSE, reported by MeMemory, without memory. */
+MeBool MstBridgeReserveParallel(MstBridgeData *b);
+/** Free the records of the parallel pair tests. */
+void MstBridgeFreeParallel(MstBridgeData *b);
 
 #endif /* MST_BRIDGE_INTERNAL_H */

@@ -205,6 +205,8 @@ MstUniverseID MstUniverseCreate(const MstUniverseSizes *sizes)
     MeProfileInit(&u->profile);
     MstSetWorldHandlers(u->world);
     nameSizes(u);
+    if (MdtWorldGetWorkerCount(u->world) > 1) /* a world that steps on a task system from its creation */
+        MstBridgeReserveParallel(MstBridgeFromID(u->bridge, __func__));
     /* The entry is this thread's from the claim on; the ID is handed out only after this. */
     universes[index] = (MstUniverse){.sizes = u->sizes, .world = u->world, .frame = u->framework,
                                      .space = u->space, .bridge = u->bridge};
@@ -336,6 +338,9 @@ void MstUniverseSetTaskSystem(MstUniverseID id, int workerCount, MdtEnqueueTaskC
         return;
     }
     MdtWorldSetTaskSystem(u->world, workerCount, enqueue, finish, user);
+    /* The bridge's records for pair tests on the workers, now rather than in a step. */
+    if (MdtWorldGetWorkerCount(u->world) > 1)
+        MstBridgeReserveParallel(MstBridgeFromID(u->bridge, __func__));
 }
 
 /* ---- mass properties from geometry ---------------------------------------------------------- */

@@ -18,8 +18,9 @@ foreach(level O0 O2)
   target_link_libraries(${lib} PUBLIC m)
 
   # One program per scene file: determinism_scene.c (bodies), determinism_joints.c (constraints),
-  # determinism_iterative.c (a pile and a pyramid forced onto the iterative solver).
-  foreach(scene scene joints iterative)
+  # determinism_iterative.c (a pile and a pyramid forced onto the iterative solver), determinism_islands.c
+  # (many islands of every kind, for the threaded stages).
+  foreach(scene scene joints iterative islands)
     set(exe test_determinism_${scene}_${level})
     if(scene STREQUAL "scene")
       set(exe test_determinism_${level})
@@ -51,7 +52,7 @@ endforeach()
 # programs link their own build of the core (karma_threads links karma::karma).
 find_package(Threads REQUIRED)
 foreach(threads 2 4)
-  foreach(scene joints iterative topple) # determinism_scene has no constraint: nothing to split
+  foreach(scene joints iterative topple islands) # determinism_scene: four bodies, nothing to split
     set(exe test_determinism_${scene}_threads${threads})
     set(sources ${CMAKE_CURRENT_SOURCE_DIR}/determinism/determinism_${scene}.c
                 ${CMAKE_CURRENT_SOURCE_DIR}/determinism/threaded_worlds.c
@@ -64,6 +65,11 @@ foreach(threads 2 4)
                                ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR}/demos
                                ${PROJECT_SOURCE_DIR}/threads/include)
     target_compile_definitions(${exe} PRIVATE KARMA_TEST_THREADS=${threads})
+    if(scene STREQUAL "islands")
+      # six stages split every step (prediction, rows, solves, integration, unpack, the bridge's pair
+      # tests), 240 steps, two runs of two scenes
+      target_compile_definitions(${exe} PRIVATE KARMA_TEST_MIN_SPLITS=5760)
+    endif()
     if(KARMA_DOUBLE)
       set(create MdtWorldCreate_d)
     else()

@@ -244,6 +244,66 @@ static void the_threaded_step_allocates_nothing_after_the_worker_count_is_set(vo
     MstUniverseDestroy(u);
 }
 
+/* MdtWorldRunTask, the application's way onto the world's task system: every item runs exactly
+ * once whatever the job system does with the ranges; what it leaves out runs on the caller, reported;
+ * a NULL task and a bad world are refused and nothing runs. */
+typedef struct Counts {
+    int ran[100];
+    int workerOutOfRange;
+} Counts;
+
+static void countItems(int start, int end, int worker, void *data)
+{
+    Counts *c = data;
+    if (worker < 0 || worker >= 3)
+        c->workerOutOfRange++;
+    for (int i = start; i < end; i++)
+        c->ran[i]++;
+}
+
+static void application_tasks_run_every_item_once(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    MdtWorldID w = MdtWorldCreate(100, 100, ME_R(1.0), ME_R(1.0));
+    assert_non_null(w);
+    Counts c;
+    /* without a task system: on the caller, in one range */
+    memset(&c, 0, sizeof c);
+    MdtWorldRunTask(w, countItems, 100, 7, &c);
+    for (int i = 0; i < 100; i++)
+        assert_int_equal(c.ran[i], 1);
+
+    const int modes[] = {REVERSE, DEFERRED_SHUFFLED, WORKER_OUT_OF_RANGE, HALF_LEFT_OUT};
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+        Jobs jobs;
+        memset(&jobs, 0, sizeof jobs);
+        jobs.workers = 3;
+        jobs.mode = modes[m];
+        MdtWorldSetTaskSystem(w, 3, enqueue, finish, &jobs);
+        memset(&c, 0, sizeof c);
+        unsigned long before = MeMessageGetCount(ME_ERR_TASK_WORKER);
+        MdtWorldRunTask(w, countItems, 100, 7, &c);
+        assert_int_equal(jobs.enqueued, 1);
+        assert_int_equal(jobs.minRange, 7);
+        for (int i = 0; i < 100; i++)
+            assert_int_equal(c.ran[i], 1);
+        assert_int_equal(c.workerOutOfRange, 0); /* a range with a bad index is not run, but redone */
+        const MeBool broken = modes[m] == WORKER_OUT_OF_RANGE || modes[m] == HALF_LEFT_OUT;
+        assert_int_equal(MeMessageGetCount(ME_ERR_TASK_WORKER) - before, broken ? 1 : 0);
+    }
+    /* refused, nothing runs */
+    memset(&c, 0, sizeof c);
+    assert_reports(ME_ERR_TASK_CALLBACK, MdtWorldRunTask(w, NULL, 100, 7, &c));
+    MdtWorldRunTask(w, countItems, 0, 7, &c); /* no items: no call */
+    MdtWorldDestroy(w);
+    unsigned long warnings = karma_warning_count();
+    MdtWorldRunTask(w, countItems, 100, 7, &c); /* a destroyed world */
+    assert_int_equal(karma_warning_count() - warnings, 1);
+    for (int i = 0; i < 100; i++)
+        assert_int_equal(c.ran[i], 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -251,6 +311,7 @@ int main(void)
         cmocka_unit_test(work_left_undone_is_done_on_the_stepping_thread_and_reported),
         cmocka_unit_test(bad_task_systems_are_refused_and_change_nothing),
         cmocka_unit_test(the_threaded_step_allocates_nothing_after_the_worker_count_is_set),
+        cmocka_unit_test(application_tasks_run_every_item_once),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

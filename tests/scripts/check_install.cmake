@@ -6,7 +6,8 @@
 #
 # 1. cmake --install puts headers, libkarma.a/.so, the CMake package and karma.pc under the prefix;
 # 2. a separate CMake project finds the package and builds hello.c against karma::karma (static) and
-#    karma::karma_shared; both programs run and print the expected fall;
+#    karma::karma_shared; both programs run and print the expected fall; hello_threads links
+#    karma::threads (the installed pool, found with its Threads dependency) and steps on two threads;
 # 3. with pkg-config: `precision` matches the build, and hello.c builds from `--cflags --libs`
 #    (shared) and from `--static --libs` with libkarma.a, and both run.
 cmake_minimum_required(VERSION 3.20)
@@ -38,7 +39,7 @@ endfunction()
 
 # ---- 1. install ----------------------------------------------------------------------------
 run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD} --prefix ${prefix})
-foreach(f include/karma/karma.h include/karma/config.h include/karma/MdtWorld.h)
+foreach(f include/karma/karma.h include/karma/config.h include/karma/MdtWorld.h include/karma/MeThreadPool.h)
   if(NOT EXISTS ${prefix}/${f})
     message(FATAL_ERROR "not installed: ${f}")
   endif()
@@ -62,6 +63,10 @@ endif()
 run("building the outside project" ${CMAKE_COMMAND} --build ${WORK}/outside)
 run_hello(${WORK}/outside/hello_static)
 run_hello(${WORK}/outside/hello_shared)
+run("running hello_threads" ${WORK}/outside/hello_threads)
+if(NOT last_output MATCHES "threads: [0-9.]+ m on one thread, [0-9.]+ m on 2: bit-identical")
+  message(FATAL_ERROR "hello_threads printed:\n${last_output}")
+endif()
 
 # ---- 3. pkg-config ------------------------------------------------------------------------
 if(NOT PKG_CONFIG)

@@ -2,7 +2,8 @@
  * many partitions (stacks falling and sliding, jointed chains swinging) stepped on pools of 2, 3 and
  * 4 threads ends in exactly the serial step's state, every step; two universes stepped at the same
  * time on two threads, each on a pool of its own or both on one, too. Run under ThreadSanitizer by the `tsan`
- * configuration of tests/run_configs.sh: the proof that the partitions' solves share no data. */
+ * configuration of tests/run_configs.sh: the proof that the threaded stages (prediction, rows, solves,
+ * integration, unpack, the bridge's pair tests) share no data. */
 #include "karma_test.h"
 #include "karma_partitions.h"
 
@@ -13,7 +14,7 @@
 
 #include <MeThreadPool.h>
 
-#define STACKS 8
+#define STACKS 16 /* 48 boxes and 24 links: more bodies than one range of the prediction task */
 #define STACK_BOXES 3
 #define CHAINS 4
 #define CHAIN_LINKS 6
@@ -64,6 +65,37 @@ static void pools_of_any_size_give_the_serial_state(void **state)
     for (int threads = 2; threads <= 4; threads++)
         assert_true(runScene(threads) == serial);
     assert_int_equal(karma_warning_count(), 0);
+}
+
+/* Allocations (MeMemoryGetStats) made by STEPS steps of the scene, on a pool of `threads` attached to
+ * the universe before the first step (1: serial). */
+static unsigned long stepAllocations(int threads)
+{
+    MeThreadPool *pool = threads > 1 ? MeThreadPoolCreate(threads) : NULL;
+    MstUniverseID u = buildScene();
+    assert_non_null(u);
+    if (pool)
+        MeThreadPoolAttachUniverse(pool, u);
+    MeMemoryStats before, after;
+    MeMemoryGetStats(&before);
+    for (int i = 0; i < STEPS; i++)
+        MstUniverseStep(u, ME_R(1.0) / 60);
+    MeMemoryGetStats(&after);
+    MstUniverseDestroy(u);
+    MeThreadPoolDestroy(pool);
+    return after.allocations - before.allocations;
+}
+
+/* The threaded step's memory is made when the task system is set (the marks of the items, the
+ * solver's workspaces for the workers it has seen, the bridge's records of the pair tests): the steps
+ * then allocate exactly what the serial steps do (the chunks' growth to the scene's size). */
+static void a_threaded_step_allocates_what_the_serial_step_does(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    unsigned long serial = stepAllocations(1);
+    for (int threads = 2; threads <= 4; threads++)
+        assert_int_equal(stepAllocations(threads), serial);
 }
 
 typedef struct Run {
@@ -145,6 +177,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(pools_of_any_size_give_the_serial_state),
+        cmocka_unit_test(a_threaded_step_allocates_what_the_serial_step_does),
         cmocka_unit_test(two_universes_on_two_threads_each_with_a_pool),
         cmocka_unit_test(two_universes_on_two_threads_sharing_a_pool),
         cmocka_unit_test(bad_pools_are_refused),
