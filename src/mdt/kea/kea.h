@@ -143,6 +143,11 @@ typedef struct KeaParameters {
     MeReal effortRestSpeed; /**< iterative: the extra effort only for a partition at rest, every row's
                                  |rhs| at most this (velocity units); 0 = no limit, the default here
                                  (the world sets KEA_EFFORT_REST_SPEED x its length scale) */
+    MeReal autoPivotsPerRow; /**< Auto: a partition on the direct path that needs more than this many
+                                 pivots per row (plus KEA_AUTO_PIVOTS_EXTRA) is handed to the iterative
+                                 path for this step, warm-started from where the pivots left it;
+                                 0 = never, the default here (the world sets KEA_AUTO_PIVOTS_PER_ROW;
+                                 docs/kea.md, "Worst frames") */
 } KeaParameters;
 
 /** What a solve did. */
@@ -158,6 +163,8 @@ typedef struct KeaStats {
     int subspaceSkipped; /**< iterative: subspace minimisations skipped (the active set still moving,
                               or the last one did not pay) */
     int pivots;         /**< direct: active-set changes (a row freed or fixed at a bound) */
+    int handedOver;     /**< Auto: 1 when the direct path spent its pivot budget (autoPivotsPerRow)
+                             and the iterative path finished the solve (path is then iterative) */
     int frictionPasses; /**< direct: box-QP passes (1 without links) */
     int factorizations; /**< direct: full Cholesky factorisations */
     int regularised;    /**< direct: free-block pivots raised to the floor (A near singular) */

@@ -121,7 +121,7 @@ KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params,
     KeaDirectWork w;
     KeaDenseLcp lcp;
     KeaStatus status;
-    int i;
+    int i, budgeted, maxPivots = params->maxPivots;
 
     KeaDirectLayout(arena, n, problem->nBodies, &w);
     KeaBodyIncidence(problem, w.incidence, w.start);
@@ -149,7 +149,18 @@ KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params,
     lcp.pattern = w.pattern;
     lcp.rows = problem;
     lcp.velocity = dv; /* scratch until the final velocity change below */
-    status = KeaDenseLcpSolve(&lcp, params->maxPivots, params->maxFrictionPasses, w.lcp, x, stats);
+    budgeted = params->path == KeaPathAuto && params->autoPivotsPerRow > ME_R(0.0);
+    if (budgeted) { /* Auto's pivot budget (the worst frames, docs/kea.md): past it, the iterative path */
+        const MeReal budget = params->autoPivotsPerRow * (MeReal)n + (MeReal)KEA_AUTO_PIVOTS_EXTRA;
+        maxPivots = (int)budget;
+        if (params->maxPivots > 0 && params->maxPivots < maxPivots) {
+            maxPivots = params->maxPivots;
+            budgeted = 0; /* the caller's own cap is the tighter one and keeps its meaning */
+        }
+    }
+    status = KeaDenseLcpSolve(&lcp, maxPivots, params->maxFrictionPasses, w.lcp, x, stats);
+    if (budgeted && status == KeaStatusMaxPivots)
+        return KeaStatusOverBudget;
     if (!KeaDenseLcpFinalVelocity(w.lcp, &stats->residual)) { /* else dv and the residual are x's */
         KeaBodyVelocityFromImpulses(problem, x, dv);
         stats->residual = KeaResidualWithDiagonal(problem, x, dv, w.A, (size_t)n + 1);
