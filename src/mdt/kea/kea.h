@@ -103,7 +103,9 @@ typedef struct KeaProblem {
 typedef enum KeaPath {
     KeaPathAuto = 0,      /**< direct when nRows <= maxDirectRows, or nRows <= 4 maxDirectRows and the
                                ordered factor has at most maxDirectRows (maxDirectRows + 1) / 2
-                               entries (kea_direct.c); else iterative */
+                               entries (kea_direct.c); else iterative. With a pivot budget
+                               (autoPivotsPerRow), a direct solve that runs over it is finished by
+                               the iterative path */
     KeaPathDirect = 1,    /**< exact: Cholesky-based active-set (pivoting) method, sparse factor */
     KeaPathIterative = 2  /**< projected Gauss-Seidel (+ subspace minimisation) on the sparse rows */
 } KeaPath;
@@ -175,7 +177,8 @@ typedef struct KeaStats {
 void KeaParametersDefault(KeaParameters *params);
 
 /** The path KeaSolve will use for a partition of nRows rows under params; KeaPathAuto when it
- *  depends on the partition's structure (decided by KeaSolve; size the workspace for either). */
+ *  depends on the partition's structure or on its pivots (decided by KeaSolve; size the workspace
+ *  for either). */
 KeaPath KeaSelectPath(int nRows, const KeaParameters *params);
 
 /** Bytes of workspace KeaSolve needs for nRows rows and nBodies bodies on the given path

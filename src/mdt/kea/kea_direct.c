@@ -17,7 +17,9 @@
  * Auto's choice above maxDirectRows rows (mayDecline): after ordering, the factor's envelope is
  * counted; if it exceeds maxDirectRows (maxDirectRows + 1) / 2 entries, a dense factor of
  * maxDirectRows rows, the path declines (KeaStatusDeclined) before forming A and the iterative
- * path solves the partition instead. */
+ * path solves the partition instead. Auto's pivot budget (KeaParameters.autoPivotsPerRow): a solve
+ * that needs more pivots stops there (KeaStatusOverBudget) and the iterative path finishes it from
+ * the feasible iterate it left (docs/kea.md, "Worst frames"). */
 #include <string.h>
 
 #include "kea_internal.h"
