@@ -257,9 +257,7 @@ static void column_of_twenty_stands_on(MdtLCPSolver solver)
         double d = sqrt((top[0] - top0[0]) * (top[0] - top0[0]) + (top[1] - top0[1]) * (top[1] - top0[1]) +
                         (top[2] - top0[2]) * (top[2] - top0[2]));
         worst = fmax(worst, d);
-        /* the path of a warm-started step: Auto's pivot budget may give the cold first one to the
-         * iterative path (docs/kea.md, "Worst frames") */
-        if (step == 1)
+        if (step == 0)
             MdtWorldGetSolverStats(w, &stats);
     }
     print_message("column of %d: top box moved at most %.4f m in 20 s (%d rows, %s path, %d iterations)\n", N, worst,

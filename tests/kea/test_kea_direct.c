@@ -304,9 +304,10 @@ static void pivot_cap_is_reported(void **state)
     kt_free(&t);
 }
 
-/* Auto's pivot budget (autoPivotsPerRow, docs/kea.md "Worst frames"): a partition whose direct solve
- * needs more pivots than the budget is finished by the iterative path, warm-started where the pivots
- * stopped; without a budget, or on the forced direct path, the solve is exact and the same to the bit. */
+/* Auto's pivot budget (autoPivotsPerRow, docs/kea.md "Worst frames"): a partition of at most
+ * maxDirectRows rows whose direct solve needs more pivots than the budget is finished by the
+ * iterative path, warm-started where the pivots stopped; without a budget, above maxDirectRows or on
+ * the forced direct path, the solve is exact and the same to the bit. */
 static void auto_pivot_budget_hands_over(void **state)
 {
     KeaParameters exact = kt_params(KeaPathDirect), autoPrm = kt_params(KeaPathAuto);
@@ -361,6 +362,14 @@ static void auto_pivot_budget_hands_over(void **state)
                   pivots, (double)budgeted.autoPivotsPerRow * n + 16, stBudget.pivots, stBudget.iterations,
                   (double)stBudget.residual, (double)stCold.residual);
     assert_true(stBudget.residual < stCold.residual);
+
+    /* Above maxDirectRows (a column is a tree: its sparse factor keeps it on the direct path) the
+     * budget does not apply: exact, bit for bit. */
+    budgeted.maxDirectRows = 100;
+    assert_int_equal(kt_solve(&t.p, &budgeted, xAuto, NULL, &st), KeaStatusOk);
+    assert_int_equal(st.path, KeaPathDirect);
+    assert_int_equal(st.handedOver, 0);
+    assert_memory_equal(xAuto, xExact, sizeof(MeReal) * (size_t)n);
 
     /* The forced direct path ignores the budget: exact, bit for bit. */
     forced.autoPivotsPerRow = budgeted.autoPivotsPerRow;

@@ -104,8 +104,8 @@ typedef enum KeaPath {
     KeaPathAuto = 0,      /**< direct when nRows <= maxDirectRows, or nRows <= 4 maxDirectRows and the
                                ordered factor has at most maxDirectRows (maxDirectRows + 1) / 2
                                entries (kea_direct.c); else iterative. With a pivot budget
-                               (autoPivotsPerRow), a direct solve that runs over it is finished by
-                               the iterative path */
+                               (autoPivotsPerRow), a direct solve of at most maxDirectRows rows that
+                               runs over it is finished by the iterative path */
     KeaPathDirect = 1,    /**< exact: Cholesky-based active-set (pivoting) method, sparse factor */
     KeaPathIterative = 2  /**< projected Gauss-Seidel (+ subspace minimisation) on the sparse rows */
 } KeaPath;
@@ -145,9 +145,10 @@ typedef struct KeaParameters {
     MeReal effortRestSpeed; /**< iterative: the extra effort only for a partition at rest, every row's
                                  |rhs| at most this (velocity units); 0 = no limit, the default here
                                  (the world sets KEA_EFFORT_REST_SPEED x its length scale) */
-    MeReal autoPivotsPerRow; /**< Auto: a partition on the direct path that needs more than this many
-                                 pivots per row (plus KEA_AUTO_PIVOTS_EXTRA) is handed to the iterative
-                                 path for this step, warm-started from where the pivots left it;
+    MeReal autoPivotsPerRow; /**< Auto: a partition of at most maxDirectRows rows whose direct solve
+                                 needs more than this many pivots per row (plus KEA_AUTO_PIVOTS_EXTRA)
+                                 is handed to the iterative path for this step, warm-started from
+                                 where the pivots left it (larger, tree-like ones stay exact);
                                  0 = never, the default here (the world sets KEA_AUTO_PIVOTS_PER_ROW;
                                  docs/kea.md, "Worst frames") */
 } KeaParameters;
