@@ -77,6 +77,7 @@ typedef struct KarmaWorld {
     MeMatrix4 groundTM;  /* the ground plane's, turned to y-up (it must outlive the model) */
     int steps;
     int profile;         /* KARMA_BENCH_PROFILE set: gather and print the profile */
+    int stepStats;       /* KARMA_BENCH_STEPSTATS set: print the solver statistics of every step */
     /* solver statistics summed over the steps (profile only) */
     double partitions, iterativePartitions, iterations, pivots, rows;
     int maxPartitionRows, maxPairs, unconverged;
@@ -189,6 +190,8 @@ static void *karma_create(const BenchScene *scene, MeBool autoDisable)
     w->scene = scene;
     const char *prof = getenv("KARMA_BENCH_PROFILE");
     w->profile = prof && *prof && strcmp(prof, "0") != 0;
+    const char *stepStats = getenv("KARMA_BENCH_STEPSTATS");
+    w->stepStats = stepStats && *stepStats && strcmp(stepStats, "0") != 0;
     w->bodies = calloc((size_t)scene->bodyCount, sizeof *w->bodies);
     w->fixedTM = calloc((size_t)scene->bodyCount, sizeof *w->fixedTM);
     if (!w->bodies || !w->fixedTM) {
@@ -354,6 +357,13 @@ static int karma_step(void *world, const char **why)
     KarmaWorld *w = world;
     MstUniverseStep(w->universe, (MeReal)w->scene->step);
     w->steps++;
+    if (w->stepStats) { /* KARMA_BENCH_STEPSTATS=1: what the solver did in each step, to stderr */
+        MdtSolverStats s;
+        MdtWorldGetSolverStats(w->world, &s);
+        fprintf(stderr, "    solver step %5d partitions %d direct %d iterative %d rows %d largest %d sweeps %d pivots %d unconverged %d\n",
+                w->steps, s.partitions, s.directPartitions, s.iterativePartitions, s.rows, s.maxPartitionRows,
+                s.iterations, s.pivots, s.unconverged);
+    }
     if (w->profile) {
         MdtSolverStats s;
         MdtWorldGetSolverStats(w->world, &s);

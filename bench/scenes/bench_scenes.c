@@ -295,32 +295,43 @@ BenchScene *BenchSceneHeap(int boxes)
     return s;
 }
 
-BenchScene *BenchSceneChain(int links)
+/* The chain of `links` capsules with its fixed end `height` m above the ground (0: no ground). */
+static BenchScene *chain_scene(const char *prefix, int links, double height)
 {
     if (links < 1)
         return NULL;
-    BenchScene *s = scene_new("chain", links, 100, links, links);
+    BenchScene *s = scene_new(prefix, links, 100, links, links);
     if (!s)
         return NULL;
-    s->hasGround = 0;
+    s->hasGround = height > 0;
     /* Capsules along z, unrotated (a capsule's axis is its local z). Radius 0.1, cylinder 0.8 m:
      * 1 m tip to tip; the ball joints sit at the tips, z = 0, 1, 2 ... The chain swings down in the
      * y-z plane, each link turning about x alone: the engines' arithmetic keeps it in that plane, as
      * it kept the z-up chain (laid along x, links turned about y) in its own. */
     for (int i = 0; i < links; i++) {
-        double p[3] = {0, 0, 0.5 + i};
+        double p[3] = {0, height, 0.5 + i};
         int b = add_body(s, BENCH_CAPSULE, 0.1, 0.4, 0, 1.0, p, kIdentity, 0);
-        double anchor[3] = {0, 0, (double)i};
+        double anchor[3] = {0, height, (double)i};
         add_joint(s, BENCH_BALL, b, i == 0 ? -1 : b - 1, anchor, NULL, 1, 0);
     }
-    snprintf(s->description, sizeof s->description,
-             "chain of %d capsules (1 m, 1 kg) on ball joints, one end fixed, released horizontal, 10 s",
-             links);
+    if (height > 0)
+        snprintf(s->description, sizeof s->description,
+                 "chain of %d capsules (1 m, 1 kg) on ball joints, one end fixed %d m above the ground, released "
+                 "horizontal, lands, 10 s",
+                 links, (int)height);
+    else
+        snprintf(s->description, sizeof s->description,
+                 "chain of %d capsules (1 m, 1 kg) on ball joints, one end fixed, released horizontal, 10 s", links);
     s->quality = BENCH_Q_JOINT_ERROR;
     s->qualityName = "joint_err_m";
     scene_finish(s);
     return s;
 }
+
+BenchScene *BenchSceneChain(int links) { return chain_scene("chain", links, 0); }
+
+/* Issue 17 point 4: the chain with contacts (Kea's exact path with friction passes every step). */
+BenchScene *BenchSceneChainFloor(int links) { return chain_scene("chainfloor", links, 60); }
 
 /* One ragdoll, standing with its feet at y = 0, facing -x, arms out along ±z (T-pose). */
 typedef struct RagdollPart {
@@ -519,6 +530,8 @@ BenchScene *BenchSceneCreate(const char *name)
         return BenchScenePyramid(n);
     if ((n = parse_count(name, "pile", 500)) > 0)
         return BenchScenePile(n, n);
+    if ((n = parse_count(name, "chainfloor", 100)) > 0)
+        return BenchSceneChainFloor(n);
     if ((n = parse_count(name, "chain", 100)) > 0)
         return BenchSceneChain(n);
     if ((n = parse_count(name, "ragdolls", 100)) > 0)

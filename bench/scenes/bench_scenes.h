@@ -121,6 +121,8 @@ BenchScene *BenchScenePile(int spheres, int boxes);
 /** `links` capsules (radius 0.1 m, 1 m tip to tip, 1 kg) on ball joints, laid horizontally along +z,
  *  the first joined to the world at the origin; no ground; 600 steps. */
 BenchScene *BenchSceneChain(int links);
+/** The same chain with its fixed end 60 m above the ground: its free 40 m land and lie on it. */
+BenchScene *BenchSceneChainFloor(int links);
 /** `count` ragdolls of 11 bodies (58 kg) on 5 ball and 5 limited hinge joints, on a 3 m grid, each
  *  tilted and turned differently, dropped from 0.5 m onto the ground; 600 steps. */
 BenchScene *BenchSceneRagdolls(int count);

@@ -6,6 +6,7 @@
 
 #include "../me/check.h"
 #include "kea/kea.h"
+#include "kea/kea_tuning.h"
 
 /* The one processor description: the portable C solver. */
 struct MeCPUResourcesData {
@@ -26,6 +27,7 @@ int MdtKeaMemoryRequired(const int num_rows_exc_padding[], int num_partitions, i
     }
     KeaParameters defaults;
     KeaParametersDefault(&defaults);
+    defaults.autoPivotsPerRow = KEA_AUTO_PIVOTS_PER_ROW; /* the world's: its small partitions may go either way */
     size_t need = 0;
     for (int p = 0; p < num_partitions; p++) {
         int rows = num_rows_exc_padding ? num_rows_exc_padding[p] : max_rows;

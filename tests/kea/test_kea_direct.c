@@ -304,6 +304,81 @@ static void pivot_cap_is_reported(void **state)
     kt_free(&t);
 }
 
+/* Auto's pivot budget (autoPivotsPerRow, docs/kea.md "Worst frames"): a partition of at most
+ * maxDirectRows rows whose direct solve needs more pivots than the budget is finished by the
+ * iterative path, warm-started where the pivots stopped; without a budget, above maxDirectRows or on
+ * the forced direct path, the solve is exact and the same to the bit. */
+static void auto_pivot_budget_hands_over(void **state)
+{
+    KeaParameters exact = kt_params(KeaPathDirect), autoPrm = kt_params(KeaPathAuto);
+    KeaParameters budgeted = kt_params(KeaPathAuto), forced = kt_params(KeaPathDirect);
+    KeaParameters cold = kt_params(KeaPathIterative);
+    KtRng rng = kt_rng(9191);
+    KtProblem t;
+    MeReal xExact[120], xAuto[120], xForced[120], xBudget[120], xCold[120], lo, hi;
+    KeaStats st, stBudget, stCold;
+    int i, n;
+    (void)state;
+    exact.maxFrictionPasses = autoPrm.maxFrictionPasses = budgeted.maxFrictionPasses = 60;
+    forced.maxFrictionPasses = 60;
+    { /* a column of 10 boxes (120 rows) thrown about: contacts open, slide and stick, cold */
+        double v[6 * 10];
+        const double g[3] = {0, 0, -9.81};
+        kt_column(&t, 10, 1.0, 0.5, 1e-3);
+        for (i = 0; i < 6 * 10; ++i)
+            v[i] = kt_range(&rng, -2, 2);
+        kt_set_rhs_from_velocities(&t, v, 1.0 / 60.0, g);
+    }
+    n = t.p.nRows;
+    assert_int_equal(kt_solve(&t.p, &exact, xExact, NULL, &st), KeaStatusOk);
+    const int pivots = st.pivots;
+    assert_true(pivots > 2 * 16); /* this problem needs work: the budget below stops it half way */
+
+    /* Auto without a budget (KeaParametersDefault): the direct path, bit for bit. */
+    assert_int_equal(kt_solve(&t.p, &autoPrm, xAuto, NULL, &st), KeaStatusOk);
+    assert_int_equal(st.path, KeaPathDirect);
+    assert_int_equal(st.handedOver, 0);
+    assert_memory_equal(xAuto, xExact, sizeof(MeReal) * (size_t)n);
+
+    /* A budget of about half the pivots: handed over, feasible, and closer to the solution than the
+     * iterative path from a cold start with the same sweeps. */
+    budgeted.autoPivotsPerRow = (MeReal)((0.5 * pivots - 16) / n);
+    assert_true(KeaSelectPath(n, &budgeted) == KeaPathAuto);
+    assert_true(KeaMemoryRequired(n, t.p.nBodies, KeaSelectPath(n, &budgeted)) >=
+                KeaMemoryRequired(n, t.p.nBodies, KeaPathIterative));
+    (void)kt_solve(&t.p, &budgeted, xBudget, NULL, &stBudget);
+    assert_int_equal(stBudget.handedOver, 1);
+    assert_int_equal(stBudget.path, KeaPathIterative);
+    assert_true(stBudget.pivots < pivots);
+    assert_true(stBudget.iterations >= budgeted.maxIterations);
+    for (i = 0; i < n; ++i) {
+        KeaRowBounds(&t.p, xBudget, i, &lo, &hi);
+        assert_true((double)xBudget[i] >= (double)lo - 1e-6 * (1.0 + fabs((double)lo)));
+        assert_true((double)xBudget[i] <= (double)hi + 1e-6 * (1.0 + fabs((double)hi)));
+    }
+    (void)kt_solve(&t.p, &cold, xCold, NULL, &stCold);
+    print_message("pivot budget: exact %d pivots; budget %.0f: handed over after %d pivots, %d sweeps, "
+                  "residual %.3g m/s (iterative from cold %.3g)\n",
+                  pivots, (double)budgeted.autoPivotsPerRow * n + 16, stBudget.pivots, stBudget.iterations,
+                  (double)stBudget.residual, (double)stCold.residual);
+    assert_true(stBudget.residual < stCold.residual);
+
+    /* Above maxDirectRows (a column is a tree: its sparse factor keeps it on the direct path) the
+     * budget does not apply: exact, bit for bit. */
+    budgeted.maxDirectRows = 100;
+    assert_int_equal(kt_solve(&t.p, &budgeted, xAuto, NULL, &st), KeaStatusOk);
+    assert_int_equal(st.path, KeaPathDirect);
+    assert_int_equal(st.handedOver, 0);
+    assert_memory_equal(xAuto, xExact, sizeof(MeReal) * (size_t)n);
+
+    /* The forced direct path ignores the budget: exact, bit for bit. */
+    forced.autoPivotsPerRow = budgeted.autoPivotsPerRow;
+    assert_int_equal(kt_solve(&t.p, &forced, xForced, NULL, &st), KeaStatusOk);
+    assert_int_equal(st.handedOver, 0);
+    assert_memory_equal(xForced, xExact, sizeof(MeReal) * (size_t)n);
+    kt_free(&t);
+}
+
 /* Without softness, four contacts under a box are redundant (A singular): the floor on the free
  * block's pivots keeps the solve finite and the physics right (total impulse = m g h). */
 static void singular_matrix_without_softness(void **state)
@@ -356,6 +431,7 @@ int main(void)
         cmocka_unit_test(bad_warm_start_same_answer),
         cmocka_unit_test(friction_links_match_brute_force),
         cmocka_unit_test(pivot_cap_is_reported),
+        cmocka_unit_test(auto_pivot_budget_hands_over),
         cmocka_unit_test(singular_matrix_without_softness),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -103,7 +103,9 @@ typedef struct KeaProblem {
 typedef enum KeaPath {
     KeaPathAuto = 0,      /**< direct when nRows <= maxDirectRows, or nRows <= 4 maxDirectRows and the
                                ordered factor has at most maxDirectRows (maxDirectRows + 1) / 2
-                               entries (kea_direct.c); else iterative */
+                               entries (kea_direct.c); else iterative. With a pivot budget
+                               (autoPivotsPerRow), a direct solve of at most maxDirectRows rows that
+                               runs over it is finished by the iterative path */
     KeaPathDirect = 1,    /**< exact: Cholesky-based active-set (pivoting) method, sparse factor */
     KeaPathIterative = 2  /**< projected Gauss-Seidel (+ subspace minimisation) on the sparse rows */
 } KeaPath;
@@ -143,6 +145,12 @@ typedef struct KeaParameters {
     MeReal effortRestSpeed; /**< iterative: the extra effort only for a partition at rest, every row's
                                  |rhs| at most this (velocity units); 0 = no limit, the default here
                                  (the world sets KEA_EFFORT_REST_SPEED x its length scale) */
+    MeReal autoPivotsPerRow; /**< Auto: a partition of at most maxDirectRows rows whose direct solve
+                                 needs more than this many pivots per row (plus KEA_AUTO_PIVOTS_EXTRA)
+                                 is handed to the iterative path for this step, warm-started from
+                                 where the pivots left it (larger, tree-like ones stay exact);
+                                 0 = never, the default here (the world sets KEA_AUTO_PIVOTS_PER_ROW;
+                                 docs/kea.md, "Worst frames") */
 } KeaParameters;
 
 /** What a solve did. */
@@ -158,6 +166,8 @@ typedef struct KeaStats {
     int subspaceSkipped; /**< iterative: subspace minimisations skipped (the active set still moving,
                               or the last one did not pay) */
     int pivots;         /**< direct: active-set changes (a row freed or fixed at a bound) */
+    int handedOver;     /**< Auto: 1 when the direct path spent its pivot budget (autoPivotsPerRow)
+                             and the iterative path finished the solve (path is then iterative) */
     int frictionPasses; /**< direct: box-QP passes (1 without links) */
     int factorizations; /**< direct: full Cholesky factorisations */
     int regularised;    /**< direct: free-block pivots raised to the floor (A near singular) */
@@ -168,7 +178,8 @@ typedef struct KeaStats {
 void KeaParametersDefault(KeaParameters *params);
 
 /** The path KeaSolve will use for a partition of nRows rows under params; KeaPathAuto when it
- *  depends on the partition's structure (decided by KeaSolve; size the workspace for either). */
+ *  depends on the partition's structure or on its pivots (decided by KeaSolve; size the workspace
+ *  for either). */
 KeaPath KeaSelectPath(int nRows, const KeaParameters *params);
 
 /** Bytes of workspace KeaSolve needs for nRows rows and nBodies bodies on the given path

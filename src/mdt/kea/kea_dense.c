@@ -186,11 +186,13 @@ void KeaCholeskyRemove(KeaCholesky *c, int p)
     c->size = k - 1;
 }
 
-void KeaCholeskySolve(const KeaCholesky *c, MeReal *b)
+void KeaCholeskySolve(const KeaCholesky *c, MeReal *b) { KeaCholeskySolveFrom(c, b, 0); }
+
+void KeaCholeskySolveFrom(const KeaCholesky *c, MeReal *b, int from)
 {
     const int k = c->size;
     int i;
-    for (i = 0; i < k; ++i) { /* L y = b */
+    for (i = from; i < k; ++i) { /* L y = b; y_i = 0 before the first non-zero of b */
         const MeReal *li = KeaRow(c, i);
         const int f = c->first[i];
         b[i] = (b[i] - KeaDotN4(li + f, b + f, i - f)) * c->inv[i];

@@ -452,6 +452,7 @@ static int KeaPolishCapacitance(const KeaDenseLcp *lcp, KeaDenseWork *w, int m)
     const KeaCholesky *c = &w->chol;
     const int k = c->size;
     int i, j, p, a;
+    int *from = w->perm; /* the first non-zero of each column u_N (perm is free until G's LU) */
 
     for (p = 0; p < k * m; ++p)
         w->U[p] = ME_R(0.0);
@@ -470,8 +471,16 @@ static int KeaPolishCapacitance(const KeaDenseLcp *lcp, KeaDenseWork *w, int m)
                 u[p] += coef * lcp->A[(size_t)c->F[p] * (size_t)n + (size_t)i];
         }
     }
+    /* A column u_N is zero before the rows on its contact's bodies: its forward substitution starts
+     * at its first non-zero (most of a long chain's factor lies before or after a contact's rows) */
+    for (a = 0; a < m; ++a) {
+        const MeReal *u = w->U + (size_t)a * (size_t)k;
+        from[a] = 0;
+        while (from[a] < k && u[from[a]] == ME_R(0.0))
+            ++from[a];
+    }
     for (a = 0; a < m; ++a)
-        KeaCholeskySolve(c, w->U + (size_t)a * (size_t)k);
+        KeaCholeskySolveFrom(c, w->U + (size_t)a * (size_t)k, from[a]);
     for (a = 0; a < m; ++a) {
         const int pa = c->pos[w->normals[a]];
         for (j = 0; j < m; ++j)

@@ -17,7 +17,10 @@
  * Auto's choice above maxDirectRows rows (mayDecline): after ordering, the factor's envelope is
  * counted; if it exceeds maxDirectRows (maxDirectRows + 1) / 2 entries, a dense factor of
  * maxDirectRows rows, the path declines (KeaStatusDeclined) before forming A and the iterative
- * path solves the partition instead. */
+ * path solves the partition instead. Auto's pivot budget (KeaParameters.autoPivotsPerRow), for
+ * partitions of at most maxDirectRows rows: a solve that needs more pivots stops there
+ * (KeaStatusOverBudget) and the iterative path finishes it from the feasible iterate it left
+ * (docs/kea.md, "Worst frames"). */
 #include <string.h>
 
 #include "kea_internal.h"
@@ -121,7 +124,7 @@ KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params,
     KeaDirectWork w;
     KeaDenseLcp lcp;
     KeaStatus status;
-    int i;
+    int i, budgeted, maxPivots = params->maxPivots;
 
     KeaDirectLayout(arena, n, problem->nBodies, &w);
     KeaBodyIncidence(problem, w.incidence, w.start);
@@ -149,7 +152,20 @@ KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params,
     lcp.pattern = w.pattern;
     lcp.rows = problem;
     lcp.velocity = dv; /* scratch until the final velocity change below */
-    status = KeaDenseLcpSolve(&lcp, params->maxPivots, params->maxFrictionPasses, w.lcp, x, stats);
+    /* Only a partition of at most maxDirectRows rows: a larger one is on this path because its bodies
+     * form a tree (a chain, a column), where the iterative path's answer is far from the exact one */
+    budgeted = params->path == KeaPathAuto && params->autoPivotsPerRow > ME_R(0.0) && n <= params->maxDirectRows;
+    if (budgeted) { /* Auto's pivot budget (the worst frames, docs/kea.md): past it, the iterative path */
+        const MeReal budget = params->autoPivotsPerRow * (MeReal)n + (MeReal)KEA_AUTO_PIVOTS_EXTRA;
+        maxPivots = (int)budget;
+        if (params->maxPivots > 0 && params->maxPivots < maxPivots) {
+            maxPivots = params->maxPivots;
+            budgeted = 0; /* the caller's own cap is the tighter one and keeps its meaning */
+        }
+    }
+    status = KeaDenseLcpSolve(&lcp, maxPivots, params->maxFrictionPasses, w.lcp, x, stats);
+    if (budgeted && status == KeaStatusMaxPivots)
+        return KeaStatusOverBudget;
     if (!KeaDenseLcpFinalVelocity(w.lcp, &stats->residual)) { /* else dv and the residual are x's */
         KeaBodyVelocityFromImpulses(problem, x, dv);
         stats->residual = KeaResidualWithDiagonal(problem, x, dv, w.A, (size_t)n + 1);

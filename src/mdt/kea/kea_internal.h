@@ -284,6 +284,9 @@ int KeaDenseFactor(int m, MeReal *G, int *perm);
 void KeaDenseSolveFactored(int m, const MeReal *G, const int *perm, MeReal *b);
 /** Solve A_FF y = b in place (b and y indexed by position in F). */
 void KeaCholeskySolve(const KeaCholesky *c, MeReal *b);
+/** KeaCholeskySolve for a b whose entries before position `from` are zero: the forward substitution
+ *  starts there (the entries before stay zero, so the result is the same to the bit). */
+void KeaCholeskySolveFrom(const KeaCholesky *c, MeReal *b, int from);
 
 /* ---- the dense box LCP solver (kea_dense_lcp.c) --------------------------------------------- */
 
@@ -349,6 +352,11 @@ KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params,
 /** KeaSolveDirect's answer when mayDecline is set and the factor would cost more than a dense one of
  *  maxDirectRows rows: nothing solved, x untouched. Never returned by KeaSolve. */
 #define KeaStatusDeclined ((KeaStatus)-1)
+
+/** KeaSolveDirect's answer under Auto (params->path) with a pivot budget (autoPivotsPerRow) when the
+ *  solve needed more pivots than the budget: x is the feasible iterate where it stopped, dv and the
+ *  residual are not set; the iterative path takes over. Never returned by KeaSolve. */
+#define KeaStatusOverBudget ((KeaStatus)-2)
 
 KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
                             MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);

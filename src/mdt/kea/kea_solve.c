@@ -22,14 +22,15 @@ void KeaParametersDefault(KeaParameters *params)
     params->maxFrictionPasses = 8;
     params->effortResidual = ME_R(0.0);
     params->effortRestSpeed = ME_R(0.0);
+    params->autoPivotsPerRow = ME_R(0.0);
 }
 
 KeaPath KeaSelectPath(int nRows, const KeaParameters *params)
 {
     if (params->path == KeaPathDirect || params->path == KeaPathIterative)
         return params->path;
-    if (nRows <= params->maxDirectRows)
-        return KeaPathDirect;
+    if (nRows <= params->maxDirectRows) /* with a pivot budget, the iterative path may finish it */
+        return params->autoPivotsPerRow > ME_R(0.0) ? KeaPathAuto : KeaPathDirect;
     if ((long long)nRows <= KEA_SPARSE_DIRECT_FACTOR * (long long)params->maxDirectRows)
         return KeaPathAuto; /* direct if the factor is sparse enough: decided by KeaSolve */
     return KeaPathIterative;
@@ -190,10 +191,14 @@ KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void 
             x[i] = ME_R(0.0);
     }
 
-    if (path == KeaPathAuto) { /* between maxDirectRows and the sparse limit: try the direct path */
+    if (path == KeaPathAuto) { /* direct unless the factor is not sparse enough (above maxDirectRows) or
+                                * the pivots run over their budget: then iterative, from x as left */
         KeaArena tryArena = arena;
-        stats->status = KeaSolveDirect(problem, params, &tryArena, 1, x, velocity, stats);
-        path = stats->status == KeaStatusDeclined ? KeaPathIterative : KeaPathDirect;
+        stats->status = KeaSolveDirect(problem, params, &tryArena, problem->nRows > params->maxDirectRows, x,
+                                       velocity, stats);
+        path = stats->status == KeaStatusDeclined || stats->status == KeaStatusOverBudget ? KeaPathIterative
+                                                                                         : KeaPathDirect;
+        stats->handedOver = stats->status == KeaStatusOverBudget;
         stats->path = path;
     } else if (path == KeaPathDirect) {
         stats->status = KeaSolveDirect(problem, params, &arena, 0, x, velocity, stats);

@@ -42,6 +42,19 @@
 #define KEA_DENSE_PIVOTS_PER_ROW 8
 #define KEA_DENSE_PIVOTS_EXTRA 64
 
+/** Auto's pivot budget (KeaParameters.autoPivotsPerRow, set by the world): a partition of at most
+ *  maxDirectRows rows whose direct solve needs more than KEA_AUTO_PIVOTS_PER_ROW n +
+ *  KEA_AUTO_PIVOTS_EXTRA pivots is finished by the iterative path, warm-started from the direct
+ *  path's feasible iterate. Larger partitions are on the direct path because their bodies form a
+ *  tree (a chain, a column), where 10 sweeps are far from the exact answer: a jittered column of 20
+ *  handed over in one step fell (double precision), so they stay exact. A warm-started step takes a
+ *  few pivots and the first step of a new contact group about one per row that changes state; the
+ *  spikes are groups landing with their friction rows cycling through many states and friction
+ *  passes (1.5 to 2 pivots per row, up to 8 passes), each pivot costing about one sweep
+ *  (docs/kea.md, "Worst frames"; bench/RESULTS.md, notes "spikes"). */
+#define KEA_AUTO_PIVOTS_PER_ROW ME_R(0.25)
+#define KEA_AUTO_PIVOTS_EXTRA 16
+
 /* ---- the iterative path (kea_iterative.h and its files) ----------------------------------------- */
 
 /** Blocks of at most this many rows compute J_b dv row by row from the padded rows; larger ones (a
