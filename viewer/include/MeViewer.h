@@ -146,6 +146,8 @@ void MEAPI RGraphicSetColor(RGraphic *g, const float color[4]);
 void MEAPI RGraphicGetColor(RGraphic *g, float color[4]);
 /** Draw this graphic as wireframe (b true) or filled. */
 void MEAPI RGraphicSetWireframe(RGraphic *g, MeBool b);
+/** Whether the graphic is drawn as wireframe (its own flag; MEFALSE for NULL). */
+MeBool MEAPI RGraphicIsWireframe(RGraphic *g);
 /** Scale a graphic's vertices along its local axes (each factor finite and non-zero; others refused
  *  with ME_ERR_ARGUMENT_RANGE, nothing changed); normals follow (inverse scale, renormalised). */
 void MEAPI RGraphicScale(RGraphic *rg, AcmeReal xScale, AcmeReal yScale, AcmeReal zScale);
