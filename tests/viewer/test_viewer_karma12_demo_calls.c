@@ -7,6 +7,7 @@
  * RLineAdd are drawn, the help lists the callbacks' texts, and the picture is not blank. */
 #include "karma_test.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -282,10 +283,68 @@ static void test_a_karma12_demo_compiles_and_runs(void **state)
     cleanup();
 }
 
+/* As 1.2's aggregate helper and scene loader use them: RGraphicCombine puts a second graphic's
+ * triangles where a relative transform places them, RGraphicTranslateVertices moves a mesh. */
+static void test_combine_and_translate(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    const char *argv[] = {"combine", "-null"};
+    MeCommandLineOptions *options = MeCommandLineOptionsCreate(2, argv);
+    RRender *r = RRenderContextCreate(options, 0, !MEFALSE);
+    MeCommandLineOptionsDestroy(options);
+    float white[4] = {1, 1, 1, 1}, red[4] = {1, 0, 0, 1};
+    MeMatrix4 bodyTM;
+    MeMatrix4TMMakeIdentity(bodyTM);
+    RGraphic *a = RGraphicBoxCreate(r, 1, 1, 1, white, bodyTM);
+    RGraphic *b = RGraphicBoxCreate(r, 2, 1, 1, red, 0);
+    /* The element turned a quarter about y (its x becomes −z) and moved 3 along x. */
+    MeMatrix4 elemTM = {{0, 0, -1, 0}, {0, 1, 0, 0}, {1, 0, 0, 0}, {3, 0, 0, 1}};
+    RGraphic *c = RGraphicCombine(r, a, b, elemTM);
+    assert_non_null(c);
+    assert_int_equal(c->m_pObject->m_nNumVertices, 72);
+    assert_ptr_equal(c->m_pLWMatrix, bodyTM); /* follows what the first followed */
+    float colour[4];
+    RGraphicGetColor(c, colour);
+    assert_near(colour[1], 1, 1e-7); /* the first's colour */
+    for (int i = 0; i < 36; i++) {
+        const RObjectVertex *v = &c->m_pVertices[36 + i], *s = &b->m_pVertices[i];
+        assert_near(v->m_X, 3 + s->m_Z, 1e-6); /* p·M: x' = z + 3, z' = −x */
+        assert_near(v->m_Y, s->m_Y, 1e-6);
+        assert_near(v->m_Z, -s->m_X, 1e-6);
+        assert_near(v->m_NX, s->m_NZ, 1e-6);
+        assert_near(v->m_NZ, -s->m_NX, 1e-6);
+        assert_memory_equal(&c->m_pVertices[i], &a->m_pVertices[i], sizeof(RObjectVertex));
+    }
+    /* The element's extent along z is now its 2 m length. */
+    double zmin = 1e9, zmax = -1e9;
+    for (int i = 36; i < 72; i++) {
+        zmin = c->m_pVertices[i].m_Z < zmin ? c->m_pVertices[i].m_Z : zmin;
+        zmax = c->m_pVertices[i].m_Z > zmax ? c->m_pVertices[i].m_Z : zmax;
+    }
+    assert_near(zmax - zmin, 2, 1e-6);
+    RGraphicDelete(r, a, 0);
+    RGraphicDelete(r, b, 0);
+    MeVector3 offset = {0, -0.5, 2};
+    RObjectVertex before = c->m_pVertices[40];
+    RGraphicTranslateVertices(r, c, offset);
+    assert_near(c->m_pVertices[40].m_X, before.m_X, 1e-6);
+    assert_near(c->m_pVertices[40].m_Y, before.m_Y - 0.5, 1e-6);
+    assert_near(c->m_pVertices[40].m_Z, before.m_Z + 2, 1e-6);
+    MeVector3 bad = {0, NAN, 0};
+    assert_reports(ME_ERR_NONFINITE_ARGUMENT, RGraphicTranslateVertices(r, c, bad));
+    assert_near(c->m_pVertices[40].m_Y, before.m_Y - 0.5, 1e-6);
+    assert_reports(ME_ERR_NULL_ARGUMENT, assert_null(RGraphicCombine(r, c, NULL, elemTM)));
+    RGraphic *label = RGraphicTextCreate(r, "text", 0, 0, white);
+    assert_reports(ME_ERR_WRONG_HANDLE_KIND, assert_null(RGraphicCombine(r, c, label, elemTM)));
+    RRenderContextDestroy(r);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_a_karma12_demo_compiles_and_runs),
+        cmocka_unit_test(test_combine_and_translate),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -148,6 +148,14 @@ void MEAPI RGraphicGetColor(RGraphic *g, float color[4]);
 void MEAPI RGraphicSetWireframe(RGraphic *g, MeBool b);
 /** Whether the graphic is drawn as wireframe (its own flag; MEFALSE for NULL). */
 MeBool MEAPI RGraphicIsWireframe(RGraphic *g);
+/** Move every vertex of rg by offset (local frame; rc is not used, as in 1.2). A NULL or non-finite
+ *  offset is refused. */
+void MEAPI RGraphicTranslateVertices(RRender *rc, RGraphic *rg, MeVector3 offset);
+/** A new graphic (in rc's 3D list) of first's triangles and second's placed by secondTM (local to
+ *  first; NULL: as they are), with first's colour, texture and followed matrix; first and second are
+ *  left as they are (1.2's aggregate helper deletes them). NULL with a message for a NULL argument
+ *  or a graphic that is not triangles. */
+RGraphic *MEAPI RGraphicCombine(RRender *rc, RGraphic *first, RGraphic *second, MeMatrix4Ptr secondTM);
 /** Scale a graphic's vertices along its local axes (each factor finite and non-zero; others refused
  *  with ME_ERR_ARGUMENT_RANGE, nothing changed); normals follow (inverse scale, renormalised). */
 void MEAPI RGraphicScale(RGraphic *rg, AcmeReal xScale, AcmeReal yScale, AcmeReal zScale);
