@@ -160,12 +160,34 @@ static void test_background_and_sphere_resolution(void **state)
     RRenderContextDestroy(rc);
 }
 
+/* The F12 menu has 1.2's renderer and texture entries: textures (7th), frame-rate lock (9th) and
+ * aspect lock (10th) flip with Right (the menu shows again at the entry it was left at). */
+static void test_f12_renderer_entries(void **state)
+{
+    (void)state;
+    RRender *rc = nullContext();
+    const int entries[3] = {6, 8, 9};
+    for (int k = 0, at = 0; k < 3; at = entries[k++]) {
+        int before[3] = {rc->m_options.m_bTextures, rc->m_private->frameLock, rc->m_private->aspectLock};
+        RInputKey(rc, RKEY_F12, 0);
+        for (int i = at; i < entries[k]; i++)
+            RInputKey(rc, RKEY_DOWN, 0);
+        RInputKey(rc, RKEY_RIGHT, 0);
+        RInputKey(rc, RKEY_F12, 0);
+        int after[3] = {rc->m_options.m_bTextures, rc->m_private->frameLock, rc->m_private->aspectLock};
+        for (int j = 0; j < 3; j++)
+            assert_int_equal(!!after[j], j == k ? !before[j] : !!before[j]);
+    }
+    RRenderContextDestroy(rc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_callbacks_with_text_fire_and_show_in_help),
         cmocka_unit_test(test_camera_views_and_keys),
         cmocka_unit_test(test_background_and_sphere_resolution),
+        cmocka_unit_test(test_f12_renderer_entries),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

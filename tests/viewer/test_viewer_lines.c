@@ -264,7 +264,21 @@ static void test_particles_at_their_positions(void **state)
     assert_int_equal(litPixels(), 0);
     RParticleSystemAddToList(rc, ps);
     draw(rc);
-    assert_true(litPixels() > 0);
+    int shown = litPixels();
+    assert_true(shown > 0);
+    /* The F12 menu's "Particles" (its eighth entry) turns them off, and on again (the menu shows
+     * again at the entry it was left at). */
+    for (int on = 0; on < 2; on++) {
+        RInputKey(rc, RKEY_F12, 0);
+        for (int i = 0; i < (on ? 0 : 7); i++)
+            RInputKey(rc, RKEY_DOWN, 0);
+        RInputKey(rc, RKEY_RIGHT, 0);
+        RInputKey(rc, RKEY_F12, 0); /* the menu hidden again */
+        assert_int_equal(rc->m_private->noParticles, !on);
+        assert_null(rc->m_private->menuShown);
+        draw(rc);
+        assert_int_equal(litPixels(), on ? shown : 0);
+    }
     RParticleSystemDestroy(ps);
     draw(rc);
     assert_int_equal(litPixels(), 0);

@@ -177,7 +177,7 @@ static int gatherCentres(struct RGLNative *n, const RParticleSystem *ps)
 
 static void drawParticles(struct RGLNative *n, RRender *rc, unsigned int (*texture)(void *data, int id), void *data)
 {
-    if (!rc->m_private->particles)
+    if (!rc->m_private->particles || rc->m_private->noParticles)
         return;
     glUseProgram(n->partProg);
     setCamera(rc, n->partView, n->partProj);

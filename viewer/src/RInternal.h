@@ -85,6 +85,7 @@ struct RRenderPrivate {
     float *immediate;        /**< RLineAdd's lines: per end x y z r g b a (R_LINE_FLOATS floats) */
     int immediateEnds, immediateCapacity; /**< ends written, and room (ends) */
     RParticleSystem *particles; /**< the particle systems drawn (RParticleSystemAddToList) */
+    int noParticles;         /**< the F12 menu turned particle systems off */
     RTexture textures[R_MAX_TEXTURES]; /**< RRenderTextureCreate's, by id */
     int textureCount;
     char title[128];
