@@ -180,6 +180,27 @@ static void test_immediate_lines_until_removed(void **state)
     RRenderContextDestroy(rc);
 }
 
+/* Multisampled (4×): a slanted line's pixels are partly covered along its edges, so between black
+ * and its colour; without antialiasing every pixel would be one or the other. */
+static void test_lines_are_antialiased(void **state)
+{
+    (void)state;
+    RRender *rc = blackContext();
+    AcmeReal a[3] = {-5, -3, 1}, b[3] = {5, 2, 1};
+    RNLine *line = RNLineCreate(rc, a, b, red, NULL);
+    draw(rc);
+    int full = 0, partial = 0;
+    for (int i = 0; i < W * H; i++) {
+        int r = rgba[4 * i];
+        full += r >= 215;
+        partial += r > 40 && r < 215;
+    }
+    assert_true(full > 20);
+    assert_true(partial > 20);
+    RNLineDestroy(line);
+    RRenderContextDestroy(rc);
+}
+
 static void test_lines_refuse_bad_input(void **state)
 {
     (void)state;
@@ -346,6 +367,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_native_lines_on_their_projected_pixels),
         cmocka_unit_test(test_immediate_lines_until_removed),
+        cmocka_unit_test(test_lines_are_antialiased),
         cmocka_unit_test(test_lines_refuse_bad_input),
         cmocka_unit_test(test_particles_at_their_positions),
         cmocka_unit_test(test_textured_particles),
