@@ -53,6 +53,10 @@ if(KARMA_XVFB_RUN)
   add_test(NAME viewer_window_under_xvfb
            COMMAND ${KARMA_XVFB_RUN} -a -s "-screen 0 640x480x24" $<TARGET_FILE:viewer_window_under_xvfb>)
   set_tests_properties(viewer_window_under_xvfb PROPERTIES PASS_REGULAR_EXPRESSION "12 frames drawn and shown, closed")
+  # `karma view SCENE` itself in a window (no -headless): it opens, runs its frames and closes.
+  add_test(NAME viewer_tool_view_window_under_xvfb
+           COMMAND ${KARMA_XVFB_RUN} -a -s "-screen 0 640x480x24" $<TARGET_FILE:karma> view bounce -timeout 20)
+  set_tests_properties(viewer_tool_view_window_under_xvfb PROPERTIES PASS_REGULAR_EXPRESSION "bounce: 20 steps")
 else()
   add_test(NAME viewer_window_under_xvfb
            COMMAND ${CMAKE_COMMAND} -E echo "xvfb-run not found: install xvfb and xauth (make deps)")

@@ -3,6 +3,11 @@
  * with 4× multisampling, through EGL (Mesa's llvmpipe on a machine without a GPU).
  *
  *     karma_render_bench [--bodies N] [--size WxH] [--frames F] [--shape box|sphere]
+ *                        [--particles P] [--lines L]
+ *
+ * --particles: P particles (one particle system, 0.1 m each) moving through the bodies' region;
+ * --lines: L lines given again each frame with RLineAdd (as a demo's debug lines). Both are drawn
+ * in one call each.
  *
  * Prints frames per second of drawing alone (the last frame is read back before the clock stops) and
  * the processor time per frame over all threads. */
@@ -13,6 +18,7 @@
 #include <string.h>
 #include <time.h>
 
+#include <MeMath.h>
 #include <MeViewer.h>
 
 #include "RInternal.h"
@@ -35,7 +41,7 @@ static double cpuSeconds(void)
 
 int main(int argc, char **argv)
 {
-    int bodies = 1000, width = 1280, height = 720, frames = 200, spheres = 0, shadows = 1;
+    int bodies = 1000, width = 1280, height = 720, frames = 200, spheres = 0, shadows = 1, particles = 0, lines = 0;
     for (int i = 1; i + 1 < argc; i += 2) {
         if (strcmp(argv[i], "--bodies") == 0)
             bodies = atoi(argv[i + 1]);
@@ -45,24 +51,30 @@ int main(int argc, char **argv)
             frames = atoi(argv[i + 1]);
         else if (strcmp(argv[i], "--shape") == 0)
             spheres = strcmp(argv[i + 1], "sphere") == 0;
+        else if (strcmp(argv[i], "--particles") == 0)
+            particles = atoi(argv[i + 1]);
+        else if (strcmp(argv[i], "--lines") == 0)
+            lines = atoi(argv[i + 1]);
         else if (strcmp(argv[i], "--shadows") == 0)
             shadows = strcmp(argv[i + 1], "off") != 0;
         else {
-            fprintf(stderr, "usage: %s [--bodies N] [--size WxH] [--frames F] [--shape box|sphere] [--shadows on|off]\n",
+            fprintf(stderr, "usage: %s [--bodies N] [--size WxH] [--frames F] [--shape box|sphere] [--shadows on|off] "
+                    "[--particles P] [--lines L]\n",
                     argv[0]);
             return 2;
         }
     }
-    if (bodies < 1 || frames < 1) {
-        fprintf(stderr, "--bodies and --frames take positive counts\n");
+    if (bodies < 0 || frames < 1 || particles < 0 || lines < 0) {
+        fprintf(stderr, "--frames takes a positive count, --bodies, --particles and --lines counts >= 0\n");
         return 2;
     }
     RRender *rc = RRenderContextCreateHeadless(width, height);
     if (!rc)
         return 1;
     rc->m_private->noShadows = !shadows; /* what the F12 menu's "Shadows" does */
-    MeMatrix4 *tm = calloc((size_t)bodies, sizeof *tm);
-    if (!tm)
+    MeMatrix4 *tm = calloc((size_t)(bodies > 0 ? bodies : 1), sizeof *tm);
+    MeVector3 *centres = calloc((size_t)(particles > 0 ? particles : 1), sizeof *centres);
+    if (!tm || !centres)
         return 1;
     const float grey[4] = {0.85f, 0.85f, 0.82f, 1};
     RGraphicGroundPlaneCreate(rc, 60, 60, grey, 0);
@@ -79,6 +91,10 @@ int main(int argc, char **argv)
         else
             RGraphicBoxCreate(rc, ME_R(0.5), ME_R(0.5), ME_R(0.5), color, tm[i]);
     }
+    if (side < 1)
+        side = 1;
+    const float orange[4] = {1, 0.55f, 0.1f, 1};
+    RParticleSystem *ps = particles > 0 ? RParticleSystemCreate(rc, particles, centres, NULL, orange, ME_R(0.1)) : NULL;
     const AcmeVector3 at = {0, (AcmeReal)(0.4 * side), 0};
     RCameraSetLookAt(rc, at);
     RCameraSetView(rc, (AcmeReal)(2.2 * side), ME_R(0.5), ME_R(0.4));
@@ -91,16 +107,29 @@ int main(int argc, char **argv)
             tm[i][0][2] = (MeReal)-sin(a);
             tm[i][2][0] = (MeReal)sin(a);
         }
+        for (int i = 0; i < particles; i++) { /* a swirl through the bodies' region */
+            double a = 0.02 * f + 0.37 * i, r = 0.4 * side * (0.2 + 0.8 * (i % 97) / 96.0);
+            MeVector3Set(centres[i], (MeReal)(r * cos(a)), (MeReal)(0.8 * side * (i % 89) / 88.0), (MeReal)(r * sin(a)));
+        }
+        RLineRemoveAll(rc);
+        for (int i = 0; i < lines; i++) {
+            double a = 0.01 * f + 6.283 * i / lines;
+            MeVector3 p = {0, (MeReal)(0.4 * side), 0}, q = {(MeReal)(side * cos(a)), 0, (MeReal)(side * sin(a))};
+            RLineAdd(rc, p, q, 1, 1, 0);
+        }
         RRenderDrawFrame(rc);
     }
     unsigned char *rgba = malloc((size_t)width * (size_t)height * 4);
     RRenderReadPixels(rc, rgba); /* waits for the last frame */
     double elapsed = seconds() - start, cpu = cpuSeconds() - cpuStart;
-    printf("%d %s at %dx%d, shadows %s: %d frames in %.2f s, %.1f frames/s; processor time %.1f ms per frame (all threads)\n",
-           bodies, spheres ? "spheres" : "boxes", width, height, shadows ? "on" : "off", frames, elapsed, frames / elapsed,
-           1e3 * cpu / frames);
+    printf("%d %s, %d particles, %d lines at %dx%d, shadows %s: %d frames in %.2f s, %.1f frames/s; processor time "
+           "%.1f ms per frame (all threads)\n",
+           bodies, spheres ? "spheres" : "boxes", particles, lines, width, height, shadows ? "on" : "off", frames, elapsed,
+           frames / elapsed, 1e3 * cpu / frames);
+    RParticleSystemDestroy(ps);
     free(rgba);
     RRenderContextDestroy(rc);
     free(tm);
+    free(centres);
     return 0;
 }

@@ -146,6 +146,16 @@ void MEAPI RGraphicSetColor(RGraphic *g, const float color[4]);
 void MEAPI RGraphicGetColor(RGraphic *g, float color[4]);
 /** Draw this graphic as wireframe (b true) or filled. */
 void MEAPI RGraphicSetWireframe(RGraphic *g, MeBool b);
+/** Whether the graphic is drawn as wireframe (its own flag; MEFALSE for NULL). */
+MeBool MEAPI RGraphicIsWireframe(RGraphic *g);
+/** Move every vertex of rg by offset (local frame; rc is not used, as in 1.2). A NULL or non-finite
+ *  offset is refused. */
+void MEAPI RGraphicTranslateVertices(RRender *rc, RGraphic *rg, MeVector3 offset);
+/** A new graphic (in rc's 3D list) of first's triangles and second's placed by secondTM (local to
+ *  first; NULL: as they are), with first's colour, texture and followed matrix; first and second are
+ *  left as they are (1.2's aggregate helper deletes them). NULL with a message for a NULL argument
+ *  or a graphic that is not triangles. */
+RGraphic *MEAPI RGraphicCombine(RRender *rc, RGraphic *first, RGraphic *second, MeMatrix4Ptr secondTM);
 /** Scale a graphic's vertices along its local axes (each factor finite and non-zero; others refused
  *  with ME_ERR_ARGUMENT_RANGE, nothing changed); normals follow (inverse scale, renormalised). */
 void MEAPI RGraphicScale(RGraphic *rg, AcmeReal xScale, AcmeReal yScale, AcmeReal zScale);
@@ -316,6 +326,103 @@ void MEAPI RRenderSetActionNCallBack(RRender *rc, int N, RButtonPressCallBack fu
 void MEAPI RRenderSetActionNKey(RRender *rc, const unsigned int N, const char key);
 /** Mouse events with Ctrl, Shift or Alt held go to `func` (without a modifier the mouse moves the camera). */
 void MEAPI RRenderSetMouseCallBack(RRender *rc, RMouseCallBack func, void *userdata);
+
+/* ---- callbacks with help text (1.2's ...WithText) ------------------------------------------- */
+/* `text` (NULL: none) is shown in the help (F1) after the application's lines as "key - text"; the
+ * string is kept, not copied, as in 1.2: it must live as long as the callback is set. */
+
+void MEAPI RRenderSetUpCallBackWithText(RRender *rc, RButtonPressCallBack func, void *userdata, char *text);
+void MEAPI RRenderSetDownCallBackWithText(RRender *rc, RButtonPressCallBack func, void *userdata, char *text);
+void MEAPI RRenderSetLeftCallBackWithText(RRender *rc, RButtonPressCallBack func, void *userdata, char *text);
+void MEAPI RRenderSetRightCallBackWithText(RRender *rc, RButtonPressCallBack func, void *userdata, char *text);
+void MEAPI RRenderSetUp2CallBackWithText(RRender *rc, RButtonPressCallBack func, void *userdata, char *text);
+void MEAPI RRenderSetDown2CallBackWithText(RRender *rc, RButtonPressCallBack func, void *userdata, char *text);
+void MEAPI RRenderSetLeft2CallBackWithText(RRender *rc, RButtonPressCallBack func, void *userdata, char *text);
+void MEAPI RRenderSetRight2CallBackWithText(RRender *rc, RButtonPressCallBack func, void *userdata, char *text);
+/** Action N (0–5) with help text; N out of range is reported (ME_ERR_ARGUMENT_RANGE) and ignored. */
+void MEAPI RRenderSetActionNCallBackWithText(RRender *rc, int N, RButtonPressCallBack func, void *userdata,
+                                             char *text);
+void MEAPI RRenderSetMouseCallBackWithText(RRender *rc, RMouseCallBack func, void *userdata, char *text);
+/** The joystick's callback (kept and shown in the help; no joystick is read here yet). */
+void MEAPI RRenderSetJoystickCallBackWithText(RRender *rc, RJoystickCallBack func, void *userdata, char *text);
+/** The joystick's callback without text. */
+void MEAPI RRenderSetJoystickCallBack(RRender *rc, RJoystickCallBack func, void *userdata);
+
+/* ---- 1.2's camera views -------------------------------------------------------------------- */
+/* The camera on one side of the look-at point, distance kept (RCameraSetPreset); the keypad keys
+ * 1, 3, 7 (front, right, top; with Ctrl back, left, bottom) and 5 (orthographic on and off) are this
+ * library's additions to the key map. */
+
+void MEAPI RCameraSetFrontView(RRender *rc);
+void MEAPI RCameraSetBackView(RRender *rc);
+void MEAPI RCameraSetLeftView(RRender *rc);
+void MEAPI RCameraSetRightView(RRender *rc);
+void MEAPI RCameraSetTopView(RRender *rc);
+void MEAPI RCameraSetBottomView(RRender *rc);
+/** Parallel projection on (RCameraSetOrthographic(rc, 1)); RCameraSetView or RCameraSetOrthographic(rc, 0)
+ *  does not undo it, only the latter. */
+void MEAPI RCameraSetOrthographicView(RRender *rc);
+
+/* ---- context settings 1.2 had -------------------------------------------------------------- */
+/** Background colour (RGBA, each in [0, 1]); a NULL or non-finite colour is refused. */
+void MEAPI RRenderSetBackgroundColor(RRender *rc, const float color[4]);
+/** Sides of spheres, cylinders and cones made from now on (3 … 256; else refused, ME_ERR_ARGUMENT_RANGE). */
+void MEAPI RRenderSetSphereResolution(RRender *rc, int res);
+/** Sides of spheres, cylinders and cones made from now on (24 by default); 0 for a NULL context. */
+int MEAPI RRenderGetSphereResolution(RRender *rc);
+
+/* ---- native lines (RNLine) and immediate lines (RLineAdd) ----------------------------------- */
+/* Segments drawn with GL lines, every native and immediate line of a context in one draw, unlit in
+ * their colours, depth-tested with the 3D list. The signatures of RNLine* follow
+ * RGraphicLineCreate's (1.2's header is not at hand: see docs/viewer.md). */
+
+/** A native line from origin to end (local to `matrix` when not NULL, which it follows each frame:
+ *  a body's or model's transform), in the 3D list. NULL with a message for a NULL context, end or
+ *  colour (ME_ERR_NULL_ARGUMENT) or a non-finite end (ME_ERR_NONFINITE_ARGUMENT). The context owns
+ *  it: RNLineDestroy, RNLineDelete, or RRenderContextDestroy frees it. */
+RNLine *MEAPI RNLineCreate(RRender *rc, AcmeReal origin[3], AcmeReal end[3], const float color[4],
+                           MeMatrix4Ptr matrix);
+/** Move a line's ends. Returns 0, or −1 with a message (ends kept) for a NULL or non-finite end. */
+int MEAPI RNLineMoveEnds(RNLine *line, AcmeReal *origin, AcmeReal *end);
+/** Recolour a line (RGBA); a NULL or non-finite colour is refused. */
+void MEAPI RNLineSetColor(RNLine *line, const float color[4]);
+/** Draw the line again (after RNLineRemoveFromList); a line of another context is refused
+ *  (ME_ERR_FOREIGN_HANDLE). */
+void MEAPI RNLineAddToList(RRender *rc, RNLine *line);
+/** Stop drawing the line (kept; RNLineAddToList shows it again). */
+void MEAPI RNLineRemoveFromList(RRender *rc, RNLine *line);
+/** Take the line out of the list and free it. */
+void MEAPI RNLineDelete(RRender *rc, RNLine *line);
+/** Free the line (out of its context's list first). */
+void MEAPI RNLineDestroy(RNLine *line);
+/** A world-space line in the colour (r, g, b) until RLineRemoveAll (1.2's demos draw their debug lines
+ *  with it between two RLineRemoveAll). A non-finite end or colour is refused. */
+void MEAPI RLineAdd(RRender *rc, MeVector3 start, MeVector3 end, MeReal r, MeReal g, MeReal b);
+/** Forget every line RLineAdd gave. */
+void MEAPI RLineRemoveAll(RRender *rc);
+
+/* ---- particle systems ---------------------------------------------------------------------- */
+/* Drawn in one instanced draw a system: each particle a disc of diameter tri_size facing the camera
+ * (the texture's square when textured), unlit, depth-tested; particles at non-finite positions
+ * are skipped. */
+
+/** A particle system of numParticles at `positions` (the caller's array, read each frame; kept, not
+ *  copied), texture id tex_id (−1 none), in no list. NULL with a message for a negative count, NULL
+ *  positions with particles, a NULL colour, a size not finite and > 0, or an id that is not a texture
+ *  (only checked when drawn: an unknown id draws untextured). */
+RParticleSystem *MEAPI RParticleSystemNew(int numParticles, MeVector3 *positions, int tex_id, const float color[4],
+                                          AcmeReal size);
+/** RParticleSystemNew with the texture loaded from tex_filename (NULL: none), put in rc's list.
+ *  NULL with a message as RParticleSystemNew, or when the texture cannot be loaded. */
+RParticleSystem *MEAPI RParticleSystemCreate(RRender *rc, int numParticles, MeVector3 *positions, char *tex_filename,
+                                             const float color[4], AcmeReal tri_size);
+/** Free a system (out of its list first). */
+void MEAPI RParticleSystemDestroy(RParticleSystem *ps);
+/** Draw the system with rc (at the end of its list); one in another context's list is refused
+ *  (ME_ERR_FOREIGN_HANDLE). */
+void MEAPI RParticleSystemAddToList(RRender *rc, RParticleSystem *ps);
+/** Stop drawing the system (kept). */
+void MEAPI RParticleSystemRemoveFromList(RRender *rc, RParticleSystem *ps);
 
 ME_EXTERN_C_END
 

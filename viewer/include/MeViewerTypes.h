@@ -184,6 +184,27 @@ typedef struct RRenderCallBacks {
     unsigned char m_actionKeys[NUM_ACTION_CALLBACKS - 2];
 } RRenderCallBacks;
 
+/** A native line (RNLineCreate): a segment drawn with GL lines in one batch with the context's other
+ *  native lines, unlit in its colour; its fields are the viewer's. */
+typedef struct RNLine RNLine;
+
+/** A particle system (RParticleSystemCreate, Karma 1.2's fields): m_nNumParticles discs of diameter
+ *  m_TriangleSize facing the camera, centred on m_Positions (the application's array, read each frame),
+ *  in the colour m_rgbAmbient, textured when m_nTextureID >= 0. */
+typedef struct RParticleSystem *RPSystemPtr;
+typedef struct RParticleSystem {
+    float m_rgbAmbient[4];       /**< the particles' colour (RGBA) */
+    float m_rgbDiffuse[4];       /**< kept as 1.2's (black but the alpha); not used in drawing */
+    float m_rgbSpecular[4];
+    float m_rgbEmissive[4];
+    AcmeReal m_TriangleSize;     /**< diameter of each particle (m) */
+    MeVector3 *m_Positions;      /**< the application's positions, m_nNumParticles of them */
+    int m_nNumParticles;
+    int m_nTextureID;            /**< RRenderTextureCreate's id, or −1 */
+    RPSystemPtr m_pNextSystem;   /**< next in its context's list */
+    struct RRender *m_pRender;   /**< the context whose list holds it, or NULL (this library's) */
+} RParticleSystem;
+
 /** An on-screen menu of toggles, values and submenus (RMenuCreate); its parts are the viewer's. */
 typedef struct RMenu RMenu;
 /** Called with a toggle entry's new state. */

@@ -295,3 +295,11 @@ void MEAPI RCameraSetPreset(RRender *rc, RCameraPreset preset)
     rc->m_CameraPhi = (AcmeReal)angles[preset][1];
     RCameraUpdate(rc);
 }
+
+void MEAPI RCameraSetFrontView(RRender *rc) { RCameraSetPreset(rc, kRCameraFront); }
+void MEAPI RCameraSetBackView(RRender *rc) { RCameraSetPreset(rc, kRCameraBack); }
+void MEAPI RCameraSetLeftView(RRender *rc) { RCameraSetPreset(rc, kRCameraLeft); }
+void MEAPI RCameraSetRightView(RRender *rc) { RCameraSetPreset(rc, kRCameraRight); }
+void MEAPI RCameraSetTopView(RRender *rc) { RCameraSetPreset(rc, kRCameraTop); }
+void MEAPI RCameraSetBottomView(RRender *rc) { RCameraSetPreset(rc, kRCameraBottom); }
+void MEAPI RCameraSetOrthographicView(RRender *rc) { RCameraSetOrthographic(rc, METRUE); }

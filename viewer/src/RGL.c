@@ -65,6 +65,7 @@ struct RGL {
     int itemCount, itemCapacity;
     RRender *rc;                      /* the context being drawn */
     GLuint textures[R_MAX_TEXTURES];  /* the context's textures, uploaded when first used (0: not yet) */
+    struct RGLNative *native;         /* native lines and particles (NULL: not drawn) */
 };
 
 enum {
@@ -349,6 +350,7 @@ struct RGL *RGLCreate(RBackend *backend, int width, int height)
     glBindVertexArray(0);
     glGenBuffers(1, &gl->cache.instances);
     gl->shadow = RShadowCreate();
+    gl->native = RGLNativeCreate();
     loadFont(gl);
     return gl;
 }
@@ -361,6 +363,7 @@ void RGLDestroy(struct RGL *gl)
         RGLReleaseGraphic(gl->graphics);
     freeTargets(gl);
     RShadowDestroy(gl->shadow);
+    RGLNativeDestroy(gl->native);
     glDeleteTextures(R_MAX_TEXTURES, gl->textures); /* 0s are ignored */
     glDeleteBuffers(1, &gl->cache.instances);
     glDeleteProgram(gl->prog3D);
@@ -640,6 +643,14 @@ static void drawBatches(void *data, int castersOnly)
     glBindVertexArray(0);
 }
 
+/* The GL texture of a particle system's texture id: 0 (none) when textures are off or id is not one. */
+static unsigned int nativeTexture(void *data, int id)
+{
+    struct RGL *gl = data;
+    const RRender *rc = gl->rc;
+    return rc->m_options.m_bTextures && id >= 0 && id < rc->m_private->textureCount ? textureFor(gl, rc, id) : 0;
+}
+
 static void draw3D(struct RGL *gl, RRender *rc)
 {
     const GLint *u = gl->u3;
@@ -660,6 +671,7 @@ static void draw3D(struct RGL *gl, RRender *rc)
     if (shadows)
         RShadowBind(gl->shadow, u[U_SHADOW_VP], u[U_SHADOW_TEXEL], u[U_SHADOW_MAP], R_SHADOW_UNIT);
     drawBatches(gl, 0);
+    RGLNativeDraw(gl->native, rc, nativeTexture, gl);
 }
 
 /* Text (one quad per glyph) and rectangles, in pixels, scaled from Karma's virtual 640×448 screen. */

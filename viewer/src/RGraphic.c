@@ -142,6 +142,11 @@ void MEAPI RGraphicGetColor(RGraphic *g, float color[4])
         memcpy(color, g->m_pObject->m_ColorDiffuse, 4 * sizeof(float));
 }
 
+MeBool MEAPI RGraphicIsWireframe(RGraphic *g)
+{
+    return g && g->m_pObject->m_bIsWireFrame ? METRUE : MEFALSE;
+}
+
 void MEAPI RGraphicSetWireframe(RGraphic *g, MeBool b)
 {
     if (g) {

@@ -99,6 +99,33 @@ void MEAPI RRenderCreateUserHelp(RRender *rc, char *help[], int arraySize)
     }
 }
 
+/* "key - text" for each callback given with text (RRenderSet...CallBackWithText), as 1.2 listed them
+ * after the application's lines, into lines[0 …]; returns how many (at most max). */
+static int callbackLines(RRender *rc, char lines[][R_HELP_LINE_CHARS], int max)
+{
+    static const char *const buttonKeys[kRButtons] = {"$UP", "$DOWN", "$LEFT", "$RIGHT", "$UP2", "$DOWN2", "$LEFT2", "$RIGHT2"};
+    const RRenderCallBacks *cb = rc->m_pCallBacks;
+    const char *key[kRButtons + 2 + NUM_ACTION_CALLBACKS], *text[kRButtons + 2 + NUM_ACTION_CALLBACKS];
+    int n = 0;
+    for (int i = 0; i < kRButtons; i++)
+        key[n] = buttonKeys[i], text[n++] = cb->m_Button[i].m_CallBack ? cb->m_Button[i].m_Text : NULL;
+    key[n] = "$MOUSE", text[n++] = cb->m_Mouse.m_CallBack ? cb->m_Mouse.m_Text : NULL;
+    key[n] = "$JOYSTICK", text[n++] = cb->m_Joystick.m_CallBack ? cb->m_Joystick.m_Text : NULL;
+    static const char *const actionKeys[NUM_ACTION_CALLBACKS] = {"$ACTION0", "$ACTION1", "$ACTION2", "$ACTION3",
+                                                                 "$ACTION4", "$ACTION5"};
+    for (int i = 0; i < NUM_ACTION_CALLBACKS; i++)
+        key[n] = actionKeys[i], text[n++] = cb->m_Action[i].m_CallBack ? cb->m_Action[i].m_Text : NULL;
+    int count = 0;
+    for (int i = 0; i < n && count < max; i++) {
+        if (!text[i])
+            continue;
+        char raw[R_HELP_LINE_CHARS];
+        snprintf(raw, sizeof raw, "%s - %s", key[i], text[i]);
+        RParseText(rc, raw, lines[count++], R_HELP_LINE_CHARS);
+    }
+    return count;
+}
+
 void MEAPI RRenderToggleUserHelp(RRender *rc)
 {
     if (!rc)
@@ -118,13 +145,16 @@ void MEAPI RRenderToggleUserHelp(RRender *rc)
     p->pausedBeforeHelp = rc->m_bPause;
     RRenderSetPause(rc, 1);
     p->helpShown = 1;
-    p->helpText = calloc((size_t)(p->helpCount > 0 ? p->helpCount : 1), sizeof *p->helpText);
+    char extra[R_HELP_MAX_LINES][R_HELP_LINE_CHARS];
+    int extraCount = callbackLines(rc, extra, R_HELP_MAX_LINES - p->helpCount);
+    int total = p->helpCount + extraCount;
+    p->helpText = calloc((size_t)(total > 0 ? total : 1), sizeof *p->helpText);
     if (!p->helpText)
         return;
-    p->helpPanel = RGraphic2DRectangleCreate(rc, R_HELP_X - 10, R_HELP_Y - 6, 600, R_HELP_LINE * (float)p->helpCount + 12,
-                                             panel);
-    for (int i = 0; i < p->helpCount; i++)
-        p->helpText[p->helpTextCount++] = RGraphicTextCreate(rc, p->help[i], R_HELP_X, R_HELP_Y + R_HELP_LINE * (float)i, white);
+    p->helpPanel = RGraphic2DRectangleCreate(rc, R_HELP_X - 10, R_HELP_Y - 6, 600, R_HELP_LINE * (float)total + 12, panel);
+    for (int i = 0; i < total; i++)
+        p->helpText[p->helpTextCount++] = RGraphicTextCreate(rc, i < p->helpCount ? p->help[i] : extra[i - p->helpCount],
+                                                             R_HELP_X, R_HELP_Y + R_HELP_LINE * (float)i, white);
 }
 
 void RHelpContextGone(RRender *rc)

@@ -3,7 +3,8 @@
  * Enter Space o p actions 0–5 (m shows the default menu when there is one), Esc and Alt+F4 quit, + and −
  * zoom, F1 help, F2 wireframe (Shift+F2 textures), F3 frame-rate lock (Ctrl+F3 frame rate shown), F8 single
  * step (pausing), Ctrl+F8 pause/play, F9 fullscreen (Alt+F9 aspect lock),
- * F12 the viewer's menu, PgUp/PgDn move the look-at point along z. Mouse without modifier: left drag orbits, middle drag zooms, right drag
+ * F12 the viewer's menu, PgUp/PgDn move the look-at point along z; keypad 1 3 7 (Ctrl: 1 3 7 from the
+ * other side) and 5 the camera's views and orthographic projection (this library's). Mouse without modifier: left drag orbits, middle drag zooms, right drag
  * pans; with Ctrl, Shift or Alt events go to the application's mouse callback. */
 #include <ctype.h>
 
@@ -16,24 +17,40 @@
 #define R_KEY_ZOOM 1.0f
 #define R_KEY_PAN 0.5f
 
-static void setButton(RRender *rc, RButtonList b, RButtonPressCallBack func, void *userdata)
+/** Keypad keys (GLFW's codes) of this library's camera views: 1 front, 3 right, 7 top (Ctrl: the
+ *  opposite side), 5 orthographic on and off. */
+#define RKEY_KP_1 321
+#define RKEY_KP_3 323
+#define RKEY_KP_5 325
+#define RKEY_KP_7 327
+
+static void setButton(RRender *rc, RButtonList b, RButtonPressCallBack func, void *userdata, char *text)
 {
     if (!rc)
         return;
     rc->m_pCallBacks->m_Button[b].m_CallBack = func;
     rc->m_pCallBacks->m_Button[b].m_Userdata = userdata;
+    rc->m_pCallBacks->m_Button[b].m_Text = text;
 }
 
-void MEAPI RRenderSetUpCallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonUp, f, d); }
-void MEAPI RRenderSetDownCallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonDown, f, d); }
-void MEAPI RRenderSetLeftCallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonLeft, f, d); }
-void MEAPI RRenderSetRightCallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonRight, f, d); }
-void MEAPI RRenderSetUp2CallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonUp2, f, d); }
-void MEAPI RRenderSetDown2CallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonDown2, f, d); }
-void MEAPI RRenderSetLeft2CallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonLeft2, f, d); }
-void MEAPI RRenderSetRight2CallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonRight2, f, d); }
+void MEAPI RRenderSetUpCallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonUp, f, d, NULL); }
+void MEAPI RRenderSetDownCallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonDown, f, d, NULL); }
+void MEAPI RRenderSetLeftCallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonLeft, f, d, NULL); }
+void MEAPI RRenderSetRightCallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonRight, f, d, NULL); }
+void MEAPI RRenderSetUp2CallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonUp2, f, d, NULL); }
+void MEAPI RRenderSetDown2CallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonDown2, f, d, NULL); }
+void MEAPI RRenderSetLeft2CallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonLeft2, f, d, NULL); }
+void MEAPI RRenderSetRight2CallBack(RRender *rc, RButtonPressCallBack f, void *d) { setButton(rc, kRButtonRight2, f, d, NULL); }
+void MEAPI RRenderSetUpCallBackWithText(RRender *rc, RButtonPressCallBack f, void *d, char *t) { setButton(rc, kRButtonUp, f, d, t); }
+void MEAPI RRenderSetDownCallBackWithText(RRender *rc, RButtonPressCallBack f, void *d, char *t) { setButton(rc, kRButtonDown, f, d, t); }
+void MEAPI RRenderSetLeftCallBackWithText(RRender *rc, RButtonPressCallBack f, void *d, char *t) { setButton(rc, kRButtonLeft, f, d, t); }
+void MEAPI RRenderSetRightCallBackWithText(RRender *rc, RButtonPressCallBack f, void *d, char *t) { setButton(rc, kRButtonRight, f, d, t); }
+void MEAPI RRenderSetUp2CallBackWithText(RRender *rc, RButtonPressCallBack f, void *d, char *t) { setButton(rc, kRButtonUp2, f, d, t); }
+void MEAPI RRenderSetDown2CallBackWithText(RRender *rc, RButtonPressCallBack f, void *d, char *t) { setButton(rc, kRButtonDown2, f, d, t); }
+void MEAPI RRenderSetLeft2CallBackWithText(RRender *rc, RButtonPressCallBack f, void *d, char *t) { setButton(rc, kRButtonLeft2, f, d, t); }
+void MEAPI RRenderSetRight2CallBackWithText(RRender *rc, RButtonPressCallBack f, void *d, char *t) { setButton(rc, kRButtonRight2, f, d, t); }
 
-void MEAPI RRenderSetActionNCallBack(RRender *rc, int N, RButtonPressCallBack func, void *userdata)
+void MEAPI RRenderSetActionNCallBackWithText(RRender *rc, int N, RButtonPressCallBack func, void *userdata, char *text)
 {
     if (!rc)
         return;
@@ -43,6 +60,26 @@ void MEAPI RRenderSetActionNCallBack(RRender *rc, int N, RButtonPressCallBack fu
     }
     rc->m_pCallBacks->m_Action[N].m_CallBack = func;
     rc->m_pCallBacks->m_Action[N].m_Userdata = userdata;
+    rc->m_pCallBacks->m_Action[N].m_Text = text;
+}
+
+void MEAPI RRenderSetActionNCallBack(RRender *rc, int N, RButtonPressCallBack func, void *userdata)
+{
+    RRenderSetActionNCallBackWithText(rc, N, func, userdata, NULL);
+}
+
+void MEAPI RRenderSetJoystickCallBackWithText(RRender *rc, RJoystickCallBack func, void *userdata, char *text)
+{
+    if (!rc)
+        return;
+    rc->m_pCallBacks->m_Joystick.m_CallBack = func;
+    rc->m_pCallBacks->m_Joystick.m_Userdata = userdata;
+    rc->m_pCallBacks->m_Joystick.m_Text = text;
+}
+
+void MEAPI RRenderSetJoystickCallBack(RRender *rc, RJoystickCallBack func, void *userdata)
+{
+    RRenderSetJoystickCallBackWithText(rc, func, userdata, NULL);
 }
 
 void MEAPI RRenderSetActionNKey(RRender *rc, const unsigned int N, const char key)
@@ -57,12 +94,18 @@ void MEAPI RRenderSetActionNKey(RRender *rc, const unsigned int N, const char ke
     rc->m_pCallBacks->m_actionKeys[N - 2] = (unsigned char)tolower((unsigned char)key);
 }
 
-void MEAPI RRenderSetMouseCallBack(RRender *rc, RMouseCallBack func, void *userdata)
+void MEAPI RRenderSetMouseCallBackWithText(RRender *rc, RMouseCallBack func, void *userdata, char *text)
 {
     if (!rc)
         return;
     rc->m_pCallBacks->m_Mouse.m_CallBack = func;
     rc->m_pCallBacks->m_Mouse.m_Userdata = userdata;
+    rc->m_pCallBacks->m_Mouse.m_Text = text;
+}
+
+void MEAPI RRenderSetMouseCallBack(RRender *rc, RMouseCallBack func, void *userdata)
+{
+    RRenderSetMouseCallBackWithText(rc, func, userdata, NULL);
 }
 
 static void press(RRender *rc, const RCallBackDataButton *b)
@@ -116,6 +159,10 @@ void RInputKey(RRender *rc, int key, int modifiers)
     case RKEY_PAGE_DOWN: RCameraPanZ(rc, -R_KEY_PAN); return;
     case RKEY_KP_ADD: case '=': RCameraZoom(rc, R_KEY_ZOOM); return;
     case RKEY_KP_SUBTRACT: case '-': RCameraZoom(rc, -R_KEY_ZOOM); return;
+    case RKEY_KP_1: (modifiers & RCONTROL ? RCameraSetBackView : RCameraSetFrontView)(rc); return;
+    case RKEY_KP_3: (modifiers & RCONTROL ? RCameraSetLeftView : RCameraSetRightView)(rc); return;
+    case RKEY_KP_7: (modifiers & RCONTROL ? RCameraSetBottomView : RCameraSetTopView)(rc); return;
+    case RKEY_KP_5: RCameraSetOrthographic(rc, !RCameraIsOrthographic(rc)); return;
     case RKEY_F2: /* Shift+F2: textures on and off */
         if (modifiers & RSHIFT)
             rc->m_options.m_bTextures = rc->m_options.m_bTextures ? MEFALSE : METRUE;

@@ -81,6 +81,11 @@ struct RRenderPrivate {
     int fullscreen;          /**< F9: the window covers its monitor (offscreen: only remembered) */
     unsigned int profileFrames; /**< -profile N: frames to profile (0: -timeout's, or 1,000) */
     struct RDebugDraw *debugDraw; /**< lines from MeDebugDrawAPI (RRenderSetDebugDrawing), or NULL */
+    struct RNLine *nlines;   /**< every native line of the context (RNLine.c), listed or not */
+    float *immediate;        /**< RLineAdd's lines: per end x y z r g b a (R_LINE_FLOATS floats) */
+    int immediateEnds, immediateCapacity; /**< ends written, and room (ends) */
+    RParticleSystem *particles; /**< the particle systems drawn (RParticleSystemAddToList) */
+    int noParticles;         /**< the F12 menu turned particle systems off */
     RTexture textures[R_MAX_TEXTURES]; /**< RRenderTextureCreate's, by id */
     int textureCount;
     char title[128];
@@ -137,6 +142,24 @@ int RRenderResize(RRender *rc, int width, int height);
 void RRenderSetFrameRateLock(RRender *rc, int on);
 /** F9: fullscreen on or off (a window only; offscreen the state is kept for when it matters). */
 void RRenderSetFullscreen(RRender *rc, int on);
+
+/* ---- RNLine.c, RParticles.c, RGLNative.c: native lines and particles ------------------------ */
+/** Floats per line end handed to the GL: position, then colour (RGBA). */
+#define R_LINE_FLOATS 7
+/** Every line end to draw this frame (the native lines listed, transformed to world, then RLineAdd's)
+ *  into *ends (grown as needed, R_LINE_FLOATS floats an end, *capacity ends of room). Returns the
+ *  count of ends, or −1 when out of memory. */
+int RNLineGather(RRender *rc, float **ends, int *capacity);
+/** The context goes: its native lines and RLineAdd's freed, its particle systems' list emptied
+ *  (and them freed: as graphics in the lists, they go with the context). */
+void RNLineContextGone(RRender *rc);
+void RParticlesContextGone(RRender *rc);
+/** Programs and buffers for native lines and particles (the GL context current); NULL with a message. */
+struct RGLNative *RGLNativeCreate(void);
+void RGLNativeDestroy(struct RGLNative *n);
+/** Draw rc's native lines and particle systems into the bound framebuffer (view and projection from
+ *  the camera); `texture` gives a texture id's GL name (0: none). */
+void RGLNativeDraw(struct RGLNative *n, RRender *rc, unsigned int (*texture)(void *data, int id), void *data);
 
 /* ---- RCamera.c ----------------------------------------------------------------------------- */
 /** Karma's default camera and projection for a context whose size is set. */

@@ -2,6 +2,7 @@
  * of cylinders, cones and sphyls, as in Mcd), with outward normals and counter-clockwise fronts. */
 #include <math.h>
 
+#include "RGeometryUtils.h"
 #include "RInternal.h"
 
 #define R_PI 3.14159265358979323846
@@ -256,4 +257,13 @@ RGraphic *MEAPI RGraphicGroundPlaneCreate(RRender *rc, AcmeReal side_length, int
     rg->m_pObject->m_Matrix[3][1] = y_position;
     rg->m_private->checkerCell = (float)(side_length / triangles_per_side);
     return rg;
+}
+
+void MEAPI RSetVertex(RObjectVertex *vertex, const MeVector3 position, const MeVector3 normal, AcmeReal u, AcmeReal v)
+{
+    if (!vertex || !position || !normal)
+        return;
+    vertex->m_X = position[0], vertex->m_Y = position[1], vertex->m_Z = position[2];
+    vertex->m_NX = normal[0], vertex->m_NY = normal[1], vertex->m_NZ = normal[2];
+    vertex->m_U = u, vertex->m_V = v;
 }

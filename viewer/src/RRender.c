@@ -3,6 +3,7 @@
 #define _POSIX_C_SOURCE 200809L /* nanosleep */
 #include <errno.h>
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -244,6 +245,8 @@ int MEAPI RRenderContextDestroy(RRender *rc)
     RHelpContextGone(rc);
     RDebugDrawDestroy(rc);
     RPerformanceBarDestroy(rc);
+    RNLineContextGone(rc);
+    RParticlesContextGone(rc);
     deleteList(rc, 0);
     deleteList(rc, 1); /* the "Paused" text too */
     RGLDestroy(p->gl);
@@ -307,6 +310,44 @@ void MEAPI RRenderSetWireframe(RRender *rc, MeBool b)
 {
     if (rc)
         rc->m_options.m_bWireFrame = b ? METRUE : MEFALSE;
+}
+
+void MEAPI RRenderSetBackgroundColor(RRender *rc, const float color[4])
+{
+    if (!rc || !color) {
+        R_REPORT(ME_ERR_NULL_ARGUMENT, "RRenderSetBackgroundColor", "NULL render context or colour");
+        return;
+    }
+    for (int i = 0; i < 4; i++)
+        if (!isfinite(color[i])) {
+            R_REPORT(ME_ERR_NONFINITE_ARGUMENT, "RRenderSetBackgroundColor", "the colour is not finite");
+            return;
+        }
+    for (int i = 0; i < 4; i++)
+        rc->m_backgroundColour[i] = color[i];
+}
+
+/** Sides a round primitive may have (RRenderSetSphereResolution). */
+#define R_MIN_SPHERE_RES 3
+#define R_MAX_SPHERE_RES 256
+
+void MEAPI RRenderSetSphereResolution(RRender *rc, int res)
+{
+    if (!rc) {
+        R_REPORT(ME_ERR_NULL_ARGUMENT, "RRenderSetSphereResolution", "NULL render context");
+        return;
+    }
+    if (res < R_MIN_SPHERE_RES || res > R_MAX_SPHERE_RES) {
+        R_REPORT(ME_ERR_ARGUMENT_RANGE, "RRenderSetSphereResolution", "%d sides: %d to %d", res, R_MIN_SPHERE_RES,
+                 R_MAX_SPHERE_RES);
+        return;
+    }
+    rc->m_sphereRes = res;
+}
+
+int MEAPI RRenderGetSphereResolution(RRender *rc)
+{
+    return rc ? rc->m_sphereRes : 0;
 }
 
 void MEAPI RRenderGetSize(RRender *rc, int *width, int *height)

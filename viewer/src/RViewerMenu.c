@@ -1,5 +1,6 @@
 /* RViewerMenu.c -- the viewer's own menu, F12 (Karma's context menu): pause, single step,
- * wireframe, shadows, frame rate, performance bar, help, exit. */
+ * wireframe, textures, shadows, particles, frame rate, frame-rate lock, aspect lock, performance bar,
+ * help, exit. */
 #include "RInternal.h"
 
 static int pauseEntry(RRender *rc, int set)
@@ -30,6 +31,34 @@ static int shadowsEntry(RRender *rc, int set)
     if (set >= 0)
         rc->m_private->noShadows = !rc->m_private->noShadows;
     return !rc->m_private->noShadows;
+}
+
+static int texturesEntry(RRender *rc, int set)
+{
+    if (set >= 0)
+        rc->m_options.m_bTextures = rc->m_options.m_bTextures ? MEFALSE : METRUE;
+    return rc->m_options.m_bTextures != 0;
+}
+
+static int particlesEntry(RRender *rc, int set)
+{
+    if (set >= 0)
+        rc->m_private->noParticles = !rc->m_private->noParticles;
+    return !rc->m_private->noParticles;
+}
+
+static int frameLockEntry(RRender *rc, int set)
+{
+    if (set >= 0)
+        RRenderSetFrameRateLock(rc, !rc->m_private->frameLock);
+    return rc->m_private->frameLock != 0;
+}
+
+static int aspectLockEntry(RRender *rc, int set)
+{
+    if (set >= 0)
+        rc->m_private->aspectLock = !rc->m_private->aspectLock;
+    return rc->m_private->aspectLock != 0;
 }
 
 static int fpsEntry(RRender *rc, int set)
@@ -82,6 +111,10 @@ RMenu *RViewerMenu(RRender *rc)
     RMenuAddViewerEntry(m, "Shadows", shadowsEntry);
     RMenuAddViewerEntry(m, "Frame rate", fpsEntry);
     RMenuAddViewerEntry(m, "Performance bar", barEntry);
+    RMenuAddViewerEntry(m, "Textures", texturesEntry);
+    RMenuAddViewerEntry(m, "Particles", particlesEntry);
+    RMenuAddViewerEntry(m, "Frame-rate lock", frameLockEntry);
+    RMenuAddViewerEntry(m, "Aspect lock", aspectLockEntry);
     RMenuAddViewerEntry(m, "Help", helpEntry);
     RMenuAddViewerEntry(m, "Exit", exitEntry);
     p->menuViewer = m; /* destroyed with the context (RMenuContextGone) */
