@@ -20,8 +20,6 @@ void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIte
     w->wasFree = KEA_ALLOC(arena, unsigned char, n);
     w->localW = KEA_ALLOC(arena, MeReal, cap);
     w->rowBlock = KEA_ALLOC(arena, int, n);
-    w->segmentPos = KEA_ALLOC(arena, int, n);
-    w->segmentBlock = KEA_ALLOC(arena, int, n);
     w->pieces = KEA_ALLOC(arena, KeaFreePiece, n);
     w->localR = KEA_ALLOC(arena, MeReal, cap);
     w->localLo = KEA_ALLOC(arena, MeReal, cap);
@@ -32,6 +30,7 @@ void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIte
     w->freeRows = KEA_ALLOC(arena, int, n);
     w->lo = KEA_ALLOC(arena, MeReal, n);
     w->hi = KEA_ALLOC(arena, MeReal, n);
+    w->xFree = KEA_ALLOC(arena, MeReal, n);
     w->grad = KEA_ALLOC(arena, MeReal, n);
     w->epsFree = KEA_ALLOC(arena, MeReal, n);
     w->step = KEA_ALLOC(arena, MeReal, n);

@@ -147,8 +147,7 @@ KEA_ALWAYS_INLINE MeReal KeaContactBlockStep(const KeaProblem *problem, KeaItera
     const MeReal *mu = problem->mu + s, *inv = w->blockInv + w->blockMatrix[block];
     MeReal wb[3], xb[3], xn[3], d[3], t[3], bound, bound2, worst;
     int r, fits = 0;
-    for (r = 0; r < 3; ++r)
-        wb[r] = onWorld ? KeaRowVel4World(&w->J[s + r], v0) : KeaRowVel4(&w->J[s + r], v0, v1);
+    KeaContactGather(&w->J[s], v0, onWorld ? NULL : v1, wb);
     for (r = 0; r < 3; ++r) {
         xb[r] = x[s + r];
         wb[r] = wb[r] + w->eps[s + r] * xb[r] - problem->rhs[s + r];

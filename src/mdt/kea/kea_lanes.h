@@ -109,6 +109,12 @@ static inline KeaLanes KeaLanesDot2(const MeReal *a, const MeReal *b, const MeRe
     return KeaLanesAdd(KeaLanesMul(KeaLanesLoad(a), KeaLanesLoad(b)), KeaLanesMul(KeaLanesLoad(c), KeaLanesLoad(d)));
 }
 
+/** KeaLanesDot2 with b and d already in lanes (the same products and sum). */
+static inline KeaLanes KeaLanesDot2L(const MeReal *a, KeaLanes b, const MeReal *c, KeaLanes d)
+{
+    return KeaLanesAdd(KeaLanesMul(KeaLanesLoad(a), b), KeaLanesMul(KeaLanesLoad(c), d));
+}
+
 /** v += u * s on a padded 3-vector (pad stays 0 when u's is). */
 static inline void KeaLanesAddScaled(MeReal *v, const MeReal *u, KeaLanes s)
 {
