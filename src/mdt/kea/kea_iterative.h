@@ -172,6 +172,9 @@ typedef struct KeaIterativeWork {
                                 a preconditioner step is then one small matrix-vector product,
                                 no divisions (each block is solved once a sweep, and
                                 again per SM step when free, but factored once a step) */
+    MeReal *contactInv;    /**< a declared contact's A_bb^-1 (when factored) as three columns padded to 4,
+                                at contactInv + 4 s for the contact whose first row is s: its product
+                                with a vector is three lanes (SM's preconditioner) */
     unsigned char *blockFactored; /**< the factor exists (A_bb safely positive definite) */
     unsigned char *blockContact;  /**< KEA_CONTACT_* kind of a declared contact's block (KeaContact), else 0 */
     unsigned char *wasFree;       /**< SM: the row was free at the last SM step (or the warm start) */

@@ -109,13 +109,15 @@ static void KeaFindSegments(KeaIterativeWork *w, int nFree)
 static void KeaPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z)
 {
     const KeaFreePiece *pieces = w->pieces;
-    const MeReal *blockInv = w->blockInv, *invDiag = w->invDiag;
+    const MeReal *blockInv = w->blockInv, *invDiag = w->invDiag, *contactInv = w->contactInv;
     const int nPieces = w->nPieces;
     int k;
     for (k = 0; k < nPieces; ++k) {
         const KeaFreePiece *piece = &pieces[k];
         const int p = piece->pos;
-        if (piece->rows == 1)
+        if (piece->kind)
+            KeaLanesStore3(z + p, KeaContactInverseApply(contactInv + 4 * piece->row, res[p], res[p + 1], res[p + 2]));
+        else if (piece->rows == 1)
             z[p] = res[p] * invDiag[piece->row];
         else
             KeaBlockSymmetricApply(piece->rows, blockInv + piece->matrix, res + p, z + p);
