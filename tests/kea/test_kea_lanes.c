@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "kea_test_problems.h"
-#include "mdt/kea/kea_internal.h"
+#include "mdt/kea/kea_block_kernels.h"
 
 /* Random values of mixed sign and magnitude (including exact zeros), as solver data has. */
 static MeReal random_value(KtRng *r)
@@ -220,6 +220,70 @@ static void finite_lanes_are_the_scalar_test(void **state)
         }
 }
 
+/* The iterative path's contact kernels (kea_iterative.h, kea_block_kernels.h), which load a
+ * contact's bodies, impulses and inverse once for its three rows, give the bits of the row kernels
+ * they stand for: the gather KeaRowVel4 (KeaRowVel4World on the world) per row, the scatter three
+ * KeaRowApply4 in row order, the inverse's padded columns KeaBlockSymmetricApply for m = 3; and
+ * KeaLanesStore3 writes three lanes and leaves the fourth place alone. */
+static void contact_kernels_are_the_row_kernels(void **state)
+{
+    KtRng rng = {4242};
+    int trial, r, k;
+    (void)state;
+    for (trial = 0; trial < 500; ++trial) {
+        KeaJacobianRow J[3];
+        KeaVel4 v0, v1, a0, a1, b0, b1;
+        MeReal inv[9], columns[12], in[3], out[3], got[4], gathered[3], d[3];
+        memset(J, 0, sizeof J);
+        memset(&v0, 0, sizeof v0);
+        memset(&v1, 0, sizeof v1);
+        for (r = 0; r < 3; ++r)
+            for (k = 0; k < 3; ++k) {
+                J[r].lin0[k] = random_value(&rng);
+                J[r].ang0[k] = random_value(&rng);
+                J[r].lin1[k] = random_value(&rng);
+                J[r].ang1[k] = random_value(&rng);
+            }
+        for (k = 0; k < 3; ++k) {
+            v0.lin[k] = random_value(&rng);
+            v0.ang[k] = random_value(&rng);
+            v1.lin[k] = random_value(&rng);
+            v1.ang[k] = random_value(&rng);
+            in[k] = random_value(&rng);
+            d[k] = random_value(&rng);
+        }
+        KeaContactGather(J, &v0, &v1, gathered);
+        for (r = 0; r < 3; ++r)
+            assert_true(same_bits(gathered[r], KeaRowVel4(&J[r], &v0, &v1)));
+        KeaContactGather(J, &v0, NULL, gathered);
+        for (r = 0; r < 3; ++r)
+            assert_true(same_bits(gathered[r], KeaRowVel4World(&J[r], &v0)));
+
+        a0 = b0 = v0;
+        a1 = b1 = v1;
+        KeaContactScatter(J, d, &a0, &a1);
+        for (r = 0; r < 3; ++r)
+            KeaRowApply4(&J[r], d[r], &b0, &b1);
+        assert_memory_equal(&a0, &b0, sizeof a0);
+        assert_memory_equal(&a1, &b1, sizeof a1);
+
+        for (r = 0; r < 3; ++r) /* a symmetric 3 x 3 and its padded columns */
+            for (k = 0; k <= r; ++k)
+                inv[3 * r + k] = inv[3 * k + r] = random_value(&rng);
+        for (k = 0; k < 3; ++k) {
+            for (r = 0; r < 3; ++r)
+                columns[4 * k + r] = inv[3 * k + r];
+            columns[4 * k + 3] = ME_R(0.0);
+        }
+        KeaBlockSymmetricApply(3, inv, in, out);
+        got[3] = ME_R(-7.0);
+        KeaLanesStore3(got, KeaContactInverseApply(columns, in[0], in[1], in[2]));
+        for (r = 0; r < 3; ++r)
+            assert_true(same_bits(got[r], out[r]));
+        assert_true(same_bits(got[3], ME_R(-7.0)));
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -228,6 +292,7 @@ int main(void)
         cmocka_unit_test(clamp_is_the_middle_value),
         cmocka_unit_test(inverse_mass_rows_match_the_scalar_ones),
         cmocka_unit_test(finite_lanes_are_the_scalar_test),
+        cmocka_unit_test(contact_kernels_are_the_row_kernels),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -22,6 +22,16 @@ static inline void KeaBlockSymmetricApply(int m, const MeReal *M, const MeReal *
         out[r] = (M[r] * in[0] + M[3 + r] * in[1]) + M[6 + r] * in[2];
 }
 
+/* A declared contact's A_bb^-1 in, from its three padded columns (KeaIterativeWork.contactInv): lane
+ * r is KeaBlockSymmetricApply's out[r] for m = 3, the same sums in the same order (pad lane 0
+ * for finite in). */
+static inline KeaLanes KeaContactInverseApply(const MeReal *columns, MeReal in0, MeReal in1, MeReal in2)
+{
+    return KeaLanesAdd(KeaLanesAdd(KeaLanesMul(KeaLanesLoad(columns), KeaLanesSplat(in0)),
+                                   KeaLanesMul(KeaLanesLoad(columns + 4), KeaLanesSplat(in1))),
+                       KeaLanesMul(KeaLanesLoad(columns + 8), KeaLanesSplat(in2)));
+}
+
 /* out = J_b (v0, v1) for the block of m rows from s (all on the same two bodies): a block of more
  * than KEA_GATHER_ROW_BY_ROW rows from its transpose JT (12 x m), column by column, each out[r] its own running sum
  * over the 12 components in order; a smaller one row by row. */
@@ -81,15 +91,14 @@ static inline void KeaBlockScatterSized(const int m, const KeaJacobianRow *B, co
     }
 }
 
-/* v += sum_r B_r d_r over a contact's three rows, on body half `half` of B. */
-static inline void KeaContactScatterHalf(const KeaJacobianRow *B, const MeReal *d, int half, KeaVel4 *v)
+/* v += sum_r B_r d_r over a contact's three rows, on body half `half` of B, d splatted. */
+static inline void KeaContactScatterHalf(const KeaJacobianRow *B, const KeaLanes *d, int half, KeaVel4 *v)
 {
     KeaLanes lin = KeaLanesLoad(v->lin), ang = KeaLanesLoad(v->ang);
     int r;
     for (r = 0; r < 3; ++r) {
-        const KeaLanes dr = KeaLanesSplat(d[r]);
-        lin = KeaLanesAdd(lin, KeaLanesMul(KeaLanesLoad(half ? B[r].lin1 : B[r].lin0), dr));
-        ang = KeaLanesAdd(ang, KeaLanesMul(KeaLanesLoad(half ? B[r].ang1 : B[r].ang0), dr));
+        lin = KeaLanesAdd(lin, KeaLanesMul(KeaLanesLoad(half ? B[r].lin1 : B[r].lin0), d[r]));
+        ang = KeaLanesAdd(ang, KeaLanesMul(KeaLanesLoad(half ? B[r].ang1 : B[r].ang0), d[r]));
     }
     KeaLanesStore(v->lin, lin);
     KeaLanesStore(v->ang, ang);
@@ -97,12 +106,14 @@ static inline void KeaContactScatterHalf(const KeaJacobianRow *B, const MeReal *
 
 /* KeaBlockScatterSized for a contact's three rows (v0 != v1; v1 NULL on the world) without its
  * test per row: a row with d_r = 0 adds B_r 0, zeros (the same values; only a -0 in dv may become
- * +0, which no later comparison or product tells apart). */
+ * +0, which no later comparison or product tells apart). d is read once for both halves (a store
+ * to v0 could alias it for the compiler). */
 static inline void KeaContactScatter(const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
 {
-    KeaContactScatterHalf(B, d, 0, v0);
+    const KeaLanes ds[3] = {KeaLanesSplat(d[0]), KeaLanesSplat(d[1]), KeaLanesSplat(d[2])};
+    KeaContactScatterHalf(B, ds, 0, v0);
     if (v1)
-        KeaContactScatterHalf(B, d, 1, v1);
+        KeaContactScatterHalf(B, ds, 1, v1);
 }
 
 static inline void KeaBlockScatter(int m, const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)

@@ -15,13 +15,12 @@ void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIte
     w->blockA = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)cap);
     w->blockL = KEA_ALLOC(arena, MeReal, (size_t)cap * (size_t)cap);
     w->blockInv = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)cap);
+    w->contactInv = KEA_ALLOC(arena, MeReal, (size_t)n * 4);
     w->blockFactored = KEA_ALLOC(arena, unsigned char, n);
     w->blockContact = KEA_ALLOC(arena, unsigned char, n);
     w->wasFree = KEA_ALLOC(arena, unsigned char, n);
     w->localW = KEA_ALLOC(arena, MeReal, cap);
     w->rowBlock = KEA_ALLOC(arena, int, n);
-    w->segmentPos = KEA_ALLOC(arena, int, n);
-    w->segmentBlock = KEA_ALLOC(arena, int, n);
     w->pieces = KEA_ALLOC(arena, KeaFreePiece, n);
     w->localR = KEA_ALLOC(arena, MeReal, cap);
     w->localLo = KEA_ALLOC(arena, MeReal, cap);
@@ -32,6 +31,7 @@ void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIte
     w->freeRows = KEA_ALLOC(arena, int, n);
     w->lo = KEA_ALLOC(arena, MeReal, n);
     w->hi = KEA_ALLOC(arena, MeReal, n);
+    w->xFree = KEA_ALLOC(arena, MeReal, n);
     w->grad = KEA_ALLOC(arena, MeReal, n);
     w->epsFree = KEA_ALLOC(arena, MeReal, n);
     w->step = KEA_ALLOC(arena, MeReal, n);
@@ -208,6 +208,14 @@ void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
             offset += m * m;
         }
         w->blockContact[w->nBlocks] = 0;
+        if (contact && w->blockFactored[w->nBlocks]) { /* its inverse's columns, padded */
+            for (r = 0; r < 3; ++r) {
+                w->contactInv[4 * i + 4 * r + 0] = w->blockInv[offset - 9 + 3 * r + 0];
+                w->contactInv[4 * i + 4 * r + 1] = w->blockInv[offset - 9 + 3 * r + 1];
+                w->contactInv[4 * i + 4 * r + 2] = w->blockInv[offset - 9 + 3 * r + 2];
+                w->contactInv[4 * i + 4 * r + 3] = ME_R(0.0);
+            }
+        }
         if (contact) {
             w->blockContact[w->nBlocks] = b[1] < 0 ? KEA_CONTACT_WORLD : KEA_CONTACT_BODIES;
             ++w->nContactBlocks;

@@ -147,8 +147,7 @@ KEA_ALWAYS_INLINE MeReal KeaContactBlockStep(const KeaProblem *problem, KeaItera
     const MeReal *mu = problem->mu + s, *inv = w->blockInv + w->blockMatrix[block];
     MeReal wb[3], xb[3], xn[3], d[3], t[3], bound, bound2, worst;
     int r, fits = 0;
-    for (r = 0; r < 3; ++r)
-        wb[r] = onWorld ? KeaRowVel4World(&w->J[s + r], v0) : KeaRowVel4(&w->J[s + r], v0, v1);
+    KeaContactGather(&w->J[s], v0, onWorld ? NULL : v1, wb);
     for (r = 0; r < 3; ++r) {
         xb[r] = x[s + r];
         wb[r] = wb[r] + w->eps[s + r] * xb[r] - problem->rhs[s + r];
@@ -165,7 +164,9 @@ KEA_ALWAYS_INLINE MeReal KeaContactBlockStep(const KeaProblem *problem, KeaItera
                                       KeaFabs(xb[r] - KeaClamp(xb[r] - wb[r] * w->invDiag[s + r], -bound, bound)));
         }
     }
-    /* every row free: x_b - A_bb^-1 w_b, if it keeps within the bounds its own normal gives */
+    /* every row free: x_b - A_bb^-1 w_b, if it keeps within the bounds its own normal gives (in
+     * scalars: the lanes of KeaContactInverseApply cost more here, where the result is wanted
+     * row by row) */
     if (w->blockFactored[block]) {
         for (r = 0; r < 3; ++r)
             t[r] = (inv[r] * wb[0] + inv[3 + r] * wb[1]) + inv[6 + r] * wb[2];

@@ -84,8 +84,8 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
  * extra effort's threshold in a round's last sweep) matters, so once a row is above it the block
  * steps stop measuring (a sizeable part of a contact step's work, and a pile rarely converges within
  * its sweeps); the steps themselves are the same either way. */
-static MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params, MeReal *x,
-                       KeaStats *stats, int backward, MeReal measureUpTo)
+KEA_NOINLINE MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
+                             MeReal *x, KeaStats *stats, int backward, MeReal measureUpTo)
 {
     const MeReal omega = params->sor > ME_R(0.0) && params->sor < ME_R(2.0) ? params->sor : ME_R(1.0);
     MeReal worst = ME_R(0.0);
@@ -165,55 +165,65 @@ static int KeaEffortAllowed(const KeaProblem *problem, const KeaParameters *para
     return 1;
 }
 
+/* The solve's set-up, before the first sweep: the padded rows (B = M^-1 J^T, the diagonal, J with
+ * its pads and world halves zeroed), the blocks, and the warm start (x clamped, bounds read from the
+ * unclamped x as the direct path does, then dv and which rows are free). Not inlined, so that a
+ * profile shows the set-up apart from the sweeps. */
+KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParameters *params, KeaIterativeWork *w,
+                                    MeReal *x, KeaBodyVelocity *dv)
+{
+    const int n = problem->nRows, nb = problem->nBodies;
+    int i, b, k;
+    KeaBodyColumnsFill(problem, w->bodyColumns);
+    for (i = 0; i < n; ++i) {
+        const int *rb = problem->rowBodies[i];
+        KeaJacobianRow *J = &w->J[i];
+        w->diag[i] = KeaRowInvMassJT4(problem, w->bodyColumns, i, &w->B[i]);
+        w->invDiag[i] = w->diag[i] > ME_R(0.0) ? ME_R(1.0) / w->diag[i] : ME_R(0.0);
+        w->eps[i] = problem->epsilon ? problem->epsilon[i] : ME_R(0.0);
+        *J = problem->J[i]; /* then the pads and the world's halves zeroed */
+        J->lin0[3] = J->ang0[3] = J->lin1[3] = J->ang1[3] = ME_R(0.0);
+        if (rb[0] < 0) {
+            memset(J->lin0, 0, sizeof J->lin0);
+            memset(J->ang0, 0, sizeof J->ang0);
+        }
+        if (rb[1] < 0) {
+            memset(J->lin1, 0, sizeof J->lin1);
+            memset(J->ang1, 0, sizeof J->ang1);
+        }
+        w->body[i][0] = rb[0] >= 0 ? rb[0] : nb;
+        w->body[i][1] = rb[1] >= 0 ? rb[1] : nb;
+    }
+    KeaSetUpBlocks(problem, w, KeaBlockCap(n, params->maxBlockRows));
+    for (i = 0; i < n; ++i)
+        KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
+    for (i = 0; i < n; ++i)
+        x[i] = KeaClamp(x[i], w->lo[i], w->hi[i]);
+    KeaBodyVelocityFromImpulses(problem, x, dv);
+    for (i = 0; i < n; ++i)
+        w->wasFree[i] = KeaRowIsFree(w, i, x[i], w->lo[i], w->hi[i]);
+    w->skippedLast = 0;
+    w->smRan = 0;
+    w->smUnpaid = 0;
+    memset(w->dv, 0, sizeof(KeaVel4) * (size_t)(nb + 1));
+    for (b = 0; b < nb; ++b)
+        for (k = 0; k < 3; ++k) {
+            w->dv[b].lin[k] = dv[b].lin[k];
+            w->dv[b].ang[k] = dv[b].ang[k];
+        }
+}
+
 KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
                             MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
 {
-    const int n = problem->nRows;
     KeaIterativeWork w;
     KeaStatus status = KeaStatusMaxIterations;
     const int nb = problem->nBodies;
     const int effort = KeaEffortAllowed(problem, params);
-    int i, it, b, k, limit;
+    int it, b, k, limit;
 
-    KeaIterativeLayout(arena, n, nb, KEA_MAX_BLOCK_ROWS, &w);
-    KeaBodyColumnsFill(problem, w.bodyColumns);
-    for (i = 0; i < n; ++i) {
-        const int *rb = problem->rowBodies[i];
-        const KeaJacobianRow *J = &problem->J[i];
-        w.diag[i] = KeaRowInvMassJT4(problem, w.bodyColumns, i, &w.B[i]);
-        w.invDiag[i] = w.diag[i] > ME_R(0.0) ? ME_R(1.0) / w.diag[i] : ME_R(0.0);
-        w.eps[i] = problem->epsilon ? problem->epsilon[i] : ME_R(0.0);
-        w.J[i] = *J; /* then the pads and the world's halves zeroed */
-        w.J[i].lin0[3] = w.J[i].ang0[3] = w.J[i].lin1[3] = w.J[i].ang1[3] = ME_R(0.0);
-        if (rb[0] < 0) {
-            memset(w.J[i].lin0, 0, sizeof w.J[i].lin0);
-            memset(w.J[i].ang0, 0, sizeof w.J[i].ang0);
-        }
-        if (rb[1] < 0) {
-            memset(w.J[i].lin1, 0, sizeof w.J[i].lin1);
-            memset(w.J[i].ang1, 0, sizeof w.J[i].ang1);
-        }
-        w.body[i][0] = rb[0] >= 0 ? rb[0] : nb;
-        w.body[i][1] = rb[1] >= 0 ? rb[1] : nb;
-    }
-    KeaSetUpBlocks(problem, &w, KeaBlockCap(n, params->maxBlockRows));
-    /* Warm start: clamp (bounds read from the unclamped x, as the direct path does), then dv. */
-    for (i = 0; i < n; ++i)
-        KeaRowBoundsInline(problem, x, i, &w.lo[i], &w.hi[i]);
-    for (i = 0; i < n; ++i)
-        x[i] = KeaClamp(x[i], w.lo[i], w.hi[i]);
-    KeaBodyVelocityFromImpulses(problem, x, dv);
-    for (i = 0; i < n; ++i)
-        w.wasFree[i] = KeaRowIsFree(&w, i, x[i], w.lo[i], w.hi[i]);
-    w.skippedLast = 0;
-    w.smRan = 0;
-    w.smUnpaid = 0;
-    memset(w.dv, 0, sizeof(KeaVel4) * (size_t)(nb + 1));
-    for (b = 0; b < nb; ++b)
-        for (k = 0; k < 3; ++k) {
-            w.dv[b].lin[k] = dv[b].lin[k];
-            w.dv[b].ang[k] = dv[b].ang[k];
-        }
+    KeaIterativeLayout(arena, problem->nRows, nb, KEA_MAX_BLOCK_ROWS, &w);
+    KeaIterativeSetUp(problem, params, &w, x, dv);
 
     /* maxIterations sweeps, then the extra effort (params->effortResidual, kea_tuning.h) if the
      * partition rests (KeaEffortAllowed): while the last sweep leaves a residual above it, two more

@@ -58,6 +58,15 @@
 #include "kea_internal.h"
 #include "kea_lanes.h"
 
+/* A stage of the solve that runs a few times a step (the set-up, a sweep) and is kept out of line,
+ * so that a profile (callgrind) shows it as a function of its own; a call per sweep costs nothing
+ * measurable. */
+#if defined(__GNUC__)
+#  define KEA_NOINLINE static __attribute__((noinline))
+#else
+#  define KEA_NOINLINE static
+#endif
+
 /** A body's velocity change with each 3-vector padded to 4 (pad 0). */
 typedef struct KeaVel4 {
     MeReal lin[4];
@@ -77,6 +86,28 @@ static inline MeReal KeaRowVel4(const KeaJacobianRow *J, const KeaVel4 *v0, cons
 static inline MeReal KeaRowVel4World(const KeaJacobianRow *J, const KeaVel4 *v0)
 {
     return KeaLanesSum3(KeaLanesDot2(J->lin0, v0->lin, J->ang0, v0->ang));
+}
+
+/** A contact's three rows J_r . (v0, v1) (v1 NULL: on the world, whose half adds exact zeros), the
+ *  bodies' lanes loaded once for the three: the sums of KeaRowVel4 / KeaRowVel4World, in their
+ *  order (a store to out could alias the bodies for the compiler, which would reload them). */
+static inline void KeaContactGather(const KeaJacobianRow *J, const KeaVel4 *v0, const KeaVel4 *v1, MeReal *out)
+{
+    const KeaLanes l0 = KeaLanesLoad(v0->lin), a0 = KeaLanesLoad(v0->ang);
+    MeReal o0, o1, o2;
+    if (v1) {
+        const KeaLanes l1 = KeaLanesLoad(v1->lin), a1 = KeaLanesLoad(v1->ang);
+        o0 = KeaLanesSum3(KeaLanesAdd(KeaLanesDot2L(J[0].lin0, l0, J[0].ang0, a0), KeaLanesDot2L(J[0].lin1, l1, J[0].ang1, a1)));
+        o1 = KeaLanesSum3(KeaLanesAdd(KeaLanesDot2L(J[1].lin0, l0, J[1].ang0, a0), KeaLanesDot2L(J[1].lin1, l1, J[1].ang1, a1)));
+        o2 = KeaLanesSum3(KeaLanesAdd(KeaLanesDot2L(J[2].lin0, l0, J[2].ang0, a0), KeaLanesDot2L(J[2].lin1, l1, J[2].ang1, a1)));
+    } else {
+        o0 = KeaLanesSum3(KeaLanesDot2L(J[0].lin0, l0, J[0].ang0, a0));
+        o1 = KeaLanesSum3(KeaLanesDot2L(J[1].lin0, l0, J[1].ang0, a0));
+        o2 = KeaLanesSum3(KeaLanesDot2L(J[2].lin0, l0, J[2].ang0, a0));
+    }
+    out[0] = o0;
+    out[1] = o1;
+    out[2] = o2;
 }
 
 /** J_r . B_c of two padded rows: KeaRowVel4 with B_c's halves as the two bodies' velocities. */
@@ -111,6 +142,7 @@ typedef struct KeaFreePiece {
     int rows;     /**< 1 for a row on its own, else the block's size */
     int kind;     /**< 0, or the segment's KEA_CONTACT_* kind when it is a declared contact */
     int body[2];  /**< the row halves' bodies (the world: nb) */
+    int matrix;   /**< a segment: its block's offset in blockInv (the preconditioner); else -1 */
 } KeaFreePiece;
 
 /** What one sweep carries from block to block and hands to each block step: a local of KeaSweep
@@ -140,6 +172,9 @@ typedef struct KeaIterativeWork {
                                 a preconditioner step is then one small matrix-vector product,
                                 no divisions (each block is solved once a sweep, and
                                 again per SM step when free, but factored once a step) */
+    MeReal *contactInv;    /**< a declared contact's A_bb^-1 (when factored) as three columns padded to 4,
+                                at contactInv + 4 s for the contact whose first row is s: its product
+                                with a vector is three lanes (SM's preconditioner) */
     unsigned char *blockFactored; /**< the factor exists (A_bb safely positive definite) */
     unsigned char *blockContact;  /**< KEA_CONTACT_* kind of a declared contact's block (KeaContact), else 0 */
     unsigned char *wasFree;       /**< SM: the row was free at the last SM step (or the warm start) */
@@ -155,15 +190,17 @@ typedef struct KeaIterativeWork {
                                        the last sweep (tallied by its steps) */
     MeReal *localW;        /**< a block's w */
     int *rowBlock;         /**< block of each row */
-    int *segmentPos, *segmentBlock, nSegments; /**< SM: free blocks preconditioned by their factor */
-    KeaFreePiece *pieces;  /**< SM: the free list as rows on their own and segments, in order */
+    KeaFreePiece *pieces;  /**< SM: the free list as rows on their own and segments (free blocks,
+                                preconditioned by their inverse), in order */
     int nPieces;
     MeReal *localR, *localLo, *localHi, *localX; /**< a block's LCP (maxBlockRows each) */
     int *localLink;
     KeaDenseWork *dense;   /**< the dense solver, sized for maxBlockRows */
     /* Subspace minimisation: */
     int *freeRows;         /**< rows strictly inside their bounds */
-    MeReal *lo, *hi;       /**< bounds frozen for the SM step (by row) */
+    MeReal *lo, *hi;       /**< the warm start's bounds (by row); then SM's, frozen for its step
+                                (by position in the free list) */
+    MeReal *xFree;         /**< SM: x on the free rows (by position), as the step found it */
     MeReal *grad;          /**< w on the free rows (by position) */
     MeReal *epsFree;       /**< eps of the free rows (by position) */
     MeReal *step;          /**< CG solution delta */

@@ -19,6 +19,12 @@ typedef __m128 KeaLanes;
 
 static inline KeaLanes KeaLanesLoad(const MeReal *p) { return _mm_loadu_ps(p); }
 static inline void KeaLanesStore(MeReal *p, KeaLanes a) { _mm_storeu_ps(p, a); }
+/** Lanes 0-2 to p[0..2] (p[3] untouched). */
+static inline void KeaLanesStore3(MeReal *p, KeaLanes a)
+{
+    _mm_storel_pi((__m64 *)(void *)p, a);
+    _mm_store_ss(p + 2, _mm_movehl_ps(a, a));
+}
 static inline KeaLanes KeaLanesAdd(KeaLanes a, KeaLanes b) { return _mm_add_ps(a, b); }
 static inline KeaLanes KeaLanesSub(KeaLanes a, KeaLanes b) { return _mm_sub_ps(a, b); }
 static inline KeaLanes KeaLanesMul(KeaLanes a, KeaLanes b) { return _mm_mul_ps(a, b); }
@@ -60,6 +66,12 @@ static inline void KeaLanesStore(MeReal *p, KeaLanes a)
 {
     int k;
     for (k = 0; k < 4; ++k)
+        p[k] = a.v[k];
+}
+static inline void KeaLanesStore3(MeReal *p, KeaLanes a)
+{
+    int k;
+    for (k = 0; k < 3; ++k)
         p[k] = a.v[k];
 }
 static inline KeaLanes KeaLanesAdd(KeaLanes a, KeaLanes b)
@@ -107,6 +119,12 @@ static inline int KeaLanesFinite3x4(const MeReal *a, const MeReal *b, const MeRe
 static inline KeaLanes KeaLanesDot2(const MeReal *a, const MeReal *b, const MeReal *c, const MeReal *d)
 {
     return KeaLanesAdd(KeaLanesMul(KeaLanesLoad(a), KeaLanesLoad(b)), KeaLanesMul(KeaLanesLoad(c), KeaLanesLoad(d)));
+}
+
+/** KeaLanesDot2 with b and d already in lanes (the same products and sum). */
+static inline KeaLanes KeaLanesDot2L(const MeReal *a, KeaLanes b, const MeReal *c, KeaLanes d)
+{
+    return KeaLanesAdd(KeaLanesMul(KeaLanesLoad(a), b), KeaLanesMul(KeaLanesLoad(c), d));
 }
 
 /** v += u * s on a padded 3-vector (pad stays 0 when u's is). */

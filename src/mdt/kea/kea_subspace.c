@@ -30,22 +30,27 @@
 
 /* dvTmp = M^-1 J_F^T v (v by position in the free list), a piece (KeaFindSegments) at a time in
  * free-list order: a segment through the sweep's block kernels (a contact's world half not
- * written), a row on its own by itself. */
+ * written), a row on its own by itself. The work's arrays are read into locals once: a four-lane
+ * store may alias anything for the compiler, which would reload them for every piece. */
 static void KeaScatter(const KeaProblem *problem, const KeaIterativeWork *w, const MeReal *v)
 {
+    const KeaFreePiece *pieces = w->pieces;
+    const KeaJacobianRow *B = w->B;
+    KeaVel4 *dvTmp = w->dvTmp;
+    const int nPieces = w->nPieces;
     int k;
-    memset(w->dvTmp, 0, sizeof(KeaVel4) * (size_t)(problem->nBodies + 1));
-    for (k = 0; k < w->nPieces; ++k) {
-        const KeaFreePiece *piece = &w->pieces[k];
-        KeaVel4 *v0 = &w->dvTmp[piece->body[0]], *v1 = &w->dvTmp[piece->body[1]];
+    memset(dvTmp, 0, sizeof(KeaVel4) * (size_t)(problem->nBodies + 1));
+    for (k = 0; k < nPieces; ++k) {
+        const KeaFreePiece *piece = &pieces[k];
+        KeaVel4 *v0 = &dvTmp[piece->body[0]], *v1 = &dvTmp[piece->body[1]];
         const MeReal *vp = v + piece->pos;
-        if (piece->rows == 1) {
+        if (piece->kind) {
+            KeaContactScatter(&B[piece->row], vp, v0, piece->kind == KEA_CONTACT_WORLD ? NULL : v1);
+        } else if (piece->rows == 1) {
             if (vp[0] != ME_R(0.0))
-                KeaRowApply4(&w->B[piece->row], vp[0], v0, v1);
-        } else if (piece->kind) {
-            KeaContactScatter(&w->B[piece->row], vp, v0, piece->kind == KEA_CONTACT_WORLD ? NULL : v1);
+                KeaRowApply4(&B[piece->row], vp[0], v0, v1);
         } else {
-            KeaBlockScatter(piece->rows, &w->B[piece->row], vp, v0, v1);
+            KeaBlockScatter(piece->rows, &B[piece->row], vp, v0, v1);
         }
     }
 }
@@ -53,25 +58,20 @@ static void KeaScatter(const KeaProblem *problem, const KeaIterativeWork *w, con
 /* out[p] = J_i . dv of the free rows (a piece at a time, as KeaScatter). */
 static void KeaGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out)
 {
+    const KeaFreePiece *pieces = w->pieces;
+    const KeaJacobianRow *J = w->J;
+    const int nPieces = w->nPieces;
     int k;
-    for (k = 0; k < w->nPieces; ++k) {
-        const KeaFreePiece *piece = &w->pieces[k];
+    for (k = 0; k < nPieces; ++k) {
+        const KeaFreePiece *piece = &pieces[k];
         const KeaVel4 *v0 = &dv[piece->body[0]], *v1 = &dv[piece->body[1]];
-        const KeaJacobianRow *J = &w->J[piece->row];
         MeReal *o = out + piece->pos;
-        if (piece->rows == 1) {
-            o[0] = KeaRowVel4(J, v0, v1);
-        } else if (piece->kind == KEA_CONTACT_WORLD) { /* as the sweep's contact step gathers */
-            o[0] = KeaRowVel4World(&J[0], v0);
-            o[1] = KeaRowVel4World(&J[1], v0);
-            o[2] = KeaRowVel4World(&J[2], v0);
-        } else if (piece->kind) {
-            o[0] = KeaRowVel4(&J[0], v0, v1);
-            o[1] = KeaRowVel4(&J[1], v0, v1);
-            o[2] = KeaRowVel4(&J[2], v0, v1);
-        } else {
+        if (piece->kind) /* as the sweep's contact step gathers */
+            KeaContactGather(&J[piece->row], v0, piece->kind == KEA_CONTACT_WORLD ? NULL : v1, o);
+        else if (piece->rows == 1)
+            o[0] = KeaRowVel4(&J[piece->row], v0, v1);
+        else
             KeaBlockGather(w, piece->row, piece->rows, v0, v1, o);
-        }
     }
 }
 
@@ -80,7 +80,6 @@ static void KeaGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out)
 static void KeaFindSegments(KeaIterativeWork *w, int nFree)
 {
     int p = 0;
-    w->nSegments = 0;
     w->nPieces = 0;
     while (p < nFree) {
         const int i = w->freeRows[p], b = w->rowBlock[i];
@@ -92,32 +91,37 @@ static void KeaFindSegments(KeaIterativeWork *w, int nFree)
         piece->body[1] = w->body[i][1];
         if (m > 1 && i == w->blockStart[b] && w->blockFactored[b] && p + m <= nFree &&
             w->freeRows[p + m - 1] == i + m - 1) {
-            w->segmentPos[w->nSegments] = p;
-            w->segmentBlock[w->nSegments++] = b;
             piece->rows = m;
             piece->kind = w->blockContact[b];
+            piece->matrix = w->blockMatrix[b];
             p += m;
         } else {
             piece->rows = 1;
             piece->kind = 0;
+            piece->matrix = -1;
             ++p;
         }
     }
 }
 
-/* z = P^-1 res (block-Jacobi preconditioner of the free rows). */
-static void KeaPrecondition(const KeaIterativeWork *w, int nFree, const MeReal *res, MeReal *z)
+/* z = P^-1 res (block-Jacobi preconditioner of the free rows): a segment by its block's inverse, a
+ * row on its own by 1 / d_i. */
+static void KeaPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z)
 {
-    int p = 0, k;
-    for (k = 0; k < w->nSegments; ++k) { /* Jacobi up to the segment, then the segment's block */
-        const int b = w->segmentBlock[k], m = w->blockStart[b + 1] - w->blockStart[b], start = w->segmentPos[k];
-        for (; p < start; ++p)
-            z[p] = res[p] * w->invDiag[w->freeRows[p]];
-        KeaBlockSymmetricApply(m, w->blockInv + w->blockMatrix[b], res + start, z + start);
-        p = start + m;
+    const KeaFreePiece *pieces = w->pieces;
+    const MeReal *blockInv = w->blockInv, *invDiag = w->invDiag, *contactInv = w->contactInv;
+    const int nPieces = w->nPieces;
+    int k;
+    for (k = 0; k < nPieces; ++k) {
+        const KeaFreePiece *piece = &pieces[k];
+        const int p = piece->pos;
+        if (piece->kind)
+            KeaLanesStore3(z + p, KeaContactInverseApply(contactInv + 4 * piece->row, res[p], res[p + 1], res[p + 2]));
+        else if (piece->rows == 1)
+            z[p] = res[p] * invDiag[piece->row];
+        else
+            KeaBlockSymmetricApply(piece->rows, blockInv + piece->matrix, res + p, z + p);
     }
-    for (; p < nFree; ++p)
-        z[p] = res[p] * w->invDiag[w->freeRows[p]];
 }
 
 /* q += eps p, returning p . q (the new q) in one pass: the sums of KeaDotN4, in its order. */
@@ -171,6 +175,37 @@ static int KeaUpdateFreeRows(const KeaProblem *problem, KeaIterativeWork *w, con
     return changed;
 }
 
+/* CG's update step += a dir, res -= a q over the free list: element by element, so that the
+ * compiler runs it four lanes at a time with the same operations on each element (restrict: the
+ * arrays are distinct). */
+static void KeaCgUpdate(int nFree, MeReal a, const MeReal *restrict dir, const MeReal *restrict q,
+                        MeReal *restrict step, MeReal *restrict res)
+{
+    int p;
+    for (p = 0; p < nFree; ++p) {
+        step[p] += a * dir[p];
+        res[p] -= a * q[p];
+    }
+}
+
+/* CG's new direction dir = z + beta dir (as KeaCgUpdate, element by element). */
+static void KeaCgDirection(int nFree, MeReal beta, const MeReal *restrict z, MeReal *restrict dir)
+{
+    int p;
+    for (p = 0; p < nFree; ++p)
+        dir[p] = z[p] + beta * dir[p];
+}
+
+/* The line search's trial step z = mid(lo, xF + scale step, hi) - xF over the free list (xF, lo
+ * and hi by position), element by element as KeaCgUpdate. */
+static void KeaTrialStep(int nFree, MeReal scale, const MeReal *restrict xF, const MeReal *restrict step,
+                         const MeReal *restrict lo, const MeReal *restrict hi, MeReal *restrict z)
+{
+    int p;
+    for (p = 0; p < nFree; ++p)
+        z[p] = KeaClamp(xF[p] + scale * step[p], lo[p], hi[p]) - xF[p];
+}
+
 /* Preconditioned CG on A_FF step = -w_F from step = 0 over the nFree rows of the free list (grad
  * set to w_F at x); returns the CG steps taken (at most maxSteps). Sets smRan when CG can start. */
 static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, int nFree, int maxSteps, const MeReal *x)
@@ -185,7 +220,7 @@ static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, int nFr
         w->step[p] = ME_R(0.0);
         w->res[p] = -w->grad[p];
     }
-    KeaPrecondition(w, nFree, w->res, w->z);
+    KeaPrecondition(w, w->res, w->z);
     for (p = 0; p < nFree; ++p)
         w->dir[p] = w->z[p];
     rz = rz0 = KeaDotN4(w->res, w->z, nFree);
@@ -201,18 +236,14 @@ static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, int nFr
         if (!(pq > ME_R(0.0)))
             break;
         a = rz / pq;
-        for (p = 0; p < nFree; ++p) {
-            w->step[p] += a * w->dir[p];
-            w->res[p] -= a * w->q[p];
-        }
-        KeaPrecondition(w, nFree, w->res, w->z);
+        KeaCgUpdate(nFree, a, w->dir, w->q, w->step, w->res);
+        KeaPrecondition(w, w->res, w->z);
         ++steps;
         rzNew = KeaDotN4(w->res, w->z, nFree);
         if (!(rzNew > KEA_SM_CG_STOP * rz0))
             break;
         beta = rzNew / rz;
-        for (p = 0; p < nFree; ++p)
-            w->dir[p] = w->z[p] + beta * w->dir[p];
+        KeaCgDirection(nFree, beta, w->z, w->dir);
         rz = rzNew;
     }
     return steps;
@@ -223,13 +254,10 @@ static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, int nFr
 static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w, int nFree, MeReal *x)
 {
     MeReal scale;
-    int i, p, b, k, tries;
+    int p, b, k, tries;
     for (tries = 0, scale = ME_R(1.0); tries < KEA_SM_LINE_SEARCH_TRIES; ++tries, scale *= ME_R(0.5)) {
         MeReal df = ME_R(0.0);
-        for (p = 0; p < nFree; ++p) { /* z holds the trial step s */
-            i = w->freeRows[p];
-            w->z[p] = KeaClamp(x[i] + scale * w->step[p], w->lo[i], w->hi[i]) - x[i];
-        }
+        KeaTrialStep(nFree, scale, w->xFree, w->step, w->lo, w->hi, w->z); /* z holds the trial step s */
         KeaScatter(problem, w, w->z);
         KeaGather(w, w->dvTmp, w->q); /* q is free after CG */
         for (p = 0; p < nFree; ++p) {
@@ -267,7 +295,8 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
         return -1; /* it did not pay: wait until the active set has settled */
     for (i = 0; i < n; ++i) /* the step runs: list the free rows, freeze their bounds */
         if (w->wasFree[i]) {
-            KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
+            KeaRowBoundsInline(problem, x, i, &w->lo[nFree], &w->hi[nFree]);
+            w->xFree[nFree] = x[i];
             w->freeRows[nFree++] = i;
         }
     if (nFree == 0)
