@@ -324,18 +324,12 @@ void MstUniverseSetTaskSystem(MstUniverseID id, int workerCount, MdtEnqueueTaskC
     MstUniverseData *u = universeFromID(id, __func__);
     if (!u)
         return;
-    /* Checked here too, so that a refusal names the call the application made. */
-    if (!enqueue || !finish) {
-        ME_REPORT(ME_ERR_TASK_CALLBACK, "argument '%s' is NULL: a task system needs both callbacks; call ignored",
-                  !enqueue ? "enqueue" : "finish");
-        return;
-    }
-    if (workerCount < 1 || workerCount > MDT_MAX_WORKERS) {
-        ME_REPORT(ME_ERR_WORKER_COUNT, "argument 'workerCount' (%d) must lie in [1, MDT_MAX_WORKERS = %d]; call ignored",
-                  workerCount, MDT_MAX_WORKERS);
-        return;
-    }
+    /* The world checks the arguments; its refusals name this call, the one the application made
+     * (decision M9), unless the application named its own. */
+    const char *worldCaller = MdtWorldGetCallerName(u->world);
+    MdtWorldSetCallerName(u->world, worldCaller ? worldCaller : __func__);
     MdtWorldSetTaskSystem(u->world, workerCount, enqueue, finish, user);
+    MdtWorldSetCallerName(u->world, worldCaller);
 }
 
 /* ---- mass properties from geometry ---------------------------------------------------------- */
