@@ -223,12 +223,11 @@ void MstUniverseDestroy(MstUniverseID id)
         McdSpaceBeginChanges(u->space);
     McdSpaceModelIterator it;
     McdModelID m;
-    McdSpaceModelIteratorBegin(u->space, &it);
-    McdModelID models[64];
+    McdModelID models[64]; /* removed in batches: the iterator must not see a model go */
     for (;;) {
         int n = 0;
         McdSpaceModelIteratorBegin(u->space, &it);
-        while (n < 64 && McdSpaceGetModel(u->space, &it, &m))
+        while (n < (int)(sizeof models / sizeof models[0]) && McdSpaceGetModel(u->space, &it, &m))
             models[n++] = m;
         if (n == 0)
             break;
