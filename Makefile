@@ -34,7 +34,7 @@ FUZZERS := fuzz_pairs fuzz_lineseg fuzz_space fuzz_api
 # (`karma render --mp4`) (all run in make test).
 VIEWER_PACKAGES := libglfw3-dev libepoxy-dev libstb-dev fonts-dejavu-core libegl1 libegl-mesa0 libgl1-mesa-dri \
                    xvfb xauth ffmpeg
-DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config gcovr gnuplot-nox doxygen clang libclang-rt-14-dev \
+DEBIAN_PACKAGES := cmake make gcc g++ libcmocka-dev pkg-config gcovr gnuplot-nox doxygen clang libclang-rt-14-dev universal-ctags \
                    $(VIEWER_PACKAGES)
 
 .PHONY: all deps build test coverage demo install docs bench bench-scenes soak fuzz clean

@@ -20,16 +20,12 @@
 #include <cstring>
 #include <vector>
 
+#include "bench_bullet.h"
 #include "convex_scenes.h"
 
 namespace {
 
 bool gPoly = false;
-
-btScalar min_friction(const btCollisionObject *a, const btCollisionObject *b)
-{
-    return std::fmin(a->getFriction(), b->getFriction());
-}
 
 btConvexHullShape *make_hull(const CvxHull &h)
 {
@@ -42,13 +38,8 @@ btConvexHullShape *make_hull(const CvxHull &h)
     return s;
 }
 
-struct BulletWorld {
+struct BulletWorld : BenchBulletWorld {
     const CvxScene *scene = nullptr;
-    btDefaultCollisionConfiguration *config = nullptr;
-    btCollisionDispatcher *dispatcher = nullptr;
-    btDbvtBroadphase *broadphase = nullptr;
-    btSequentialImpulseConstraintSolver *solver = nullptr;
-    btDiscreteDynamicsWorld *world = nullptr;
     std::vector<btCollisionShape *> shapes;
     std::vector<btRigidBody *> bodies;
     btRigidBody *floor = nullptr;
@@ -61,14 +52,7 @@ void *bullet_create(const CvxScene *s)
 {
     BulletWorld *w = new BulletWorld;
     w->scene = s;
-    w->config = new btDefaultCollisionConfiguration();
-    w->dispatcher = new btCollisionDispatcher(w->config);
-    w->broadphase = new btDbvtBroadphase();
-    w->solver = new btSequentialImpulseConstraintSolver();
-    w->world = new btDiscreteDynamicsWorld(w->dispatcher, w->broadphase, w->solver, w->config);
-    w->world->setGravity(btVector3(0, 0, btScalar(-s->gravity)));
-    w->world->getSolverInfo().m_numIterations = 10;
-    gCalculateCombinedFrictionCallback = min_friction;
+    bench_bullet_open(w, btVector3(0, 0, btScalar(-s->gravity)), 10);
 
     btCollisionShape *floorShape;
     btTransform floorPose;
@@ -152,11 +136,7 @@ void bullet_step(void *world)
 
 int bullet_contacts(void *world)
 {
-    BulletWorld *w = static_cast<BulletWorld *>(world);
-    int n = 0;
-    for (int i = 0; i < w->dispatcher->getNumManifolds(); i++)
-        n += w->dispatcher->getManifoldByIndexInternal(i)->getNumContacts();
-    return n;
+    return bench_bullet_contacts(static_cast<BulletWorld *>(world));
 }
 
 void bullet_read(void *world, double (*pos)[3], double (*quat)[4])
@@ -183,11 +163,7 @@ void bullet_destroy(void *world)
     for (btCollisionShape *s : w->shapes)
         delete s;
     delete w->mesh;
-    delete w->world;
-    delete w->solver;
-    delete w->broadphase;
-    delete w->dispatcher;
-    delete w->config;
+    bench_bullet_close(w);
     delete w;
 }
 

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bench_karma.h"
 #include "convex_scenes.h"
 
 typedef struct KarmaWorld {
@@ -72,11 +73,7 @@ static void *karma_create(const CvxScene *s)
     MdtWorldID world = MstUniverseGetWorld(w->universe);
     MdtWorldSetGravity(world, 0, 0, (MeReal)-s->gravity);
     MdtWorldSetAutoDisable(world, MEFALSE);
-    MdtContactParamsID params = MstBridgeGetContactParams(MstUniverseGetBridge(w->universe), 0, 0);
-    MdtContactParamsSetType(params, MdtContactTypeFriction2D);
-    MdtContactParamsSetFrictionModel(params, MdtFrictionModelNormalForce);
-    MdtContactParamsSetFrictionCoeffecient(params, (MeReal)s->friction);
-    MdtContactParamsSetRestitution(params, 0);
+    bench_karma_contact_defaults(w->universe, s->friction);
 
     McdFrameworkID fw = MstUniverseGetFramework(w->universe);
     McdGeometryID floor = NULL;
@@ -105,22 +102,12 @@ static void *karma_create(const CvxScene *s)
     }
     for (int i = 0; i < s->bodyCount; i++) {
         const CvxBody *b = &s->bodies[i];
-        McdGeometryID g = make_geometry(fw, s, b);
-        McdModelID m = g ? MstModelAndBodyCreate(w->universe, g, 1) : NULL;
+        McdModelID m = bench_karma_body(w->universe, make_geometry(fw, s, b), b->mass, b->inertia, b->pos, b->quat);
         if (!m) {
             karma_destroy(w);
             return NULL;
         }
-        MdtBodyID body = McdModelGetBody(m);
-        MeMatrix3 I = {{(MeReal)b->inertia[0], 0, 0}, {0, (MeReal)b->inertia[1], 0}, {0, 0, (MeReal)b->inertia[2]}};
-        MeVector3 origin = {0, 0, 0};
-        MdtBodySetMass(body, (MeReal)b->mass);
-        MdtBodySetInertiaTensor(body, I);
-        MdtBodyEnableNonSphericalInertia(body);
-        MdtBodySetCenterOfMassRelativePosition(body, origin);
-        MdtBodySetPosition(body, (MeReal)b->pos[0], (MeReal)b->pos[1], (MeReal)b->pos[2]);
-        MdtBodySetQuaternion(body, (MeReal)b->quat[0], (MeReal)b->quat[1], (MeReal)b->quat[2], (MeReal)b->quat[3]);
-        w->bodies[i] = body;
+        w->bodies[i] = McdModelGetBody(m);
     }
     return w;
 }
@@ -131,24 +118,12 @@ static void karma_step(void *world)
     MstUniverseStep(w->universe, (MeReal)w->scene->step);
 }
 
-static int karma_contacts(void *world)
-{
-    return MstBridgeGetLastContactCount(MstUniverseGetBridge(((KarmaWorld *)world)->universe));
-}
+static int karma_contacts(void *world) { return bench_karma_contact_count(((KarmaWorld *)world)->universe); }
 
 static void karma_read(void *world, double (*pos)[3], double (*quat)[4])
 {
     KarmaWorld *w = world;
-    for (int i = 0; i < w->scene->bodyCount; i++) {
-        MeVector3 p;
-        MeVector4 q;
-        MdtBodyGetPosition(w->bodies[i], p);
-        MdtBodyGetQuaternion(w->bodies[i], q);
-        for (int k = 0; k < 3; k++)
-            pos[i][k] = p[k];
-        for (int k = 0; k < 4; k++)
-            quat[i][k] = q[k];
-    }
+    bench_karma_read(w->bodies, w->scene->bodyCount, pos, quat);
 }
 
 /* ---- the pair test ---- */

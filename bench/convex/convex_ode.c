@@ -15,9 +15,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bench_ode.h"
 #include "convex_scenes.h"
-
-#define ODE_MAX_CONTACTS 4
 
 /* A hull's faces for dCreateConvex (the arrays must outlive the geom). */
 typedef struct OdeHull {
@@ -91,9 +90,7 @@ static void free_ode_hull(OdeHull *o)
 
 typedef struct OdeWorld {
     const CvxScene *scene;
-    dWorldID world;
-    dSpaceID space;
-    dJointGroupID contactGroup;
+    BenchOde ode;
     dBodyID *bodies;
     OdeHull *hulls;
     dTriMeshDataID mesh;
@@ -101,33 +98,20 @@ typedef struct OdeWorld {
     dReal *vertices;
     dTriIndex *indices;
     double *heights;
-    int contacts;
 } OdeWorld;
 
 static void near_callback(void *data, dGeomID g1, dGeomID g2)
 {
     OdeWorld *w = data;
-    dBodyID b1 = dGeomGetBody(g1), b2 = dGeomGetBody(g2);
-    if (!b1 && !b2)
+    if (!dGeomGetBody(g1) && !dGeomGetBody(g2))
         return;
-    dContact contact[ODE_MAX_CONTACTS];
-    int n = dCollide(g1, g2, ODE_MAX_CONTACTS, &contact[0].geom, sizeof(dContact));
-    for (int i = 0; i < n; i++) {
-        memset(&contact[i].surface, 0, sizeof contact[i].surface);
-        contact[i].surface.mode = dContactApprox1;
-        contact[i].surface.mu = w->scene->friction;
-        dJointID j = dJointCreateContact(w->world, w->contactGroup, &contact[i]);
-        dJointAttach(j, b1, b2);
-    }
-    w->contacts += n;
+    bench_ode_collide(&w->ode, g1, g2);
 }
 
 static void ode_destroy(void *world)
 {
     OdeWorld *w = world;
-    dJointGroupDestroy(w->contactGroup);
-    dSpaceDestroy(w->space);
-    dWorldDestroy(w->world);
+    bench_ode_close(&w->ode);
     if (w->mesh)
         dGeomTriMeshDataDestroy(w->mesh);
     if (w->field)
@@ -146,16 +130,12 @@ static void *ode_create(const CvxScene *s)
 {
     OdeWorld *w = calloc(1, sizeof *w);
     w->scene = s;
-    w->world = dWorldCreate();
-    dWorldSetGravity(w->world, 0, 0, -s->gravity);
-    dWorldSetQuickStepNumIterations(w->world, 20);
-    w->space = dHashSpaceCreate(0);
-    w->contactGroup = dJointGroupCreate(0);
+    bench_ode_open(&w->ode, 0, 0, -s->gravity, 20, s->friction);
     w->bodies = calloc((size_t)s->bodyCount, sizeof *w->bodies);
     w->hulls = calloc((size_t)s->bodyCount, sizeof *w->hulls);
     int n = s->side;
     if (s->floor == CVX_GROUND) {
-        dCreatePlane(w->space, 0, 0, 1, 0);
+        dCreatePlane(w->ode.space, 0, 0, 1, 0);
     } else if (s->floor == CVX_MESH) {
         w->vertices = malloc((size_t)3 * n * n * sizeof *w->vertices);
         for (int j = 0; j < n; j++)
@@ -171,7 +151,7 @@ static void *ode_create(const CvxScene *s)
                                     3 * s->triangleCount, 3 * sizeof(dTriIndex));
         /* ODE's convex-trimesh collider (libccd) asks for the face angles */
         dGeomTriMeshDataPreprocess2(w->mesh, 1U << dTRIDATAPREPROCESS_BUILD_FACE_ANGLES, NULL);
-        dCreateTriMesh(w->space, w->mesh, NULL, NULL, NULL);
+        dCreateTriMesh(w->ode.space, w->mesh, NULL, NULL, NULL);
     } else {
         /* ODE's sample (x, row) is at local (x - c, h, row - c), c = (n - 1) / 2; turned +90 degrees
          * about x and moved by (c, c, 0), local z goes to world y = c - (row - c): row = n - 1 - j */
@@ -181,7 +161,7 @@ static void *ode_create(const CvxScene *s)
                 w->heights[(n - 1 - j) * n + i] = s->heights[j * n + i];
         w->field = dGeomHeightfieldDataCreate();
         dGeomHeightfieldDataBuildDouble(w->field, w->heights, 0, n - 1, n - 1, n, n, 1, 0, 1, 0);
-        dGeomID g = dCreateHeightfield(w->space, w->field, 1);
+        dGeomID g = dCreateHeightfield(w->ode.space, w->field, 1);
         dMatrix3 R;
         dRFromAxisAndAngle(R, 1, 0, 0, 1.57079632679489661923);
         dGeomSetRotation(g, R);
@@ -192,13 +172,13 @@ static void *ode_create(const CvxScene *s)
         dGeomID g;
         switch (b->shape) {
         case CVX_BOX:
-            g = dCreateBox(w->space, 2 * b->size[0], 2 * b->size[1], 2 * b->size[2]);
+            g = dCreateBox(w->ode.space, 2 * b->size[0], 2 * b->size[1], 2 * b->size[2]);
             break;
         case CVX_SPHERE:
-            g = dCreateSphere(w->space, b->size[0]);
+            g = dCreateSphere(w->ode.space, b->size[0]);
             break;
         case CVX_CAPSULE:
-            g = dCreateCapsule(w->space, b->size[0], 2 * b->size[1]);
+            g = dCreateCapsule(w->ode.space, b->size[0], 2 * b->size[1]);
             break;
         case CVX_HULL:
         default:
@@ -206,11 +186,11 @@ static void *ode_create(const CvxScene *s)
                 ode_destroy(w);
                 return NULL;
             }
-            g = dCreateConvex(w->space, w->hulls[i].planes, w->hulls[i].planeCount, w->hulls[i].points,
+            g = dCreateConvex(w->ode.space, w->hulls[i].planes, w->hulls[i].planeCount, w->hulls[i].points,
                               w->hulls[i].pointCount, w->hulls[i].polygons);
             break;
         }
-        dBodyID body = dBodyCreate(w->world);
+        dBodyID body = dBodyCreate(w->ode.world);
         dMass m;
         dMassSetParameters(&m, b->mass, 0, 0, 0, b->inertia[0], b->inertia[1], b->inertia[2], 0, 0, 0);
         dBodySetMass(body, &m);
@@ -226,13 +206,13 @@ static void *ode_create(const CvxScene *s)
 static void ode_step(void *world)
 {
     OdeWorld *w = world;
-    w->contacts = 0;
-    dSpaceCollide(w->space, w, near_callback);
-    dWorldQuickStep(w->world, w->scene->step);
-    dJointGroupEmpty(w->contactGroup);
+    w->ode.contacts = 0;
+    dSpaceCollide(w->ode.space, w, near_callback);
+    dWorldQuickStep(w->ode.world, w->scene->step);
+    dJointGroupEmpty(w->ode.contactGroup);
 }
 
-static int ode_contacts(void *world) { return ((OdeWorld *)world)->contacts; }
+static int ode_contacts(void *world) { return ((OdeWorld *)world)->ode.contacts; }
 
 static void ode_read(void *world, double (*pos)[3], double (*quat)[4])
 {
@@ -276,10 +256,10 @@ static void *pairs_create(const CvxPairSet *p)
 static void pairs_run(void *pw, int rounds, long *contacts, long *touching)
 {
     OdePairs *k = pw;
-    dContactGeom c[ODE_MAX_CONTACTS];
+    dContactGeom c[BENCH_ODE_MAX_CONTACTS];
     for (int round = 0; round < rounds; round++)
         for (int i = 0; i < k->set->count; i++) {
-            int n = dCollide(k->geoms[i][0], k->geoms[i][1], ODE_MAX_CONTACTS, c, sizeof c[0]);
+            int n = dCollide(k->geoms[i][0], k->geoms[i][1], BENCH_ODE_MAX_CONTACTS, c, sizeof c[0]);
             *contacts += n;
             *touching += n > 0;
         }

@@ -67,6 +67,7 @@
 #include <MeThreadPool.h>
 
 #include "bench_harness.h"
+#include "bench_karma.h"
 
 typedef struct KarmaWorld {
     const BenchScene *scene;
@@ -242,11 +243,7 @@ static void *karma_create(const BenchScene *scene, MeBool autoDisable)
     if (heavy > 100 * (double)sizes.massScale) /* joints on bodies past Karma's mass range: ε for them */
         MdtWorldSetEpsilon(w->world, (MeReal)((double)MDTWORLD_DEFAULT_EPSILON / heavy));
 
-    MdtContactParamsID params = MstBridgeGetContactParams(MstUniverseGetBridge(w->universe), 0, 0);
-    MdtContactParamsSetType(params, MdtContactTypeFriction2D);
-    MdtContactParamsSetFrictionModel(params, MdtFrictionModelNormalForce);
-    MdtContactParamsSetFrictionCoeffecient(params, (MeReal)scene->friction);
-    MdtContactParamsSetRestitution(params, 0);
+    bench_karma_contact_defaults(w->universe, scene->friction);
 
     McdFrameworkID fw = MstUniverseGetFramework(w->universe);
     if (scene->hasGround) {
@@ -280,21 +277,12 @@ static void *karma_create(const BenchScene *scene, MeBool autoDisable)
                 goto fail;
             continue;
         }
-        /* the density only seeds the mass properties, replaced just below by the scene's */
-        model[i] = MstModelAndBodyCreate(w->universe, g, 1);
+        double inertia[3];
+        BenchBodyInertia(b, inertia);
+        model[i] = bench_karma_body(w->universe, g, b->mass, inertia, b->pos, b->quat);
         if (!model[i])
             goto fail;
         MdtBodyID body = McdModelGetBody(model[i]);
-        double inertia[3];
-        BenchBodyInertia(b, inertia);
-        MeMatrix3 I = {{(MeReal)inertia[0], 0, 0}, {0, (MeReal)inertia[1], 0}, {0, 0, (MeReal)inertia[2]}};
-        MeVector3 origin = {0, 0, 0};
-        MdtBodySetMass(body, (MeReal)b->mass);
-        MdtBodySetInertiaTensor(body, I);
-        MdtBodyEnableNonSphericalInertia(body);
-        MdtBodySetCenterOfMassRelativePosition(body, origin);
-        MdtBodySetPosition(body, (MeReal)b->pos[0], (MeReal)b->pos[1], (MeReal)b->pos[2]);
-        MdtBodySetQuaternion(body, (MeReal)b->quat[0], (MeReal)b->quat[1], (MeReal)b->quat[2], (MeReal)b->quat[3]);
         MdtBodySetLinearVelocity(body, (MeReal)b->vel[0], (MeReal)b->vel[1], (MeReal)b->vel[2]);
         w->bodies[i] = body;
     }
@@ -382,26 +370,12 @@ static int karma_step(void *world, const char **why)
     return 0;
 }
 
-static int karma_contacts(void *world)
-{
-    return MstBridgeGetLastContactCount(MstUniverseGetBridge(((KarmaWorld *)world)->universe));
-}
+static int karma_contacts(void *world) { return bench_karma_contact_count(((KarmaWorld *)world)->universe); }
 
 static void karma_read(void *world, double (*pos)[3], double (*quat)[4])
 {
     KarmaWorld *w = world;
-    for (int i = 0; i < w->scene->bodyCount; i++) {
-        if (!w->bodies[i])
-            continue;
-        MeVector3 p;
-        MeVector4 q;
-        MdtBodyGetPosition(w->bodies[i], p);
-        MdtBodyGetQuaternion(w->bodies[i], q);
-        for (int k = 0; k < 3; k++)
-            pos[i][k] = p[k];
-        for (int k = 0; k < 4; k++)
-            quat[i][k] = q[k];
-    }
+    bench_karma_read(w->bodies, w->scene->bodyCount, pos, quat);
 }
 
 static const char *karma_remark(void *world)

@@ -25,27 +25,17 @@
 #include <cstdio>
 #include <vector>
 
+#include "bench_bullet.h"
 #include "bench_harness.h"
 
 namespace {
 
-struct BulletWorld {
+struct BulletWorld : BenchBulletWorld {
     const BenchScene *scene = nullptr;
-    btDefaultCollisionConfiguration *config = nullptr;
-    btCollisionDispatcher *dispatcher = nullptr;
-    btDbvtBroadphase *broadphase = nullptr;
-    btSequentialImpulseConstraintSolver *solver = nullptr;
-    btDiscreteDynamicsWorld *world = nullptr;
     std::vector<btCollisionShape *> shapes;
     std::vector<btRigidBody *> bodies; /* all scene bodies, fixed ones included, then the ground */
     std::vector<btTypedConstraint *> joints;
 };
-
-/* The pair's friction: the smaller coefficient (all are 0.6 here, so it is 0.6). */
-btScalar combined_friction(const btCollisionObject *a, const btCollisionObject *b)
-{
-    return std::fmin(a->getFriction(), b->getFriction());
-}
 
 btVector3 to_bt(const double v[3]) { return btVector3(btScalar(v[0]), btScalar(v[1]), btScalar(v[2])); }
 
@@ -95,11 +85,7 @@ void bullet_destroy(void *world)
     }
     for (btCollisionShape *s : w->shapes)
         delete s;
-    delete w->world;
-    delete w->solver;
-    delete w->broadphase;
-    delete w->dispatcher;
-    delete w->config;
+    bench_bullet_close(w);
     delete w;
 }
 
@@ -107,14 +93,7 @@ void *bullet_create(const BenchScene *scene, bool sleep)
 {
     BulletWorld *w = new BulletWorld;
     w->scene = scene;
-    w->config = new btDefaultCollisionConfiguration();
-    w->dispatcher = new btCollisionDispatcher(w->config);
-    w->broadphase = new btDbvtBroadphase();
-    w->solver = new btSequentialImpulseConstraintSolver();
-    w->world = new btDiscreteDynamicsWorld(w->dispatcher, w->broadphase, w->solver, w->config);
-    w->world->setGravity(to_bt(scene->gravity));
-    w->world->getSolverInfo().m_numIterations = 10;
-    gCalculateCombinedFrictionCallback = combined_friction;
+    bench_bullet_open(w, to_bt(scene->gravity), 10); /* the pair's friction: the smaller (all are 0.6) */
     for (int i = 0; i < scene->bodyCount; i++) {
         const BenchBody &b = scene->bodies[i];
         btCollisionShape *shape;
@@ -193,11 +172,7 @@ int bullet_step(void *world, const char **)
 
 int bullet_contacts(void *world)
 {
-    BulletWorld *w = static_cast<BulletWorld *>(world);
-    int n = 0;
-    for (int i = 0; i < w->dispatcher->getNumManifolds(); i++)
-        n += w->dispatcher->getManifoldByIndexInternal(i)->getNumContacts();
-    return n;
+    return bench_bullet_contacts(static_cast<BulletWorld *>(world));
 }
 
 void bullet_read(void *world, double (*pos)[3], double (*quat)[4])

@@ -19,8 +19,8 @@
  *
  * dWorldStep builds a dense matrix per island: memory grows with the square of the island's
  * constraint rows and time up to their cube. The 820-box pyramid is one island of ~19,000 rows (a
- * 2.9 GB matrix); the 210-box pyramid, ~4,700 rows, takes 18 ms per step at the median and 85 ms on
- * average here. So the step variant checks the largest island before each step and stops the run
+ * 2.9 GB matrix); the 210-box pyramid, ~4,700 rows, already takes many times quickstep's time
+ * (bench/RESULTS.md). So the step variant checks the largest island before each step and stops the run
  * when it exceeds ODE_STEP_ROW_CAP rows, saying so in the note column; the runner's time budget
  * stops runs that are merely slow. */
 #include <ode/ode.h>
@@ -32,8 +32,8 @@
 #include <string.h>
 
 #include "bench_harness.h"
+#include "bench_ode.h"
 
-#define ODE_MAX_CONTACTS 4
 #define ODE_QUICK_ITERATIONS 20
 /* Islands larger than this are not given to dWorldStep (the environment variable ODE_STEP_ROW_CAP
  * overrides it, for measuring). */
@@ -48,11 +48,8 @@ static long stepRowCap = ODE_STEP_ROW_CAP;
 typedef struct OdeWorld {
     const BenchScene *scene;
     int quick;
-    dWorldID world;
-    dSpaceID space;
-    dJointGroupID contactGroup;
+    BenchOde ode;
     dBodyID *bodies; /* NULL for fixed bodies */
-    int contacts;
     /* dWorldStep only: islands of this step (union-find over body indices) */
     int *parent;
     long *rows;
@@ -113,17 +110,9 @@ static void near_callback(void *data, dGeomID g1, dGeomID g2)
         return; /* static against static (walls, ground) */
     if (b1 && b2 && dAreConnectedExcluding(b1, b2, dJointTypeContact))
         return;
-    dContact contact[ODE_MAX_CONTACTS];
-    int n = dCollide(g1, g2, ODE_MAX_CONTACTS, &contact[0].geom, sizeof(dContact));
-    for (int i = 0; i < n; i++) {
-        memset(&contact[i].surface, 0, sizeof contact[i].surface);
-        contact[i].surface.mode = dContactApprox1;
-        contact[i].surface.mu = w->scene->friction;
-        dJointID j = dJointCreateContact(w->world, w->contactGroup, &contact[i]);
-        dJointAttach(j, b1, b2);
+    int n = bench_ode_collide(&w->ode, g1, g2);
+    for (int i = 0; i < n; i++)
         join(w, b1, b2, ODE_ROWS_CONTACT);
-    }
-    w->contacts += n;
 }
 
 static void ode_destroy(void *world)
@@ -131,12 +120,7 @@ static void ode_destroy(void *world)
     OdeWorld *w = world;
     if (!w)
         return;
-    if (w->contactGroup)
-        dJointGroupDestroy(w->contactGroup);
-    if (w->space)
-        dSpaceDestroy(w->space); /* destroys its geoms too (cleanup mode on by default) */
-    if (w->world)
-        dWorldDestroy(w->world); /* and its bodies and joints */
+    bench_ode_close(&w->ode);
     free(w->bodies);
     free(w->parent);
     free(w->rows);
@@ -162,26 +146,23 @@ static void *ode_create(const BenchScene *scene, int quick)
     odeMessages = 0;
     odeFirstMessage[0] = '\0';
     dRandSetSeed(0); /* quickstep reorders its rows with ODE's global generator: same start every run */
-    w->world = dWorldCreate();
-    dWorldSetGravity(w->world, scene->gravity[0], scene->gravity[1], scene->gravity[2]);
-    dWorldSetQuickStepNumIterations(w->world, ODE_QUICK_ITERATIONS);
-    w->space = dHashSpaceCreate(0);
-    w->contactGroup = dJointGroupCreate(0);
+    bench_ode_open(&w->ode, scene->gravity[0], scene->gravity[1], scene->gravity[2], ODE_QUICK_ITERATIONS,
+                   scene->friction);
     if (scene->hasGround) /* the scenes are y-up: the plane y = 0 */
-        dCreatePlane(w->space, 0, 1, 0, 0);
+        dCreatePlane(w->ode.space, 0, 1, 0, 0);
     for (int i = 0; i < scene->bodyCount; i++) {
         const BenchBody *b = &scene->bodies[i];
         dGeomID g;
         switch (b->shape) {
         case BENCH_SPHERE:
-            g = dCreateSphere(w->space, b->size[0]);
+            g = dCreateSphere(w->ode.space, b->size[0]);
             break;
         case BENCH_CAPSULE: /* ODE's capsule lies along its local z, as the scene's does */
-            g = dCreateCapsule(w->space, b->size[0], 2 * b->size[1]);
+            g = dCreateCapsule(w->ode.space, b->size[0], 2 * b->size[1]);
             break;
         case BENCH_BOX:
         default:
-            g = dCreateBox(w->space, 2 * b->size[0], 2 * b->size[1], 2 * b->size[2]);
+            g = dCreateBox(w->ode.space, 2 * b->size[0], 2 * b->size[1], 2 * b->size[2]);
             break;
         }
         dQuaternion q = {b->quat[0], b->quat[1], b->quat[2], b->quat[3]};
@@ -194,7 +175,7 @@ static void *ode_create(const BenchScene *scene, int quick)
         dMass m;
         BenchBodyInertia(b, inertia);
         dMassSetParameters(&m, b->mass, 0, 0, 0, inertia[0], inertia[1], inertia[2], 0, 0, 0);
-        dBodyID body = dBodyCreate(w->world);
+        dBodyID body = dBodyCreate(w->ode.world);
         dBodySetMass(body, &m);
         dBodySetPosition(body, b->pos[0], b->pos[1], b->pos[2]);
         dBodySetQuaternion(body, q);
@@ -208,11 +189,11 @@ static void *ode_create(const BenchScene *scene, int quick)
         dBodyID b0 = w->bodies[bj->body[0]], b1 = bj->body[1] >= 0 ? w->bodies[bj->body[1]] : NULL;
         dJointID j;
         if (bj->type == BENCH_BALL) {
-            j = dJointCreateBall(w->world, 0);
+            j = dJointCreateBall(w->ode.world, 0);
             dJointAttach(j, b0, b1);
             dJointSetBallAnchor(j, bj->anchor[0], bj->anchor[1], bj->anchor[2]);
         } else {
-            j = dJointCreateHinge(w->world, 0);
+            j = dJointCreateHinge(w->ode.world, 0);
             dJointAttach(j, b0, b1);
             dJointSetHingeAnchor(j, bj->anchor[0], bj->anchor[1], bj->anchor[2]);
             dJointSetHingeAxis(j, bj->axis[0], bj->axis[1], bj->axis[2]);
@@ -254,27 +235,27 @@ static long largest_island_rows(OdeWorld *w)
 static int ode_step(void *world, const char **why)
 {
     OdeWorld *w = world;
-    w->contacts = 0;
+    w->ode.contacts = 0;
     if (w->parent)
         for (int i = 0; i < w->scene->bodyCount; i++) {
             w->parent[i] = i;
             w->rows[i] = 0;
         }
-    dSpaceCollide(w->space, w, near_callback);
+    dSpaceCollide(w->ode.space, w, near_callback);
     if (w->quick) {
-        dWorldQuickStep(w->world, w->scene->step);
+        dWorldQuickStep(w->ode.world, w->scene->step);
     } else {
         long rows = largest_island_rows(w);
         if (rows > stepRowCap) {
             snprintf(w->why, sizeof w->why, "not run: island of %ld rows > %ld (dense LCP cost ~rows^3)", rows,
                      stepRowCap);
             *why = w->why;
-            dJointGroupEmpty(w->contactGroup);
+            dJointGroupEmpty(w->ode.contactGroup);
             return 1;
         }
-        dWorldStep(w->world, w->scene->step);
+        dWorldStep(w->ode.world, w->scene->step);
     }
-    dJointGroupEmpty(w->contactGroup);
+    dJointGroupEmpty(w->ode.contactGroup);
     return 0;
 }
 
@@ -287,7 +268,7 @@ static const char *ode_remark(void *world)
     return w->remark;
 }
 
-static int ode_contacts(void *world) { return ((OdeWorld *)world)->contacts; }
+static int ode_contacts(void *world) { return ((OdeWorld *)world)->ode.contacts; }
 
 static void ode_read(void *world, double (*pos)[3], double (*quat)[4])
 {

@@ -278,8 +278,9 @@ ME_API MeBool MdtWorldIsValid(MdtWorldID w);
 /* For a layer that runs the world on the application's behalf (a bridge, MstUniverseStep): messages
  * that name what the application called and the setting to change. */
 /** Name `function` (a string that outlives the world, such as a literal; NULL: none) in the messages of
- *  MdtWorldStep, of contact creation and of the mass warning while it is set; while set, a full
- *  constraint pool in contact creation is reported once per world and counted after. */
+ *  MdtWorldStep, of contact creation, of the mass warning and of MdtWorldSetTaskSystem's refusals
+ *  while it is set; while set, a full constraint pool in contact creation is reported once per world
+ *  and counted after. */
 ME_API void MdtWorldSetCallerName(MdtWorldID w, const char *function);
 /** The name set by MdtWorldSetCallerName, or NULL (also for an invalid ID). */
 ME_API const char *MdtWorldGetCallerName(MdtWorldID w);

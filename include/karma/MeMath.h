@@ -803,14 +803,21 @@ static inline void Sort3(MeI32 index[3], const MeReal a[3])
     index[1] = i1;
     index[2] = i2;
 }
-/** The next and the previous integer modulo 2, 3, 4 or N, for i in 0..N-1. */
+/** (i + 1) mod 2, for i in 0..1. */
 static inline int NextMod2(int i) { return i ^ 1; }
+/** (i + 1) mod 3, for i in 0..2. */
 static inline int NextMod3(int i) { return i == 2 ? 0 : i + 1; }
+/** (i + 1) mod 4, for i in 0..3. */
 static inline int NextMod4(int i) { return (i + 1) & 3; }
+/** (i + 1) mod N, for i in 0..N-1. */
 static inline int NextModN(int i, int N) { return i + 1 == N ? 0 : i + 1; }
+/** (i - 1) mod 2, for i in 0..1. */
 static inline int PrevMod2(int i) { return i ^ 1; }
+/** (i - 1) mod 3, for i in 0..2. */
 static inline int PrevMod3(int i) { return i == 0 ? 2 : i - 1; }
+/** (i - 1) mod 4, for i in 0..3. */
 static inline int PrevMod4(int i) { return (i - 1) & 3; }
+/** (i - 1) mod N, for i in 0..N-1. */
 static inline int PrevModN(int i, int N) { return i == 0 ? N - 1 : i - 1; }
 
 ME_EXTERN_C_END

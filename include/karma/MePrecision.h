@@ -161,9 +161,12 @@ static inline MeReal MeSqr(MeReal x) { return x * x; }
 /** METRUE when x is finite (neither NaN nor infinite). Uses isfinite(), valid without fast-math. */
 static inline MeBool MeRealIsValid(MeReal x) { return isfinite(x) ? METRUE : MEFALSE; }
 
-/** Karma's single-precision primitives (the PS2's sqrt.s, rsqrt.s, abs.s), here the libm ones. */
+/* Karma's single-precision primitives (the PS2's sqrt.s, rsqrt.s, abs.s), here the libm ones. */
+/** Square root in float (Karma's MEEEsqrt: sqrtf). */
 static inline float MEEEsqrt(float x) { return sqrtf(x); }
+/** 1 / sqrt(x) in float (Karma's MEEErsqrt); infinite for 0. */
 static inline float MEEErsqrt(float x) { return 1.0f / sqrtf(x); }
+/** |x| in float (Karma's MEEEfabs: fabsf). */
 static inline float MEEEfabs(float x) { return fabsf(x); }
 
 /** |x| < e. */

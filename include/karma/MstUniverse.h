@@ -52,8 +52,9 @@ ME_API MstBridgeID MstUniverseGetBridge(MstUniverseID u);
 /** The universe's collision framework (owned by the universe); NULL, reported, for a bad ID. */
 ME_API McdFrameworkID MstUniverseGetFramework(MstUniverseID u);
 /** Step the universe's dynamics on the application's task system (MdtTaskSystem.h): as
- *  MdtWorldSetTaskSystem on its world, refusals (ME_ERR_TASK_CALLBACK, ME_ERR_WORKER_COUNT) in this
- *  call's name. MeThreadPoolAttachUniverse (karma_threads) does it with the default pool. */
+ *  MdtWorldSetTaskSystem on its world, refusals (ME_ERR_TASK_CALLBACK, ME_ERR_WORKER_COUNT,
+ *  ME_ERR_WORLD_LOCKED) in this call's name, or in the world's caller name when the application set
+ *  one. MeThreadPoolAttachUniverse (karma_threads) does it with the default pool. */
 ME_API void MstUniverseSetTaskSystem(MstUniverseID u, int workerCount, MdtEnqueueTaskCBPtr enqueue,
                                      MdtFinishTaskCBPtr finish, void *user);
 

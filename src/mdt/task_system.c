@@ -34,18 +34,22 @@ void MdtWorldSetTaskSystem(MdtWorldID id, int workerCount, MdtEnqueueTaskCBPtr e
     MdtWorldData *w = MdtWorldFromID(id, __func__);
     if (!w)
         return;
+    /* A wrapper (MstUniverseSetTaskSystem) has its name put on the refusals. */
+    const char *function = w->callerName ? w->callerName : __func__;
     if (!enqueue || !finish) {
-        ME_REPORT(ME_ERR_TASK_CALLBACK, "argument '%s' is NULL: a task system needs both callbacks; call ignored",
-                  !enqueue ? "enqueue" : "finish");
+        ME_REPORT_IN(function, ME_ERR_TASK_CALLBACK,
+                     "argument '%s' is NULL: a task system needs both callbacks; call ignored",
+                     !enqueue ? "enqueue" : "finish");
         return;
     }
     if (workerCount < 1 || workerCount > MDT_MAX_WORKERS) {
-        ME_REPORT(ME_ERR_WORKER_COUNT, "argument 'workerCount' (%d) must lie in [1, MDT_MAX_WORKERS = %d]; call ignored",
-                  workerCount, MDT_MAX_WORKERS);
+        ME_REPORT_IN(function, ME_ERR_WORKER_COUNT,
+                     "argument 'workerCount' (%d) must lie in [1, MDT_MAX_WORKERS = %d]; call ignored",
+                     workerCount, MDT_MAX_WORKERS);
         return;
     }
     if (w->locked) {
-        ME_REPORT(ME_ERR_WORLD_LOCKED, "the task system cannot change during a step; call ignored");
+        ME_REPORT_IN(function, ME_ERR_WORLD_LOCKED, "the task system cannot change during a step; call ignored");
         return;
     }
     if (workerCount > 1 && !sizeMarks(w))

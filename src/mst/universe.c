@@ -225,12 +225,11 @@ void MstUniverseDestroy(MstUniverseID id)
         McdSpaceBeginChanges(u->space);
     McdSpaceModelIterator it;
     McdModelID m;
-    McdSpaceModelIteratorBegin(u->space, &it);
-    McdModelID models[64];
+    McdModelID models[64]; /* removed in batches: the iterator must not see a model go */
     for (;;) {
         int n = 0;
         McdSpaceModelIteratorBegin(u->space, &it);
-        while (n < 64 && McdSpaceGetModel(u->space, &it, &m))
+        while (n < (int)(sizeof models / sizeof models[0]) && McdSpaceGetModel(u->space, &it, &m))
             models[n++] = m;
         if (n == 0)
             break;
@@ -326,18 +325,12 @@ void MstUniverseSetTaskSystem(MstUniverseID id, int workerCount, MdtEnqueueTaskC
     MstUniverseData *u = universeFromID(id, __func__);
     if (!u)
         return;
-    /* Checked here too, so that a refusal names the call the application made. */
-    if (!enqueue || !finish) {
-        ME_REPORT(ME_ERR_TASK_CALLBACK, "argument '%s' is NULL: a task system needs both callbacks; call ignored",
-                  !enqueue ? "enqueue" : "finish");
-        return;
-    }
-    if (workerCount < 1 || workerCount > MDT_MAX_WORKERS) {
-        ME_REPORT(ME_ERR_WORKER_COUNT, "argument 'workerCount' (%d) must lie in [1, MDT_MAX_WORKERS = %d]; call ignored",
-                  workerCount, MDT_MAX_WORKERS);
-        return;
-    }
+    /* The world checks the arguments; its refusals name this call, the one the application made
+     * (decision M9), unless the application named its own. */
+    const char *worldCaller = MdtWorldGetCallerName(u->world);
+    MdtWorldSetCallerName(u->world, worldCaller ? worldCaller : __func__);
     MdtWorldSetTaskSystem(u->world, workerCount, enqueue, finish, user);
+    MdtWorldSetCallerName(u->world, worldCaller);
     /* The bridge's records for pair tests on the workers, now rather than in a step. */
     if (MdtWorldGetWorkerCount(u->world) > 1)
         MstBridgeReserveParallel(MstBridgeFromID(u->bridge, __func__));

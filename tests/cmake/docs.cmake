@@ -16,6 +16,12 @@ add_test(NAME docs_references_resolve
 # from the headers with Doxygen (`make docs`) without a warning.
 add_test(NAME docs_api_comments
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_api_comments.sh ${PROJECT_SOURCE_DIR})
+# The same check on a fixture header with each kind of missing comment must fail naming exactly those,
+# so a check that stopped seeing them is caught.
+add_test(NAME docs_api_comments_catches_missing
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/scripts/check_api_comments.sh ${CMAKE_CURRENT_SOURCE_DIR}/api_comments_fixture)
+set_tests_properties(docs_api_comments_catches_missing PROPERTIES
+  PASS_REGULAR_EXPRESSION "Fixture.h:7: Undocumented.*Fixture.h:10: SharedSecond.*Fixture.h:12: PlainCommented.*Fixture.h:20: InlineUndocumented.*4 public functions without")
 find_program(KARMA_DOXYGEN doxygen)
 if(KARMA_DOXYGEN)
   add_test(NAME docs_api_reference

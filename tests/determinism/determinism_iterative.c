@@ -2,7 +2,7 @@
  * (src/mdt/kea/kea_iterative.h and the files it lists), the safety net for restructuring it: a
  * change that claims unchanged trajectories must keep both hashes bit-identical.
  *
- * - pile: 120 bodies (spheres, boxes, capsules, cylinders) dropped in a loose lattice onto a ground
+ * - pile: 125 bodies (spheres, boxes, capsules, cylinders) dropped in a loose lattice onto a ground
  *   plane and onto each other;
  * - pyramid: 28 boxes in seven rows (bricks set off by half a block, 1 cm apart) on the ground.
  *

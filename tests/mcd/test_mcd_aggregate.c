@@ -10,6 +10,7 @@
  *    the contacts are exactly the union of the element pairs' contacts (unit normals, tags, AABB);
  *  - rest: an L-shaped aggregate body stands still on a plane and on a triangle mesh. */
 #include "karma_test.h"
+#include "karma_pairs.h"
 #include "karma_terrain.h"
 #include "karma_mcd_reference.h"
 
@@ -25,38 +26,19 @@
 
 static McdFrameworkID fwNew(int instances)
 {
-    McdFrameworkID fw = McdInit(0, 64, instances, 1);
-    assert_non_null(fw);
-    McdPrimitivesRegisterInteractions(fw);
+    McdFrameworkID fw = karma_pairs_framework(instances);
     McdAggregateRegisterInteractions(fw);
     return fw;
 }
 
-static McdModelID modelAt(McdGeometryID g, MeMatrix4 tm)
-{
-    McdModelID m = McdModelCreate(g);
-    assert_non_null(m);
-    McdModelSetContactTolerance(m, TOL_CONTACT / 2);
-    MeMatrix4Copy(McdModelGetTransformPtr(m), tm);
-    McdModelUpdate(m);
-    return m;
-}
+static McdModelID modelAt(McdGeometryID g, MeMatrix4 tm) { return karma_model_at(g, tm, TOL_CONTACT / 2); }
 
 static McdRequest bigRequest = {MAXC, 0};
 
-/* Contacts of (m1, m2) through McdHello / McdIntersect / McdGoodbye, up to `max`. */
+/* Contacts of (m1, m2), up to `max`, with room for MAXC asked of the pair. */
 static int intersect(McdModelID m1, McdModelID m2, McdContact *c, int max)
 {
-    McdModelPairID pair = McdModelPairCreate(m1, m2);
-    McdIntersectResult r = {0};
-    r.contacts = c;
-    r.contactMaxCount = max;
-    McdHello(pair);
-    McdModelPairSetRequestPtr(pair, &bigRequest);
-    McdIntersect(pair, &r);
-    McdGoodbye(pair);
-    McdModelPairDestroy(pair);
-    return r.contactCount;
+    return karma_intersect(m1, m2, &bigRequest, c, max);
 }
 
 static void pose(MeMatrix4 tm, double ax, double ay, double az, double x, double y, double z)

@@ -14,6 +14,7 @@
  *  - line segments: first hit on each floor, on a hole, from behind a one-sided height field;
  *  - a height field's valley and ridge; heights from a BMP image (Karma's utilities). */
 #include "karma_test.h"
+#include "karma_pairs.h"
 #include "karma_terrain.h"
 #include "mcd_shapes.h"
 #include "karma_mcd_reference.h"
@@ -25,37 +26,14 @@
 
 #define TOL_CONTACT ME_R(0.01)
 
-static McdFrameworkID fwNew(void)
-{
-    McdFrameworkID fw = McdInit(0, 64, 0, 1);
-    assert_non_null(fw);
-    McdPrimitivesRegisterTypes(fw);
-    McdPrimitivesRegisterInteractions(fw);
-    return fw;
-}
+static McdFrameworkID fwNew(void) { return karma_pairs_framework(0); }
 
-static McdModelID modelAt(McdGeometryID g, MeMatrix4 tm)
-{
-    McdModelID m = McdModelCreate(g);
-    assert_non_null(m);
-    McdModelSetContactTolerance(m, TOL_CONTACT / 2);
-    MeMatrix4Copy(McdModelGetTransformPtr(m), tm);
-    McdModelUpdate(m);
-    return m;
-}
+static McdModelID modelAt(McdGeometryID g, MeMatrix4 tm) { return karma_model_at(g, tm, TOL_CONTACT / 2); }
 
-/* Contacts of the pair (m1, m2) through McdHello / McdIntersect / McdGoodbye. */
+/* Contacts of the pair (m1, m2), at most max, with the pair's default request. */
 static int intersect(McdModelID m1, McdModelID m2, McdContact *c, int max)
 {
-    McdModelPairID pair = McdModelPairCreate(m1, m2);
-    McdIntersectResult r = {0};
-    r.contacts = c;
-    r.contactMaxCount = max;
-    McdHello(pair);
-    McdIntersect(pair, &r);
-    McdGoodbye(pair);
-    McdModelPairDestroy(pair);
-    return r.contactCount;
+    return karma_intersect(m1, m2, NULL, c, max);
 }
 
 static void translation(MeMatrix4 tm, double x, double y, double z)

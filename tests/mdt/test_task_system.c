@@ -219,6 +219,15 @@ static void bad_task_systems_are_refused_and_change_nothing(void **state)
     assert_reports(ME_ERR_WORKER_COUNT, MstUniverseSetTaskSystem(u, 0, enqueue, finish, &jobs));
     assert_string_equal(karma_last_function(), "MstUniverseSetTaskSystem");
     assert_int_equal(MdtWorldGetWorkerCount(MstUniverseGetWorld(u)), 1);
+    /* ...and gives the world back its own name: a direct refusal names the world's call. */
+    assert_null(MdtWorldGetCallerName(MstUniverseGetWorld(u)));
+    assert_reports(ME_ERR_WORKER_COUNT, MdtWorldSetTaskSystem(MstUniverseGetWorld(u), 0, enqueue, finish, &jobs));
+    assert_string_equal(karma_last_function(), "MdtWorldSetTaskSystem");
+    /* A name the application set stays on the refusal and on the world. */
+    MdtWorldSetCallerName(MstUniverseGetWorld(u), "myStep");
+    assert_reports(ME_ERR_TASK_CALLBACK, MstUniverseSetTaskSystem(u, 2, NULL, finish, &jobs));
+    assert_string_equal(karma_last_function(), "myStep");
+    assert_string_equal(MdtWorldGetCallerName(MstUniverseGetWorld(u)), "myStep");
     MstUniverseDestroy(u);
 }
 

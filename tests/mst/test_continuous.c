@@ -52,25 +52,51 @@ static double energyOf(MdtBodyID b)
     return 0.5 * (double)MdtBodyGetMass(b) * (double)MeVector3MagnitudeSqr(v) + 0.5 * rot;
 }
 
-static void run(int shape, int wall, MeBool continuous, double restitution, Outcome *o)
+/* A universe at the defaults with a wall in the plane x = 0: a 2 cm static box (2 half x 2 half) or
+ * the tessellated floor (half-width half, jitter 0.3, seed) stood up with its front (+z) facing -x.
+ * The wall's transform is static: one universe at a time. */
+static McdModelID universeWithWall(MstUniverseID *u, int wall, double half, unsigned seed)
 {
     static MeMatrix4 wallTM;
-    MstUniverseID u = MstUniverseCreate(&MstUniverseDefaultSizes);
-    assert_non_null(u);
-    McdFrameworkID fw = MstUniverseGetFramework(u);
+    *u = MstUniverseCreate(&MstUniverseDefaultSizes);
+    assert_non_null(*u);
+    McdFrameworkID fw = MstUniverseGetFramework(*u);
     MeMatrix4TMMakeIdentity(wallTM);
     McdGeometryID wallGeo;
     if (wall == WALL_BOX) {
-        wallGeo = McdBoxCreate(fw, ME_R(0.02), 2, 2);
+        wallGeo = McdBoxCreate(fw, ME_R(0.02), (MeReal)(2 * half), (MeReal)(2 * half));
     } else {
-        /* the tessellated floor stood up at x = 0, its front (+z) facing -x */
-        wallGeo = karma_floor_mesh(fw, 1, 6, 0.3, 5);
+        wallGeo = karma_floor_mesh(fw, half, 6, 0.3, seed);
         MeVector3Set(wallTM[0], 0, 0, 1);
         MeVector3Set(wallTM[1], 0, 1, 0);
         MeVector3Set(wallTM[2], -1, 0, 0);
     }
-    McdModelID wallModel = MstFixedModelCreate(u, wallGeo, wallTM);
+    McdModelID wallModel = MstFixedModelCreate(*u, wallGeo, wallTM);
     assert_non_null(wallModel);
+    return wallModel;
+}
+
+/* How deep the body of model m is in the wall now: the pair test (m, wall) at the current poses. */
+static double depthInWall(McdModelPairID pair, McdModelID m)
+{
+    McdModelUpdate(m);
+    McdContact c[8];
+    McdIntersectResult r;
+    memset(&r, 0, sizeof r);
+    r.contacts = c;
+    r.contactMaxCount = 8;
+    McdIntersect(pair, &r);
+    double deep = 0;
+    for (int k = 0; k < r.contactCount; k++)
+        deep = fmax(deep, -(double)c[k].separation);
+    return deep;
+}
+
+static void run(int shape, int wall, MeBool continuous, double restitution, Outcome *o)
+{
+    MstUniverseID u;
+    McdModelID wallModel = universeWithWall(&u, wall, 1, 5);
+    McdFrameworkID fw = MstUniverseGetFramework(u);
     MdtContactParamsID p = MstBridgeGetContactParams(MstUniverseGetBridge(u), 0, 0);
     if (restitution > 0) {
         MdtContactParamsSetType(p, MdtContactTypeFrictionZero);
@@ -111,16 +137,7 @@ static void run(int shape, int wall, MeBool continuous, double restitution, Outc
         o->maxX = fmax(o->maxX, (double)x[0]);
         o->maxMomentum = fmax(o->maxMomentum, (double)MdtBodyGetMass(b) * (double)MeVector3Magnitude(v));
         o->maxEnergy = fmax(o->maxEnergy, energyOf(b));
-        /* how deep the body is in the wall now (the pair test at the current poses) */
-        McdModelUpdate(m);
-        McdContact c[8];
-        McdIntersectResult r;
-        memset(&r, 0, sizeof r);
-        r.contacts = c;
-        r.contactMaxCount = 8;
-        McdIntersect(pair, &r);
-        for (int k = 0; k < r.contactCount; k++)
-            o->maxPenetration = fmax(o->maxPenetration, -(double)c[k].separation);
+        o->maxPenetration = fmax(o->maxPenetration, depthInWall(pair, m));
     }
     McdGoodbye(pair);
     McdModelPairDestroy(pair);
@@ -239,11 +256,9 @@ static void flag_without_impact_changes_nothing(void **state)
     (void)state;
     double x[2][3];
     for (int flagged = 0; flagged < 2; flagged++) {
-        static MeMatrix4 wallTM;
-        MstUniverseID u = MstUniverseCreate(&MstUniverseDefaultSizes);
+        MstUniverseID u;
+        universeWithWall(&u, WALL_BOX, 1, 0);
         McdFrameworkID fw = MstUniverseGetFramework(u);
-        MeMatrix4TMMakeIdentity(wallTM);
-        MstFixedModelCreate(u, McdBoxCreate(fw, ME_R(0.02), 2, 2), wallTM);
         McdModelID m = MstModelAndBodyCreate(u, McdBoxCreate(fw, ME_R(0.3), ME_R(0.2), ME_R(0.1)), 1000);
         if (flagged)
             McdModelEnableContinuous(m);
@@ -278,18 +293,10 @@ static void random_fast_bodies_stay_in_front(void **state)
     (void)state;
     unsigned long long rng = 0xcc11d5ull;
     for (int iter = 0; iter < 30; iter++) {
-        static MeMatrix4 wallTM;
         const int wall = iter % 2, kind = (iter / 2) % 5;
-        MstUniverseID u = MstUniverseCreate(&MstUniverseDefaultSizes);
+        MstUniverseID u;
+        McdModelID wallModel = universeWithWall(&u, wall, 1.5, 9);
         McdFrameworkID fw = MstUniverseGetFramework(u);
-        MeMatrix4TMMakeIdentity(wallTM);
-        McdGeometryID wallGeo = wall == WALL_BOX ? McdBoxCreate(fw, ME_R(0.02), 3, 3) : karma_floor_mesh(fw, 1.5, 6, 0.3, 9);
-        if (wall == WALL_MESH) {
-            MeVector3Set(wallTM[0], 0, 0, 1);
-            MeVector3Set(wallTM[1], 0, 1, 0);
-            MeVector3Set(wallTM[2], -1, 0, 0);
-        }
-        McdModelID wallModel = MstFixedModelCreate(u, wallGeo, wallTM);
         McdGeometryID g;
         const MeReal a = (MeReal)uniform(&rng, 0.02, 0.3), b = (MeReal)uniform(&rng, 0.02, 0.5);
         switch (kind) {
@@ -325,16 +332,7 @@ static void random_fast_bodies_stay_in_front(void **state)
             MstUniverseStep(u, (MeReal)STEP);
             MeVector3 x;
             MdtBodyGetPosition(body, x);
-            McdModelUpdate(m);
-            McdContact c[8];
-            McdIntersectResult r;
-            memset(&r, 0, sizeof r);
-            r.contacts = c;
-            r.contactMaxCount = 8;
-            McdIntersect(pair, &r);
-            double deep = 0;
-            for (int k = 0; k < r.contactCount; k++)
-                deep = fmax(deep, -(double)c[k].separation);
+            const double deep = depthInWall(pair, m);
             if (!(x[0] < 0) || deep > 0.02 || energyOf(body) > e0 * (1 + 1e-4))
                 fail_msg("body %d (kind %d, %s) step %d: x %g, %g m deep, energy %g of %g", iter, kind, wallNames[wall], i,
                          (double)x[0], deep, energyOf(body), e0);

@@ -8,6 +8,7 @@
  * softness) scales with 1/massScale, so massScale = 125 makes the contacts as stiff as the defaults
  * intend for 1 kg bodies. */
 #include "karma_test.h"
+#include "karma_stacks.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -18,12 +19,7 @@
 #define DENSITY 1000
 #define MASS_SCALE 125
 
-typedef struct Pile {
-    MstUniverseID u;
-    int count;
-    MdtBodyID *bodies;
-    MeVector3 *start;
-} Pile;
+typedef KarmaStack Pile;
 
 static void pileInit(Pile *s, int maxBoxes)
 {
@@ -33,34 +29,12 @@ static void pileInit(Pile *s, int maxBoxes)
     sizes.collisionModelsMaxCount = maxBoxes + 1;
     sizes.dynamicConstraintsMaxCount = 16 * maxBoxes + 16; /* groups and up to 8 contacts per box */
     sizes.collisionPairsMaxCount = 8 * maxBoxes + 16;
-    s->u = MstUniverseCreate(&sizes);
-    assert_non_null(s->u);
-    MdtWorldID w = MstUniverseGetWorld(s->u);
-    MdtWorldSetGravity(w, 0, 0, ME_R(-9.81));
-    MdtWorldSetAutoDisable(w, MEFALSE);
-    static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
-    McdFrameworkID fw = MstUniverseGetFramework(s->u);
-    assert_non_null(MstFixedModelCreate(s->u, McdPlaneCreate(fw), groundTM));
-    MdtContactParamsID p = MstBridgeGetContactParams(MstUniverseGetBridge(s->u), 0, 0);
-    MdtContactParamsSetType(p, MdtContactTypeFriction2D);
-    MdtContactParamsSetFrictionModel(p, MdtFrictionModelNormalForce);
-    MdtContactParamsSetFrictionCoeffecient(p, ME_R(0.6));
-    s->count = 0;
-    s->bodies = calloc((size_t)maxBoxes, sizeof *s->bodies);
-    s->start = calloc((size_t)maxBoxes, sizeof *s->start);
-    assert_non_null(s->bodies);
-    assert_non_null(s->start);
+    karma_stack_init(s, &sizes, ME_R(0.6), maxBoxes);
 }
 
 static void pileAdd(Pile *s, McdGeometryID box, MeReal x, MeReal y, MeReal z)
 {
-    McdModelID m = MstModelAndBodyCreate(s->u, box, DENSITY);
-    assert_non_null(m);
-    MdtBodyID b = McdModelGetBody(m);
-    MdtBodySetPosition(b, x, y, z);
-    s->bodies[s->count] = b;
-    MeVector3Set(s->start[s->count], x, y, z);
-    s->count++;
+    karma_stack_add(s, box, DENSITY, x, y, z);
 }
 
 static MeReal pileDrift(const Pile *s)
@@ -84,9 +58,7 @@ static void pileFree(Pile *s)
     MdtWorldGetCounters(MstUniverseGetWorld(s->u), &c);
     assert_int_equal(c.speedWarnings, 0);
     assert_int_equal(c.energyWarnings, 0);
-    MstUniverseDestroy(s->u);
-    free(s->bodies);
-    free(s->start);
+    karma_stack_free(s);
 }
 
 /* Run `seconds` at 60 Hz; print the drift each second; return the largest drift seen. */

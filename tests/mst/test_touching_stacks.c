@@ -5,6 +5,7 @@
  * Small scenes, so that they run in every configuration; the 820-box pyramid and larger ones run in
  * the Release builds (tests/cmake/touching_stacks.cmake, through tools/touching_pyramid). */
 #include "karma_test.h"
+#include "karma_stacks.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -17,12 +18,7 @@
 #define MOVED_MAX 0.05  /* m: a standing box ends within this of where it was placed, across */
 #define MAX_BODIES 160
 
-typedef struct Scene {
-    MstUniverseID u;
-    int count;
-    MdtBodyID bodies[MAX_BODIES];
-    MeVector3 start[MAX_BODIES];
-} Scene;
+typedef KarmaStack Scene;
 
 static void sceneInit(Scene *s)
 {
@@ -31,34 +27,14 @@ static void sceneInit(Scene *s)
     sizes.collisionModelsMaxCount = MAX_BODIES + 16;
     sizes.dynamicConstraintsMaxCount = 20 * MAX_BODIES;
     sizes.collisionPairsMaxCount = 10 * MAX_BODIES;
-    s->u = MstUniverseCreate(&sizes);
-    assert_non_null(s->u);
-    MdtWorldID w = MstUniverseGetWorld(s->u);
-    MdtWorldSetGravity(w, 0, 0, ME_R(-9.81));
-    MdtWorldSetAutoDisable(w, MEFALSE);
-    static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
-    assert_non_null(MstFixedModelCreate(s->u, McdPlaneCreate(MstUniverseGetFramework(s->u)), groundTM));
-    MdtContactParamsID p = MstBridgeGetContactParams(MstUniverseGetBridge(s->u), 0, 0);
-    MdtContactParamsSetType(p, MdtContactTypeFriction2D);
-    MdtContactParamsSetFrictionModel(p, MdtFrictionModelNormalForce);
-    MdtContactParamsSetFrictionCoeffecient(p, ME_R(0.6));
-    MdtContactParamsSetRestitution(p, 0);
-    s->count = 0;
+    karma_stack_init(s, &sizes, ME_R(0.6), MAX_BODIES);
+    MdtContactParamsSetRestitution(MstBridgeGetContactParams(MstUniverseGetBridge(s->u), 0, 0), 0);
 }
 
 /* A box of edges (ex, ey, ez) m and the given density (kg/m³) centred at (x, y, z). */
 static void sceneBox(Scene *s, MeReal ex, MeReal ey, MeReal ez, MeReal density, MeReal x, MeReal y, MeReal z)
 {
-    assert_true(s->count < MAX_BODIES);
-    McdGeometryID g = McdBoxCreate(MstUniverseGetFramework(s->u), ex, ey, ez);
-    assert_non_null(g);
-    McdModelID m = MstModelAndBodyCreate(s->u, g, density);
-    assert_non_null(m);
-    MdtBodyID b = McdModelGetBody(m);
-    MdtBodySetPosition(b, x, y, z);
-    s->bodies[s->count] = b;
-    MeVector3Set(s->start[s->count], x, y, z);
-    s->count++;
+    karma_stack_add(s, McdBoxCreate(MstUniverseGetFramework(s->u), ex, ey, ez), density, x, y, z);
 }
 
 /* A fixed model of geometry g whose local z axis lies along world x (lying capsules, cylinders), or
@@ -105,7 +81,7 @@ static void sceneStands(Scene *s, const char *label)
                   fastest, fastestStep, moved);
     assert_true(fastest <= SPEED_MAX);
     assert_true(moved <= MOVED_MAX);
-    MstUniverseDestroy(s->u);
+    karma_stack_free(s);
 }
 
 /* A deterministic jitter in [-1, 1] (a linear congruential generator: the scene is the same everywhere). */

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # check_api_comments.sh SOURCE -- every public function has its own documentation comment.
 #
-# In include/karma/*.h, each ME_API function declaration must carry its own Doxygen comment: a /** ... */
+# In include/karma/*.h, each ME_API function declaration, and each static inline function (public too:
+# an application calls it as it calls the others), must carry its own Doxygen comment: a /** ... */
 # (or /// line) ending on the line just above it, or a trailing /**< ... */ on the declaration. A
 # comment heading a run of declarations documents only the first of them, and a plain /* ... */
 # comment (a section divider, a note for readers of the header) documents none: each function says
@@ -17,7 +18,7 @@ missing=$(for h in include/karma/*.h; do
                 if (stripped ~ /;/) indecl = 0
                 next
             }
-            if (stripped ~ /^ME_API / && stripped ~ /\(/) {
+            if ((stripped ~ /^ME_API / || stripped ~ /^static inline /) && stripped ~ /\(/) {
                 if (!covered && stripped !~ /\/\*\*</) print file ":" NR ": " name_of(stripped)
                 covered = 0                     # a comment covers one declaration only
                 if (stripped !~ /;/) indecl = 1
@@ -34,4 +35,4 @@ if [ -n "$missing" ]; then
     echo "(what it does, units, ownership, what it rejects) just above the declaration"
     exit 1
 fi
-echo "every ME_API function in include/karma has its own comment"
+echo "every ME_API and static inline function in include/karma has its own comment"

@@ -114,7 +114,8 @@ static inline int KeaContactFreeRows(const MeReal *mu, const MeReal *xb, unsigne
 #endif
 
 /* The contact's block when the closed forms fail: its local LCP (r_loc in rl, w in wb, x in xb) to
- * the dense solver, then applied like a generic block's step. */
+ * the dense solver, then applied like a generic block's step. Size: the contact step's state handed
+ * on as that step holds it (its one call site). */
 static void KeaContactDense(const KeaProblem *problem, KeaIterativeWork *w, int block, const MeReal *wb,
                             const MeReal *rl, MeReal *x, KeaSweepState *sweep)
 {

@@ -49,6 +49,8 @@ void KeaBodyIncidence(const KeaProblem *problem, int *incidence, int *start)
     start[0] = 0;
 }
 
+/* Size: the two compressed-row structures (body incidence: incidence and start; the matrix's
+ * pattern: pattern and patternStart) come as the direct path's workspace holds them. */
 void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeReal *A, const int *incidence,
                         const int *start, const int *patternStart, const int *pattern)
 {

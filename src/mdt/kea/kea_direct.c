@@ -117,6 +117,8 @@ static long long KeaDirectEnvelope(int n, const KeaDirectWork *w)
     return envelope;
 }
 
+/* Size: KeaSolve's contract (problem, parameters, workspace, the three outputs) and whether it may
+ * decline the partition to the iterative path. */
 KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
                          int mayDecline, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
 {

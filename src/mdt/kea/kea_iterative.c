@@ -83,7 +83,8 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
  * residuals before their steps). Only whether that is within `measureUpTo` (the tolerance, or the
  * extra effort's threshold in a round's last sweep) matters, so once a row is above it the block
  * steps stop measuring (a sizeable part of a contact step's work, and a pile rarely converges within
- * its sweeps); the steps themselves are the same either way. */
+ * its sweeps); the steps themselves are the same either way. Size: the solve's state, passed as
+ * KeaSolveIterative holds it (its one call site). */
 KEA_NOINLINE MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
                              MeReal *x, KeaStats *stats, int backward, MeReal measureUpTo)
 {

@@ -68,7 +68,8 @@ void KeaColumnsApply(int m, int nc, const MeReal *M, const MeReal *in, MeReal *o
 
 /* out = M (v0, v1) for the m x 12 column-major M of a block's J_b^T: the 12 components
  * (lin0, ang0, lin1, ang1) gathered here, next to the column kernel; the same sums, in the same
- * order, as KeaColumnsApply on them. */
+ * order, as KeaColumnsApply on them. Size: the four vectors come apart, as the sweep holds the two
+ * bodies' velocities, so that no 12-vector is copied on its hot path. */
 void KeaColumnsApplyPair(int m, const MeReal *M, const MeReal *lin0, const MeReal *ang0, const MeReal *lin1,
                          const MeReal *ang1, MeReal *out)
 {

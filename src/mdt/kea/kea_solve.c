@@ -143,6 +143,8 @@ static int KeaProblemIsValid(const KeaProblem *p)
     return KeaContactsAreValid(p);
 }
 
+/* Size: the problem, its parameters, the caller's workspace (pointer and size) and the three
+ * outputs, each its own argument so that the caller owns every buffer (kea.h). */
 KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void *workspace,
                    size_t workspaceSize, MeReal *x, KeaBodyVelocity *dv, KeaStats *statsOut)
 {
