@@ -20,7 +20,7 @@
  * MstBridgeUpdateContacts, the bridge's pair tests. Each item writes only its own data and everything
  * that must happen in order (messages, counters, the application's callbacks) happens afterwards on the
  * stepping thread in the serial order: the trajectories are bit-identical to the serial step for every
- * worker count and every task system (decisions K33, K38-cores). Messages a stage reports from inside an
+ * worker count and every task system (decisions K33, K38). Messages a stage reports from inside an
  * item (a row writer's, a pair test's) and Karma's per-model intersect callbacks may run on a worker.
  *
  * Memory: the solver's workspace chunk holds one workspace per worker; setting the worker count sizes
