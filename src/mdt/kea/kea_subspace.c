@@ -197,7 +197,8 @@ static void KeaCgDirection(int nFree, MeReal beta, const MeReal *restrict z, MeR
 }
 
 /* The line search's trial step z = mid(lo, xF + scale step, hi) - xF over the free list (xF, lo
- * and hi by position), element by element as KeaCgUpdate. */
+ * and hi by position), element by element as KeaCgUpdate. Size: separate restrict arrays, so that
+ * the compiler vectorises the loop (a struct of them would hide that they do not alias). */
 static void KeaTrialStep(int nFree, MeReal scale, const MeReal *restrict xF, const MeReal *restrict step,
                          const MeReal *restrict lo, const MeReal *restrict hi, MeReal *restrict z)
 {
