@@ -1037,6 +1037,47 @@ static McdModelID vee(McdFrameworkID fw, double sign)
     return modelAt(McdRGHeightFieldCreate(fw, h, 5, 3, 1, 1, 0, 0), id);
 }
 
+/* Vertical rays on a random height field hit the surface of the cell's right triangle (lower: x' >= y',
+ * upper: y' >= x' in the cell's unit coordinates), at random points and at points exactly on the
+ * cells' diagonals and edges, where the triangle filter of the field's walk must keep both sides. */
+static void height_field_rays_hit_the_right_triangle(void **state)
+{
+    (void)state;
+    McdFrameworkID fw = fwNew();
+    enum { NX = 9, NY = 7 };
+    static MeReal h[NX * NY];
+    const double dx = 0.5, dy = 0.75, x0 = -2, y0 = -2.25;
+    unsigned seed = 11;
+    for (int i = 0; i < NX * NY; i++)
+        h[i] = (MeReal)(rnd(&seed) - 0.5);
+    McdRGHeightFieldID f = McdRGHeightFieldCreate(fw, h, NX, NY, (MeReal)dx, (MeReal)dy, (MeReal)x0, (MeReal)y0);
+    assert_non_null(f);
+    MeMatrix4 id;
+    MeMatrix4TMMakeIdentity(id);
+    McdModelID m = modelAt(f, id);
+    for (int i = 0; i < 3000; i++) {
+        const int ix = (int)(rnd(&seed) * (NX - 1)), iy = (int)(rnd(&seed) * (NY - 1));
+        double u = rnd(&seed), v = rnd(&seed);
+        if (i % 3 == 1)
+            v = u; /* on the diagonal */
+        else if (i % 3 == 2 && i % 2)
+            u = 0; /* on a cell edge */
+        else if (i % 3 == 2)
+            v = 0;
+        const MeReal *c = &h[iy * NX + ix];
+        const double h00 = c[0], h10 = c[1], h01 = c[NX], h11 = c[NX + 1];
+        const double z = u >= v ? h00 + u * (h10 - h00) + v * (h11 - h10) : h00 + v * (h01 - h00) + u * (h11 - h01);
+        const MeReal x = (MeReal)(x0 + (ix + u) * dx), y = (MeReal)(y0 + (iy + v) * dy);
+        MeVector3 p0 = {x, y, 2}, p1 = {x, y, -2};
+        McdLineSegIntersectResult r;
+        assert_true(McdLineSegIntersect(m, p0, p1, &r));
+        assert_near(r.position[2], z, ME_TOL(1e-9, 1e-5));
+    }
+    McdModelDestroy(m);
+    McdGeometryDestroy(f);
+    McdTerm(fw);
+}
+
 static void height_field_valley_and_ridge(void **state)
 {
     (void)state;
@@ -1184,6 +1225,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(creation_and_errors),
         cmocka_unit_test(bvh_query_equals_brute_force),
+        cmocka_unit_test(height_field_rays_hit_the_right_triangle),
         cmocka_unit_test(adjacency_marks_internal_edges),
         cmocka_unit_test(sphere_face_edge_vertex),
         cmocka_unit_test(box_face_edge_vertex),

@@ -119,6 +119,23 @@ static int cellIndex(MeReal x, MeReal origin, MeReal step, int cells)
     return (int)c;
 }
 
+/* Whether the box [lo, hi] may touch triangle `upper` of cell (ix, iy): its height range, and the
+ * side of the cell's diagonal the box reaches (lower: x' >= y', upper: y' >= x', x' and y' the cell's
+ * coordinates scaled to [0, 1]), with a thousandth of the cell to spare against rounding.
+ * Conservative: it only saves building triangles the box cannot reach. */
+static MeBool triangleMayTouch(const McdHeightFieldShape *s, int ix, int iy, int upper, const MeVector3 lo,
+                               const MeVector3 hi)
+{
+    const MeReal *h = &s->heights[(size_t)iy * (size_t)s->nx + (size_t)ix];
+    const MeReal h00 = h[0], h11 = h[s->nx + 1], third = upper ? h[s->nx] : h[1];
+    if (MeMAX(MeMAX(h00, h11), third) < lo[2] || MeMIN(MeMIN(h00, h11), third) > hi[2])
+        return MEFALSE;
+    const MeReal xc = s->x0 + (MeReal)ix * s->dx, yc = s->y0 + (MeReal)iy * s->dy;
+    const MeReal slack = ME_R(1e-3) * s->dx * s->dy;
+    return upper ? (hi[1] - yc) * s->dx >= (lo[0] - xc) * s->dy - slack
+                 : (hi[0] - xc) * s->dy >= (lo[1] - yc) * s->dx - slack;
+}
+
 void McdHeightFieldForEach(const McdHeightFieldShape *s, const MeVector3 lo, const MeVector3 hi,
                            McdTerrainVisitFn visit, void *ctx)
 {
@@ -140,6 +157,8 @@ void McdHeightFieldForEach(const McdHeightFieldShape *s, const MeVector3 lo, con
             if (MeMAX(MeMAX(h00, h10), MeMAX(h01, h11)) < lo[2] || MeMIN(MeMIN(h00, h10), MeMIN(h01, h11)) > hi[2])
                 continue;
             for (int upper = 0; upper < 2; upper++) {
+                if (!triangleMayTouch(s, ix, iy, upper, lo, hi))
+                    continue;
                 McdTerrainTriangle t;
                 makeTriangle(s, ix, iy, upper, &t);
                 if (!visit(ctx, &t))
