@@ -130,20 +130,26 @@ static RGraphic *parseMEG(const char *fn, const char *filename, const char *text
     return rg;
 }
 
-RGraphic *MEAPI RGraphicLoadMEG(char *filename)
+/** Read and parse a .meg file for API function `fn` (messages name it): a graphic in no list, or NULL. */
+static RGraphic *loadMEG(const char *fn, const char *filename)
 {
     if (!filename || !*filename) {
-        R_REPORT(ME_ERR_NULL_ARGUMENT, "RGraphicLoadMEG", "NULL or empty file name");
+        R_REPORT(ME_ERR_NULL_ARGUMENT, fn, "NULL or empty file name");
         return NULL;
     }
     char *text = readWholeFile(filename);
     if (!text) {
-        R_REPORT(ME_ERR_VIEWER_BAD_MEG, "RGraphicLoadMEG", "cannot read '%s': %s", filename, strerror(errno));
+        R_REPORT(ME_ERR_VIEWER_BAD_MEG, fn, "cannot read '%s': %s", filename, strerror(errno));
         return NULL;
     }
-    RGraphic *rg = parseMEG("RGraphicLoadMEG", filename, text);
+    RGraphic *rg = parseMEG(fn, filename, text);
     free(text);
     return rg;
+}
+
+RGraphic *MEAPI RGraphicLoadMEG(char *filename)
+{
+    return loadMEG("RGraphicLoadMEG", filename);
 }
 
 int MEAPI RGraphicSave(RGraphic *rg, char *filename)
@@ -234,17 +240,7 @@ RGraphic *MEAPI RGraphicCreate(RRender *rc, char *filename, AcmeReal xScale, Acm
                      s[1], s[2]);
             return NULL;
         }
-    if (!filename || !*filename) {
-        R_REPORT(ME_ERR_NULL_ARGUMENT, "RGraphicCreate", "NULL or empty file name");
-        return NULL;
-    }
-    char *text = readWholeFile(filename);
-    if (!text) {
-        R_REPORT(ME_ERR_VIEWER_BAD_MEG, "RGraphicCreate", "cannot read '%s': %s", filename, strerror(errno));
-        return NULL;
-    }
-    RGraphic *rg = parseMEG("RGraphicCreate", filename, text);
-    free(text);
+    RGraphic *rg = loadMEG("RGraphicCreate", filename);
     if (!rg)
         return NULL;
     if (color)
