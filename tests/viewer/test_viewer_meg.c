@@ -215,6 +215,65 @@ static void test_bad_files_are_refused(void **state)
     RRenderContextDestroy(rc);
 }
 
+/* Mutated files (a fixed seed: bytes changed, removed and inserted, the file cut short): each loads as
+ * a triangle list of finite numbers, or is refused with ME_ERR_VIEWER_BAD_MEG; never a crash (the
+ * asan configuration checks every read). */
+static void test_mutated_files_load_or_are_refused(void **state)
+{
+    (void)state;
+    RRender *rc = nullContext();
+    RGraphic *box = RGraphicBoxCreate(rc, 1, 2, 3, red, NULL);
+    assert_int_equal(RGraphicSave(box, "meg_test_seed.meg"), 0);
+    FILE *f = fopen("meg_test_seed.meg", "rb");
+    assert_non_null(f);
+    static char seed[65536], text[65536 + 64];
+    size_t len = fread(seed, 1, sizeof seed - 1, f);
+    fclose(f);
+    remove("meg_test_seed.meg");
+    static const char alphabet[] = "0123456789.:-+eE \n\tnaifxXV";
+    unsigned long rng = 12345, loaded = 0, refused = 0;
+    for (int trial = 0; trial < 200; trial++) {
+        memcpy(text, seed, len);
+        size_t n = len;
+        for (int m = 0; m < 1 + trial % 4; m++) {
+            rng = rng * 6364136223846793005ul + 1442695040888963407ul;
+            size_t at = (size_t)(rng >> 33) % n;
+            char c = alphabet[(rng >> 20) % (sizeof alphabet - 1)];
+            switch ((rng >> 12) % 4) {
+            case 0: text[at] = c; break;                                       /* change a byte */
+            case 1: memmove(text + at, text + at + 1, n - at - 1), n--; break; /* remove one */
+            case 2: memmove(text + at + 1, text + at, n - at), text[at] = c, n++; break; /* insert */
+            default: n = at; break;                                            /* cut short */
+            }
+            if (n == 0)
+                break;
+        }
+        f = fopen("meg_test_mutant.meg", "wb");
+        assert_non_null(f);
+        fwrite(text, 1, n, f);
+        fclose(f);
+        unsigned long before = MeMessageGetCount(ME_ERR_VIEWER_BAD_MEG);
+        RGraphic *rg = RGraphicLoadMEG("meg_test_mutant.meg");
+        if (rg) {
+            loaded++;
+            assert_int_equal(rg->m_pObject->m_nNumVertices % 3, 0);
+            for (int i = 0; i < rg->m_pObject->m_nNumVertices; i++) {
+                const RObjectVertex *v = &rg->m_pVertices[i];
+                const AcmeReal x[8] = {v->m_X, v->m_Y, v->m_Z, v->m_NX, v->m_NY, v->m_NZ, v->m_U, v->m_V};
+                for (int k = 0; k < 8; k++)
+                    assert_true(isfinite(x[k]));
+            }
+            RGraphicDestroy(rg);
+        } else {
+            refused++;
+            assert_int_equal(MeMessageGetCount(ME_ERR_VIEWER_BAD_MEG) - before, 1);
+        }
+    }
+    remove("meg_test_mutant.meg");
+    assert_true(loaded > 0 && refused > 0); /* both ways were exercised */
+    RRenderContextDestroy(rc);
+}
+
 int main(void)
 {
     karma_capture_messages();
@@ -224,6 +283,7 @@ int main(void)
         cmocka_unit_test(test_normalize_sizes),
         cmocka_unit_test(test_hand_written_file),
         cmocka_unit_test(test_bad_files_are_refused),
+        cmocka_unit_test(test_mutated_files_load_or_are_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
