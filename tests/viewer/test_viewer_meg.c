@@ -187,6 +187,18 @@ static void test_bad_files_are_refused(void **state)
         assert_reports(ME_ERR_VIEWER_BAD_MEG, rg = RGraphicCreate(rc, "meg_test_bad.meg", 1, 1, 1, red, NULL, 0, 0));
         assert_null(rg);
     }
+    /* A NUL byte after a whole valid triangle: not text, refused rather than read up to the NUL. */
+    static const char withNul[] = "Vertices:3 x:0 y:0 z:0 nx:0 ny:0 nz:1 u:0 v:0 x:1 y:0 z:0 nx:0 ny:0 nz:1 u:0 v:0 "
+                                  "x:0 y:1 z:0 nx:0 ny:0 nz:1 u:0 v:0 \0 x:1";
+    FILE *nul = fopen("meg_test_bad.meg", "wb");
+    assert_non_null(nul);
+    fwrite(withNul, 1, sizeof withNul - 1, nul);
+    fclose(nul);
+    {
+        RGraphic *g = (RGraphic *)1;
+        assert_reports(ME_ERR_VIEWER_BAD_MEG, g = RGraphicLoadMEG("meg_test_bad.meg"));
+        assert_null(g);
+    }
     /* More vertices than the count says. */
     char more[1024] = "Vertices:3 ";
     for (int v = 0; v < 4; v++)

@@ -19,8 +19,9 @@
 /** Numbers a vertex has in a .meg file. */
 #define R_MEG_VERTEX_NUMBERS 8
 
-/** The whole file as a NUL-terminated string (NULL when it cannot be read; caller frees). */
-static char *readWholeFile(const char *filename)
+/** The whole file as a NUL-terminated string of *size bytes (NULL when it cannot be read; caller
+ *  frees). */
+static char *readWholeFile(const char *filename, size_t *sizeOut)
 {
     FILE *f = fopen(filename, "rb");
     if (!f)
@@ -44,6 +45,7 @@ static char *readWholeFile(const char *filename)
     }
     if (buf)
         buf[size] = '\0';
+    *sizeOut = size;
     return buf;
 }
 
@@ -137,12 +139,15 @@ static RGraphic *loadMEG(const char *fn, const char *filename)
         R_REPORT(ME_ERR_NULL_ARGUMENT, fn, "NULL or empty file name");
         return NULL;
     }
-    char *text = readWholeFile(filename);
+    size_t size = 0;
+    char *text = readWholeFile(filename, &size);
     if (!text) {
         R_REPORT(ME_ERR_VIEWER_BAD_MEG, fn, "cannot read '%s': %s", filename, strerror(errno));
         return NULL;
     }
-    RGraphic *rg = parseMEG(fn, filename, text);
+    /* A NUL byte would end the text early: a binary file, not 1.2's text. */
+    RGraphic *rg = strlen(text) == size ? parseMEG(fn, filename, text)
+                                        : badFile(fn, filename, text, text + strlen(text), "a NUL byte: not a text file");
     free(text);
     return rg;
 }
