@@ -80,7 +80,11 @@
 #define ME_ERROR_LIST_MST(X) \
     X(ME_ERR_MST_MATERIAL,            600, ME_LEVEL_WARNING, "a material index is out of range")
 
-#define ME_ERROR_LIST(X) ME_ERROR_LIST_ME(X) ME_ERROR_LIST_MDT(X) ME_ERROR_LIST_KEA(X) ME_ERROR_LIST_MCD(X) ME_ERROR_LIST_MST(X)
+/* The viewer's (karma_viewer) own codes. */
+#define ME_ERROR_LIST_VIEWER(X) \
+    X(ME_ERR_VIEWER_BAD_MEG,          700, ME_LEVEL_WARNING, "a .meg object file cannot be opened, read or written, or is not a vertex count (a positive multiple of 3) followed by exactly that many vertices of 8 finite numbers")
+
+#define ME_ERROR_LIST(X) ME_ERROR_LIST_ME(X) ME_ERROR_LIST_MDT(X) ME_ERROR_LIST_KEA(X) ME_ERROR_LIST_MCD(X) ME_ERROR_LIST_MST(X) ME_ERROR_LIST_VIEWER(X)
 /* clang-format on */
 
 #endif /* ME_ERROR_CODES_H */

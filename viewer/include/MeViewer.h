@@ -165,6 +165,25 @@ void MEAPI RGraphicScale(RGraphic *rg, AcmeReal xScale, AcmeReal yScale, AcmeRea
  *  nothing written) when they do not fit in rg's m_nMaxNumVertices; sets its vertex count. */
 void MEAPI RConvertTriStripToTriList(RGraphic *rg, RObjectVertex *strips, int *stripSize, int *stripStart, int numStrips);
 
+/** Load a Karma object file (.meg: a vertex count, then 8 numbers per vertex, each written
+ *  "label:number"; see docs/viewer.md) as a triangle graphic in no list, white, following no matrix.
+ *  NULL with ME_ERR_VIEWER_BAD_MEG for a file missing, unreadable, truncated, with a number that is
+ *  not finite or a count that disagrees with the numbers. */
+RGraphic *MEAPI RGraphicLoadMEG(char *filename);
+/** Write a triangle graphic's vertices (local frame, as they are now) to a .meg file that
+ *  RGraphicLoadMEG reads back exactly. Returns 0, or −1 with a message (not a triangle list, file
+ *  not writable). */
+int MEAPI RGraphicSave(RGraphic *rg, char *filename);
+/** Centre a graphic's bounding box on its local origin and fit it to [−1, 1] on each axis (the
+ *  longest axis only, the others in proportion, when bKeepAspectRatio): the size RGraphicCreate's
+ *  scales multiply (a cube loaded and scaled by w/2 is w wide). A flat axis is left flat. */
+void MEAPI RGraphicNormalize(RGraphic *rg, int bKeepAspectRatio);
+/** A graphic from a .meg file (RGraphicLoadMEG), coloured `color`, following `matrix`: normalised
+ *  (RGraphicNormalize, unless is2D), scaled by (xScale, yScale, zScale) and put in the 2D (is2D) or
+ *  3D list. NULL with a message for a bad file, a NULL context or a scale not finite or 0. */
+RGraphic *MEAPI RGraphicCreate(RRender *rc, char *filename, AcmeReal xScale, AcmeReal yScale, AcmeReal zScale,
+                               const float color[4], MeMatrix4Ptr matrix, int is2D, int bKeepAspectRatio);
+
 /** A filled rectangle in the 2D list at (orig_x, orig_y) (top left) of width × height, in the
  *  virtual 640×448 screen; alpha < 1 blends. */
 RGraphic *MEAPI RGraphic2DRectangleCreate(RRender *rc, AcmeReal orig_x, AcmeReal orig_y, AcmeReal width,
