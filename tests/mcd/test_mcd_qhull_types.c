@@ -419,6 +419,42 @@ static void computed_hulls_give_the_mesh_of_their_points(void **state)
     }
 }
 
+/* A cloud whose hull has a T-junction (found by fuzz_pairs): point 4 lies within the build's tolerance
+ * of the edge between points 5 and 1, so the merged face holds it and the face across that edge does
+ * not. 1.2's arrays hold the corners only (point 4 dropped, six corners): both paths build them, they
+ * satisfy 1.2's claims, and the mesh from them is the mesh from the points. */
+static void a_point_on_a_neighbours_edge_is_not_a_corner(void **state)
+{
+    (void)state;
+    static const MeVector3 pts[7] = {
+        {ME_R(0.872898188), ME_R(0.875652938), ME_R(-0.89042875)},
+        {ME_R(-0.641021312), ME_R(-0.911771562), ME_R(-0.911799375)},
+        {ME_R(-0.911799375), ME_R(-0.064097957), ME_R(-0.282785125)},
+        {ME_R(0.187980797), ME_R(0.18951125), ME_R(0.876042562)},
+        {ME_R(-0.89042875), ME_R(-0.911799375), ME_R(-0.911799375)},
+        {ME_R(-0.911799375), ME_R(-0.911799375), ME_R(-0.911799375)},
+        {ME_R(-0.907096750), ME_R(0.370438062), ME_R(-0.911799375)}};
+    McdConvexHull one;
+    assert_int_equal(McdComputeHull(&one, 7, pts), 1);
+    checkInvariants(&one, pts, 7, 1e-4);
+    assert_int_equal(one.numVertex, 6); /* point 4 is not a corner */
+    McdConvexHull two;
+    memset(&two, 0, sizeof two);
+    assert_int_equal(McdComputeHullSizes(&two, 7, pts), 1);
+    McdAllocateHull(&two);
+    assert_int_equal(McdGetHullData(&two), 1);
+    assertSameArrays(&two, &one);
+    McdDeallocateHull(&two);
+    McdConvexMeshID byPoints = McdConvexMeshCreateHull(fw, pts, 7, 0);
+    McdConvexMeshID byArrays = McdConvexMeshCreate(fw, &one, 0);
+    assert_non_null(byPoints);
+    assert_non_null(byArrays);
+    checkInvariants(McdConvexMeshGetPolyhedron(byPoints), pts, 7, 1e-4);
+    assertSameMesh(byArrays, byPoints, 1e-6);
+    McdConvexMeshDestroy(byArrays);
+    McdConvexMeshDestroy(byPoints);
+}
+
 static void hand_filled_bipyramid_and_its_dented_twin(void **state)
 {
     (void)state;
@@ -616,6 +652,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(literal_tetrahedron_is_the_hull_of_its_points),
         cmocka_unit_test(computed_hulls_give_the_mesh_of_their_points),
+        cmocka_unit_test(a_point_on_a_neighbours_edge_is_not_a_corner),
         cmocka_unit_test(hand_filled_bipyramid_and_its_dented_twin),
         cmocka_unit_test(bad_arrays_are_refused_and_left_to_the_caller),
         cmocka_unit_test(computing_and_accessors_refuse_bad_input),

@@ -114,22 +114,86 @@ static MeBool fillFromHull(const McdHull *h, McdConvexHull *cnv)
     return ok;
 }
 
-static void countsOf(const McdHull *h, McdConvexHull *cnv)
+/* The hull as 1.2's arrays hold it: only its corners. A vertex in fewer than two of h's polygons is
+ * not one: the build merges coplanar faces, and a point within the tolerance of a neighbour's edge
+ * stays in one polygon only (a T-junction), where no edge of the neighbour returns along it. Such
+ * points are dropped from the polygons and the vertices renumbered; the polygons keep their shape.
+ * view shares h's normals; freed by freeCorners. MEFALSE when out of memory or a polygon would be
+ * left with fewer than three corners. */
+static MeBool cornersOnly(const McdHull *h, McdHull *view)
 {
-    cnv->numVertex = h->vertexCount;
-    cnv->numFace = h->polygonCount;
-    cnv->numEdge = h->polygonStart[h->polygonCount];
+    const int nv = h->vertexCount, nf = h->polygonCount, ne = h->polygonStart[nf];
+    memset(view, 0, sizeof *view);
+    int *uses = MeMemoryCreateZeroed((size_t)(nv > 0 ? nv : 1) * sizeof(int));
+    view->vertices = MeMemoryCreate((size_t)(nv > 0 ? nv : 1) * sizeof(MeVector3));
+    view->polygonStart = MeMemoryCreate((size_t)(nf + 1) * sizeof(int));
+    view->polygonVertices = MeMemoryCreate((size_t)(ne > 0 ? ne : 1) * sizeof(int));
+    view->normals = h->normals;
+    MeBool ok = uses && view->vertices && view->polygonStart && view->polygonVertices;
+    for (int k = 0; ok && k < ne; k++)
+        uses[h->polygonVertices[k]]++;
+    for (int v = 0; ok && v < nv; v++) { /* uses[v] becomes v's new index, or -1 */
+        if (uses[v] >= 2) {
+            MeVector3Copy(view->vertices[view->vertexCount], h->vertices[v]);
+            uses[v] = view->vertexCount++;
+        } else {
+            uses[v] = -1;
+        }
+    }
+    int kept = 0;
+    for (int p = 0; ok && p < nf; p++) {
+        view->polygonStart[p] = kept;
+        for (int k = h->polygonStart[p]; k < h->polygonStart[p + 1]; k++)
+            if (uses[h->polygonVertices[k]] >= 0)
+                view->polygonVertices[kept++] = uses[h->polygonVertices[k]];
+        ok = kept - view->polygonStart[p] >= 3;
+    }
+    if (ok) {
+        view->polygonStart[nf] = kept;
+        view->polygonCount = nf;
+    }
+    MeMemoryDestroy(uses);
+    return ok;
+}
+
+static void freeCorners(McdHull *view)
+{
+    MeMemoryDestroy(view->vertices);
+    MeMemoryDestroy(view->polygonStart);
+    MeMemoryDestroy(view->polygonVertices);
+    memset(view, 0, sizeof *view);
+}
+
+/* cnv's counts for h's corners; MEFALSE (counts zero) when cornersOnly fails. */
+static MeBool countsOf(const McdHull *h, McdConvexHull *cnv)
+{
+    McdHull view;
+    const MeBool ok = cornersOnly(h, &view);
+    cnv->numVertex = ok ? view.vertexCount : 0;
+    cnv->numFace = ok ? view.polygonCount : 0;
+    cnv->numEdge = ok ? view.polygonStart[view.polygonCount] : 0;
+    freeCorners(&view);
+    return ok;
+}
+
+/* Fill cnv's arrays (sized by countsOf) from h's corners. */
+static MeBool fillCorners(const McdHull *h, McdConvexHull *cnv)
+{
+    McdHull view;
+    const MeBool ok = cornersOnly(h, &view) && fillFromHull(&view, cnv);
+    freeCorners(&view);
+    return ok;
 }
 
 MeBool McdConvexHullFromHull(const McdHull *h, McdConvexHull *cnv, const char *function)
 {
-    countsOf(h, cnv);
-    if (!allocateArrays(cnv))
-        return MEFALSE;
-    if (fillFromHull(h, cnv))
-        return METRUE;
-    ME_REPORT_IN(function, ME_ERR_INTERNAL, "the hull's polygons do not close around a vertex (or memory ran out)");
-    McdDeallocateHull(cnv);
+    if (countsOf(h, cnv) && allocateArrays(cnv)) {
+        if (fillCorners(h, cnv))
+            return METRUE;
+        McdDeallocateHull(cnv);
+    }
+    ME_REPORT_IN(function, ME_ERR_MCD_HULL_INCONSISTENT, "the hull of these points has a polygon 1.2's arrays "
+                 "cannot hold (its corners do not close around a vertex), or memory ran out; call ignored");
     return MEFALSE;
 }
 
@@ -182,7 +246,12 @@ int McdComputeHullSizes(McdConvexHull *cnv, int numpoints, const MeVector3 *poin
         MeMemoryDestroy(h);
         return 0;
     }
-    countsOf(h, cnv);
+    if (!countsOf(h, cnv)) {
+        ME_REPORT(ME_ERR_MCD_HULL_INCONSISTENT, "the hull of these points has a polygon 1.2's arrays cannot hold, "
+                  "or memory ran out; call ignored");
+        freeHull(h);
+        return 0;
+    }
     freeHull(atomic_exchange(&pendingHull, h));
     return 1;
 }
@@ -230,9 +299,10 @@ int McdGetHullData(McdConvexHull *cnv)
             freeHull(h);
         return 0;
     }
-    MeBool ok = fillFromHull(h, cnv);
+    MeBool ok = fillCorners(h, cnv);
     if (!ok)
-        ME_REPORT(ME_ERR_INTERNAL, "the hull's polygons do not close around a vertex (or memory ran out)");
+        ME_REPORT(ME_ERR_MCD_HULL_INCONSISTENT, "the hull's corners do not close around a vertex, or memory ran "
+                  "out; call ignored");
     freeHull(h);
     return ok ? 1 : 0;
 }
