@@ -118,83 +118,72 @@ static MeBool fillFromHull(const McdHull *h, McdConvexHull *cnv)
  * not one: the build merges coplanar faces, and a point within the tolerance of a neighbour's edge
  * stays in one polygon only (a T-junction), where no edge of the neighbour returns along it. Such
  * points are dropped from the polygons and the vertices renumbered; the polygons keep their shape.
- * view shares h's normals; freed by freeCorners. MEFALSE when out of memory or a polygon would be
- * left with fewer than three corners. */
-static MeBool cornersOnly(const McdHull *h, McdHull *view)
+ * corners gets the vertices, polygons and normals only, its own (McdHullFree frees them). MEFALSE,
+ * corners emptied, when out of memory or a polygon would be left with fewer than three corners. */
+static MeBool cornersOnly(const McdHull *h, McdHull *corners)
 {
     const int nv = h->vertexCount, nf = h->polygonCount, ne = h->polygonStart[nf];
-    memset(view, 0, sizeof *view);
+    memset(corners, 0, sizeof *corners);
     int *uses = MeMemoryCreateZeroed((size_t)(nv > 0 ? nv : 1) * sizeof(int));
-    view->vertices = MeMemoryCreate((size_t)(nv > 0 ? nv : 1) * sizeof(MeVector3));
-    view->polygonStart = MeMemoryCreate((size_t)(nf + 1) * sizeof(int));
-    view->polygonVertices = MeMemoryCreate((size_t)(ne > 0 ? ne : 1) * sizeof(int));
-    view->normals = h->normals;
-    MeBool ok = uses && view->vertices && view->polygonStart && view->polygonVertices;
+    corners->vertices = MeMemoryCreate((size_t)(nv > 0 ? nv : 1) * sizeof(MeVector3));
+    corners->polygonStart = MeMemoryCreate((size_t)(nf + 1) * sizeof(int));
+    corners->polygonVertices = MeMemoryCreate((size_t)(ne > 0 ? ne : 1) * sizeof(int));
+    corners->normals = MeMemoryCreate((size_t)(nf > 0 ? nf : 1) * sizeof(MeVector3));
+    MeBool ok = uses && corners->vertices && corners->polygonStart && corners->polygonVertices && corners->normals;
     for (int k = 0; ok && k < ne; k++)
         uses[h->polygonVertices[k]]++;
     for (int v = 0; ok && v < nv; v++) { /* uses[v] becomes v's new index, or -1 */
         if (uses[v] >= 2) {
-            MeVector3Copy(view->vertices[view->vertexCount], h->vertices[v]);
-            uses[v] = view->vertexCount++;
+            MeVector3Copy(corners->vertices[corners->vertexCount], h->vertices[v]);
+            uses[v] = corners->vertexCount++;
         } else {
             uses[v] = -1;
         }
     }
     int kept = 0;
     for (int p = 0; ok && p < nf; p++) {
-        view->polygonStart[p] = kept;
+        corners->polygonStart[p] = kept;
+        MeVector3Copy(corners->normals[p], h->normals[p]);
         for (int k = h->polygonStart[p]; k < h->polygonStart[p + 1]; k++)
             if (uses[h->polygonVertices[k]] >= 0)
-                view->polygonVertices[kept++] = uses[h->polygonVertices[k]];
-        ok = kept - view->polygonStart[p] >= 3;
-    }
-    if (ok) {
-        view->polygonStart[nf] = kept;
-        view->polygonCount = nf;
+                corners->polygonVertices[kept++] = uses[h->polygonVertices[k]];
+        ok = kept - corners->polygonStart[p] >= 3;
     }
     MeMemoryDestroy(uses);
-    return ok;
+    if (!ok) {
+        McdHullFree(corners);
+        return MEFALSE;
+    }
+    corners->polygonStart[nf] = kept;
+    corners->polygonCount = nf;
+    return METRUE;
 }
 
-static void freeCorners(McdHull *view)
+/* cnv's counts for the hull `corners` (made by cornersOnly). */
+static void countsOf(const McdHull *corners, McdConvexHull *cnv)
 {
-    MeMemoryDestroy(view->vertices);
-    MeMemoryDestroy(view->polygonStart);
-    MeMemoryDestroy(view->polygonVertices);
-    memset(view, 0, sizeof *view);
-}
-
-/* cnv's counts for h's corners; MEFALSE (counts zero) when cornersOnly fails. */
-static MeBool countsOf(const McdHull *h, McdConvexHull *cnv)
-{
-    McdHull view;
-    const MeBool ok = cornersOnly(h, &view);
-    cnv->numVertex = ok ? view.vertexCount : 0;
-    cnv->numFace = ok ? view.polygonCount : 0;
-    cnv->numEdge = ok ? view.polygonStart[view.polygonCount] : 0;
-    freeCorners(&view);
-    return ok;
-}
-
-/* Fill cnv's arrays (sized by countsOf) from h's corners. */
-static MeBool fillCorners(const McdHull *h, McdConvexHull *cnv)
-{
-    McdHull view;
-    const MeBool ok = cornersOnly(h, &view) && fillFromHull(&view, cnv);
-    freeCorners(&view);
-    return ok;
+    cnv->numVertex = corners->vertexCount;
+    cnv->numFace = corners->polygonCount;
+    cnv->numEdge = corners->polygonStart[corners->polygonCount];
 }
 
 MeBool McdConvexHullFromHull(const McdHull *h, McdConvexHull *cnv, const char *function)
 {
-    if (countsOf(h, cnv) && allocateArrays(cnv)) {
-        if (fillCorners(h, cnv))
-            return METRUE;
-        McdDeallocateHull(cnv);
+    McdHull corners;
+    MeBool ok = cornersOnly(h, &corners);
+    if (ok) {
+        countsOf(&corners, cnv);
+        ok = allocateArrays(cnv);
+        if (ok && !fillFromHull(&corners, cnv)) {
+            McdDeallocateHull(cnv);
+            ok = MEFALSE;
+        }
+        McdHullFree(&corners);
     }
-    ME_REPORT_IN(function, ME_ERR_MCD_HULL_INCONSISTENT, "the hull of these points has a polygon 1.2's arrays "
-                 "cannot hold (its corners do not close around a vertex), or memory ran out; call ignored");
-    return MEFALSE;
+    if (!ok)
+        ME_REPORT_IN(function, ME_ERR_MCD_HULL_INCONSISTENT, "the hull of these points has a polygon 1.2's arrays "
+                     "cannot hold (its corners do not close around a vertex), or memory ran out; call ignored");
+    return ok;
 }
 
 /* Build the hull of checked points; MEFALSE (reported in `function`'s name) when flat. */
@@ -223,9 +212,10 @@ int McdComputeHull(McdConvexHull *cnv, int numpoints, const MeVector3 *points)
     return ok ? 1 : 0;
 }
 
-/* The hull the last McdComputeHullSizes built, until McdGetHullData takes it: one slot for the process,
- * as 1.2's qhull state (no thread-local storage: the core needs libc and libm only). Swapped atomically,
- * so threads never share or leak a hull; threads building hulls at once use McdComputeHull. */
+/* The corners (cornersOnly) of the hull the last McdComputeHullSizes built, until McdGetHullData takes
+ * them: one slot for the process, as 1.2's qhull state (no thread-local storage: the core needs libc
+ * and libm only). Swapped atomically, so threads never share or leak a hull; threads building hulls
+ * at once use McdComputeHull. */
 static _Atomic(McdHull *) pendingHull = NULL;
 
 static void freeHull(McdHull *h)
@@ -239,20 +229,23 @@ static void freeHull(McdHull *h)
 int McdComputeHullSizes(McdConvexHull *cnv, int numpoints, const MeVector3 *points)
 {
     ME_CHECK_NOT_NULL(cnv, 0);
-    McdHull *h = MeMemoryCreate(sizeof *h);
-    if (!h)
+    McdHull built, *corners = MeMemoryCreate(sizeof *corners);
+    if (!corners)
         return 0;
-    if (!buildHull(points, numpoints, h, __func__)) {
-        MeMemoryDestroy(h);
+    if (!buildHull(points, numpoints, &built, __func__)) {
+        MeMemoryDestroy(corners);
         return 0;
     }
-    if (!countsOf(h, cnv)) {
+    const MeBool ok = cornersOnly(&built, corners);
+    McdHullFree(&built);
+    if (!ok) {
         ME_REPORT(ME_ERR_MCD_HULL_INCONSISTENT, "the hull of these points has a polygon 1.2's arrays cannot hold, "
                   "or memory ran out; call ignored");
-        freeHull(h);
+        MeMemoryDestroy(corners);
         return 0;
     }
-    freeHull(atomic_exchange(&pendingHull, h));
+    countsOf(corners, cnv);
+    freeHull(atomic_exchange(&pendingHull, corners));
     return 1;
 }
 
@@ -299,7 +292,7 @@ int McdGetHullData(McdConvexHull *cnv)
             freeHull(h);
         return 0;
     }
-    MeBool ok = fillCorners(h, cnv);
+    MeBool ok = fillFromHull(h, cnv);
     if (!ok)
         ME_REPORT(ME_ERR_MCD_HULL_INCONSISTENT, "the hull's corners do not close around a vertex, or memory ran "
                   "out; call ignored");
@@ -360,34 +353,30 @@ void McdGetTriangleHull(McdConvexHull *cnv, const MeVector3 p1, const MeVector3 
 
 /* ---- accessors ------------------------------------------------------------------------------ */
 
+/* Whether 0 <= index < count, reported in `function`'s name as `name` otherwise. */
+static MeBool indexInRange(const char *name, int index, int count, const char *function)
+{
+    if (index >= 0 && index < count)
+        return METRUE;
+    ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE, "%s (%d) must lie in 0 ... %d", name, index, count - 1);
+    return MEFALSE;
+}
+
 static MeBool faceEdgeInRange(const McdConvexHull *cnv, int face, int i, MeBool anyEdge, const char *function)
 {
     ME_CHECK_NOT_NULL_IN(function, cnv, MEFALSE);
-    if (face < 0 || face >= cnv->numFace) {
-        ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE, "face (%d) must lie in 0 ... %d", face, cnv->numFace - 1);
+    if (!indexInRange("face", face, cnv->numFace, function))
         return MEFALSE;
-    }
-    int n = cnv->face[face + 1].firstEdge - cnv->face[face].firstEdge;
-    if (!anyEdge && (i < 0 || i >= n)) {
-        ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE, "i (%d) must lie in 0 ... %d", i, n - 1);
-        return MEFALSE;
-    }
-    return METRUE;
+    return anyEdge || indexInRange("i", i, cnv->face[face + 1].firstEdge - cnv->face[face].firstEdge, function);
 }
 
 static MeBool vertexEdgeInRange(const McdConvexHull *cnv, int vertex, int i, MeBool anyEdge, const char *function)
 {
     ME_CHECK_NOT_NULL_IN(function, cnv, MEFALSE);
-    if (vertex < 0 || vertex >= cnv->numVertex) {
-        ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE, "vertex (%d) must lie in 0 ... %d", vertex, cnv->numVertex - 1);
+    if (!indexInRange("vertex", vertex, cnv->numVertex, function))
         return MEFALSE;
-    }
-    int n = cnv->vertex[vertex + 1].firstEdgeIndex - cnv->vertex[vertex].firstEdgeIndex;
-    if (!anyEdge && (i < 0 || i >= n)) {
-        ME_REPORT_IN(function, ME_ERR_ARGUMENT_RANGE, "i (%d) must lie in 0 ... %d", i, n - 1);
-        return MEFALSE;
-    }
-    return METRUE;
+    return anyEdge ||
+           indexInRange("i", i, cnv->vertex[vertex + 1].firstEdgeIndex - cnv->vertex[vertex].firstEdgeIndex, function);
 }
 
 int McdCnvFaceGetCount(const McdConvexHull *cnv, int face)
