@@ -7,9 +7,9 @@
  * settle, four balls are shot at them from 2 s on). Every call to DemoStep (MstUniverseStep: collision,
  * bridge, dynamics) is timed with CLOCK_MONOTONIC; a round reports the mean and the median ms a step,
  * the 99th percentile, and the mean per stage from the world's and the universe's profiles. The last
- * line is the best round's (lowest median): on a loaded machine the best of a few rounds is what
- * repeats. For a figure that does not depend on the load, count instructions with callgrind at two
- * step counts and take the difference (bench/RESULTS.md, issue 17 point 3, "Topple"). */
+ * line gives the lowest mean and the lowest median of the rounds: on a loaded machine the best of a
+ * few rounds is what repeats. For a figure that does not depend on the load, count instructions
+ * (bench/topple/instructions.sh: callgrind at two step counts, the difference). */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 #include <stdio.h>
 #include <stdlib.h>
@@ -34,8 +34,9 @@ static int compareDoubles(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* One round: returns its median ms a step (negative when the scene could not be built). */
-static double runRound(const DemoScene *scene, long steps, int round, double *times)
+/* One round: returns its median ms a step and sets *mean (negative when the scene could not be
+ * built). */
+static double runRound(const DemoScene *scene, long steps, int round, double *times, double *mean)
 {
     DemoInstance demo;
     double sum = 0;
@@ -49,6 +50,7 @@ static double runRound(const DemoScene *scene, long steps, int round, double *ti
     }
     const MeProfile *world = MdtWorldGetProfile(demo.world), *collision = MstUniverseGetProfile(demo.universe);
     const double perStep = 1e3 / (double)steps; /* profile seconds -> ms a step */
+    *mean = sum / (double)steps;
     qsort(times, (size_t)steps, sizeof *times, compareDoubles);
     const double median = times[steps / 2], p99 = times[(steps * 99) / 100];
     printf("round %d: %ld steps, ms a step: mean %.4f median %.4f p99 %.4f | collision %.4f (farfield %.4f "
@@ -85,23 +87,23 @@ int main(int argc, char **argv)
         return 2;
     }
     double *times = malloc(sizeof *times * (size_t)steps);
-    double best = -1;
-    int bestRound = 0;
+    double bestMedian = -1, bestMean = -1;
     if (!times)
         return 1;
     for (int r = 1; r <= rounds; r++) {
-        const double median = runRound(scene, steps, r, times);
+        double mean;
+        const double median = runRound(scene, steps, r, times, &mean);
         if (median < 0) {
             fprintf(stderr, "karma_topple: the scene could not be built\n");
             free(times);
             return 1;
         }
-        if (best < 0 || median < best) {
-            best = median;
-            bestRound = r;
-        }
+        if (bestMedian < 0 || median < bestMedian)
+            bestMedian = median;
+        if (bestMean < 0 || mean < bestMean)
+            bestMean = mean;
     }
-    printf("best round %d: median %.4f ms a step\n", bestRound, best);
+    printf("best of %d rounds: mean %.4f ms a step, median %.4f\n", rounds, bestMean, bestMedian);
     free(times);
     return 0;
 }
