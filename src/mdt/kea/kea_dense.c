@@ -3,7 +3,8 @@
  *
  * Forming A: each row touches at most two bodies, so A_ij is non-zero only when rows i and j share a
  * body. A body -> (row, half) incidence list turns the O(n^2) pair scan into O(sum over bodies of
- * degree^2) six-term dot products (plus the O(n^2) clearing of A).
+ * degree^2) six-term dot products, four at a time, each entry written where its first term is
+ * made: only A's pattern is touched, nothing is cleared first.
  *
  * Factor updates (free set F, A_FF = L L^T, rows of L in the order of F):
  *  - append row i: solve L l = A_F,i, then d = A_ii - l.l, new row (l, sqrt(d)): O(|F|^2);
