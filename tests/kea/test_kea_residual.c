@@ -35,11 +35,11 @@ static void residual_matches_the_dense_reference(void **state)
 {
     (void)state;
     double worstRel = 0.0;
+    MeReal x[12];
+    KeaBodyVelocity dv[5];
     for (int seed = 0; seed < 50; ++seed) {
         KtRng rng = kt_rng((uint64_t)(4200 + seed));
         KtProblem t;
-        MeReal x[12];
-        KeaBodyVelocity dv[5];
         kt_random_problem(&t, &rng, 12, 5, 1e-3, 1e-1);
         for (int i = 0; i < 12; ++i) /* any impulses, inside or outside the bounds */
             x[i] = (MeReal)kt_range(&rng, -1, 1);
