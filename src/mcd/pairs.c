@@ -242,9 +242,8 @@ static inline int intersectModels(McdModelPair *pair, McdModelData *m1, McdModel
         ME_REPORT_IN(function, ME_ERR_INTERNAL, "a pair test returned %d contacts for room for %d", n, maxCount);
         n = n < 0 ? 0 : dropInvalidContacts(fw, c, maxCount);
     }
-    unsigned long fallbacks = McdNfFallbackCount() - fallbacksBefore;
-    if (fallbacks)
-        atomic_fetch_add(&fw->pairFallbacks, fallbacks);
+    if (McdNfFallbackCount() != fallbacksBefore) /* a test fell back somewhere: this thread's are its own */
+        atomic_fetch_add(&fw->pairFallbacks, McdNfTakeFallbacks());
     if (pair->swapped)
         for (int i = 0; i < n; i++) {
             void *e = c[i].element1;

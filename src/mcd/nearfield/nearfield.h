@@ -121,11 +121,18 @@ McdNfCacheReleaseFn McdNfCacheReleaseFor(McdNearfieldFn fn);
 /* ---- degenerate arithmetic (contact.c) ------------------------------------------------------ */
 
 /** Count one fallback: a pair test whose arithmetic degenerated (a NaN or infinity in a search, no
- *  axis chosen) and that gave a defined answer instead (no contact, or the general path). The count
- *  is process-wide; the dispatcher (McdIntersectModels) adds what a test counted to its framework. */
+ *  axis chosen) and that gave a defined answer instead (no contact, or the general path). It goes to
+ *  a process-wide count and to the calling thread's tally; the dispatcher (McdIntersectModels) adds
+ *  what its test counted to its framework (contact.c says how). */
 void McdNfCountFallback(void);
-/** Fallbacks counted so far (all threads). */
+/** Fallbacks counted so far (all threads): when it has not moved during a test, the test counted
+ *  none. */
 unsigned long McdNfFallbackCount(void);
+/** The calling thread's fallbacks counted since it last took them, and its tally cleared: what its
+ *  own tests counted, whatever other threads did meanwhile. Call it after a test during which
+ *  McdNfFallbackCount moved; every caller that runs pair tests outside the dispatcher takes them too
+ *  (McdNfCollide), so that they are not taken for a later test. */
+unsigned long McdNfTakeFallbacks(void);
 /** Whether a contact's normal is of unit length (|n|² within 1e-3 of 1); false for a NaN or infinite
  *  component too. */
 static inline MeBool McdNfNormalIsUnit(const McdContact *c)
