@@ -118,12 +118,12 @@ typedef void (*McdNfCacheReleaseFn)(void *cache);
 /** The function that frees the cache the built-in test fn makes, or NULL when it makes none. */
 McdNfCacheReleaseFn McdNfCacheReleaseFor(McdNearfieldFn fn);
 
-/* ---- degenerate arithmetic (contact.c) ------------------------------------------------------ */
+/* ---- degenerate arithmetic (fallbacks.c) ---------------------------------------------------- */
 
 /** Count one fallback: a pair test whose arithmetic degenerated (a NaN or infinity in a search, no
  *  axis chosen) and that gave a defined answer instead (no contact, or the general path). It goes to
  *  a process-wide count and to the calling thread's tally; the dispatcher (McdIntersectModels) adds
- *  what its test counted to its framework (contact.c says how). */
+ *  what its test counted to its framework (fallbacks.c says how). */
 void McdNfCountFallback(void);
 /** Fallbacks counted so far (all threads): when it has not moved during a test, the test counted
  *  none. */
