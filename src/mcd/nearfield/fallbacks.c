@@ -7,15 +7,14 @@
 
 #include "nearfield.h"
 
-/* A fallback is counted twice: in a process-wide count, which the dispatcher reads before and after
- * each test (two loads, all the common path pays: most tests fall back nowhere, and then the count
- * has not moved), and in a tally of the thread that counted it, which the dispatcher takes when the
- * count moved during its test. The tally holds the testing thread's own fallbacks only, so the count
- * a framework gets is exact however many threads test pairs at once. No thread-local storage (the
- * core would need the dynamic loader's TLS support): a small table keyed by the C11 thread, under a
- * spin lock, touched only when a fallback happens. */
-static atomic_ulong fallbackCount;
-
+/* A fallback is counted in a tally of the thread that counted it, and the dispatcher takes its own
+ * thread's tally for its framework after each test: the tally holds the testing thread's own
+ * fallbacks only, so the count a framework gets is exact however many threads test pairs at once.
+ * A process-wide number of tallies not yet taken lets the common path (no fallback anywhere) skip
+ * the table with one load; the dispatcher also drops its thread's tally before a test, which holds
+ * fallbacks of pair tests run outside any framework (McdNfCollide, internal calls). No thread-local
+ * storage (the core would need the dynamic loader's TLS support): a small table keyed by the C11
+ * thread, under a spin lock, touched only while some thread has a fallback not yet taken. */
 #ifdef __STDC_NO_THREADS__
 typedef int Thread; /* without C11 threads: one tally (exact while one thread tests pairs at a time) */
 static Thread currentThread(void) { return 0; }
@@ -37,6 +36,8 @@ typedef struct Tally {
 
 static Tally tallies[TALLY_THREADS];
 static unsigned long unowned;
+static atomic_int pending; /* tallies (and unowned) not zero: changed under the lock */
+static atomic_ulong total;  /* every fallback counted, all threads */
 static atomic_flag tallyLock = ATOMIC_FLAG_INIT;
 
 static void lockTallies(void)
@@ -67,26 +68,26 @@ void McdNfCountFallback(void)
 {
     lockTallies();
     Tally *t = tallyOf(currentThread(), METRUE);
-    if (t)
-        t->count++;
-    else
-        unowned++;
+    unsigned long *count = t ? &t->count : &unowned;
+    if ((*count)++ == 0)
+        atomic_fetch_add(&pending, 1);
     unlockTallies();
-    atomic_fetch_add(&fallbackCount, 1);
+    atomic_fetch_add(&total, 1);
 }
 
-unsigned long McdNfFallbackCount(void) { return atomic_load(&fallbackCount); }
+unsigned long McdNfFallbackCount(void) { return atomic_load(&total); }
 
 unsigned long McdNfTakeFallbacks(void)
 {
+    if (!atomic_load_explicit(&pending, memory_order_relaxed)) /* no thread has any: nothing to look up */
+        return 0;
     lockTallies();
     Tally *t = tallyOf(currentThread(), MEFALSE);
-    unsigned long n = unowned;
+    const unsigned long mine = t ? t->count : 0, n = mine + unowned;
+    atomic_fetch_sub(&pending, (mine != 0) + (unowned != 0));
     unowned = 0;
-    if (t) {
-        n += t->count;
+    if (t)
         t->count = 0;
-    }
     unlockTallies();
     return n;
 }

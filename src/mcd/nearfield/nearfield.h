@@ -122,16 +122,14 @@ McdNfCacheReleaseFn McdNfCacheReleaseFor(McdNearfieldFn fn);
 
 /** Count one fallback: a pair test whose arithmetic degenerated (a NaN or infinity in a search, no
  *  axis chosen) and that gave a defined answer instead (no contact, or the general path). It goes to
- *  a process-wide count and to the calling thread's tally; the dispatcher (McdIntersectModels) adds
- *  what its test counted to its framework (fallbacks.c says how). */
+ *  the calling thread's tally, which the dispatcher (McdIntersectModels) takes for its framework
+ *  (fallbacks.c says how). */
 void McdNfCountFallback(void);
-/** Fallbacks counted so far (all threads): when it has not moved during a test, the test counted
- *  none. */
+/** Fallbacks counted so far (all threads, every caller: the tests' measure of a direct call). */
 unsigned long McdNfFallbackCount(void);
 /** The calling thread's fallbacks counted since it last took them, and its tally cleared: what its
- *  own tests counted, whatever other threads did meanwhile. Call it after a test during which
- *  McdNfFallbackCount moved; every caller that runs pair tests outside the dispatcher takes them too
- *  (McdNfCollide), so that they are not taken for a later test. */
+ *  own pair tests counted, whatever other threads did meanwhile (one load when no thread has any).
+ *  The dispatcher takes them before a test (and drops them: they are not its test's) and after. */
 unsigned long McdNfTakeFallbacks(void);
 /** Whether a contact's normal is of unit length (|n|² within 1e-3 of 1); false for a NaN or infinite
  *  component too. */

@@ -154,12 +154,10 @@ int McdNfCollide(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData
     McdNearfieldFn fn = McdNfFind(g1->type, g2->type, &swapped);
     if (!fn)
         return 0;
-    const unsigned long fallbacksBefore = McdNfFallbackCount();
-    n = swapped ? McdNfCallCentred(fn, g2, tm2, g1, tm1, tolerance, contacts, maxContacts, NULL)
-                : McdNfCallCentred(fn, g1, tm1, g2, tm2, tolerance, contacts, maxContacts, NULL);
-    if (McdNfFallbackCount() != fallbacksBefore)
-        McdNfTakeFallbacks(); /* no framework to count them: not left for the thread's next test */
-    for (k = 0; swapped && k < n; k++) {
+    if (!swapped)
+        return McdNfCallCentred(fn, g1, tm1, g2, tm2, tolerance, contacts, maxContacts, NULL);
+    n = McdNfCallCentred(fn, g2, tm2, g1, tm1, tolerance, contacts, maxContacts, NULL);
+    for (k = 0; k < n; k++) {
         void *e = contacts[k].element1;
         MeVector3Scale(contacts[k].normal, -ME_R(1.0));
         contacts[k].element1 = contacts[k].element2;
