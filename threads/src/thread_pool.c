@@ -52,6 +52,8 @@
  * so that on a machine with more runnable threads than cores the thread it waits for can run. */
 #define SPIN_NS 100000L
 #define PAUSE_NS 20000L
+/* Ranges a task is cut into per thread, at most (no range is below the task's smallest range). */
+#define RANGES_PER_THREAD 16
 /* Pause hints between two looks at the clock while spinning. */
 #define SPINS_PER_CLOCK 64
 
@@ -296,9 +298,11 @@ void *MeThreadPoolEnqueue(MdtTaskFnPtr task, int itemCount, int minRange, void *
         task(0, itemCount, 0, taskData);
         return NULL;
     }
-    /* Four ranges per thread: small enough to even out partitions of different sizes, few enough
-     * that the cursor is not contended. */
-    int block = (itemCount + 4 * pool->threadCount - 1) / (4 * pool->threadCount);
+    /* RANGES_PER_THREAD ranges per thread: a range costs one atomic add on the cursor, and the last
+     * one to finish leaves the others idle, so small ranges (down to minRange) even out items of
+     * different sizes (a step's partitions). */
+    int ranges = RANGES_PER_THREAD * pool->threadCount;
+    int block = (itemCount + ranges - 1) / ranges;
     pool->task = task;
     pool->taskData = taskData;
     pool->itemCount = itemCount;
