@@ -98,7 +98,12 @@ static long long nowNs(void)
 }
 
 /* Spin until `ready(pool, arg)` holds or SPIN_NS have passed (pause hints, then yields); returns
- * whether it holds. */
+ * whether it holds. Kept out of line so that a profile (bench/stages.sh) can leave the waiting out. */
+#if defined(__clang__)
+__attribute__((noinline))
+#elif defined(__GNUC__)
+__attribute__((noinline, noclone))
+#endif
 static int spinUntil(MeThreadPool *pool, int (*ready)(MeThreadPool *, unsigned long long), unsigned long long arg)
 {
     long long start = 0;
