@@ -47,8 +47,8 @@ for config in "${configs[@]}"; do
     targets=()
     select=()
     if [ "$config" = tsan ]; then
-        targets=(--target test_threads test_threaded_step test_threaded_fallbacks)
-        select=(-R '^test_thread(s|ed_step|ed_fallbacks)$')
+        targets=(--target test_threads test_threaded_step test_threaded_fallbacks test_thread_pool)
+        select=(-R '^test_thread(s|ed_step|ed_fallbacks|_pool)$')
     elif [ "$config" = coverage ]; then
         select=(-R '^test_(kea|determinism|analytic)|^test_(carwheel|chain|constraint_common|contact|hinge|joint|pendulum|prismatic|world_body|main_loop|matrix_capping|auto_disable|sim_check|stacking)')
     fi
