@@ -316,11 +316,13 @@ static void make_pack(KtRng *rng, int lanes, int pair, KeaContactPack *pack, Kea
     pack->pair = pair != 0;
     if (pair)
         lanes = 4;
+    pack->lanes = lanes;
+    pack->allFull = lanes == 4;
     for (l = 0; l < 4; ++l) {
         const int used = l < lanes, world = pair ? pair == 2 : l == 2;
         pack->body[0][l] = pair ? 0 : (!used ? PACK_NB : (l < 2 ? 0 : l % PACK_NB));
         pack->body[1][l] = !used || world ? PACK_NB : (pair || l == 0 ? 1 : 2);
-        pack->mask[l] = used ? ME_R(1.0) : ME_R(0.0);
+        pack->full[l] = used ? ME_R(1.0) : ME_R(0.0);
         for (r = 0; r < 3; ++r) {
             for (k = 0; k < 3; ++k) {
                 MeReal *half[8] = {J[l][r].lin0, J[l][r].ang0, J[l][r].lin1, J[l][r].ang1,
@@ -335,6 +337,8 @@ static void make_pack(KtRng *rng, int lanes, int pair, KeaContactPack *pack, Kea
             }
             for (k = 0; k <= r; ++k) /* a symmetric 3 x 3 */
                 inv[l][3 * r + k] = inv[l][3 * k + r] = used ? random_value(rng) : ME_R(0.0);
+            pack->mask[r][l] = used ? ME_R(1.0) : ME_R(0.0);
+            pack->invDiag[r][l] = used ? (MeReal)kt_range(rng, 0.01, 10.0) : ME_R(0.0);
         }
         for (r = 0; r < 3; ++r)
             for (k = 0; k < 3; ++k)
@@ -354,7 +358,8 @@ static void random_bodies(KtRng *rng, KeaVel4 *v)
 }
 
 /* The gather and the preconditioner give each used lane the bits of KeaRowVel4 and of
- * KeaBlockSymmetricApply (m = 3), an empty or masked lane 0. */
+ * KeaBlockSymmetricApply (m = 3), or of res_r / d_r for a lane not preconditioned by its inverse (up
+ * to the sign of a zero); a masked row's gather and an empty lane's give 0. */
 static void pack_gather_and_inverse_are_the_row_kernels(void **state)
 {
     KtRng rng = {9191};
@@ -368,8 +373,11 @@ static void pack_gather_and_inverse_are_the_row_kernels(void **state)
         KeaVel4 dv[PACK_NB + 1];
         make_pack(&rng, lanes, trial % 7 < 2 ? 1 + trial % 7 : 0, &pack, J, B, inv);
         random_bodies(&rng, dv);
-        if (trial % 5 == 4)
-            pack.mask[0] = ME_R(0.0); /* an SM step that left lane 0 out */
+        if (trial % 5 == 4) { /* an SM step where lane 0's friction row 1 is at a bound */
+            pack.mask[1][0] = ME_R(0.0);
+            pack.full[0] = ME_R(0.0);
+            pack.allFull = 0;
+        }
         for (r = 0; r < 12; ++r)
             res[r] = (r % 4) < lanes ? random_value(&rng) : ME_R(0.0);
         KeaPackGather(&pack, dv, out);
@@ -381,21 +389,25 @@ static void pack_gather_and_inverse_are_the_row_kernels(void **state)
             KeaBlockSymmetricApply(3, inv[l], in, expect);
             for (r = 0; r < 3; ++r) {
                 const MeReal row = KeaRowVel4(&J[l][r], &dv[pack.body[0][l]], &dv[pack.body[1][l]]);
-                if (pack.mask[l] != ME_R(0.0))
+                if (pack.mask[r][l] != ME_R(0.0))
                     assert_true(same_bits(out[4 * r + l], row));
                 else
                     assert_true(out[4 * r + l] == ME_R(0.0));
-                assert_true(same_bits(z[4 * r + l], expect[r]));
+                if (pack.full[l] != ME_R(0.0))
+                    assert_true(same_bits(z[4 * r + l], expect[r]) || (z[4 * r + l] == ME_R(0.0) && expect[r] == ME_R(0.0)));
+                else
+                    assert_true(same_bits(z[4 * r + l], in[r] * pack.invDiag[r][l]) ||
+                                (z[4 * r + l] == ME_R(0.0) && in[r] * pack.invDiag[r][l] == ME_R(0.0)));
             }
         }
     }
 }
 
 /* The scatter adds what three KeaRowApply4 per lane, lane after lane, add, within rounding (each
- * lane sums its three rows before adding them to a body, a pair pack its four lanes too): a body two
- * lanes share gets both, the world and the pads stay exactly 0, an empty lane adds nothing. The
- * bound, 10 eps (|v| + sum |B d|), covers both orders' roundings: at most 13 and 6 rounded
- * operations of half an eps on a component. */
+ * lane sums its three rows before adding them to a body): a body two lanes share gets both, the
+ * world and the pads stay exactly 0, an empty lane adds nothing; a pair pack gives the bits of the
+ * same pack scattered lane by lane. The bound, 10 eps (|v| + sum |B d|), covers both orders'
+ * roundings: at most 13 and 8 rounded operations of half an eps on a component. */
 static void pack_scatter_is_the_row_kernels_within_rounding(void **state)
 {
     KtRng rng = {5150};
@@ -406,7 +418,7 @@ static void pack_scatter_is_the_row_kernels_within_rounding(void **state)
         KeaContactPack pack;
         KeaJacobianRow J[4][3], B[4][3];
         MeReal inv[4][9], d[12], scale[PACK_NB + 1][2][3];
-        KeaVel4 got[PACK_NB + 1], expect[PACK_NB + 1];
+        KeaVel4 got[PACK_NB + 1], expect[PACK_NB + 1], byLane[PACK_NB + 1];
         make_pack(&rng, lanes, trial % 7 < 2 ? 1 + trial % 7 : 0, &pack, J, B, inv);
         random_bodies(&rng, got);
         memcpy(expect, got, sizeof got);
@@ -427,7 +439,14 @@ static void pack_scatter_is_the_row_kernels_within_rounding(void **state)
                     scale[pack.body[1][l]][1][k] += MeFabs(B[l][r].ang1[k] * d[4 * r + l]);
                 }
             }
+        memcpy(byLane, got, sizeof got);
         KeaPackScatter(&pack, d, got);
+        if (pack.pair) { /* the same pack scattered lane by lane */
+            KeaContactPack lanePack = pack;
+            lanePack.pair = 0;
+            KeaPackScatter(&lanePack, d, byLane);
+            assert_memory_equal(byLane, got, sizeof got);
+        }
         for (b = 0; b <= PACK_NB; ++b) {
             for (k = 0; k < 3; ++k) {
                 assert_true(MeFabs(got[b].lin[k] - expect[b].lin[k]) <= ME_R(10.0) * UNIT_ROUND * scale[b][0][k]);

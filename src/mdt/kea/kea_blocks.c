@@ -219,5 +219,5 @@ void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
         i += m;
     }
     w->blockStart[w->nBlocks] = n;
-    KeaPacksFill(problem, w);
+    w->nPacks = -1; /* SM builds them when it first runs (kea_contact_packs.h) */
 }

@@ -1,5 +1,5 @@
 /* kea_contact_packs.c -- the packs of four declared contacts (kea_contact_packs.h): built once per
- * solve, masked per SM step, and SM's passes over them. */
+ * solve (at its first SM step), masked per SM step, and SM's passes over them. */
 #include <string.h>
 
 #include "kea_contact_packs.h"
@@ -42,7 +42,11 @@ static void KeaPackSet(const KeaProblem *problem, KeaIterativeWork *w, KeaContac
         for (r = 0; r < 3; ++r) /* KeaBlockSymmetricApply's out[r] reads entry 3 c + r for in[c] */
             for (c = 0; c < 3; ++c)
                 pack->inv[3 * r + c][l] = factored ? inv[3 * c + r] : ME_R(0.0);
-        pack->mask[l] = ME_R(0.0);
+        for (r = 0; r < 3; ++r) {
+            pack->invDiag[r][l] = l < lanes ? w->invDiag[s + r] : ME_R(0.0);
+            pack->mask[r][l] = ME_R(0.0);
+        }
+        pack->full[l] = ME_R(0.0);
         pack->mu[0][l] = l < lanes ? problem->mu[s + 1] : ME_R(0.0);
         pack->mu[1][l] = l < lanes ? problem->mu[s + 2] : ME_R(0.0);
         pack->normalHi[l] = l < lanes ? problem->hi[s] : ME_R(0.0);
@@ -51,6 +55,7 @@ static void KeaPackSet(const KeaProblem *problem, KeaIterativeWork *w, KeaContac
         pack->row[l] = s;
         pack->live[l] = factored;
     }
+    pack->lanes = lanes;
     pack->pair = lanes == KEA_PACK_LANES;
     for (l = 1; l < KEA_PACK_LANES; ++l)
         pack->pair &= pack->body[0][l] == pack->body[0][0] && pack->body[1][l] == pack->body[1][0];
@@ -69,6 +74,8 @@ void KeaPacksFill(const KeaProblem *problem, KeaIterativeWork *w)
         const int *pair = contact ? w->body[w->blockStart[b]] : NULL;
         const int *runPair = run ? w->body[w->blockStart[runBlock[0]]] : NULL;
         int k;
+        if (contact)
+            memset(w->packed + w->blockStart[b], 1, 3);
         if (run && (!contact || pair[0] != runPair[0] || pair[1] != runPair[1])) { /* the run ends */
             for (k = 0; k < run; ++k) {
                 mixedBlock[mixed++] = runBlock[k];
@@ -92,42 +99,39 @@ void KeaPacksFill(const KeaProblem *problem, KeaIterativeWork *w)
 }
 
 /* A contact's bounds as the contact step reads them (kea_contact_kernel.h: the normal row [0, hi],
- * the friction rows +-mu max(n, 0)); a lane not listed holds 0 everywhere. Size: one pack's lane
- * arrays, written in place for the compiler to run the four lanes together. */
+ * the friction rows +-mu max(n, 0)); a masked row holds 0 everywhere. Size: one pack's lane arrays,
+ * written in place for the compiler to run the four lanes together. */
 int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x)
 {
     const unsigned char *was = w->wasFree;
-    unsigned char *packed = w->packed;
-    int k, l, active = 0;
+    int k, l, r, listed = 0;
     for (k = 0; k < w->nPacks; ++k) {
         KeaContactPack *pack = &w->packs[k];
         const int base = KEA_PACK_POSITIONS * k;
-        int *freeRows = w->freeRows + base;
+        int *freeRows = w->freeRows + base, allFull = 1;
         MeReal *lo = w->lo + base, *hi = w->hi + base, *xF = w->xFree + base;
         for (l = 0; l < KEA_PACK_LANES; ++l) {
-            const int s = pack->row[l];
-            const int on = pack->live[l] & was[s] & was[s + 1] & was[s + 2];
-            const MeReal n = x[s], f1 = x[s + 1], f2 = x[s + 2];
-            const MeReal b1 = KeaFrictionBound(pack->mu[0][l], n), b2 = KeaFrictionBound(pack->mu[1][l], n);
-            pack->mask[l] = on ? ME_R(1.0) : ME_R(0.0);
-            freeRows[l] = s;
-            freeRows[KEA_PACK_LANES + l] = s + 1;
-            freeRows[2 * KEA_PACK_LANES + l] = s + 2;
-            lo[l] = ME_R(0.0);
-            hi[l] = on ? pack->normalHi[l] : ME_R(0.0);
-            xF[l] = on ? n : ME_R(0.0);
-            lo[KEA_PACK_LANES + l] = on ? -b1 : ME_R(0.0);
-            hi[KEA_PACK_LANES + l] = on ? b1 : ME_R(0.0);
-            xF[KEA_PACK_LANES + l] = on ? f1 : ME_R(0.0);
-            lo[2 * KEA_PACK_LANES + l] = on ? -b2 : ME_R(0.0);
-            hi[2 * KEA_PACK_LANES + l] = on ? b2 : ME_R(0.0);
-            xF[2 * KEA_PACK_LANES + l] = on ? f2 : ME_R(0.0);
-            if (pack->live[l])
-                packed[s] = packed[s + 1] = packed[s + 2] = (unsigned char)on;
-            active += on;
+            const int s = pack->row[l], used = l < pack->lanes;
+            const int on[3] = {used & was[s], used & was[s + 1], used & was[s + 2]};
+            const MeReal n = x[s];
+            const MeReal bound[3] = {pack->normalHi[l], KeaFrictionBound(pack->mu[0][l], n),
+                                     KeaFrictionBound(pack->mu[1][l], n)};
+            const int full = pack->live[l] & on[0] & on[1] & on[2];
+            pack->full[l] = full ? ME_R(1.0) : ME_R(0.0);
+            allFull &= full;
+            for (r = 0; r < 3; ++r) {
+                const int p = KEA_PACK_LANES * r + l;
+                pack->mask[r][l] = on[r] ? ME_R(1.0) : ME_R(0.0);
+                freeRows[p] = s + r;
+                lo[p] = on[r] && r > 0 ? -bound[r] : ME_R(0.0);
+                hi[p] = on[r] ? bound[r] : ME_R(0.0);
+                xF[p] = on[r] ? x[s + r] : ME_R(0.0);
+                listed += on[r];
+            }
         }
+        pack->allFull = allFull;
     }
-    return active;
+    return listed;
 }
 
 void KeaPacksGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, int first, int last)
@@ -156,12 +160,10 @@ void KeaPacksPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *
 
 void KeaPacksClearMasked(const KeaIterativeWork *w, MeReal *v)
 {
-    int k, l;
+    int k, r, l;
     for (k = 0; k < w->nPacks; ++k)
-        for (l = 0; l < KEA_PACK_LANES; ++l)
-            if (w->packs[k].mask[l] == ME_R(0.0)) {
-                v[KEA_PACK_POSITIONS * k + l] = ME_R(0.0);
-                v[KEA_PACK_POSITIONS * k + KEA_PACK_LANES + l] = ME_R(0.0);
-                v[KEA_PACK_POSITIONS * k + 2 * KEA_PACK_LANES + l] = ME_R(0.0);
-            }
+        for (r = 0; r < 3; ++r)
+            for (l = 0; l < KEA_PACK_LANES; ++l)
+                if (w->packs[k].mask[r][l] == ME_R(0.0))
+                    v[KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r + l] = ME_R(0.0);
 }

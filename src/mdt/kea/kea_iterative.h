@@ -194,14 +194,14 @@ typedef struct KeaIterativeWork {
                                 segments (free blocks, preconditioned by their inverse), in order */
     int nPieces;
     KeaContactPack *packs; /**< the declared contacts four to a pack (kea_contact_packs.h) */
-    int nPacks;
-    unsigned char *packed; /**< SM: the row is in an unmasked lane of a pack (not listed again) */
+    int nPacks;            /**< -1 until the solve's first SM step builds them */
+    unsigned char *packed; /**< a declared contact's row: its place in SM's free list is in the packs */
     MeReal *localR, *localLo, *localHi, *localX; /**< a block's LCP (maxBlockRows each) */
     int *localLink;
     KeaDenseWork *dense;   /**< the dense solver, sized for maxBlockRows */
     /* Subspace minimisation: */
     int *freeRows;         /**< rows strictly inside their bounds (the pack region: every pack's
-                                rows, masked or not; then the other free rows) */
+                                rows, masked or not; then the generic rows that are free) */
     MeReal *lo, *hi;       /**< the warm start's bounds (by row); then SM's, frozen for its step
                                 (by position in the free list) */
     MeReal *xFree;         /**< SM: x on the free rows (by position), as the step found it */

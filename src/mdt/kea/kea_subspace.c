@@ -218,7 +218,7 @@ static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, int nFr
         w->step[p] = ME_R(0.0);
         w->res[p] = -w->grad[p];
     }
-    KeaPacksClearMasked(w, w->grad); /* a masked lane's positions hold 0 (kea_contact_packs.h) */
+    KeaPacksClearMasked(w, w->grad); /* a masked row's position holds 0 (kea_contact_packs.h) */
     KeaPacksClearMasked(w, w->res);
     KeaPrecondition(w, w->res, w->z);
     for (p = 0; p < nFree; ++p)
@@ -266,7 +266,7 @@ static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w
         }
         if (df < ME_R(0.0)) {
             w->smDecrease = -df;
-            for (p = 0; p < nFree; ++p) /* a masked lane's z is 0: its row is left alone */
+            for (p = 0; p < nFree; ++p) /* a masked row's z is 0: it is left alone */
                 if (w->z[p] != ME_R(0.0))
                     x[w->freeRows[p]] += w->z[p];
             for (b = 0; b < problem->nBodies; ++b)
@@ -295,10 +295,12 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
     if (w->smUnpaid && changed > KEA_SM_SKIP_MIN_CHANGED && (long)changed * KEA_SM_UNPAID_FRACTION > (long)n)
         return -1; /* it did not pay: wait until the active set has settled */
     /* the step runs: list the free rows, freeze their bounds; the packs' region first */
-    listed = 3 * KeaPacksListFree(w, x);
+    if (w->nPacks < 0) /* the first SM step of the solve that runs */
+        KeaPacksFill(problem, w);
+    listed = KeaPacksListFree(w, x);
     nFree = KEA_PACK_POSITIONS * w->nPacks;
     for (i = 0; i < n; ++i)
-        if (w->wasFree[i] && !w->packed[i]) {
+        if (w->wasFree[i] && !w->packed[i]) { /* not a contact's row */
             KeaRowBoundsInline(problem, x, i, &w->lo[nFree], &w->hi[nFree]);
             w->xFree[nFree] = x[i];
             w->freeRows[nFree++] = i;
