@@ -99,8 +99,7 @@ void KeaPacksFill(const KeaProblem *problem, KeaIterativeWork *w)
 }
 
 /* A contact's bounds as the contact step reads them (kea_contact_kernel.h: the normal row [0, hi],
- * the friction rows +-mu max(n, 0)); a masked row holds 0 everywhere. Size: one pack's lane arrays,
- * written in place for the compiler to run the four lanes together. */
+ * the friction rows +-mu max(n, 0)); a masked row holds 0 everywhere. */
 int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x)
 {
     const unsigned char *was = w->wasFree;

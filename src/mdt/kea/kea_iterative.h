@@ -50,9 +50,10 @@
  * transpose of its J (KeaColumnsApply, one vectorised column kernel for all block products: w_b
  * through KeaColumnsApplyPair, which reads the two bodies in place,
  * A_bb^-1 w_b, the preconditioner, forming A_bb) and applies its deltas to local copies of its two
- * bodies; SM's matrix-free products go through the free list a piece (a free row on its own, or a
- * block whose rows are all free) at a time the same way, each piece's rows and bodies listed once
- * per SM step (KeaFreePiece). */
+ * bodies; SM's matrix-free products go through the declared contacts four at a time, a lane each
+ * (kea_contact_packs.h), then through the generic rows' free list a piece (a free row on its own,
+ * or a block whose rows are all free) at a time the same way, each piece's rows and bodies listed
+ * once per SM step (KeaFreePiece). */
 #ifndef KEA_ITERATIVE_H
 #define KEA_ITERATIVE_H
 
