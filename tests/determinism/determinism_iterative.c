@@ -28,11 +28,11 @@
 #define HASH_EVERY 10
 
 #if KARMA_DOUBLE
-#  define GOLDEN_PILE 0x68e95dc90a5e3223ull
-#  define GOLDEN_PYRAMID 0xf792a5ceef33643dull
+#  define GOLDEN_PILE 0x723b3f95c4e4629cull
+#  define GOLDEN_PYRAMID 0x9c370eda546c0820ull
 #else
-#  define GOLDEN_PILE 0x4a52b542ec88b8d7ull
-#  define GOLDEN_PYRAMID 0x18701b2344ba6c5full
+#  define GOLDEN_PILE 0x2930d4eebe120312ull
+#  define GOLDEN_PYRAMID 0x6f7d874e094e3543ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};

@@ -149,8 +149,8 @@ static void heap_judged_by_the_last_step_is_awake_at_the_stated_time(void **stat
     buildHeap(&h, 0);
     MeReal sleepSpeed, sleepSpin;
     const double t = stepUntilAsleep(&h, SLEEP_LIMIT_S, &sleepSpeed, &sleepSpin);
-    printf("the same heap judged by the last step alone: %s after %.0f s, %d of %d bodies awake\n",
-           t < 0 ? "awake" : "asleep", SLEEP_LIMIT_S, MdtWorldGetEnabledBodies(h.w), HEAP);
+    printf("the same heap judged by the last step alone: %s at %.2f s, %d of %d bodies awake\n",
+           t < 0 ? "awake" : "asleep", t < 0 ? SLEEP_LIMIT_S : t, MdtWorldGetEnabledBodies(h.w), HEAP);
     assert_true(t < 0);
     MstUniverseDestroy(h.u);
 }

@@ -3,10 +3,11 @@
  * friction rows), each block's matrix A_bb = J_b M^-1 J_b^T + diag(eps), its factor and inverse, and
  * which blocks are declared contacts (KeaContact; the sweep's contact step). */
 #include "kea_block_kernels.h"
+#include "kea_contact_packs.h"
 
 void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIterativeWork *w)
 {
-    const int cap = KeaBlockCap(n, maxBlockRows);
+    const int cap = KeaBlockCap(n, maxBlockRows), positions = KeaFreePositions(n);
     w->B = KEA_ALLOC(arena, KeaJacobianRow, n);
     w->invDiag = KEA_ALLOC(arena, MeReal, n);
     w->diag = KEA_ALLOC(arena, MeReal, n);
@@ -15,30 +16,31 @@ void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIte
     w->blockA = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)cap);
     w->blockL = KEA_ALLOC(arena, MeReal, (size_t)cap * (size_t)cap);
     w->blockInv = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)cap);
-    w->contactInv = KEA_ALLOC(arena, MeReal, (size_t)n * 4);
     w->blockFactored = KEA_ALLOC(arena, unsigned char, n);
     w->blockContact = KEA_ALLOC(arena, unsigned char, n);
     w->wasFree = KEA_ALLOC(arena, unsigned char, n);
     w->localW = KEA_ALLOC(arena, MeReal, cap);
     w->rowBlock = KEA_ALLOC(arena, int, n);
     w->pieces = KEA_ALLOC(arena, KeaFreePiece, n);
+    w->packs = KEA_ALLOC(arena, KeaContactPack, n / 12 + 1);
+    w->packed = KEA_ALLOC(arena, unsigned char, n);
     w->localR = KEA_ALLOC(arena, MeReal, cap);
     w->localLo = KEA_ALLOC(arena, MeReal, cap);
     w->localHi = KEA_ALLOC(arena, MeReal, cap);
     w->localX = KEA_ALLOC(arena, MeReal, cap);
     w->localLink = KEA_ALLOC(arena, int, cap);
     w->dense = KeaDenseWorkCreate(arena, cap);
-    w->freeRows = KEA_ALLOC(arena, int, n);
-    w->lo = KEA_ALLOC(arena, MeReal, n);
-    w->hi = KEA_ALLOC(arena, MeReal, n);
-    w->xFree = KEA_ALLOC(arena, MeReal, n);
-    w->grad = KEA_ALLOC(arena, MeReal, n);
-    w->epsFree = KEA_ALLOC(arena, MeReal, n);
-    w->step = KEA_ALLOC(arena, MeReal, n);
-    w->res = KEA_ALLOC(arena, MeReal, n);
-    w->z = KEA_ALLOC(arena, MeReal, n);
-    w->dir = KEA_ALLOC(arena, MeReal, n);
-    w->q = KEA_ALLOC(arena, MeReal, n);
+    w->freeRows = KEA_ALLOC(arena, int, positions);
+    w->lo = KEA_ALLOC(arena, MeReal, positions);
+    w->hi = KEA_ALLOC(arena, MeReal, positions);
+    w->xFree = KEA_ALLOC(arena, MeReal, positions);
+    w->grad = KEA_ALLOC(arena, MeReal, positions);
+    w->epsFree = KEA_ALLOC(arena, MeReal, positions);
+    w->step = KEA_ALLOC(arena, MeReal, positions);
+    w->res = KEA_ALLOC(arena, MeReal, positions);
+    w->z = KEA_ALLOC(arena, MeReal, positions);
+    w->dir = KEA_ALLOC(arena, MeReal, positions);
+    w->q = KEA_ALLOC(arena, MeReal, positions);
     w->J = KEA_ALLOC(arena, KeaJacobianRow, n);
     w->JT = KEA_ALLOC(arena, MeReal, (size_t)n * 12);
     w->localD = KEA_ALLOC(arena, MeReal, cap);
@@ -208,14 +210,6 @@ void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
             offset += m * m;
         }
         w->blockContact[w->nBlocks] = 0;
-        if (contact && w->blockFactored[w->nBlocks]) { /* its inverse's columns, padded */
-            for (r = 0; r < 3; ++r) {
-                w->contactInv[4 * i + 4 * r + 0] = w->blockInv[offset - 9 + 3 * r + 0];
-                w->contactInv[4 * i + 4 * r + 1] = w->blockInv[offset - 9 + 3 * r + 1];
-                w->contactInv[4 * i + 4 * r + 2] = w->blockInv[offset - 9 + 3 * r + 2];
-                w->contactInv[4 * i + 4 * r + 3] = ME_R(0.0);
-            }
-        }
         if (contact) {
             w->blockContact[w->nBlocks] = b[1] < 0 ? KEA_CONTACT_WORLD : KEA_CONTACT_BODIES;
             ++w->nContactBlocks;
@@ -225,4 +219,5 @@ void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
         i += m;
     }
     w->blockStart[w->nBlocks] = n;
+    w->nPacks = -1; /* SM builds them when it first runs (kea_contact_packs.h) */
 }

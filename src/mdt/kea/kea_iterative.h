@@ -6,6 +6,7 @@
  *   kea_contact_kernel.h  the contact step: one declared contact's exact step (KeaContactBlockStep)
  *   kea_iterative.c       the sweep, the generic block step and the driver (KeaSolveIterative)
  *   kea_subspace.c        subspace minimisation and its schedule (KeaSubspaceMinimise)
+ *   kea_contact_packs.*   declared contacts four to a pack, a lane each (SM's products on them)
  * This header holds the padded data, the work struct and the row kernels; the tuning constants
  * (KEA_SM_*, KEA_GATHER_ROW_BY_ROW) are in kea_tuning.h.
  *
@@ -49,9 +50,10 @@
  * transpose of its J (KeaColumnsApply, one vectorised column kernel for all block products: w_b
  * through KeaColumnsApplyPair, which reads the two bodies in place,
  * A_bb^-1 w_b, the preconditioner, forming A_bb) and applies its deltas to local copies of its two
- * bodies; SM's matrix-free products go through the free list a piece (a free row on its own, or a
- * block whose rows are all free) at a time the same way, each piece's rows and bodies listed once
- * per SM step (KeaFreePiece). */
+ * bodies; SM's matrix-free products go through the declared contacts four at a time, a lane each
+ * (kea_contact_packs.h), then through the generic rows' free list a piece (a free row on its own,
+ * or a block whose rows are all free) at a time the same way, each piece's rows and bodies listed
+ * once per SM step (KeaFreePiece). */
 #ifndef KEA_ITERATIVE_H
 #define KEA_ITERATIVE_H
 
@@ -67,9 +69,11 @@
 #  define KEA_NOINLINE static
 #endif
 
+typedef struct KeaContactPack KeaContactPack; /* kea_contact_packs.h */
+
 /** A body's velocity change with each 3-vector padded to 4 (pad 0). */
 typedef struct KeaVel4 {
-    MeReal lin[4];
+    _Alignas(16) MeReal lin[4]; /* 16-byte aligned: four-lane loads of it may be aligned ones */
     MeReal ang[4];
 } KeaVel4;
 
@@ -134,13 +138,13 @@ static inline void KeaRowApply4(const KeaJacobianRow *B, MeReal s, KeaVel4 *v0, 
 
 enum { KEA_CONTACT_BODIES = 1, KEA_CONTACT_WORLD = 2 }; /* a declared contact between two bodies, or on the world */
 
-/** SM: one piece of the free list for its matrix-free products, everything they read about it in
- *  one place: a free row on its own, or a segment (a block whose rows are all free). */
+/** SM: one piece of the free list after its pack region (kea_contact_packs.h) for its matrix-free
+ *  products, everything they read about it in one place: a free row on its own, or a segment (a
+ *  generic block whose rows are all free). */
 typedef struct KeaFreePiece {
     int pos;      /**< its first position in the free list */
     int row;      /**< its first row */
     int rows;     /**< 1 for a row on its own, else the block's size */
-    int kind;     /**< 0, or the segment's KEA_CONTACT_* kind when it is a declared contact */
     int body[2];  /**< the row halves' bodies (the world: nb) */
     int matrix;   /**< a segment: its block's offset in blockInv (the preconditioner); else -1 */
 } KeaFreePiece;
@@ -172,9 +176,6 @@ typedef struct KeaIterativeWork {
                                 a preconditioner step is then one small matrix-vector product,
                                 no divisions (each block is solved once a sweep, and
                                 again per SM step when free, but factored once a step) */
-    MeReal *contactInv;    /**< a declared contact's A_bb^-1 (when factored) as three columns padded to 4,
-                                at contactInv + 4 s for the contact whose first row is s: its product
-                                with a vector is three lanes (SM's preconditioner) */
     unsigned char *blockFactored; /**< the factor exists (A_bb safely positive definite) */
     unsigned char *blockContact;  /**< KEA_CONTACT_* kind of a declared contact's block (KeaContact), else 0 */
     unsigned char *wasFree;       /**< SM: the row was free at the last SM step (or the warm start) */
@@ -190,14 +191,18 @@ typedef struct KeaIterativeWork {
                                        the last sweep (tallied by its steps) */
     MeReal *localW;        /**< a block's w */
     int *rowBlock;         /**< block of each row */
-    KeaFreePiece *pieces;  /**< SM: the free list as rows on their own and segments (free blocks,
-                                preconditioned by their inverse), in order */
+    KeaFreePiece *pieces;  /**< SM: the free list after its pack region as rows on their own and
+                                segments (free blocks, preconditioned by their inverse), in order */
     int nPieces;
+    KeaContactPack *packs; /**< the declared contacts four to a pack (kea_contact_packs.h) */
+    int nPacks;            /**< -1 until the solve's first SM step builds them */
+    unsigned char *packed; /**< a declared contact's row: its place in SM's free list is in the packs */
     MeReal *localR, *localLo, *localHi, *localX; /**< a block's LCP (maxBlockRows each) */
     int *localLink;
     KeaDenseWork *dense;   /**< the dense solver, sized for maxBlockRows */
     /* Subspace minimisation: */
-    int *freeRows;         /**< rows strictly inside their bounds */
+    int *freeRows;         /**< rows strictly inside their bounds (the pack region: every pack's
+                                rows, masked or not; then the generic rows that are free) */
     MeReal *lo, *hi;       /**< the warm start's bounds (by row); then SM's, frozen for its step
                                 (by position in the free list) */
     MeReal *xFree;         /**< SM: x on the free rows (by position), as the step found it */
@@ -218,6 +223,10 @@ typedef struct KeaIterativeWork {
     KeaVel4 *dv;           /**< the solve's dv (nb + 1), copied out at the end */
     KeaVel4 *dvTmp;        /**< per-body scratch for A_FF p and for the trial step (nb + 1) */
 } KeaIterativeWork;
+
+/* SM's free-list positions for n rows at most: the pack region (12 per pack of up to four of the at
+ * most n / 3 contacts, masked lanes included) and every row again after it. */
+static inline int KeaFreePositions(int n) { return n + 12 * (n / 12 + 1); }
 
 /* Rows per block at most: maxBlockRows within 1 ... KEA_MAX_BLOCK_ROWS and the problem size. */
 static inline int KeaBlockCap(int n, int maxBlockRows)

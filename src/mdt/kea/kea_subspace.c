@@ -27,10 +27,11 @@
  * run; once a pile's active set settles, SM runs again, so a solve run to convergence keeps it.
  * KeaStats.subspaceSkipped counts the skips. Figures: bench/RESULTS.md. */
 #include "kea_block_kernels.h"
+#include "kea_contact_packs.h"
 
-/* dvTmp = M^-1 J_F^T v (v by position in the free list), a piece (KeaFindSegments) at a time in
- * free-list order: a segment through the sweep's block kernels (a contact's world half not
- * written), a row on its own by itself. The work's arrays are read into locals once: a four-lane
+/* dvTmp = M^-1 J_F^T v (v by position in the free list): the packs (kea_contact_packs.h), then a
+ * piece (KeaFindSegments) at a time in free-list order: a segment through the sweep's block
+ * kernels, a row on its own by itself. The work's arrays are read into locals once: a four-lane
  * store may alias anything for the compiler, which would reload them for every piece. */
 static void KeaScatter(const KeaProblem *problem, const KeaIterativeWork *w, const MeReal *v)
 {
@@ -40,13 +41,12 @@ static void KeaScatter(const KeaProblem *problem, const KeaIterativeWork *w, con
     const int nPieces = w->nPieces;
     int k;
     memset(dvTmp, 0, sizeof(KeaVel4) * (size_t)(problem->nBodies + 1));
+    KeaPacksScatter(w, v, dvTmp, 0, w->nPacks);
     for (k = 0; k < nPieces; ++k) {
         const KeaFreePiece *piece = &pieces[k];
         KeaVel4 *v0 = &dvTmp[piece->body[0]], *v1 = &dvTmp[piece->body[1]];
         const MeReal *vp = v + piece->pos;
-        if (piece->kind) {
-            KeaContactScatter(&B[piece->row], vp, v0, piece->kind == KEA_CONTACT_WORLD ? NULL : v1);
-        } else if (piece->rows == 1) {
+        if (piece->rows == 1) {
             if (vp[0] != ME_R(0.0))
                 KeaRowApply4(&B[piece->row], vp[0], v0, v1);
         } else {
@@ -55,31 +55,31 @@ static void KeaScatter(const KeaProblem *problem, const KeaIterativeWork *w, con
     }
 }
 
-/* out[p] = J_i . dv of the free rows (a piece at a time, as KeaScatter). */
+/* out[p] = J_i . dv of the free rows (the packs, then a piece at a time, as KeaScatter). */
 static void KeaGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out)
 {
     const KeaFreePiece *pieces = w->pieces;
     const KeaJacobianRow *J = w->J;
     const int nPieces = w->nPieces;
     int k;
+    KeaPacksGather(w, dv, out, 0, w->nPacks);
     for (k = 0; k < nPieces; ++k) {
         const KeaFreePiece *piece = &pieces[k];
         const KeaVel4 *v0 = &dv[piece->body[0]], *v1 = &dv[piece->body[1]];
         MeReal *o = out + piece->pos;
-        if (piece->kind) /* as the sweep's contact step gathers */
-            KeaContactGather(&J[piece->row], v0, piece->kind == KEA_CONTACT_WORLD ? NULL : v1, o);
-        else if (piece->rows == 1)
+        if (piece->rows == 1)
             o[0] = KeaRowVel4(&J[piece->row], v0, v1);
         else
             KeaBlockGather(w, piece->row, piece->rows, v0, v1, o);
     }
 }
 
-/* The blocks whose rows are all free (and whose factor exists) become segments of the free list,
- * preconditioned by their exact inverse A_bb^-1; the other free rows by 1 / d_i. */
-static void KeaFindSegments(KeaIterativeWork *w, int nFree)
+/* After the pack region (positions before first), the blocks whose rows are all free (and whose
+ * factor exists) become segments of the free list, preconditioned by their exact inverse A_bb^-1;
+ * the other free rows by 1 / d_i. */
+static void KeaFindSegments(KeaIterativeWork *w, int first, int nFree)
 {
-    int p = 0;
+    int p = first;
     w->nPieces = 0;
     while (p < nFree) {
         const int i = w->freeRows[p], b = w->rowBlock[i];
@@ -92,32 +92,29 @@ static void KeaFindSegments(KeaIterativeWork *w, int nFree)
         if (m > 1 && i == w->blockStart[b] && w->blockFactored[b] && p + m <= nFree &&
             w->freeRows[p + m - 1] == i + m - 1) {
             piece->rows = m;
-            piece->kind = w->blockContact[b];
             piece->matrix = w->blockMatrix[b];
             p += m;
         } else {
             piece->rows = 1;
-            piece->kind = 0;
             piece->matrix = -1;
             ++p;
         }
     }
 }
 
-/* z = P^-1 res (block-Jacobi preconditioner of the free rows): a segment by its block's inverse, a
- * row on its own by 1 / d_i. */
+/* z = P^-1 res (block-Jacobi preconditioner of the free rows): a pack's contacts and a segment by
+ * their block's inverse, a row on its own by 1 / d_i. */
 static void KeaPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z)
 {
     const KeaFreePiece *pieces = w->pieces;
-    const MeReal *blockInv = w->blockInv, *invDiag = w->invDiag, *contactInv = w->contactInv;
+    const MeReal *blockInv = w->blockInv, *invDiag = w->invDiag;
     const int nPieces = w->nPieces;
     int k;
+    KeaPacksPrecondition(w, res, z, 0, w->nPacks);
     for (k = 0; k < nPieces; ++k) {
         const KeaFreePiece *piece = &pieces[k];
         const int p = piece->pos;
-        if (piece->kind)
-            KeaLanesStore3(z + p, KeaContactInverseApply(contactInv + 4 * piece->row, res[p], res[p + 1], res[p + 2]));
-        else if (piece->rows == 1)
+        if (piece->rows == 1)
             z[p] = res[p] * invDiag[piece->row];
         else
             KeaBlockSymmetricApply(piece->rows, blockInv + piece->matrix, res + p, z + p);
@@ -221,6 +218,8 @@ static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, int nFr
         w->step[p] = ME_R(0.0);
         w->res[p] = -w->grad[p];
     }
+    KeaPacksClearMasked(w, w->grad); /* a masked row's position holds 0 (kea_contact_packs.h) */
+    KeaPacksClearMasked(w, w->res);
     KeaPrecondition(w, w->res, w->z);
     for (p = 0; p < nFree; ++p)
         w->dir[p] = w->z[p];
@@ -267,8 +266,9 @@ static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w
         }
         if (df < ME_R(0.0)) {
             w->smDecrease = -df;
-            for (p = 0; p < nFree; ++p)
-                x[w->freeRows[p]] += w->z[p];
+            for (p = 0; p < nFree; ++p) /* a masked row's z is 0: it is left alone */
+                if (w->z[p] != ME_R(0.0))
+                    x[w->freeRows[p]] += w->z[p];
             for (b = 0; b < problem->nBodies; ++b)
                 for (k = 0; k < 4; ++k) {
                     w->dv[b].lin[k] += w->dvTmp[b].lin[k];
@@ -284,7 +284,7 @@ static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w
 int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x)
 {
     const int n = problem->nRows;
-    int i, nFree = 0, changed, steps;
+    int i, nFree, listed, changed, steps;
 
     changed = KeaUpdateFreeRows(problem, w, x);
     if (changed > KEA_SM_SKIP_MIN_CHANGED && (long)changed * KEA_SM_SKIP_FRACTION > (long)n && !w->skippedLast) {
@@ -294,15 +294,21 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
     w->skippedLast = 0;
     if (w->smUnpaid && changed > KEA_SM_SKIP_MIN_CHANGED && (long)changed * KEA_SM_UNPAID_FRACTION > (long)n)
         return -1; /* it did not pay: wait until the active set has settled */
-    for (i = 0; i < n; ++i) /* the step runs: list the free rows, freeze their bounds */
-        if (w->wasFree[i]) {
+    /* the step runs: list the free rows, freeze their bounds; the packs' region first */
+    if (w->nPacks < 0) /* the first SM step of the solve that runs */
+        KeaPacksFill(problem, w);
+    listed = KeaPacksListFree(w, x);
+    nFree = KEA_PACK_POSITIONS * w->nPacks;
+    for (i = 0; i < n; ++i)
+        if (w->wasFree[i] && !w->packed[i]) { /* not a contact's row */
             KeaRowBoundsInline(problem, x, i, &w->lo[nFree], &w->hi[nFree]);
             w->xFree[nFree] = x[i];
             w->freeRows[nFree++] = i;
+            ++listed;
         }
-    if (nFree == 0)
+    if (listed == 0)
         return 0;
-    KeaFindSegments(w, nFree);
+    KeaFindSegments(w, KEA_PACK_POSITIONS * w->nPacks, nFree);
     steps = KeaSubspaceCg(problem, w, nFree, maxSteps, x);
     if (steps > 0)
         KeaSubspaceLineSearch(problem, w, nFree, x);
