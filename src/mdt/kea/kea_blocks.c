@@ -47,6 +47,8 @@ void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIte
     w->dv = KEA_ALLOC(arena, KeaVel4, nb + 1);
     w->dvTmp = KEA_ALLOC(arena, KeaVel4, nb + 1);
     w->bodyColumns = KEA_ALLOC(arena, KeaBodyColumns, nb);
+    w->nb = nb;
+    w->split = NULL;
 }
 
 size_t KeaIterativeWorkspaceBytes(int nRows, int nBodies)

@@ -79,6 +79,49 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
     return worst;
 }
 
+/* One block's step in a sweep (the contact step, the generic block step, or a lone row's scalar
+ * update); returns the block's largest row residual before its step (0 when not measured). A row's
+ * half on the world (dv[nb]) is not written: it stays zero, and a split sweep's blocks on the world
+ * run at once. Always inlined into its two sweeps, so that the contact step stays inlined. */
+KEA_ALWAYS_INLINE MeReal KeaSweepBlock(const KeaProblem *problem, KeaIterativeWork *w,
+                                                                  int block, MeReal *x, KeaSweepState *sweep,
+                                                                  MeReal omega)
+{
+    const int i = w->blockStart[block];
+    MeReal lo, hi, wi, xNew, r;
+    if (w->blockContact[block])
+        return KeaContactBlockStep(problem, w, block, x, sweep);
+    if (w->blockStart[block + 1] - i > 1) {
+        /* a copy: the generic step is not inlined, and sweep's address given to it would keep
+         * sweep in memory for the contact steps too */
+        KeaSweepState blockSweep = *sweep;
+        r = KeaBlockStep(problem, w, block, x, &blockSweep);
+        sweep->decrease = blockSweep.decrease;
+        return r;
+    }
+    if (w->invDiag[i] == ME_R(0.0))
+        return ME_R(0.0);
+    KeaRowBoundsInline(problem, x, i, &lo, &hi);
+    wi = KeaRowW(problem, w, i, x, &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
+    r = w->diag[i] * KeaFabs(x[i] - KeaClamp(x[i] - wi * w->invDiag[i], lo, hi));
+    xNew = KeaClamp(x[i] - omega * wi * w->invDiag[i], lo, hi);
+    if (xNew != x[i]) {
+        const KeaJacobianRow *B = &w->B[i];
+        sweep->decrease -= ME_R(0.5) * (xNew - x[i]) * wi;
+        if (w->body[i][0] != w->nb)
+            KeaHalfApply4(B->lin0, B->ang0, xNew - x[i], &w->dv[w->body[i][0]]);
+        if (w->body[i][1] != w->nb)
+            KeaHalfApply4(B->lin1, B->ang1, xNew - x[i], &w->dv[w->body[i][1]]);
+        x[i] = xNew;
+    }
+    return r;
+}
+
+static MeReal KeaSweepOmega(const KeaParameters *params)
+{
+    return params->sor > ME_R(0.0) && params->sor < ME_R(2.0) ? params->sor : ME_R(1.0);
+}
+
 /* One PGS sweep over the blocks, forwards or backwards; returns the largest residual met (the rows'
  * residuals before their steps). Only whether that is within `measureUpTo` (the tolerance, or the
  * extra effort's threshold in a round's last sweep) matters, so once a row is above it the block
@@ -88,7 +131,7 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
 KEA_NOINLINE MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
                              MeReal *x, KeaStats *stats, int backward, MeReal measureUpTo)
 {
-    const MeReal omega = params->sor > ME_R(0.0) && params->sor < ME_R(2.0) ? params->sor : ME_R(1.0);
+    const MeReal omega = KeaSweepOmega(params);
     MeReal worst = ME_R(0.0);
     KeaSweepState sweep;
     int k;
@@ -98,37 +141,100 @@ KEA_NOINLINE MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, con
     sweep.maxPasses = params->maxFrictionPasses;
     sweep.stats = stats;
     for (k = 0; k < w->nBlocks; ++k) {
-        const int block = backward ? w->nBlocks - 1 - k : k;
-        const int i = w->blockStart[block];
-        MeReal lo, hi, wi, xNew, r;
         sweep.measure = worst <= measureUpTo;
-        if (w->blockContact[block]) { /* one call site: the step is inlined into the sweep */
-            worst = KeaMax(worst, KeaContactBlockStep(problem, w, block, x, &sweep));
-            continue;
-        }
-        if (w->blockStart[block + 1] - i > 1) {
-            /* a copy: the generic step is not inlined, and sweep's address given to it would keep
-             * sweep in memory for the contact steps too */
-            KeaSweepState blockSweep = sweep;
-            worst = KeaMax(worst, KeaBlockStep(problem, w, block, x, &blockSweep));
-            sweep.decrease = blockSweep.decrease;
-            continue;
-        }
-        if (w->invDiag[i] == ME_R(0.0))
-            continue;
-        KeaRowBoundsInline(problem, x, i, &lo, &hi);
-        wi = KeaRowW(problem, w, i, x, &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
-        r = w->diag[i] * KeaFabs(x[i] - KeaClamp(x[i] - wi * w->invDiag[i], lo, hi));
-        worst = KeaMax(worst, r);
-        xNew = KeaClamp(x[i] - omega * wi * w->invDiag[i], lo, hi);
-        if (xNew != x[i]) {
-            sweep.decrease -= ME_R(0.5) * (xNew - x[i]) * wi;
-            KeaRowApply4(&w->B[i], xNew - x[i], &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
-            x[i] = xNew;
-        }
+        worst = KeaMax(worst, KeaSweepBlock(problem, w, backward ? w->nBlocks - 1 - k : k, x, &sweep, omega));
     }
     w->sweepDecrease = sweep.decrease;
     w->sweepChanged = sweep.changed;
+    return worst;
+}
+
+/* What a split sweep's chunks share (kea_iterative.h, "the split solve"). */
+typedef struct KeaSplitSweep {
+    const KeaProblem *problem;
+    KeaSplit *split;
+    MeReal *x;
+    MeReal omega, measureUpTo;
+    int backward, tally, maxPasses;
+    int firstChunk, lastChunk; /* the colour's chunks */
+} KeaSplitSweep;
+
+/* Chunk `chunk` of a colour on a worker's copy of the work: its blocks in sweep order, its tallies
+ * into its own record. */
+static void KeaSweepChunk(const KeaSplitSweep *t, int chunk, KeaIterativeWork *w)
+{
+    const KeaSplit *split = t->split;
+    const int first = split->chunkStart[chunk], count = split->chunkStart[chunk + 1] - first;
+    KeaSplitChunk *record = &split->chunks[chunk];
+    MeReal worst = ME_R(0.0);
+    KeaStats local;
+    KeaSweepState sweep;
+    int k;
+    memset(&local, 0, sizeof local);
+    sweep.decrease = ME_R(0.0);
+    sweep.changed = 0;
+    sweep.tally = t->tally;
+    sweep.maxPasses = t->maxPasses;
+    sweep.stats = &local;
+    for (k = 0; k < count; ++k) {
+        const int block = split->order[t->backward ? first + count - 1 - k : first + k];
+        sweep.measure = worst <= t->measureUpTo;
+        worst = KeaMax(worst, KeaSweepBlock(t->problem, w, block, t->x, &sweep, t->omega));
+    }
+    record->decrease = sweep.decrease;
+    record->worst = worst;
+    record->changed = sweep.changed;
+    record->pivots = local.pivots;
+    record->regularised = local.regularised;
+}
+
+/* The task over a colour's chunks (item j: the j-th in sweep order). */
+static void KeaSweepChunks(int start, int end, int worker, void *data)
+{
+    const KeaSplitSweep *t = data;
+    int j;
+    for (j = start; j < end; ++j)
+        KeaSweepChunk(t, t->backward ? t->lastChunk - j : t->firstChunk + j, &t->split->works[worker]);
+}
+
+/* KeaSweep on a split partition: colour after colour (ascending forwards, descending backwards), a
+ * colour's chunks over the workers (the overflow colour's, whose blocks may share bodies, on this
+ * thread in order), then the chunks' tallies added in sweep order. Size: as KeaSweep. */
+KEA_NOINLINE MeReal KeaSweepSplit(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
+                                  MeReal *x, KeaStats *stats, int backward, MeReal measureUpTo)
+{
+    KeaSplit *split = w->split;
+    KeaSplitSweep t;
+    MeReal worst = ME_R(0.0), decrease = ME_R(0.0);
+    int changed = 0, k, c;
+    t.problem = problem;
+    t.split = split;
+    t.x = x;
+    t.omega = KeaSweepOmega(params);
+    t.measureUpTo = measureUpTo;
+    t.backward = backward;
+    t.tally = w->smRan;
+    t.maxPasses = params->maxFrictionPasses;
+    KeaSplitWorks(w, split);
+    for (k = 0; k <= KEA_COLOUR_COUNT; ++k) {
+        c = backward ? KEA_COLOUR_COUNT - k : k;
+        t.firstChunk = split->colourChunk[c];
+        t.lastChunk = split->colourChunk[c + 1] - 1;
+        if (c == KEA_COLOUR_OVERFLOW)
+            KeaSweepChunks(0, t.lastChunk - t.firstChunk + 1, 0, &t);
+        else
+            KeaSplitRun(split, KeaSweepChunks, t.lastChunk - t.firstChunk + 1, &t);
+    }
+    for (k = 0; k < split->nChunks; ++k) {
+        const KeaSplitChunk *record = &split->chunks[backward ? split->nChunks - 1 - k : k];
+        decrease += record->decrease;
+        worst = KeaMax(worst, record->worst);
+        changed += record->changed;
+        stats->pivots += record->pivots;
+        stats->regularised += record->regularised;
+    }
+    w->sweepDecrease = decrease;
+    w->sweepChanged = changed;
     return worst;
 }
 
@@ -196,6 +302,8 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
         w->body[i][1] = rb[1] >= 0 ? rb[1] : nb;
     }
     KeaSetUpBlocks(problem, w, KeaBlockCap(n, params->maxBlockRows));
+    if (w->split && !KeaSplitColour(problem, w, w->split))
+        w->split = NULL; /* a friction link leaves its block: the plain sweep (KeaSplitColour) */
     for (i = 0; i < n; ++i)
         KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
     for (i = 0; i < n; ++i)
@@ -218,12 +326,19 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
                             MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
 {
     KeaIterativeWork w;
+    KeaSplit split;
     KeaStatus status = KeaStatusMaxIterations;
     const int nb = problem->nBodies;
     const int effort = KeaEffortAllowed(problem, params);
     int it, b, k, limit;
 
     KeaIterativeLayout(arena, problem->nRows, nb, KEA_MAX_BLOCK_ROWS, &w);
+    if (KeaSplits(problem->nRows, params)) { /* KeaSplitMemoryRequired has made room */
+        KeaSplitLayout(arena, problem->nRows, nb, KeaSplitWorkers(&params->tasks), &split);
+        split.hook = params->tasks;
+        split.hook.workers = KeaSplitWorkers(&params->tasks);
+        w.split = &split;
+    }
     KeaIterativeSetUp(problem, params, &w, x, dv);
 
     /* maxIterations sweeps, then the extra effort (params->effortResidual, kea_tuning.h) if the
@@ -234,7 +349,8 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
         const int mayExtend = it == limit && effort &&
                               limit < params->maxIterations * (1 + KEA_EFFORT_FACTOR);
         const MeReal measureUpTo = mayExtend ? KeaMax(params->tolerance, params->effortResidual) : params->tolerance;
-        const MeReal sweepResidual = KeaSweep(problem, &w, params, x, stats, (it & 1) == 0, measureUpTo);
+        const MeReal sweepResidual = (w.split ? KeaSweepSplit : KeaSweep)(problem, &w, params, x, stats, (it & 1) == 0,
+                                                                          measureUpTo);
         stats->iterations = it;
         if (sweepResidual <= params->tolerance) {
             status = KeaStatusOk;

@@ -55,6 +55,7 @@
 #ifndef KEA_ITERATIVE_H
 #define KEA_ITERATIVE_H
 
+#include "kea_colour.h"
 #include "kea_internal.h"
 #include "kea_lanes.h"
 
@@ -63,8 +64,10 @@
  * measurable. */
 #if defined(__GNUC__)
 #  define KEA_NOINLINE static __attribute__((noinline))
+#  define KEA_ALWAYS_INLINE static inline __attribute__((always_inline))
 #else
 #  define KEA_NOINLINE static
+#  define KEA_ALWAYS_INLINE static inline
 #endif
 
 /** A body's velocity change with each 3-vector padded to 4 (pad 0). */
@@ -217,7 +220,70 @@ typedef struct KeaIterativeWork {
     MeReal *eps;           /**< eps_i (0 when the problem has none) */
     KeaVel4 *dv;           /**< the solve's dv (nb + 1), copied out at the end */
     KeaVel4 *dvTmp;        /**< per-body scratch for A_FF p and for the trial step (nb + 1) */
+    int nb;                /**< bodies: dv[nb] is the world's, all zero, never written by a sweep */
+    struct KeaSplit *split; /**< a split solve's colouring and workers (kea_split.c); NULL: not split */
 } KeaIterativeWork;
+
+/* ---- the split solve (kea_split.c) ------------------------------------------------------------
+ * One large partition over several workers, bit-identical for any worker count (docs/kea.md,
+ * "One partition on several cores"): the blocks are coloured (kea_colour.c) so that no two blocks
+ * of a colour share a body, and a sweep takes the colours one after the other, each colour's blocks
+ * in fixed chunks of KEA_SPLIT_CHUNK blocks handed to the workers (a barrier between colours: the
+ * hook returns when the colour is done). Every chunk keeps its own tallies (the objective's decrease,
+ * the residual, the rows that changed, the dense solver's pivots), added afterwards in chunk order;
+ * SM's and the set-up's loops run over fixed chunks of KEA_SPLIT_ROWS positions, their dot products
+ * as one partial sum per chunk, added in chunk order. The chunks depend on the problem only, never
+ * on the workers, so neither does any bit of the result. */
+
+/** Blocks per chunk of a colour in a split sweep (a contact is one block, three rows). */
+#define KEA_SPLIT_CHUNK 64
+/** Rows (or free-list positions) per chunk of SM's and the set-up's loops in a split solve. */
+#define KEA_SPLIT_ROWS 512
+
+/** A chunk's tallies in one split sweep, added afterwards in chunk order. */
+typedef struct KeaSplitChunk {
+    MeReal decrease;  /**< KeaSweepState.decrease over the chunk's blocks */
+    MeReal worst;     /**< the largest residual measured */
+    int changed;      /**< KeaSweepState.changed */
+    int pivots;       /**< the dense solver's pivots (KeaStats.pivots) */
+    int regularised;  /**< and its raised pivots (KeaStats.regularised) */
+} KeaSplitChunk;
+
+/** One worker's block scratch (KeaIterativeWork's local* arrays and dense solver). */
+typedef struct KeaBlockScratch {
+    MeReal *localW, *localR, *localLo, *localHi, *localX, *localD;
+    int *localLink;
+    KeaDenseWork *dense;
+} KeaBlockScratch;
+
+typedef struct KeaSplit {
+    KeaTaskHook hook;      /**< the caller's workers (hook.workers >= 1; run NULL: inline) */
+    int *order;            /**< the blocks sorted by colour, each colour in block order (nBlocks) */
+    int *colour;           /**< scratch: each block's colour, then its body pair for the colouring */
+    int (*pairs)[2];       /**< each block's bodies for the colouring */
+    void *colourWork;      /**< the colouring's bit sets */
+    size_t colourBytes;
+    int colourStart[KEA_COLOUR_COUNT + 2]; /**< colour c is order[colourStart[c] .. colourStart[c + 1]) */
+    int colourChunk[KEA_COLOUR_COUNT + 2]; /**< colour c's chunks are colourChunk[c] .. colourChunk[c + 1] - 1 */
+    int *chunkStart;       /**< chunk k is order[chunkStart[k] .. chunkStart[k + 1]) */
+    int nChunks;
+    int colours;           /**< colours in use (the overflow colour not counted) */
+    KeaSplitChunk *chunks; /**< one per chunk */
+    MeReal *partial;       /**< one partial sum per chunk of KEA_SPLIT_ROWS positions */
+    KeaBlockScratch *scratch; /**< per worker; worker 0's are the work's own */
+    KeaIterativeWork *works;  /**< per worker: a copy of the work with its scratch (made per sweep) */
+} KeaSplit;
+
+/* kea_split.c: its workspace (counting mode with arena->base NULL), whether params split a partition
+ * of n rows, the colouring of the blocks after KeaSetUpBlocks (0: the split cannot apply, a friction
+ * link leaves its block: the solve is then not split), running items over the workers, and a chunked
+ * dot product. */
+void KeaSplitLayout(KeaArena *arena, int n, int nb, int workers, KeaSplit *split);
+int KeaSplitWorkers(const KeaTaskHook *hook);
+int KeaSplitColour(const KeaProblem *problem, KeaIterativeWork *w, KeaSplit *split);
+void KeaSplitRun(const KeaSplit *split, KeaTaskFn task, int items, void *data);
+void KeaSplitWorks(const KeaIterativeWork *w, KeaSplit *split);
+MeReal KeaSplitDot(const KeaSplit *split, const MeReal *a, const MeReal *b, int n);
 
 /* Rows per block at most: maxBlockRows within 1 ... KEA_MAX_BLOCK_ROWS and the problem size. */
 static inline int KeaBlockCap(int n, int maxBlockRows)

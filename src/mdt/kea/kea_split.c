@@ -1,0 +1,172 @@
+/* kea_split.c -- one large partition over several workers (kea_iterative.h, "the split solve"): the
+ * workspace, the colouring of the blocks, the chunks, and how items are handed to the caller's
+ * workers (KeaTaskHook, kea.h). The sweep colour by colour is in kea_iterative.c, SM's chunked loops
+ * in kea_subspace.c.
+ *
+ * Why the result does not depend on the workers: within a colour no two blocks share a body, and a
+ * block step reads and writes only its own rows, its two bodies' velocity changes and the problem's
+ * data, so the order in which a colour's blocks are taken changes no bit; whatever is summed over
+ * several blocks or rows is summed per fixed chunk and the chunks added in their order. The world's
+ * velocity change (dv[nb], all zero) is read by every block on the world and written by none. */
+#include <string.h>
+
+#include "kea_iterative.h"
+
+static KeaBlockScratch KeaScratchLayout(KeaArena *arena, int cap)
+{
+    KeaBlockScratch s;
+    s.localW = KEA_ALLOC(arena, MeReal, cap);
+    s.localR = KEA_ALLOC(arena, MeReal, cap);
+    s.localLo = KEA_ALLOC(arena, MeReal, cap);
+    s.localHi = KEA_ALLOC(arena, MeReal, cap);
+    s.localX = KEA_ALLOC(arena, MeReal, cap);
+    s.localD = KEA_ALLOC(arena, MeReal, cap);
+    s.localLink = KEA_ALLOC(arena, int, cap);
+    s.dense = KeaDenseWorkCreate(arena, cap);
+    return s;
+}
+
+int KeaSplitWorkers(const KeaTaskHook *hook)
+{
+    if (!hook->run || hook->workers <= 1)
+        return 1;
+    return hook->workers < KEA_MAX_WORKERS ? hook->workers : KEA_MAX_WORKERS;
+}
+
+void KeaSplitLayout(KeaArena *arena, int n, int nb, int workers, KeaSplit *split)
+{
+    const int cap = KeaBlockCap(n, KEA_MAX_BLOCK_ROWS);
+    int k;
+    split->order = KEA_ALLOC(arena, int, n);
+    split->colour = KEA_ALLOC(arena, int, n);
+    split->pairs = (int(*)[2])KeaArenaAlloc(arena, sizeof(int[2]) * (size_t)n);
+    split->colourBytes = KeaColourMemoryRequired(nb + 1); /* + 1: a generic block's world half 0 (below) */
+    split->colourWork = KeaArenaAlloc(arena, split->colourBytes);
+    split->chunkStart = KEA_ALLOC(arena, int, n / KEA_SPLIT_CHUNK + KEA_COLOUR_COUNT + 2);
+    split->chunks = KEA_ALLOC(arena, KeaSplitChunk, n / KEA_SPLIT_CHUNK + KEA_COLOUR_COUNT + 1);
+    split->partial = KEA_ALLOC(arena, MeReal, n / KEA_SPLIT_ROWS + 1);
+    split->scratch = KEA_ALLOC(arena, KeaBlockScratch, workers);
+    split->works = KEA_ALLOC(arena, KeaIterativeWork, workers);
+    for (k = 1; k < workers; ++k) { /* worker 0 uses the work's own */
+        const KeaBlockScratch s = KeaScratchLayout(arena, cap);
+        if (split->scratch)
+            split->scratch[k] = s;
+    }
+}
+
+int KeaSplits(int n, const KeaParameters *params)
+{
+    return params->splitRows > 0 && n >= params->splitRows && KeaSelectPath(n, params) != KeaPathDirect;
+}
+
+size_t KeaSplitMemoryRequired(int nRows, int nBodies, const KeaParameters *params)
+{
+    KeaArena counter = {NULL, 0, 0};
+    KeaSplit split;
+    if (!params || nRows < 0 || nBodies < 0 || !KeaSplits(nRows, params))
+        return 0;
+    KeaSplitLayout(&counter, nRows, nBodies, KeaSplitWorkers(&params->tasks), &split);
+    return counter.used + KEA_ALIGN; /* + the alignment gap after the iterative path's layout */
+}
+
+/* Colour the blocks by their bodies (partition-local; the world in no colour). A generic block
+ * whose half 0 is on the world writes the world's dv through its half 0 (KeaBlockScatter): it is
+ * coloured as if on a body nb of its own, so that no two such blocks run at once. Then the chunks:
+ * each colour's blocks cut into runs of KEA_SPLIT_CHUNK. Returns 0 (not split) when a friction link
+ * leaves its block: that row would read a bound another block of its colour may be writing. */
+int KeaSplitColour(const KeaProblem *problem, KeaIterativeWork *w, KeaSplit *split)
+{
+    const int n = problem->nRows, nb = problem->nBodies;
+    int b, i, c, k;
+    if (problem->link)
+        for (i = 0; i < n; ++i)
+            if (problem->link[i] >= 0 && w->rowBlock[problem->link[i]] != w->rowBlock[i])
+                return 0;
+    for (b = 0; b < w->nBlocks; ++b) {
+        const int s = w->blockStart[b];
+        const int generic = !w->blockContact[b] && w->blockStart[b + 1] - s > 1;
+        split->pairs[b][0] = problem->rowBodies[s][0] < 0 && generic ? nb : problem->rowBodies[s][0];
+        split->pairs[b][1] = problem->rowBodies[s][1];
+    }
+    split->colours = KeaColourConstraints((const int(*)[2])split->pairs, w->nBlocks, nb + 1, split->colourWork,
+                                          split->colourBytes, split->colour, split->order, split->colourStart);
+    if (split->colours < 0)
+        return 0; /* not reached: the bodies are in range and the workspace sized for them */
+    k = 0;
+    for (c = 0; c <= KEA_COLOUR_COUNT; ++c) {
+        split->colourChunk[c] = k;
+        for (i = split->colourStart[c]; i < split->colourStart[c + 1]; i += KEA_SPLIT_CHUNK)
+            split->chunkStart[k++] = i;
+    }
+    split->colourChunk[KEA_COLOUR_COUNT + 1] = k;
+    split->chunkStart[k] = w->nBlocks;
+    split->nChunks = k;
+    return 1;
+}
+
+/* The workers' copies of the work as it is now (the sweep's state lives in the arrays they share),
+ * each with its own block scratch; worker 0 keeps the work's own. */
+void KeaSplitWorks(const KeaIterativeWork *w, KeaSplit *split)
+{
+    const int workers = KeaSplitWorkers(&split->hook);
+    int k;
+    for (k = 0; k < workers; ++k) {
+        KeaIterativeWork *c = &split->works[k];
+        *c = *w;
+        if (k == 0)
+            continue;
+        c->localW = split->scratch[k].localW;
+        c->localR = split->scratch[k].localR;
+        c->localLo = split->scratch[k].localLo;
+        c->localHi = split->scratch[k].localHi;
+        c->localX = split->scratch[k].localX;
+        c->localD = split->scratch[k].localD;
+        c->localLink = split->scratch[k].localLink;
+        c->dense = split->scratch[k].dense;
+    }
+}
+
+void KeaSplitRun(const KeaSplit *split, KeaTaskFn task, int items, void *data)
+{
+    if (items <= 0)
+        return;
+    if (items == 1 || KeaSplitWorkers(&split->hook) <= 1)
+        task(0, items, 0, data);
+    else
+        split->hook.run(task, items, 1, data, split->hook.user);
+}
+
+/* a . b over n positions as one partial sum per KEA_SPLIT_ROWS (KeaDotN4's sums within it), the
+ * partials added in order. */
+typedef struct KeaDotTask {
+    const MeReal *a, *b;
+    MeReal *partial;
+    int n;
+} KeaDotTask;
+
+static void KeaDotChunks(int start, int end, int worker, void *data)
+{
+    const KeaDotTask *t = data;
+    int k;
+    (void)worker;
+    for (k = start; k < end; ++k) {
+        const int first = k * KEA_SPLIT_ROWS, count = t->n - first < KEA_SPLIT_ROWS ? t->n - first : KEA_SPLIT_ROWS;
+        t->partial[k] = KeaDotN4(t->a + first, t->b + first, count);
+    }
+}
+
+MeReal KeaSplitDot(const KeaSplit *split, const MeReal *a, const MeReal *b, int n)
+{
+    const int chunks = (n + KEA_SPLIT_ROWS - 1) / KEA_SPLIT_ROWS;
+    KeaDotTask task;
+    MeReal sum = ME_R(0.0);
+    int k;
+    task.a = a;
+    task.b = b;
+    task.partial = split->partial;
+    task.n = n;
+    KeaSplitRun(split, KeaDotChunks, chunks, &task);
+    for (k = 0; k < chunks; ++k)
+        sum += split->partial[k];
+    return sum;
+}
