@@ -119,6 +119,9 @@ typedef struct MdtSolverStats {
     int unconverged;         /**< partitions that stopped at a cap (iterations, pivots) */
     MeReal maxResidual;      /**< largest residual (m/s: how far a row's velocity is from what the
                                   constraint asks), over partitions */
+    int splitPartitions;     /**< not in Karma 1.2: iterative partitions split over the workers
+                                  (MdtWorldSetPartitionSplitRows) */
+    int maxColours;          /**< not in Karma 1.2: most colours of a split partition */
 } MdtSolverStats;
 /** Fill `stats` with what the last step's solver did (partitions, rows, iterations); then the
  *  solver settings: method, largest direct partition (rows), tolerance. */

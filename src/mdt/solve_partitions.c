@@ -139,6 +139,10 @@ static void gatherPartition(MdtWorldData *w, int p, const KeaStats *ks)
         stats->iterativePartitions++;
     stats->iterations += ks->iterations;
     stats->pivots += ks->pivots;
+    if (ks->colours > 0)
+        stats->splitPartitions++;
+    if (ks->colours > stats->maxColours)
+        stats->maxColours = ks->colours;
     if (status != KeaStatusOk)
         stats->unconverged++;
     if (ks->residual > stats->maxResidual)

@@ -197,6 +197,8 @@ typedef struct KeaStats {
     int factorizations; /**< direct: full Cholesky factorisations */
     int regularised;    /**< direct: free-block pivots raised to the floor (A near singular) */
     MeReal residual;    /**< natural-map residual of the returned x (top comment), velocity units */
+    int colours;        /**< iterative, split (KeaParameters.splitRows): the blocks' colours (the
+                             overflow colour counted when used); 0 when not split */
 } KeaStats;
 
 /** Default settings (see the field comments). */

@@ -340,6 +340,8 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
         w.split = &split;
     }
     KeaIterativeSetUp(problem, params, &w, x, dv);
+    if (w.split)
+        stats->colours = split.colours + (split.colourStart[KEA_COLOUR_OVERFLOW + 1] > split.colourStart[KEA_COLOUR_OVERFLOW]);
 
     /* maxIterations sweeps, then the extra effort (params->effortResidual, kea_tuning.h) if the
      * partition rests (KeaEffortAllowed): while the last sweep leaves a residual above it, two more

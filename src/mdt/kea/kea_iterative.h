@@ -235,8 +235,9 @@ typedef struct KeaIterativeWork {
  * as one partial sum per chunk, added in chunk order. The chunks depend on the problem only, never
  * on the workers, so neither does any bit of the result. */
 
-/** Blocks per chunk of a colour in a split sweep (a contact is one block, three rows). */
-#define KEA_SPLIT_CHUNK 64
+/** Blocks per chunk of a colour in a split sweep, at least (whole units: a pair's blocks stay in one
+ *  chunk; a contact is one block, three rows). */
+#define KEA_SPLIT_CHUNK 16
 /** Rows (or free-list positions) per chunk of SM's and the set-up's loops in a split solve. */
 #define KEA_SPLIT_ROWS 512
 
@@ -259,11 +260,14 @@ typedef struct KeaBlockScratch {
 typedef struct KeaSplit {
     KeaTaskHook hook;      /**< the caller's workers (hook.workers >= 1; run NULL: inline) */
     int *order;            /**< the blocks sorted by colour, each colour in block order (nBlocks) */
-    int *colour;           /**< scratch: each block's colour, then its body pair for the colouring */
-    int (*pairs)[2];       /**< each block's bodies for the colouring */
+    int *colour;           /**< each unit's colour (a unit: consecutive blocks on one body pair) */
+    int (*pairs)[2];       /**< each unit's bodies for the colouring */
+    int *unitStart;        /**< unit u is blocks unitStart[u] .. unitStart[u + 1] - 1 */
+    int *unitOrder;        /**< the units sorted by colour */
     void *colourWork;      /**< the colouring's bit sets */
     size_t colourBytes;
-    int colourStart[KEA_COLOUR_COUNT + 2]; /**< colour c is order[colourStart[c] .. colourStart[c + 1]) */
+    int colourStart[KEA_COLOUR_COUNT + 2]; /**< colour c is order[colourStart[c] .. colourStart[c + 1]) (the
+                                                 colouring's units at first) */
     int colourChunk[KEA_COLOUR_COUNT + 2]; /**< colour c's chunks are colourChunk[c] .. colourChunk[c + 1] - 1 */
     int *chunkStart;       /**< chunk k is order[chunkStart[k] .. chunkStart[k + 1]) */
     int nChunks;

@@ -40,6 +40,8 @@ void KeaSplitLayout(KeaArena *arena, int n, int nb, int workers, KeaSplit *split
     split->order = KEA_ALLOC(arena, int, n);
     split->colour = KEA_ALLOC(arena, int, n);
     split->pairs = (int(*)[2])KeaArenaAlloc(arena, sizeof(int[2]) * (size_t)n);
+    split->unitStart = KEA_ALLOC(arena, int, n + 1);
+    split->unitOrder = KEA_ALLOC(arena, int, n);
     split->colourBytes = KeaColourMemoryRequired(nb + 1); /* + 1: a generic block's world half 0 (below) */
     split->colourWork = KeaArenaAlloc(arena, split->colourBytes);
     split->chunkStart = KEA_ALLOC(arena, int, n / KEA_SPLIT_CHUNK + KEA_COLOUR_COUNT + 2);
@@ -69,15 +71,18 @@ size_t KeaSplitMemoryRequired(int nRows, int nBodies, const KeaParameters *param
     return counter.used + KEA_ALIGN; /* + the alignment gap after the iterative path's layout */
 }
 
-/* Colour the blocks by their bodies (partition-local; the world in no colour). A generic block
- * whose half 0 is on the world writes the world's dv through its half 0 (KeaBlockScatter): it is
- * coloured as if on a body nb of its own, so that no two such blocks run at once. Then the chunks:
- * each colour's blocks cut into runs of KEA_SPLIT_CHUNK. Returns 0 (not split) when a friction link
- * leaves its block: that row would read a bound another block of its colour may be writing. */
+/* Colour the blocks by their bodies (partition-local; the world in no colour), a unit at a time: a
+ * run of consecutive blocks on one body pair (a contact group's points, a joint's blocks) is one
+ * unit, coloured once and swept in one chunk in its order, so that a pair's four contact points do
+ * not take four colours. A generic block whose half 0 is on the world writes the world's dv through
+ * its half 0 (KeaBlockScatter): it is coloured as if on a body nb of its own, so that no two such
+ * blocks run at once. Then the chunks: each colour's units in runs of at least KEA_SPLIT_CHUNK blocks.
+ * Returns 0 (not split) when a friction link leaves its block: that row would read a bound another
+ * block of its colour may be writing. */
 int KeaSplitColour(const KeaProblem *problem, KeaIterativeWork *w, KeaSplit *split)
 {
     const int n = problem->nRows, nb = problem->nBodies;
-    int b, i, c, k;
+    int b, i, c, k, u, units = 0, pos = 0;
     if (problem->link)
         for (i = 0; i < n; ++i)
             if (problem->link[i] >= 0 && w->rowBlock[problem->link[i]] != w->rowBlock[i])
@@ -85,19 +90,38 @@ int KeaSplitColour(const KeaProblem *problem, KeaIterativeWork *w, KeaSplit *spl
     for (b = 0; b < w->nBlocks; ++b) {
         const int s = w->blockStart[b];
         const int generic = !w->blockContact[b] && w->blockStart[b + 1] - s > 1;
-        split->pairs[b][0] = problem->rowBodies[s][0] < 0 && generic ? nb : problem->rowBodies[s][0];
-        split->pairs[b][1] = problem->rowBodies[s][1];
+        const int b0 = problem->rowBodies[s][0] < 0 && generic ? nb : problem->rowBodies[s][0];
+        const int b1 = problem->rowBodies[s][1];
+        if (units == 0 || split->pairs[units - 1][0] != b0 || split->pairs[units - 1][1] != b1) {
+            split->pairs[units][0] = b0;
+            split->pairs[units][1] = b1;
+            split->unitStart[units++] = b;
+        }
     }
-    split->colours = KeaColourConstraints((const int(*)[2])split->pairs, w->nBlocks, nb + 1, split->colourWork,
-                                          split->colourBytes, split->colour, split->order, split->colourStart);
+    split->unitStart[units] = w->nBlocks;
+    split->colours = KeaColourConstraints((const int(*)[2])split->pairs, units, nb + 1, split->colourWork,
+                                          split->colourBytes, split->colour, split->unitOrder, split->colourStart);
     if (split->colours < 0)
         return 0; /* not reached: the bodies are in range and the workspace sized for them */
+    /* the units' blocks in colour order; colourStart and the chunks by block position */
     k = 0;
     for (c = 0; c <= KEA_COLOUR_COUNT; ++c) {
+        const int first = split->colourStart[c], last = split->colourStart[c + 1];
+        int chunkBlocks = KEA_SPLIT_CHUNK;
+        split->colourStart[c] = pos;
         split->colourChunk[c] = k;
-        for (i = split->colourStart[c]; i < split->colourStart[c + 1]; i += KEA_SPLIT_CHUNK)
-            split->chunkStart[k++] = i;
+        for (i = first; i < last; ++i) {
+            u = split->unitOrder[i];
+            if (chunkBlocks >= KEA_SPLIT_CHUNK) {
+                split->chunkStart[k++] = pos;
+                chunkBlocks = 0;
+            }
+            for (b = split->unitStart[u]; b < split->unitStart[u + 1]; ++b)
+                split->order[pos++] = b;
+            chunkBlocks += split->unitStart[u + 1] - split->unitStart[u];
+        }
     }
+    split->colourStart[KEA_COLOUR_COUNT + 1] = pos;
     split->colourChunk[KEA_COLOUR_COUNT + 1] = k;
     split->chunkStart[k] = w->nBlocks;
     split->nChunks = k;
