@@ -41,8 +41,8 @@
 #    define GOLDEN_PILE 0x0ull
 #    define GOLDEN_PYRAMID 0x0ull
 #  else
-#    define GOLDEN_PILE 0x96847596bda47632ull
-#    define GOLDEN_PYRAMID 0x9fb36cdc366159d4ull
+#    define GOLDEN_PILE 0xf9449136d741feb0ull
+#    define GOLDEN_PYRAMID 0xb1201610d78d04eeull
 #  endif
 #elif KARMA_DOUBLE
 #  define GOLDEN_PILE 0x68e95dc90a5e3223ull

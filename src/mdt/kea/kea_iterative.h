@@ -231,15 +231,16 @@ typedef struct KeaIterativeWork {
  * in fixed chunks of KEA_SPLIT_CHUNK blocks handed to the workers (a barrier between colours: the
  * hook returns when the colour is done). Every chunk keeps its own tallies (the objective's decrease,
  * the residual, the rows that changed, the dense solver's pivots), added afterwards in chunk order;
- * SM's and the set-up's loops run over fixed chunks of KEA_SPLIT_ROWS positions, their dot products
- * as one partial sum per chunk, added in chunk order. The chunks depend on the problem only, never
+ * SM's loops run over fixed chunks of KEA_SPLIT_PIECES pieces of its free list, their dot products
+ * as one partial sum per chunk, added in chunk order, and its scatter colour by colour. The chunks depend on the problem only, never
  * on the workers, so neither does any bit of the result. */
 
 /** Blocks per chunk of a colour in a split sweep, at least (whole units: a pair's blocks stay in one
  *  chunk; a contact is one block, three rows). */
 #define KEA_SPLIT_CHUNK 16
-/** Rows (or free-list positions) per chunk of SM's and the set-up's loops in a split solve. */
-#define KEA_SPLIT_ROWS 512
+/** Pieces of SM's free list (KeaFreePiece) per chunk of its loops in a split solve (at least, for
+ *  its scatter: whole units). */
+#define KEA_SPLIT_PIECES 128
 
 /** A chunk's tallies in one split sweep, added afterwards in chunk order. */
 typedef struct KeaSplitChunk {
@@ -264,6 +265,10 @@ typedef struct KeaSplit {
     int (*pairs)[2];       /**< each unit's bodies for the colouring */
     int *unitStart;        /**< unit u is blocks unitStart[u] .. unitStart[u + 1] - 1 */
     int *unitOrder;        /**< the units sorted by colour */
+    int *blockUnit;        /**< each block's unit */
+    int *pieceOrder;       /**< SM's scatter: the free list's pieces by colour, each colour's in order */
+    int *pieceChunk;       /**< its chunks: pieceOrder[pieceChunk[k] .. pieceChunk[k + 1]) (whole units) */
+    int pieceColourChunk[KEA_COLOUR_COUNT + 2]; /**< colour c's scatter chunks */
     void *colourWork;      /**< the colouring's bit sets */
     size_t colourBytes;
     int colourStart[KEA_COLOUR_COUNT + 2]; /**< colour c is order[colourStart[c] .. colourStart[c + 1]) (the
@@ -273,21 +278,21 @@ typedef struct KeaSplit {
     int nChunks;
     int colours;           /**< colours in use (the overflow colour not counted) */
     KeaSplitChunk *chunks; /**< one per chunk */
-    MeReal *partial;       /**< one partial sum per chunk of KEA_SPLIT_ROWS positions */
+    MeReal *partial;       /**< SM: one partial sum per chunk of KEA_SPLIT_PIECES pieces */
     KeaBlockScratch *scratch; /**< per worker; worker 0's are the work's own */
     KeaIterativeWork *works;  /**< per worker: a copy of the work with its scratch (made per sweep) */
 } KeaSplit;
 
-/* kea_split.c: its workspace (counting mode with arena->base NULL), whether params split a partition
- * of n rows, the colouring of the blocks after KeaSetUpBlocks (0: the split cannot apply, a friction
- * link leaves its block: the solve is then not split), running items over the workers, and a chunked
- * dot product. */
+/* kea_split.c: its workspace (counting mode with arena->base NULL), the workers a hook gives, the
+ * colouring of the blocks after KeaSetUpBlocks (0: the split cannot apply, a friction link leaves its
+ * block: the solve is then not split), running items over the workers, and SM's scatter order for
+ * the current free list (pieces: nPieces of them). */
 void KeaSplitLayout(KeaArena *arena, int n, int nb, int workers, KeaSplit *split);
 int KeaSplitWorkers(const KeaTaskHook *hook);
 int KeaSplitColour(const KeaProblem *problem, KeaIterativeWork *w, KeaSplit *split);
 void KeaSplitRun(const KeaSplit *split, KeaTaskFn task, int items, void *data);
 void KeaSplitWorks(const KeaIterativeWork *w, KeaSplit *split);
-MeReal KeaSplitDot(const KeaSplit *split, const MeReal *a, const MeReal *b, int n);
+void KeaSplitPieces(const KeaIterativeWork *w, KeaSplit *split);
 
 /* Rows per block at most: maxBlockRows within 1 ... KEA_MAX_BLOCK_ROWS and the problem size. */
 static inline int KeaBlockCap(int n, int maxBlockRows)

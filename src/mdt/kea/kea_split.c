@@ -46,7 +46,10 @@ void KeaSplitLayout(KeaArena *arena, int n, int nb, int workers, KeaSplit *split
     split->colourWork = KeaArenaAlloc(arena, split->colourBytes);
     split->chunkStart = KEA_ALLOC(arena, int, n / KEA_SPLIT_CHUNK + KEA_COLOUR_COUNT + 2);
     split->chunks = KEA_ALLOC(arena, KeaSplitChunk, n / KEA_SPLIT_CHUNK + KEA_COLOUR_COUNT + 1);
-    split->partial = KEA_ALLOC(arena, MeReal, n / KEA_SPLIT_ROWS + 1);
+    split->partial = KEA_ALLOC(arena, MeReal, n / KEA_SPLIT_PIECES + 1);
+    split->blockUnit = KEA_ALLOC(arena, int, n);
+    split->pieceOrder = KEA_ALLOC(arena, int, n);
+    split->pieceChunk = KEA_ALLOC(arena, int, n / KEA_SPLIT_PIECES + KEA_COLOUR_COUNT + 2);
     split->scratch = KEA_ALLOC(arena, KeaBlockScratch, workers);
     split->works = KEA_ALLOC(arena, KeaIterativeWork, workers);
     for (k = 1; k < workers; ++k) { /* worker 0 uses the work's own */
@@ -116,8 +119,10 @@ int KeaSplitColour(const KeaProblem *problem, KeaIterativeWork *w, KeaSplit *spl
                 split->chunkStart[k++] = pos;
                 chunkBlocks = 0;
             }
-            for (b = split->unitStart[u]; b < split->unitStart[u + 1]; ++b)
+            for (b = split->unitStart[u]; b < split->unitStart[u + 1]; ++b) {
+                split->blockUnit[b] = u;
                 split->order[pos++] = b;
+            }
             chunkBlocks += split->unitStart[u + 1] - split->unitStart[u];
         }
     }
@@ -160,37 +165,36 @@ void KeaSplitRun(const KeaSplit *split, KeaTaskFn task, int items, void *data)
         split->hook.run(task, items, 1, data, split->hook.user);
 }
 
-/* a . b over n positions as one partial sum per KEA_SPLIT_ROWS (KeaDotN4's sums within it), the
- * partials added in order. */
-typedef struct KeaDotTask {
-    const MeReal *a, *b;
-    MeReal *partial;
-    int n;
-} KeaDotTask;
-
-static void KeaDotChunks(int start, int end, int worker, void *data)
+/* SM's scatter order: the free list's pieces by the colour of their block's unit, each colour's in
+ * free-list order, cut into chunks of at least KEA_SPLIT_PIECES pieces at a change of unit (a unit's
+ * pieces write the same two bodies: one chunk runs them in order). */
+void KeaSplitPieces(const KeaIterativeWork *w, KeaSplit *split)
 {
-    const KeaDotTask *t = data;
-    int k;
-    (void)worker;
-    for (k = start; k < end; ++k) {
-        const int first = k * KEA_SPLIT_ROWS, count = t->n - first < KEA_SPLIT_ROWS ? t->n - first : KEA_SPLIT_ROWS;
-        t->partial[k] = KeaDotN4(t->a + first, t->b + first, count);
+    int counts[KEA_COLOUR_COUNT + 1], next[KEA_COLOUR_COUNT + 1];
+    int c, k, j, chunks = 0;
+    memset(counts, 0, sizeof counts);
+    for (k = 0; k < w->nPieces; ++k)
+        ++counts[split->colour[split->blockUnit[w->rowBlock[w->pieces[k].row]]]];
+    next[0] = 0;
+    for (c = 0; c < KEA_COLOUR_COUNT; ++c)
+        next[c + 1] = next[c] + counts[c];
+    for (k = 0; k < w->nPieces; ++k)
+        split->pieceOrder[next[split->colour[split->blockUnit[w->rowBlock[w->pieces[k].row]]]]++] = k;
+    j = 0;
+    for (c = 0; c <= KEA_COLOUR_COUNT; ++c) {
+        const int end = j + counts[c];
+        int inChunk = KEA_SPLIT_PIECES, lastUnit = -1;
+        split->pieceColourChunk[c] = chunks;
+        for (; j < end; ++j) {
+            const int unit = split->blockUnit[w->rowBlock[w->pieces[split->pieceOrder[j]].row]];
+            if (inChunk >= KEA_SPLIT_PIECES && unit != lastUnit) {
+                split->pieceChunk[chunks++] = j;
+                inChunk = 0;
+            }
+            ++inChunk;
+            lastUnit = unit;
+        }
     }
-}
-
-MeReal KeaSplitDot(const KeaSplit *split, const MeReal *a, const MeReal *b, int n)
-{
-    const int chunks = (n + KEA_SPLIT_ROWS - 1) / KEA_SPLIT_ROWS;
-    KeaDotTask task;
-    MeReal sum = ME_R(0.0);
-    int k;
-    task.a = a;
-    task.b = b;
-    task.partial = split->partial;
-    task.n = n;
-    KeaSplitRun(split, KeaDotChunks, chunks, &task);
-    for (k = 0; k < chunks; ++k)
-        sum += split->partial[k];
-    return sum;
+    split->pieceColourChunk[KEA_COLOUR_COUNT + 1] = chunks;
+    split->pieceChunk[chunks] = w->nPieces;
 }
