@@ -184,6 +184,7 @@ void MdtSolveStage(MdtWorldData *w)
     kea.tasks.run = runKeaTask;
     kea.tasks.user = w;
     kea.tasks.workers = w->enqueueTask ? w->workerCount : 1;
+    kea.tasks.perStage = 0;
 
     /* One workspace per worker, for the largest partition; then one result per partition. */
     size_t need = 0;

@@ -130,8 +130,12 @@ typedef void (*KeaTaskFn)(int start, int end, int worker, void *data);
  *  Kea runs the items itself, in order, as worker 0. The results are the same bits either way. */
 typedef struct KeaTaskHook {
     void (*run)(KeaTaskFn task, int itemCount, int minRange, void *data, void *user);
-    void *user;  /**< handed to run */
-    int workers; /**< how many worker indices run may use, 1 .. KEA_MAX_WORKERS */
+    void *user;    /**< handed to run */
+    int workers;   /**< how many worker indices run may use, 1 .. KEA_MAX_WORKERS */
+    int perStage;  /**< 0 (default): one task of `workers` items for the whole solve, whose items
+                        spin-wait for the next stage (kea_split.c, "the team"); 1: one run call per
+                        stage (a colour of a sweep, a loop of SM), no item waiting for another: for
+                        task systems whose tasks must not block, at a hand-out per stage */
 } KeaTaskHook;
 
 /** Most workers a split solve uses (KeaTaskHook.workers). */

@@ -322,26 +322,37 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
         }
 }
 
-KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
-                            MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
+/* What a solve hands its driver (KeaIterate): the problem, its settings, the work and the outputs. */
+typedef struct KeaSolveState {
+    const KeaProblem *problem;
+    const KeaParameters *params;
+    KeaIterativeWork *w;
+    MeReal *x;
+    KeaBodyVelocity *dv;
+    KeaStats *stats;
+    KeaStatus status;
+} KeaSolveState;
+
+/* The solve after the layout: set-up, sweeps and SM, the extra effort, dv out and the residual. In a
+ * split solve on several workers it runs inside the team's task, on whichever worker started first
+ * (kea_split.c, KeaTeamTask), handing its chunked loops to the others. */
+static void KeaIterate(void *data)
 {
-    KeaIterativeWork w;
-    KeaSplit split;
-    KeaStatus status = KeaStatusMaxIterations;
+    KeaSolveState *state = data;
+    const KeaProblem *problem = state->problem;
+    const KeaParameters *params = state->params;
+    KeaIterativeWork *w = state->w;
+    MeReal *x = state->x;
+    KeaStats *stats = state->stats;
     const int nb = problem->nBodies;
     const int effort = KeaEffortAllowed(problem, params);
     int it, b, k, limit;
 
-    KeaIterativeLayout(arena, problem->nRows, nb, KEA_MAX_BLOCK_ROWS, &w);
-    if (KeaSplits(problem->nRows, params)) { /* KeaSplitMemoryRequired has made room */
-        KeaSplitLayout(arena, problem->nRows, nb, KeaSplitWorkers(&params->tasks), &split);
-        split.hook = params->tasks;
-        split.hook.workers = KeaSplitWorkers(&params->tasks);
-        w.split = &split;
-    }
-    KeaIterativeSetUp(problem, params, &w, x, dv);
-    if (w.split)
-        stats->colours = split.colours + (split.colourStart[KEA_COLOUR_OVERFLOW + 1] > split.colourStart[KEA_COLOUR_OVERFLOW]);
+    KeaIterativeSetUp(problem, params, w, x, state->dv);
+    if (w->split)
+        stats->colours = w->split->colours +
+                         (w->split->colourStart[KEA_COLOUR_OVERFLOW + 1] > w->split->colourStart[KEA_COLOUR_OVERFLOW]);
+    state->status = KeaStatusMaxIterations;
 
     /* maxIterations sweeps, then the extra effort (params->effortResidual, kea_tuning.h) if the
      * partition rests (KeaEffortAllowed): while the last sweep leaves a residual above it, two more
@@ -351,22 +362,22 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
         const int mayExtend = it == limit && effort &&
                               limit < params->maxIterations * (1 + KEA_EFFORT_FACTOR);
         const MeReal measureUpTo = mayExtend ? KeaMax(params->tolerance, params->effortResidual) : params->tolerance;
-        const MeReal sweepResidual = (w.split ? KeaSweepSplit : KeaSweep)(problem, &w, params, x, stats, (it & 1) == 0,
-                                                                          measureUpTo);
+        const MeReal sweepResidual = (w->split ? KeaSweepSplit : KeaSweep)(problem, w, params, x, stats, (it & 1) == 0,
+                                                                           measureUpTo);
         stats->iterations = it;
         if (sweepResidual <= params->tolerance) {
-            status = KeaStatusOk;
+            state->status = KeaStatusOk;
             break;
         }
         if (mayExtend && sweepResidual > params->effortResidual) {
             limit += 2;
             ++stats->effortRounds;
         }
-        if (w.smRan) /* did the last SM step lower the objective more than this sweep? */
-            w.smUnpaid = w.sweepDecrease > w.smDecrease;
-        w.smRan = 0;
+        if (w->smRan) /* did the last SM step lower the objective more than this sweep? */
+            w->smUnpaid = w->sweepDecrease > w->smDecrease;
+        w->smRan = 0;
         if (params->subspaceIterations > 0 && it < limit) {
-            const int steps = KeaSubspaceMinimise(problem, &w, params->subspaceIterations, x);
+            const int steps = KeaSubspaceMinimise(problem, w, params->subspaceIterations, x);
             if (steps < 0)
                 ++stats->subspaceSkipped;
             else
@@ -375,9 +386,35 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
     }
     for (b = 0; b < nb; ++b)
         for (k = 0; k < 3; ++k) {
-            dv[b].lin[k] = w.dv[b].lin[k];
-            dv[b].ang[k] = w.dv[b].ang[k];
+            state->dv[b].lin[k] = w->dv[b].lin[k];
+            state->dv[b].ang[k] = w->dv[b].ang[k];
         }
-    stats->residual = KeaIterativeResidual(problem, &w, x);
-    return status;
+    stats->residual = KeaIterativeResidual(problem, w, x);
+}
+
+KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
+                            MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
+{
+    KeaIterativeWork w;
+    KeaSplit split;
+    KeaSolveState state;
+
+    KeaIterativeLayout(arena, problem->nRows, problem->nBodies, KEA_MAX_BLOCK_ROWS, &w);
+    if (KeaSplits(problem->nRows, params)) { /* KeaSplitMemoryRequired has made room */
+        KeaSplitLayout(arena, problem->nRows, problem->nBodies, KeaSplitWorkers(&params->tasks), &split);
+        split.hook = params->tasks;
+        split.hook.workers = KeaSplitWorkers(&params->tasks);
+        w.split = &split;
+    }
+    state.problem = problem;
+    state.params = params;
+    state.w = &w;
+    state.x = x;
+    state.dv = dv;
+    state.stats = stats;
+    if (w.split)
+        KeaSplitDrive(&split, KeaIterate, &state); /* on the workers' team */
+    else
+        KeaIterate(&state);
+    return state.status;
 }

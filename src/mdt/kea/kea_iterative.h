@@ -55,6 +55,9 @@
 #ifndef KEA_ITERATIVE_H
 #define KEA_ITERATIVE_H
 
+#include <stdatomic.h>
+#include <stdint.h>
+
 #include "kea_colour.h"
 #include "kea_internal.h"
 #include "kea_lanes.h"
@@ -258,8 +261,25 @@ typedef struct KeaBlockScratch {
     KeaDenseWork *dense;
 } KeaBlockScratch;
 
+/** The workers' team of a split solve (kea_split.c, KeaSplitDrive): the driver and the stage it has
+ *  published for the helpers. */
+typedef struct KeaTeam {
+    _Atomic(uint64_t) cursor;   /**< the stage's generation (high half) and its next item (low half) */
+    atomic_int completed;       /**< items of the stage that have run */
+    atomic_int items;           /**< the stage's items */
+    _Atomic(KeaTaskFn) task;    /**< the stage's task */
+    _Atomic(void *) data;       /**< and its data */
+    atomic_int driving;         /**< an item has become the driver */
+    atomic_int done;            /**< the driver has finished the solve */
+    unsigned generation;        /**< the driver's: stages published */
+    int driverWorker;           /**< the driver's worker index */
+    void (*drive)(void *);      /**< the solve */
+    void *driveData;
+} KeaTeam;
+
 typedef struct KeaSplit {
     KeaTaskHook hook;      /**< the caller's workers (hook.workers >= 1; run NULL: inline) */
+    KeaTeam *team;         /**< the team while the solve runs on it (KeaSplitDrive), else NULL */
     int *order;            /**< the blocks sorted by colour, each colour in block order (nBlocks) */
     int *colour;           /**< each unit's colour (a unit: consecutive blocks on one body pair) */
     int (*pairs)[2];       /**< each unit's bodies for the colouring */
@@ -291,6 +311,7 @@ void KeaSplitLayout(KeaArena *arena, int n, int nb, int workers, KeaSplit *split
 int KeaSplitWorkers(const KeaTaskHook *hook);
 int KeaSplitColour(const KeaProblem *problem, KeaIterativeWork *w, KeaSplit *split);
 void KeaSplitRun(const KeaSplit *split, KeaTaskFn task, int items, void *data);
+void KeaSplitDrive(KeaSplit *split, void (*drive)(void *), void *data);
 void KeaSplitWorks(const KeaIterativeWork *w, KeaSplit *split);
 void KeaSplitPieces(const KeaIterativeWork *w, KeaSplit *split);
 

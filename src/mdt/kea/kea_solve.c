@@ -27,6 +27,7 @@ void KeaParametersDefault(KeaParameters *params)
     params->tasks.run = NULL;
     params->tasks.user = NULL;
     params->tasks.workers = 1;
+    params->tasks.perStage = 0;
 }
 
 KeaPath KeaSelectPath(int nRows, const KeaParameters *params)

@@ -8,6 +8,7 @@
  * data, so the order in which a colour's blocks are taken changes no bit; whatever is summed over
  * several blocks or rows is summed per fixed chunk and the chunks added in their order. The world's
  * velocity change (dv[nb], all zero) is read by every block on the world and written by none. */
+#include <stdint.h>
 #include <string.h>
 
 #include "kea_iterative.h"
@@ -155,14 +156,126 @@ void KeaSplitWorks(const KeaIterativeWork *w, KeaSplit *split)
     }
 }
 
+/* ---- the team: one task for the whole solve ----------------------------------------------------
+ * A hand-out through the caller's task system per colour and sweep and per SM loop would cost a
+ * wake-up of the workers each, some hundreds a step. So the solve hands out one task of `workers`
+ * items (KeaSplitDrive): the first item to start becomes the driver and runs the whole solve; the
+ * others become helpers, which wait (spinning) for the driver to publish a stage (a chunked loop:
+ * KeaSplitRun), claim its items through an atomic cursor, run them, and return when the driver is
+ * done, as Box2D v3's solver stages do. The driver never waits for a helper to arrive, only for the
+ * items helpers have claimed, so a task system that runs the items one after the other (or fewer
+ * at once than `workers`) is served too: the first item does all the work, the others find the
+ * solve done. Which worker runs an item changes no bit (kea_iterative.h). */
+
+/* Busy-wait hint (the helpers and the driver spin between stages). */
+static inline void KeaSpinPause(void)
+{
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+    __builtin_ia32_pause();
+#endif
+}
+
+/* Claim and run items of stage `generation` while it has unclaimed ones; the cursor word holds the
+ * generation in its high half and the next item in its low half, so that a claim on a stage that
+ * has since ended fails. */
+static void KeaTeamWork(KeaTeam *team, unsigned generation, int worker)
+{
+    for (;;) {
+        uint64_t word = atomic_load_explicit(&team->cursor, memory_order_acquire);
+        KeaTaskFn task;
+        void *data;
+        int next;
+        if ((unsigned)(word >> 32) != generation)
+            return;
+        next = (int)(word & 0xffffffffu);
+        task = atomic_load_explicit(&team->task, memory_order_relaxed);
+        data = atomic_load_explicit(&team->data, memory_order_relaxed);
+        if (next >= atomic_load_explicit(&team->items, memory_order_relaxed))
+            return;
+        if (!atomic_compare_exchange_weak_explicit(&team->cursor, &word, word + 1, memory_order_acq_rel,
+                                                   memory_order_acquire))
+            continue;
+        task(next, next + 1, worker, data);
+        atomic_fetch_add_explicit(&team->completed, 1, memory_order_release);
+    }
+}
+
+/* The driver publishes a stage, works on it and waits until every item has run. */
+static void KeaTeamStage(KeaTeam *team, KeaTaskFn task, int items, void *data)
+{
+    atomic_store_explicit(&team->task, task, memory_order_relaxed);
+    atomic_store_explicit(&team->data, data, memory_order_relaxed);
+    atomic_store_explicit(&team->items, items, memory_order_relaxed);
+    atomic_store_explicit(&team->completed, 0, memory_order_relaxed);
+    ++team->generation;
+    atomic_store_explicit(&team->cursor, (uint64_t)team->generation << 32, memory_order_release);
+    KeaTeamWork(team, team->generation, team->driverWorker);
+    while (atomic_load_explicit(&team->completed, memory_order_acquire) < items)
+        KeaSpinPause();
+}
+
+/* The team's task: the first item to start drives the solve, the others help until it is done. */
+static void KeaTeamTask(int start, int end, int worker, void *data)
+{
+    KeaTeam *team = data;
+    int item;
+    for (item = start; item < end; ++item) {
+        unsigned seen = 0;
+        if (!atomic_exchange_explicit(&team->driving, 1, memory_order_acq_rel)) {
+            team->driverWorker = worker;
+            team->drive(team->driveData);
+            atomic_store_explicit(&team->done, 1, memory_order_release);
+            continue;
+        }
+        while (!atomic_load_explicit(&team->done, memory_order_acquire)) {
+            const unsigned generation =
+                (unsigned)(atomic_load_explicit(&team->cursor, memory_order_acquire) >> 32);
+            if (generation != seen) {
+                KeaTeamWork(team, generation, worker);
+                seen = generation;
+            } else {
+                KeaSpinPause();
+            }
+        }
+    }
+}
+
+void KeaSplitDrive(KeaSplit *split, void (*drive)(void *), void *data)
+{
+    KeaTeam team;
+    split->team = NULL;
+    if (split->hook.workers <= 1 || split->hook.perStage) {
+        drive(data);
+        return;
+    }
+    team.drive = drive;
+    team.driveData = data;
+    team.generation = 0;
+    team.driverWorker = 0;
+    atomic_init(&team.cursor, 0);
+    atomic_init(&team.completed, 0);
+    atomic_init(&team.items, 0);
+    atomic_init(&team.task, NULL);
+    atomic_init(&team.data, NULL);
+    atomic_init(&team.driving, 0);
+    atomic_init(&team.done, 0);
+    split->team = &team;
+    split->hook.run(KeaTeamTask, split->hook.workers, 1, &team, split->hook.user);
+    split->team = NULL;
+    if (!atomic_load_explicit(&team.driving, memory_order_acquire))
+        drive(data); /* the task system ran no item: the solve runs here */
+}
+
 void KeaSplitRun(const KeaSplit *split, KeaTaskFn task, int items, void *data)
 {
     if (items <= 0)
         return;
-    if (items == 1 || KeaSplitWorkers(&split->hook) <= 1)
-        task(0, items, 0, data);
-    else
+    if (split->team && items > 1)
+        KeaTeamStage(split->team, task, items, data);
+    else if (split->hook.perStage && split->hook.workers > 1 && items > 1)
         split->hook.run(task, items, 1, data, split->hook.user);
+    else
+        task(0, items, 0, data);
 }
 
 /* SM's scatter order: the free list's pieces by the colour of their block's unit, each colour's in
