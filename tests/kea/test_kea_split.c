@@ -261,8 +261,8 @@ static void split_changes_the_order_not_the_solution(void **state)
 }
 
 /* Scalar PGS (maxBlockRows 1) makes each friction row a block of its own, linked to its normal row's
- * block: the split does not apply (a row's bounds would read another block of its colour) and the
- * solve is the unsplit one, bit for bit. */
+ * block: the sweeps are not split (a row's bounds would read another block of its colour) and the
+ * solve is the unsplit one, bit for bit (its set-up's loops, split or not, give the same bits). */
 static void links_across_blocks_keep_the_plain_sweep(void **state)
 {
     static Result split, plain;
@@ -280,7 +280,7 @@ static void links_across_blocks_keep_the_plain_sweep(void **state)
     solve(&t, &params, &split);
     solve(&t, &unsplit, &plain);
     assert_int_equal(split.stats.colours, 0);
-    assert_int_equal(hook.calls, 0);
+    assert_true(hook.calls <= 2); /* the set-up's row and block loops, before the colouring gave up */
     assert_same_bits(&t, &split, &plain);
     kt_free(&t);
 }

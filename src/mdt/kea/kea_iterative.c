@@ -272,17 +272,14 @@ static int KeaEffortAllowed(const KeaProblem *problem, const KeaParameters *para
     return 1;
 }
 
-/* The solve's set-up, before the first sweep: the padded rows (B = M^-1 J^T, the diagonal, J with
- * its pads and world halves zeroed), the blocks, and the warm start (x clamped, bounds read from the
- * unclamped x as the direct path does, then dv and which rows are free). Not inlined, so that a
- * profile shows the set-up apart from the sweeps. */
-KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParameters *params, KeaIterativeWork *w,
-                                    MeReal *x, KeaBodyVelocity *dv)
+/* The set-up of rows [i0, i1): B = M^-1 J^T, the diagonal, J with its pads and world halves zeroed,
+ * the halves' bodies, and the warm start's bounds (read from the unclamped x, as the direct path
+ * does). Each row writes only its own entries. */
+static void KeaSetUpRows(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x, int i0, int i1)
 {
-    const int n = problem->nRows, nb = problem->nBodies;
-    int i, b, k;
-    KeaBodyColumnsFill(problem, w->bodyColumns);
-    for (i = 0; i < n; ++i) {
+    const int nb = problem->nBodies;
+    int i;
+    for (i = i0; i < i1; ++i) {
         const int *rb = problem->rowBodies[i];
         KeaJacobianRow *J = &w->J[i];
         w->diag[i] = KeaRowInvMassJT4(problem, w->bodyColumns, i, &w->B[i]);
@@ -300,17 +297,69 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
         }
         w->body[i][0] = rb[0] >= 0 ? rb[0] : nb;
         w->body[i][1] = rb[1] >= 0 ? rb[1] : nb;
+        KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
     }
+}
+
+/* The warm start of rows [i0, i1): x clamped to the bounds KeaSetUpRows read, and which rows are free. */
+static void KeaWarmStartRows(KeaIterativeWork *w, MeReal *x, int i0, int i1)
+{
+    int i;
+    for (i = i0; i < i1; ++i) {
+        x[i] = KeaClamp(x[i], w->lo[i], w->hi[i]);
+        w->wasFree[i] = KeaRowIsFree(w, i, x[i], w->lo[i], w->hi[i]);
+    }
+}
+
+typedef struct KeaRowsTask {
+    const KeaProblem *problem;
+    KeaIterativeWork *w;
+    MeReal *x;
+} KeaRowsTask;
+
+static void KeaSetUpRowChunks(int start, int end, int worker, void *data)
+{
+    const KeaRowsTask *t = data;
+    const int n = t->problem->nRows;
+    (void)worker;
+    KeaSetUpRows(t->problem, t->w, t->x, start * KEA_SPLIT_ROWS, end * KEA_SPLIT_ROWS < n ? end * KEA_SPLIT_ROWS : n);
+}
+
+static void KeaWarmStartRowChunks(int start, int end, int worker, void *data)
+{
+    const KeaRowsTask *t = data;
+    const int n = t->problem->nRows;
+    (void)worker;
+    KeaWarmStartRows(t->w, t->x, start * KEA_SPLIT_ROWS, end * KEA_SPLIT_ROWS < n ? end * KEA_SPLIT_ROWS : n);
+}
+
+/* The solve's set-up, before the first sweep: the padded rows (KeaSetUpRows), the blocks, the warm
+ * start (x clamped, then dv and which rows are free), and in a split solve the colouring; the row
+ * and block loops in chunks over the workers when split. Not inlined, so that a profile shows the
+ * set-up apart from the sweeps. */
+KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParameters *params, KeaIterativeWork *w,
+                                    MeReal *x, KeaBodyVelocity *dv)
+{
+    const int n = problem->nRows, nb = problem->nBodies;
+    const int rowChunks = (n + KEA_SPLIT_ROWS - 1) / KEA_SPLIT_ROWS;
+    KeaRowsTask t;
+    int b, k;
+    t.problem = problem;
+    t.w = w;
+    t.x = x;
+    KeaBodyColumnsFill(problem, w->bodyColumns);
+    if (w->split)
+        KeaSplitRun(w->split, KeaSetUpRowChunks, rowChunks, &t);
+    else
+        KeaSetUpRows(problem, w, x, 0, n);
     KeaSetUpBlocks(problem, w, KeaBlockCap(n, params->maxBlockRows));
     if (w->split && !KeaSplitColour(problem, w, w->split))
         w->split = NULL; /* a friction link leaves its block: the plain sweep (KeaSplitColour) */
-    for (i = 0; i < n; ++i)
-        KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
-    for (i = 0; i < n; ++i)
-        x[i] = KeaClamp(x[i], w->lo[i], w->hi[i]);
+    if (w->split)
+        KeaSplitRun(w->split, KeaWarmStartRowChunks, rowChunks, &t);
+    else
+        KeaWarmStartRows(w, x, 0, n);
     KeaBodyVelocityFromImpulses(problem, x, dv);
-    for (i = 0; i < n; ++i)
-        w->wasFree[i] = KeaRowIsFree(w, i, x[i], w->lo[i], w->hi[i]);
     w->skippedLast = 0;
     w->smRan = 0;
     w->smUnpaid = 0;

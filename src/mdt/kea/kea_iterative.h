@@ -173,7 +173,6 @@ typedef struct KeaIterativeWork {
     int *blockStart;       /**< nBlocks + 1 row offsets */
     int *blockMatrix;      /**< offset of each block's m x m matrix in blockA */
     MeReal *blockA;        /**< the blocks' A_bb, at most n * maxBlockRows reals */
-    MeReal *blockL;        /**< scratch: one block's Cholesky factor, read only to form its inverse */
     MeReal *blockInv;      /**< their inverses A_bb^-1 (same offsets): a block solve in a sweep or
                                 a preconditioner step is then one small matrix-vector product,
                                 no divisions (each block is solved once a sweep, and
@@ -235,7 +234,8 @@ typedef struct KeaIterativeWork {
  * hook returns when the colour is done). Every chunk keeps its own tallies (the objective's decrease,
  * the residual, the rows that changed, the dense solver's pivots), added afterwards in chunk order;
  * SM's loops run over fixed chunks of KEA_SPLIT_PIECES pieces of its free list, their dot products
- * as one partial sum per chunk, added in chunk order, and its scatter colour by colour. The chunks depend on the problem only, never
+ * as one partial sum per chunk, added in chunk order, and its scatter colour by colour; the set-up's
+ * loops over rows and blocks (each item writing only its own entries) in chunks too. The chunks depend on the problem only, never
  * on the workers, so neither does any bit of the result. */
 
 /** Blocks per chunk of a colour in a split sweep, at least (whole units: a pair's blocks stay in one
@@ -244,6 +244,9 @@ typedef struct KeaIterativeWork {
 /** Pieces of SM's free list (KeaFreePiece) per chunk of its loops in a split solve (at least, for
  *  its scatter: whole units). */
 #define KEA_SPLIT_PIECES 128
+/** Rows per chunk of the set-up's row loops, and blocks per chunk of its block set-up, in a split solve. */
+#define KEA_SPLIT_ROWS 256
+#define KEA_SPLIT_BLOCKS 64
 
 /** A chunk's tallies in one split sweep, added afterwards in chunk order. */
 typedef struct KeaSplitChunk {
