@@ -230,7 +230,8 @@ size_t KeaSplitMemoryRequired(int nRows, int nBodies, const KeaParameters *param
  *  changes M^-1 J^T x; stats (may be NULL) what happened. workspace: at least
  *  KeaMemoryRequired(nRows, nBodies, KeaSelectPath(nRows, params)) + KeaSplitMemoryRequired(nRows, nBodies,
  *  params) bytes. No allocation, no
- *  messages: the status says what went wrong. Deterministic: rows are visited in index order.
+ *  messages: the status says what went wrong. Deterministic: rows are visited in index order (a split
+ *  solve: in its colours' order, the same bits for any worker count).
  *  Seven arguments: the problem, how to solve it, the caller's memory and the three outputs, each
  *  owned by a different party (the world, its settings, its arena, its bodies), so no struct would
  *  group them without the caller copying into it. */
