@@ -141,8 +141,11 @@ static inline void KeaBlockApplyDeltas(KeaIterativeWork *w, int s, int m, MeReal
         *decrease -= ME_R(0.5) * w->localD[r] * w->localW[r];
     }
     /* the world's half (dv[nb], all zero) is not written: a split sweep's blocks on the world run at once */
-    KeaBlockScatter(m, &w->B[s], w->localD, &w->dv[w->body[s][0]],
-                    w->body[s][1] == w->nb ? NULL : &w->dv[w->body[s][1]]);
+    if (w->body[s][0] != w->nb)
+        KeaBlockScatter(m, &w->B[s], w->localD, &w->dv[w->body[s][0]],
+                        w->body[s][1] == w->nb ? NULL : &w->dv[w->body[s][1]]);
+    else if (w->body[s][1] != w->nb)
+        KeaBlockScatterHalf1(m, &w->B[s], w->localD, &w->dv[w->body[s][1]]);
     for (r = 0; r < m; ++r)
         if (w->localD[r] != ME_R(0.0))
             x[s + r] = w->localX[r];

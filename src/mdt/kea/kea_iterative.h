@@ -138,6 +138,17 @@ static inline void KeaRowApply4(const KeaJacobianRow *B, MeReal s, KeaVel4 *v0, 
     KeaHalfApply4(B->lin1, B->ang1, s, v1);
 }
 
+/** v1 += sum_r B_r d_r over the second halves of m rows (rows with d_r = 0 skipped), row after row:
+ *  a block whose first half is the world's, which is not written (its dv stays zero; a split sweep's
+ *  blocks on the world read it at once). The same sums as KeaBlockScatterSized's second half. */
+static inline void KeaBlockScatterHalf1(int m, const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v1)
+{
+    int r;
+    for (r = 0; r < m; ++r)
+        if (d[r] != ME_R(0.0))
+            KeaHalfApply4(B[r].lin1, B[r].ang1, d[r], v1);
+}
+
 enum { KEA_CONTACT_BODIES = 1, KEA_CONTACT_WORLD = 2 }; /* a declared contact between two bodies, or on the world */
 
 /** SM: one piece of the free list for its matrix-free products, everything they read about it in

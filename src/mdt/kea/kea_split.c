@@ -43,7 +43,7 @@ void KeaSplitLayout(KeaArena *arena, int n, int nb, int workers, KeaSplit *split
     split->pairs = (int(*)[2])KeaArenaAlloc(arena, sizeof(int[2]) * (size_t)n);
     split->unitStart = KEA_ALLOC(arena, int, n + 1);
     split->unitOrder = KEA_ALLOC(arena, int, n);
-    split->colourBytes = KeaColourMemoryRequired(nb + 1); /* + 1: a generic block's world half 0 (below) */
+    split->colourBytes = KeaColourMemoryRequired(nb);
     split->colourWork = KeaArenaAlloc(arena, split->colourBytes);
     split->chunkStart = KEA_ALLOC(arena, int, n / KEA_SPLIT_CHUNK + KEA_COLOUR_COUNT + 2);
     split->chunks = KEA_ALLOC(arena, KeaSplitChunk, n / KEA_SPLIT_CHUNK + KEA_COLOUR_COUNT + 1);
@@ -78,9 +78,8 @@ size_t KeaSplitMemoryRequired(int nRows, int nBodies, const KeaParameters *param
 /* Colour the blocks by their bodies (partition-local; the world in no colour), a unit at a time: a
  * run of consecutive blocks on one body pair (a contact group's points, a joint's blocks) is one
  * unit, coloured once and swept in one chunk in its order, so that a pair's four contact points do
- * not take four colours. A generic block whose half 0 is on the world writes the world's dv through
- * its half 0 (KeaBlockScatter): it is coloured as if on a body nb of its own, so that no two such
- * blocks run at once. Then the chunks: each colour's units in runs of at least KEA_SPLIT_CHUNK blocks.
+ * not take four colours. No block writes the world's dv (kea_iterative.h, KeaBlockScatterHalf1), so
+ * the world joins no colour. Then the chunks: each colour's units in runs of at least KEA_SPLIT_CHUNK blocks.
  * Returns 0 (not split) when a friction link leaves its block: that row would read a bound another
  * block of its colour may be writing. */
 int KeaSplitColour(const KeaProblem *problem, KeaIterativeWork *w, KeaSplit *split)
@@ -93,9 +92,7 @@ int KeaSplitColour(const KeaProblem *problem, KeaIterativeWork *w, KeaSplit *spl
                 return 0;
     for (b = 0; b < w->nBlocks; ++b) {
         const int s = w->blockStart[b];
-        const int generic = !w->blockContact[b] && w->blockStart[b + 1] - s > 1;
-        const int b0 = problem->rowBodies[s][0] < 0 && generic ? nb : problem->rowBodies[s][0];
-        const int b1 = problem->rowBodies[s][1];
+        const int b0 = problem->rowBodies[s][0], b1 = problem->rowBodies[s][1];
         if (units == 0 || split->pairs[units - 1][0] != b0 || split->pairs[units - 1][1] != b1) {
             split->pairs[units][0] = b0;
             split->pairs[units][1] = b1;
@@ -103,7 +100,7 @@ int KeaSplitColour(const KeaProblem *problem, KeaIterativeWork *w, KeaSplit *spl
         }
     }
     split->unitStart[units] = w->nBlocks;
-    split->colours = KeaColourConstraints((const int(*)[2])split->pairs, units, nb + 1, split->colourWork,
+    split->colours = KeaColourConstraints((const int(*)[2])split->pairs, units, nb, split->colourWork,
                                           split->colourBytes, split->colour, split->unitOrder, split->colourStart);
     if (split->colours < 0)
         return 0; /* not reached: the bodies are in range and the workspace sized for them */

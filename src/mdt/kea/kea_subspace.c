@@ -29,8 +29,9 @@
 #include "kea_block_kernels.h"
 
 /* dvTmp += M^-1 J_F^T v (v by position in the free list) for the pieces (KeaFindSegments) order[j]
- * (order NULL: j itself), j in [j0, j1), in that order: a segment through the sweep's block kernels (a
- * contact's world half not written), a row on its own by itself. The work's arrays are read into
+ * (order NULL: j itself), j in [j0, j1), in that order: a segment through the sweep's block kernels, a
+ * row on its own by itself; the world's half (dvTmp[nb], all zero) is not written, so that a colour's
+ * pieces on the world may run at once. The work's arrays are read into
  * locals once: a four-lane store may alias anything for the compiler, which would reload them for
  * every piece. */
 static void KeaScatterPieces(const KeaIterativeWork *w, const MeReal *v, const int *order, int j0, int j1)
@@ -38,18 +39,26 @@ static void KeaScatterPieces(const KeaIterativeWork *w, const MeReal *v, const i
     const KeaFreePiece *pieces = w->pieces;
     const KeaJacobianRow *B = w->B;
     KeaVel4 *dvTmp = w->dvTmp;
+    const int nb = w->nb;
     int j;
     for (j = j0; j < j1; ++j) {
         const KeaFreePiece *piece = &pieces[order ? order[j] : j];
-        KeaVel4 *v0 = &dvTmp[piece->body[0]], *v1 = &dvTmp[piece->body[1]];
+        const int onWorld0 = piece->body[0] == nb, onWorld1 = piece->body[1] == nb;
+        KeaVel4 *v0 = &dvTmp[piece->body[0]], *v1 = onWorld1 ? NULL : &dvTmp[piece->body[1]];
         const MeReal *vp = v + piece->pos;
         if (piece->kind) {
-            KeaContactScatter(&B[piece->row], vp, v0, piece->kind == KEA_CONTACT_WORLD ? NULL : v1);
+            KeaContactScatter(&B[piece->row], vp, v0, v1);
         } else if (piece->rows == 1) {
-            if (vp[0] != ME_R(0.0))
-                KeaRowApply4(&B[piece->row], vp[0], v0, v1);
-        } else {
+            if (vp[0] == ME_R(0.0))
+                continue;
+            if (!onWorld0)
+                KeaHalfApply4(B[piece->row].lin0, B[piece->row].ang0, vp[0], v0);
+            if (v1)
+                KeaHalfApply4(B[piece->row].lin1, B[piece->row].ang1, vp[0], v1);
+        } else if (!onWorld0) {
             KeaBlockScatter(piece->rows, &B[piece->row], vp, v0, v1);
+        } else if (v1) {
+            KeaBlockScatterHalf1(piece->rows, &B[piece->row], vp, v1);
         }
     }
 }
