@@ -277,12 +277,17 @@ typedef struct KeaBlockScratch {
 
 /** The workers' team of a split solve (kea_split.c, KeaSplitDrive): the driver and the stage it has
  *  published for the helpers. */
+typedef struct KeaTeamStage {
+    atomic_int items;           /**< the stage's items */
+    _Atomic(KeaTaskFn) task;    /**< its task */
+    _Atomic(void *) data;       /**< and its data */
+} KeaTeamStage;
+
 typedef struct KeaTeam {
     _Atomic(uint64_t) cursor;   /**< the stage's generation (high half) and its next item (low half) */
     atomic_int completed;       /**< items of the stage that have run */
-    atomic_int items;           /**< the stage's items */
-    _Atomic(KeaTaskFn) task;    /**< the stage's task */
-    _Atomic(void *) data;       /**< and its data */
+    KeaTeamStage stage[2];      /**< stage g in stage[g & 1]: the next one is written while a helper
+                                     late on this one may still read it (its claim then fails) */
     atomic_int driving;         /**< an item has become the driver */
     atomic_int done;            /**< the driver has finished the solve */
     unsigned generation;        /**< the driver's: stages published */

@@ -182,12 +182,13 @@ static void KeaTeamWork(KeaTeam *team, unsigned generation, int worker)
         KeaTaskFn task;
         void *data;
         int next;
+        const KeaTeamStage *stage = &team->stage[generation & 1];
         if ((unsigned)(word >> 32) != generation)
             return;
         next = (int)(word & 0xffffffffu);
-        task = atomic_load_explicit(&team->task, memory_order_relaxed);
-        data = atomic_load_explicit(&team->data, memory_order_relaxed);
-        if (next >= atomic_load_explicit(&team->items, memory_order_relaxed))
+        task = atomic_load_explicit(&stage->task, memory_order_relaxed);
+        data = atomic_load_explicit(&stage->data, memory_order_relaxed);
+        if (next >= atomic_load_explicit(&stage->items, memory_order_relaxed))
             return;
         if (!atomic_compare_exchange_weak_explicit(&team->cursor, &word, word + 1, memory_order_acq_rel,
                                                    memory_order_acquire))
@@ -198,11 +199,15 @@ static void KeaTeamWork(KeaTeam *team, unsigned generation, int worker)
 }
 
 /* The driver publishes a stage, works on it and waits until every item has run. */
-static void KeaTeamStage(KeaTeam *team, KeaTaskFn task, int items, void *data)
+static void KeaTeamPublish(KeaTeam *team, KeaTaskFn task, int items, void *data)
 {
-    atomic_store_explicit(&team->task, task, memory_order_relaxed);
-    atomic_store_explicit(&team->data, data, memory_order_relaxed);
-    atomic_store_explicit(&team->items, items, memory_order_relaxed);
+    /* Stage g + 1 goes to the slot stage g - 1 used: a helper still reading that one holds an ended
+     * generation, so its claim fails; stage g's slot, which a helper may be claiming from, is left
+     * alone (one slot would let a helper check stage g's cursor against stage g + 1's item count). */
+    KeaTeamStage *stage = &team->stage[(team->generation + 1) & 1];
+    atomic_store_explicit(&stage->task, task, memory_order_relaxed);
+    atomic_store_explicit(&stage->data, data, memory_order_relaxed);
+    atomic_store_explicit(&stage->items, items, memory_order_relaxed);
     atomic_store_explicit(&team->completed, 0, memory_order_relaxed);
     ++team->generation;
     atomic_store_explicit(&team->cursor, (uint64_t)team->generation << 32, memory_order_release);
@@ -240,6 +245,7 @@ static void KeaTeamTask(int start, int end, int worker, void *data)
 void KeaSplitDrive(KeaSplit *split, void (*drive)(void *), void *data)
 {
     KeaTeam team;
+    int k;
     split->team = NULL;
     if (split->hook.workers <= 1 || split->hook.perStage) {
         drive(data);
@@ -251,9 +257,11 @@ void KeaSplitDrive(KeaSplit *split, void (*drive)(void *), void *data)
     team.driverWorker = 0;
     atomic_init(&team.cursor, 0);
     atomic_init(&team.completed, 0);
-    atomic_init(&team.items, 0);
-    atomic_init(&team.task, NULL);
-    atomic_init(&team.data, NULL);
+    for (k = 0; k < 2; ++k) {
+        atomic_init(&team.stage[k].items, 0);
+        atomic_init(&team.stage[k].task, NULL);
+        atomic_init(&team.stage[k].data, NULL);
+    }
     atomic_init(&team.driving, 0);
     atomic_init(&team.done, 0);
     split->team = &team;
@@ -268,7 +276,7 @@ void KeaSplitRun(const KeaSplit *split, KeaTaskFn task, int items, void *data)
     if (items <= 0)
         return;
     if (split->team && items > 1)
-        KeaTeamStage(split->team, task, items, data);
+        KeaTeamPublish(split->team, task, items, data);
     else if (split->hook.perStage && split->hook.workers > 1 && items > 1)
         split->hook.run(task, items, 1, data, split->hook.user);
     else
