@@ -4,7 +4,9 @@
 # every task's items run inline and show as functions of their own: the Mdt stages' tasks (as bench/stages.sh
 # counts them) plus the split solve's chunked loops (the sweep's colours, SM's loops and scatter). The rest of
 # the step (the partition search, the split solve's set-up, colouring, SM's serial parts, the residual, the
-# overflow colour) is serial. The bound printed is T / (S + W / N). Steps FROM..TO (default 301..450: the
+# overflow colour) is serial. The bound printed is T / (S + W / N). On one thread the row packing and the
+# bridge's pair tests run their serial loops, not their tasks (packTask, testPairs 0): bench/stages.sh counts
+# them (about 2.0M and 2.1M instructions a step on the pile). Steps FROM..TO (default 301..450: the
 # pile's heap is one partition from about step 120), as the difference of two runs.
 #
 #   bash bench/split_share.sh [SCENE] [FROM] [TO] [THREADS]      # pile 301 450 2
@@ -30,7 +32,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 TASKS="predictTask packTask solveTask integrateTask unpackTask testPairs KeaSweepChunks KeaScatterChunks \
-KeaCgStartChunks KeaCgProductChunks KeaCgUpdateChunks KeaTrialChunks"
+KeaCgStartChunks KeaCgProductChunks KeaCgUpdateChunks KeaTrialChunks KeaSetUpRowChunks KeaWarmStartRowChunks \
+KeaFactorBlockChunks"
 run() { # steps out
     valgrind --tool=callgrind --callgrind-out-file="$2" --toggle-collect=karma_step "$BIN" \
         --variants="$KARMA_VARIANT" --scenes="$SCENE" --steps="$1" --threads=1 >/dev/null 2>&1

@@ -38,8 +38,8 @@
  * for every worker count. */
 #  define SPLIT_ROWS 100
 #  if KARMA_DOUBLE
-#    define GOLDEN_PILE 0x0ull
-#    define GOLDEN_PYRAMID 0x0ull
+#    define GOLDEN_PILE 0x56c5b77a194d4d8eull
+#    define GOLDEN_PYRAMID 0x2405ad358ec3c2dcull
 #  else
 #    define GOLDEN_PILE 0xf9449136d741feb0ull
 #    define GOLDEN_PYRAMID 0xb1201610d78d04eeull
