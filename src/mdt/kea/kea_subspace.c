@@ -34,7 +34,7 @@
  * pieces on the world may run at once. The work's arrays are read into
  * locals once: a four-lane store may alias anything for the compiler, which would reload them for
  * every piece. */
-static void KeaScatterPieces(const KeaIterativeWork *w, const MeReal *v, const int *order, int j0, int j1)
+KEA_ALWAYS_INLINE void KeaScatterPieces(const KeaIterativeWork *w, const MeReal *v, const int *order, int j0, int j1)
 {
     const KeaFreePiece *pieces = w->pieces;
     const KeaJacobianRow *B = w->B;
