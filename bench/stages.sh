@@ -10,7 +10,9 @@
 # threads (helperMain): once on one thread (T1, the serial step) and once on a pool of 2 (T2, all
 # threads summed). In the threaded run W is what ran inside the step's tasks (markedTask: prediction,
 # rows, solves, integration, unpack, the bridge's pair tests) and S = T2 - W the rest (the partition
-# search, farfield, contact conversion, moving rows, gathering, the pool's hand-outs). On N workers a
+# search, farfield, contact conversion, moving rows, gathering, the pool's hand-outs; not the pool's
+# threads spinning for the next task or for the last ranges, `spinUntil`, which is waiting, taken out
+# of T2). On N workers a
 # step takes at least S + W/N, and at least S + the largest single item (one partition's solve):
 # the bound printed is T1 / max(S + W/N, S + solves + (W - solves)/N), the second only for a scene
 # whose solve is one partition (the pile's heap; SINGLE_PARTITION=yes|no overrides the guess from the
@@ -54,6 +56,7 @@ for scene in $SCENES; do
     run "$scene" 2 "$work/two.out"
     t1=$(callgrind_annotate "$work/one.out" 2>/dev/null | awk '/PROGRAM TOTALS/ { gsub(",", "", $1); print $1 }')
     t2=$(callgrind_annotate "$work/two.out" 2>/dev/null | awk '/PROGRAM TOTALS/ { gsub(",", "", $1); print $1 }')
+    t2=$((t2 - $(inclusive "$work/two.out" spinUntil)))
     w=$(inclusive "$work/two.out" markedTask)
     solves=$(inclusive "$work/two.out" solveTask)
     awk -v s="$scene" -v t1="$t1" -v t2="$t2" -v w="$w" -v sv="$solves" -v n="$THREADS" -v steps="$STEPS" \

@@ -14,6 +14,13 @@
 # default 2000; empty: off) splits every iterative partition of that many rows over the threads
 # (MdtWorldSetPartitionSplitRows: the pile's heap), in both runs of a pair. Uses BUILD (default
 # build/bench), which it builds if needed.
+#
+# STEP_MIN=1 (environment) measures differently, for a loaded machine: each of the PAIRS rounds runs
+# both thread counts with every step's wall time (--step-times); a step does the same work in every
+# run (the trajectories are the same), so each step's fastest run over the rounds is what it costs
+# when the other threads of the machine left it alone; the figure is the sum of those minima at 1
+# thread over their sum at N threads. It tends to the idle machine's ratio as the rounds grow, but
+# is no substitute for it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -39,9 +46,30 @@ run() { # scene threads
     "$BUILD/bench/karma_scenes" --variants="$KARMA_VARIANT" --scenes="$1" --steps="$STEPS" --threads="$2" \
         2>/dev/null | awk -F, -v v="$KARMA_VARIANT" '$2 == v { print $7, $12 }'
 }
+load1() { cut -d' ' -f1 /proc/loadavg; } # the 1-minute load average, beside each pair
 median() { sort -g | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
 
 echo "load before: $(uptime | sed 's/.*load average/load average/'); $(nproc) cores"
+if [ "${STEP_MIN:-0}" = 1 ]; then
+    tmp=$(mktemp -d)
+    trap 'rm -rf "$tmp"' EXIT
+    for scene in $SCENES; do
+        for ((i = 1; i <= PAIRS; i++)); do
+            for t in 1 "$THREADS"; do
+                "$BUILD/bench/karma_scenes" --variants="$KARMA_VARIANT" --scenes="$scene" --steps="$STEPS" \
+                    --threads="$t" --step-times 2>&1 >/dev/null | awk '$1 == "step" { print $2, $6 }' >"$tmp/$t.$i"
+            done
+        done
+        # per step, the fastest of the rounds; then the sums
+        one=$(cat "$tmp"/1.* | awk '{ if (!($1 in m) || $2 < m[$1]) m[$1] = $2 } END { for (k in m) s += m[k]; printf "%.4f", s / length(m) }')
+        many=$(cat "$tmp"/"$THREADS".* | awk '{ if (!($1 in m) || $2 < m[$1]) m[$1] = $2 } END { for (k in m) s += m[k]; printf "%.4f", s / length(m) }')
+        echo "$scene, Karma $KARMA_VARIANT, $STEPS steps, $PAIRS rounds: mean over steps of each step's fastest wall ms:" \
+             "1 thread $one, $THREADS threads $many, speed-up $(awk -v a="$one" -v b="$many" 'BEGIN { printf "%.3f", a / b }')" \
+             "(load $(load1))"
+    done
+    echo "load after: $(uptime | sed 's/.*load average/load average/')"
+    exit 0
+fi
 for scene in $SCENES; do
     ratios=()
     echo "$scene, Karma $KARMA_VARIANT, $STEPS steps, 1 vs $THREADS threads, $PAIRS alternating pairs (median wall ms per step):"
@@ -54,7 +82,7 @@ for scene in $SCENES; do
         fi
         ratio=$(awk -v a="$one" -v b="$many" 'BEGIN { printf "%.3f", a / b }')
         ratios+=("$ratio")
-        echo "  pair $i: 1 thread $one ms, $THREADS threads $many ms, speed-up $ratio (figure $q1 both)"
+        echo "  pair $i: 1 thread $one ms, $THREADS threads $many ms, speed-up $ratio (figure $q1 both; load $(load1))"
     done
     echo "  median speed-up on $scene: $(printf '%s\n' "${ratios[@]}" | median)"
 done

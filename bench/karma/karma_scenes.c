@@ -58,7 +58,13 @@
  * MdtWorldGetProfile: Dynamics = Partition, AutoDisable, LOD, Pack, Solve, Integrate, Unpack), mean
  * solver statistics and the pools' high-water marks. The sections are timed in process CPU time then
  * (the profiles' clock is replaced), which the load of a shared machine inflates far less than wall
- * time; the harness's own timing is unaffected apart from the clock calls (~20 per step). */
+ * time; the harness's own timing is unaffected apart from the clock calls (~20 per step).
+ *
+ * Tasks: with KARMA_BENCH_TASKS=1, the world's task system is wrapped so that every task the step
+ * hands out is logged by stage (tasks per step, items, wall time of the hand-outs); at the end of the
+ * run the figures are printed to stderr, with the step's wall time outside the tasks. With
+ * --threads=1 the wrapper declares 2 workers and runs every task inline on the stepping thread (what
+ * the serial step does, plus the marks), so that the two runs compare stage by stage. */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 #include <karma/karma.h>
 
@@ -82,6 +88,7 @@ typedef struct KarmaWorld {
     int steps;
     int profile;         /* KARMA_BENCH_PROFILE set: gather and print the profile */
     int stepStats;       /* KARMA_BENCH_STEPSTATS set: print the solver statistics of every step */
+    int taskLog;         /* KARMA_BENCH_TASKS set: log the tasks of every step */
     /* solver statistics summed over the steps (profile only) */
     double partitions, iterativePartitions, iterations, pivots, rows;
     int maxPartitionRows, maxPairs, unconverged;
@@ -115,6 +122,77 @@ static double cpu_seconds(void)
 
 /* The pool of --threads=N (N > 1), made at the first world and kept for the process. */
 static MeThreadPool *threadPool;
+
+static double wall_ns(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return 1e9 * (double)t.tv_sec + (double)t.tv_nsec;
+}
+
+/* KARMA_BENCH_TASKS: the tasks of the steps, by stage. The stage is told by the task's smallest
+ * range (docs/step.md's table: pair tests 8, prediction 64, rows 4 before the solves' 1, integration
+ * 4 after it, unpack 32), which is all a task system sees of it. */
+enum { TASK_PAIRS, TASK_PREDICT, TASK_ROWS, TASK_SOLVE, TASK_INTEGRATE, TASK_UNPACK, TASK_OTHER, TASK_STAGES };
+static const char *const taskStageNames[TASK_STAGES] = {"pair tests", "prediction", "rows", "solves",
+                                                        "integration", "unpack", "other"};
+typedef struct TaskStage {
+    double count, items, wallNs;
+} TaskStage;
+static TaskStage taskStages[TASK_STAGES];
+static int taskSolved;        /* the current step's solves have been handed out */
+static double taskStepWallNs; /* wall time of the steps, summed */
+
+static int task_stage(int minRange)
+{
+    switch (minRange) {
+    case 8: return TASK_PAIRS;
+    case 64: return TASK_PREDICT;
+    case 4: return taskSolved ? TASK_INTEGRATE : TASK_ROWS;
+    case 1: taskSolved = 1; return TASK_SOLVE;
+    case 32: return TASK_UNPACK;
+    default: return TASK_OTHER;
+    }
+}
+
+static void *logged_enqueue(MdtTaskFnPtr task, int itemCount, int minRange, void *taskData, void *user)
+{
+    double t0 = wall_ns();
+    if (user)
+        MeThreadPoolEnqueue(task, itemCount, minRange, taskData, user);
+    else
+        task(0, itemCount, 0, taskData);
+    TaskStage *s = &taskStages[task_stage(minRange)];
+    s->wallNs += wall_ns() - t0;
+    s->count++;
+    s->items += itemCount;
+    return NULL;
+}
+
+static void logged_finish(void *userTask, void *user)
+{
+    (void)userTask;
+    (void)user;
+}
+
+static void print_task_log(const char *scene, int steps)
+{
+    double inTasks = 0;
+    fprintf(stderr, "  karma tasks, %s, %d steps (%s): stage: tasks per step, mean items, wall us per step\n", scene,
+            steps, threadPool ? "pool" : "inline");
+    for (int i = 0; i < TASK_STAGES; i++) {
+        const TaskStage *s = &taskStages[i];
+        if (s->count == 0)
+            continue;
+        fprintf(stderr, "    %-12s %6.2f %8.1f %9.1f\n", taskStageNames[i], s->count / steps, s->items / s->count,
+                s->wallNs / steps * 1e-3);
+        inTasks += s->wallNs;
+    }
+    fprintf(stderr, "    step wall us: %.1f, in tasks %.1f, outside %.1f\n", taskStepWallNs / steps * 1e-3,
+            inTasks / steps * 1e-3, (taskStepWallNs - inTasks) / steps * 1e-3);
+    memset(taskStages, 0, sizeof taskStages);
+    taskStepWallNs = 0;
+}
 
 static double mean_dynamic_mass(const BenchScene *s)
 {
@@ -179,6 +257,8 @@ static void karma_destroy(void *world)
                 MdtWorldGetMaxBodies(w->world), c.constraintPoolHighWater, MdtWorldGetMaxConstraints(w->world),
                 w->maxPairs, McdSpaceGetPairCapacity(space), McdSpaceGetLostPairCount(space));
     }
+    if (w->taskLog && w->steps > 0)
+        print_task_log(w->scene->name, w->steps);
     if (w->universe)
         MstUniverseDestroy(w->universe);
     free(w->bodies);
@@ -196,6 +276,8 @@ static void *karma_create(const BenchScene *scene, MeBool autoDisable)
     w->profile = prof && *prof && strcmp(prof, "0") != 0;
     const char *stepStats = getenv("KARMA_BENCH_STEPSTATS");
     w->stepStats = stepStats && *stepStats && strcmp(stepStats, "0") != 0;
+    const char *tasks = getenv("KARMA_BENCH_TASKS");
+    w->taskLog = tasks && *tasks && strcmp(tasks, "0") != 0;
     w->bodies = calloc((size_t)scene->bodyCount, sizeof *w->bodies);
     w->fixedTM = calloc((size_t)scene->bodyCount, sizeof *w->fixedTM);
     if (!w->bodies || !w->fixedTM) {
@@ -235,6 +317,9 @@ static void *karma_create(const BenchScene *scene, MeBool autoDisable)
         }
         MeThreadPoolAttachUniverse(threadPool, w->universe);
     }
+    if (w->taskLog)
+        MstUniverseSetTaskSystem(w->universe, BenchThreads > 1 ? BenchThreads : 2, logged_enqueue, logged_finish,
+                                 threadPool);
     if (w->profile) {
         /* The universe hands out its profile read-only; setting its clock is all we change. */
         MeProfileSetTimer((MeProfile *)MstUniverseGetProfile(w->universe), cpu_seconds);
@@ -349,7 +434,11 @@ static int karma_step(void *world, const char **why)
 {
     (void)why;
     KarmaWorld *w = world;
+    double t0 = w->taskLog ? wall_ns() : 0;
+    taskSolved = 0;
     MstUniverseStep(w->universe, (MeReal)w->scene->step);
+    if (w->taskLog)
+        taskStepWallNs += wall_ns() - t0;
     w->steps++;
     if (w->stepStats) { /* KARMA_BENCH_STEPSTATS=1: what the solver did in each step, to stderr */
         MdtSolverStats s;

@@ -185,7 +185,7 @@ ME_API void MdtWorldSetMaxDirectRows(MdtWorldID w, int rows);
  *  colour's constraints over the task system's workers (MdtTaskSystem.h), so that one large partition
  *  (a pile) uses every core. The results are the same bits for any worker count, one included, but
  *  the sweep order is the colours', so a split partition's trajectory differs from the unsplit one's
- *  (decision K40-split). 0 = never, the default; rows < 0 is refused (ME_ERR_ARGUMENT_RANGE). A few
+ *  (decision K42). 0 = never, the default; rows < 0 is refused (ME_ERR_ARGUMENT_RANGE). A few
  *  thousand rows is where the split pays on two cores (docs/kea.md). */
 ME_API void MdtWorldSetPartitionSplitRows(MdtWorldID w, int rows);
 /** The iterative solver stops early once its residual is below this (m/s, > 0). Default 1e-6. */

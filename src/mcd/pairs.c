@@ -234,7 +234,7 @@ static inline int intersectModels(McdModelPair *pair, McdModelData *m1, McdModel
         return 0;
     MeReal tolerance = m1->contactTolerance + m2->contactTolerance;
     McdContact *c = result->contacts;
-    const unsigned long fallbacksBefore = McdNfFallbackCount();
+    McdNfTakeFallbacks(); /* the thread's fallbacks so far are not this test's (pair tests without a framework) */
     McdModelData *first = pair->swapped ? m2 : m1, *second = pair->swapped ? m1 : m2; /* the test's order */
     int n = McdNfCallCentred(fn, first->geometry, first->worldTransform, second->geometry, second->worldTransform,
                              tolerance, c, maxCount, &pair->cache);
@@ -242,7 +242,7 @@ static inline int intersectModels(McdModelPair *pair, McdModelData *m1, McdModel
         ME_REPORT_IN(function, ME_ERR_INTERNAL, "a pair test returned %d contacts for room for %d", n, maxCount);
         n = n < 0 ? 0 : dropInvalidContacts(fw, c, maxCount);
     }
-    unsigned long fallbacks = McdNfFallbackCount() - fallbacksBefore;
+    const unsigned long fallbacks = McdNfTakeFallbacks(); /* this thread's: this test's */
     if (fallbacks)
         atomic_fetch_add(&fw->pairFallbacks, fallbacks);
     if (pair->swapped)

@@ -8,8 +8,11 @@
  * world's row chunk), partition after partition, constraint after constraint.
  *
  * On several cores (MdtTaskSystem.h) the prediction is one task over the bodies and the row writing
- * one task over the partitions, each partition into room for its rows' bound; the rows are then moved
- * together. Every value is computed as in the serial step, so the rows are the same, bit for bit. */
+ * one task over pieces of the partitions (a small partition is one piece, a large one is cut into
+ * pieces of PACK_PIECE_CONSTRAINTS constraints and as many slices of its bodies, so that one large
+ * partition is written on all workers too), each piece into room for its rows' bound; the rows are
+ * then moved together. Every value is computed as in the serial step, so the rows are the same, bit
+ * for bit. */
 #include <string.h>
 
 #include "../me/check.h"
@@ -81,15 +84,30 @@ void MdtRowWriterDeclareContact(MdtRowWriter *w, int normalRow)
     w->contacts[w->contactCount++].row = w->first + normalRow;
 }
 
-/* Lay out the step's row arrays for `rows` rows and `bodies` bodies in the row chunk. */
-static MeBool allocateRows(MdtWorldData *w, int rows, int bodies, int partitions)
+/* Constraints per piece of the row-writing task: a partition with more is written in pieces of about
+ * this many (a few microseconds of work each). */
+#define PACK_PIECE_CONSTRAINTS 32
+
+/* Pieces partition p is written in on several workers. */
+static int piecesOf(const MdtPartitionLists *out, int p)
+{
+    int n = out->constraintStart[p + 1] - out->constraintStart[p];
+    return n > PACK_PIECE_CONSTRAINTS ? (n + PACK_PIECE_CONSTRAINTS - 1) / PACK_PIECE_CONSTRAINTS : 1;
+}
+
+/* Lay out the step's row arrays for `rows` rows and `bodies` bodies in the row chunk, with the pieces'
+ * records for `partitions` partitions of `constraints` constraints (the same bytes whatever the
+ * worker count, so that a threaded step grows the chunk exactly as the serial one does). */
+static MeBool allocateRows(MdtWorldData *w, int rows, int bodies, int partitions, int constraints)
 {
     MdtStepRows *r = &w->rows;
     size_t nr = (size_t)(rows > 0 ? rows : 1), nb = (size_t)(bodies > 0 ? bodies : 1);
+    /* at most one piece per partition and one more per PACK_PIECE_CONSTRAINTS constraints */
+    size_t pieces = (size_t)partitions + (size_t)constraints / PACK_PIECE_CONSTRAINTS + 1;
     size_t bytes = sizeof(KeaJacobianRow) * nr + sizeof(KeaBody) * nb + sizeof(KeaBodyVelocity) * nb +
                    sizeof(MeReal) * 6 * nr + sizeof(int) * (3 * nr + (size_t)partitions + 1) +
                    sizeof(KeaContact) * (nr / 3 + 1) + sizeof(int) * ((size_t)partitions + 1) +
-                   sizeof(int) * 4 * ((size_t)partitions + 1) + 64;
+                   sizeof(int) * 7 * pieces + 64;
     unsigned char *mem = MeChunkGetMem(&w->rowChunk, bytes);
     if (!mem)
         return MEFALSE;
@@ -114,9 +132,12 @@ static MeBool allocateRows(MdtWorldData *w, int rows, int bodies, int partitions
     r->partitionContactStart = r->partitionRowStart + partitions + 1;
     r->contacts = (KeaContact *)(r->partitionContactStart + partitions + 1); /* ints: KeaContact is one */
     r->packRowRoom = (int *)(r->contacts + nr / 3 + 1);
-    r->packContactRoom = r->packRowRoom + partitions + 1;
-    r->packRows = r->packContactRoom + partitions + 1;
-    r->packContacts = r->packRows + partitions + 1;
+    r->packContactRoom = r->packRowRoom + pieces;
+    r->packRows = r->packContactRoom + pieces;
+    r->packContacts = r->packRows + pieces;
+    r->pieceConstraintStart = r->packContacts + pieces;
+    r->pieceBodyStart = r->pieceConstraintStart + pieces;
+    r->piecePartition = r->pieceBodyStart + pieces;
     return METRUE;
 }
 
@@ -126,17 +147,20 @@ typedef struct PackTask {
     MdtRowWriter proto;
 } PackTask;
 
-/* Write partition p's bodies and rows, its rows from `row` and its declared contacts from `contact`
- * on; records how many of each it wrote. Touches only its own bodies' solver entries, its own
- * constraints and its own rows, so partitions may be written on any worker in any order. */
-static void packPartition(const PackTask *t, int p, int row, int contact)
+/* Write piece k of a partition: bodies [pieceBodyStart[k], pieceBodyStart[k + 1]) and constraints
+ * [pieceConstraintStart[k], ...[k + 1]) of partition piecePartition[k], its rows from `row` and its
+ * declared contacts from `contact` on; records in packRows[k] and packContacts[k] how many of each it
+ * wrote. Touches only its own bodies' solver entries, its own constraints and its own rows, so pieces
+ * may be written on any worker in any order. */
+static void packPiece(const PackTask *t, int k, int row, int contact)
 {
     MdtWorldData *w = t->w;
     const MdtPartitionLists *out = &w->partitions;
     MdtStepRows *r = &w->rows;
+    int p = r->piecePartition[k];
     int bodyBase = out->partitionStart[p];
     /* Bodies: inverse mass and world inverse inertia, in step order. */
-    for (int i = bodyBase; i < out->partitionStart[p + 1]; i++) {
+    for (int i = r->pieceBodyStart[k]; i < r->pieceBodyStart[k + 1]; i++) {
         const MdtBodyData *b = out->bodies[i];
         r->bodies[i].invMass = b->invMass;
         MdtBodyWorldInverseInertia(b, r->bodies[i].invInertia);
@@ -144,7 +168,7 @@ static void packPartition(const PackTask *t, int p, int row, int contact)
     MdtRowWriter writer = t->proto;
     writer.count = row;
     writer.contactCount = contact;
-    for (int i = out->constraintStart[p]; i < out->constraintStart[p + 1]; i++) {
+    for (int i = r->pieceConstraintStart[k]; i < r->pieceConstraintStart[k + 1]; i++) {
         MdtConstraintData *c = out->constraints[i];
         writer.constraint = c;
         writer.first = writer.count;
@@ -155,44 +179,44 @@ static void packPartition(const PackTask *t, int p, int row, int contact)
         c->rowStart = writer.first;
         c->rowCount = writer.count - writer.first;
     }
-    r->packRows[p] = writer.count - row;
-    r->packContacts[p] = writer.contactCount - contact;
+    r->packRows[k] = writer.count - row;
+    r->packContacts[k] = writer.contactCount - contact;
 }
 
-/* Partitions whose rows the task writes; those with a user constraint are written on the stepping
- * thread afterwards, since a user constraint calls the application's function. */
+/* Pieces whose rows the task writes; those of a partition with a user constraint are written on the
+ * stepping thread afterwards, since a user constraint calls the application's function. */
 static void packTask(int start, int end, int worker, void *data)
 {
     (void)worker;
     const PackTask *t = data;
     const MdtStepRows *r = &t->w->rows;
-    for (int p = start; p < end; p++)
-        if (r->packRowRoom[p] >= 0)
-            packPartition(t, p, r->packRowRoom[p], r->packContactRoom[p]);
+    for (int k = start; k < end; k++)
+        if (r->packRowRoom[k] >= 0)
+            packPiece(t, k, r->packRowRoom[k], r->packContactRoom[k]);
 }
 
-/* Move partition p's rows (written at their room) down to `row`, and its declared contacts to
- * `contact`, rewriting the step-global row indices they hold. */
-static void moveRows(MdtWorldData *w, int p, int row, int contact)
+/* Move piece k's rows (written at their room) down to `row`, and its declared contacts to `contact`,
+ * rewriting the step-global row indices they hold. */
+static void moveRows(MdtWorldData *w, int k, int row, int contact)
 {
     MdtStepRows *r = &w->rows;
     const MdtPartitionLists *out = &w->partitions;
-    const int from = r->packRowRoom[p], shift = from - row, n = r->packRows[p];
+    const int from = r->packRowRoom[k], shift = from - row, n = r->packRows[k];
     const size_t m = (size_t)n;
     if (shift != 0 && n > 0) {
         memmove(r->J + row, r->J + from, sizeof *r->J * m);
         memmove(r->rowBodies + row, r->rowBodies + from, sizeof *r->rowBodies * m);
         MeReal *reals[] = {r->epsilon, r->rhs, r->lo, r->hi, r->mu, r->x};
-        for (size_t k = 0; k < sizeof reals / sizeof reals[0]; k++)
-            memmove(reals[k] + row, reals[k] + from, sizeof(MeReal) * m);
+        for (size_t a = 0; a < sizeof reals / sizeof reals[0]; a++)
+            memmove(reals[a] + row, reals[a] + from, sizeof(MeReal) * m);
         memmove(r->link + row, r->link + from, sizeof(int) * m);
         for (int i = row; i < row + n; i++)
             if (r->link[i] >= 0)
                 r->link[i] -= shift;
-        for (int i = out->constraintStart[p]; i < out->constraintStart[p + 1]; i++)
+        for (int i = r->pieceConstraintStart[k]; i < r->pieceConstraintStart[k + 1]; i++)
             out->constraints[i]->rowStart -= shift;
     }
-    const int fromContact = r->packContactRoom[p], nc = r->packContacts[p];
+    const int fromContact = r->packContactRoom[k], nc = r->packContacts[k];
     if ((shift != 0 || fromContact != contact) && nc > 0) {
         memmove(r->contacts + contact, r->contacts + fromContact, sizeof *r->contacts * (size_t)nc);
         for (int i = contact; i < contact + nc; i++)
@@ -202,7 +226,7 @@ static void moveRows(MdtWorldData *w, int p, int row, int contact)
 
 /* Bodies per range of the prediction task (a body's prediction is a few hundred operations). */
 #define PREDICT_MIN_RANGE 64
-/* Partitions per range of the row-writing task. */
+/* Pieces per range of the row-writing task. */
 #define PACK_MIN_RANGE 4
 
 static void predictTask(int start, int end, int worker, void *data)
@@ -221,7 +245,7 @@ void MdtPackStage(MdtWorldData *w)
     for (int i = 0; i < out->constraintCount; i++)
         total += MdtConstraintRowBound(out->constraints[i]);
     r->count = 0;
-    if (!allocateRows(w, total, out->bodyCount, out->partitionCount)) {
+    if (!allocateRows(w, total, out->bodyCount, out->partitionCount, out->constraintCount)) {
         /* No memory for rows: the constraints are skipped this step (reported by the chunk). */
         out->constraintCount = 0;
         for (int p = 0; p <= out->partitionCount; p++)
@@ -251,13 +275,21 @@ void MdtPackStage(MdtWorldData *w)
     writer->epsilon0 = w->epsilon;
     writer->maxCorrection = w->maxCorrectingVelocity;
 
-    int row = 0, contact = 0;
-    if (w->workerCount <= 1 || !w->enqueueTask || out->partitionCount <= PACK_MIN_RANGE) {
-        /* One thread: each partition's rows straight after the last one's. */
+    int row = 0, contact = 0, pieces = 0;
+    if (w->workerCount > 1 && w->enqueueTask)
+        for (int p = 0; p < out->partitionCount; p++)
+            pieces += piecesOf(out, p);
+    if (pieces <= PACK_MIN_RANGE) {
+        /* One thread (or one range's worth): each partition, as one piece, straight after the last. */
         for (int p = 0; p < out->partitionCount; p++) {
+            r->pieceConstraintStart[p] = out->constraintStart[p];
+            r->pieceConstraintStart[p + 1] = out->constraintStart[p + 1];
+            r->pieceBodyStart[p] = out->partitionStart[p];
+            r->pieceBodyStart[p + 1] = out->partitionStart[p + 1];
+            r->piecePartition[p] = p;
             r->packRowRoom[p] = row;
             r->packContactRoom[p] = contact;
-            packPartition(&task, p, row, contact);
+            packPiece(&task, p, row, contact);
             r->partitionRowStart[p] = row;
             r->partitionContactStart[p] = contact;
             row += r->packRows[p];
@@ -265,34 +297,48 @@ void MdtPackStage(MdtWorldData *w)
             MdtWorldLogMatrixSize(w, r->packRows[p]);
         }
     } else {
-        /* Several: each partition writes into room for its rows' bound (a contact is at least three
-         * rows), in parallel; then the rows are moved down to lie partition after partition, as the
-         * serial step lays them out. The values are the same wherever they are written. */
-        int room = 0, contactRoom = 0;
+        /* Several: each piece writes into room for its rows' bound (a contact is at least three
+         * rows), in parallel; then the rows are moved down to lie piece after piece, as the serial
+         * step lays them out. The values are the same wherever they are written. */
+        int room = 0, contactRoom = 0, k = 0;
         for (int p = 0; p < out->partitionCount; p++) {
-            int bound = 0;
+            const int c0 = out->constraintStart[p], n = out->constraintStart[p + 1] - c0;
+            const int b0 = out->partitionStart[p], nb = out->partitionStart[p + 1] - b0;
+            const int count = piecesOf(out, p);
             MeBool user = MEFALSE;
-            for (int i = out->constraintStart[p]; i < out->constraintStart[p + 1]; i++) {
-                bound += MdtConstraintRowBound(out->constraints[i]);
+            for (int i = c0; i < c0 + n; i++)
                 user |= out->constraints[i]->type == MdtBclUSER;
+            for (int j = 0; j < count; j++, k++) {
+                r->pieceConstraintStart[k] = c0 + (int)((long long)j * n / count);
+                r->pieceBodyStart[k] = b0 + (int)((long long)j * nb / count);
+                r->piecePartition[k] = p;
+                int bound = 0, end = c0 + (int)((long long)(j + 1) * n / count);
+                for (int i = r->pieceConstraintStart[k]; i < end; i++)
+                    bound += MdtConstraintRowBound(out->constraints[i]);
+                r->packRowRoom[k] = user ? -1 - room : room; /* negative: written on the stepping thread */
+                r->packContactRoom[k] = contactRoom;
+                room += bound;
+                contactRoom += bound / 3;
             }
-            r->packRowRoom[p] = user ? -1 - room : room; /* negative: written on the stepping thread */
-            r->packContactRoom[p] = contactRoom;
-            room += bound;
-            contactRoom += bound / 3;
         }
-        MdtRunStepTask(w, packTask, out->partitionCount, PACK_MIN_RANGE, &task);
+        r->pieceConstraintStart[pieces] = out->constraintStart[out->partitionCount];
+        r->pieceBodyStart[pieces] = out->partitionStart[out->partitionCount];
+        MdtRunStepTask(w, packTask, pieces, PACK_MIN_RANGE, &task);
+        k = 0;
         for (int p = 0; p < out->partitionCount; p++) {
-            if (r->packRowRoom[p] < 0) {
-                r->packRowRoom[p] = -1 - r->packRowRoom[p];
-                packPartition(&task, p, r->packRowRoom[p], r->packContactRoom[p]);
-            }
-            moveRows(w, p, row, contact);
+            const int first = row;
             r->partitionRowStart[p] = row;
             r->partitionContactStart[p] = contact;
-            row += r->packRows[p];
-            contact += r->packContacts[p];
-            MdtWorldLogMatrixSize(w, r->packRows[p]);
+            for (; k < pieces && r->piecePartition[k] == p; k++) {
+                if (r->packRowRoom[k] < 0) {
+                    r->packRowRoom[k] = -1 - r->packRowRoom[k];
+                    packPiece(&task, k, r->packRowRoom[k], r->packContactRoom[k]);
+                }
+                moveRows(w, k, row, contact);
+                row += r->packRows[k];
+                contact += r->packContacts[k];
+            }
+            MdtWorldLogMatrixSize(w, row - first);
         }
     }
     r->partitionRowStart[out->partitionCount] = row;

@@ -75,8 +75,10 @@ typedef struct MdtStepRows {
     int *partitionRowStart;  /* partitionCount + 1 offsets */
     KeaContact *contacts;    /* declared contacts (MdtRowWriterDeclareContact), partition after partition */
     int *partitionContactStart; /* partitionCount + 1 offsets into contacts */
-    int *packRowRoom, *packContactRoom; /* per partition: where pack wrote its rows and contacts */
-    int *packRows, *packContacts;       /* per partition: how many it wrote */
+    int *packRowRoom, *packContactRoom; /* per piece of a partition (pack.c): where pack wrote its rows and contacts */
+    int *packRows, *packContacts;       /* per piece: how many it wrote */
+    int *pieceConstraintStart, *pieceBodyStart; /* pieces + 1 offsets into the partitions' lists */
+    int *piecePartition;                /* per piece: its partition */
     KeaBody *bodies;         /* per step body (partition order) */
     KeaBodyVelocity *dv;     /* per step body: velocity change from the constraints */
     size_t workspaceBytes;   /* Kea workspace for the largest partition */

@@ -38,18 +38,18 @@
  * for every worker count. */
 #  define SPLIT_ROWS 100
 #  if KARMA_DOUBLE
-#    define GOLDEN_PILE 0x56c5b77a194d4d8eull
-#    define GOLDEN_PYRAMID 0x2405ad358ec3c2dcull
+#    define GOLDEN_PILE 0x179d06832d394e9dull
+#    define GOLDEN_PYRAMID 0x5bd4ef4e6df1fcf3ull
 #  else
-#    define GOLDEN_PILE 0xf9449136d741feb0ull
-#    define GOLDEN_PYRAMID 0xb1201610d78d04eeull
+#    define GOLDEN_PILE 0x26be2e14b3ab5cb8ull
+#    define GOLDEN_PYRAMID 0xc665a950f4a1afb5ull
 #  endif
 #elif KARMA_DOUBLE
-#  define GOLDEN_PILE 0x68e95dc90a5e3223ull
-#  define GOLDEN_PYRAMID 0xf792a5ceef33643dull
+#  define GOLDEN_PILE 0x723b3f95c4e4629cull
+#  define GOLDEN_PYRAMID 0x9c370eda546c0820ull
 #else
-#  define GOLDEN_PILE 0x4a52b542ec88b8d7ull
-#  define GOLDEN_PYRAMID 0x18701b2344ba6c5full
+#  define GOLDEN_PILE 0x2930d4eebe120312ull
+#  define GOLDEN_PYRAMID 0x6f7d874e094e3543ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};

@@ -168,6 +168,70 @@ static void sparse_trees_complementary(void **state)
                   " worst complementarity violation %.2e (relative)\n", rows, direct, pivots, worst);
 }
 
+/* A row may touch one body through both halves (its Jacobian on that body is the sum of the two) and
+ * a row may touch no body at all (only its softness resists it). Trees whose rows on the world are
+ * rewritten so, each Jacobian split into a random part on half 1 and the rest on half 0, and one row
+ * moved off every body: the direct path solves them as the same trees written plainly (same answer
+ * within rounding), and its answer meets the LCP conditions of A built independently in double. */
+static void rows_on_one_body_twice_or_on_none(void **state)
+{
+    KeaParameters prm = kt_params(KeaPathDirect);
+    double worst = 0.0, worstDiff = 0.0;
+    int seed, split = 0;
+    (void)state;
+    for (seed = 0; seed < 12; ++seed) {
+        KtRng rng = kt_rng((uint64_t)(9700 + seed)), twin = kt_rng((uint64_t)(9700 + seed));
+        KtProblem plain, halves;
+        MeReal *xp, *xh;
+        KeaStats st;
+        double scale = 1.0;
+        int i, k;
+        random_tree_problem(&plain, &rng, 4 + kt_int(&rng, 9), seed % 2);
+        random_tree_problem(&halves, &twin, 4 + kt_int(&twin, 9), seed % 2); /* the same tree */
+        for (i = 0; i < plain.p.nRows; ++i) {
+            if (i == plain.p.nRows - 1) { /* the last row on no body, in both */
+                plain.rowBodies[i][0] = plain.rowBodies[i][1] = halves.rowBodies[i][0] = halves.rowBodies[i][1] = KEA_WORLD;
+                plain.eps[i] = halves.eps[i] = ME_R(1.0); /* as stiff as the others: the check's tolerances */
+                continue;
+            }
+            if (plain.rowBodies[i][1] != KEA_WORLD)
+                continue;
+            halves.rowBodies[i][1] = halves.rowBodies[i][0];
+            for (k = 0; k < 3; ++k) { /* half 1 gets a random part, half 0 the rest */
+                halves.J[i].lin1[k] = (MeReal)kt_range(&rng, -0.5, 0.5) * plain.J[i].lin0[k];
+                halves.J[i].ang1[k] = (MeReal)kt_range(&rng, -0.5, 0.5) * plain.J[i].ang0[k];
+                halves.J[i].lin0[k] = plain.J[i].lin0[k] - halves.J[i].lin1[k];
+                halves.J[i].ang0[k] = plain.J[i].ang0[k] - halves.J[i].ang1[k];
+                plain.J[i].lin0[k] = halves.J[i].lin0[k] + halves.J[i].lin1[k]; /* the sum as stored */
+                plain.J[i].ang0[k] = halves.J[i].ang0[k] + halves.J[i].ang1[k];
+            }
+            ++split;
+        }
+        xp = (MeReal *)calloc((size_t)plain.p.nRows, sizeof(MeReal));
+        xh = (MeReal *)calloc((size_t)plain.p.nRows, sizeof(MeReal));
+        assert_int_equal(kt_solve(&plain.p, &prm, xp, NULL, &st), KeaStatusOk);
+        assert_int_equal(kt_solve(&halves.p, &prm, xh, NULL, &st), KeaStatusOk);
+        assert_int_equal(st.path, KeaPathDirect);
+        worst = fmax(worst, worst_complementarity(&halves, xh, ME_TOL(1e-6, 1e-3)));
+        for (i = 0; i < plain.p.nRows; ++i)
+            scale = fmax(scale, fabs((double)xp[i]));
+        for (i = 0; i < plain.p.nRows; ++i)
+            worstDiff = fmax(worstDiff, fabs((double)xp[i] - (double)xh[i]) / scale);
+        assert_near(worstDiff, 0.0, ME_TOL(1e-9, 2e-3));
+        /* the row on no body: eps x = r, within its bounds */
+        i = plain.p.nRows - 1;
+        assert_near((double)xh[i], fmin(fmax((double)(halves.rhs[i] / halves.eps[i]), (double)halves.lo[i]),
+                                        (double)halves.hi[i]), ME_TOL(1e-9, 1e-4) * (1.0 + fabs((double)xh[i])));
+        free(xp);
+        free(xh);
+        kt_free(&plain);
+        kt_free(&halves);
+    }
+    print_message("direct path, 12 trees with %d rows split over both halves of one body and a row on no body: "
+                  "worst complementarity %.2e, largest difference from the plain rows %.2e (relative)\n", split,
+                  worst, worstDiff);
+}
+
 /* Auto between the dense limit and four times it: a partition whose rows all share one pair of
  * bodies (every row coupled to every other) would cost more than a dense factor of the limit, so it
  * goes to the iterative path; the 240-row column of 20 boxes (each interface coupled only to its
@@ -426,6 +490,7 @@ int main(void)
         cmocka_unit_test(random_box_lcps_match_brute_force),
         cmocka_unit_test(complementarity_checked_independently),
         cmocka_unit_test(sparse_trees_complementary),
+        cmocka_unit_test(rows_on_one_body_twice_or_on_none),
         cmocka_unit_test(auto_path_follows_structure),
         cmocka_unit_test(warm_start_from_solution_needs_no_pivots),
         cmocka_unit_test(bad_warm_start_same_answer),

@@ -4,10 +4,12 @@
  * build, an array elsewhere). The solver's "same trajectory" claims for these kernels depend on it. */
 #include "karma_test.h"
 
+#include <float.h>
 #include <string.h>
 
 #include "kea_test_problems.h"
 #include "mdt/kea/kea_block_kernels.h"
+#include "mdt/kea/kea_contact_packs.h"
 
 /* Random values of mixed sign and magnitude (including exact zeros), as solver data has. */
 static MeReal random_value(KtRng *r)
@@ -223,8 +225,7 @@ static void finite_lanes_are_the_scalar_test(void **state)
 /* The iterative path's contact kernels (kea_iterative.h, kea_block_kernels.h), which load a
  * contact's bodies, impulses and inverse once for its three rows, give the bits of the row kernels
  * they stand for: the gather KeaRowVel4 (KeaRowVel4World on the world) per row, the scatter three
- * KeaRowApply4 in row order, the inverse's padded columns KeaBlockSymmetricApply for m = 3; and
- * KeaLanesStore3 writes three lanes and leaves the fourth place alone. */
+ * KeaRowApply4 in row order. */
 static void contact_kernels_are_the_row_kernels(void **state)
 {
     KtRng rng = {4242};
@@ -233,7 +234,7 @@ static void contact_kernels_are_the_row_kernels(void **state)
     for (trial = 0; trial < 500; ++trial) {
         KeaJacobianRow J[3];
         KeaVel4 v0, v1, a0, a1, b0, b1;
-        MeReal inv[9], columns[12], in[3], out[3], got[4], gathered[3], d[3];
+        MeReal gathered[3], d[3];
         memset(J, 0, sizeof J);
         memset(&v0, 0, sizeof v0);
         memset(&v1, 0, sizeof v1);
@@ -249,7 +250,6 @@ static void contact_kernels_are_the_row_kernels(void **state)
             v0.ang[k] = random_value(&rng);
             v1.lin[k] = random_value(&rng);
             v1.ang[k] = random_value(&rng);
-            in[k] = random_value(&rng);
             d[k] = random_value(&rng);
         }
         KeaContactGather(J, &v0, &v1, gathered);
@@ -267,20 +267,195 @@ static void contact_kernels_are_the_row_kernels(void **state)
         assert_memory_equal(&a0, &b0, sizeof a0);
         assert_memory_equal(&a1, &b1, sizeof a1);
 
-        for (r = 0; r < 3; ++r) /* a symmetric 3 x 3 and its padded columns */
-            for (k = 0; k <= r; ++k)
-                inv[3 * r + k] = inv[3 * k + r] = random_value(&rng);
-        for (k = 0; k < 3; ++k) {
-            for (r = 0; r < 3; ++r)
-                columns[4 * k + r] = inv[3 * k + r];
-            columns[4 * k + 3] = ME_R(0.0);
+    }
+}
+
+/* KeaLanesTranspose4 moves entry (i, j) of the four rows to (j, i), every bit (NaN and -0 too). */
+static void transpose_moves_every_entry(void **state)
+{
+    KtRng rng = {777};
+    MeReal m[4][4], t[4][4];
+    KeaLanes a, b, c, d;
+    int i, j, trial;
+    (void)state;
+    for (trial = 0; trial < 50; ++trial) {
+        for (i = 0; i < 4; ++i)
+            for (j = 0; j < 4; ++j)
+                m[i][j] = random_value(&rng);
+        m[trial % 4][(trial / 4) % 4] = trial % 2 ? (MeReal)NAN : -ME_R(0.0);
+        a = KeaLanesLoad(m[0]);
+        b = KeaLanesLoad(m[1]);
+        c = KeaLanesLoad(m[2]);
+        d = KeaLanesLoad(m[3]);
+        KeaLanesTranspose4(&a, &b, &c, &d);
+        KeaLanesStore(t[0], a);
+        KeaLanesStore(t[1], b);
+        KeaLanesStore(t[2], c);
+        KeaLanesStore(t[3], d);
+        for (i = 0; i < 4; ++i)
+            for (j = 0; j < 4; ++j)
+                assert_memory_equal(&t[i][j], &m[j][i], sizeof(MeReal));
+    }
+}
+
+/* A pack (kea_contact_packs.h) against the row kernels it stands for, on NB bodies and the world
+ * (body NB, all zero): lanes 0 and 1 share their body 0 (the scatter's write conflict), lane 2 is
+ * on the world, and with `lanes` < 4 the last lanes hold no contact (zeros on the world, mask 0),
+ * as in a solve's last pack. Or (`pair`) four contacts on one body pair, bodies 0 and 1 or body 0
+ * and the world. */
+enum { PACK_NB = 3 };
+#define UNIT_ROUND ((MeReal)(sizeof(MeReal) == sizeof(float) ? FLT_EPSILON : DBL_EPSILON))
+
+static void make_pack(KtRng *rng, int lanes, int pair, KeaContactPack *pack, KeaJacobianRow J[4][3],
+                      KeaJacobianRow B[4][3], MeReal inv[4][9])
+{
+    int l, r, k;
+    memset(pack, 0, sizeof *pack);
+    memset(J, 0, sizeof(KeaJacobianRow) * 12);
+    memset(B, 0, sizeof(KeaJacobianRow) * 12);
+    pack->pair = pair != 0;
+    if (pair)
+        lanes = 4;
+    pack->lanes = lanes;
+    pack->allFull = lanes == 4;
+    for (l = 0; l < 4; ++l) {
+        const int used = l < lanes, world = pair ? pair == 2 : l == 2;
+        pack->body[0][l] = pair ? 0 : (!used ? PACK_NB : (l < 2 ? 0 : l % PACK_NB));
+        pack->body[1][l] = !used || world ? PACK_NB : (pair || l == 0 ? 1 : 2);
+        pack->full[l] = used ? ME_R(1.0) : ME_R(0.0);
+        for (r = 0; r < 3; ++r) {
+            for (k = 0; k < 3; ++k) {
+                MeReal *half[8] = {J[l][r].lin0, J[l][r].ang0, J[l][r].lin1, J[l][r].ang1,
+                                   B[l][r].lin0, B[l][r].ang0, B[l][r].lin1, B[l][r].ang1};
+                int h;
+                for (h = 0; h < 8; ++h) /* the world's half and an empty lane: exact zeros */
+                    half[h][k] = !used || (world && (h % 4) >= 2) ? ME_R(0.0) : random_value(rng);
+                for (h = 0; h < 4; ++h) {
+                    pack->J[r][3 * h + k][l] = half[h][k];
+                    pack->B[r][3 * h + k][l] = half[4 + h][k];
+                }
+            }
+            for (k = 0; k <= r; ++k) /* a symmetric 3 x 3 */
+                inv[l][3 * r + k] = inv[l][3 * k + r] = used ? random_value(rng) : ME_R(0.0);
+            pack->mask[r][l] = used ? ME_R(1.0) : ME_R(0.0);
+            pack->invDiag[r][l] = used ? (MeReal)kt_range(rng, 0.01, 10.0) : ME_R(0.0);
         }
-        KeaBlockSymmetricApply(3, inv, in, out);
-        got[3] = ME_R(-7.0);
-        KeaLanesStore3(got, KeaContactInverseApply(columns, in[0], in[1], in[2]));
         for (r = 0; r < 3; ++r)
-            assert_true(same_bits(got[r], out[r]));
-        assert_true(same_bits(got[3], ME_R(-7.0)));
+            for (k = 0; k < 3; ++k)
+                pack->inv[3 * r + k][l] = inv[l][3 * k + r];
+    }
+}
+
+static void random_bodies(KtRng *rng, KeaVel4 *v)
+{
+    int b, k;
+    memset(v, 0, sizeof(KeaVel4) * (PACK_NB + 1));
+    for (b = 0; b < PACK_NB; ++b)
+        for (k = 0; k < 3; ++k) {
+            v[b].lin[k] = random_value(rng);
+            v[b].ang[k] = random_value(rng);
+        }
+}
+
+/* The gather and the preconditioner give each used lane the bits of KeaRowVel4 and of
+ * KeaBlockSymmetricApply (m = 3), or of res_r / d_r for a lane not preconditioned by its inverse (up
+ * to the sign of a zero); a masked row's gather and an empty lane's give 0. */
+static void pack_gather_and_inverse_are_the_row_kernels(void **state)
+{
+    KtRng rng = {9191};
+    int trial, l, r;
+    (void)state;
+    for (trial = 0; trial < 400; ++trial) {
+        const int lanes = 1 + trial % 4;
+        KeaContactPack pack;
+        KeaJacobianRow J[4][3], B[4][3];
+        MeReal inv[4][9], out[12], res[12], z[12];
+        KeaVel4 dv[PACK_NB + 1];
+        make_pack(&rng, lanes, trial % 7 < 2 ? 1 + trial % 7 : 0, &pack, J, B, inv);
+        random_bodies(&rng, dv);
+        if (trial % 5 == 4) { /* an SM step where lane 0's friction row 1 is at a bound */
+            pack.mask[1][0] = ME_R(0.0);
+            pack.full[0] = ME_R(0.0);
+            pack.allFull = 0;
+        }
+        for (r = 0; r < 12; ++r)
+            res[r] = (r % 4) < lanes ? random_value(&rng) : ME_R(0.0);
+        KeaPackGather(&pack, dv, out);
+        KeaPackPrecondition(&pack, res, z);
+        for (l = 0; l < 4; ++l) {
+            MeReal in[3], expect[3];
+            for (r = 0; r < 3; ++r)
+                in[r] = res[4 * r + l];
+            KeaBlockSymmetricApply(3, inv[l], in, expect);
+            for (r = 0; r < 3; ++r) {
+                const MeReal row = KeaRowVel4(&J[l][r], &dv[pack.body[0][l]], &dv[pack.body[1][l]]);
+                if (pack.mask[r][l] != ME_R(0.0))
+                    assert_true(same_bits(out[4 * r + l], row));
+                else
+                    assert_true(out[4 * r + l] == ME_R(0.0));
+                if (pack.full[l] != ME_R(0.0))
+                    assert_true(same_bits(z[4 * r + l], expect[r]) || (z[4 * r + l] == ME_R(0.0) && expect[r] == ME_R(0.0)));
+                else
+                    assert_true(same_bits(z[4 * r + l], in[r] * pack.invDiag[r][l]) ||
+                                (z[4 * r + l] == ME_R(0.0) && in[r] * pack.invDiag[r][l] == ME_R(0.0)));
+            }
+        }
+    }
+}
+
+/* The scatter adds what three KeaRowApply4 per lane, lane after lane, add, within rounding (each
+ * lane sums its three rows before adding them to a body): a body two lanes share gets both, the
+ * world and the pads stay exactly 0, an empty lane adds nothing; a pair pack gives the bits of the
+ * same pack scattered lane by lane. The bound, 10 eps (|v| + sum |B d|), covers both orders'
+ * roundings: at most 13 and 8 rounded operations of half an eps on a component. */
+static void pack_scatter_is_the_row_kernels_within_rounding(void **state)
+{
+    KtRng rng = {5150};
+    int trial, l, r, b, k;
+    (void)state;
+    for (trial = 0; trial < 400; ++trial) {
+        const int lanes = 1 + trial % 4;
+        KeaContactPack pack;
+        KeaJacobianRow J[4][3], B[4][3];
+        MeReal inv[4][9], d[12], scale[PACK_NB + 1][2][3];
+        KeaVel4 got[PACK_NB + 1], expect[PACK_NB + 1], byLane[PACK_NB + 1];
+        make_pack(&rng, lanes, trial % 7 < 2 ? 1 + trial % 7 : 0, &pack, J, B, inv);
+        random_bodies(&rng, got);
+        memcpy(expect, got, sizeof got);
+        for (r = 0; r < 12; ++r)
+            d[r] = (r % 4) < lanes ? random_value(&rng) : ME_R(0.0);
+        for (b = 0; b <= PACK_NB; ++b) /* |v| + sum |B d|: the size of the rounding */
+            for (k = 0; k < 3; ++k) {
+                scale[b][0][k] = MeFabs(got[b].lin[k]);
+                scale[b][1][k] = MeFabs(got[b].ang[k]);
+            }
+        for (l = 0; l < 4; ++l)
+            for (r = 0; r < 3; ++r) {
+                KeaRowApply4(&B[l][r], d[4 * r + l], &expect[pack.body[0][l]], &expect[pack.body[1][l]]);
+                for (k = 0; k < 3; ++k) {
+                    scale[pack.body[0][l]][0][k] += MeFabs(B[l][r].lin0[k] * d[4 * r + l]);
+                    scale[pack.body[0][l]][1][k] += MeFabs(B[l][r].ang0[k] * d[4 * r + l]);
+                    scale[pack.body[1][l]][0][k] += MeFabs(B[l][r].lin1[k] * d[4 * r + l]);
+                    scale[pack.body[1][l]][1][k] += MeFabs(B[l][r].ang1[k] * d[4 * r + l]);
+                }
+            }
+        memcpy(byLane, got, sizeof got);
+        KeaPackScatter(&pack, d, got);
+        if (pack.pair) { /* the same pack scattered lane by lane */
+            KeaContactPack lanePack = pack;
+            lanePack.pair = 0;
+            KeaPackScatter(&lanePack, d, byLane);
+            assert_memory_equal(byLane, got, sizeof got);
+        }
+        for (b = 0; b <= PACK_NB; ++b) {
+            for (k = 0; k < 3; ++k) {
+                assert_true(MeFabs(got[b].lin[k] - expect[b].lin[k]) <= ME_R(10.0) * UNIT_ROUND * scale[b][0][k]);
+                assert_true(MeFabs(got[b].ang[k] - expect[b].ang[k]) <= ME_R(10.0) * UNIT_ROUND * scale[b][1][k]);
+            }
+            assert_true(got[b].lin[3] == ME_R(0.0) && got[b].ang[3] == ME_R(0.0));
+        }
+        for (k = 0; k < 4; ++k)
+            assert_true(got[PACK_NB].lin[k] == ME_R(0.0) && got[PACK_NB].ang[k] == ME_R(0.0));
     }
 }
 
@@ -293,6 +468,9 @@ int main(void)
         cmocka_unit_test(inverse_mass_rows_match_the_scalar_ones),
         cmocka_unit_test(finite_lanes_are_the_scalar_test),
         cmocka_unit_test(contact_kernels_are_the_row_kernels),
+        cmocka_unit_test(transpose_moves_every_entry),
+        cmocka_unit_test(pack_gather_and_inverse_are_the_row_kernels),
+        cmocka_unit_test(pack_scatter_is_the_row_kernels_within_rounding),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -7,6 +7,7 @@
  * segments against the box primitive, and pair tests: analytic cases (face, edge, vertex, parallel
  * faces) and a convex box against the box-box test on random poses. */
 #include "karma_test.h"
+#include "karma_mcd_fixture.h"
 
 #include <math.h>
 #include <string.h>
@@ -26,15 +27,7 @@ static McdFrameworkID fw;
 static int setup(void **state)
 {
     (void)state;
-    fw = McdInit(0, 64, 0, 1);
-    return fw ? 0 : -1;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    McdTerm(fw);
-    return 0;
+    return karma_mcd_open(&fw, 64, 1);
 }
 
 static McdConvexMeshID hullOf(MeVector3 *pts, int n, MeReal fat)
@@ -1068,5 +1061,5 @@ int main(void)
         cmocka_unit_test(convex_box_against_box_box),
         cmocka_unit_test(pair_tests_per_second),
     };
-    return cmocka_run_group_tests(tests, setup, teardown);
+    return cmocka_run_group_tests(tests, setup, karma_mcd_close);
 }

@@ -3,6 +3,7 @@
  * AABBs at random orientations (tight, containing, valid by an independent distance function),
  * bounding spheres, reference counting and bad input. */
 #include "karma_test.h"
+#include "karma_mcd_fixture.h"
 
 #include <string.h>
 
@@ -15,16 +16,8 @@ static McdFrameworkID fw;
 static int setup(void **state)
 {
     (void)state;
-    fw = McdInit(0, 64, 0, 1);
     MeRealRandomSeed(1234);
-    return fw ? 0 : -1;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    McdTerm(fw);
-    return 0;
+    return karma_mcd_open(&fw, 64, 1);
 }
 
 /* ---- independent mass properties of solids of revolution about z ------------------------------ */
@@ -451,5 +444,5 @@ int main(void)
         cmocka_unit_test(accessors_and_bad_input),
         cmocka_unit_test(pools_full),
     };
-    return cmocka_run_group_tests(tests, setup, teardown);
+    return cmocka_run_group_tests(tests, setup, karma_mcd_close);
 }

@@ -3,6 +3,7 @@
  * distance function: the hit lies on the surface, its normal is an outward surface normal there,
  * and dense sampling finds no earlier point inside; misses have no point inside. */
 #include "karma_test.h"
+#include "karma_mcd_fixture.h"
 
 #include <string.h>
 
@@ -15,16 +16,8 @@ static McdFrameworkID fw;
 static int setup(void **state)
 {
     (void)state;
-    fw = McdInit(0, 32, 0, 1);
     MeRealRandomSeed(99);
-    return fw ? 0 : -1;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    McdTerm(fw);
-    return 0;
+    return karma_mcd_open(&fw, 32, 1);
 }
 
 static McdModelID modelAt(McdGeometryID g, MeMatrix4 tm)
@@ -237,5 +230,5 @@ int main(void)
         cmocka_unit_test(random_segments),
         cmocka_unit_test(bad_input),
     };
-    return cmocka_run_group_tests(tests, setup, teardown);
+    return cmocka_run_group_tests(tests, setup, karma_mcd_close);
 }

@@ -2,6 +2,7 @@
  * compounding, AABBs padded by the contact tolerance, bounding spheres, McdNearby, settings and their
  * ranges, reset, and refusal to destroy a model that is in a space. */
 #include "karma_test.h"
+#include "karma_mcd_fixture.h"
 
 #include <string.h>
 
@@ -16,15 +17,7 @@ static McdFrameworkID fw;
 static int setup(void **state)
 {
     (void)state;
-    fw = McdInit(0, 16, 0, 2);
-    return fw ? 0 : -1;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    McdTerm(fw);
-    return 0;
+    return karma_mcd_open(&fw, 16, 2);
 }
 
 static void defaults_and_settings(void **state)
@@ -219,5 +212,5 @@ int main(void)
         cmocka_unit_test(nearby_follows_padded_aabbs),
         cmocka_unit_test(destroy_refused_in_a_space),
     };
-    return cmocka_run_group_tests(tests, setup, teardown);
+    return cmocka_run_group_tests(tests, setup, karma_mcd_close);
 }

@@ -7,6 +7,7 @@
  * outside, outward normals agreeing with the winding, every input point inside), and bad arrays are
  * refused with a code and left to the caller. */
 #include "karma_test.h"
+#include "karma_mcd_fixture.h"
 
 #include <math.h>
 #include <string.h>
@@ -20,15 +21,7 @@ static McdFrameworkID fw;
 static int setup(void **state)
 {
     (void)state;
-    fw = McdInit(0, 64, 0, 1);
-    return fw ? 0 : -1;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    McdTerm(fw);
-    return 0;
+    return karma_mcd_open(&fw, 64, 1);
 }
 
 static double dot(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -658,5 +651,5 @@ int main(void)
         cmocka_unit_test(computing_and_accessors_refuse_bad_input),
         cmocka_unit_test(triangle_hull),
     };
-    return cmocka_run_group_tests(tests, setup, teardown);
+    return cmocka_run_group_tests(tests, setup, karma_mcd_close);
 }

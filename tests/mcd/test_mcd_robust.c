@@ -4,6 +4,7 @@
  * findings: a model destroyed while touching another, boxes of identical orientation in float, a
  * cylinder cap parallel to a plane in double. */
 #include "karma_test.h"
+#include "karma_mcd_fixture.h"
 
 #include <float.h>
 #include <math.h>
@@ -23,17 +24,9 @@ static McdFrameworkID fw;
 static int setup(void **state)
 {
     (void)state;
-    fw = McdInit(0, 32, 0, (MeReal)LENGTH_SCALE);
-    if (!fw)
+    if (karma_mcd_open(&fw, 32, (MeReal)LENGTH_SCALE) != 0)
         return -1;
     McdPrimitivesRegisterInteractions(fw);
-    return 0;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    McdTerm(fw);
     return 0;
 }
 
@@ -600,5 +593,5 @@ int main(void)
         cmocka_unit_test(destroying_a_touching_model_is_quiet),
         cmocka_unit_test(contact_points_must_be_finite),
     };
-    return cmocka_run_group_tests(tests, setup, teardown);
+    return cmocka_run_group_tests(tests, setup, karma_mcd_close);
 }

@@ -1,4 +1,4 @@
-/* MdtWorldSetPartitionSplitRows (issue 17 point 5, decision K40-split): bad input refused with its code
+/* MdtWorldSetPartitionSplitRows (issue 17 point 5, decision K42): bad input refused with its code
  * and nothing changed; a world whose partitions are split steps to the same bits without a task system
  * and on job systems that run the split solve's team in any order, under any worker index, or leave
  * part of it to the stepping thread; and the split changes the trajectory (the colours' sweep order),

@@ -1,10 +1,10 @@
 /* Settled heaps sleep, and wake without a jump (issue 17 point 6).
  *
  * 120 boxes of sizes jittered by 10 % dropped at random orientations onto the ground form one heap, a
- * single partition. The iterative solver leaves its bodies velocity noise; judged by the last step
- * alone (Karma 1.2's test, MdtWorldSetAutoDisableAveragingTime(w, 0)) some body of the heap is always
- * over the acceleration threshold and the heap never sleeps. Averaged over the default 1 s it sleeps
- * within a stated time, no body put to sleep while visibly moving. Tapped
+ * single partition. The iterative solver leaves its bodies velocity noise, which judged by the last
+ * step alone (Karma 1.2's test, MdtWorldSetAutoDisableAveragingTime(w, 0)) can keep a heap awake for
+ * good (this one in double precision; bench/RESULTS.md, "SM four contacts at a time"). Averaged over
+ * the default time it sleeps within a stated time, no body put to sleep while visibly moving. Tapped
  * once asleep, the heap wakes and carries on without a jump: at the wake step and after, no body's
  * velocity changes more than the tap and one step of gravity explain. */
 #include "karma_test.h"
@@ -15,7 +15,7 @@
 
 #define HEAP 120
 #define STEP (ME_R(1.0) / 60)
-#define SLEEP_LIMIT_S 25.0 /* the stated time: the heap is asleep 25 s after the drop (it takes 15-17 s) */
+#define SLEEP_LIMIT_S 25.0 /* the stated time: the heap is asleep 25 s after the drop */
 #define GRAVITY ME_R(9.81)
 #define EDGE_JITTER 0.1 /* box edges 0.9 to 1.1 m */
 
@@ -140,21 +140,6 @@ static void heap_sleeps_within_the_stated_time(void **state)
     MstUniverseDestroy(h.u);
 }
 
-/* Karma 1.2's test (the last step alone) on the same heap: the solver's noise keeps it awake. This is
- * what the window fixes; if it ever sleeps here too, the noise is gone and this test says so. */
-static void heap_judged_by_the_last_step_is_awake_at_the_stated_time(void **state)
-{
-    (void)state;
-    Heap h;
-    buildHeap(&h, 0);
-    MeReal sleepSpeed, sleepSpin;
-    const double t = stepUntilAsleep(&h, SLEEP_LIMIT_S, &sleepSpeed, &sleepSpin);
-    printf("the same heap judged by the last step alone: %s after %.0f s, %d of %d bodies awake\n",
-           t < 0 ? "awake" : "asleep", SLEEP_LIMIT_S, MdtWorldGetEnabledBodies(h.w), HEAP);
-    assert_true(t < 0);
-    MstUniverseDestroy(h.u);
-}
-
 /* The heap asleep, one box on top is tapped sideways (0.5 m/s). Everything it touches wakes (one
  * partition); at the wake step and the next ten (1/6 s) no body's velocity changes in one step by more
  * than the tap (0.5 m/s) plus one step of gravity (g h = 0.16 m/s), and at the wake step the woken
@@ -221,7 +206,6 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(heap_sleeps_within_the_stated_time),
-        cmocka_unit_test(heap_judged_by_the_last_step_is_awake_at_the_stated_time),
         cmocka_unit_test(tapped_heap_wakes_without_a_jump),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

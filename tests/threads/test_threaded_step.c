@@ -6,6 +6,7 @@
  * integration, unpack, the bridge's pair tests) share no data. */
 #include "karma_test.h"
 #include "karma_partitions.h"
+#include "karma_stacks.h"
 
 #include <string.h>
 #include <pthread.h>
@@ -150,6 +151,108 @@ static void two_universes_on_two_threads_sharing_a_pool(void **state)
         assert_true(runs[i].hash == serial);
 }
 
+/* ---- one large partition: its rows are written in pieces on all workers ---------------------- */
+
+#define BLOCK_SIDE 6 /* boxes per side of the block's layers */
+#define BLOCK_LAYERS 2
+#define BLOCK_STEPS 40
+/* The smallest range of the row-writing task (pack.c's PACK_MIN_RANGE) and of the integration's
+ * (integrate_bodies.c's, over the partitions), how a task system tells them from the other stages'
+ * tasks (docs/step.md's table): in a step, the first task of that smallest range writes the rows, the
+ * second integrates. */
+#define ROWS_MIN_RANGE 4
+
+/* A 6 x 6 x 2 block of 1 m boxes on the ground, each pressed 1 mm into its neighbours (karma_stacks.h):
+ * about 20 partitions, the largest of some 900 rows (over 70 contact groups, three pieces' worth). */
+static MstUniverseID buildBlock(KarmaStack *block)
+{
+    MstUniverseSizes sizes = MstUniverseDefaultSizes;
+    const int boxes = BLOCK_SIDE * BLOCK_SIDE * BLOCK_LAYERS;
+    sizes.dynamicBodiesMaxCount = boxes;
+    sizes.collisionModelsMaxCount = boxes + 1;
+    sizes.collisionPairsMaxCount = 10 * boxes;
+    sizes.dynamicConstraintsMaxCount = 10 * boxes;
+    karma_stack_init(block, &sizes, ME_R(0.6), boxes);
+    McdGeometryID box = McdBoxCreate(MstUniverseGetFramework(block->u), 1, 1, 1);
+    for (int layer = 0; layer < BLOCK_LAYERS; layer++)
+        for (int i = 0; i < BLOCK_SIDE; i++)
+            for (int k = 0; k < BLOCK_SIDE; k++)
+                karma_stack_add(block, box, 1, ME_R(0.999) * (MeReal)i, ME_R(0.999) * (MeReal)k,
+                                ME_R(0.4995) + ME_R(0.999) * (MeReal)layer);
+    return block->u;
+}
+
+/* The pool's enqueue, noting the item counts of the step's row-writing and integration tasks. */
+typedef struct RowsWatch {
+    MeThreadPool *pool;
+    int seen;            /* tasks of ROWS_MIN_RANGE in this step */
+    int rowItems, partitionItems;
+    int piecesSteps;     /* steps whose rows task had more items than the integration (partitions) */
+} RowsWatch;
+
+static void *watchedEnqueue(MdtTaskFnPtr task, int itemCount, int minRange, void *taskData, void *user)
+{
+    RowsWatch *watch = user;
+    if (minRange == ROWS_MIN_RANGE && watch->seen++ == 0)
+        watch->rowItems = itemCount;
+    else if (minRange == ROWS_MIN_RANGE)
+        watch->partitionItems = itemCount;
+    return MeThreadPoolEnqueue(task, itemCount, minRange, taskData, watch->pool);
+}
+
+/* The hash of every step of the block on a pool of `threads` (1: serial); in *piecesSteps the steps
+ * whose rows were written in more items than there are partitions; the largest partition's rows in
+ * *largestRows. */
+static uint64_t runBlock(int threads, int *piecesSteps, int *largestRows)
+{
+    KarmaStack block;
+    MstUniverseID u = buildBlock(&block);
+    MdtWorldID w = MstUniverseGetWorld(u);
+    RowsWatch watch = {threads > 1 ? MeThreadPoolCreate(threads) : NULL, 0, 0, 0, 0};
+    if (threads > 1) {
+        assert_non_null(watch.pool);
+        MstUniverseSetTaskSystem(u, threads, watchedEnqueue, MeThreadPoolFinish, &watch);
+    }
+    uint64_t hash = KARMA_HASH_INIT;
+    *largestRows = 0;
+    for (int i = 0; i < BLOCK_STEPS; i++) {
+        watch.seen = watch.rowItems = watch.partitionItems = 0;
+        MstUniverseStep(u, ME_R(1.0) / 60);
+        if (watch.seen == 2 && watch.rowItems > watch.partitionItems)
+            watch.piecesSteps++;
+        hash = karma_hash_world(hash, w);
+        MdtSolverStats stats;
+        MdtWorldGetSolverStats(w, &stats);
+        if (stats.maxPartitionRows > *largestRows)
+            *largestRows = stats.maxPartitionRows;
+    }
+    karma_stack_free(&block);
+    MeThreadPoolDestroy(watch.pool);
+    *piecesSteps = watch.piecesSteps;
+    return hash;
+}
+
+/* The row-writing task hands out more items than the step has partitions: the large partition is
+ * cut into pieces (before pieces, one item per partition, so a pile's single partition was written
+ * on one thread); the states are the serial ones, every step. */
+static void a_large_partition_writes_its_rows_in_pieces(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    int piecesSteps, largestRows;
+    uint64_t serial = runBlock(1, &piecesSteps, &largestRows);
+    /* the solver's messages (a stiff block: a few partitions stop at the iteration cap), reported in
+     * partition order on the stepping thread: the same on any pool */
+    const unsigned long warnings = karma_warning_count();
+    assert_true(largestRows > 3 * 32 * 3); /* three pieces of 32 contact groups of 3 rows at least */
+    for (int threads = 2; threads <= 4; threads++) {
+        unsigned long before = karma_warning_count();
+        assert_true(runBlock(threads, &piecesSteps, &largestRows) == serial);
+        assert_int_equal(piecesSteps, BLOCK_STEPS);
+        assert_int_equal(karma_warning_count() - before, warnings);
+    }
+}
+
 static void bad_pools_are_refused(void **state)
 {
     (void)state;
@@ -180,6 +283,7 @@ int main(void)
         cmocka_unit_test(a_threaded_step_allocates_what_the_serial_step_does),
         cmocka_unit_test(two_universes_on_two_threads_each_with_a_pool),
         cmocka_unit_test(two_universes_on_two_threads_sharing_a_pool),
+        cmocka_unit_test(a_large_partition_writes_its_rows_in_pieces),
         cmocka_unit_test(bad_pools_are_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -81,6 +81,24 @@ static int litPixels(void)
     return n;
 }
 
+/* The picture's pixel (RGBA) where the world point p projects. */
+static const unsigned char *pixelAt(RRender *rc, const double p[3])
+{
+    int x, y;
+    pixelOf(rc, p, &x, &y);
+    return rgba + 4 * (y * W + x);
+}
+
+/* A test's end: with everything it drew taken away the next frame is black, nothing was reported on
+ * the way, and the context goes. */
+static void assertBlankAndQuietThenDestroy(RRender *rc)
+{
+    draw(rc);
+    assert_int_equal(litPixels(), 0);
+    assert_int_equal(karma_warning_count(), 0);
+    RRenderContextDestroy(rc);
+}
+
 static const float red[4] = {1, 0, 0, 1}, green[4] = {0, 1, 0, 1}, blue[4] = {0, 0, 1, 1};
 
 static void test_native_lines_on_their_projected_pixels(void **state)
@@ -140,10 +158,7 @@ static void test_native_lines_on_their_projected_pixels(void **state)
     /* Deleted and destroyed: nothing left. */
     RNLineDelete(rc, r);
     RNLineDestroy(g);
-    draw(rc);
-    assert_int_equal(litPixels(), 0);
-    assert_int_equal(karma_warning_count(), 0);
-    RRenderContextDestroy(rc);
+    assertBlankAndQuietThenDestroy(rc);
 }
 
 /* RLineAdd's lines stay until RLineRemoveAll, as 1.2's demos use them for MeDebugDrawAPI.line. */
@@ -251,14 +266,11 @@ static void test_particles_at_their_positions(void **state)
     draw(rc);
     for (int i = 0; i < 3; i++) {
         const double p[3] = {positions[i][0], positions[i][1], positions[i][2]};
-        int x, y;
-        pixelOf(rc, p, &x, &y);
-        const unsigned char *px = rgba + 4 * (y * W + x);
+        const unsigned char *px = pixelAt(rc, p);
         assert_true(px[0] > 240 && px[1] < 15 && px[2] > 240); /* unlit: the colour itself */
         /* 0.8 m across: 0.6 m away (beyond the disc's radius of 0.4) is black. */
         const double off[3] = {p[0] + 0.6, p[1], p[2]};
-        pixelOf(rc, off, &x, &y);
-        assert_int_equal(rgba[4 * (y * W + x)], 0);
+        assert_int_equal(pixelAt(rc, off)[0], 0);
     }
     /* A disc: its area on the picture is π r² in pixels (the projection's scale at depth 15). */
     double pxPerMetre = rc->m_ProjMatrix[1][1] * 0.5 * H / 15.0;
@@ -268,16 +280,12 @@ static void test_particles_at_their_positions(void **state)
     positions[0][0] = -1, positions[0][1] = 3;
     draw(rc);
     const double moved[3] = {-1, 3, 1}, was[3] = {-3, 1, 1};
-    int x, y;
-    pixelOf(rc, moved, &x, &y);
-    assert_true(rgba[4 * (y * W + x)] > 240);
-    pixelOf(rc, was, &x, &y);
-    assert_int_equal(rgba[4 * (y * W + x)], 0);
+    assert_true(pixelAt(rc, moved)[0] > 240);
+    assert_int_equal(pixelAt(rc, was)[0], 0);
     /* A particle at a non-finite position is skipped, the others drawn. */
     positions[1][0] = NAN;
     draw(rc);
-    pixelOf(rc, moved, &x, &y);
-    assert_true(rgba[4 * (y * W + x)] > 240);
+    assert_true(pixelAt(rc, moved)[0] > 240);
     assert_near(litPixels(), 2 * disc, 0.2 * 2 * disc);
     /* Out of the list: not drawn. */
     RParticleSystemRemoveFromList(rc, ps);
@@ -301,10 +309,7 @@ static void test_particles_at_their_positions(void **state)
         assert_int_equal(litPixels(), on ? shown : 0);
     }
     RParticleSystemDestroy(ps);
-    draw(rc);
-    assert_int_equal(litPixels(), 0);
-    assert_int_equal(karma_warning_count(), 0);
-    RRenderContextDestroy(rc);
+    assertBlankAndQuietThenDestroy(rc);
 }
 
 /* A textured system: the texture's square (left half red, right half blue) times the colour. */
@@ -321,13 +326,12 @@ static void test_textured_particles(void **state)
     assert_true(ps->m_nTextureID >= 0);
     draw(rc);
     const double left[3] = {-0.6, 0, 1}, right[3] = {0.6, 0, 1}, corner[3] = {-0.9, 0.9, 1};
-    int x, y;
-    pixelOf(rc, left, &x, &y);
-    assert_true(rgba[4 * (y * W + x)] > 200 && rgba[4 * (y * W + x) + 2] < 40);
-    pixelOf(rc, right, &x, &y);
-    assert_true(rgba[4 * (y * W + x) + 2] > 200 && rgba[4 * (y * W + x)] < 40);
-    pixelOf(rc, corner, &x, &y); /* a square, not a disc: the corner is the texture's (red and blue blended there) */
-    assert_true(rgba[4 * (y * W + x)] + rgba[4 * (y * W + x) + 2] > 200 && rgba[4 * (y * W + x) + 1] < 40);
+    const unsigned char *px = pixelAt(rc, left);
+    assert_true(px[0] > 200 && px[2] < 40);
+    px = pixelAt(rc, right);
+    assert_true(px[2] > 200 && px[0] < 40);
+    px = pixelAt(rc, corner); /* a square, not a disc: the corner is the texture's (red and blue blended there) */
+    assert_true(px[0] + px[2] > 200 && px[1] < 40);
     RRenderContextDestroy(rc); /* frees the listed system */
 }
 

@@ -1,48 +1,142 @@
-/* thread_pool.c -- MeThreadPool: N - 1 POSIX threads that sleep on a condition variable and, with the
- * calling thread, share each task's ranges through an atomic cursor (MeThreadPool.h).
+/* thread_pool.c -- MeThreadPool: N - 1 POSIX threads that, with the calling thread, share each task's
+ * ranges through an atomic cursor (MeThreadPool.h).
+ *
+ * A step hands out a dozen to forty small tasks (a stage, a chunk of the bridge's pairs), often only
+ * tens of microseconds apart: a thread woken through a condition variable for each of them arrives
+ * when the caller has done most of the work alone, and the futex calls cost as much as the items. So
+ * the hand-over is lock-free while threads are awake:
+ * - a task is published by one atomic store of its generation number (the `ticket`); a helper that
+ *   sees a new generation joins it (one compare-and-swap on the ticket, which counts who joined),
+ *   takes ranges from the cursor until none are left, and counts itself out (`left`);
+ * - between tasks a helper spins on the ticket, with the CPU's pause hint, for SPIN_NS, then parks
+ *   on a condition variable; the publisher takes the lock to wake it only when someone is parked;
+ * - the caller takes ranges too (as worker 0), then closes the generation (no helper joins it any
+ *   more: one that was still asleep never holds the task up) and waits, spinning for SPIN_NS and
+ *   then parked, for the helpers that joined to count themselves out. Only then is the next task
+ *   written, so no helper still reads the one before.
+ * A helper that sees the generation closed, or already replaced, does not run it. Which thread runs
+ * which range varies from run to run; the world's tasks are written so that this does not change
+ * their results (MdtTaskSystem.h).
  *
  * One task at a time. A task enqueued while another runs (two worlds stepped at once on two threads
- * that share the pool) runs whole on its own caller as worker 0: worker indices are per task, so
- * that is within the contract, and it gives the same results, only without help.
- * MeThreadPoolEnqueue publishes the task under the lock with a new generation
- * number and wakes every thread; each thread takes ranges from the cursor until none are left, then
- * says it is done with that generation. The caller takes ranges too (as worker 0) and returns only
- * once every helper has finished the generation, so no helper still reads the task when the next
- * one is published. Which thread runs which range varies from run to run; the world's tasks are
- * written so that this does not change their results (MdtTaskSystem.h).
+ * that share the pool, or a task that enqueues one) runs whole on its own caller as worker 0: worker
+ * indices are per task, so that is within the contract, and it gives the same results, only without
+ * help.
  *
  * POSIX threads rather than C11 <threads.h>: ThreadSanitizer (the tsan configuration) understands
  * them, and every platform Karma's CI builds on has them (decision K33). */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime */
 #include <stdatomic.h>
 #include <stdlib.h>
+#include <time.h>
 
 #include <pthread.h>
+#include <sched.h>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#define CPU_RELAX() _mm_pause()
+#elif defined(__aarch64__) || defined(__arm__)
+#define CPU_RELAX() __asm__ __volatile__("yield")
+#else
+#define CPU_RELAX() ((void)0)
+#endif
 
 #include <karma/MeMessage.h>
 
 #include "MeThreadPool.h"
 
+/* How long a thread spins for the next task (helpers) or for the helpers' last ranges (the caller)
+ * before it parks: longer than the step's usual gap between two stages, short next to a frame. For
+ * the first PAUSE_NS it spins on the pause hint alone; after that it yields the core between looks,
+ * so that on a machine with more runnable threads than cores the thread it waits for can run. */
+#define SPIN_NS 100000L
+#define PAUSE_NS 20000L
+/* Ranges a task is cut into per thread, at most (no range is below the task's smallest range). */
+#define RANGES_PER_THREAD 16
+/* Pause hints between two looks at the clock while spinning. */
+#define SPINS_PER_CLOCK 64
+
+/* The ticket: generation << 32 | CLOSED | helpers that joined the generation. */
+#define TICKET_CLOSED 0x80000000ull
+#define TICKET_JOINED 0x7fffffffull
+#define TICKET_GENERATION(t) ((t) >> 32)
+
+/* Apart from what the threads write often: the ticket, the cursor and the count of helpers out. */
+#define CACHE_LINE 64
+
 struct MeThreadPool {
-    int threadCount;
-    pthread_t *threads;        /* threadCount - 1 helpers */
-    pthread_mutex_t lock;
-    pthread_cond_t wake;       /* a new generation, or stop */
-    pthread_cond_t done;       /* a helper finished the generation */
-    unsigned long generation;  /* of the task published last; under lock */
-    int finished;              /* helpers done with this generation; under lock */
-    int stop;                  /* under lock */
-    /* the task of the current generation: written under lock before it is published */
+    _Alignas(CACHE_LINE) atomic_ullong ticket;
+    _Alignas(CACHE_LINE) atomic_int cursor; /* next item of the current task to hand out */
+    _Alignas(CACHE_LINE) atomic_int left;   /* helpers that joined and have finished */
+    _Alignas(CACHE_LINE) atomic_int sleepers;     /* helpers parked on `wake` */
+    atomic_int callerParked;                      /* the caller is parked on `done` */
+    atomic_int stop;
+    atomic_flag busy;                             /* a task is running on the pool */
+    /* the current task: written by the caller before it publishes the generation, and only once every
+     * helper that joined the one before has counted itself out */
     MdtTaskFnPtr task;
     void *taskData;
     int itemCount, block;
-    atomic_int cursor;         /* next item to hand out */
-    atomic_flag busy;          /* a task is running on the pool */
+    int threadCount;
+    pthread_t *threads; /* threadCount - 1 helpers */
+    pthread_mutex_t lock;
+    pthread_cond_t wake; /* a new generation, or stop */
+    pthread_cond_t done; /* a helper counted itself out */
 };
 
 typedef struct Helper {
     MeThreadPool *pool;
     int worker;
 } Helper;
+
+static long long nowNs(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (long long)t.tv_sec * 1000000000LL + t.tv_nsec;
+}
+
+/* Spin until `ready(pool, arg)` holds or SPIN_NS have passed (pause hints, then yields); returns
+ * whether it holds. Kept out of line so that a profile (bench/stages.sh) can leave the waiting out. */
+#if defined(__clang__)
+__attribute__((noinline))
+#elif defined(__GNUC__)
+__attribute__((noinline, noclone))
+#endif
+static int spinUntil(MeThreadPool *pool, int (*ready)(MeThreadPool *, unsigned long long), unsigned long long arg)
+{
+    long long start = 0;
+    int yielding = 0;
+    for (;;) {
+        for (int i = 0; i < SPINS_PER_CLOCK; i++) {
+            if (ready(pool, arg))
+                return 1;
+            if (yielding)
+                sched_yield();
+            else
+                CPU_RELAX();
+        }
+        long long now = nowNs();
+        if (start == 0)
+            start = now;
+        else if (now - start > SPIN_NS)
+            return ready(pool, arg);
+        yielding = now - start > PAUSE_NS;
+    }
+}
+
+/* A generation other than `seen` is published, or the pool stops. */
+static int newGeneration(MeThreadPool *pool, unsigned long long seen)
+{
+    return TICKET_GENERATION(atomic_load(&pool->ticket)) != seen || atomic_load(&pool->stop);
+}
+
+/* Every one of the `joined` helpers has counted itself out. */
+static int helpersOut(MeThreadPool *pool, unsigned long long joined)
+{
+    return (unsigned long long)atomic_load(&pool->left) == joined;
+}
 
 /* Take ranges of the current task until none are left. */
 static void runRanges(MeThreadPool *pool, int worker)
@@ -56,26 +150,47 @@ static void runRanges(MeThreadPool *pool, int worker)
     }
 }
 
+/* Wait, spinning then parked, for a generation other than `seen` (or the stop). The publisher stores
+ * the ticket then looks at `sleepers`; a helper counts itself in `sleepers` then looks at the ticket,
+ * under the lock the publisher takes to wake it: one of the two sees the other's write. */
+static void waitForGeneration(MeThreadPool *pool, unsigned long long seen)
+{
+    if (spinUntil(pool, newGeneration, seen))
+        return;
+    pthread_mutex_lock(&pool->lock);
+    atomic_fetch_add(&pool->sleepers, 1);
+    while (!newGeneration(pool, seen))
+        pthread_cond_wait(&pool->wake, &pool->lock);
+    atomic_fetch_sub(&pool->sleepers, 1);
+    pthread_mutex_unlock(&pool->lock);
+}
+
 static void *helperMain(void *arg)
 {
     Helper h = *(Helper *)arg;
     free(arg);
     MeThreadPool *pool = h.pool;
-    unsigned long seen = 0;
-    pthread_mutex_lock(&pool->lock);
+    unsigned long long seen = 0;
     for (;;) {
-        while (pool->generation == seen && !pool->stop)
-            pthread_cond_wait(&pool->wake, &pool->lock);
-        if (pool->stop)
+        waitForGeneration(pool, seen);
+        if (atomic_load(&pool->stop))
             break;
-        seen = pool->generation;
-        pthread_mutex_unlock(&pool->lock);
+        /* Join the generation unless it is closed; a newer one is joined at the next turn. */
+        unsigned long long t = atomic_load(&pool->ticket);
+        seen = TICKET_GENERATION(t);
+        int joined = 0;
+        while (!joined && TICKET_GENERATION(t) == seen && !(t & TICKET_CLOSED))
+            joined = atomic_compare_exchange_weak(&pool->ticket, &t, t + 1);
+        if (!joined)
+            continue;
         runRanges(pool, h.worker);
-        pthread_mutex_lock(&pool->lock);
-        pool->finished++;
-        pthread_cond_signal(&pool->done);
+        atomic_fetch_add(&pool->left, 1);
+        if (atomic_load(&pool->callerParked)) {
+            pthread_mutex_lock(&pool->lock);
+            pthread_cond_signal(&pool->done);
+            pthread_mutex_unlock(&pool->lock);
+        }
     }
-    pthread_mutex_unlock(&pool->lock);
     return NULL;
 }
 
@@ -83,11 +198,20 @@ static void *helperMain(void *arg)
 static void stopHelpers(MeThreadPool *pool, int started)
 {
     pthread_mutex_lock(&pool->lock);
-    pool->stop = 1;
+    atomic_store(&pool->stop, 1);
     pthread_cond_broadcast(&pool->wake);
     pthread_mutex_unlock(&pool->lock);
     for (int i = 0; i < started; i++)
         pthread_join(pool->threads[i], NULL);
+}
+
+static void destroyPrimitives(MeThreadPool *pool)
+{
+    pthread_cond_destroy(&pool->done);
+    pthread_cond_destroy(&pool->wake);
+    pthread_mutex_destroy(&pool->lock);
+    free(pool->threads);
+    free(pool);
 }
 
 MeThreadPool *MeThreadPoolCreate(int threadCount)
@@ -98,15 +222,27 @@ MeThreadPool *MeThreadPoolCreate(int threadCount)
                  MDT_MAX_WORKERS);
         return NULL;
     }
-    MeThreadPool *pool = calloc(1, sizeof *pool);
-    if (!pool || !(pool->threads = calloc((size_t)threadCount, sizeof *pool->threads))) {
+    /* aligned_alloc: the struct's cache-line alignment is above malloc's; its size is a multiple of it */
+    MeThreadPool *pool = aligned_alloc(CACHE_LINE, sizeof *pool);
+    pthread_t *threads = calloc((size_t)threadCount, sizeof *threads);
+    if (!pool || !threads) {
         free(pool);
+        free(threads);
         MeReport(ME_ERR_OUT_OF_MEMORY, __func__, __FILE__, __LINE__, "no memory for a pool of %d threads",
                  threadCount);
         return NULL;
     }
+    pool->threads = threads;
     pool->threadCount = threadCount;
+    pool->task = NULL;
+    pool->taskData = NULL;
+    pool->itemCount = pool->block = 0;
+    atomic_init(&pool->ticket, 0);
     atomic_init(&pool->cursor, 0);
+    atomic_init(&pool->left, 0);
+    atomic_init(&pool->sleepers, 0);
+    atomic_init(&pool->callerParked, 0);
+    atomic_init(&pool->stop, 0);
     atomic_flag_clear(&pool->busy);
     pthread_mutex_init(&pool->lock, NULL);
     pthread_cond_init(&pool->wake, NULL);
@@ -125,11 +261,7 @@ MeThreadPool *MeThreadPoolCreate(int threadCount)
             stopHelpers(pool, i);
             MeReport(ME_ERR_THREAD_START, __func__, __FILE__, __LINE__,
                      "thread %d of %d could not be started (error %d); no pool made", i + 2, threadCount, err);
-            pthread_cond_destroy(&pool->done);
-            pthread_cond_destroy(&pool->wake);
-            pthread_mutex_destroy(&pool->lock);
-            free(pool->threads);
-            free(pool);
+            destroyPrimitives(pool);
             return NULL;
         }
     }
@@ -141,14 +273,24 @@ void MeThreadPoolDestroy(MeThreadPool *pool)
     if (!pool)
         return;
     stopHelpers(pool, pool->threadCount - 1);
-    pthread_cond_destroy(&pool->done);
-    pthread_cond_destroy(&pool->wake);
-    pthread_mutex_destroy(&pool->lock);
-    free(pool->threads);
-    free(pool);
+    destroyPrimitives(pool);
 }
 
 int MeThreadPoolGetThreadCount(const MeThreadPool *pool) { return pool ? pool->threadCount : 0; }
+
+/* Wait, spinning then parked, until the `joined` helpers have counted themselves out (the same
+ * handshake as waitForGeneration's, on `callerParked` and `left`). */
+static void waitForHelpers(MeThreadPool *pool, unsigned long long joined)
+{
+    if (spinUntil(pool, helpersOut, joined))
+        return;
+    pthread_mutex_lock(&pool->lock);
+    atomic_store(&pool->callerParked, 1);
+    while (!helpersOut(pool, joined))
+        pthread_cond_wait(&pool->done, &pool->lock);
+    atomic_store(&pool->callerParked, 0);
+    pthread_mutex_unlock(&pool->lock);
+}
 
 void *MeThreadPoolEnqueue(MdtTaskFnPtr task, int itemCount, int minRange, void *taskData, void *user)
 {
@@ -161,30 +303,33 @@ void *MeThreadPoolEnqueue(MdtTaskFnPtr task, int itemCount, int minRange, void *
         task(0, itemCount, 0, taskData);
         return NULL;
     }
-    /* Four ranges per thread: small enough to even out partitions of different sizes, few enough
-     * that the cursor is not contended. */
-    int block = (itemCount + 4 * pool->threadCount - 1) / (4 * pool->threadCount);
-    pthread_mutex_lock(&pool->lock);
+    /* RANGES_PER_THREAD ranges per thread: a range costs one atomic add on the cursor, and the last
+     * one to finish leaves the others idle, so small ranges (down to minRange) even out items of
+     * different sizes (a step's partitions). */
+    int ranges = RANGES_PER_THREAD * pool->threadCount;
+    int block = (itemCount + ranges - 1) / ranges;
     pool->task = task;
     pool->taskData = taskData;
     pool->itemCount = itemCount;
     pool->block = block > minRange ? block : minRange;
     atomic_store_explicit(&pool->cursor, 0, memory_order_relaxed);
-    pool->finished = 0;
-    pool->generation++;
-    pthread_cond_broadcast(&pool->wake);
-    pthread_mutex_unlock(&pool->lock);
+    atomic_store_explicit(&pool->left, 0, memory_order_relaxed);
+    unsigned long long generation = TICKET_GENERATION(atomic_load(&pool->ticket)) + 1;
+    atomic_store(&pool->ticket, generation << 32); /* publishes the task */
+    if (atomic_load(&pool->sleepers) > 0) {
+        pthread_mutex_lock(&pool->lock);
+        pthread_cond_broadcast(&pool->wake);
+        pthread_mutex_unlock(&pool->lock);
+    }
 
     runRanges(pool, 0);
 
-    pthread_mutex_lock(&pool->lock);
-    while (pool->finished < pool->threadCount - 1)
-        pthread_cond_wait(&pool->done, &pool->lock);
-    pthread_mutex_unlock(&pool->lock);
+    /* No helper joins from now on: one that has not woken yet does not hold the task up. */
+    unsigned long long joined = atomic_fetch_or(&pool->ticket, TICKET_CLOSED) & TICKET_JOINED;
+    waitForHelpers(pool, joined);
     atomic_flag_clear(&pool->busy);
     return NULL;
 }
-
 void MeThreadPoolFinish(void *userTask, void *user)
 {
     (void)userTask;

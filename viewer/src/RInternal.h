@@ -12,6 +12,13 @@
 /** Report a coded message (docs/errors.md) from viewer function `fn`. */
 #define R_REPORT(code, fn, ...) MeReport((code), (fn), __FILE__, __LINE__, __VA_ARGS__)
 
+/** Whether rc and object are both given; when not, ME_ERR_NULL_ARGUMENT in fn's name ("NULL render
+ *  context or <what>"). */
+int RBothGiven(const RRender *rc, const void *object, const char *fn, const char *what);
+/** A zeroed block of `size` bytes (the caller frees it), or NULL after ME_ERR_OUT_OF_MEMORY in fn's
+ *  name ("no memory for <what>"). */
+void *RZeroedOrReport(size_t size, const char *fn, const char *what);
+
 /** Textures a context holds (Karma's limit). */
 #define R_MAX_TEXTURES 25
 

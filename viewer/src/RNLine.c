@@ -37,11 +37,9 @@ RNLine *MEAPI RNLineCreate(RRender *rc, AcmeReal origin[3], AcmeReal end[3], con
         R_REPORT(ME_ERR_NONFINITE_ARGUMENT, "RNLineCreate", "an end or the colour is not finite");
         return NULL;
     }
-    RNLine *line = calloc(1, sizeof *line);
-    if (!line) {
-        R_REPORT(ME_ERR_OUT_OF_MEMORY, "RNLineCreate", "no memory for a line");
+    RNLine *line = RZeroedOrReport(sizeof *line, "RNLineCreate", "a line");
+    if (!line)
         return NULL;
-    }
     line->rc = rc;
     memcpy(line->origin, origin, sizeof line->origin);
     memcpy(line->end, end, sizeof line->end);
@@ -84,10 +82,8 @@ void MEAPI RNLineSetColor(RNLine *line, const float color[4])
 /* Whether line may be listed in rc: both given, and the line rc's. */
 static int ownLine(RRender *rc, RNLine *line, const char *fn)
 {
-    if (!rc || !line) {
-        R_REPORT(ME_ERR_NULL_ARGUMENT, fn, "NULL render context or line");
+    if (!RBothGiven(rc, line, fn, "line"))
         return 0;
-    }
     if (line->rc != rc) {
         R_REPORT(ME_ERR_FOREIGN_HANDLE, fn, "the line belongs to another render context");
         return 0;

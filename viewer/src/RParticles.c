@@ -19,11 +19,9 @@ RParticleSystem *MEAPI RParticleSystemNew(int numParticles, MeVector3 *positions
         R_REPORT(ME_ERR_NULL_ARGUMENT, "RParticleSystemNew", "NULL positions or colour");
         return NULL;
     }
-    RParticleSystem *ps = calloc(1, sizeof *ps);
-    if (!ps) {
-        R_REPORT(ME_ERR_OUT_OF_MEMORY, "RParticleSystemNew", "no memory for a particle system");
+    RParticleSystem *ps = RZeroedOrReport(sizeof *ps, "RParticleSystemNew", "a particle system");
+    if (!ps)
         return NULL;
-    }
     /* As 1.2: the colour is the ambient one; diffuse, specular and emissive black, the alpha kept. */
     memcpy(ps->m_rgbAmbient, color, sizeof ps->m_rgbAmbient);
     ps->m_rgbDiffuse[3] = ps->m_rgbSpecular[3] = ps->m_rgbEmissive[3] = color[3];
@@ -66,10 +64,8 @@ static void unlink(RParticleSystem *ps)
 
 void MEAPI RParticleSystemAddToList(RRender *rc, RParticleSystem *ps)
 {
-    if (!rc || !ps) {
-        R_REPORT(ME_ERR_NULL_ARGUMENT, "RParticleSystemAddToList", "NULL render context or particle system");
+    if (!RBothGiven(rc, ps, "RParticleSystemAddToList", "particle system"))
         return;
-    }
     if (ps->m_pRender == rc)
         return; /* listed already */
     if (ps->m_pRender) {
@@ -86,10 +82,8 @@ void MEAPI RParticleSystemAddToList(RRender *rc, RParticleSystem *ps)
 
 void MEAPI RParticleSystemRemoveFromList(RRender *rc, RParticleSystem *ps)
 {
-    if (!rc || !ps) {
-        R_REPORT(ME_ERR_NULL_ARGUMENT, "RParticleSystemRemoveFromList", "NULL render context or particle system");
+    if (!RBothGiven(rc, ps, "RParticleSystemRemoveFromList", "particle system"))
         return;
-    }
     if (ps->m_pRender == rc)
         unlink(ps);
 }

@@ -1,17 +1,7 @@
 /* contact.c -- writing contacts and reducing a contact set to a few well-spread points (internal). */
 #include <math.h>
-#include <stdatomic.h>
 
 #include "nearfield.h"
-
-/* Process-wide (a thread-local count would make the library need the dynamic loader's TLS support);
- * the dispatcher reads it around each test, so the attribution to a framework is exact whenever one
- * thread tests pairs at a time, and the total always is. */
-static atomic_ulong fallbackCount;
-
-void McdNfCountFallback(void) { atomic_fetch_add(&fallbackCount, 1); }
-
-unsigned long McdNfFallbackCount(void) { return atomic_load(&fallbackCount); }
 
 void McdNfToWorld(MeVector3 out, MeMatrix4 tm, const MeVector3 local)
 {

@@ -118,14 +118,19 @@ typedef void (*McdNfCacheReleaseFn)(void *cache);
 /** The function that frees the cache the built-in test fn makes, or NULL when it makes none. */
 McdNfCacheReleaseFn McdNfCacheReleaseFor(McdNearfieldFn fn);
 
-/* ---- degenerate arithmetic (contact.c) ------------------------------------------------------ */
+/* ---- degenerate arithmetic (fallbacks.c) ---------------------------------------------------- */
 
 /** Count one fallback: a pair test whose arithmetic degenerated (a NaN or infinity in a search, no
- *  axis chosen) and that gave a defined answer instead (no contact, or the general path). The count
- *  is process-wide; the dispatcher (McdIntersectModels) adds what a test counted to its framework. */
+ *  axis chosen) and that gave a defined answer instead (no contact, or the general path). It goes to
+ *  the calling thread's tally, which the dispatcher (McdIntersectModels) takes for its framework
+ *  (fallbacks.c says how). */
 void McdNfCountFallback(void);
-/** Fallbacks counted so far (all threads). */
+/** Fallbacks counted so far (all threads, every caller: the tests' measure of a direct call). */
 unsigned long McdNfFallbackCount(void);
+/** The calling thread's fallbacks counted since it last took them, and its tally cleared: what its
+ *  own pair tests counted, whatever other threads did meanwhile (one load when no thread has any).
+ *  The dispatcher takes them before a test (and drops them: they are not its test's) and after. */
+unsigned long McdNfTakeFallbacks(void);
 /** Whether a contact's normal is of unit length (|n|² within 1e-3 of 1); false for a NaN or infinite
  *  component too. */
 static inline MeBool McdNfNormalIsUnit(const McdContact *c)

@@ -22,16 +22,6 @@ static inline void KeaBlockSymmetricApply(int m, const MeReal *M, const MeReal *
         out[r] = (M[r] * in[0] + M[3 + r] * in[1]) + M[6 + r] * in[2];
 }
 
-/* A declared contact's A_bb^-1 in, from its three padded columns (KeaIterativeWork.contactInv): lane
- * r is KeaBlockSymmetricApply's out[r] for m = 3, the same sums in the same order (pad lane 0
- * for finite in). */
-static inline KeaLanes KeaContactInverseApply(const MeReal *columns, MeReal in0, MeReal in1, MeReal in2)
-{
-    return KeaLanesAdd(KeaLanesAdd(KeaLanesMul(KeaLanesLoad(columns), KeaLanesSplat(in0)),
-                                   KeaLanesMul(KeaLanesLoad(columns + 4), KeaLanesSplat(in1))),
-                       KeaLanesMul(KeaLanesLoad(columns + 8), KeaLanesSplat(in2)));
-}
-
 /* out = J_b (v0, v1) for the block of m rows from s (all on the same two bodies): a block of more
  * than KEA_GATHER_ROW_BY_ROW rows from its transpose JT (12 x m), column by column, each out[r] its own running sum
  * over the 12 components in order; a smaller one row by row. */

@@ -3,10 +3,11 @@
  * friction rows), each block's matrix A_bb = J_b M^-1 J_b^T + diag(eps), its factor and inverse, and
  * which blocks are declared contacts (KeaContact; the sweep's contact step). */
 #include "kea_block_kernels.h"
+#include "kea_contact_packs.h"
 
 void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIterativeWork *w)
 {
-    const int cap = KeaBlockCap(n, maxBlockRows);
+    const int cap = KeaBlockCap(n, maxBlockRows), positions = KeaFreePositions(n);
     w->B = KEA_ALLOC(arena, KeaJacobianRow, n);
     w->invDiag = KEA_ALLOC(arena, MeReal, n);
     w->diag = KEA_ALLOC(arena, MeReal, n);
@@ -14,30 +15,31 @@ void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIte
     w->blockMatrix = KEA_ALLOC(arena, int, n);
     w->blockA = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)cap);
     w->blockInv = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)cap);
-    w->contactInv = KEA_ALLOC(arena, MeReal, (size_t)n * 4);
     w->blockFactored = KEA_ALLOC(arena, unsigned char, n);
     w->blockContact = KEA_ALLOC(arena, unsigned char, n);
     w->wasFree = KEA_ALLOC(arena, unsigned char, n);
     w->localW = KEA_ALLOC(arena, MeReal, cap);
     w->rowBlock = KEA_ALLOC(arena, int, n);
     w->pieces = KEA_ALLOC(arena, KeaFreePiece, n);
+    w->packs = KEA_ALLOC(arena, KeaContactPack, n / 12 + 1);
+    w->packed = KEA_ALLOC(arena, unsigned char, n);
     w->localR = KEA_ALLOC(arena, MeReal, cap);
     w->localLo = KEA_ALLOC(arena, MeReal, cap);
     w->localHi = KEA_ALLOC(arena, MeReal, cap);
     w->localX = KEA_ALLOC(arena, MeReal, cap);
     w->localLink = KEA_ALLOC(arena, int, cap);
     w->dense = KeaDenseWorkCreate(arena, cap);
-    w->freeRows = KEA_ALLOC(arena, int, n);
-    w->lo = KEA_ALLOC(arena, MeReal, n);
-    w->hi = KEA_ALLOC(arena, MeReal, n);
-    w->xFree = KEA_ALLOC(arena, MeReal, n);
-    w->grad = KEA_ALLOC(arena, MeReal, n);
-    w->epsFree = KEA_ALLOC(arena, MeReal, n);
-    w->step = KEA_ALLOC(arena, MeReal, n);
-    w->res = KEA_ALLOC(arena, MeReal, n);
-    w->z = KEA_ALLOC(arena, MeReal, n);
-    w->dir = KEA_ALLOC(arena, MeReal, n);
-    w->q = KEA_ALLOC(arena, MeReal, n);
+    w->freeRows = KEA_ALLOC(arena, int, positions);
+    w->lo = KEA_ALLOC(arena, MeReal, positions);
+    w->hi = KEA_ALLOC(arena, MeReal, positions);
+    w->xFree = KEA_ALLOC(arena, MeReal, positions);
+    w->grad = KEA_ALLOC(arena, MeReal, positions);
+    w->epsFree = KEA_ALLOC(arena, MeReal, positions);
+    w->step = KEA_ALLOC(arena, MeReal, positions);
+    w->res = KEA_ALLOC(arena, MeReal, positions);
+    w->z = KEA_ALLOC(arena, MeReal, positions);
+    w->dir = KEA_ALLOC(arena, MeReal, positions);
+    w->q = KEA_ALLOC(arena, MeReal, positions);
     w->J = KEA_ALLOC(arena, KeaJacobianRow, n);
     w->JT = KEA_ALLOC(arena, MeReal, (size_t)n * 12);
     w->localD = KEA_ALLOC(arena, MeReal, cap);
@@ -205,15 +207,16 @@ static void KeaFindBlocks(const KeaProblem *problem, KeaIterativeWork *w, int ca
         i += m;
     }
     w->blockStart[w->nBlocks] = n;
+    w->nPacks = -1; /* SM builds them when it first runs (kea_contact_packs.h) */
 }
 
 /* Blocks [b0, b1): each one's matrix A_bb = J_b M^-1 J_b^T + diag(eps) from the rows' B = M^-1 J^T,
- * its factor and its inverse, and a factored contact's inverse as padded columns. Each block writes
+ * its factor and its inverse. Each block writes
  * only its own entries, so blocks may be set up in any order, on any worker. */
 static void KeaFactorBlocks(const KeaProblem *problem, KeaIterativeWork *w, int b0, int b1)
 {
     MeReal L[KEA_MAX_BLOCK_ROWS * KEA_MAX_BLOCK_ROWS]; /* the block's Cholesky factor */
-    int b, r;
+    int b;
     for (b = b0; b < b1; ++b) {
         const int i = w->blockStart[b], m = w->blockStart[b + 1] - i, offset = w->blockMatrix[b];
         w->blockFactored[b] = 0;
@@ -227,13 +230,6 @@ static void KeaFactorBlocks(const KeaProblem *problem, KeaIterativeWork *w, int 
             if (w->blockFactored[b])
                 KeaBlockInvert(m, L, w->blockInv + offset);
         }
-        if (w->blockContact[b] && w->blockFactored[b]) /* its inverse's columns, padded */
-            for (r = 0; r < 3; ++r) {
-                w->contactInv[4 * i + 4 * r + 0] = w->blockInv[offset + 3 * r + 0];
-                w->contactInv[4 * i + 4 * r + 1] = w->blockInv[offset + 3 * r + 1];
-                w->contactInv[4 * i + 4 * r + 2] = w->blockInv[offset + 3 * r + 2];
-                w->contactInv[4 * i + 4 * r + 3] = ME_R(0.0);
-            }
     }
 }
 

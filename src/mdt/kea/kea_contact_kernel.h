@@ -166,8 +166,8 @@ KEA_ALWAYS_INLINE MeReal KeaContactBlockStep(const KeaProblem *problem, KeaItera
         }
     }
     /* every row free: x_b - A_bb^-1 w_b, if it keeps within the bounds its own normal gives (in
-     * scalars: the lanes of KeaContactInverseApply cost more here, where the result is wanted
-     * row by row) */
+     * scalars: a product with the inverse's padded columns in lanes costs more here, where the
+     * result is wanted row by row) */
     if (w->blockFactored[block]) {
         for (r = 0; r < 3; ++r)
             t[r] = (inv[r] * wb[0] + inv[3 + r] * wb[1]) + inv[6 + r] * wb[2];

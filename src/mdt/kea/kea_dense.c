@@ -3,7 +3,8 @@
  *
  * Forming A: each row touches at most two bodies, so A_ij is non-zero only when rows i and j share a
  * body. A body -> (row, half) incidence list turns the O(n^2) pair scan into O(sum over bodies of
- * degree^2) six-term dot products (plus the O(n^2) clearing of A).
+ * degree^2) six-term dot products, four at a time, each entry written where its first term is
+ * made: only A's pattern is touched, nothing is cleared first.
  *
  * Factor updates (free set F, A_FF = L L^T, rows of L in the order of F):
  *  - append row i: solve L l = A_F,i, then d = A_ii - l.l, new row (l, sqrt(d)): O(|F|^2);
@@ -49,27 +50,113 @@ void KeaBodyIncidence(const KeaProblem *problem, int *incidence, int *start)
     start[0] = 0;
 }
 
-/* Size: the two compressed-row structures (body incidence: incidence and start; the matrix's
- * pattern: pattern and patternStart) come as the direct path's workspace holds them. */
-void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeReal *A, const int *incidence,
-                        const int *start, const int *patternStart, const int *pattern)
-{
-    const int n = problem->nRows, nb = problem->nBodies;
-    int i, b, p1, p2;
+size_t KeaFormScratchReals(int nRows) { return (size_t)7 * (size_t)(2 * nRows + 4); }
+size_t KeaFormScratchInts(int nRows) { return (size_t)2 * (size_t)(2 * nRows + 4); }
 
-    for (i = 0; i < n; ++i) /* only the pattern is read later: clear just that */
-        for (p1 = patternStart[i]; p1 < patternStart[i + 1]; ++p1)
-            A[(size_t)i * (size_t)n + (size_t)pattern[p1]] = ME_R(0.0);
+/* Body b's rows (its incidence entries q = 0 .. deg - 1): the six components of each row's half of
+ * M^-1 J^T on b, one column per component (stride entries each, the pad zeroed), the row of each
+ * entry and the body on the row's other half (-1: the world). Size: the three outputs are the
+ * pieces of KeaFormDenseMatrix's scratch, and deg, stride their shape. */
+static void KeaGatherBody(const KeaProblem *problem, const KeaJacobianRow *B, const int *entries, int deg,
+                          int stride, MeReal *columns, int *rows, int *others)
+{
+    int q, k;
+    for (q = 0; q < stride; ++q) {
+        const int e = q < deg ? entries[q] : 0, h = e & 1;
+        const MeReal *bl = KeaHalfLin(&B[e >> 1], h), *ba = KeaHalfAng(&B[e >> 1], h);
+        for (k = 0; k < 3; ++k) {
+            columns[k * stride + q] = q < deg ? bl[k] : ME_R(0.0);
+            columns[(3 + k) * stride + q] = q < deg ? ba[k] : ME_R(0.0);
+        }
+        if (q < deg) {
+            rows[q] = e >> 1;
+            others[q] = problem->rowBodies[e >> 1][1 - h];
+        }
+    }
+}
+
+/* Whether some row touches one body through both halves: then a pair of rows gets several terms
+ * from that body, and A is cleared and summed into (the general case). */
+static int KeaSomeRowTouchesABodyTwice(const KeaProblem *problem)
+{
+    int i;
+    for (i = 0; i < problem->nRows; ++i)
+        if (problem->rowBodies[i][0] >= 0 && problem->rowBodies[i][0] == problem->rowBodies[i][1])
+            return 1;
+    return 0;
+}
+
+/* Size: the two compressed-row structures (body incidence: incidence and start; the matrix's
+ * pattern: pattern and patternStart) come as the direct path's workspace holds them, with the
+ * scratch for one body's rows (KeaFormScratchReals / KeaFormScratchInts). */
+void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeReal *A, const int *incidence,
+                        const int *start, const int *patternStart, const int *pattern, MeReal *columns,
+                        int *ints)
+{
+    const int n = problem->nRows, nb = problem->nBodies, twice = KeaSomeRowTouchesABodyTwice(problem);
+    int i, b, p1, q, q1, q2;
+
+    /* A_ij is the sum over the bodies rows i and j share, in body order, of J_i's half on b times
+     * B_j's half on b. Usually each entry's first term is stored (as 0 + v: the bits of the sum into
+     * a cleared A), so only the pattern's entries are written and nothing needs clearing first.
+     * Body by body: its rows' halves of B gathered in columns, then for each of its rows the products
+     * with the rows after it (v, a seventh column), then stored or added into A. */
+    if (twice) {
+        for (i = 0; i < n; ++i)
+            for (p1 = patternStart[i]; p1 < patternStart[i + 1]; ++p1)
+                A[(size_t)i * (size_t)n + (size_t)pattern[p1]] = ME_R(0.0);
+    } else {
+        for (i = 0; i < n; ++i) /* a row on no body has only its diagonal, which gets no term */
+            if (problem->rowBodies[i][0] < 0 && problem->rowBodies[i][1] < 0)
+                A[(size_t)i * (size_t)n + (size_t)i] = ME_R(0.0);
+    }
     for (b = 0; b < nb; ++b) {
-        for (p1 = start[b]; p1 < start[b + 1]; ++p1) {
-            const int e1 = incidence[p1], r1 = e1 >> 1, h1 = e1 & 1;
-            const MeReal *jl = KeaHalfLin(&problem->J[r1], h1), *ja = KeaHalfAng(&problem->J[r1], h1);
-            for (p2 = p1; p2 < start[b + 1]; ++p2) {
-                const int e2 = incidence[p2], r2 = e2 >> 1, h2 = e2 & 1;
-                const MeReal v = KeaDot3(jl, KeaHalfLin(&B[r2], h2)) + KeaDot3(ja, KeaHalfAng(&B[r2], h2));
-                A[(size_t)r1 * (size_t)n + (size_t)r2] += v;
-                if (p1 != p2) /* also covers a row touching one body through both halves */
-                    A[(size_t)r2 * (size_t)n + (size_t)r1] += v;
+        const int deg = start[b + 1] - start[b], stride = (deg + 3) & ~3;
+        int *rows = ints, *others = ints + stride;
+        if (deg == 0)
+            continue;
+        KeaGatherBody(problem, B, incidence + start[b], deg, stride, columns, rows, others);
+        for (q1 = 0; q1 < deg; ++q1) {
+            /* J's half on b of row q1 against B's halves of rows q1 .. deg - 1, four at a time: lane
+             * by lane the sums of KeaDot3(jl, bl) + KeaDot3(ja, ba) in their order */
+            const int e1 = incidence[start[b] + q1], r1 = e1 >> 1, o1 = others[q1];
+            const MeReal *jl = KeaHalfLin(&problem->J[r1], e1 & 1), *ja = KeaHalfAng(&problem->J[r1], e1 & 1);
+            const KeaLanes l0 = KeaLanesSplat(jl[0]), l1 = KeaLanesSplat(jl[1]), l2 = KeaLanesSplat(jl[2]);
+            const KeaLanes a0 = KeaLanesSplat(ja[0]), a1 = KeaLanesSplat(ja[1]), a2 = KeaLanesSplat(ja[2]);
+            MeReal *Ar1 = A + (size_t)r1 * (size_t)n, *v = columns + 6 * stride;
+            for (q2 = q1 & ~3; q2 < deg; q2 += 4) {
+                const MeReal *c = columns + q2;
+                const KeaLanes lin = KeaLanesAdd(KeaLanesAdd(KeaLanesMul(l0, KeaLanesLoad(c)),
+                                                             KeaLanesMul(l1, KeaLanesLoad(c + stride))),
+                                                 KeaLanesMul(l2, KeaLanesLoad(c + 2 * stride)));
+                const KeaLanes ang = KeaLanesAdd(KeaLanesAdd(KeaLanesMul(a0, KeaLanesLoad(c + 3 * stride)),
+                                                             KeaLanesMul(a1, KeaLanesLoad(c + 4 * stride))),
+                                                 KeaLanesMul(a2, KeaLanesLoad(c + 5 * stride)));
+                KeaLanesStore(v + q2, KeaLanesAdd(lin, ang));
+            }
+            if (twice) {
+                for (q = q1; q < deg; ++q) {
+                    Ar1[rows[q]] += v[q];
+                    if (q != q1) /* also covers a row touching one body through both halves */
+                        A[(size_t)rows[q] * (size_t)n + (size_t)r1] += v[q];
+                }
+            } else if (o1 >= 0 && o1 < b) { /* rows also on o1 had their first term there */
+                for (q = q1; q < deg; ++q) {
+                    MeReal *Aji = A + (size_t)rows[q] * (size_t)n + (size_t)r1;
+                    if (others[q] == o1) {
+                        Ar1[rows[q]] += v[q];
+                        if (q != q1)
+                            *Aji += v[q];
+                    } else {
+                        Ar1[rows[q]] = ME_R(0.0) + v[q];
+                        *Aji = ME_R(0.0) + v[q];
+                    }
+                }
+            } else {
+                for (q = q1; q < deg; ++q) {
+                    Ar1[rows[q]] = ME_R(0.0) + v[q];
+                    A[(size_t)rows[q] * (size_t)n + (size_t)r1] = ME_R(0.0) + v[q];
+                }
             }
         }
     }

@@ -65,6 +65,8 @@ struct KeaDenseWork {
     int *perm;           /**< n/2: row swaps of the capacitance matrix's LU */
     int velocityCurrent; /**< the last solve ended on an accepted polish whose products left
                               M^-1 J^T x in lcp->velocity, and its rows' residuals in residual */
+    int velocityOfX;     /**< lcp->velocity holds M^-1 J^T x for the x of the last pricing, which
+                              found the optimum, and x has not moved since (the refinement's) */
     MeReal residual;     /**< then: KeaResidualWithDiagonal of the returned x (same sums) */
 };
 
@@ -117,10 +119,11 @@ static void KeaDenseBounds(const KeaDenseLcp *lcp, const MeReal *x, int i, MeRea
 
 /* Get ready for products (A v)_i with this v: with the LCP's rows, the bodies' velocity changes
  * M^-1 J^T v (O(n)), so that each product costs one row (A v = J M^-1 J^T v + eps v); else the list
- * of v's non-zeros (returns their count). */
-static int KeaDensePrepare(const KeaDenseLcp *lcp, const MeReal *v, int *list)
+ * of v's non-zeros (returns their count). Either way what was ready for x is no longer. */
+static int KeaDensePrepare(const KeaDenseLcp *lcp, KeaDenseWork *w, const MeReal *v, int *list)
 {
     int j, nz = 0;
+    w->velocityOfX = 0;
     if (lcp->rows) {
         KeaBodyVelocityFromImpulses(lcp->rows, v, lcp->velocity);
         return 0;
@@ -131,7 +134,7 @@ static int KeaDensePrepare(const KeaDenseLcp *lcp, const MeReal *v, int *list)
     return nz;
 }
 
-/* (A v)_i, after KeaDensePrepare(lcp, v, list) returned nz. */
+/* (A v)_i, after KeaDensePrepare(lcp, w, v, list) returned nz. */
 static MeReal KeaDenseRowDot(const KeaDenseLcp *lcp, int i, const MeReal *v, const int *list, int nz)
 {
     const MeReal *Ai;
@@ -152,7 +155,7 @@ static MeReal KeaDenseRowDot(const KeaDenseLcp *lcp, int i, const MeReal *v, con
 static void KeaFreeRowsResidual(const KeaDenseLcp *lcp, KeaDenseWork *w, const MeReal *v)
 {
     const KeaCholesky *c = &w->chol;
-    const int nz = KeaDensePrepare(lcp, v, w->nonzero);
+    const int nz = KeaDensePrepare(lcp, w, v, w->nonzero);
     int p;
     for (p = 0; p < c->size; ++p)
         w->y[p] = lcp->r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], v, w->nonzero, nz);
@@ -215,7 +218,7 @@ static int KeaEnteringRow(const KeaDenseLcp *lcp, KeaDenseWork *w, const MeReal 
     int j, nz, best = -1;
     for (j = 0; j < n; ++j)
         xScale = KeaMax(xScale, KeaFabs(x[j]));
-    nz = KeaDensePrepare(lcp, x, w->nonzero);
+    nz = KeaDensePrepare(lcp, w, x, w->nonzero);
     tolW = KEA_DIRECT_TOL * (rScale + diagMax * xScale);
     for (j = 0; j < n; ++j) {
         MeReal wj, score;
@@ -230,6 +233,7 @@ static int KeaEnteringRow(const KeaDenseLcp *lcp, KeaDenseWork *w, const MeReal 
             best = j;
         }
     }
+    w->velocityOfX = best < 0 && lcp->rows; /* x stays: the refinement may reuse the velocity */
     return best;
 }
 
@@ -250,6 +254,7 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
     }
     for (i = 0; i < n; ++i)
         w->locked[i] = 0;
+    w->velocityOfX = 0; /* x moves from here (and moved in KeaDenseApplyBounds before) */
 
     for (;;) {
         MeReal alpha;
@@ -504,7 +509,7 @@ static int KeaPolishAccept(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
     }
     tolW = KEA_POLISH_TOL_W * KEA_DIRECT_TOL * (rScale + diagMax * xScale);
     tolX = KEA_POLISH_TOL_X * KEA_DIRECT_TOL * xScale;
-    nz = KeaDensePrepare(lcp, w->cand, w->nonzero);
+    nz = KeaDensePrepare(lcp, w, w->cand, w->nonzero);
     for (i = 0; i < n; ++i) { /* natural-map test at the candidate's own bounds, every row alike */
         const MeReal Aii = lcp->A[(size_t)i * (size_t)n + (size_t)i];
         const MeReal d = Aii > ME_R(0.0) ? Aii : ME_R(1.0);
@@ -567,14 +572,20 @@ static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
     return KeaPolishAccept(lcp, w, x);
 }
 
-/* One step of iterative refinement on the free block: x_F += A_FF^-1 (r - A x)_F. */
+/* One step of iterative refinement on the free block: x_F += A_FF^-1 (r - A x)_F. Right after the
+ * pricing that found x optimal, the bodies' velocity for x is already there (KeaEnteringRow). */
 static void KeaDenseRefine(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
 {
     KeaCholesky *c = &w->chol;
     int p;
     if (c->size == 0)
         return;
-    KeaFreeRowsResidual(lcp, w, x);
+    if (w->velocityOfX) {
+        for (p = 0; p < c->size; ++p)
+            w->y[p] = lcp->r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], x, w->nonzero, 0);
+    } else {
+        KeaFreeRowsResidual(lcp, w, x);
+    }
     KeaCholeskySolve(c, w->y);
     for (p = 0; p < c->size; ++p) {
         const int i = c->F[p];
@@ -600,6 +611,7 @@ KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses,
 
     w->chol.regularised = 0;
     w->velocityCurrent = 0;
+    w->velocityOfX = 0;
     w->chol.patternStart = lcp->patternStart;
     w->chol.pattern = lcp->pattern;
     /* Warm start: bounds from x as given (links read the unclamped normal impulses), then clamp. */
@@ -610,7 +622,7 @@ KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses,
     { /* A row at a bound whose multiplier already says it would move inside starts free: the
        * Newton step and its ratio test sort it out, where freeing such rows one per pivot costs a
        * pivot each (a new contact arrives at x = 0 with its normal row pressed). */
-        const int nz = KeaDensePrepare(lcp, x, w->nonzero);
+        const int nz = KeaDensePrepare(lcp, w, x, w->nonzero);
         for (i = 0; i < n; ++i) {
             MeReal wi;
             if (w->state[i] == KEA_FREE || !(w->lo[i] < w->hi[i]))

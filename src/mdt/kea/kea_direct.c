@@ -36,6 +36,8 @@ typedef struct KeaDirectWork {
     int *pattern;       /**< at most n^2 */
     int *mark;          /**< n: scratch for building the pattern */
     int *orderScratch;  /**< KeaEliminationOrderScratch ints */
+    MeReal *formColumns; /**< KeaFormScratchReals: one body's rows while forming A */
+    int *formInts;      /**< KeaFormScratchInts */
     KeaDenseWork *lcp;  /**< the dense solver's workspace */
 } KeaDirectWork;
 
@@ -50,6 +52,8 @@ static void KeaDirectLayout(KeaArena *arena, int n, int nb, KeaDirectWork *w)
     w->pattern = KEA_ALLOC(arena, int, (size_t)n * (size_t)n);
     w->mark = KEA_ALLOC(arena, int, n);
     w->orderScratch = KEA_ALLOC(arena, int, KeaEliminationOrderScratch(n, nb));
+    w->formColumns = KEA_ALLOC(arena, MeReal, KeaFormScratchReals(n));
+    w->formInts = KEA_ALLOC(arena, int, KeaFormScratchInts(n));
     w->lcp = KeaDenseWorkCreate(arena, n);
     w->bodyColumns = KEA_ALLOC(arena, KeaBodyColumns, nb);
 }
@@ -140,7 +144,8 @@ KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params,
     KeaBodyColumnsFill(problem, w.bodyColumns);
     for (i = 0; i < n; ++i)
         (void)KeaRowInvMassJT4(problem, w.bodyColumns, i, &w.B[i]);
-    KeaFormDenseMatrix(problem, w.B, w.A, w.incidence, w.start, w.patternStart, w.pattern);
+    KeaFormDenseMatrix(problem, w.B, w.A, w.incidence, w.start, w.patternStart, w.pattern, w.formColumns,
+                       w.formInts);
 
     lcp.n = n;
     lcp.A = w.A;

@@ -226,11 +226,16 @@ static inline void KeaRowBoundsInline(const KeaProblem *problem, const MeReal *x
 void KeaBodyIncidence(const KeaProblem *problem, int *incidence, int *start);
 /** A = J M^-1 J^T + diag(eps), dense n x n row-major, using B (M^-1 J^T rows) and the incidence.
  *  Only the entries in A's pattern (rows sharing a body, as the direct path builds it) are written;
- *  the rest of A is left as it was and must not be read. Seven arguments: the pairs (incidence,
+ *  the rest of A is left as it was and must not be read. Nine arguments: the pairs (incidence,
  *  start) and (patternStart, pattern) are the direct path's two sparse structures, each a CSR
- *  pair its set-up fills once; a struct for them would serve this one call. */
+ *  pair its set-up fills once, and columns (KeaFormScratchReals(n) reals) and ints
+ *  (KeaFormScratchInts(n)) the workspace for one body's rows. */
 void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeReal *A, const int *incidence,
-                        const int *start, const int *patternStart, const int *pattern);
+                        const int *start, const int *patternStart, const int *pattern, MeReal *columns,
+                        int *ints);
+/** Scratch sizes of KeaFormDenseMatrix for n rows (a body has at most 2n incidence entries). */
+size_t KeaFormScratchReals(int nRows);
+size_t KeaFormScratchInts(int nRows);
 
 /** Cholesky factor L (row-major, leading dimension ld) of A restricted to an ordered list of rows
  *  F[0..size-1]: A_FF = L L^T. */

@@ -6,6 +6,7 @@
  *   kea_contact_kernel.h  the contact step: one declared contact's exact step (KeaContactBlockStep)
  *   kea_iterative.c       the sweep, the generic block step and the driver (KeaSolveIterative)
  *   kea_subspace.c        subspace minimisation and its schedule (KeaSubspaceMinimise)
+ *   kea_contact_packs.*   declared contacts four to a pack, a lane each (SM's products on them)
  * This header holds the padded data, the work struct and the row kernels; the tuning constants
  * (KEA_SM_*, KEA_GATHER_ROW_BY_ROW) are in kea_tuning.h.
  *
@@ -49,9 +50,10 @@
  * transpose of its J (KeaColumnsApply, one vectorised column kernel for all block products: w_b
  * through KeaColumnsApplyPair, which reads the two bodies in place,
  * A_bb^-1 w_b, the preconditioner, forming A_bb) and applies its deltas to local copies of its two
- * bodies; SM's matrix-free products go through the free list a piece (a free row on its own, or a
- * block whose rows are all free) at a time the same way, each piece's rows and bodies listed once
- * per SM step (KeaFreePiece). */
+ * bodies; SM's matrix-free products go through the declared contacts four at a time, a lane each
+ * (kea_contact_packs.h), then through the generic rows' free list a piece (a free row on its own,
+ * or a block whose rows are all free) at a time the same way, each piece's rows and bodies listed
+ * once per SM step (KeaFreePiece). */
 #ifndef KEA_ITERATIVE_H
 #define KEA_ITERATIVE_H
 
@@ -73,9 +75,11 @@
 #  define KEA_ALWAYS_INLINE static inline
 #endif
 
+typedef struct KeaContactPack KeaContactPack; /* kea_contact_packs.h */
+
 /** A body's velocity change with each 3-vector padded to 4 (pad 0). */
 typedef struct KeaVel4 {
-    MeReal lin[4];
+    _Alignas(16) MeReal lin[4]; /* 16-byte aligned: four-lane loads of it may be aligned ones */
     MeReal ang[4];
 } KeaVel4;
 
@@ -151,13 +155,13 @@ static inline void KeaBlockScatterHalf1(int m, const KeaJacobianRow *B, const Me
 
 enum { KEA_CONTACT_BODIES = 1, KEA_CONTACT_WORLD = 2 }; /* a declared contact between two bodies, or on the world */
 
-/** SM: one piece of the free list for its matrix-free products, everything they read about it in
- *  one place: a free row on its own, or a segment (a block whose rows are all free). */
+/** SM: one piece of the free list after its pack region (kea_contact_packs.h) for its matrix-free
+ *  products, everything they read about it in one place: a free row on its own, or a segment (a
+ *  generic block whose rows are all free). */
 typedef struct KeaFreePiece {
     int pos;      /**< its first position in the free list */
     int row;      /**< its first row */
     int rows;     /**< 1 for a row on its own, else the block's size */
-    int kind;     /**< 0, or the segment's KEA_CONTACT_* kind when it is a declared contact */
     int body[2];  /**< the row halves' bodies (the world: nb) */
     int matrix;   /**< a segment: its block's offset in blockInv (the preconditioner); else -1 */
 } KeaFreePiece;
@@ -188,9 +192,6 @@ typedef struct KeaIterativeWork {
                                 a preconditioner step is then one small matrix-vector product,
                                 no divisions (each block is solved once a sweep, and
                                 again per SM step when free, but factored once a step) */
-    MeReal *contactInv;    /**< a declared contact's A_bb^-1 (when factored) as three columns padded to 4,
-                                at contactInv + 4 s for the contact whose first row is s: its product
-                                with a vector is three lanes (SM's preconditioner) */
     unsigned char *blockFactored; /**< the factor exists (A_bb safely positive definite) */
     unsigned char *blockContact;  /**< KEA_CONTACT_* kind of a declared contact's block (KeaContact), else 0 */
     unsigned char *wasFree;       /**< SM: the row was free at the last SM step (or the warm start) */
@@ -206,14 +207,18 @@ typedef struct KeaIterativeWork {
                                        the last sweep (tallied by its steps) */
     MeReal *localW;        /**< a block's w */
     int *rowBlock;         /**< block of each row */
-    KeaFreePiece *pieces;  /**< SM: the free list as rows on their own and segments (free blocks,
-                                preconditioned by their inverse), in order */
+    KeaFreePiece *pieces;  /**< SM: the free list after its pack region as rows on their own and
+                                segments (free blocks, preconditioned by their inverse), in order */
     int nPieces;
+    KeaContactPack *packs; /**< the declared contacts four to a pack (kea_contact_packs.h) */
+    int nPacks;            /**< -1 until the solve's first SM step builds them */
+    unsigned char *packed; /**< a declared contact's row: its place in SM's free list is in the packs */
     MeReal *localR, *localLo, *localHi, *localX; /**< a block's LCP (maxBlockRows each) */
     int *localLink;
     KeaDenseWork *dense;   /**< the dense solver, sized for maxBlockRows */
     /* Subspace minimisation: */
-    int *freeRows;         /**< rows strictly inside their bounds */
+    int *freeRows;         /**< rows strictly inside their bounds (the pack region: every pack's
+                                rows, masked or not; then the generic rows that are free) */
     MeReal *lo, *hi;       /**< the warm start's bounds (by row); then SM's, frozen for its step
                                 (by position in the free list) */
     MeReal *xFree;         /**< SM: x on the free rows (by position), as the step found it */
@@ -244,8 +249,9 @@ typedef struct KeaIterativeWork {
  * in fixed chunks of KEA_SPLIT_CHUNK blocks handed to the workers (a barrier between colours: the
  * hook returns when the colour is done). Every chunk keeps its own tallies (the objective's decrease,
  * the residual, the rows that changed, the dense solver's pivots), added afterwards in chunk order;
- * SM's loops run over fixed chunks of KEA_SPLIT_PIECES pieces of its free list, their dot products
- * as one partial sum per chunk, added in chunk order, and its scatter colour by colour; the set-up's
+ * SM's loops run over fixed chunks of KEA_SPLIT_PACKS packs, then of KEA_SPLIT_PIECES pieces of its
+ * free list, their dot products as one partial sum per chunk, added in chunk order; its scatter
+ * takes the packs on the driver alone, then the pieces colour by colour; the set-up's
  * loops over rows and blocks (each item writing only its own entries) in chunks too. The chunks depend on the problem only, never
  * on the workers, so neither does any bit of the result. */
 
@@ -255,6 +261,9 @@ typedef struct KeaIterativeWork {
 /** Pieces of SM's free list (KeaFreePiece) per chunk of its loops in a split solve (at least, for
  *  its scatter: whole units). */
 #define KEA_SPLIT_PIECES 128
+/** Packs of four contacts (kea_contact_packs.h) per chunk of SM's gathers, preconditioner and sums in
+ *  a split solve (their scatter runs on the driver alone: packs share bodies). */
+#define KEA_SPLIT_PACKS 32
 /** Rows per chunk of the set-up's row loops, and blocks per chunk of its block set-up, in a split solve. */
 #define KEA_SPLIT_ROWS 256
 #define KEA_SPLIT_BLOCKS 64
@@ -317,7 +326,7 @@ typedef struct KeaSplit {
     int nChunks;
     int colours;           /**< colours in use (the overflow colour not counted) */
     KeaSplitChunk *chunks; /**< one per chunk */
-    MeReal *partial;       /**< SM: one partial sum per chunk of KEA_SPLIT_PIECES pieces */
+    MeReal *partial;       /**< SM: one partial sum per chunk (of KEA_SPLIT_PACKS packs or KEA_SPLIT_PIECES pieces) */
     KeaBlockScratch *scratch; /**< per worker; worker 0's are the work's own */
     KeaIterativeWork *works;  /**< per worker: a copy of the work with its scratch (made per sweep) */
 } KeaSplit;
@@ -333,6 +342,10 @@ void KeaSplitRun(const KeaSplit *split, KeaTaskFn task, int items, void *data);
 void KeaSplitDrive(KeaSplit *split, void (*drive)(void *), void *data);
 void KeaSplitWorks(const KeaIterativeWork *w, KeaSplit *split);
 void KeaSplitPieces(const KeaIterativeWork *w, KeaSplit *split);
+
+/* SM's free-list positions for n rows at most: the pack region (12 per pack of up to four of the at
+ * most n / 3 contacts, masked lanes included) and every row again after it. */
+static inline int KeaFreePositions(int n) { return n + 12 * (n / 12 + 1); }
 
 /* Rows per block at most: maxBlockRows within 1 ... KEA_MAX_BLOCK_ROWS and the problem size. */
 static inline int KeaBlockCap(int n, int maxBlockRows)

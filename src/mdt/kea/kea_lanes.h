@@ -19,12 +19,10 @@ typedef __m128 KeaLanes;
 
 static inline KeaLanes KeaLanesLoad(const MeReal *p) { return _mm_loadu_ps(p); }
 static inline void KeaLanesStore(MeReal *p, KeaLanes a) { _mm_storeu_ps(p, a); }
-/** Lanes 0-2 to p[0..2] (p[3] untouched). */
-static inline void KeaLanesStore3(MeReal *p, KeaLanes a)
-{
-    _mm_storel_pi((__m64 *)(void *)p, a);
-    _mm_store_ss(p + 2, _mm_movehl_ps(a, a));
-}
+/** KeaLanesLoad / KeaLanesStore of a 16-byte aligned p (a load the compiler may fold into the
+ *  arithmetic that uses it). */
+static inline KeaLanes KeaLanesLoadA(const MeReal *p) { return _mm_load_ps(p); }
+static inline void KeaLanesStoreA(MeReal *p, KeaLanes a) { _mm_store_ps(p, a); }
 static inline KeaLanes KeaLanesAdd(KeaLanes a, KeaLanes b) { return _mm_add_ps(a, b); }
 static inline KeaLanes KeaLanesSub(KeaLanes a, KeaLanes b) { return _mm_sub_ps(a, b); }
 static inline KeaLanes KeaLanesMul(KeaLanes a, KeaLanes b) { return _mm_mul_ps(a, b); }
@@ -48,6 +46,13 @@ static inline int KeaLanesFinite3x4(const MeReal *a, const MeReal *b, const MeRe
     return (_mm_movemask_ps(_mm_and_ps(ab, cd)) & 7) == 7;
 }
 
+/** Transpose the 4 x 4 matrix whose rows are a, b, c, d: afterwards a holds the first lanes of the
+ *  four, b the second ones, and so on (moves only, no arithmetic). */
+static inline void KeaLanesTranspose4(KeaLanes *a, KeaLanes *b, KeaLanes *c, KeaLanes *d)
+{
+    _MM_TRANSPOSE4_PS(*a, *b, *c, *d);
+}
+
 #else
 
 typedef struct KeaLanes {
@@ -68,12 +73,8 @@ static inline void KeaLanesStore(MeReal *p, KeaLanes a)
     for (k = 0; k < 4; ++k)
         p[k] = a.v[k];
 }
-static inline void KeaLanesStore3(MeReal *p, KeaLanes a)
-{
-    int k;
-    for (k = 0; k < 3; ++k)
-        p[k] = a.v[k];
-}
+static inline KeaLanes KeaLanesLoadA(const MeReal *p) { return KeaLanesLoad(p); }
+static inline void KeaLanesStoreA(MeReal *p, KeaLanes a) { KeaLanesStore(p, a); }
 static inline KeaLanes KeaLanesAdd(KeaLanes a, KeaLanes b)
 {
     int k;
@@ -111,6 +112,23 @@ static inline int KeaLanesFinite3x4(const MeReal *a, const MeReal *b, const MeRe
         ok &= (a[k] > -MEINFINITY) & (a[k] < MEINFINITY) & (b[k] > -MEINFINITY) & (b[k] < MEINFINITY) &
               (c[k] > -MEINFINITY) & (c[k] < MEINFINITY) & (d[k] > -MEINFINITY) & (d[k] < MEINFINITY);
     return ok;
+}
+
+static inline void KeaLanesTranspose4(KeaLanes *a, KeaLanes *b, KeaLanes *c, KeaLanes *d)
+{
+    KeaLanes *rows[4];
+    MeReal t;
+    int i, j;
+    rows[0] = a;
+    rows[1] = b;
+    rows[2] = c;
+    rows[3] = d;
+    for (i = 0; i < 4; ++i)
+        for (j = i + 1; j < 4; ++j) {
+            t = rows[i]->v[j];
+            rows[i]->v[j] = rows[j]->v[i];
+            rows[j]->v[i] = t;
+        }
 }
 
 #endif

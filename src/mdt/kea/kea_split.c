@@ -47,7 +47,7 @@ void KeaSplitLayout(KeaArena *arena, int n, int nb, int workers, KeaSplit *split
     split->colourWork = KeaArenaAlloc(arena, split->colourBytes);
     split->chunkStart = KEA_ALLOC(arena, int, n / KEA_SPLIT_CHUNK + KEA_COLOUR_COUNT + 2);
     split->chunks = KEA_ALLOC(arena, KeaSplitChunk, n / KEA_SPLIT_CHUNK + KEA_COLOUR_COUNT + 1);
-    split->partial = KEA_ALLOC(arena, MeReal, n / KEA_SPLIT_PIECES + 1);
+    split->partial = KEA_ALLOC(arena, MeReal, n / KEA_SPLIT_PIECES + 1 + (n / 12 + 1) / KEA_SPLIT_PACKS + 1);
     split->blockUnit = KEA_ALLOC(arena, int, n);
     split->pieceOrder = KEA_ALLOC(arena, int, n);
     split->pieceChunk = KEA_ALLOC(arena, int, n / KEA_SPLIT_PIECES + KEA_COLOUR_COUNT + 2);

@@ -27,6 +27,7 @@
  * run; once a pile's active set settles, SM runs again, so a solve run to convergence keeps it.
  * KeaStats.subspaceSkipped counts the skips. Figures: bench/RESULTS.md. */
 #include "kea_block_kernels.h"
+#include "kea_contact_packs.h"
 
 /* dvTmp += M^-1 J_F^T v (v by position in the free list) for the pieces (KeaFindSegments) order[j]
  * (order NULL: j itself), j in [j0, j1), in that order: a segment through the sweep's block kernels, a
@@ -46,9 +47,7 @@ KEA_ALWAYS_INLINE void KeaScatterPieces(const KeaIterativeWork *w, const MeReal 
         const int onWorld0 = piece->body[0] == nb, onWorld1 = piece->body[1] == nb;
         KeaVel4 *v0 = &dvTmp[piece->body[0]], *v1 = onWorld1 ? NULL : &dvTmp[piece->body[1]];
         const MeReal *vp = v + piece->pos;
-        if (piece->kind) {
-            KeaContactScatter(&B[piece->row], vp, v0, v1);
-        } else if (piece->rows == 1) {
+        if (piece->rows == 1) {
             if (vp[0] == ME_R(0.0))
                 continue;
             if (!onWorld0)
@@ -63,8 +62,9 @@ KEA_ALWAYS_INLINE void KeaScatterPieces(const KeaIterativeWork *w, const MeReal 
     }
 }
 
-/* What SM's chunked loops share (kea_iterative.h, "the split solve"): chunk k is the free list's
- * pieces [k size, (k + 1) size), all of them in one chunk when not split. */
+/* What SM's chunked loops share (kea_iterative.h, "the split solve"). Split: the first packChunks
+ * chunks are the packs [k packSize, (k + 1) packSize), the others the free list's pieces after the
+ * pack region, size to a chunk; not split: one chunk, every pack and piece. */
 typedef struct KeaSmTask {
     const KeaProblem *problem;
     const KeaIterativeWork *w;
@@ -72,7 +72,7 @@ typedef struct KeaSmTask {
     const MeReal *v;   /* the scatter's input */
     MeReal a;          /* CG's step length */
     MeReal *partial;   /* one partial sum per chunk */
-    int nFree, size;
+    int nFree, size, packSize, packChunks, chunks;
     int firstChunk, lastChunk; /* the scatter: a colour's chunks */
 } KeaSmTask;
 
@@ -86,14 +86,18 @@ static void KeaScatterChunks(int start, int end, int worker, void *data)
         KeaScatterPieces(t->w, t->v, split->pieceOrder, split->pieceChunk[k], split->pieceChunk[k + 1]);
 }
 
-/* dvTmp = M^-1 J_F^T v: in free-list order; in a split solve colour by colour (KeaSplitPieces), a
- * colour's chunks over the workers, the overflow colour's on this thread. */
+/* dvTmp = M^-1 J_F^T v: the packs, then the pieces in free-list order; in a split solve the pieces
+ * colour by colour (KeaSplitPieces), a colour's chunks over the workers, the overflow colour's on
+ * this thread. */
 static void KeaScatter(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *v)
 {
     KeaSplit *split = w->split;
     KeaSmTask t;
     int c;
     memset(w->dvTmp, 0, sizeof(KeaVel4) * (size_t)(problem->nBodies + 1));
+    /* The packs first, on this thread alone in a split solve too: their lanes add into bodies that
+     * other packs share (docs/kea.md, "One partition on several cores"). */
+    KeaPacksScatter(w, v, w->dvTmp, 0, w->nPacks);
     if (!split) {
         KeaScatterPieces(w, v, NULL, 0, w->nPieces);
         return;
@@ -110,7 +114,8 @@ static void KeaScatter(const KeaProblem *problem, KeaIterativeWork *w, const MeR
     }
 }
 
-/* out[p] = J_i . dv of the free rows of pieces [k0, k1) (a piece at a time, as KeaScatter). */
+/* out[p] = J_i . dv of the free rows of pieces [k0, k1) (a piece at a time, as KeaScatter; the packs'
+ * positions by KeaPacksGather). */
 static void KeaGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, int k0, int k1)
 {
     const KeaFreePiece *pieces = w->pieces;
@@ -120,20 +125,19 @@ static void KeaGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out,
         const KeaFreePiece *piece = &pieces[k];
         const KeaVel4 *v0 = &dv[piece->body[0]], *v1 = &dv[piece->body[1]];
         MeReal *o = out + piece->pos;
-        if (piece->kind) /* as the sweep's contact step gathers */
-            KeaContactGather(&J[piece->row], v0, piece->kind == KEA_CONTACT_WORLD ? NULL : v1, o);
-        else if (piece->rows == 1)
+        if (piece->rows == 1)
             o[0] = KeaRowVel4(&J[piece->row], v0, v1);
         else
             KeaBlockGather(w, piece->row, piece->rows, v0, v1, o);
     }
 }
 
-/* The blocks whose rows are all free (and whose factor exists) become segments of the free list,
- * preconditioned by their exact inverse A_bb^-1; the other free rows by 1 / d_i. */
-static void KeaFindSegments(KeaIterativeWork *w, int nFree)
+/* After the pack region (positions before first), the blocks whose rows are all free (and whose
+ * factor exists) become segments of the free list, preconditioned by their exact inverse A_bb^-1;
+ * the other free rows by 1 / d_i. */
+static void KeaFindSegments(KeaIterativeWork *w, int first, int nFree)
 {
-    int p = 0;
+    int p = first;
     w->nPieces = 0;
     while (p < nFree) {
         const int i = w->freeRows[p], b = w->rowBlock[i];
@@ -146,12 +150,10 @@ static void KeaFindSegments(KeaIterativeWork *w, int nFree)
         if (m > 1 && i == w->blockStart[b] && w->blockFactored[b] && p + m <= nFree &&
             w->freeRows[p + m - 1] == i + m - 1) {
             piece->rows = m;
-            piece->kind = w->blockContact[b];
             piece->matrix = w->blockMatrix[b];
             p += m;
         } else {
             piece->rows = 1;
-            piece->kind = 0;
             piece->matrix = -1;
             ++p;
         }
@@ -159,18 +161,16 @@ static void KeaFindSegments(KeaIterativeWork *w, int nFree)
 }
 
 /* z = P^-1 res (block-Jacobi preconditioner of the free rows) over pieces [k0, k1): a segment by its
- * block's inverse, a row on its own by 1 / d_i. */
+ * block's inverse, a row on its own by 1 / d_i (the packs' contacts: KeaPacksPrecondition). */
 static void KeaPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z, int k0, int k1)
 {
     const KeaFreePiece *pieces = w->pieces;
-    const MeReal *blockInv = w->blockInv, *invDiag = w->invDiag, *contactInv = w->contactInv;
+    const MeReal *blockInv = w->blockInv, *invDiag = w->invDiag;
     int k;
     for (k = k0; k < k1; ++k) {
         const KeaFreePiece *piece = &pieces[k];
         const int p = piece->pos;
-        if (piece->kind)
-            KeaLanesStore3(z + p, KeaContactInverseApply(contactInv + 4 * piece->row, res[p], res[p + 1], res[p + 2]));
-        else if (piece->rows == 1)
+        if (piece->rows == 1)
             z[p] = res[p] * invDiag[piece->row];
         else
             KeaBlockSymmetricApply(piece->rows, blockInv + piece->matrix, res + p, z + p);
@@ -260,14 +260,29 @@ static void KeaTrialStep(int nFree, MeReal scale, const MeReal *restrict xF, con
         z[p] = KeaClamp(xF[p] + scale * step[p], lo[p], hi[p]) - xF[p];
 }
 
-/* SM's chunk k: its pieces [*k0, *k1) and their positions [*p0, *p1) in the free list. */
-static void KeaSmChunk(const KeaSmTask *t, int k, int *k0, int *k1, int *p0, int *p1)
+/* SM's chunk k: its packs [r[0], r[1]), its pieces [r[2], r[3]) and their positions [r[4], r[5]) in
+ * the free list (a chunk holds packs or pieces when split, both when not). */
+static void KeaSmChunk(const KeaSmTask *t, int k, int r[6])
 {
-    const int nPieces = t->w->nPieces;
-    *k0 = k * t->size;
-    *k1 = *k0 + t->size < nPieces ? *k0 + t->size : nPieces;
-    *p0 = t->w->pieces[*k0].pos;
-    *p1 = *k1 < nPieces ? t->w->pieces[*k1].pos : t->nFree;
+    const int nPacks = t->w->nPacks, nPieces = t->w->nPieces;
+    if (!t->w->split) {
+        r[0] = r[2] = r[4] = 0;
+        r[1] = nPacks;
+        r[3] = nPieces;
+        r[5] = t->nFree;
+    } else if (k < t->packChunks) {
+        r[0] = k * t->packSize;
+        r[1] = r[0] + t->packSize < nPacks ? r[0] + t->packSize : nPacks;
+        r[2] = r[3] = 0;
+        r[4] = KEA_PACK_POSITIONS * r[0];
+        r[5] = KEA_PACK_POSITIONS * r[1];
+    } else {
+        r[0] = r[1] = 0;
+        r[2] = (k - t->packChunks) * t->size;
+        r[3] = r[2] + t->size < nPieces ? r[2] + t->size : nPieces;
+        r[4] = t->w->pieces[r[2]].pos;
+        r[5] = r[3] < nPieces ? t->w->pieces[r[3]].pos : t->nFree;
+    }
 }
 
 /* CG's start on chunk k: grad = w_F at x (KeaGather + eps x - r), step = 0, res = -grad, z = P^-1 res,
@@ -276,22 +291,26 @@ static void KeaCgStartChunks(int start, int end, int worker, void *data)
 {
     const KeaSmTask *t = data;
     const KeaIterativeWork *w = t->w;
-    int k, k0, k1, p0, p1, p, i;
+    int k, r[6], p, i;
     (void)worker;
     for (k = start; k < end; ++k) {
-        KeaSmChunk(t, k, &k0, &k1, &p0, &p1);
-        KeaGather(w, w->dv, w->grad, k0, k1);
-        for (p = p0; p < p1; ++p) {
+        KeaSmChunk(t, k, r);
+        KeaPacksGather(w, w->dv, w->grad, r[0], r[1]);
+        KeaGather(w, w->dv, w->grad, r[2], r[3]);
+        for (p = r[4]; p < r[5]; ++p) {
             i = w->freeRows[p];
             w->epsFree[p] = w->eps[i];
             w->grad[p] = w->grad[p] + w->eps[i] * t->x[i] - t->problem->rhs[i];
             w->step[p] = ME_R(0.0);
             w->res[p] = -w->grad[p];
         }
-        KeaPrecondition(w, w->res, w->z, k0, k1);
-        for (p = p0; p < p1; ++p)
+        KeaPacksClearMasked(w, w->grad, r[0], r[1]); /* a masked row's position holds 0 (kea_contact_packs.h) */
+        KeaPacksClearMasked(w, w->res, r[0], r[1]);
+        KeaPacksPrecondition(w, w->res, w->z, r[0], r[1]);
+        KeaPrecondition(w, w->res, w->z, r[2], r[3]);
+        for (p = r[4]; p < r[5]; ++p)
             w->dir[p] = w->z[p];
-        t->partial[k] = KeaDotN4(w->res + p0, w->z + p0, p1 - p0);
+        t->partial[k] = KeaDotN4(w->res + r[4], w->z + r[4], r[5] - r[4]);
     }
 }
 
@@ -300,12 +319,13 @@ static void KeaCgProductChunks(int start, int end, int worker, void *data)
 {
     const KeaSmTask *t = data;
     const KeaIterativeWork *w = t->w;
-    int k, k0, k1, p0, p1;
+    int k, r[6];
     (void)worker;
     for (k = start; k < end; ++k) {
-        KeaSmChunk(t, k, &k0, &k1, &p0, &p1);
-        KeaGather(w, w->dvTmp, w->q, k0, k1);
-        t->partial[k] = KeaAddEpsDot(w->q + p0, w->epsFree + p0, w->dir + p0, p1 - p0);
+        KeaSmChunk(t, k, r);
+        KeaPacksGather(w, w->dvTmp, w->q, r[0], r[1]);
+        KeaGather(w, w->dvTmp, w->q, r[2], r[3]);
+        t->partial[k] = KeaAddEpsDot(w->q + r[4], w->epsFree + r[4], w->dir + r[4], r[5] - r[4]);
     }
 }
 
@@ -314,13 +334,14 @@ static void KeaCgUpdateChunks(int start, int end, int worker, void *data)
 {
     const KeaSmTask *t = data;
     const KeaIterativeWork *w = t->w;
-    int k, k0, k1, p0, p1;
+    int k, r[6];
     (void)worker;
     for (k = start; k < end; ++k) {
-        KeaSmChunk(t, k, &k0, &k1, &p0, &p1);
-        KeaCgUpdate(p1 - p0, t->a, w->dir + p0, w->q + p0, w->step + p0, w->res + p0);
-        KeaPrecondition(w, w->res, w->z, k0, k1);
-        t->partial[k] = KeaDotN4(w->res + p0, w->z + p0, p1 - p0);
+        KeaSmChunk(t, k, r);
+        KeaCgUpdate(r[5] - r[4], t->a, w->dir + r[4], w->q + r[4], w->step + r[4], w->res + r[4]);
+        KeaPacksPrecondition(w, w->res, w->z, r[0], r[1]);
+        KeaPrecondition(w, w->res, w->z, r[2], r[3]);
+        t->partial[k] = KeaDotN4(w->res + r[4], w->z + r[4], r[5] - r[4]);
     }
 }
 
@@ -330,13 +351,14 @@ static void KeaTrialChunks(int start, int end, int worker, void *data)
 {
     const KeaSmTask *t = data;
     const KeaIterativeWork *w = t->w;
-    int k, k0, k1, p0, p1, p;
+    int k, r[6], p;
     (void)worker;
     for (k = start; k < end; ++k) {
         MeReal df = ME_R(0.0);
-        KeaSmChunk(t, k, &k0, &k1, &p0, &p1);
-        KeaGather(w, w->dvTmp, w->q, k0, k1);
-        for (p = p0; p < p1; ++p) {
+        KeaSmChunk(t, k, r);
+        KeaPacksGather(w, w->dvTmp, w->q, r[0], r[1]);
+        KeaGather(w, w->dvTmp, w->q, r[2], r[3]);
+        for (p = r[4]; p < r[5]; ++p) {
             const MeReal As = w->q[p] + w->epsFree[p] * w->z[p];
             df += w->z[p] * (w->grad[p] + ME_R(0.5) * As);
         }
@@ -344,11 +366,11 @@ static void KeaTrialChunks(int start, int end, int worker, void *data)
     }
 }
 
-/* Run a chunked loop of SM: over the workers in a split solve (chunks of KEA_SPLIT_PIECES pieces),
- * else as one chunk; returns its partials added in chunk order. */
+/* Run a chunked loop of SM: over the workers in a split solve (chunks of KEA_SPLIT_PACKS packs, then
+ * of KEA_SPLIT_PIECES pieces), else as one chunk; returns its partials added in chunk order. */
 static MeReal KeaSmRun(KeaSmTask *t, KeaTaskFn task)
 {
-    const int chunks = (t->w->nPieces + t->size - 1) / t->size;
+    const int chunks = t->chunks;
     MeReal sum;
     int k;
     if (t->w->split)
@@ -404,8 +426,9 @@ static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w
         df = KeaSmRun(t, KeaTrialChunks); /* q is free after CG */
         if (df < ME_R(0.0)) {
             w->smDecrease = -df;
-            for (p = 0; p < nFree; ++p)
-                x[w->freeRows[p]] += w->z[p];
+            for (p = 0; p < nFree; ++p) /* a masked row's z is 0: it is left alone */
+                if (w->z[p] != ME_R(0.0))
+                    x[w->freeRows[p]] += w->z[p];
             for (b = 0; b < problem->nBodies; ++b)
                 for (k = 0; k < 4; ++k) {
                     w->dv[b].lin[k] += w->dvTmp[b].lin[k];
@@ -421,7 +444,7 @@ static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w
 int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x)
 {
     const int n = problem->nRows;
-    int i, nFree = 0, changed, steps;
+    int i, nFree, listed, changed, steps;
     KeaSmTask t;
     MeReal one;
 
@@ -433,22 +456,31 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
     w->skippedLast = 0;
     if (w->smUnpaid && changed > KEA_SM_SKIP_MIN_CHANGED && (long)changed * KEA_SM_UNPAID_FRACTION > (long)n)
         return -1; /* it did not pay: wait until the active set has settled */
-    for (i = 0; i < n; ++i) /* the step runs: list the free rows, freeze their bounds */
-        if (w->wasFree[i]) {
+    /* the step runs: list the free rows, freeze their bounds; the packs' region first */
+    if (w->nPacks < 0) /* the first SM step of the solve that runs */
+        KeaPacksFill(problem, w);
+    listed = KeaPacksListFree(w, x);
+    nFree = KEA_PACK_POSITIONS * w->nPacks;
+    for (i = 0; i < n; ++i)
+        if (w->wasFree[i] && !w->packed[i]) { /* not a contact's row */
             KeaRowBoundsInline(problem, x, i, &w->lo[nFree], &w->hi[nFree]);
             w->xFree[nFree] = x[i];
             w->freeRows[nFree++] = i;
+            ++listed;
         }
-    if (nFree == 0)
+    if (listed == 0)
         return 0;
-    KeaFindSegments(w, nFree);
+    KeaFindSegments(w, KEA_PACK_POSITIONS * w->nPacks, nFree);
     if (w->split)
         KeaSplitPieces(w, w->split);
     t.problem = problem;
     t.w = w;
     t.x = x;
     t.nFree = nFree;
-    t.size = w->split ? KEA_SPLIT_PIECES : w->nPieces;
+    t.size = KEA_SPLIT_PIECES;
+    t.packSize = KEA_SPLIT_PACKS;
+    t.packChunks = (w->nPacks + KEA_SPLIT_PACKS - 1) / KEA_SPLIT_PACKS;
+    t.chunks = w->split ? t.packChunks + (w->nPieces + KEA_SPLIT_PIECES - 1) / KEA_SPLIT_PIECES : 1;
     t.partial = w->split ? w->split->partial : &one;
     steps = KeaSubspaceCg(problem, w, &t, maxSteps);
     if (steps > 0)

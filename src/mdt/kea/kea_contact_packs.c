@@ -1,0 +1,168 @@
+/* kea_contact_packs.c -- the packs of four declared contacts (kea_contact_packs.h): built once per
+ * solve (at its first SM step), masked per SM step, and SM's passes over them. */
+#include <string.h>
+
+#include "kea_contact_packs.h"
+
+/* Row r of the four lanes' contacts (rows[l], padded, 16-byte aligned) into the pack's places
+ * out[k][l] (a 4 x 4 transpose per body half; the pads dropped). */
+static void KeaPackSetRows(const KeaJacobianRow *const rows[KEA_PACK_LANES], MeReal (*out)[KEA_PACK_LANES])
+{
+    KeaLanes v[12];
+    int k;
+    KeaPackTranspose3(rows[0]->lin0, rows[1]->lin0, rows[2]->lin0, rows[3]->lin0, v);
+    KeaPackTranspose3(rows[0]->ang0, rows[1]->ang0, rows[2]->ang0, rows[3]->ang0, v + 3);
+    KeaPackTranspose3(rows[0]->lin1, rows[1]->lin1, rows[2]->lin1, rows[3]->lin1, v + 6);
+    KeaPackTranspose3(rows[0]->ang1, rows[1]->ang1, rows[2]->ang1, rows[3]->ang1, v + 9);
+    for (k = 0; k < 12; ++k)
+        KeaLanesStoreA(out[k], v[k]);
+}
+
+/* Pack k from the contact blocks block[0 .. lanes - 1] (lanes <= 4; the others hold no contact: zero
+ * rows on the world body nb). */
+static void KeaPackSet(const KeaProblem *problem, KeaIterativeWork *w, KeaContactPack *pack, const int *block,
+                       int lanes)
+{
+    static _Alignas(16) const KeaJacobianRow zero;
+    const KeaJacobianRow *J[KEA_PACK_LANES], *B[KEA_PACK_LANES];
+    int l, r, c;
+    for (r = 0; r < 3; ++r) {
+        for (l = 0; l < KEA_PACK_LANES; ++l) {
+            const int s = l < lanes ? w->blockStart[block[l]] : 0;
+            J[l] = l < lanes ? &w->J[s + r] : &zero;
+            B[l] = l < lanes ? &w->B[s + r] : &zero;
+        }
+        KeaPackSetRows(J, pack->J[r]);
+        KeaPackSetRows(B, pack->B[r]);
+    }
+    for (l = 0; l < KEA_PACK_LANES; ++l) {
+        const int b = l < lanes ? block[l] : block[0], s = w->blockStart[b];
+        const int factored = l < lanes && w->blockFactored[b];
+        const MeReal *inv = w->blockInv + w->blockMatrix[b];
+        for (r = 0; r < 3; ++r) /* KeaBlockSymmetricApply's out[r] reads entry 3 c + r for in[c] */
+            for (c = 0; c < 3; ++c)
+                pack->inv[3 * r + c][l] = factored ? inv[3 * c + r] : ME_R(0.0);
+        for (r = 0; r < 3; ++r) {
+            pack->invDiag[r][l] = l < lanes ? w->invDiag[s + r] : ME_R(0.0);
+            pack->mask[r][l] = ME_R(0.0);
+        }
+        pack->full[l] = ME_R(0.0);
+        pack->mu[0][l] = l < lanes ? problem->mu[s + 1] : ME_R(0.0);
+        pack->mu[1][l] = l < lanes ? problem->mu[s + 2] : ME_R(0.0);
+        pack->normalHi[l] = l < lanes ? problem->hi[s] : ME_R(0.0);
+        pack->body[0][l] = l < lanes ? w->body[s][0] : problem->nBodies;
+        pack->body[1][l] = l < lanes ? w->body[s][1] : problem->nBodies;
+        pack->row[l] = s;
+        pack->live[l] = factored;
+    }
+    pack->lanes = lanes;
+    pack->pair = lanes == KEA_PACK_LANES;
+    for (l = 1; l < KEA_PACK_LANES; ++l)
+        pack->pair &= pack->body[0][l] == pack->body[0][0] && pack->body[1][l] == pack->body[1][0];
+}
+
+/* The contacts in block order, four to a pack; a run of contacts on one body pair (a box on a box
+ * touches at four corners) fills packs of its own (KeaContactPack.pair), and what is left of each
+ * run shares packs with the other remainders. */
+void KeaPacksFill(const KeaProblem *problem, KeaIterativeWork *w)
+{
+    int b, run = 0, mixed = 0, runBlock[KEA_PACK_LANES], mixedBlock[KEA_PACK_LANES];
+    w->nPacks = 0;
+    memset(w->packed, 0, (size_t)problem->nRows);
+    for (b = 0; b <= w->nBlocks; ++b) {
+        const int contact = b < w->nBlocks && w->blockContact[b];
+        const int *pair = contact ? w->body[w->blockStart[b]] : NULL;
+        const int *runPair = run ? w->body[w->blockStart[runBlock[0]]] : NULL;
+        int k;
+        if (contact)
+            memset(w->packed + w->blockStart[b], 1, 3);
+        if (run && (!contact || pair[0] != runPair[0] || pair[1] != runPair[1])) { /* the run ends */
+            for (k = 0; k < run; ++k) {
+                mixedBlock[mixed++] = runBlock[k];
+                if (mixed == KEA_PACK_LANES) {
+                    KeaPackSet(problem, w, &w->packs[w->nPacks++], mixedBlock, mixed);
+                    mixed = 0;
+                }
+            }
+            run = 0;
+        }
+        if (!contact)
+            continue;
+        runBlock[run++] = b;
+        if (run == KEA_PACK_LANES) {
+            KeaPackSet(problem, w, &w->packs[w->nPacks++], runBlock, run);
+            run = 0;
+        }
+    }
+    if (mixed > 0)
+        KeaPackSet(problem, w, &w->packs[w->nPacks++], mixedBlock, mixed);
+}
+
+/* A contact's bounds as the contact step reads them (kea_contact_kernel.h: the normal row [0, hi],
+ * the friction rows +-mu max(n, 0)); a masked row holds 0 everywhere. */
+int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x)
+{
+    const unsigned char *was = w->wasFree;
+    int k, l, r, listed = 0;
+    for (k = 0; k < w->nPacks; ++k) {
+        KeaContactPack *pack = &w->packs[k];
+        const int base = KEA_PACK_POSITIONS * k;
+        int *freeRows = w->freeRows + base, allFull = 1;
+        MeReal *lo = w->lo + base, *hi = w->hi + base, *xF = w->xFree + base;
+        for (l = 0; l < KEA_PACK_LANES; ++l) {
+            const int s = pack->row[l], used = l < pack->lanes;
+            const int on[3] = {used & was[s], used & was[s + 1], used & was[s + 2]};
+            const MeReal n = x[s];
+            const MeReal bound[3] = {pack->normalHi[l], KeaFrictionBound(pack->mu[0][l], n),
+                                     KeaFrictionBound(pack->mu[1][l], n)};
+            const int full = pack->live[l] & on[0] & on[1] & on[2];
+            pack->full[l] = full ? ME_R(1.0) : ME_R(0.0);
+            allFull &= full;
+            for (r = 0; r < 3; ++r) {
+                const int p = KEA_PACK_LANES * r + l;
+                pack->mask[r][l] = on[r] ? ME_R(1.0) : ME_R(0.0);
+                freeRows[p] = s + r;
+                lo[p] = on[r] && r > 0 ? -bound[r] : ME_R(0.0);
+                hi[p] = on[r] ? bound[r] : ME_R(0.0);
+                xF[p] = on[r] ? x[s + r] : ME_R(0.0);
+                listed += on[r];
+            }
+        }
+        pack->allFull = allFull;
+    }
+    return listed;
+}
+
+void KeaPacksGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, int first, int last)
+{
+    const KeaContactPack *packs = w->packs;
+    int k;
+    for (k = first; k < last; ++k)
+        KeaPackGather(&packs[k], dv, out + KEA_PACK_POSITIONS * k);
+}
+
+void KeaPacksScatter(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, int first, int last)
+{
+    const KeaContactPack *packs = w->packs;
+    int k;
+    for (k = first; k < last; ++k)
+        KeaPackScatter(&packs[k], v + KEA_PACK_POSITIONS * k, dv);
+}
+
+void KeaPacksPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z, int first, int last)
+{
+    const KeaContactPack *packs = w->packs;
+    int k;
+    for (k = first; k < last; ++k)
+        KeaPackPrecondition(&packs[k], res + KEA_PACK_POSITIONS * k, z + KEA_PACK_POSITIONS * k);
+}
+
+void KeaPacksClearMasked(const KeaIterativeWork *w, MeReal *v, int first, int last)
+{
+    int k, r, l;
+    for (k = first; k < last; ++k)
+        for (r = 0; r < 3; ++r)
+            for (l = 0; l < KEA_PACK_LANES; ++l)
+                if (w->packs[k].mask[r][l] == ME_R(0.0))
+                    v[KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r + l] = ME_R(0.0);
+}
