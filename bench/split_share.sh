@@ -34,13 +34,16 @@ trap 'rm -rf "$work"' EXIT
 TASKS="predictTask packTask solveTask integrateTask unpackTask testPairs KeaSweepChunks KeaScatterChunks \
 KeaCgStartChunks KeaCgProductChunks KeaCgUpdateChunks KeaTrialChunks KeaSetUpRowChunks KeaWarmStartRowChunks \
 KeaFactorBlockChunks"
+# serial parts printed for reference (not counted as in tasks): the packs' scatter (K41's four-contact
+# packs add into bodies that packs share, so a split solve runs it on its driver alone)
+SERIAL="KeaPacksScatter"
 run() { # steps out
     valgrind --tool=callgrind --callgrind-out-file="$2" --toggle-collect=karma_step "$BIN" \
         --variants="$KARMA_VARIANT" --scenes="$SCENE" --steps="$1" --threads=1 >/dev/null 2>&1
 }
 # inclusive instructions of each function named in $TASKS, and the total (first line), from output $1
 costs() {
-    callgrind_annotate --inclusive=yes --threshold=100 "$1" 2>/dev/null | awk -v list="$TASKS" '
+    callgrind_annotate --inclusive=yes --threshold=100 "$1" 2>/dev/null | awk -v list="$TASKS $SERIAL" '
         BEGIN { n = split(list, f, " ") }
         /PROGRAM TOTALS/ { gsub(",", "", $1); total = $1 }
         { for (i = 1; i <= n; i++) if (!(f[i] in v) && $0 ~ (":" f[i] "( |$)")) { x = $1; gsub(",", "", x); v[f[i]] = x } }
@@ -50,11 +53,15 @@ run $((FROM - 1)) "$work/a.out"
 run "$TO" "$work/b.out"
 costs "$work/a.out" >"$work/a.txt"
 costs "$work/b.out" >"$work/b.txt"
-join "$work/a.txt" "$work/b.txt" | awk -v steps=$((TO - FROM + 1)) -v n="$THREADS" -v scene="$SCENE" '
-    { d[$1] = ($3 - $2) / steps; if ($1 != "TOTAL") { w += d[$1]; line = line sprintf(" %s %.0f", $1, d[$1]) } }
+join "$work/a.txt" "$work/b.txt" | awk -v steps=$((TO - FROM + 1)) -v n="$THREADS" -v scene="$SCENE" -v serial="$SERIAL" '
+    BEGIN { ns = split(serial, sf, " "); for (i = 1; i <= ns; i++) isSerial[sf[i]] = 1 }
+    { d[$1] = ($3 - $2) / steps
+      if ($1 in isSerial) { sline = sline sprintf(" %s %.0f", $1, d[$1]) }
+      else if ($1 != "TOTAL") { w += d[$1]; line = line sprintf(" %s %.0f", $1, d[$1]) } }
     END {
         t = d["TOTAL"]
         printf "%s, steps in window: %.0f instructions a step, %.0f in tasks (%.1f %%), bound at %d threads %.2fx\n",
                scene, t, w, 100 * w / t, n, t / (t - w + w / n)
         print "  by task per step:" line
+        print "  serial, per step:" sline
     }'

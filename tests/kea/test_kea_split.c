@@ -209,6 +209,7 @@ static void any_schedule_gives_the_same_bits(void **state)
         make_pile(&t, 31000 + (uint64_t)seed, 1500 + 300 * seed, 300 + 50 * seed);
         assert_int_not_equal(solve(&t, &inline_, &reference), KeaStatusBadInput);
         assert_true(reference.stats.colours > 2);
+        assert_true(reference.stats.subspaceSteps > 0); /* SM ran: its packs' chunks (1500+ contacts: 12+) too */
         overflowSeen |= reference.stats.colours > KEA_COLOUR_COUNT;
         for (s = 0; s < (int)(sizeof schedules / sizeof schedules[0]); ++s) {
             Hook hook;
