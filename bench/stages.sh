@@ -18,6 +18,9 @@
 # whose solve is one partition (the pile's heap; SINGLE_PARTITION=yes|no overrides the guess from the
 # name), since one partition is one item.
 #
+# A split partition (KARMA_SPLIT_ROWS) runs as one task whose helpers spin between its stages, which
+# callgrind counts as work: for it use bench/split_share.sh.
+#
 # Arguments: SCENES ("ragdolls pile"), STEPS (120), THREADS for the bound (2); KARMA_VARIANT
 # (environment, default nosleep). Uses BUILD (default build/bench), built if needed.
 set -euo pipefail

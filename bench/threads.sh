@@ -10,8 +10,10 @@
 #   bash bench/threads.sh "ragdolls pile" 2 8 300
 #
 # Arguments: SCENES ("ragdolls pile"), THREADS (2), PAIRS (5), STEPS (300; each run's step count);
-# KARMA_VARIANT (environment, default nosleep: every body awake). Uses BUILD (default build/bench),
-# which it builds if needed.
+# KARMA_VARIANT (environment, default nosleep: every body awake); KARMA_SPLIT_ROWS (environment,
+# default 2000; empty: off) splits every iterative partition of that many rows over the threads
+# (MdtWorldSetPartitionSplitRows: the pile's heap), in both runs of a pair. Uses BUILD (default
+# build/bench), which it builds if needed.
 #
 # STEP_MIN=1 (environment) measures differently, for a loaded machine: each of the PAIRS rounds runs
 # both thread counts with every step's wall time (--step-times); a step does the same work in every
@@ -27,6 +29,7 @@ THREADS=${2:-2}
 PAIRS=${3:-5}
 STEPS=${4:-300}
 KARMA_VARIANT=${KARMA_VARIANT:-nosleep}
+export KARMA_SPLIT_ROWS=${KARMA_SPLIT_ROWS-2000}
 BUILD=${BUILD:-build/bench}
 for n in "$THREADS" "$PAIRS" "$STEPS"; do
     if ! [[ "$n" =~ ^[1-9][0-9]*$ ]]; then

@@ -8,7 +8,8 @@
 #   asan    build/asan    Debug, KARMA_SANITIZE=ON (AddressSanitizer + UBSan, no recovery)
 #   tsan    build/tsan    Debug, KARMA_TSAN=ON (ThreadSanitizer): only the library and the tests of
 #                         threads (tests/threads: universes on threads, the step on a thread pool,
-#                         the fallback counter on a pool),
+#                         the fallback counter on a pool; test_kea_split and determinism_split on
+#                         2 threads: one partition split),
 #                         to keep its time small
 #   coverage build/coverage Debug, KARMA_COVERAGE=ON (gcov): the solver's tests (kea, bcl, mdt,
 #                         analytic, determinism), then gcovr fails it when line coverage of the Kea
@@ -47,8 +48,8 @@ for config in "${configs[@]}"; do
     targets=()
     select=()
     if [ "$config" = tsan ]; then
-        targets=(--target test_threads test_threaded_step test_threaded_fallbacks test_thread_pool)
-        select=(-R '^test_thread(s|ed_step|ed_fallbacks|_pool)$')
+        targets=(--target test_threads test_threaded_step test_threaded_fallbacks test_thread_pool test_kea_split test_determinism_split_threads2)
+        select=(-R '^test_thread(s|ed_step|ed_fallbacks|_pool)$|^test_kea_split$|^test_determinism_split_threads2$')
     elif [ "$config" = coverage ]; then
         select=(-R '^test_(kea|determinism|analytic)|^test_(carwheel|chain|constraint_common|contact|hinge|joint|pendulum|prismatic|world_body|main_loop|matrix_capping|auto_disable|sim_check|stacking)')
     fi

@@ -49,6 +49,9 @@
  *
  * Threads: with --threads=N above 1 the universe steps on a MeThreadPool of N threads (karma_threads,
  * MeThreadPoolAttachUniverse), made once for the process; the trajectories are the same for any N.
+ * KARMA_SPLIT_ROWS=R in the environment splits every iterative partition of at least R rows over the
+ * threads (MdtWorldSetPartitionSplitRows: the pile's heap); its trajectories differ from the unsplit
+ * ones, but are again the same for any N (one thread included).
  *
  * Profile: with KARMA_BENCH_PROFILE=1 in the environment, each run prints to stderr the time per step
  * of every profile section (MstUniverseGetProfile: Collision = Farfield + Nearfield;
@@ -324,6 +327,9 @@ static void *karma_create(const BenchScene *scene, MeBool autoDisable)
     }
     MdtWorldSetGravity(w->world, (MeReal)scene->gravity[0], (MeReal)scene->gravity[1], (MeReal)scene->gravity[2]);
     MdtWorldSetAutoDisable(w->world, autoDisable);
+    const char *splitRows = getenv("KARMA_SPLIT_ROWS");
+    if (splitRows && *splitRows)
+        MdtWorldSetPartitionSplitRows(w->world, atoi(splitRows));
     double heavy = heaviest_jointed_mass(scene);
     if (heavy > 100 * (double)sizes.massScale) /* joints on bodies past Karma's mass range: ε for them */
         MdtWorldSetEpsilon(w->world, (MeReal)((double)MDTWORLD_DEFAULT_EPSILON / heavy));

@@ -119,6 +119,9 @@ typedef struct MdtSolverStats {
     int unconverged;         /**< partitions that stopped at a cap (iterations, pivots) */
     MeReal maxResidual;      /**< largest residual (m/s: how far a row's velocity is from what the
                                   constraint asks), over partitions */
+    int splitPartitions;     /**< not in Karma 1.2: iterative partitions split over the workers
+                                  (MdtWorldSetPartitionSplitRows) */
+    int maxColours;          /**< not in Karma 1.2: most colours of a split partition */
 } MdtSolverStats;
 /** Fill `stats` with what the last step's solver did (partitions, rows, iterations); then the
  *  solver settings: method, largest direct partition (rows), tolerance. */
@@ -129,6 +132,9 @@ ME_API MdtLCPSolver MdtWorldGetLCPSolver(MdtWorldID w);
 ME_API int MdtWorldGetMaxDirectRows(MdtWorldID w);
 /** Residual (m/s) at which the iterative solver stops; 0 for an invalid ID. */
 ME_API MeReal MdtWorldGetLCPTolerance(MdtWorldID w);
+/** Rows from which an iterative partition is split over the workers (MdtWorldSetPartitionSplitRows);
+ *  0 (never) by default and for an invalid ID. */
+ME_API int MdtWorldGetPartitionSplitRows(MdtWorldID w);
 
 /* ---- mutators ----------------------------------------------------------------------------- */
 /** Gravity acceleration (m/s²); default (0,0,0). */
@@ -174,6 +180,14 @@ ME_API void MdtWorldSetLCPSolver(MdtWorldID w, MdtLCPSolver solver);
  *  four times this many rows it also does when the ordered factor costs no more than a dense one of
  *  this size (decision K26). 0: always iterative. Default 128. */
 ME_API void MdtWorldSetMaxDirectRows(MdtWorldID w, int rows);
+/** Not in Karma 1.2. Split every partition of at least `rows` rows that the iterative solver takes:
+ *  its constraints coloured so that no two of a colour share a body, each sweep colour by colour, a
+ *  colour's constraints over the task system's workers (MdtTaskSystem.h), so that one large partition
+ *  (a pile) uses every core. The results are the same bits for any worker count, one included, but
+ *  the sweep order is the colours', so a split partition's trajectory differs from the unsplit one's
+ *  (decision K42). 0 = never, the default; rows < 0 is refused (ME_ERR_ARGUMENT_RANGE). A few
+ *  thousand rows is where the split pays on two cores (docs/kea.md). */
+ME_API void MdtWorldSetPartitionSplitRows(MdtWorldID w, int rows);
 /** The iterative solver stops early once its residual is below this (m/s, > 0). Default 1e-6. */
 ME_API void MdtWorldSetLCPTolerance(MdtWorldID w, MeReal tolerance);
 /** Called when the world enables a body (also by the partitioner) / disables one (auto-disable). */

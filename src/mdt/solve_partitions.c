@@ -41,7 +41,8 @@ typedef struct PartitionResult {
 /* What the solve task shares: read-only during the task but for the partitions' own slices. */
 typedef struct SolveTask {
     MdtWorldData *w;
-    const KeaParameters *kea;  /* the world's, with the step's rest speed for the extra effort */
+    const KeaParameters *kea;  /* the world's, with the step's rest speed for the extra effort and the
+                                  world's task system as Kea's task hook (a split partition's) */
     unsigned char *workspaces; /* workerCount workspaces of `need` bytes each */
     size_t need;
     int workers;
@@ -94,16 +95,31 @@ static void solvePartition(MdtWorldData *w, const KeaParameters *kea, int p, voi
     }
 }
 
+/* Whether Kea splits partition p over the workers (MdtWorldSetPartitionSplitRows): it is then solved
+ * on its own after the other partitions, on the stepping thread, handing its sweeps' chunks to the
+ * task system. */
+static MeBool splitPartition(const MdtWorldData *w, const KeaParameters *kea, int p)
+{
+    int rows = w->rows.partitionRowStart[p + 1] - w->rows.partitionRowStart[p];
+    return rows > 0 && KeaSplits(rows, kea);
+}
+
 /* The task: partitions [start, end) on worker `worker`'s workspace (MdtRunStepTask checks the
- * range and the worker index). */
+ * range and the worker index); split partitions wait for the stepping thread. */
 static void solveTask(int start, int end, int worker, void *data)
 {
     SolveTask *t = data;
     const MdtStepRows *r = &t->w->rows;
     void *workspace = t->workspaces + (size_t)worker * t->need;
     for (int p = start; p < end; p++)
-        if (r->partitionRowStart[p + 1] > r->partitionRowStart[p])
+        if (r->partitionRowStart[p + 1] > r->partitionRowStart[p] && !splitPartition(t->w, t->kea, p))
             solvePartition(t->w, t->kea, p, workspace, t->need, &t->results[p]);
+}
+
+/* Kea's task hook (KeaTaskHook): a split partition's chunks as a step task over the world's workers. */
+static void runKeaTask(KeaTaskFn task, int itemCount, int minRange, void *data, void *user)
+{
+    MdtRunStepTask(user, task, itemCount, minRange, data);
 }
 
 /* A partition's statistics into the step's, and its messages, in partition order. */
@@ -123,6 +139,10 @@ static void gatherPartition(MdtWorldData *w, int p, const KeaStats *ks)
         stats->iterativePartitions++;
     stats->iterations += ks->iterations;
     stats->pivots += ks->pivots;
+    if (ks->colours > 0)
+        stats->splitPartitions++;
+    if (ks->colours > stats->maxColours)
+        stats->maxColours = ks->colours;
     if (status != KeaStatusOk)
         stats->unconverged++;
     if (ks->residual > stats->maxResidual)
@@ -156,14 +176,27 @@ void MdtSolveStage(MdtWorldData *w)
     if (r->count == 0)
         return;
 
+    /* The extra effort's rest speed is above what gravity adds in this step (kea_tuning.h); a split
+     * partition's sweeps go to the world's workers. */
+    KeaParameters kea = w->kea;
+    if (kea.effortRestSpeed > 0)
+        kea.effortRestSpeed += MeVector3Magnitude(w->gravity) * w->stepSize;
+    kea.tasks.run = runKeaTask;
+    kea.tasks.user = w;
+    kea.tasks.workers = w->enqueueTask ? w->workerCount : 1;
+    kea.tasks.perStage = 0;
+
     /* One workspace per worker, for the largest partition; then one result per partition. */
     size_t need = 0;
+    int splits = 0;
     for (int p = 0; p < out->partitionCount; p++) {
         int rows = r->partitionRowStart[p + 1] - r->partitionRowStart[p];
         int bodies = out->partitionStart[p + 1] - out->partitionStart[p];
         if (rows == 0)
             continue;
-        size_t bytes = KeaMemoryRequired(rows, bodies, KeaSelectPath(rows, &w->kea));
+        size_t bytes = KeaMemoryRequired(rows, bodies, KeaSelectPath(rows, &kea)) +
+                       KeaSplitMemoryRequired(rows, bodies, &kea);
+        splits += splitPartition(w, &kea, p);
         if (bytes > need)
             need = bytes;
     }
@@ -179,13 +212,14 @@ void MdtSolveStage(MdtWorldData *w)
     task.workspaces = mem;
     task.results = (PartitionResult *)(mem + cacheLines(workspaceBytes));
     memset(task.results, 0, resultBytes);
-    /* The extra effort's rest speed is above what gravity adds in this step (kea_tuning.h). */
-    KeaParameters kea = w->kea;
-    if (kea.effortRestSpeed > 0)
-        kea.effortRestSpeed += MeVector3Magnitude(w->gravity) * w->stepSize;
     task.kea = &kea;
 
     MdtRunStepTask(w, solveTask, out->partitionCount, 1, &task);
+    /* Split partitions, one after the other, on worker 0's workspace (no task runs any more), each
+     * handing its sweeps to the workers. */
+    for (int p = 0; p < out->partitionCount && splits > 0; p++)
+        if (splitPartition(w, &kea, p))
+            solvePartition(w, &kea, p, task.workspaces, task.need, &task.results[p]);
 
     for (int p = 0; p < out->partitionCount; p++)
         if (r->partitionRowStart[p + 1] > r->partitionRowStart[p])

@@ -506,6 +506,22 @@ int MdtWorldGetMaxDirectRows(MdtWorldID id)
     return w->kea.maxDirectRows;
 }
 
+int MdtWorldGetPartitionSplitRows(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, 0);
+    return w->kea.splitRows;
+}
+
+void MdtWorldSetPartitionSplitRows(MdtWorldID id, int rows)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    if (rows < 0) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'rows' (%d) must not be negative", rows);
+        return;
+    }
+    w->kea.splitRows = rows;
+}
+
 MeReal MdtWorldGetLCPTolerance(MdtWorldID id)
 {
     WORLD_OR_RETURN(w, id, 0);

@@ -27,7 +27,24 @@
 
 #define HASH_EVERY 10
 
-#if KARMA_DOUBLE
+#ifndef KARMA_TEST_SPLIT
+#  define KARMA_TEST_SPLIT 0
+#endif
+
+#if KARMA_TEST_SPLIT
+/* determinism_split (determinism.cmake): the same scenes with every partition of at least SPLIT_ROWS
+ * rows split over the workers (MdtWorldSetPartitionSplitRows: coloured sweeps), built at -O0 and -O2
+ * and run on pools of 2 and 4 threads; the colours' order makes trajectories of their own, the same
+ * for every worker count. */
+#  define SPLIT_ROWS 100
+#  if KARMA_DOUBLE
+#    define GOLDEN_PILE 0x179d06832d394e9dull
+#    define GOLDEN_PYRAMID 0x5bd4ef4e6df1fcf3ull
+#  else
+#    define GOLDEN_PILE 0x26be2e14b3ab5cb8ull
+#    define GOLDEN_PYRAMID 0xc665a950f4a1afb5ull
+#  endif
+#elif KARMA_DOUBLE
 #  define GOLDEN_PILE 0x723b3f95c4e4629cull
 #  define GOLDEN_PYRAMID 0x9c370eda546c0820ull
 #else
@@ -43,6 +60,7 @@ typedef struct RunStats {
     int iterativePartitions; /**< partitions solved iteratively, summed over steps */
     int directPartitions;   /**< partitions solved exactly, summed over steps (must stay 0) */
     int mostRowsInPartition;
+    int splitPartitions;    /**< partitions split over the workers, summed over steps */
 } RunStats;
 
 /** A universe with z up, gravity 9.81 m/s², a ground plane and Coulomb friction mu everywhere. */
@@ -61,6 +79,9 @@ static MstUniverseID makeUniverse(unsigned bodies, unsigned constraints, MeReal 
     MdtWorldSetGravity(w, 0, 0, ME_R(-9.81));
     MdtWorldSetLCPSolver(w, MdtLCPSolverIterative);
     MdtWorldSetAutoDisable(w, MEFALSE); /* every step solves the whole scene */
+#if KARMA_TEST_SPLIT
+    MdtWorldSetPartitionSplitRows(w, SPLIT_ROWS);
+#endif
     McdFrameworkID fw = MstUniverseGetFramework(u);
     assert_non_null(MstFixedModelCreate(u, McdPlaneCreate(fw), groundTM));
     MdtContactParamsID p = MstBridgeGetContactParams(MstUniverseGetBridge(u), 0, 0);
@@ -91,6 +112,7 @@ static uint64_t runUniverse(MstUniverseID u, int steps, MeBool trace, RunStats *
         MdtWorldGetSolverStats(w, &s);
         stats->iterativePartitions += s.iterativePartitions;
         stats->directPartitions += s.directPartitions;
+        stats->splitPartitions += s.splitPartitions;
         if (s.maxPartitionRows > stats->mostRowsInPartition)
             stats->mostRowsInPartition = s.maxPartitionRows;
         int contacts = MstBridgeGetLastContactCount(MstUniverseGetBridge(u));
@@ -208,6 +230,7 @@ static void pile_iterative_same_hash_twice_and_golden(void **state)
     assert_true(s1.iterativePartitions > PILE_STEPS);
     assert_int_equal(s1.directPartitions, 0);
     assert_true(s1.mostRowsInPartition > 300);
+    assert_true(KARMA_TEST_SPLIT ? s1.splitPartitions > PILE_STEPS / 2 : s1.splitPartitions == 0);
     /* Nothing fell through the ground: the lowest body point is its centre, at least 0.1 m up less
      * a few centimetres of penetration. */
     assert_true(lowest1 > ME_R(0.05));
@@ -228,6 +251,7 @@ static void pyramid_iterative_same_hash_twice_and_golden(void **state)
     assert_true(s1.mostContacts >= 4 * 28);
     assert_true(s1.iterativePartitions >= PYRAMID_STEPS);
     assert_int_equal(s1.directPartitions, 0);
+    assert_true(KARMA_TEST_SPLIT ? s1.splitPartitions >= PYRAMID_STEPS : s1.splitPartitions == 0);
     /* The pyramid stands: the bricks settle by the 1 cm gaps and a little penetration, no more. */
     assert_true(drift1 < ME_R(0.1));
     assert_true(first == second);

@@ -120,6 +120,27 @@ typedef enum KeaStatus {
     KeaStatusBadInput = 5        /**< invalid problem (index out of range, lo > hi, eps < 0, NaN) */
 } KeaStatus;
 
+/** A range of a task: items [start, end) on worker `worker` (0 <= worker < KeaTaskHook.workers). */
+typedef void (*KeaTaskFn)(int start, int end, int worker, void *data);
+
+/** How Kea hands work to the caller's workers (the split solve, KeaParameters.splitRows): run(task,
+ *  itemCount, minRange, data, user) must run task over every item of [0, itemCount) exactly once, in
+ *  ranges of at least minRange items (but the last), each range with a worker index in [0, workers)
+ *  that no other range runs at the same time, and return when all have run. run NULL or workers <= 1:
+ *  Kea runs the items itself, in order, as worker 0. The results are the same bits either way. */
+typedef struct KeaTaskHook {
+    void (*run)(KeaTaskFn task, int itemCount, int minRange, void *data, void *user);
+    void *user;    /**< handed to run */
+    int workers;   /**< how many worker indices run may use, 1 .. KEA_MAX_WORKERS */
+    int perStage;  /**< 0 (default): one task of `workers` items for the whole solve, whose items
+                        spin-wait for the next stage (kea_split.c, "the team"); 1: one run call per
+                        stage (a colour of a sweep, a loop of SM), no item waiting for another: for
+                        task systems whose tasks must not block, at a hand-out per stage */
+} KeaTaskHook;
+
+/** Most workers a split solve uses (KeaTaskHook.workers). */
+#define KEA_MAX_WORKERS 64
+
 /** Solver settings; fill with KeaParametersDefault, then change what you need. */
 typedef struct KeaParameters {
     KeaPath path;           /**< method; default KeaPathAuto */
@@ -151,6 +172,14 @@ typedef struct KeaParameters {
                                  where the pivots left it (larger, tree-like ones stay exact);
                                  0 = never, the default here (the world sets KEA_AUTO_PIVOTS_PER_ROW;
                                  docs/kea.md, "Worst frames") */
+    int splitRows;          /**< iterative: a partition of at least this many rows is split (kea_split.c):
+                                 its blocks coloured so that no two of a colour share a body, and each
+                                 sweep taken colour by colour, a colour's blocks over the workers of
+                                 `tasks`; SM, the set-up and the residual run over fixed chunks. The
+                                 sweep order is then the colours' for any worker count (one included),
+                                 so the result differs from the unsplit solve's but not between worker
+                                 counts. 0 = never, the default */
+    KeaTaskHook tasks;      /**< the caller's workers for a split solve; default none (run NULL) */
 } KeaParameters;
 
 /** What a solve did. */
@@ -172,6 +201,8 @@ typedef struct KeaStats {
     int factorizations; /**< direct: full Cholesky factorisations */
     int regularised;    /**< direct: free-block pivots raised to the floor (A near singular) */
     MeReal residual;    /**< natural-map residual of the returned x (top comment), velocity units */
+    int colours;        /**< iterative, split (KeaParameters.splitRows): the blocks' colours (the
+                             overflow colour counted when used); 0 when not split */
 } KeaStats;
 
 /** Default settings (see the field comments). */
@@ -186,10 +217,21 @@ KeaPath KeaSelectPath(int nRows, const KeaParameters *params);
  *  (KeaPathAuto: enough for either path). Independent of alignment: any buffer of this size works. */
 size_t KeaMemoryRequired(int nRows, int nBodies, KeaPath path);
 
+/** Whether KeaSolve splits a partition of nRows rows under params (KeaParameters.splitRows: it may
+ *  take the iterative path and has at least splitRows rows). */
+int KeaSplits(int nRows, const KeaParameters *params);
+
+/** Bytes a split solve (KeaParameters.splitRows) needs on top of KeaMemoryRequired: the colouring,
+ *  the chunks' partial sums and one block scratch per worker of params->tasks; 0 when params do not
+ *  split a partition of nRows rows. */
+size_t KeaSplitMemoryRequired(int nRows, int nBodies, const KeaParameters *params);
+
 /** Solve one partition. x (nRows) receives the impulses; dv (nBodies, may be NULL) the velocity
  *  changes M^-1 J^T x; stats (may be NULL) what happened. workspace: at least
- *  KeaMemoryRequired(nRows, nBodies, KeaSelectPath(nRows, params)) bytes. No allocation, no
- *  messages: the status says what went wrong. Deterministic: rows are visited in index order.
+ *  KeaMemoryRequired(nRows, nBodies, KeaSelectPath(nRows, params)) + KeaSplitMemoryRequired(nRows, nBodies,
+ *  params) bytes. No allocation, no
+ *  messages: the status says what went wrong. Deterministic: rows are visited in index order (a split
+ *  solve: in its colours' order, the same bits for any worker count).
  *  Seven arguments: the problem, how to solve it, the caller's memory and the three outputs, each
  *  owned by a different party (the world, its settings, its arena, its bodies), so no struct would
  *  group them without the caller copying into it. */

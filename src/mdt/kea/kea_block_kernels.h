@@ -130,7 +130,12 @@ static inline void KeaBlockApplyDeltas(KeaIterativeWork *w, int s, int m, MeReal
         w->localD[r] = w->localX[r] - x[s + r];
         *decrease -= ME_R(0.5) * w->localD[r] * w->localW[r];
     }
-    KeaBlockScatter(m, &w->B[s], w->localD, &w->dv[w->body[s][0]], &w->dv[w->body[s][1]]);
+    /* the world's half (dv[nb], all zero) is not written: a split sweep's blocks on the world run at once */
+    if (w->body[s][0] != w->nb)
+        KeaBlockScatter(m, &w->B[s], w->localD, &w->dv[w->body[s][0]],
+                        w->body[s][1] == w->nb ? NULL : &w->dv[w->body[s][1]]);
+    else if (w->body[s][1] != w->nb)
+        KeaBlockScatterHalf1(m, &w->B[s], w->localD, &w->dv[w->body[s][1]]);
     for (r = 0; r < m; ++r)
         if (w->localD[r] != ME_R(0.0))
             x[s + r] = w->localX[r];

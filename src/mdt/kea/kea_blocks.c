@@ -14,7 +14,6 @@ void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIte
     w->blockStart = KEA_ALLOC(arena, int, n + 1);
     w->blockMatrix = KEA_ALLOC(arena, int, n);
     w->blockA = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)cap);
-    w->blockL = KEA_ALLOC(arena, MeReal, (size_t)cap * (size_t)cap);
     w->blockInv = KEA_ALLOC(arena, MeReal, (size_t)n * (size_t)cap);
     w->blockFactored = KEA_ALLOC(arena, unsigned char, n);
     w->blockContact = KEA_ALLOC(arena, unsigned char, n);
@@ -49,6 +48,8 @@ void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIte
     w->dv = KEA_ALLOC(arena, KeaVel4, nb + 1);
     w->dvTmp = KEA_ALLOC(arena, KeaVel4, nb + 1);
     w->bodyColumns = KEA_ALLOC(arena, KeaBodyColumns, nb);
+    w->nb = nb;
+    w->split = NULL;
 }
 
 size_t KeaIterativeWorkspaceBytes(int nRows, int nBodies)
@@ -177,18 +178,17 @@ static void KeaFormBlockMatrix(const KeaProblem *problem, KeaIterativeWork *w, i
     }
 }
 
-/* Split the rows into blocks and form each block's matrix A_bb = J_b M^-1 J_b^T + diag(eps) from the
- * rows' B = M^-1 J^T, its factor and its inverse. A declared contact (KeaContact) is a block of its
- * own, solved by the contact step (blockContact set); the generic rows between contacts are split
- * by KeaGenericBlockRows. With cap < 3 (scalar PGS asked for) contacts are generic rows too. */
-void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
+/* The blocks' boundaries, kinds and matrix offsets (a few operations per block, in row order): a
+ * declared contact (KeaContact) is a block of its own, solved by the contact step (blockContact set);
+ * the generic rows between contacts are split by KeaGenericBlockRows. With cap < 3 (scalar PGS asked
+ * for) contacts are generic rows too. */
+static void KeaFindBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
 {
     const int n = problem->nRows, nContacts = cap >= 3 ? problem->nContacts : 0;
     int i = 0, offset = 0, c = 0;
     w->nBlocks = 0;
     w->nContactBlocks = 0;
     while (i < n) {
-        const int *b = problem->rowBodies[i];
         const int contact = c < nContacts && problem->contacts[c].row == i;
         const int m = contact ? 3 : KeaGenericBlockRows(problem, i, cap, c < nContacts ? problem->contacts[c].row : n);
         int r;
@@ -196,28 +196,68 @@ void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
         w->blockMatrix[w->nBlocks] = offset;
         for (r = 0; r < m; ++r)
             w->rowBlock[i + r] = w->nBlocks;
-        KeaFormBlockMatrix(problem, w, i, m, b, w->blockA + offset);
-        w->blockFactored[w->nBlocks] = 0;
-        if (m == 3) { /* a contact or a ball joint: the same arithmetic, unrolled */
-            w->blockFactored[w->nBlocks] = (unsigned char)KeaCholeskyDenseInline(3, w->blockA + offset, w->blockL);
-            if (w->blockFactored[w->nBlocks])
-                KeaBlockInvert(3, w->blockL, w->blockInv + offset);
-            offset += 9;
-        } else if (m > 1) {
-            w->blockFactored[w->nBlocks] = (unsigned char)KeaCholeskyDense(m, w->blockA + offset, w->blockL);
-            if (w->blockFactored[w->nBlocks])
-                KeaBlockInvert(m, w->blockL, w->blockInv + offset);
-            offset += m * m;
-        }
         w->blockContact[w->nBlocks] = 0;
         if (contact) {
-            w->blockContact[w->nBlocks] = b[1] < 0 ? KEA_CONTACT_WORLD : KEA_CONTACT_BODIES;
+            w->blockContact[w->nBlocks] = problem->rowBodies[i][1] < 0 ? KEA_CONTACT_WORLD : KEA_CONTACT_BODIES;
             ++w->nContactBlocks;
             ++c;
         }
+        offset += m == 3 ? 9 : (m > 1 ? m * m : 0);
         ++w->nBlocks;
         i += m;
     }
     w->blockStart[w->nBlocks] = n;
     w->nPacks = -1; /* SM builds them when it first runs (kea_contact_packs.h) */
+}
+
+/* Blocks [b0, b1): each one's matrix A_bb = J_b M^-1 J_b^T + diag(eps) from the rows' B = M^-1 J^T,
+ * its factor and its inverse. Each block writes
+ * only its own entries, so blocks may be set up in any order, on any worker. */
+static void KeaFactorBlocks(const KeaProblem *problem, KeaIterativeWork *w, int b0, int b1)
+{
+    MeReal L[KEA_MAX_BLOCK_ROWS * KEA_MAX_BLOCK_ROWS]; /* the block's Cholesky factor */
+    int b;
+    for (b = b0; b < b1; ++b) {
+        const int i = w->blockStart[b], m = w->blockStart[b + 1] - i, offset = w->blockMatrix[b];
+        w->blockFactored[b] = 0;
+        KeaFormBlockMatrix(problem, w, i, m, problem->rowBodies[i], w->blockA + offset);
+        if (m == 3) { /* a contact or a ball joint: the same arithmetic, unrolled */
+            w->blockFactored[b] = (unsigned char)KeaCholeskyDenseInline(3, w->blockA + offset, L);
+            if (w->blockFactored[b])
+                KeaBlockInvert(3, L, w->blockInv + offset);
+        } else if (m > 1) {
+            w->blockFactored[b] = (unsigned char)KeaCholeskyDense(m, w->blockA + offset, L);
+            if (w->blockFactored[b])
+                KeaBlockInvert(m, L, w->blockInv + offset);
+        }
+    }
+}
+
+typedef struct KeaBlocksTask {
+    const KeaProblem *problem;
+    KeaIterativeWork *w;
+} KeaBlocksTask;
+
+static void KeaFactorBlockChunks(int start, int end, int worker, void *data)
+{
+    const KeaBlocksTask *t = data;
+    const int last = t->w->nBlocks;
+    (void)worker;
+    KeaFactorBlocks(t->problem, t->w, start * KEA_SPLIT_BLOCKS,
+                    end * KEA_SPLIT_BLOCKS < last ? end * KEA_SPLIT_BLOCKS : last);
+}
+
+/* Split the rows into blocks (KeaFindBlocks), then set up each block (KeaFactorBlocks): in a split
+ * solve in chunks of KEA_SPLIT_BLOCKS blocks over the workers. */
+void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap)
+{
+    KeaBlocksTask t;
+    KeaFindBlocks(problem, w, cap);
+    if (!w->split) {
+        KeaFactorBlocks(problem, w, 0, w->nBlocks);
+        return;
+    }
+    t.problem = problem;
+    t.w = w;
+    KeaSplitRun(w->split, KeaFactorBlockChunks, (w->nBlocks + KEA_SPLIT_BLOCKS - 1) / KEA_SPLIT_BLOCKS, &t);
 }

@@ -157,10 +157,10 @@ void KeaPacksPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *
         KeaPackPrecondition(&packs[k], res + KEA_PACK_POSITIONS * k, z + KEA_PACK_POSITIONS * k);
 }
 
-void KeaPacksClearMasked(const KeaIterativeWork *w, MeReal *v)
+void KeaPacksClearMasked(const KeaIterativeWork *w, MeReal *v, int first, int last)
 {
     int k, r, l;
-    for (k = 0; k < w->nPacks; ++k)
+    for (k = first; k < last; ++k)
         for (r = 0; r < 3; ++r)
             for (l = 0; l < KEA_PACK_LANES; ++l)
                 if (w->packs[k].mask[r][l] == ME_R(0.0))

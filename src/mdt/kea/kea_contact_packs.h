@@ -182,7 +182,7 @@ void KeaPacksGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, i
 void KeaPacksScatter(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, int first, int last);
 /* z = A_bb^-1 res per contact over the packs' positions. */
 void KeaPacksPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z, int first, int last);
-/* v[p] = 0 at every masked row's position. */
-void KeaPacksClearMasked(const KeaIterativeWork *w, MeReal *v);
+/* v[p] = 0 at every masked row's position of packs first ... last - 1. */
+void KeaPacksClearMasked(const KeaIterativeWork *w, MeReal *v, int first, int last);
 
 #endif

@@ -79,6 +79,49 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
     return worst;
 }
 
+/* One block's step in a sweep (the contact step, the generic block step, or a lone row's scalar
+ * update); returns the block's largest row residual before its step (0 when not measured). A row's
+ * half on the world (dv[nb]) is not written: it stays zero, and a split sweep's blocks on the world
+ * run at once. Always inlined into its two sweeps, so that the contact step stays inlined. */
+KEA_ALWAYS_INLINE MeReal KeaSweepBlock(const KeaProblem *problem, KeaIterativeWork *w,
+                                                                  int block, MeReal *x, KeaSweepState *sweep,
+                                                                  MeReal omega)
+{
+    const int i = w->blockStart[block];
+    MeReal lo, hi, wi, xNew, r;
+    if (w->blockContact[block])
+        return KeaContactBlockStep(problem, w, block, x, sweep);
+    if (w->blockStart[block + 1] - i > 1) {
+        /* a copy: the generic step is not inlined, and sweep's address given to it would keep
+         * sweep in memory for the contact steps too */
+        KeaSweepState blockSweep = *sweep;
+        r = KeaBlockStep(problem, w, block, x, &blockSweep);
+        sweep->decrease = blockSweep.decrease;
+        return r;
+    }
+    if (w->invDiag[i] == ME_R(0.0))
+        return ME_R(0.0);
+    KeaRowBoundsInline(problem, x, i, &lo, &hi);
+    wi = KeaRowW(problem, w, i, x, &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
+    r = w->diag[i] * KeaFabs(x[i] - KeaClamp(x[i] - wi * w->invDiag[i], lo, hi));
+    xNew = KeaClamp(x[i] - omega * wi * w->invDiag[i], lo, hi);
+    if (xNew != x[i]) {
+        const KeaJacobianRow *B = &w->B[i];
+        sweep->decrease -= ME_R(0.5) * (xNew - x[i]) * wi;
+        if (w->body[i][0] != w->nb)
+            KeaHalfApply4(B->lin0, B->ang0, xNew - x[i], &w->dv[w->body[i][0]]);
+        if (w->body[i][1] != w->nb)
+            KeaHalfApply4(B->lin1, B->ang1, xNew - x[i], &w->dv[w->body[i][1]]);
+        x[i] = xNew;
+    }
+    return r;
+}
+
+static MeReal KeaSweepOmega(const KeaParameters *params)
+{
+    return params->sor > ME_R(0.0) && params->sor < ME_R(2.0) ? params->sor : ME_R(1.0);
+}
+
 /* One PGS sweep over the blocks, forwards or backwards; returns the largest residual met (the rows'
  * residuals before their steps). Only whether that is within `measureUpTo` (the tolerance, or the
  * extra effort's threshold in a round's last sweep) matters, so once a row is above it the block
@@ -88,7 +131,7 @@ static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int b
 KEA_NOINLINE MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
                              MeReal *x, KeaStats *stats, int backward, MeReal measureUpTo)
 {
-    const MeReal omega = params->sor > ME_R(0.0) && params->sor < ME_R(2.0) ? params->sor : ME_R(1.0);
+    const MeReal omega = KeaSweepOmega(params);
     MeReal worst = ME_R(0.0);
     KeaSweepState sweep;
     int k;
@@ -98,37 +141,100 @@ KEA_NOINLINE MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, con
     sweep.maxPasses = params->maxFrictionPasses;
     sweep.stats = stats;
     for (k = 0; k < w->nBlocks; ++k) {
-        const int block = backward ? w->nBlocks - 1 - k : k;
-        const int i = w->blockStart[block];
-        MeReal lo, hi, wi, xNew, r;
         sweep.measure = worst <= measureUpTo;
-        if (w->blockContact[block]) { /* one call site: the step is inlined into the sweep */
-            worst = KeaMax(worst, KeaContactBlockStep(problem, w, block, x, &sweep));
-            continue;
-        }
-        if (w->blockStart[block + 1] - i > 1) {
-            /* a copy: the generic step is not inlined, and sweep's address given to it would keep
-             * sweep in memory for the contact steps too */
-            KeaSweepState blockSweep = sweep;
-            worst = KeaMax(worst, KeaBlockStep(problem, w, block, x, &blockSweep));
-            sweep.decrease = blockSweep.decrease;
-            continue;
-        }
-        if (w->invDiag[i] == ME_R(0.0))
-            continue;
-        KeaRowBoundsInline(problem, x, i, &lo, &hi);
-        wi = KeaRowW(problem, w, i, x, &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
-        r = w->diag[i] * KeaFabs(x[i] - KeaClamp(x[i] - wi * w->invDiag[i], lo, hi));
-        worst = KeaMax(worst, r);
-        xNew = KeaClamp(x[i] - omega * wi * w->invDiag[i], lo, hi);
-        if (xNew != x[i]) {
-            sweep.decrease -= ME_R(0.5) * (xNew - x[i]) * wi;
-            KeaRowApply4(&w->B[i], xNew - x[i], &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
-            x[i] = xNew;
-        }
+        worst = KeaMax(worst, KeaSweepBlock(problem, w, backward ? w->nBlocks - 1 - k : k, x, &sweep, omega));
     }
     w->sweepDecrease = sweep.decrease;
     w->sweepChanged = sweep.changed;
+    return worst;
+}
+
+/* What a split sweep's chunks share (kea_iterative.h, "the split solve"). */
+typedef struct KeaSplitSweep {
+    const KeaProblem *problem;
+    KeaSplit *split;
+    MeReal *x;
+    MeReal omega, measureUpTo;
+    int backward, tally, maxPasses;
+    int firstChunk, lastChunk; /* the colour's chunks */
+} KeaSplitSweep;
+
+/* Chunk `chunk` of a colour on a worker's copy of the work: its blocks in sweep order, its tallies
+ * into its own record. */
+static void KeaSweepChunk(const KeaSplitSweep *t, int chunk, KeaIterativeWork *w)
+{
+    const KeaSplit *split = t->split;
+    const int first = split->chunkStart[chunk], count = split->chunkStart[chunk + 1] - first;
+    KeaSplitChunk *record = &split->chunks[chunk];
+    MeReal worst = ME_R(0.0);
+    KeaStats local;
+    KeaSweepState sweep;
+    int k;
+    memset(&local, 0, sizeof local);
+    sweep.decrease = ME_R(0.0);
+    sweep.changed = 0;
+    sweep.tally = t->tally;
+    sweep.maxPasses = t->maxPasses;
+    sweep.stats = &local;
+    for (k = 0; k < count; ++k) {
+        const int block = split->order[t->backward ? first + count - 1 - k : first + k];
+        sweep.measure = worst <= t->measureUpTo;
+        worst = KeaMax(worst, KeaSweepBlock(t->problem, w, block, t->x, &sweep, t->omega));
+    }
+    record->decrease = sweep.decrease;
+    record->worst = worst;
+    record->changed = sweep.changed;
+    record->pivots = local.pivots;
+    record->regularised = local.regularised;
+}
+
+/* The task over a colour's chunks (item j: the j-th in sweep order). */
+static void KeaSweepChunks(int start, int end, int worker, void *data)
+{
+    const KeaSplitSweep *t = data;
+    int j;
+    for (j = start; j < end; ++j)
+        KeaSweepChunk(t, t->backward ? t->lastChunk - j : t->firstChunk + j, &t->split->works[worker]);
+}
+
+/* KeaSweep on a split partition: colour after colour (ascending forwards, descending backwards), a
+ * colour's chunks over the workers (the overflow colour's, whose blocks may share bodies, on this
+ * thread in order), then the chunks' tallies added in sweep order. Size: as KeaSweep. */
+KEA_NOINLINE MeReal KeaSweepSplit(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
+                                  MeReal *x, KeaStats *stats, int backward, MeReal measureUpTo)
+{
+    KeaSplit *split = w->split;
+    KeaSplitSweep t;
+    MeReal worst = ME_R(0.0), decrease = ME_R(0.0);
+    int changed = 0, k, c;
+    t.problem = problem;
+    t.split = split;
+    t.x = x;
+    t.omega = KeaSweepOmega(params);
+    t.measureUpTo = measureUpTo;
+    t.backward = backward;
+    t.tally = w->smRan;
+    t.maxPasses = params->maxFrictionPasses;
+    KeaSplitWorks(w, split);
+    for (k = 0; k <= KEA_COLOUR_COUNT; ++k) {
+        c = backward ? KEA_COLOUR_COUNT - k : k;
+        t.firstChunk = split->colourChunk[c];
+        t.lastChunk = split->colourChunk[c + 1] - 1;
+        if (c == KEA_COLOUR_OVERFLOW)
+            KeaSweepChunks(0, t.lastChunk - t.firstChunk + 1, 0, &t);
+        else
+            KeaSplitRun(split, KeaSweepChunks, t.lastChunk - t.firstChunk + 1, &t);
+    }
+    for (k = 0; k < split->nChunks; ++k) {
+        const KeaSplitChunk *record = &split->chunks[backward ? split->nChunks - 1 - k : k];
+        decrease += record->decrease;
+        worst = KeaMax(worst, record->worst);
+        changed += record->changed;
+        stats->pivots += record->pivots;
+        stats->regularised += record->regularised;
+    }
+    w->sweepDecrease = decrease;
+    w->sweepChanged = changed;
     return worst;
 }
 
@@ -166,17 +272,14 @@ static int KeaEffortAllowed(const KeaProblem *problem, const KeaParameters *para
     return 1;
 }
 
-/* The solve's set-up, before the first sweep: the padded rows (B = M^-1 J^T, the diagonal, J with
- * its pads and world halves zeroed), the blocks, and the warm start (x clamped, bounds read from the
- * unclamped x as the direct path does, then dv and which rows are free). Not inlined, so that a
- * profile shows the set-up apart from the sweeps. */
-KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParameters *params, KeaIterativeWork *w,
-                                    MeReal *x, KeaBodyVelocity *dv)
+/* The set-up of rows [i0, i1): B = M^-1 J^T, the diagonal, J with its pads and world halves zeroed,
+ * the halves' bodies, and the warm start's bounds (read from the unclamped x, as the direct path
+ * does). Each row writes only its own entries. */
+static void KeaSetUpRows(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x, int i0, int i1)
 {
-    const int n = problem->nRows, nb = problem->nBodies;
-    int i, b, k;
-    KeaBodyColumnsFill(problem, w->bodyColumns);
-    for (i = 0; i < n; ++i) {
+    const int nb = problem->nBodies;
+    int i;
+    for (i = i0; i < i1; ++i) {
         const int *rb = problem->rowBodies[i];
         KeaJacobianRow *J = &w->J[i];
         w->diag[i] = KeaRowInvMassJT4(problem, w->bodyColumns, i, &w->B[i]);
@@ -194,15 +297,69 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
         }
         w->body[i][0] = rb[0] >= 0 ? rb[0] : nb;
         w->body[i][1] = rb[1] >= 0 ? rb[1] : nb;
-    }
-    KeaSetUpBlocks(problem, w, KeaBlockCap(n, params->maxBlockRows));
-    for (i = 0; i < n; ++i)
         KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
-    for (i = 0; i < n; ++i)
+    }
+}
+
+/* The warm start of rows [i0, i1): x clamped to the bounds KeaSetUpRows read, and which rows are free. */
+static void KeaWarmStartRows(KeaIterativeWork *w, MeReal *x, int i0, int i1)
+{
+    int i;
+    for (i = i0; i < i1; ++i) {
         x[i] = KeaClamp(x[i], w->lo[i], w->hi[i]);
-    KeaBodyVelocityFromImpulses(problem, x, dv);
-    for (i = 0; i < n; ++i)
         w->wasFree[i] = KeaRowIsFree(w, i, x[i], w->lo[i], w->hi[i]);
+    }
+}
+
+typedef struct KeaRowsTask {
+    const KeaProblem *problem;
+    KeaIterativeWork *w;
+    MeReal *x;
+} KeaRowsTask;
+
+static void KeaSetUpRowChunks(int start, int end, int worker, void *data)
+{
+    const KeaRowsTask *t = data;
+    const int n = t->problem->nRows;
+    (void)worker;
+    KeaSetUpRows(t->problem, t->w, t->x, start * KEA_SPLIT_ROWS, end * KEA_SPLIT_ROWS < n ? end * KEA_SPLIT_ROWS : n);
+}
+
+static void KeaWarmStartRowChunks(int start, int end, int worker, void *data)
+{
+    const KeaRowsTask *t = data;
+    const int n = t->problem->nRows;
+    (void)worker;
+    KeaWarmStartRows(t->w, t->x, start * KEA_SPLIT_ROWS, end * KEA_SPLIT_ROWS < n ? end * KEA_SPLIT_ROWS : n);
+}
+
+/* The solve's set-up, before the first sweep: the padded rows (KeaSetUpRows), the blocks, the warm
+ * start (x clamped, then dv and which rows are free), and in a split solve the colouring; the row
+ * and block loops in chunks over the workers when split. Not inlined, so that a profile shows the
+ * set-up apart from the sweeps. */
+KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParameters *params, KeaIterativeWork *w,
+                                    MeReal *x, KeaBodyVelocity *dv)
+{
+    const int n = problem->nRows, nb = problem->nBodies;
+    const int rowChunks = (n + KEA_SPLIT_ROWS - 1) / KEA_SPLIT_ROWS;
+    KeaRowsTask t;
+    int b, k;
+    t.problem = problem;
+    t.w = w;
+    t.x = x;
+    KeaBodyColumnsFill(problem, w->bodyColumns);
+    if (w->split)
+        KeaSplitRun(w->split, KeaSetUpRowChunks, rowChunks, &t);
+    else
+        KeaSetUpRows(problem, w, x, 0, n);
+    KeaSetUpBlocks(problem, w, KeaBlockCap(n, params->maxBlockRows));
+    if (w->split && !KeaSplitColour(problem, w, w->split))
+        w->split = NULL; /* a friction link leaves its block: the plain sweep (KeaSplitColour) */
+    if (w->split)
+        KeaSplitRun(w->split, KeaWarmStartRowChunks, rowChunks, &t);
+    else
+        KeaWarmStartRows(w, x, 0, n);
+    KeaBodyVelocityFromImpulses(problem, x, dv);
     w->skippedLast = 0;
     w->smRan = 0;
     w->smUnpaid = 0;
@@ -214,17 +371,37 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
         }
 }
 
-KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
-                            MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
+/* What a solve hands its driver (KeaIterate): the problem, its settings, the work and the outputs. */
+typedef struct KeaSolveState {
+    const KeaProblem *problem;
+    const KeaParameters *params;
+    KeaIterativeWork *w;
+    MeReal *x;
+    KeaBodyVelocity *dv;
+    KeaStats *stats;
+    KeaStatus status;
+} KeaSolveState;
+
+/* The solve after the layout: set-up, sweeps and SM, the extra effort, dv out and the residual. In a
+ * split solve on several workers it runs inside the team's task, on whichever worker started first
+ * (kea_split.c, KeaTeamTask), handing its chunked loops to the others. */
+static void KeaIterate(void *data)
 {
-    KeaIterativeWork w;
-    KeaStatus status = KeaStatusMaxIterations;
+    KeaSolveState *state = data;
+    const KeaProblem *problem = state->problem;
+    const KeaParameters *params = state->params;
+    KeaIterativeWork *w = state->w;
+    MeReal *x = state->x;
+    KeaStats *stats = state->stats;
     const int nb = problem->nBodies;
     const int effort = KeaEffortAllowed(problem, params);
     int it, b, k, limit;
 
-    KeaIterativeLayout(arena, problem->nRows, nb, KEA_MAX_BLOCK_ROWS, &w);
-    KeaIterativeSetUp(problem, params, &w, x, dv);
+    KeaIterativeSetUp(problem, params, w, x, state->dv);
+    if (w->split)
+        stats->colours = w->split->colours +
+                         (w->split->colourStart[KEA_COLOUR_OVERFLOW + 1] > w->split->colourStart[KEA_COLOUR_OVERFLOW]);
+    state->status = KeaStatusMaxIterations;
 
     /* maxIterations sweeps, then the extra effort (params->effortResidual, kea_tuning.h) if the
      * partition rests (KeaEffortAllowed): while the last sweep leaves a residual above it, two more
@@ -234,21 +411,22 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
         const int mayExtend = it == limit && effort &&
                               limit < params->maxIterations * (1 + KEA_EFFORT_FACTOR);
         const MeReal measureUpTo = mayExtend ? KeaMax(params->tolerance, params->effortResidual) : params->tolerance;
-        const MeReal sweepResidual = KeaSweep(problem, &w, params, x, stats, (it & 1) == 0, measureUpTo);
+        const MeReal sweepResidual = (w->split ? KeaSweepSplit : KeaSweep)(problem, w, params, x, stats, (it & 1) == 0,
+                                                                           measureUpTo);
         stats->iterations = it;
         if (sweepResidual <= params->tolerance) {
-            status = KeaStatusOk;
+            state->status = KeaStatusOk;
             break;
         }
         if (mayExtend && sweepResidual > params->effortResidual) {
             limit += 2;
             ++stats->effortRounds;
         }
-        if (w.smRan) /* did the last SM step lower the objective more than this sweep? */
-            w.smUnpaid = w.sweepDecrease > w.smDecrease;
-        w.smRan = 0;
+        if (w->smRan) /* did the last SM step lower the objective more than this sweep? */
+            w->smUnpaid = w->sweepDecrease > w->smDecrease;
+        w->smRan = 0;
         if (params->subspaceIterations > 0 && it < limit) {
-            const int steps = KeaSubspaceMinimise(problem, &w, params->subspaceIterations, x);
+            const int steps = KeaSubspaceMinimise(problem, w, params->subspaceIterations, x);
             if (steps < 0)
                 ++stats->subspaceSkipped;
             else
@@ -257,9 +435,35 @@ KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *para
     }
     for (b = 0; b < nb; ++b)
         for (k = 0; k < 3; ++k) {
-            dv[b].lin[k] = w.dv[b].lin[k];
-            dv[b].ang[k] = w.dv[b].ang[k];
+            state->dv[b].lin[k] = w->dv[b].lin[k];
+            state->dv[b].ang[k] = w->dv[b].ang[k];
         }
-    stats->residual = KeaIterativeResidual(problem, &w, x);
-    return status;
+    stats->residual = KeaIterativeResidual(problem, w, x);
+}
+
+KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
+                            MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
+{
+    KeaIterativeWork w;
+    KeaSplit split;
+    KeaSolveState state;
+
+    KeaIterativeLayout(arena, problem->nRows, problem->nBodies, KEA_MAX_BLOCK_ROWS, &w);
+    if (KeaSplits(problem->nRows, params)) { /* KeaSplitMemoryRequired has made room */
+        KeaSplitLayout(arena, problem->nRows, problem->nBodies, KeaSplitWorkers(&params->tasks), &split);
+        split.hook = params->tasks;
+        split.hook.workers = KeaSplitWorkers(&params->tasks);
+        w.split = &split;
+    }
+    state.problem = problem;
+    state.params = params;
+    state.w = &w;
+    state.x = x;
+    state.dv = dv;
+    state.stats = stats;
+    if (w.split)
+        KeaSplitDrive(&split, KeaIterate, &state); /* on the workers' team */
+    else
+        KeaIterate(&state);
+    return state.status;
 }

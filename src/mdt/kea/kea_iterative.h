@@ -57,6 +57,10 @@
 #ifndef KEA_ITERATIVE_H
 #define KEA_ITERATIVE_H
 
+#include <stdatomic.h>
+#include <stdint.h>
+
+#include "kea_colour.h"
 #include "kea_internal.h"
 #include "kea_lanes.h"
 
@@ -65,8 +69,10 @@
  * measurable. */
 #if defined(__GNUC__)
 #  define KEA_NOINLINE static __attribute__((noinline))
+#  define KEA_ALWAYS_INLINE static inline __attribute__((always_inline))
 #else
 #  define KEA_NOINLINE static
+#  define KEA_ALWAYS_INLINE static inline
 #endif
 
 typedef struct KeaContactPack KeaContactPack; /* kea_contact_packs.h */
@@ -136,6 +142,17 @@ static inline void KeaRowApply4(const KeaJacobianRow *B, MeReal s, KeaVel4 *v0, 
     KeaHalfApply4(B->lin1, B->ang1, s, v1);
 }
 
+/** v1 += sum_r B_r d_r over the second halves of m rows (rows with d_r = 0 skipped), row after row:
+ *  a block whose first half is the world's, which is not written (its dv stays zero; a split sweep's
+ *  blocks on the world read it at once). The same sums as KeaBlockScatterSized's second half. */
+static inline void KeaBlockScatterHalf1(int m, const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v1)
+{
+    int r;
+    for (r = 0; r < m; ++r)
+        if (d[r] != ME_R(0.0))
+            KeaHalfApply4(B[r].lin1, B[r].ang1, d[r], v1);
+}
+
 enum { KEA_CONTACT_BODIES = 1, KEA_CONTACT_WORLD = 2 }; /* a declared contact between two bodies, or on the world */
 
 /** SM: one piece of the free list after its pack region (kea_contact_packs.h) for its matrix-free
@@ -171,7 +188,6 @@ typedef struct KeaIterativeWork {
     int *blockStart;       /**< nBlocks + 1 row offsets */
     int *blockMatrix;      /**< offset of each block's m x m matrix in blockA */
     MeReal *blockA;        /**< the blocks' A_bb, at most n * maxBlockRows reals */
-    MeReal *blockL;        /**< scratch: one block's Cholesky factor, read only to form its inverse */
     MeReal *blockInv;      /**< their inverses A_bb^-1 (same offsets): a block solve in a sweep or
                                 a preconditioner step is then one small matrix-vector product,
                                 no divisions (each block is solved once a sweep, and
@@ -222,7 +238,110 @@ typedef struct KeaIterativeWork {
     MeReal *eps;           /**< eps_i (0 when the problem has none) */
     KeaVel4 *dv;           /**< the solve's dv (nb + 1), copied out at the end */
     KeaVel4 *dvTmp;        /**< per-body scratch for A_FF p and for the trial step (nb + 1) */
+    int nb;                /**< bodies: dv[nb] is the world's, all zero, never written by a sweep */
+    struct KeaSplit *split; /**< a split solve's colouring and workers (kea_split.c); NULL: not split */
 } KeaIterativeWork;
+
+/* ---- the split solve (kea_split.c) ------------------------------------------------------------
+ * One large partition over several workers, bit-identical for any worker count (docs/kea.md,
+ * "One partition on several cores"): the blocks are coloured (kea_colour.c) so that no two blocks
+ * of a colour share a body, and a sweep takes the colours one after the other, each colour's blocks
+ * in fixed chunks of KEA_SPLIT_CHUNK blocks handed to the workers (a barrier between colours: the
+ * hook returns when the colour is done). Every chunk keeps its own tallies (the objective's decrease,
+ * the residual, the rows that changed, the dense solver's pivots), added afterwards in chunk order;
+ * SM's loops run over fixed chunks of KEA_SPLIT_PACKS packs, then of KEA_SPLIT_PIECES pieces of its
+ * free list, their dot products as one partial sum per chunk, added in chunk order; its scatter
+ * takes the packs on the driver alone, then the pieces colour by colour; the set-up's
+ * loops over rows and blocks (each item writing only its own entries) in chunks too. The chunks depend on the problem only, never
+ * on the workers, so neither does any bit of the result. */
+
+/** Blocks per chunk of a colour in a split sweep, at least (whole units: a pair's blocks stay in one
+ *  chunk; a contact is one block, three rows). */
+#define KEA_SPLIT_CHUNK 16
+/** Pieces of SM's free list (KeaFreePiece) per chunk of its loops in a split solve (at least, for
+ *  its scatter: whole units). */
+#define KEA_SPLIT_PIECES 128
+/** Packs of four contacts (kea_contact_packs.h) per chunk of SM's gathers, preconditioner and sums in
+ *  a split solve (their scatter runs on the driver alone: packs share bodies). */
+#define KEA_SPLIT_PACKS 32
+/** Rows per chunk of the set-up's row loops, and blocks per chunk of its block set-up, in a split solve. */
+#define KEA_SPLIT_ROWS 256
+#define KEA_SPLIT_BLOCKS 64
+
+/** A chunk's tallies in one split sweep, added afterwards in chunk order. */
+typedef struct KeaSplitChunk {
+    MeReal decrease;  /**< KeaSweepState.decrease over the chunk's blocks */
+    MeReal worst;     /**< the largest residual measured */
+    int changed;      /**< KeaSweepState.changed */
+    int pivots;       /**< the dense solver's pivots (KeaStats.pivots) */
+    int regularised;  /**< and its raised pivots (KeaStats.regularised) */
+} KeaSplitChunk;
+
+/** One worker's block scratch (KeaIterativeWork's local* arrays and dense solver). */
+typedef struct KeaBlockScratch {
+    MeReal *localW, *localR, *localLo, *localHi, *localX, *localD;
+    int *localLink;
+    KeaDenseWork *dense;
+} KeaBlockScratch;
+
+/** The workers' team of a split solve (kea_split.c, KeaSplitDrive): the driver and the stage it has
+ *  published for the helpers. */
+typedef struct KeaTeamStage {
+    atomic_int items;           /**< the stage's items */
+    _Atomic(KeaTaskFn) task;    /**< its task */
+    _Atomic(void *) data;       /**< and its data */
+} KeaTeamStage;
+
+typedef struct KeaTeam {
+    _Atomic(uint64_t) cursor;   /**< the stage's generation (high half) and its next item (low half) */
+    atomic_int completed;       /**< items of the stage that have run */
+    KeaTeamStage stage[2];      /**< stage g in stage[g & 1]: the next one is written while a helper
+                                     late on this one may still read it (its claim then fails) */
+    atomic_int driving;         /**< an item has become the driver */
+    atomic_int done;            /**< the driver has finished the solve */
+    unsigned generation;        /**< the driver's: stages published */
+    int driverWorker;           /**< the driver's worker index */
+    void (*drive)(void *);      /**< the solve */
+    void *driveData;
+} KeaTeam;
+
+typedef struct KeaSplit {
+    KeaTaskHook hook;      /**< the caller's workers (hook.workers >= 1; run NULL: inline) */
+    KeaTeam *team;         /**< the team while the solve runs on it (KeaSplitDrive), else NULL */
+    int *order;            /**< the blocks sorted by colour, each colour in block order (nBlocks) */
+    int *colour;           /**< each unit's colour (a unit: consecutive blocks on one body pair) */
+    int (*pairs)[2];       /**< each unit's bodies for the colouring */
+    int *unitStart;        /**< unit u is blocks unitStart[u] .. unitStart[u + 1] - 1 */
+    int *unitOrder;        /**< the units sorted by colour */
+    int *blockUnit;        /**< each block's unit */
+    int *pieceOrder;       /**< SM's scatter: the free list's pieces by colour, each colour's in order */
+    int *pieceChunk;       /**< its chunks: pieceOrder[pieceChunk[k] .. pieceChunk[k + 1]) (whole units) */
+    int pieceColourChunk[KEA_COLOUR_COUNT + 2]; /**< colour c's scatter chunks */
+    void *colourWork;      /**< the colouring's bit sets */
+    size_t colourBytes;
+    int colourStart[KEA_COLOUR_COUNT + 2]; /**< colour c is order[colourStart[c] .. colourStart[c + 1]) (the
+                                                 colouring's units at first) */
+    int colourChunk[KEA_COLOUR_COUNT + 2]; /**< colour c's chunks are colourChunk[c] .. colourChunk[c + 1] - 1 */
+    int *chunkStart;       /**< chunk k is order[chunkStart[k] .. chunkStart[k + 1]) */
+    int nChunks;
+    int colours;           /**< colours in use (the overflow colour not counted) */
+    KeaSplitChunk *chunks; /**< one per chunk */
+    MeReal *partial;       /**< SM: one partial sum per chunk (of KEA_SPLIT_PACKS packs or KEA_SPLIT_PIECES pieces) */
+    KeaBlockScratch *scratch; /**< per worker; worker 0's are the work's own */
+    KeaIterativeWork *works;  /**< per worker: a copy of the work with its scratch (made per sweep) */
+} KeaSplit;
+
+/* kea_split.c: its workspace (counting mode with arena->base NULL), the workers a hook gives, the
+ * colouring of the blocks after KeaSetUpBlocks (0: the split cannot apply, a friction link leaves its
+ * block: the solve is then not split), running items over the workers, and SM's scatter order for
+ * the current free list (pieces: nPieces of them). */
+void KeaSplitLayout(KeaArena *arena, int n, int nb, int workers, KeaSplit *split);
+int KeaSplitWorkers(const KeaTaskHook *hook);
+int KeaSplitColour(const KeaProblem *problem, KeaIterativeWork *w, KeaSplit *split);
+void KeaSplitRun(const KeaSplit *split, KeaTaskFn task, int items, void *data);
+void KeaSplitDrive(KeaSplit *split, void (*drive)(void *), void *data);
+void KeaSplitWorks(const KeaIterativeWork *w, KeaSplit *split);
+void KeaSplitPieces(const KeaIterativeWork *w, KeaSplit *split);
 
 /* SM's free-list positions for n rows at most: the pack region (12 per pack of up to four of the at
  * most n / 3 contacts, masked lanes included) and every row again after it. */

@@ -23,6 +23,11 @@ void KeaParametersDefault(KeaParameters *params)
     params->effortResidual = ME_R(0.0);
     params->effortRestSpeed = ME_R(0.0);
     params->autoPivotsPerRow = ME_R(0.0);
+    params->splitRows = 0;
+    params->tasks.run = NULL;
+    params->tasks.user = NULL;
+    params->tasks.workers = 1;
+    params->tasks.perStage = 0;
 }
 
 KeaPath KeaSelectPath(int nRows, const KeaParameters *params)
@@ -170,7 +175,8 @@ KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void 
     stats->bodies = problem->nBodies;
 
     /* Align the workspace base; the velocity output gets workspace room when the caller has none. */
-    need = KeaMemoryRequired(problem->nRows, problem->nBodies, path);
+    need = KeaMemoryRequired(problem->nRows, problem->nBodies, path) +
+           KeaSplitMemoryRequired(problem->nRows, problem->nBodies, params);
     skew = workspace ? (size_t)((KEA_ALIGN - ((uintptr_t)workspace & (KEA_ALIGN - 1))) & (KEA_ALIGN - 1)) : 0;
     if (!workspace || workspaceSize < need) {
         stats->status = KeaStatusWorkspaceTooSmall;

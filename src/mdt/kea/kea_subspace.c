@@ -29,41 +29,99 @@
 #include "kea_block_kernels.h"
 #include "kea_contact_packs.h"
 
-/* dvTmp = M^-1 J_F^T v (v by position in the free list): the packs (kea_contact_packs.h), then a
- * piece (KeaFindSegments) at a time in free-list order: a segment through the sweep's block
- * kernels, a row on its own by itself. The work's arrays are read into locals once: a four-lane
- * store may alias anything for the compiler, which would reload them for every piece. */
-static void KeaScatter(const KeaProblem *problem, const KeaIterativeWork *w, const MeReal *v)
+/* dvTmp += M^-1 J_F^T v (v by position in the free list) for the pieces (KeaFindSegments) order[j]
+ * (order NULL: j itself), j in [j0, j1), in that order: a segment through the sweep's block kernels, a
+ * row on its own by itself; the world's half (dvTmp[nb], all zero) is not written, so that a colour's
+ * pieces on the world may run at once. The work's arrays are read into
+ * locals once: a four-lane store may alias anything for the compiler, which would reload them for
+ * every piece. */
+KEA_ALWAYS_INLINE void KeaScatterPieces(const KeaIterativeWork *w, const MeReal *v, const int *order, int j0, int j1)
 {
     const KeaFreePiece *pieces = w->pieces;
     const KeaJacobianRow *B = w->B;
     KeaVel4 *dvTmp = w->dvTmp;
-    const int nPieces = w->nPieces;
-    int k;
-    memset(dvTmp, 0, sizeof(KeaVel4) * (size_t)(problem->nBodies + 1));
-    KeaPacksScatter(w, v, dvTmp, 0, w->nPacks);
-    for (k = 0; k < nPieces; ++k) {
-        const KeaFreePiece *piece = &pieces[k];
-        KeaVel4 *v0 = &dvTmp[piece->body[0]], *v1 = &dvTmp[piece->body[1]];
+    const int nb = w->nb;
+    int j;
+    for (j = j0; j < j1; ++j) {
+        const KeaFreePiece *piece = &pieces[order ? order[j] : j];
+        const int onWorld0 = piece->body[0] == nb, onWorld1 = piece->body[1] == nb;
+        KeaVel4 *v0 = &dvTmp[piece->body[0]], *v1 = onWorld1 ? NULL : &dvTmp[piece->body[1]];
         const MeReal *vp = v + piece->pos;
         if (piece->rows == 1) {
-            if (vp[0] != ME_R(0.0))
-                KeaRowApply4(&B[piece->row], vp[0], v0, v1);
-        } else {
+            if (vp[0] == ME_R(0.0))
+                continue;
+            if (!onWorld0)
+                KeaHalfApply4(B[piece->row].lin0, B[piece->row].ang0, vp[0], v0);
+            if (v1)
+                KeaHalfApply4(B[piece->row].lin1, B[piece->row].ang1, vp[0], v1);
+        } else if (!onWorld0) {
             KeaBlockScatter(piece->rows, &B[piece->row], vp, v0, v1);
+        } else if (v1) {
+            KeaBlockScatterHalf1(piece->rows, &B[piece->row], vp, v1);
         }
     }
 }
 
-/* out[p] = J_i . dv of the free rows (the packs, then a piece at a time, as KeaScatter). */
-static void KeaGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out)
+/* What SM's chunked loops share (kea_iterative.h, "the split solve"). Split: the first packChunks
+ * chunks are the packs [k packSize, (k + 1) packSize), the others the free list's pieces after the
+ * pack region, size to a chunk; not split: one chunk, every pack and piece. */
+typedef struct KeaSmTask {
+    const KeaProblem *problem;
+    const KeaIterativeWork *w;
+    const MeReal *x;   /* the impulses (the first chunked loop) */
+    const MeReal *v;   /* the scatter's input */
+    MeReal a;          /* CG's step length */
+    MeReal *partial;   /* one partial sum per chunk */
+    int nFree, size, packSize, packChunks, chunks;
+    int firstChunk, lastChunk; /* the scatter: a colour's chunks */
+} KeaSmTask;
+
+static void KeaScatterChunks(int start, int end, int worker, void *data)
+{
+    const KeaSmTask *t = data;
+    const KeaSplit *split = t->w->split;
+    int k;
+    (void)worker;
+    for (k = t->firstChunk + start; k < t->firstChunk + end; ++k)
+        KeaScatterPieces(t->w, t->v, split->pieceOrder, split->pieceChunk[k], split->pieceChunk[k + 1]);
+}
+
+/* dvTmp = M^-1 J_F^T v: the packs, then the pieces in free-list order; in a split solve the pieces
+ * colour by colour (KeaSplitPieces), a colour's chunks over the workers, the overflow colour's on
+ * this thread. */
+static void KeaScatter(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *v)
+{
+    KeaSplit *split = w->split;
+    KeaSmTask t;
+    int c;
+    memset(w->dvTmp, 0, sizeof(KeaVel4) * (size_t)(problem->nBodies + 1));
+    /* The packs first, on this thread alone in a split solve too: their lanes add into bodies that
+     * other packs share (docs/kea.md, "One partition on several cores"). */
+    KeaPacksScatter(w, v, w->dvTmp, 0, w->nPacks);
+    if (!split) {
+        KeaScatterPieces(w, v, NULL, 0, w->nPieces);
+        return;
+    }
+    t.w = w;
+    t.v = v;
+    for (c = 0; c <= KEA_COLOUR_COUNT; ++c) {
+        const int chunks = split->pieceColourChunk[c + 1] - split->pieceColourChunk[c];
+        t.firstChunk = split->pieceColourChunk[c];
+        if (c == KEA_COLOUR_OVERFLOW)
+            KeaScatterChunks(0, chunks, 0, &t);
+        else
+            KeaSplitRun(split, KeaScatterChunks, chunks, &t);
+    }
+}
+
+/* out[p] = J_i . dv of the free rows of pieces [k0, k1) (a piece at a time, as KeaScatter; the packs'
+ * positions by KeaPacksGather). */
+static void KeaGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, int k0, int k1)
 {
     const KeaFreePiece *pieces = w->pieces;
     const KeaJacobianRow *J = w->J;
-    const int nPieces = w->nPieces;
     int k;
-    KeaPacksGather(w, dv, out, 0, w->nPacks);
-    for (k = 0; k < nPieces; ++k) {
+    for (k = k0; k < k1; ++k) {
         const KeaFreePiece *piece = &pieces[k];
         const KeaVel4 *v0 = &dv[piece->body[0]], *v1 = &dv[piece->body[1]];
         MeReal *o = out + piece->pos;
@@ -102,16 +160,14 @@ static void KeaFindSegments(KeaIterativeWork *w, int first, int nFree)
     }
 }
 
-/* z = P^-1 res (block-Jacobi preconditioner of the free rows): a pack's contacts and a segment by
- * their block's inverse, a row on its own by 1 / d_i. */
-static void KeaPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z)
+/* z = P^-1 res (block-Jacobi preconditioner of the free rows) over pieces [k0, k1): a segment by its
+ * block's inverse, a row on its own by 1 / d_i (the packs' contacts: KeaPacksPrecondition). */
+static void KeaPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z, int k0, int k1)
 {
     const KeaFreePiece *pieces = w->pieces;
     const MeReal *blockInv = w->blockInv, *invDiag = w->invDiag;
-    const int nPieces = w->nPieces;
     int k;
-    KeaPacksPrecondition(w, res, z, 0, w->nPacks);
-    for (k = 0; k < nPieces; ++k) {
+    for (k = k0; k < k1; ++k) {
         const KeaFreePiece *piece = &pieces[k];
         const int p = piece->pos;
         if (piece->rows == 1)
@@ -204,46 +260,153 @@ static void KeaTrialStep(int nFree, MeReal scale, const MeReal *restrict xF, con
         z[p] = KeaClamp(xF[p] + scale * step[p], lo[p], hi[p]) - xF[p];
 }
 
+/* SM's chunk k: its packs [r[0], r[1]), its pieces [r[2], r[3]) and their positions [r[4], r[5]) in
+ * the free list (a chunk holds packs or pieces when split, both when not). */
+static void KeaSmChunk(const KeaSmTask *t, int k, int r[6])
+{
+    const int nPacks = t->w->nPacks, nPieces = t->w->nPieces;
+    if (!t->w->split) {
+        r[0] = r[2] = r[4] = 0;
+        r[1] = nPacks;
+        r[3] = nPieces;
+        r[5] = t->nFree;
+    } else if (k < t->packChunks) {
+        r[0] = k * t->packSize;
+        r[1] = r[0] + t->packSize < nPacks ? r[0] + t->packSize : nPacks;
+        r[2] = r[3] = 0;
+        r[4] = KEA_PACK_POSITIONS * r[0];
+        r[5] = KEA_PACK_POSITIONS * r[1];
+    } else {
+        r[0] = r[1] = 0;
+        r[2] = (k - t->packChunks) * t->size;
+        r[3] = r[2] + t->size < nPieces ? r[2] + t->size : nPieces;
+        r[4] = t->w->pieces[r[2]].pos;
+        r[5] = r[3] < nPieces ? t->w->pieces[r[3]].pos : t->nFree;
+    }
+}
+
+/* CG's start on chunk k: grad = w_F at x (KeaGather + eps x - r), step = 0, res = -grad, z = P^-1 res,
+ * dir = z; its partial res . z. (Each chunk writes its own positions of the work's arrays.) */
+static void KeaCgStartChunks(int start, int end, int worker, void *data)
+{
+    const KeaSmTask *t = data;
+    const KeaIterativeWork *w = t->w;
+    int k, r[6], p, i;
+    (void)worker;
+    for (k = start; k < end; ++k) {
+        KeaSmChunk(t, k, r);
+        KeaPacksGather(w, w->dv, w->grad, r[0], r[1]);
+        KeaGather(w, w->dv, w->grad, r[2], r[3]);
+        for (p = r[4]; p < r[5]; ++p) {
+            i = w->freeRows[p];
+            w->epsFree[p] = w->eps[i];
+            w->grad[p] = w->grad[p] + w->eps[i] * t->x[i] - t->problem->rhs[i];
+            w->step[p] = ME_R(0.0);
+            w->res[p] = -w->grad[p];
+        }
+        KeaPacksClearMasked(w, w->grad, r[0], r[1]); /* a masked row's position holds 0 (kea_contact_packs.h) */
+        KeaPacksClearMasked(w, w->res, r[0], r[1]);
+        KeaPacksPrecondition(w, w->res, w->z, r[0], r[1]);
+        KeaPrecondition(w, w->res, w->z, r[2], r[3]);
+        for (p = r[4]; p < r[5]; ++p)
+            w->dir[p] = w->z[p];
+        t->partial[k] = KeaDotN4(w->res + r[4], w->z + r[4], r[5] - r[4]);
+    }
+}
+
+/* A_FF dir on chunk k: q = J_F dvTmp (KeaScatter of dir before) + eps dir; its partial dir . q. */
+static void KeaCgProductChunks(int start, int end, int worker, void *data)
+{
+    const KeaSmTask *t = data;
+    const KeaIterativeWork *w = t->w;
+    int k, r[6];
+    (void)worker;
+    for (k = start; k < end; ++k) {
+        KeaSmChunk(t, k, r);
+        KeaPacksGather(w, w->dvTmp, w->q, r[0], r[1]);
+        KeaGather(w, w->dvTmp, w->q, r[2], r[3]);
+        t->partial[k] = KeaAddEpsDot(w->q + r[4], w->epsFree + r[4], w->dir + r[4], r[5] - r[4]);
+    }
+}
+
+/* CG's update on chunk k: step += a dir, res -= a q, z = P^-1 res; its partial res . z. */
+static void KeaCgUpdateChunks(int start, int end, int worker, void *data)
+{
+    const KeaSmTask *t = data;
+    const KeaIterativeWork *w = t->w;
+    int k, r[6];
+    (void)worker;
+    for (k = start; k < end; ++k) {
+        KeaSmChunk(t, k, r);
+        KeaCgUpdate(r[5] - r[4], t->a, w->dir + r[4], w->q + r[4], w->step + r[4], w->res + r[4]);
+        KeaPacksPrecondition(w, w->res, w->z, r[0], r[1]);
+        KeaPrecondition(w, w->res, w->z, r[2], r[3]);
+        t->partial[k] = KeaDotN4(w->res + r[4], w->z + r[4], r[5] - r[4]);
+    }
+}
+
+/* The line search's trial on chunk k: q = J_F dvTmp (KeaScatter of the trial step z before); its
+ * partial of the objective's change, sum z (grad + 1/2 (q + eps z)). */
+static void KeaTrialChunks(int start, int end, int worker, void *data)
+{
+    const KeaSmTask *t = data;
+    const KeaIterativeWork *w = t->w;
+    int k, r[6], p;
+    (void)worker;
+    for (k = start; k < end; ++k) {
+        MeReal df = ME_R(0.0);
+        KeaSmChunk(t, k, r);
+        KeaPacksGather(w, w->dvTmp, w->q, r[0], r[1]);
+        KeaGather(w, w->dvTmp, w->q, r[2], r[3]);
+        for (p = r[4]; p < r[5]; ++p) {
+            const MeReal As = w->q[p] + w->epsFree[p] * w->z[p];
+            df += w->z[p] * (w->grad[p] + ME_R(0.5) * As);
+        }
+        t->partial[k] = df;
+    }
+}
+
+/* Run a chunked loop of SM: over the workers in a split solve (chunks of KEA_SPLIT_PACKS packs, then
+ * of KEA_SPLIT_PIECES pieces), else as one chunk; returns its partials added in chunk order. */
+static MeReal KeaSmRun(KeaSmTask *t, KeaTaskFn task)
+{
+    const int chunks = t->chunks;
+    MeReal sum;
+    int k;
+    if (t->w->split)
+        KeaSplitRun(t->w->split, task, chunks, t);
+    else
+        task(0, chunks, 0, t);
+    sum = t->partial[0];
+    for (k = 1; k < chunks; ++k)
+        sum += t->partial[k];
+    return sum;
+}
+
 /* Preconditioned CG on A_FF step = -w_F from step = 0 over the nFree rows of the free list (grad
  * set to w_F at x); returns the CG steps taken (at most maxSteps). Sets smRan when CG can start. */
-static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, int nFree, int maxSteps, const MeReal *x)
+static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, KeaSmTask *t, int maxSteps)
 {
     MeReal rz, rz0;
-    int i, p, steps = 0;
-    KeaGather(w, w->dv, w->grad);
-    for (p = 0; p < nFree; ++p) {
-        i = w->freeRows[p];
-        w->epsFree[p] = w->eps[i];
-        w->grad[p] = w->grad[p] + w->eps[i] * x[i] - problem->rhs[i];
-        w->step[p] = ME_R(0.0);
-        w->res[p] = -w->grad[p];
-    }
-    KeaPacksClearMasked(w, w->grad); /* a masked row's position holds 0 (kea_contact_packs.h) */
-    KeaPacksClearMasked(w, w->res);
-    KeaPrecondition(w, w->res, w->z);
-    for (p = 0; p < nFree; ++p)
-        w->dir[p] = w->z[p];
-    rz = rz0 = KeaDotN4(w->res, w->z, nFree);
+    int steps = 0;
+    rz = rz0 = KeaSmRun(t, KeaCgStartChunks);
     if (!(rz0 > ME_R(0.0)))
         return 0;
     w->smRan = 1;
     w->smDecrease = ME_R(0.0);
     while (steps < maxSteps) {
-        MeReal pq, a, rzNew, beta;
+        MeReal pq, rzNew, beta;
         KeaScatter(problem, w, w->dir);
-        KeaGather(w, w->dvTmp, w->q);
-        pq = KeaAddEpsDot(w->q, w->epsFree, w->dir, nFree);
+        pq = KeaSmRun(t, KeaCgProductChunks);
         if (!(pq > ME_R(0.0)))
             break;
-        a = rz / pq;
-        KeaCgUpdate(nFree, a, w->dir, w->q, w->step, w->res);
-        KeaPrecondition(w, w->res, w->z);
+        t->a = rz / pq;
+        rzNew = KeaSmRun(t, KeaCgUpdateChunks);
         ++steps;
-        rzNew = KeaDotN4(w->res, w->z, nFree);
         if (!(rzNew > KEA_SM_CG_STOP * rz0))
             break;
         beta = rzNew / rz;
-        KeaCgDirection(nFree, beta, w->z, w->dir);
+        KeaCgDirection(t->nFree, beta, w->z, w->dir);
         rz = rzNew;
     }
     return steps;
@@ -251,19 +414,16 @@ static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, int nFr
 
 /* Projected backtracking line search on the QP objective (bounds frozen) along CG's step: the first
  * of KEA_SM_LINE_SEARCH_TRIES halvings that lowers it is applied to x and dv (smDecrease set). */
-static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w, int nFree, MeReal *x)
+static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w, KeaSmTask *t, MeReal *x)
 {
+    const int nFree = t->nFree;
     MeReal scale;
     int p, b, k, tries;
     for (tries = 0, scale = ME_R(1.0); tries < KEA_SM_LINE_SEARCH_TRIES; ++tries, scale *= ME_R(0.5)) {
-        MeReal df = ME_R(0.0);
+        MeReal df;
         KeaTrialStep(nFree, scale, w->xFree, w->step, w->lo, w->hi, w->z); /* z holds the trial step s */
         KeaScatter(problem, w, w->z);
-        KeaGather(w, w->dvTmp, w->q); /* q is free after CG */
-        for (p = 0; p < nFree; ++p) {
-            const MeReal As = w->q[p] + w->epsFree[p] * w->z[p];
-            df += w->z[p] * (w->grad[p] + ME_R(0.5) * As);
-        }
+        df = KeaSmRun(t, KeaTrialChunks); /* q is free after CG */
         if (df < ME_R(0.0)) {
             w->smDecrease = -df;
             for (p = 0; p < nFree; ++p) /* a masked row's z is 0: it is left alone */
@@ -285,6 +445,8 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
 {
     const int n = problem->nRows;
     int i, nFree, listed, changed, steps;
+    KeaSmTask t;
+    MeReal one;
 
     changed = KeaUpdateFreeRows(problem, w, x);
     if (changed > KEA_SM_SKIP_MIN_CHANGED && (long)changed * KEA_SM_SKIP_FRACTION > (long)n && !w->skippedLast) {
@@ -309,8 +471,19 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
     if (listed == 0)
         return 0;
     KeaFindSegments(w, KEA_PACK_POSITIONS * w->nPacks, nFree);
-    steps = KeaSubspaceCg(problem, w, nFree, maxSteps, x);
+    if (w->split)
+        KeaSplitPieces(w, w->split);
+    t.problem = problem;
+    t.w = w;
+    t.x = x;
+    t.nFree = nFree;
+    t.size = KEA_SPLIT_PIECES;
+    t.packSize = KEA_SPLIT_PACKS;
+    t.packChunks = (w->nPacks + KEA_SPLIT_PACKS - 1) / KEA_SPLIT_PACKS;
+    t.chunks = w->split ? t.packChunks + (w->nPieces + KEA_SPLIT_PIECES - 1) / KEA_SPLIT_PIECES : 1;
+    t.partial = w->split ? w->split->partial : &one;
+    steps = KeaSubspaceCg(problem, w, &t, maxSteps);
     if (steps > 0)
-        KeaSubspaceLineSearch(problem, w, nFree, x);
+        KeaSubspaceLineSearch(problem, w, &t, x);
     return steps;
 }

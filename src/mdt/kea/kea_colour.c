@@ -1,61 +1,63 @@
-/* colour.c -- graph colouring of a partition's constraints by body (colour.h).
+/* kea_colour.c -- graph colouring of a partition's constraints by body (kea_colour.h).
  *
  * One bit set of bodies per colour; a constraint takes the first colour whose set holds neither of its
  * bodies, and adds them. The world belongs to no set: any number of constraints of one colour may hold
  * a body to the world, since the world's velocity is never written. Greedy first-fit in the
  * constraints' order: a constraint sharing bodies with d others gets a colour below d + 1, so a chain
  * takes two colours and a grid of stacked boxes a handful; only a body with more than
- * MDT_COLOUR_COUNT constraints sends some of them to the overflow colour. */
+ * KEA_COLOUR_COUNT constraints sends some of them to the overflow colour. */
 #include <stdint.h>
 #include <string.h>
 
-#include "colour.h"
-#include "kea/kea.h"
+#include "kea_colour.h"
+#include "kea.h"
 
-_Static_assert(MDT_COLOUR_WORLD == KEA_WORLD, "the colouring takes Kea's rows' body indices as they are");
+_Static_assert(KEA_COLOUR_WORLD == KEA_WORLD, "the colouring takes Kea's rows' body indices as they are");
 
 #define WORD_BITS 64
 
 static size_t wordsFor(int bodyCount) { return ((size_t)bodyCount + WORD_BITS - 1) / WORD_BITS; }
 
-size_t MdtColourMemoryRequired(int bodyCount)
+size_t KeaColourMemoryRequired(int bodyCount)
 {
-    return bodyCount > 0 ? sizeof(uint64_t) * wordsFor(bodyCount) * MDT_COLOUR_COUNT : 0;
+    return bodyCount > 0 ? sizeof(uint64_t) * wordsFor(bodyCount) * KEA_COLOUR_COUNT : 0;
 }
 
 /* Whether body b (or the world) is free in the set. */
 static int isFree(const uint64_t *set, int b)
 {
-    return b == MDT_COLOUR_WORLD || !(set[b / WORD_BITS] & ((uint64_t)1 << (b % WORD_BITS)));
+    return b == KEA_COLOUR_WORLD || !(set[b / WORD_BITS] & ((uint64_t)1 << (b % WORD_BITS)));
 }
 
 static void take(uint64_t *set, int b)
 {
-    if (b != MDT_COLOUR_WORLD)
+    if (b != KEA_COLOUR_WORLD)
         set[b / WORD_BITS] |= (uint64_t)1 << (b % WORD_BITS);
 }
 
-int MdtColourConstraints(const int (*bodies)[2], int count, int bodyCount, void *workspace, size_t workspaceBytes,
+/* Size: the input (bodies, count, bodyCount), the caller's workspace (pointer and size) and the three
+ * outputs, each an array the caller owns (Kea's split solve keeps them in its arena). */
+int KeaColourConstraints(const int (*bodies)[2], int count, int bodyCount, void *workspace, size_t workspaceBytes,
                          int *colour, int *order, int *colourStart)
 {
-    if (count < 0 || bodyCount < 0 || workspaceBytes < MdtColourMemoryRequired(bodyCount))
+    if (count < 0 || bodyCount < 0 || workspaceBytes < KeaColourMemoryRequired(bodyCount))
         return -1;
     for (int i = 0; i < count; i++)
         for (int k = 0; k < 2; k++)
-            if (bodies[i][k] != MDT_COLOUR_WORLD && (bodies[i][k] < 0 || bodies[i][k] >= bodyCount))
+            if (bodies[i][k] != KEA_COLOUR_WORLD && (bodies[i][k] < 0 || bodies[i][k] >= bodyCount))
                 return -1;
     const size_t words = wordsFor(bodyCount);
     uint64_t *sets = workspace;
     if (words > 0)
-        memset(sets, 0, sizeof(uint64_t) * words * MDT_COLOUR_COUNT);
-    int counts[MDT_COLOUR_COUNT + 1] = {0};
+        memset(sets, 0, sizeof(uint64_t) * words * KEA_COLOUR_COUNT);
+    int counts[KEA_COLOUR_COUNT + 1] = {0};
     int used = 0;
     for (int i = 0; i < count; i++) {
         int c = 0;
-        while (c < MDT_COLOUR_COUNT &&
+        while (c < KEA_COLOUR_COUNT &&
                !(isFree(sets + (size_t)c * words, bodies[i][0]) && isFree(sets + (size_t)c * words, bodies[i][1])))
             c++;
-        if (c < MDT_COLOUR_COUNT) {
+        if (c < KEA_COLOUR_COUNT) {
             take(sets + (size_t)c * words, bodies[i][0]);
             take(sets + (size_t)c * words, bodies[i][1]);
             if (c + 1 > used)
@@ -66,9 +68,9 @@ int MdtColourConstraints(const int (*bodies)[2], int count, int bodyCount, void 
     }
     /* Counting sort by colour: stable, so each colour keeps the constraints' own order. */
     colourStart[0] = 0;
-    for (int c = 0; c <= MDT_COLOUR_COUNT; c++)
+    for (int c = 0; c <= KEA_COLOUR_COUNT; c++)
         colourStart[c + 1] = colourStart[c] + counts[c];
-    int next[MDT_COLOUR_COUNT + 1];
+    int next[KEA_COLOUR_COUNT + 1];
     memcpy(next, colourStart, sizeof next);
     for (int i = 0; i < count; i++)
         order[next[colour[i]]++] = i;

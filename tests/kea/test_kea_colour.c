@@ -1,4 +1,4 @@
-/* test_colour.c -- the graph colouring of a partition's constraints (src/mdt/colour.c), the split of
+/* test_kea_colour.c -- the graph colouring of a partition's constraints (src/mdt/kea/kea_colour.c), the split of
  * one large partition for parallel sweeps (issue 17, point 5): every colour is an independent set (no
  * body twice, the world aside), every constraint is in exactly one colour, the colouring is the same
  * whatever the workspace held, and a sweep colour by colour gives the same bits in whatever order
@@ -8,22 +8,22 @@
 
 #include "karma_test.h"
 
-#include "mdt/colour.h"
+#include "mdt/kea/kea_colour.h"
 
 #define MAX_BODIES 400
 #define MAX_CONSTRAINTS 1600
 
 typedef struct Colouring {
-    int colour[MAX_CONSTRAINTS], order[MAX_CONSTRAINTS], start[MDT_COLOUR_COUNT + 2];
+    int colour[MAX_CONSTRAINTS], order[MAX_CONSTRAINTS], start[KEA_COLOUR_COUNT + 2];
     int used;
 } Colouring;
 
-static uint64_t workspace[MAX_BODIES * MDT_COLOUR_COUNT];
+static uint64_t workspace[MAX_BODIES * KEA_COLOUR_COUNT];
 
 static void colourAll(const int (*bodies)[2], int count, int bodyCount, Colouring *out)
 {
-    assert_true(MdtColourMemoryRequired(bodyCount) <= sizeof workspace);
-    out->used = MdtColourConstraints(bodies, count, bodyCount, workspace, sizeof workspace, out->colour, out->order,
+    assert_true(KeaColourMemoryRequired(bodyCount) <= sizeof workspace);
+    out->used = KeaColourConstraints(bodies, count, bodyCount, workspace, sizeof workspace, out->colour, out->order,
                                      out->start);
     assert_true(out->used >= 0);
 }
@@ -35,8 +35,8 @@ static void checkColouring(const int (*bodies)[2], int count, int bodyCount, con
     static int placed[MAX_CONSTRAINTS];
     memset(placed, 0, sizeof placed);
     assert_int_equal(c->start[0], 0);
-    assert_int_equal(c->start[MDT_COLOUR_COUNT + 1], count);
-    for (int k = 0; k <= MDT_COLOUR_COUNT; k++) {
+    assert_int_equal(c->start[KEA_COLOUR_COUNT + 1], count);
+    for (int k = 0; k <= KEA_COLOUR_COUNT; k++) {
         assert_true(c->start[k] <= c->start[k + 1]);
         for (int b = 0; b < bodyCount; b++)
             seenIn[b] = 0;
@@ -47,17 +47,17 @@ static void checkColouring(const int (*bodies)[2], int count, int bodyCount, con
             placed[i]++;
             if (j > c->start[k])
                 assert_true(c->order[j - 1] < i); /* the constraints' own order within a colour */
-            if (k == MDT_COLOUR_OVERFLOW)
+            if (k == KEA_COLOUR_OVERFLOW)
                 continue; /* swept on one worker: it may share bodies */
             for (int e = 0; e < 2; e++) {
                 int b = bodies[i][e];
-                if (b == MDT_COLOUR_WORLD)
+                if (b == KEA_COLOUR_WORLD)
                     continue;
                 assert_int_equal(seenIn[b], 0); /* an independent set */
                 seenIn[b] = 1;
             }
         }
-        if (k >= c->used && k < MDT_COLOUR_COUNT)
+        if (k >= c->used && k < KEA_COLOUR_COUNT)
             assert_int_equal(c->start[k + 1] - c->start[k], 0);
     }
     for (int i = 0; i < count; i++)
@@ -73,7 +73,7 @@ static int neighbours(const int (*bodies)[2], int count, int i)
             continue;
         for (int e = 0; e < 2; e++)
             for (int f = 0; f < 2; f++)
-                if (bodies[i][e] != MDT_COLOUR_WORLD && bodies[i][e] == bodies[j][f]) {
+                if (bodies[i][e] != KEA_COLOUR_WORLD && bodies[i][e] == bodies[j][f]) {
                     n++;
                     e = f = 2;
                 }
@@ -86,7 +86,7 @@ static void a_chain_takes_two_colours(void **state)
     (void)state;
     static int bodies[50][2];
     bodies[0][0] = 0;
-    bodies[0][1] = MDT_COLOUR_WORLD; /* hung from the world */
+    bodies[0][1] = KEA_COLOUR_WORLD; /* hung from the world */
     for (int i = 1; i < 50; i++) {
         bodies[i][0] = i - 1;
         bodies[i][1] = i;
@@ -96,7 +96,7 @@ static void a_chain_takes_two_colours(void **state)
     checkColouring((const int(*)[2])bodies, 50, 50, &c);
     assert_int_equal(c.used, 2);
     assert_int_equal(c.start[1], 25);
-    assert_int_equal(c.start[MDT_COLOUR_OVERFLOW + 1] - c.start[MDT_COLOUR_OVERFLOW], 0);
+    assert_int_equal(c.start[KEA_COLOUR_OVERFLOW + 1] - c.start[KEA_COLOUR_OVERFLOW], 0);
 }
 
 static void a_body_with_more_constraints_than_colours_overflows(void **state)
@@ -108,16 +108,16 @@ static void a_body_with_more_constraints_than_colours_overflows(void **state)
         bodies[2 * i][0] = i + 1;
         bodies[2 * i][1] = 0;
         bodies[2 * i + 1][0] = i + 1;
-        bodies[2 * i + 1][1] = MDT_COLOUR_WORLD;
+        bodies[2 * i + 1][1] = KEA_COLOUR_WORLD;
     }
     static Colouring c;
     colourAll((const int(*)[2])bodies, 60, 31, &c);
     checkColouring((const int(*)[2])bodies, 60, 31, &c);
-    assert_int_equal(c.used, MDT_COLOUR_COUNT);
+    assert_int_equal(c.used, KEA_COLOUR_COUNT);
     /* body 0's first 24 constraints take the 24 colours, the other six overflow */
-    assert_int_equal(c.start[MDT_COLOUR_OVERFLOW + 1] - c.start[MDT_COLOUR_OVERFLOW], 30 - MDT_COLOUR_COUNT);
+    assert_int_equal(c.start[KEA_COLOUR_OVERFLOW + 1] - c.start[KEA_COLOUR_OVERFLOW], 30 - KEA_COLOUR_COUNT);
     for (int i = 0; i < 30; i++)
-        assert_int_equal(c.colour[2 * i], i < MDT_COLOUR_COUNT ? i : MDT_COLOUR_OVERFLOW);
+        assert_int_equal(c.colour[2 * i], i < KEA_COLOUR_COUNT ? i : KEA_COLOUR_OVERFLOW);
 }
 
 /* A wall of boxes in rows, each box touching its right neighbour and the two above it, the bottom row
@@ -130,7 +130,7 @@ static int wall(int (*bodies)[2], int columns, int rows)
             int b = r * columns + x;
             if (r == 0) {
                 bodies[n][0] = b;
-                bodies[n++][1] = MDT_COLOUR_WORLD;
+                bodies[n++][1] = KEA_COLOUR_WORLD;
             }
             if (x + 1 < columns) {
                 bodies[n][0] = b;
@@ -169,7 +169,7 @@ static void a_wall_of_boxes_takes_few_colours(void **state)
                   largest, most);
     assert_true(c.used <= most + 1);
     assert_true(c.used <= 12);
-    assert_int_equal(c.start[MDT_COLOUR_OVERFLOW + 1] - c.start[MDT_COLOUR_OVERFLOW], 0);
+    assert_int_equal(c.start[KEA_COLOUR_OVERFLOW + 1] - c.start[KEA_COLOUR_OVERFLOW], 0);
     /* every colour has work for several workers: the largest colour holds at most a third */
     for (int k = 0; k < c.used; k++)
         assert_true(c.start[k + 1] - c.start[k] <= n / 3);
@@ -193,9 +193,9 @@ static void random_graphs_are_coloured_into_independent_sets_deterministically(v
         for (int i = 0; i < count; i++) {
             bodies[i][0] = (int)(lcg(&seed) % (uint32_t)bodyCount);
             /* one in five to the world, else another body (a body joined to itself is to the world) */
-            bodies[i][1] = lcg(&seed) % 5 == 0 ? MDT_COLOUR_WORLD : (int)(lcg(&seed) % (uint32_t)bodyCount);
+            bodies[i][1] = lcg(&seed) % 5 == 0 ? KEA_COLOUR_WORLD : (int)(lcg(&seed) % (uint32_t)bodyCount);
             if (bodies[i][1] == bodies[i][0])
-                bodies[i][1] = MDT_COLOUR_WORLD;
+                bodies[i][1] = KEA_COLOUR_WORLD;
         }
         memset(workspace, 0, sizeof workspace);
         colourAll((const int(*)[2])bodies, count, bodyCount, &first);
@@ -218,11 +218,11 @@ static void sweep(const int (*bodies)[2], const Colouring *c, float *v, int colo
 {
     static int perm[MAX_CONSTRAINTS];
     for (int k = 0; k <= colourCount; k++) {
-        int colourIndex = k < colourCount ? k : MDT_COLOUR_OVERFLOW;
+        int colourIndex = k < colourCount ? k : KEA_COLOUR_OVERFLOW;
         int a = c->start[colourIndex], n = c->start[colourIndex + 1] - a;
         for (int j = 0; j < n; j++)
             perm[j] = c->order[a + j];
-        if (colourIndex != MDT_COLOUR_OVERFLOW) /* the overflow colour is swept on one worker, in order */
+        if (colourIndex != KEA_COLOUR_OVERFLOW) /* the overflow colour is swept on one worker, in order */
             for (int j = n - 1; j > 0 && shuffleSeed; j--) {
                 int r = (int)(lcg(&shuffleSeed) % (uint32_t)(j + 1));
                 int t = perm[j];
@@ -231,10 +231,10 @@ static void sweep(const int (*bodies)[2], const Colouring *c, float *v, int colo
             }
         for (int j = 0; j < n; j++) {
             const int *b = bodies[perm[j]];
-            float x0 = v[b[0]], x1 = b[1] == MDT_COLOUR_WORLD ? 1.0f : v[b[1]];
+            float x0 = v[b[0]], x1 = b[1] == KEA_COLOUR_WORLD ? 1.0f : v[b[1]];
             float impulse = 0.3f * (x1 - x0) + 0.01f * x0 * x1;
             v[b[0]] = x0 + impulse;
-            if (b[1] != MDT_COLOUR_WORLD)
+            if (b[1] != KEA_COLOUR_WORLD)
                 v[b[1]] = x1 - 0.7f * impulse;
         }
     }
@@ -264,7 +264,7 @@ static void a_sweep_in_colour_order_is_the_same_for_any_worker_schedule(void **s
     static Colouring one;
     one.used = 1;
     one.start[0] = 0;
-    for (int k = 1; k <= MDT_COLOUR_COUNT + 1; k++)
+    for (int k = 1; k <= KEA_COLOUR_COUNT + 1; k++)
         one.start[k] = n;
     for (int i = 0; i < n; i++)
         one.order[i] = c.order[i];
@@ -279,20 +279,20 @@ static void bad_input_is_refused_and_nothing_written(void **state)
 {
     (void)state;
     int bodies[2][2] = {{0, 1}, {1, 5}}; /* body 5 of a 3-body partition */
-    int colour[2] = {-7, -7}, order[2] = {-7, -7}, start[MDT_COLOUR_COUNT + 2];
+    int colour[2] = {-7, -7}, order[2] = {-7, -7}, start[KEA_COLOUR_COUNT + 2];
     memset(start, 0xff, sizeof start);
-    assert_int_equal(MdtColourConstraints((const int(*)[2])bodies, 2, 3, workspace, sizeof workspace, colour, order, start), -1);
+    assert_int_equal(KeaColourConstraints((const int(*)[2])bodies, 2, 3, workspace, sizeof workspace, colour, order, start), -1);
     bodies[1][1] = -2; /* neither a body nor the world */
-    assert_int_equal(MdtColourConstraints((const int(*)[2])bodies, 2, 3, workspace, sizeof workspace, colour, order, start), -1);
+    assert_int_equal(KeaColourConstraints((const int(*)[2])bodies, 2, 3, workspace, sizeof workspace, colour, order, start), -1);
     bodies[1][1] = 2;
-    assert_int_equal(MdtColourConstraints((const int(*)[2])bodies, 2, 3, workspace, MdtColourMemoryRequired(3) - 1,
+    assert_int_equal(KeaColourConstraints((const int(*)[2])bodies, 2, 3, workspace, KeaColourMemoryRequired(3) - 1,
                                           colour, order, start),
                      -1);
     assert_int_equal(colour[0], -7);
     assert_int_equal(order[1], -7);
     assert_int_equal(start[0], -1);
     /* and the same input, well formed, is coloured */
-    assert_int_equal(MdtColourConstraints((const int(*)[2])bodies, 2, 3, workspace, MdtColourMemoryRequired(3), colour,
+    assert_int_equal(KeaColourConstraints((const int(*)[2])bodies, 2, 3, workspace, KeaColourMemoryRequired(3), colour,
                                           order, start),
                      2);
 }

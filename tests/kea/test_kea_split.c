@@ -1,0 +1,338 @@
+/* test_kea_split.c -- one large partition solved over several workers (KeaParameters.splitRows,
+ * KeaTaskHook; src/mdt/kea/kea_split.c): the same bits for any number of workers and any order or
+ * assignment of a colour's chunks (task hooks that reverse, shuffle, or run them on real threads),
+ * against the solve with no hook; a different sweep order from the unsplit solve, but the same LCP
+ * solution at convergence; the unsplit sweep where a friction link leaves its block; and the
+ * workspace it needs. */
+#include <pthread.h>
+#include <stdatomic.h>
+
+#include "karma_test.h"
+
+#include "kea_test_problems.h"
+
+#include "mdt/kea/kea_colour.h"
+
+/* A partition like a pile's: contacts between random bodies and the world, every 30th on body 0 (so
+ * that it has a contact in every colour and the overflow colour is used), and joint rows in blocks of
+ * two, every third block with its half 0 on the world. */
+static void make_pile(KtProblem *t, uint64_t seed, int nContacts, int nb)
+{
+    KtRng rng = kt_rng(seed);
+    const int nJoint = 40, first = 3 * nContacts;
+    int i, k;
+    kt_random_contacts(t, &rng, nContacts, nJoint, nb, 0.5, 1e-2);
+    for (i = 0; i < nContacts; i += 30)
+        for (k = 0; k < 3; ++k) {
+            t->rowBodies[3 * i + k][0] = 0;
+            if (t->rowBodies[3 * i + k][1] == 0) {
+                t->rowBodies[3 * i + k][1] = KEA_WORLD;
+                memset(t->J[3 * i + k].lin1, 0, sizeof t->J[3 * i + k].lin1);
+                memset(t->J[3 * i + k].ang1, 0, sizeof t->J[3 * i + k].ang1);
+            }
+        }
+    for (i = first; i + 1 < first + nJoint; i += 2) {
+        if ((i - first) % 6 == 0) {
+            t->rowBodies[i][0] = KEA_WORLD;
+            t->rowBodies[i][1] = kt_int(&rng, nb);
+            for (k = 0; k < 3; ++k) {
+                t->J[i].lin1[k] = (MeReal)kt_range(&rng, -1, 1);
+                t->J[i].ang1[k] = (MeReal)kt_range(&rng, -1, 1);
+            }
+        }
+        t->rowBodies[i + 1][0] = t->rowBodies[i][0];
+        t->rowBodies[i + 1][1] = t->rowBodies[i][1];
+        for (k = 0; k < 3; ++k) {
+            t->J[i + 1].lin1[k] = t->rowBodies[i][1] >= 0 ? (MeReal)kt_range(&rng, -1, 1) : ME_R(0.0);
+            t->J[i + 1].ang1[k] = t->rowBodies[i][1] >= 0 ? (MeReal)kt_range(&rng, -1, 1) : ME_R(0.0);
+        }
+    }
+}
+
+/* ---- task hooks ----------------------------------------------------------------------------- */
+
+typedef enum Schedule { InOrder, Reversed, Shuffled, Threads, Nothing } Schedule;
+
+typedef struct Hook {
+    Schedule schedule;
+    int workers;
+    int perStage;    /* KeaTaskHook.perStage */
+    KtRng rng;
+    int calls;       /* run calls with more than one item */
+    int workerSeen[KEA_MAX_WORKERS];
+} Hook;
+
+/* Items one at a time, in order, reversed or shuffled, each on a worker chosen by the schedule. */
+static void runSerial(Hook *h, KeaTaskFn task, int items, void *data)
+{
+    int order[4096], i;
+    assert_true(items <= 4096);
+    for (i = 0; i < items; ++i)
+        order[i] = h->schedule == Reversed ? items - 1 - i : i;
+    if (h->schedule == Shuffled)
+        for (i = items - 1; i > 0; --i) {
+            const int j = kt_int(&h->rng, i + 1), swap = order[i];
+            order[i] = order[j];
+            order[j] = swap;
+        }
+    for (i = 0; i < items; ++i) {
+        const int worker = h->schedule == Shuffled ? kt_int(&h->rng, h->workers) : order[i] % h->workers;
+        h->workerSeen[worker] = 1;
+        task(order[i], order[i] + 1, worker, data);
+    }
+}
+
+/* Real threads: workers - 1 started per call and the caller, each taking items from a shared cursor. */
+typedef struct ThreadRun {
+    KeaTaskFn task;
+    void *data;
+    int items;
+    atomic_int next;
+} ThreadRun;
+
+typedef struct ThreadArg {
+    ThreadRun *run;
+    int worker;
+} ThreadArg;
+
+static void *threadMain(void *p)
+{
+    const ThreadArg *arg = p;
+    int item;
+    while ((item = atomic_fetch_add(&arg->run->next, 1)) < arg->run->items)
+        arg->run->task(item, item + 1, arg->worker, arg->run->data);
+    return NULL;
+}
+
+static void runThreads(Hook *h, KeaTaskFn task, int items, void *data)
+{
+    pthread_t threads[KEA_MAX_WORKERS];
+    ThreadArg args[KEA_MAX_WORKERS];
+    ThreadRun run;
+    int k;
+    run.task = task;
+    run.data = data;
+    run.items = items;
+    atomic_init(&run.next, 0);
+    for (k = 0; k < h->workers; ++k) {
+        args[k].run = &run;
+        args[k].worker = k;
+        h->workerSeen[k] = 1;
+    }
+    for (k = 1; k < h->workers; ++k)
+        assert_int_equal(pthread_create(&threads[k], NULL, threadMain, &args[k]), 0);
+    threadMain(&args[0]);
+    for (k = 1; k < h->workers; ++k)
+        pthread_join(threads[k], NULL);
+}
+
+static void runHook(KeaTaskFn task, int items, int minRange, void *data, void *user)
+{
+    Hook *h = user;
+    assert_true(minRange >= 1);
+    h->calls++;
+    if (h->schedule == Nothing) /* a task system that ran none of the team's items */
+        return;
+    if (h->schedule == Threads)
+        runThreads(h, task, items, data);
+    else
+        runSerial(h, task, items, data);
+}
+
+/* ---- solving -------------------------------------------------------------------------------- */
+
+typedef struct Result {
+    MeReal x[8192];
+    KeaBodyVelocity dv[1024];
+    KeaStats stats;
+} Result;
+
+/* KeaSolve with a workspace of exactly what it asks for, the split's included. */
+static KeaStatus solve(const KtProblem *t, const KeaParameters *params, Result *out)
+{
+    const size_t bytes = KeaMemoryRequired(t->p.nRows, t->p.nBodies, KeaSelectPath(t->p.nRows, params)) +
+                         KeaSplitMemoryRequired(t->p.nRows, t->p.nBodies, params);
+    void *work = malloc(bytes);
+    KeaStatus status;
+    assert_true(t->p.nRows <= 8192 && t->p.nBodies <= 1024);
+    memset(out, 0, sizeof *out);
+    status = KeaSolve(&t->p, params, work, bytes, out->x, out->dv, &out->stats);
+    free(work);
+    return status;
+}
+
+static KeaParameters split_params(Hook *hook)
+{
+    KeaParameters p = kt_params(KeaPathIterative);
+    p.splitRows = 1;
+    if (hook) {
+        p.tasks.run = runHook;
+        p.tasks.user = hook;
+        p.tasks.workers = hook->workers;
+        p.tasks.perStage = hook->perStage;
+    }
+    return p;
+}
+
+static void assert_same_bits(const KtProblem *t, const Result *a, const Result *b)
+{
+    assert_memory_equal(a->x, b->x, sizeof(MeReal) * (size_t)t->p.nRows);
+    assert_memory_equal(a->dv, b->dv, sizeof(KeaBodyVelocity) * (size_t)t->p.nBodies);
+    assert_int_equal(a->stats.iterations, b->stats.iterations);
+    assert_int_equal(a->stats.subspaceSteps, b->stats.subspaceSteps);
+    assert_int_equal(a->stats.subspaceSkipped, b->stats.subspaceSkipped);
+    assert_int_equal(a->stats.pivots, b->stats.pivots);
+    assert_int_equal(a->stats.colours, b->stats.colours);
+    assert_memory_equal(&a->stats.residual, &b->stats.residual, sizeof(MeReal));
+}
+
+static int differ(const MeReal *a, const MeReal *b, int n) { return memcmp(a, b, sizeof(MeReal) * (size_t)n) != 0; }
+
+/* Every schedule, worker count and assignment of chunks to workers gives the serial split solve's
+ * bits: impulses, velocity changes, sweeps, SM steps, pivots and residual. Per stage (a run call per
+ * colour and SM loop) the schedules reverse, shuffle and reassign a stage's chunks; as a team (one
+ * run call a solve, kea_split.c), run in order the first item does everything, on real threads the
+ * helpers take whichever chunks they reach first, and a task system that runs no item leaves the
+ * solve to the caller. */
+static void any_schedule_gives_the_same_bits(void **state)
+{
+    static Result reference, other;
+    const Schedule schedules[] = {InOrder, Reversed, Shuffled, Shuffled, Threads, Threads, InOrder, Threads, Threads,
+                                  Nothing};
+    const int workers[] = {3, 4, 5, 2, 4, 2, 3, 4, 2, 3};
+    const int perStage[] = {1, 1, 1, 1, 1, 1, 0, 0, 0, 0};
+    int seed, s, overflowSeen = 0;
+    (void)state;
+    for (seed = 0; seed < 4; ++seed) {
+        KtProblem t;
+        KeaParameters inline_ = split_params(NULL);
+        make_pile(&t, 31000 + (uint64_t)seed, 1500 + 300 * seed, 300 + 50 * seed);
+        assert_int_not_equal(solve(&t, &inline_, &reference), KeaStatusBadInput);
+        assert_true(reference.stats.colours > 2);
+        assert_true(reference.stats.subspaceSteps > 0); /* SM ran: its packs' chunks (1500+ contacts: 12+) too */
+        overflowSeen |= reference.stats.colours > KEA_COLOUR_COUNT;
+        for (s = 0; s < (int)(sizeof schedules / sizeof schedules[0]); ++s) {
+            Hook hook;
+            KeaParameters params;
+            memset(&hook, 0, sizeof hook);
+            hook.schedule = schedules[s];
+            hook.workers = workers[s];
+            hook.perStage = perStage[s];
+            hook.rng = kt_rng(77 + (uint64_t)s);
+            params = split_params(&hook);
+            solve(&t, &params, &other);
+            if (perStage[s]) {
+                assert_true(hook.calls > reference.stats.iterations); /* several chunks of a colour went out */
+                assert_true(hook.workerSeen[1]);                      /* to a worker other than 0 */
+            } else {
+                assert_int_equal(hook.calls, 1); /* one task for the solve */
+            }
+            assert_same_bits(&t, &reference, &other);
+        }
+        kt_free(&t);
+    }
+    assert_true(overflowSeen); /* some problem used the overflow colour */
+}
+
+/* The split sweep goes colour by colour, so its result after the default 10 sweeps differs from the
+ * unsplit sweep's (the check above could not fail if the colours were not used); run to convergence
+ * both reach the partition's one solution (eps > 0: a strictly convex QP). */
+static void split_changes_the_order_not_the_solution(void **state)
+{
+    static Result split, plain;
+    KtProblem t;
+    KeaParameters params = split_params(NULL), unsplit = kt_params(KeaPathIterative);
+    int i;
+    double worst = 0.0, scale = 0.0;
+    (void)state;
+    make_pile(&t, 32000, 200, 60);
+    solve(&t, &params, &split);
+    solve(&t, &unsplit, &plain);
+    assert_int_equal(plain.stats.colours, 0);
+    assert_true(differ(split.x, plain.x, t.p.nRows));
+    params.maxIterations = unsplit.maxIterations = 3000;
+    params.tolerance = unsplit.tolerance = ME_R(0.0);
+    solve(&t, &params, &split);
+    solve(&t, &unsplit, &plain);
+    assert_near(split.stats.residual, 0.0, ME_TOL(1e-7, 2e-3));
+    assert_near(plain.stats.residual, 0.0, ME_TOL(1e-7, 2e-3));
+    for (i = 0; i < t.p.nRows; ++i) {
+        worst = fmax(worst, fabs((double)split.x[i] - (double)plain.x[i]));
+        scale = fmax(scale, fabs((double)plain.x[i]));
+    }
+    print_message("split vs unsplit at convergence: largest impulse difference %.3g of %.3g\n", worst, scale);
+    assert_near(worst / scale, 0.0, ME_TOL(1e-7, 2e-3));
+    kt_free(&t);
+}
+
+/* Scalar PGS (maxBlockRows 1) makes each friction row a block of its own, linked to its normal row's
+ * block: the sweeps are not split (a row's bounds would read another block of its colour) and the
+ * solve is the unsplit one, bit for bit (its set-up's loops, split or not, give the same bits). */
+static void links_across_blocks_keep_the_plain_sweep(void **state)
+{
+    static Result split, plain;
+    KtProblem t;
+    Hook hook;
+    KeaParameters params, unsplit = kt_params(KeaPathIterative);
+    (void)state;
+    memset(&hook, 0, sizeof hook);
+    hook.schedule = Reversed;
+    hook.workers = 3;
+    hook.perStage = 1;
+    params = split_params(&hook);
+    params.maxBlockRows = unsplit.maxBlockRows = 1;
+    make_pile(&t, 33000, 100, 30);
+    solve(&t, &params, &split);
+    solve(&t, &unsplit, &plain);
+    assert_int_equal(split.stats.colours, 0);
+    assert_true(hook.calls <= 2); /* the set-up's row and block loops, before the colouring gave up */
+    assert_same_bits(&t, &split, &plain);
+    kt_free(&t);
+}
+
+/* The split's workspace: none unless it applies; without it KeaSolve refuses (nothing solved). */
+static void split_workspace(void **state)
+{
+    static Result r;
+    KtProblem t;
+    Hook hook;
+    KeaParameters params, none = kt_params(KeaPathIterative);
+    size_t bytes;
+    void *work;
+    (void)state;
+    memset(&hook, 0, sizeof hook);
+    hook.workers = 4;
+    params = split_params(&hook);
+    make_pile(&t, 34000, 100, 30);
+    assert_int_equal(KeaSplitMemoryRequired(t.p.nRows, t.p.nBodies, &none), 0);
+    assert_false(KeaSplits(t.p.nRows, &none));
+    assert_true(KeaSplits(t.p.nRows, &params));
+    assert_true(KeaSplitMemoryRequired(t.p.nRows, t.p.nBodies, &params) > 0);
+    /* more workers, more scratch */
+    params.tasks.workers = 1;
+    bytes = KeaSplitMemoryRequired(t.p.nRows, t.p.nBodies, &params);
+    params.tasks.workers = 4;
+    assert_true(KeaSplitMemoryRequired(t.p.nRows, t.p.nBodies, &params) > bytes);
+    params.splitRows = t.p.nRows + 1; /* too few rows */
+    assert_int_equal(KeaSplitMemoryRequired(t.p.nRows, t.p.nBodies, &params), 0);
+    params.splitRows = 1;
+    params.path = KeaPathDirect; /* the direct path is never split */
+    assert_int_equal(KeaSplitMemoryRequired(t.p.nRows, t.p.nBodies, &params), 0);
+    params.path = KeaPathIterative;
+    bytes = KeaMemoryRequired(t.p.nRows, t.p.nBodies, KeaPathIterative);
+    work = malloc(bytes);
+    assert_int_equal(KeaSolve(&t.p, &params, work, bytes, r.x, r.dv, &r.stats), KeaStatusWorkspaceTooSmall);
+    free(work);
+    kt_free(&t);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(any_schedule_gives_the_same_bits),
+        cmocka_unit_test(split_changes_the_order_not_the_solution),
+        cmocka_unit_test(links_across_blocks_keep_the_plain_sweep),
+        cmocka_unit_test(split_workspace),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
