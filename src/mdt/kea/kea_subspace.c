@@ -285,6 +285,21 @@ static void KeaSmChunk(const KeaSmTask *t, int k, int r[6])
     }
 }
 
+/* out = J_F dv over chunk k's packs and pieces (r: KeaSmChunk's ranges). */
+static void KeaGatherChunk(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, const int r[6])
+{
+    KeaPacksGather(w, dv, out, r[0], r[1]);
+    KeaGather(w, dv, out, r[2], r[3]);
+}
+
+/* z = P^-1 res over chunk k's packs and pieces; returns the chunk's partial res . z. */
+static MeReal KeaPreconditionChunk(const KeaIterativeWork *w, const int r[6])
+{
+    KeaPacksPrecondition(w, w->res, w->z, r[0], r[1]);
+    KeaPrecondition(w, w->res, w->z, r[2], r[3]);
+    return KeaDotN4(w->res + r[4], w->z + r[4], r[5] - r[4]);
+}
+
 /* CG's start on chunk k: grad = w_F at x (KeaGather + eps x - r), step = 0, res = -grad, z = P^-1 res,
  * dir = z; its partial res . z. (Each chunk writes its own positions of the work's arrays.) */
 static void KeaCgStartChunks(int start, int end, int worker, void *data)
@@ -295,8 +310,7 @@ static void KeaCgStartChunks(int start, int end, int worker, void *data)
     (void)worker;
     for (k = start; k < end; ++k) {
         KeaSmChunk(t, k, r);
-        KeaPacksGather(w, w->dv, w->grad, r[0], r[1]);
-        KeaGather(w, w->dv, w->grad, r[2], r[3]);
+        KeaGatherChunk(w, w->dv, w->grad, r);
         for (p = r[4]; p < r[5]; ++p) {
             i = w->freeRows[p];
             w->epsFree[p] = w->eps[i];
@@ -306,11 +320,9 @@ static void KeaCgStartChunks(int start, int end, int worker, void *data)
         }
         KeaPacksClearMasked(w, w->grad, r[0], r[1]); /* a masked row's position holds 0 (kea_contact_packs.h) */
         KeaPacksClearMasked(w, w->res, r[0], r[1]);
-        KeaPacksPrecondition(w, w->res, w->z, r[0], r[1]);
-        KeaPrecondition(w, w->res, w->z, r[2], r[3]);
+        t->partial[k] = KeaPreconditionChunk(w, r);
         for (p = r[4]; p < r[5]; ++p)
             w->dir[p] = w->z[p];
-        t->partial[k] = KeaDotN4(w->res + r[4], w->z + r[4], r[5] - r[4]);
     }
 }
 
@@ -323,8 +335,7 @@ static void KeaCgProductChunks(int start, int end, int worker, void *data)
     (void)worker;
     for (k = start; k < end; ++k) {
         KeaSmChunk(t, k, r);
-        KeaPacksGather(w, w->dvTmp, w->q, r[0], r[1]);
-        KeaGather(w, w->dvTmp, w->q, r[2], r[3]);
+        KeaGatherChunk(w, w->dvTmp, w->q, r);
         t->partial[k] = KeaAddEpsDot(w->q + r[4], w->epsFree + r[4], w->dir + r[4], r[5] - r[4]);
     }
 }
@@ -339,9 +350,7 @@ static void KeaCgUpdateChunks(int start, int end, int worker, void *data)
     for (k = start; k < end; ++k) {
         KeaSmChunk(t, k, r);
         KeaCgUpdate(r[5] - r[4], t->a, w->dir + r[4], w->q + r[4], w->step + r[4], w->res + r[4]);
-        KeaPacksPrecondition(w, w->res, w->z, r[0], r[1]);
-        KeaPrecondition(w, w->res, w->z, r[2], r[3]);
-        t->partial[k] = KeaDotN4(w->res + r[4], w->z + r[4], r[5] - r[4]);
+        t->partial[k] = KeaPreconditionChunk(w, r);
     }
 }
 
@@ -356,8 +365,7 @@ static void KeaTrialChunks(int start, int end, int worker, void *data)
     for (k = start; k < end; ++k) {
         MeReal df = ME_R(0.0);
         KeaSmChunk(t, k, r);
-        KeaPacksGather(w, w->dvTmp, w->q, r[0], r[1]);
-        KeaGather(w, w->dvTmp, w->q, r[2], r[3]);
+        KeaGatherChunk(w, w->dvTmp, w->q, r);
         for (p = r[4]; p < r[5]; ++p) {
             const MeReal As = w->q[p] + w->epsFree[p] * w->z[p];
             df += w->z[p] * (w->grad[p] + ME_R(0.5) * As);
