@@ -1,13 +1,14 @@
 /* kea_split.c -- one large partition over several workers (kea_iterative.h, "the split solve"): the
- * workspace, the colouring of the blocks, the chunks, and how items are handed to the caller's
- * workers (KeaTaskHook, kea.h). The sweep colour by colour is in kea_iterative.c, SM's chunked loops
- * in kea_subspace.c.
+ * workspace, the colouring of the blocks (and of SM's packs), the chunks, and how items are handed
+ * to the caller's workers (KeaTaskHook, kea.h). The sweep colour by colour is in kea_iterative.c,
+ * SM's chunked loops in kea_subspace.c.
  *
  * Why the result does not depend on the workers: within a colour no two blocks share a body, and a
  * block step reads and writes only its own rows, its two bodies' velocity changes and the problem's
  * data, so the order in which a colour's blocks are taken changes no bit; whatever is summed over
  * several blocks or rows is summed per fixed chunk and the chunks added in their order. The world's
- * velocity change (dv[nb], all zero) is read by every block on the world and written by none. */
+ * velocity change (dv[nb], all zero) is read by every block on the world and written by none. SM's
+ * packs (four contacts, up to eight bodies) are coloured on their own for its scatter, the same way. */
 #include <stdint.h>
 #include <string.h>
 
