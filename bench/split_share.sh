@@ -33,9 +33,9 @@ trap 'rm -rf "$work"' EXIT
 
 TASKS="predictTask packTask solveTask integrateTask unpackTask testPairs KeaSweepChunks KeaScatterChunks \
 KeaCgStartChunks KeaCgProductChunks KeaCgUpdateChunks KeaTrialChunks KeaSetUpRowChunks KeaWarmStartRowChunks \
-KeaFactorBlockChunks"
-# serial parts printed for reference (not counted as in tasks): the packs' scatter (K41's four-contact
-# packs add into bodies that packs share, so a split solve runs it on its driver alone)
+KeaFactorBlockChunks KeaScatterPackChunks"
+# serial parts printed for reference (not counted as in tasks): the packs' scatter of an unsplit solve (a
+# split solve scatters its packs colour by colour: KeaScatterPackChunks, in tasks)
 SERIAL="KeaPacksScatter"
 run() { # steps out
     valgrind --tool=callgrind --callgrind-out-file="$2" --toggle-collect=karma_step "$BIN" \

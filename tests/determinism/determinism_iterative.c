@@ -38,11 +38,11 @@
  * for every worker count. */
 #  define SPLIT_ROWS 100
 #  if KARMA_DOUBLE
-#    define GOLDEN_PILE 0x179d06832d394e9dull
-#    define GOLDEN_PYRAMID 0x5bd4ef4e6df1fcf3ull
+#    define GOLDEN_PILE 0xa567d2393fd4d968ull
+#    define GOLDEN_PYRAMID 0xc263c5241595078bull
 #  else
-#    define GOLDEN_PILE 0x26be2e14b3ab5cb8ull
-#    define GOLDEN_PYRAMID 0xc665a950f4a1afb5ull
+#    define GOLDEN_PILE 0xb26e837c337c439cull
+#    define GOLDEN_PYRAMID 0xe9a150aaabd1b931ull
 #  endif
 #elif KARMA_DOUBLE
 #  define GOLDEN_PILE 0x723b3f95c4e4629cull

@@ -297,6 +297,78 @@ static void bad_input_is_refused_and_nothing_written(void **state)
                      2);
 }
 
+/* Items of eight bodies (SM's packs of four contacts, kea_split.c): a colour's items share no body but
+ * the world, whatever repeats within an item; an item on the world alone with others takes colour 0;
+ * a body in more items than colours overflows; perItem 2 is KeaColourConstraints; perItem 0 is
+ * refused with nothing written. */
+static void items_of_eight_bodies_are_coloured_into_independent_sets(void **state)
+{
+    enum { PER = 8, COUNT = 300, BODIES = 200 };
+    static int bodies[COUNT * PER], colour[COUNT], order[COUNT];
+    static int seen[KEA_COLOUR_COUNT + 1][BODIES];
+    int start[KEA_COLOUR_COUNT + 2], i, k, used;
+    uint64_t rng = 99;
+    (void)state;
+    memset(seen, 0, sizeof seen);
+    for (i = 0; i < COUNT * PER; ++i) {
+        rng = rng * 6364136223846793005ull + 1442695040888963407ull;
+        bodies[i] = (int)((rng >> 33) % (BODIES + 20)) - 20; /* about one in ten on the world */
+        if (bodies[i] < 0)
+            bodies[i] = KEA_COLOUR_WORLD;
+    }
+    for (i = 0; i < 30; ++i) /* items 0 ... 29 all hold body 7: more of them than colours */
+        bodies[PER * i + 3] = 7;
+    used = KeaColourItems(bodies, PER, COUNT, BODIES, workspace, sizeof workspace, colour, order, start);
+    assert_true(used > 1 && used <= KEA_COLOUR_COUNT);
+    assert_int_equal(start[KEA_COLOUR_COUNT + 1], COUNT);
+    assert_true(start[KEA_COLOUR_OVERFLOW + 1] - start[KEA_COLOUR_OVERFLOW] >= 30 - KEA_COLOUR_COUNT);
+    for (k = 0; k <= KEA_COLOUR_COUNT; ++k)
+        for (i = start[k]; i < start[k + 1]; ++i) {
+            const int item = order[i];
+            int taken[BODIES] = {0};
+            assert_int_equal(colour[item], k);
+            if (i > start[k])
+                assert_true(order[i - 1] < item);
+            if (k == KEA_COLOUR_OVERFLOW)
+                continue;
+            for (int e = 0; e < PER; ++e) {
+                const int b = bodies[PER * item + e];
+                if (b == KEA_COLOUR_WORLD || taken[b])
+                    continue; /* the world, or a body the item holds twice */
+                taken[b] = 1;
+                assert_int_equal(seen[k][b], 0); /* no other item of the colour holds it */
+                seen[k][b] = 1;
+            }
+        }
+    /* first fit: an item on the world and bodies no earlier item holds takes colour 0 */
+    {
+        int two[2 * PER];
+        for (i = 0; i < 2 * PER; ++i)
+            two[i] = i % 2 ? KEA_COLOUR_WORLD : i;
+        assert_int_equal(KeaColourItems(two, PER, 2, 2 * PER, workspace, sizeof workspace, colour, order, start), 1);
+        assert_int_equal(colour[0], 0);
+        assert_int_equal(colour[1], 0);
+    }
+    /* perItem 2 is the constraints' colouring */
+    {
+        static int pairs[COUNT][2], colour2[COUNT], order2[COUNT];
+        int start2[KEA_COLOUR_COUNT + 2];
+        for (i = 0; i < COUNT; ++i) {
+            pairs[i][0] = bodies[PER * i];
+            pairs[i][1] = bodies[PER * i + 1];
+        }
+        assert_int_equal(KeaColourItems(&pairs[0][0], 2, COUNT, BODIES, workspace, sizeof workspace, colour, order, start),
+                         KeaColourConstraints((const int(*)[2])pairs, COUNT, BODIES, workspace, sizeof workspace,
+                                              colour2, order2, start2));
+        assert_memory_equal(colour, colour2, sizeof colour2);
+        assert_memory_equal(order, order2, sizeof order2);
+        assert_memory_equal(start, start2, sizeof start2);
+    }
+    colour[0] = -7;
+    assert_int_equal(KeaColourItems(bodies, 0, COUNT, BODIES, workspace, sizeof workspace, colour, order, start), -1);
+    assert_int_equal(colour[0], -7);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -306,6 +378,7 @@ int main(void)
         cmocka_unit_test(random_graphs_are_coloured_into_independent_sets_deterministically),
         cmocka_unit_test(a_sweep_in_colour_order_is_the_same_for_any_worker_schedule),
         cmocka_unit_test(bad_input_is_refused_and_nothing_written),
+        cmocka_unit_test(items_of_eight_bodies_are_coloured_into_independent_sets),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -440,11 +440,11 @@ static void pack_scatter_is_the_row_kernels_within_rounding(void **state)
                 }
             }
         memcpy(byLane, got, sizeof got);
-        KeaPackScatter(&pack, d, got);
+        KeaPackScatter(&pack, d, got, -1);
         if (pack.pair) { /* the same pack scattered lane by lane */
             KeaContactPack lanePack = pack;
             lanePack.pair = 0;
-            KeaPackScatter(&lanePack, d, byLane);
+            KeaPackScatter(&lanePack, d, byLane, -1);
             assert_memory_equal(byLane, got, sizeof got);
         }
         for (b = 0; b <= PACK_NB; ++b) {

@@ -12,6 +12,7 @@
 #include "kea_test_problems.h"
 
 #include "mdt/kea/kea_colour.h"
+#include "mdt/kea/kea_contact_packs.h"
 
 /* A partition like a pile's: contacts between random bodies and the world, every 30th on body 0 (so
  * that it has a contact in every colour and the overflow colour is used), and joint rows in blocks of
@@ -326,6 +327,112 @@ static void split_workspace(void **state)
     kt_free(&t);
 }
 
+/* SM's pack scatter in a split solve (KeaSplitPacks, KeaPacksScatterSplit): packs on random bodies,
+ * many on the world (nb: a box on the ground, an empty lane), one body in more packs than colours.
+ * Every pack is in one colour and one chunk of it (at most KEA_SPLIT_PACKS packs); a colour's packs
+ * share no body but the world; scattering colour by colour gives the same bits whether each colour's
+ * chunks and packs run forwards or backwards (what lets a colour's chunks go to any worker), and
+ * the world's velocity change is never written (several packs of a colour may hold it). */
+static void packs_scatter_colour_by_colour_in_any_order(void **state)
+{
+    enum { NP = 150, NB = 120 };
+    static KeaContactPack packs[NP];
+    static _Alignas(16) MeReal v[KEA_PACK_POSITIONS * NP];
+    static KeaVel4 forward[NB + 1], backward[NB + 1];
+    static int packBodies[2 * KEA_PACK_LANES * NP], packColour[NP], packOrder[NP], packChunk[NP / KEA_SPLIT_PACKS + 32];
+    static uint64_t colourWork[NB * KEA_COLOUR_COUNT];
+    KtRng rng = kt_rng(4242);
+    KeaIterativeWork w;
+    KeaSplit split;
+    int k, h, l, c, j, r, seen[NP] = {0}, overflow;
+    (void)state;
+    memset(packs, 0, sizeof packs);
+    for (k = 0; k < NP; ++k) {
+        KeaContactPack *p = &packs[k];
+        const int pair = k % 3 == 0;
+        p->lanes = k == NP - 1 ? 2 : KEA_PACK_LANES;
+        for (l = 0; l < KEA_PACK_LANES; ++l) {
+            const int used = l < p->lanes;
+            p->body[0][l] = !used ? NB : (pair && l > 0 ? p->body[0][0] : (k < 40 && l == 0 ? 5 : kt_int(&rng, NB)));
+            p->body[1][l] = !used ? NB : (pair && l > 0 ? p->body[1][0] : (kt_int(&rng, 3) == 0 ? NB : kt_int(&rng, NB)));
+        }
+        p->pair = pair;
+        for (r = 0; r < 3; ++r)
+            for (h = 0; h < 12; ++h)
+                for (l = 0; l < KEA_PACK_LANES; ++l)
+                    p->B[r][h][l] = (MeReal)kt_range(&rng, -1, 1);
+    }
+    for (j = 0; j < KEA_PACK_POSITIONS * NP; ++j)
+        v[j] = (MeReal)kt_range(&rng, -1, 1);
+    memset(&w, 0, sizeof w);
+    memset(&split, 0, sizeof split);
+    w.packs = packs;
+    w.nPacks = NP;
+    w.nb = NB;
+    split.packBodies = packBodies;
+    split.packColour = packColour;
+    split.packOrder = packOrder;
+    split.packChunk = packChunk;
+    split.colourWork = colourWork;
+    split.colourBytes = KeaColourMemoryRequired(NB);
+    assert_true(split.colourBytes <= sizeof colourWork);
+    KeaSplitPacks(&w, &split);
+    assert_int_equal(split.packColourChunk[0], 0);
+    assert_int_equal(split.packChunk[split.packColourChunk[KEA_COLOUR_COUNT + 1]], NP);
+    overflow = 0;
+    for (c = 0; c <= KEA_COLOUR_COUNT; ++c) {
+        int held[NB] = {0};
+        for (k = split.packColourChunk[c]; k < split.packColourChunk[c + 1]; ++k) {
+            assert_true(split.packChunk[k] < split.packChunk[k + 1]);
+            assert_true(split.packChunk[k + 1] - split.packChunk[k] <= KEA_SPLIT_PACKS);
+            for (j = split.packChunk[k]; j < split.packChunk[k + 1]; ++j) {
+                const int p = split.packOrder[j];
+                int mine[NB + 1] = {0};
+                assert_int_equal(split.packColour[p], c);
+                seen[p]++;
+                if (c == KEA_COLOUR_OVERFLOW) {
+                    ++overflow;
+                    continue;
+                }
+                for (h = 0; h < 2; ++h)
+                    for (l = 0; l < KEA_PACK_LANES; ++l) {
+                        const int b = packs[p].body[h][l];
+                        if (b == NB || mine[b]++)
+                            continue;
+                        assert_int_equal(held[b], 0); /* no other pack of the colour holds it */
+                        held[b] = 1;
+                    }
+            }
+        }
+    }
+    for (k = 0; k < NP; ++k)
+        assert_int_equal(seen[k], 1);
+    assert_true(overflow >= 40 - KEA_COLOUR_COUNT); /* body 5's packs beyond the colours */
+    /* forwards and backwards within each colour (the overflow colour, on one worker, forwards) */
+    memset(forward, 0, sizeof forward);
+    for (j = 0; j < 4; ++j) /* the world's entry as a sentinel: never written */
+        forward[NB].lin[j] = forward[NB].ang[j] = ME_R(7.0);
+    memcpy(backward, forward, sizeof forward);
+    for (c = 0; c <= KEA_COLOUR_COUNT; ++c) {
+        const int first = split.packChunk[split.packColourChunk[c]], last = split.packChunk[split.packColourChunk[c + 1]];
+        KeaPacksScatterSplit(&w, v, forward, split.packOrder, first, last);
+        if (c == KEA_COLOUR_OVERFLOW) {
+            KeaPacksScatterSplit(&w, v, backward, split.packOrder, first, last);
+            continue;
+        }
+        for (j = last - 1; j >= first; --j)
+            KeaPacksScatterSplit(&w, v, backward, split.packOrder, j, j + 1);
+    }
+    assert_memory_equal(forward, backward, sizeof forward);
+    for (j = 0; j < 4; ++j) {
+        assert_true(forward[NB].lin[j] == ME_R(7.0));
+        assert_true(forward[NB].ang[j] == ME_R(7.0));
+    }
+    for (k = 0, j = 0; k < NB; ++k)
+        j += forward[k].lin[0] != ME_R(0.0);
+    assert_true(j > NB / 2); /* the scatter wrote the bodies */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -333,6 +440,7 @@ int main(void)
         cmocka_unit_test(split_changes_the_order_not_the_solution),
         cmocka_unit_test(links_across_blocks_keep_the_plain_sweep),
         cmocka_unit_test(split_workspace),
+        cmocka_unit_test(packs_scatter_colour_by_colour_in_any_order),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

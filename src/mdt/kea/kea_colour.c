@@ -5,7 +5,8 @@
  * a body to the world, since the world's velocity is never written. Greedy first-fit in the
  * constraints' order: a constraint sharing bodies with d others gets a colour below d + 1, so a chain
  * takes two colours and a grid of stacked boxes a handful; only a body with more than
- * KEA_COLOUR_COUNT constraints sends some of them to the overflow colour. */
+ * KEA_COLOUR_COUNT constraints sends some of them to the overflow colour. The same for items of more
+ * bodies (KeaColourItems: SM's packs of four contacts, up to eight bodies). */
 #include <stdint.h>
 #include <string.h>
 
@@ -40,12 +41,28 @@ static void take(uint64_t *set, int b)
 int KeaColourConstraints(const int (*bodies)[2], int count, int bodyCount, void *workspace, size_t workspaceBytes,
                          int *colour, int *order, int *colourStart)
 {
-    if (count < 0 || bodyCount < 0 || workspaceBytes < KeaColourMemoryRequired(bodyCount))
+    return KeaColourItems(count > 0 ? &bodies[0][0] : NULL, 2, count, bodyCount, workspace, workspaceBytes, colour,
+                          order, colourStart);
+}
+
+/* Whether every body of an item (or the world) is free in the set. */
+static int allFree(const uint64_t *set, const int *item, int perItem)
+{
+    for (int k = 0; k < perItem; k++)
+        if (!isFree(set, item[k]))
+            return 0;
+    return 1;
+}
+
+/* Size: KeaColourConstraints' parameters and the bodies per item. */
+int KeaColourItems(const int *bodies, int perItem, int count, int bodyCount, void *workspace, size_t workspaceBytes,
+                   int *colour, int *order, int *colourStart)
+{
+    if (count < 0 || perItem < 1 || bodyCount < 0 || workspaceBytes < KeaColourMemoryRequired(bodyCount))
         return -1;
-    for (int i = 0; i < count; i++)
-        for (int k = 0; k < 2; k++)
-            if (bodies[i][k] != KEA_COLOUR_WORLD && (bodies[i][k] < 0 || bodies[i][k] >= bodyCount))
-                return -1;
+    for (int i = 0; i < count * perItem; i++)
+        if (bodies[i] != KEA_COLOUR_WORLD && (bodies[i] < 0 || bodies[i] >= bodyCount))
+            return -1;
     const size_t words = wordsFor(bodyCount);
     uint64_t *sets = workspace;
     if (words > 0)
@@ -53,13 +70,13 @@ int KeaColourConstraints(const int (*bodies)[2], int count, int bodyCount, void 
     int counts[KEA_COLOUR_COUNT + 1] = {0};
     int used = 0;
     for (int i = 0; i < count; i++) {
+        const int *item = bodies + (size_t)i * (size_t)perItem;
         int c = 0;
-        while (c < KEA_COLOUR_COUNT &&
-               !(isFree(sets + (size_t)c * words, bodies[i][0]) && isFree(sets + (size_t)c * words, bodies[i][1])))
+        while (c < KEA_COLOUR_COUNT && !allFree(sets + (size_t)c * words, item, perItem))
             c++;
         if (c < KEA_COLOUR_COUNT) {
-            take(sets + (size_t)c * words, bodies[i][0]);
-            take(sets + (size_t)c * words, bodies[i][1]);
+            for (int k = 0; k < perItem; k++)
+                take(sets + (size_t)c * words, item[k]);
             if (c + 1 > used)
                 used = c + 1;
         }

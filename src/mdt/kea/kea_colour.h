@@ -31,4 +31,10 @@ size_t KeaColourMemoryRequired(int bodyCount);
 int KeaColourConstraints(const int (*bodies)[2], int count, int bodyCount, void *workspace, size_t workspaceBytes,
                          int *colour, int *order, int *colourStart);
 
+/** The same for items of `perItem` bodies each (>= 1): item i's are bodies[perItem i .. perItem i +
+ *  perItem - 1] (a body may repeat within an item); an item takes the lowest colour that holds none of
+ *  them. KeaColourConstraints is this with perItem 2. Returns as it, or -1 for perItem < 1. */
+int KeaColourItems(const int *bodies, int perItem, int count, int bodyCount, void *workspace, size_t workspaceBytes,
+                   int *colour, int *order, int *colourStart);
+
 #endif /* KEA_COLOUR_H */

@@ -146,7 +146,17 @@ void KeaPacksScatter(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, in
     const KeaContactPack *packs = w->packs;
     int k;
     for (k = first; k < last; ++k)
-        KeaPackScatter(&packs[k], v + KEA_PACK_POSITIONS * k, dv);
+        KeaPackScatter(&packs[k], v + KEA_PACK_POSITIONS * k, dv, -1);
+}
+
+void KeaPacksScatterSplit(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, const int *order, int first,
+                          int last)
+{
+    const KeaContactPack *packs = w->packs;
+    const int nb = w->nb;
+    int j;
+    for (j = first; j < last; ++j)
+        KeaPackScatter(&packs[order[j]], v + KEA_PACK_POSITIONS * order[j], dv, nb);
 }
 
 void KeaPacksPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z, int first, int last)

@@ -110,8 +110,10 @@ static inline void KeaPackGather(const KeaContactPack *pack, const KeaVel4 *dv, 
 
 /* Lane l's bodies += sum_r B_r d[4 r + l], lane by lane in lane order (lanes may share a body);
  * each lane's sum over its three rows made first, ((B_0 d_0 + B_1 d_1) + B_2 d_2), then added. A
- * pack on one body pair makes the same additions with each body loaded and stored once. */
-static inline void KeaPackScatter(const KeaContactPack *pack, const MeReal *d, KeaVel4 *dv)
+ * pack on one body pair makes the same additions with each body loaded and stored once. Body
+ * `skip` is not written (a split solve's: the world, nb, whose half adds exact zeros and which other
+ * packs of the colour may hold too; -1: every body written). */
+static inline void KeaPackScatter(const KeaContactPack *pack, const MeReal *d, KeaVel4 *dv, int skip)
 {
     const KeaLanes d0 = KeaLanesLoadA(d), d1 = KeaLanesLoadA(d + 4), d2 = KeaLanesLoadA(d + 8);
     KeaLanes add[16]; /* after the transposes: add[4 h + l], half h (lin0, ang0, lin1, ang1) of lane l */
@@ -130,7 +132,10 @@ static inline void KeaPackScatter(const KeaContactPack *pack, const MeReal *d, K
         KeaVel4 *v0 = &dv[pack->body[0][0]], *v1 = &dv[pack->body[1][0]];
         for (h = 0; h < 4; ++h) {
             MeReal *half = h == 0 ? v0->lin : (h == 1 ? v0->ang : (h == 2 ? v1->lin : v1->ang));
-            KeaLanes sum = KeaLanesLoadA(half);
+            KeaLanes sum;
+            if (pack->body[h / 2][0] == skip)
+                continue;
+            sum = KeaLanesLoadA(half);
             for (l = 0; l < KEA_PACK_LANES; ++l)
                 sum = KeaLanesAdd(sum, add[4 * h + l]);
             KeaLanesStoreA(half, sum);
@@ -139,9 +144,11 @@ static inline void KeaPackScatter(const KeaContactPack *pack, const MeReal *d, K
     }
     for (l = 0; l < KEA_PACK_LANES; ++l) {
         KeaVel4 *v0 = &dv[pack->body[0][l]];
-        KeaLanesStoreA(v0->lin, KeaLanesAdd(KeaLanesLoadA(v0->lin), add[l]));
-        KeaLanesStoreA(v0->ang, KeaLanesAdd(KeaLanesLoadA(v0->ang), add[4 + l]));
-        {
+        if (pack->body[0][l] != skip) {
+            KeaLanesStoreA(v0->lin, KeaLanesAdd(KeaLanesLoadA(v0->lin), add[l]));
+            KeaLanesStoreA(v0->ang, KeaLanesAdd(KeaLanesLoadA(v0->ang), add[4 + l]));
+        }
+        if (pack->body[1][l] != skip) {
             KeaVel4 *v1 = &dv[pack->body[1][l]]; /* after v0's store: v0 may be v1 */
             KeaLanesStoreA(v1->lin, KeaLanesAdd(KeaLanesLoadA(v1->lin), add[8 + l]));
             KeaLanesStoreA(v1->ang, KeaLanesAdd(KeaLanesLoadA(v1->ang), add[12 + l]));
@@ -180,6 +187,10 @@ int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x);
 void KeaPacksGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, int first, int last);
 /* dv += M^-1 J^T v over the packs' positions. */
 void KeaPacksScatter(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, int first, int last);
+/* The same for packs order[j], j in [first, last), the world's dv (nb) not written: a split solve's
+ * colour of packs sharing no body but the world (KeaSplitPacks), on several workers at once. */
+void KeaPacksScatterSplit(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, const int *order, int first,
+                          int last);
 /* z = A_bb^-1 res per contact over the packs' positions. */
 void KeaPacksPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z, int first, int last);
 /* v[p] = 0 at every masked row's position of packs first ... last - 1. */

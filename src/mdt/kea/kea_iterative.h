@@ -251,7 +251,7 @@ typedef struct KeaIterativeWork {
  * the residual, the rows that changed, the dense solver's pivots), added afterwards in chunk order;
  * SM's loops run over fixed chunks of KEA_SPLIT_PACKS packs, then of KEA_SPLIT_PIECES pieces of its
  * free list, their dot products as one partial sum per chunk, added in chunk order; its scatter
- * takes the packs on the driver alone, then the pieces colour by colour; the set-up's
+ * takes the packs colour by colour (KeaSplitPacks), then the pieces colour by colour; the set-up's
  * loops over rows and blocks (each item writing only its own entries) in chunks too. The chunks depend on the problem only, never
  * on the workers, so neither does any bit of the result. */
 
@@ -261,8 +261,8 @@ typedef struct KeaIterativeWork {
 /** Pieces of SM's free list (KeaFreePiece) per chunk of its loops in a split solve (at least, for
  *  its scatter: whole units). */
 #define KEA_SPLIT_PIECES 128
-/** Packs of four contacts (kea_contact_packs.h) per chunk of SM's gathers, preconditioner and sums in
- *  a split solve (their scatter runs on the driver alone: packs share bodies). */
+/** Packs of four contacts (kea_contact_packs.h) per chunk of SM's loops in a split solve (their
+ *  scatter: per chunk of a colour's packs, KeaSplitPacks). */
 #define KEA_SPLIT_PACKS 32
 /** Rows per chunk of the set-up's row loops, and blocks per chunk of its block set-up, in a split solve. */
 #define KEA_SPLIT_ROWS 256
@@ -317,6 +317,11 @@ typedef struct KeaSplit {
     int *pieceOrder;       /**< SM's scatter: the free list's pieces by colour, each colour's in order */
     int *pieceChunk;       /**< its chunks: pieceOrder[pieceChunk[k] .. pieceChunk[k + 1]) (whole units) */
     int pieceColourChunk[KEA_COLOUR_COUNT + 2]; /**< colour c's scatter chunks */
+    int *packBodies;       /**< SM's scatter: each pack's eight halves' bodies for its colouring (world: none) */
+    int *packColour;       /**< each pack's colour (no two packs of a colour share a body) */
+    int *packOrder;        /**< the packs by colour, each colour's in pack order */
+    int *packChunk;        /**< the packs' scatter chunks: packOrder[packChunk[k] .. packChunk[k + 1]) */
+    int packColourChunk[KEA_COLOUR_COUNT + 2]; /**< colour c's pack scatter chunks */
     void *colourWork;      /**< the colouring's bit sets */
     size_t colourBytes;
     int colourStart[KEA_COLOUR_COUNT + 2]; /**< colour c is order[colourStart[c] .. colourStart[c + 1]) (the
@@ -342,6 +347,9 @@ void KeaSplitRun(const KeaSplit *split, KeaTaskFn task, int items, void *data);
 void KeaSplitDrive(KeaSplit *split, void (*drive)(void *), void *data);
 void KeaSplitWorks(const KeaIterativeWork *w, KeaSplit *split);
 void KeaSplitPieces(const KeaIterativeWork *w, KeaSplit *split);
+/* SM's pack scatter order, once the packs are built (KeaPacksFill): the packs coloured by their
+ * bodies (the world in no colour), each colour's in chunks of KEA_SPLIT_PACKS packs. */
+void KeaSplitPacks(const KeaIterativeWork *w, KeaSplit *split);
 
 /* SM's free-list positions for n rows at most: the pack region (12 per pack of up to four of the at
  * most n / 3 contacts, masked lanes included) and every row again after it. */

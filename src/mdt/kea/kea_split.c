@@ -1,17 +1,18 @@
 /* kea_split.c -- one large partition over several workers (kea_iterative.h, "the split solve"): the
- * workspace, the colouring of the blocks, the chunks, and how items are handed to the caller's
- * workers (KeaTaskHook, kea.h). The sweep colour by colour is in kea_iterative.c, SM's chunked loops
- * in kea_subspace.c.
+ * workspace, the colouring of the blocks (and of SM's packs), the chunks, and how items are handed
+ * to the caller's workers (KeaTaskHook, kea.h). The sweep colour by colour is in kea_iterative.c,
+ * SM's chunked loops in kea_subspace.c.
  *
  * Why the result does not depend on the workers: within a colour no two blocks share a body, and a
  * block step reads and writes only its own rows, its two bodies' velocity changes and the problem's
  * data, so the order in which a colour's blocks are taken changes no bit; whatever is summed over
  * several blocks or rows is summed per fixed chunk and the chunks added in their order. The world's
- * velocity change (dv[nb], all zero) is read by every block on the world and written by none. */
+ * velocity change (dv[nb], all zero) is read by every block on the world and written by none. SM's
+ * packs (four contacts, up to eight bodies) are coloured on their own for its scatter, the same way. */
 #include <stdint.h>
 #include <string.h>
 
-#include "kea_iterative.h"
+#include "kea_contact_packs.h"
 
 static KeaBlockScratch KeaScratchLayout(KeaArena *arena, int cap)
 {
@@ -51,6 +52,10 @@ void KeaSplitLayout(KeaArena *arena, int n, int nb, int workers, KeaSplit *split
     split->blockUnit = KEA_ALLOC(arena, int, n);
     split->pieceOrder = KEA_ALLOC(arena, int, n);
     split->pieceChunk = KEA_ALLOC(arena, int, n / KEA_SPLIT_PIECES + KEA_COLOUR_COUNT + 2);
+    split->packBodies = KEA_ALLOC(arena, int, 2 * KEA_PACK_LANES * (n / 12 + 1)); /* the packs: kea_blocks.c */
+    split->packColour = KEA_ALLOC(arena, int, n / 12 + 1);
+    split->packOrder = KEA_ALLOC(arena, int, n / 12 + 1);
+    split->packChunk = KEA_ALLOC(arena, int, (n / 12 + 1) / KEA_SPLIT_PACKS + KEA_COLOUR_COUNT + 2);
     split->scratch = KEA_ALLOC(arena, KeaBlockScratch, workers);
     split->works = KEA_ALLOC(arena, KeaIterativeWork, workers);
     for (k = 1; k < workers; ++k) { /* worker 0 uses the work's own */
@@ -315,4 +320,36 @@ void KeaSplitPieces(const KeaIterativeWork *w, KeaSplit *split)
     }
     split->pieceColourChunk[KEA_COLOUR_COUNT + 1] = chunks;
     split->pieceChunk[chunks] = w->nPieces;
+}
+
+/* The packs' colouring: a pack's eight halves' bodies, the world (nb: a contact on the ground, a lane
+ * with no contact) as none, so that any number of a colour's packs may hold bodies to the world (the
+ * split scatter writes nothing to it, KeaPacksScatterSplit). Each colour's packs in pack order, cut
+ * every KEA_SPLIT_PACKS packs: no two share a body, so neither their order nor the cut changes a bit. */
+void KeaSplitPacks(const KeaIterativeWork *w, KeaSplit *split)
+{
+    int k, h, l, c, j, chunks = 0;
+    int start[KEA_COLOUR_COUNT + 2];
+    for (k = 0; k < w->nPacks; ++k)
+        for (h = 0; h < 2; ++h)
+            for (l = 0; l < KEA_PACK_LANES; ++l) {
+                const int b = w->packs[k].body[h][l];
+                split->packBodies[2 * KEA_PACK_LANES * k + KEA_PACK_LANES * h + l] = b == w->nb ? KEA_COLOUR_WORLD : b;
+            }
+    if (KeaColourItems(split->packBodies, 2 * KEA_PACK_LANES, w->nPacks, w->nb, split->colourWork, split->colourBytes,
+                       split->packColour, split->packOrder, start) < 0) {
+        /* not reached (the bodies are in range, the workspace sized for them): all packs overflow, serial */
+        for (k = 0; k < w->nPacks; ++k)
+            split->packOrder[k] = k;
+        for (c = 0; c <= KEA_COLOUR_COUNT; ++c)
+            start[c] = 0;
+        start[KEA_COLOUR_COUNT + 1] = w->nPacks;
+    }
+    for (c = 0; c <= KEA_COLOUR_COUNT; ++c) {
+        split->packColourChunk[c] = chunks;
+        for (j = start[c]; j < start[c + 1]; j += KEA_SPLIT_PACKS)
+            split->packChunk[chunks++] = j;
+    }
+    split->packColourChunk[KEA_COLOUR_COUNT + 1] = chunks;
+    split->packChunk[chunks] = w->nPacks;
 }

@@ -86,32 +86,47 @@ static void KeaScatterChunks(int start, int end, int worker, void *data)
         KeaScatterPieces(t->w, t->v, split->pieceOrder, split->pieceChunk[k], split->pieceChunk[k + 1]);
 }
 
-/* dvTmp = M^-1 J_F^T v: the packs, then the pieces in free-list order; in a split solve the pieces
- * colour by colour (KeaSplitPieces), a colour's chunks over the workers, the overflow colour's on
- * this thread. */
+/* A colour's pack chunks (KeaSplitPacks). */
+static void KeaScatterPackChunks(int start, int end, int worker, void *data)
+{
+    const KeaSmTask *t = data;
+    const KeaSplit *split = t->w->split;
+    (void)worker;
+    KeaPacksScatterSplit(t->w, t->v, t->w->dvTmp, split->packOrder, split->packChunk[t->firstChunk + start],
+                         split->packChunk[t->firstChunk + end]);
+}
+
+/* A split scatter's colours one after the other: colour c's chunks colourChunk[c] ... colourChunk[c +
+ * 1] - 1 over the workers, the overflow colour's on this thread. */
+static void KeaScatterColours(const KeaSplit *split, KeaTaskFn task, const int *colourChunk, KeaSmTask *t)
+{
+    int c;
+    for (c = 0; c <= KEA_COLOUR_COUNT; ++c) {
+        const int chunks = colourChunk[c + 1] - colourChunk[c];
+        t->firstChunk = colourChunk[c];
+        if (c == KEA_COLOUR_OVERFLOW)
+            task(0, chunks, 0, t);
+        else
+            KeaSplitRun(split, task, chunks, t);
+    }
+}
+
+/* dvTmp = M^-1 J_F^T v: the packs, then the pieces in free-list order; in a split solve the packs
+ * colour by colour (KeaSplitPacks), then the pieces colour by colour (KeaSplitPieces). */
 static void KeaScatter(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *v)
 {
     KeaSplit *split = w->split;
     KeaSmTask t;
-    int c;
     memset(w->dvTmp, 0, sizeof(KeaVel4) * (size_t)(problem->nBodies + 1));
-    /* The packs first, on this thread alone in a split solve too: their lanes add into bodies that
-     * other packs share (docs/kea.md, "One partition on several cores"). */
-    KeaPacksScatter(w, v, w->dvTmp, 0, w->nPacks);
     if (!split) {
+        KeaPacksScatter(w, v, w->dvTmp, 0, w->nPacks);
         KeaScatterPieces(w, v, NULL, 0, w->nPieces);
         return;
     }
     t.w = w;
     t.v = v;
-    for (c = 0; c <= KEA_COLOUR_COUNT; ++c) {
-        const int chunks = split->pieceColourChunk[c + 1] - split->pieceColourChunk[c];
-        t.firstChunk = split->pieceColourChunk[c];
-        if (c == KEA_COLOUR_OVERFLOW)
-            KeaScatterChunks(0, chunks, 0, &t);
-        else
-            KeaSplitRun(split, KeaScatterChunks, chunks, &t);
-    }
+    KeaScatterColours(split, KeaScatterPackChunks, split->packColourChunk, &t);
+    KeaScatterColours(split, KeaScatterChunks, split->pieceColourChunk, &t);
 }
 
 /* out[p] = J_i . dv of the free rows of pieces [k0, k1) (a piece at a time, as KeaScatter; the packs'
@@ -465,8 +480,11 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
     if (w->smUnpaid && changed > KEA_SM_SKIP_MIN_CHANGED && (long)changed * KEA_SM_UNPAID_FRACTION > (long)n)
         return -1; /* it did not pay: wait until the active set has settled */
     /* the step runs: list the free rows, freeze their bounds; the packs' region first */
-    if (w->nPacks < 0) /* the first SM step of the solve that runs */
+    if (w->nPacks < 0) { /* the first SM step of the solve that runs */
         KeaPacksFill(problem, w);
+        if (w->split)
+            KeaSplitPacks(w, w->split);
+    }
     listed = KeaPacksListFree(w, x);
     nFree = KEA_PACK_POSITIONS * w->nPacks;
     for (i = 0; i < n; ++i)
