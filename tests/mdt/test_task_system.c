@@ -49,6 +49,7 @@ typedef struct Jobs {
     int workers;
     int mode;            /* one of the enum below */
     int enqueued, finished, maxItems;
+    int watchItems, watched; /* tasks enqueued of exactly watchItems items */
     /* a deferred task, run by finish */
     MdtTaskFnPtr task;
     void *taskData;
@@ -79,6 +80,7 @@ static void *enqueue(MdtTaskFnPtr task, int itemCount, int minRange, void *taskD
     j->enqueued++;
     if (itemCount > j->maxItems)
         j->maxItems = itemCount;
+    j->watched += itemCount == j->watchItems;
     j->task = task;
     j->taskData = taskData;
     j->itemCount = itemCount;
@@ -253,6 +255,58 @@ static void the_threaded_step_allocates_nothing_after_the_worker_count_is_set(vo
     MstUniverseDestroy(u);
 }
 
+/* The bridge's update on the workers: with a pair buffer smaller than the step's pairs, each chunk's
+ * conversion into contacts is one item of the task that tests the next chunk's pairs (a task of
+ * 1 + PAIR_BUFFER items). Whatever order the job system runs the items in (the conversion after the
+ * next chunk's tests, or first, or deferred), the contacts, the counts and every step's state are the
+ * serial update's, bit for bit. */
+#define PIPELINE_STACKS 16 /* 48 boxes falling onto each other and the ground: Hellos, Goodbyes, stayings */
+#define PAIR_BUFFER 9
+
+static uint64_t runPipelineScene(Jobs *jobs, int workers, int *pairs, int *contacts)
+{
+    MstUniverseID u = karma_partitions_scene(PIPELINE_STACKS, STACK_BOXES, 0, 0);
+    assert_non_null(u);
+    MstBridgeSetModelPairBufferSize(MstUniverseGetBridge(u), PAIR_BUFFER);
+    if (jobs)
+        MstUniverseSetTaskSystem(u, workers, enqueue, finish, jobs);
+    uint64_t hash = KARMA_HASH_INIT;
+    *pairs = *contacts = 0;
+    for (int i = 0; i < STEPS; i++) {
+        MstUniverseStep(u, ME_R(1.0) / 60);
+        hash = karma_hash_world(hash, MstUniverseGetWorld(u));
+        *pairs += MstBridgeGetLastPairCount(MstUniverseGetBridge(u));
+        *contacts += MstBridgeGetLastContactCount(MstUniverseGetBridge(u));
+    }
+    MstUniverseDestroy(u);
+    return hash;
+}
+
+static void the_bridge_converts_a_chunk_beside_the_next_chunks_tests(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    int serialPairs, serialContacts, pairs, contacts;
+    uint64_t serial = runPipelineScene(NULL, 1, &serialPairs, &serialContacts);
+    assert_true(serialPairs > 3 * PAIR_BUFFER * STEPS); /* several chunks a step */
+    assert_true(serialContacts > serialPairs / 2);
+    const int modes[] = {REVERSE, DEFERRED_SHUFFLED};
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++)
+        for (int workers = 2; workers <= 3; workers++) {
+            Jobs jobs;
+            memset(&jobs, 0, sizeof jobs);
+            jobs.workers = workers;
+            jobs.mode = modes[m];
+            jobs.watchItems = 1 + PAIR_BUFFER;
+            uint64_t hash = runPipelineScene(&jobs, workers, &pairs, &contacts);
+            assert_true(hash == serial);
+            assert_int_equal(pairs, serialPairs);
+            assert_int_equal(contacts, serialContacts);
+            assert_true(jobs.watched >= 2 * STEPS); /* a conversion beside full chunks' tests, every step */
+        }
+    assert_int_equal(karma_warning_count(), 0);
+}
+
 /* MdtWorldRunTask, the application's way onto the world's task system: every item runs exactly
  * once whatever the job system does with the ranges; what it leaves out runs on the caller, reported;
  * a NULL task and a bad world are refused and nothing runs. */
@@ -321,6 +375,7 @@ int main(void)
         cmocka_unit_test(bad_task_systems_are_refused_and_change_nothing),
         cmocka_unit_test(the_threaded_step_allocates_nothing_after_the_worker_count_is_set),
         cmocka_unit_test(application_tasks_run_every_item_once),
+        cmocka_unit_test(the_bridge_converts_a_chunk_beside_the_next_chunks_tests),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
