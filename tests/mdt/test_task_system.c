@@ -58,6 +58,9 @@ typedef struct Jobs {
 
 enum { REVERSE, DEFERRED_SHUFFLED, WORKER_OUT_OF_RANGE, HALF_LEFT_OUT };
 
+/* Whether a range of a task is running (the job systems here run them on the calling thread). */
+static int insideRanges;
+
 /* Ranges of minRange items, run in the order of `order(k, n)`, worker index k mod workers. */
 static void runRanges(Jobs *j, int shuffled)
 {
@@ -70,7 +73,9 @@ static void runRanges(Jobs *j, int shuffled)
         int worker = j->mode == WORKER_OUT_OF_RANGE ? j->workers : (i * 5) % j->workers;
         if (j->mode == HALF_LEFT_OUT && k % 2 == 1)
             continue;
+        insideRanges = 1;
         j->task(start, end, worker, j->taskData);
+        insideRanges = 0;
     }
 }
 
@@ -307,6 +312,98 @@ static void the_bridge_converts_a_chunk_beside_the_next_chunks_tests(void **stat
     assert_int_equal(karma_warning_count(), 0);
 }
 
+/* A material callback keeps the chunk-by-chunk update: the application's callbacks run on the stepping
+ * thread, never inside a task's items (the job system below marks the time its ranges run), in pair
+ * order, with the serial update's contacts. */
+#define CALLBACK_BOXES 24
+
+typedef struct CallbackLog {
+    int tests, count, insideTask;
+    unsigned long long contactSum; /* the contacts' positions and separations in callback order, hashed */
+} CallbackLog;
+
+static CallbackLog callbackLog;
+
+static void countTest(McdModel *model, McdIntersectResult *result)
+{
+    (void)model;
+    (void)result;
+    callbackLog.tests++;
+}
+
+static MeBool recordContact(McdIntersectResult *result, McdContact *colC, MdtContactID dynC)
+{
+    (void)result;
+    (void)dynC;
+    callbackLog.count++;
+    callbackLog.insideTask += insideRanges;
+    MeReal values[4] = {colC->position[0], colC->position[1], colC->position[2], colC->separation};
+    unsigned char bytes[sizeof values];
+    memcpy(bytes, values, sizeof values);
+    for (size_t i = 0; i < sizeof bytes; i++)
+        callbackLog.contactSum = callbackLog.contactSum * 1000003u + bytes[i];
+    return METRUE;
+}
+
+/* Boxes dropped in a loose heap on the ground, every model counting its tests; the bridge's pair
+ * buffer PAIR_BUFFER and a per-contact callback; stepped 60 steps. */
+static void runCallbackScene(Jobs *jobs, int workers, CallbackLog *out)
+{
+    static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 0, -1, 0}, {0, 1, 0, 0}, {0, 0, 0, 1}}; /* normal +y */
+    MstUniverseSizes sizes = MstUniverseDefaultSizes;
+    sizes.dynamicBodiesMaxCount = CALLBACK_BOXES;
+    sizes.collisionModelsMaxCount = CALLBACK_BOXES + 1;
+    sizes.dynamicConstraintsMaxCount = 40 * CALLBACK_BOXES;
+    sizes.collisionPairsMaxCount = 20 * CALLBACK_BOXES;
+    MstUniverseID u = MstUniverseCreate(&sizes);
+    assert_non_null(u);
+    MdtWorldSetGravity(MstUniverseGetWorld(u), 0, ME_R(-9.81), 0);
+    McdFrameworkID fw = MstUniverseGetFramework(u);
+    McdModelID ground = MstFixedModelCreate(u, McdPlaneCreate(fw), groundTM);
+    assert_non_null(ground);
+    McdModelSetIntersectCallback(ground, countTest);
+    McdGeometryID box = McdBoxCreate(fw, ME_R(0.5), ME_R(0.5), ME_R(0.5));
+    for (int k = 0; k < CALLBACK_BOXES; k++) {
+        McdModelID m = MstModelAndBodyCreate(u, box, ME_R(1.0));
+        assert_non_null(m);
+        McdModelSetIntersectCallback(m, countTest);
+        MdtBodySetPosition(McdModelGetBody(m), ME_R(0.45) * (MeReal)(k % 4) + ME_R(0.03) * (MeReal)(k / 8),
+                           ME_R(0.3) + ME_R(0.55) * (MeReal)(k / 8), ME_R(0.45) * (MeReal)((k / 4) % 2));
+    }
+    MstBridgeID b = MstUniverseGetBridge(u);
+    MstBridgeSetModelPairBufferSize(b, PAIR_BUFFER);
+    MstBridgeSetPerContactCB(b, MstBridgeGetDefaultMaterial(), MstBridgeGetDefaultMaterial(), recordContact);
+    if (jobs)
+        MstUniverseSetTaskSystem(u, workers, enqueue, finish, jobs);
+    memset(&callbackLog, 0, sizeof callbackLog);
+    for (int i = 0; i < 60; i++)
+        MstUniverseStep(u, ME_R(1.0) / 60);
+    *out = callbackLog;
+    MstUniverseDestroy(u);
+}
+
+static void material_callbacks_run_on_the_stepping_thread_in_pair_order(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    CallbackLog serial, threaded;
+    runCallbackScene(NULL, 1, &serial);
+    assert_true(serial.count > 10 * PAIR_BUFFER);
+    assert_true(serial.tests > 0);
+    assert_int_equal(serial.insideTask, 0);
+    Jobs jobs;
+    memset(&jobs, 0, sizeof jobs);
+    jobs.workers = 2;
+    jobs.mode = REVERSE;
+    jobs.watchItems = PAIR_BUFFER; /* the chunks' pair tests, handed to the job system */
+    runCallbackScene(&jobs, 2, &threaded);
+    assert_int_equal(threaded.insideTask, 0);
+    assert_true(jobs.watched > 0);
+    assert_int_equal(threaded.tests, serial.tests);
+    assert_int_equal(threaded.count, serial.count);
+    assert_true(threaded.contactSum == serial.contactSum);
+}
+
 /* MdtWorldRunTask, the application's way onto the world's task system: every item runs exactly
  * once whatever the job system does with the ranges; what it leaves out runs on the caller, reported;
  * a NULL task and a bad world are refused and nothing runs. */
@@ -376,6 +473,7 @@ int main(void)
         cmocka_unit_test(the_threaded_step_allocates_nothing_after_the_worker_count_is_set),
         cmocka_unit_test(application_tasks_run_every_item_once),
         cmocka_unit_test(the_bridge_converts_a_chunk_beside_the_next_chunks_tests),
+        cmocka_unit_test(material_callbacks_run_on_the_stepping_thread_in_pair_order),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
