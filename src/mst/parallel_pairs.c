@@ -54,8 +54,10 @@ static void testPairs(int start, int end, int worker, void *data)
     (void)worker;
     const PairTask *t = data;
     MstBridgeData *b = t->b;
-    for (int i = start; i < end; i++)
-        testPair(b, i < t->helloCount ? t->hello[i] : t->staying[i - t->helloCount], &b->tested[i], contactsOf(b, 0, i));
+    for (int i = start; i < end; i++) {
+        McdModelPairID pair = i < t->helloCount ? t->hello[i] : t->staying[i - t->helloCount];
+        testPair(b, pair, &b->tested[i], contactsOf(b, 0, i));
+    }
 }
 
 void MstBridgeFreeParallel(MstBridgeData *b)
