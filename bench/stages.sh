@@ -9,8 +9,9 @@
 # Each scene runs twice under callgrind, collecting only the step (karma_step) and the pool's helper
 # threads (helperMain): once on one thread (T1, the serial step) and once on a pool of 2 (T2, all
 # threads summed). In the threaded run W is what ran inside the step's tasks (markedTask: prediction,
-# rows, solves, integration, unpack, the bridge's pair tests) and S = T2 - W the rest (the partition
-# search, farfield, contact conversion, moving rows, gathering, the pool's hand-outs; not the pool's
+# rows, solves, integration, unpack, the bridge's pair tests and, beside the next chunk's tests, its
+# conversion of a chunk into contacts: pipelineItems) and S = T2 - W the rest (the partition
+# search, farfield, the last chunk's conversion, moving rows, gathering, the pool's hand-outs; not the pool's
 # threads spinning for the next task or for the last ranges, `spinUntil`, which is waiting, taken out
 # of T2). On N workers a
 # step takes at least S + W/N, and at least S + the largest single item (one partition's solve):
@@ -72,7 +73,7 @@ for scene in $SCENES; do
     }'
     # W by stage: what each task's items cost per step (pair tests: the bridge's, through MdtWorldRunTask)
     line="  by stage per step:"
-    for f in predictTask packTask solveTask integrateTask unpackTask testPairs; do
+    for f in predictTask packTask solveTask integrateTask unpackTask testPairs pipelineItems; do
         v=$(inclusive "$work/two.out" "$f")
         line="$line $f $((v / STEPS))"
     done

@@ -17,11 +17,13 @@
  * What runs in parallel (docs/step.md, "The step on several cores"): the prediction of the bodies'
  * velocities, the writing of each partition's rows, the partitions' solves (each on a workspace of its
  * worker's), their integration, the unpacking of the constraints' forces, and, with MstUniverseStep or
- * MstBridgeUpdateContacts, the bridge's pair tests. Each item writes only its own data and everything
- * that must happen in order (messages, counters, the application's callbacks) happens afterwards on the
- * stepping thread in the serial order: the trajectories are bit-identical to the serial step for every
- * worker count and every task system (decisions K33, K38). Messages a stage reports from inside an
- * item (a row writer's, a pair test's) and Karma's per-model intersect callbacks may run on a worker.
+ * MstBridgeUpdateContacts, the bridge's pair tests (and, beside a chunk's tests, the previous chunk's
+ * conversion into contacts when no material has a callback). Each item writes only its own data and
+ * everything that must happen in order (messages, counters, the application's callbacks) happens
+ * afterwards on the stepping thread in the serial order: the trajectories are bit-identical to the
+ * serial step for every worker count and every task system (decisions K33, K38). Messages a stage
+ * reports from inside an item (a row writer's, a pair test's, a contact conversion's) and Karma's
+ * per-model intersect callbacks may run on a worker.
  *
  * Memory: the solver's workspace chunk holds one workspace per worker; setting the worker count sizes
  * it for that many at once (from the largest workspace seen so far), and the marks of the items each

@@ -235,6 +235,120 @@ static void predictTask(int start, int end, int worker, void *data)
     MdtPredictVelocitiesOf(data, start, end);
 }
 
+/* The row writer's arrays and the step's constants, shared read-only by every piece. */
+static void initPackTask(PackTask *task, MdtWorldData *w)
+{
+    MdtStepRows *r = &w->rows;
+    MdtRowWriter *writer = &task->proto;
+    task->w = w;
+    writer->J = r->J;
+    writer->rowBodies = r->rowBodies;
+    writer->epsilon = r->epsilon;
+    writer->rhs = r->rhs;
+    writer->lo = r->lo;
+    writer->hi = r->hi;
+    writer->mu = r->mu;
+    writer->x0 = r->x;
+    writer->link = r->link;
+    writer->count = 0;
+    writer->captured = NULL;
+    writer->contacts = r->contacts;
+    writer->contactCount = 0;
+    writer->h = w->stepSize;
+    writer->gamma = w->gamma;
+    writer->epsilon0 = w->epsilon;
+    writer->maxCorrection = w->maxCorrectingVelocity;
+}
+
+/* One thread (or one range's worth): each partition, as one piece, written straight after the last;
+ * returns the rows written and sets *contacts to the contacts declared. */
+static int packInPlace(PackTask *task, int *contacts)
+{
+    MdtWorldData *w = task->w;
+    const MdtPartitionLists *out = &w->partitions;
+    MdtStepRows *r = &w->rows;
+    int row = 0, contact = 0;
+    for (int p = 0; p < out->partitionCount; p++) {
+        r->pieceConstraintStart[p] = out->constraintStart[p];
+        r->pieceConstraintStart[p + 1] = out->constraintStart[p + 1];
+        r->pieceBodyStart[p] = out->partitionStart[p];
+        r->pieceBodyStart[p + 1] = out->partitionStart[p + 1];
+        r->piecePartition[p] = p;
+        r->packRowRoom[p] = row;
+        r->packContactRoom[p] = contact;
+        packPiece(task, p, row, contact);
+        r->partitionRowStart[p] = row;
+        r->partitionContactStart[p] = contact;
+        row += r->packRows[p];
+        contact += r->packContacts[p];
+        MdtWorldLogMatrixSize(w, r->packRows[p]);
+    }
+    *contacts = contact;
+    return row;
+}
+
+/* Cut the partitions into `pieces` pieces, each with room for its rows' bound (a contact is at least
+ * three rows); a piece of a partition holding a user constraint gets a negative room (-1 - room): it
+ * is written on the stepping thread. */
+static void planPieces(MdtWorldData *w, int pieces)
+{
+    const MdtPartitionLists *out = &w->partitions;
+    MdtStepRows *r = &w->rows;
+    int room = 0, contactRoom = 0, k = 0;
+    for (int p = 0; p < out->partitionCount; p++) {
+        const int c0 = out->constraintStart[p], n = out->constraintStart[p + 1] - c0;
+        const int b0 = out->partitionStart[p], nb = out->partitionStart[p + 1] - b0;
+        const int count = piecesOf(out, p);
+        MeBool user = MEFALSE;
+        for (int i = c0; i < c0 + n; i++)
+            user |= out->constraints[i]->type == MdtBclUSER;
+        for (int j = 0; j < count; j++, k++) {
+            r->pieceConstraintStart[k] = c0 + (int)((long long)j * n / count);
+            r->pieceBodyStart[k] = b0 + (int)((long long)j * nb / count);
+            r->piecePartition[k] = p;
+            int bound = 0, end = c0 + (int)((long long)(j + 1) * n / count);
+            for (int i = r->pieceConstraintStart[k]; i < end; i++)
+                bound += MdtConstraintRowBound(out->constraints[i]);
+            r->packRowRoom[k] = user ? -1 - room : room;
+            r->packContactRoom[k] = contactRoom;
+            room += bound;
+            contactRoom += bound / 3;
+        }
+    }
+    r->pieceConstraintStart[pieces] = out->constraintStart[out->partitionCount];
+    r->pieceBodyStart[pieces] = out->partitionStart[out->partitionCount];
+}
+
+/* Several workers: the pieces written in parallel, each into its room, then (and the user
+ * constraints' pieces written) moved down to lie piece after piece, as the serial step lays them out.
+ * The values are the same wherever they are written. Returns the rows; *contacts the contacts. */
+static int packInPieces(PackTask *task, int pieces, int *contacts)
+{
+    MdtWorldData *w = task->w;
+    const MdtPartitionLists *out = &w->partitions;
+    MdtStepRows *r = &w->rows;
+    planPieces(w, pieces);
+    MdtRunStepTask(w, packTask, pieces, PACK_MIN_RANGE, task);
+    int row = 0, contact = 0, k = 0;
+    for (int p = 0; p < out->partitionCount; p++) {
+        const int first = row;
+        r->partitionRowStart[p] = row;
+        r->partitionContactStart[p] = contact;
+        for (; k < pieces && r->piecePartition[k] == p; k++) {
+            if (r->packRowRoom[k] < 0) {
+                r->packRowRoom[k] = -1 - r->packRowRoom[k];
+                packPiece(task, k, r->packRowRoom[k], r->packContactRoom[k]);
+            }
+            moveRows(w, k, row, contact);
+            row += r->packRows[k];
+            contact += r->packContacts[k];
+        }
+        MdtWorldLogMatrixSize(w, row - first);
+    }
+    *contacts = contact;
+    return row;
+}
+
 void MdtPackStage(MdtWorldData *w)
 {
     MdtPartitionLists *out = &w->partitions;
@@ -255,96 +369,17 @@ void MdtPackStage(MdtWorldData *w)
     }
 
     PackTask task;
-    MdtRowWriter *writer = &task.proto;
-    task.w = w;
-    writer->J = r->J;
-    writer->rowBodies = r->rowBodies;
-    writer->epsilon = r->epsilon;
-    writer->rhs = r->rhs;
-    writer->lo = r->lo;
-    writer->hi = r->hi;
-    writer->mu = r->mu;
-    writer->x0 = r->x;
-    writer->link = r->link;
-    writer->count = 0;
-    writer->captured = NULL;
-    writer->contacts = r->contacts;
-    writer->contactCount = 0;
-    writer->h = w->stepSize;
-    writer->gamma = w->gamma;
-    writer->epsilon0 = w->epsilon;
-    writer->maxCorrection = w->maxCorrectingVelocity;
-
-    int row = 0, contact = 0, pieces = 0;
+    initPackTask(&task, w);
+    int pieces = 0;
     if (w->workerCount > 1 && w->enqueueTask)
         for (int p = 0; p < out->partitionCount; p++)
             pieces += piecesOf(out, p);
-    if (pieces <= PACK_MIN_RANGE) {
-        /* One thread (or one range's worth): each partition, as one piece, straight after the last. */
-        for (int p = 0; p < out->partitionCount; p++) {
-            r->pieceConstraintStart[p] = out->constraintStart[p];
-            r->pieceConstraintStart[p + 1] = out->constraintStart[p + 1];
-            r->pieceBodyStart[p] = out->partitionStart[p];
-            r->pieceBodyStart[p + 1] = out->partitionStart[p + 1];
-            r->piecePartition[p] = p;
-            r->packRowRoom[p] = row;
-            r->packContactRoom[p] = contact;
-            packPiece(&task, p, row, contact);
-            r->partitionRowStart[p] = row;
-            r->partitionContactStart[p] = contact;
-            row += r->packRows[p];
-            contact += r->packContacts[p];
-            MdtWorldLogMatrixSize(w, r->packRows[p]);
-        }
-    } else {
-        /* Several: each piece writes into room for its rows' bound (a contact is at least three
-         * rows), in parallel; then the rows are moved down to lie piece after piece, as the serial
-         * step lays them out. The values are the same wherever they are written. */
-        int room = 0, contactRoom = 0, k = 0;
-        for (int p = 0; p < out->partitionCount; p++) {
-            const int c0 = out->constraintStart[p], n = out->constraintStart[p + 1] - c0;
-            const int b0 = out->partitionStart[p], nb = out->partitionStart[p + 1] - b0;
-            const int count = piecesOf(out, p);
-            MeBool user = MEFALSE;
-            for (int i = c0; i < c0 + n; i++)
-                user |= out->constraints[i]->type == MdtBclUSER;
-            for (int j = 0; j < count; j++, k++) {
-                r->pieceConstraintStart[k] = c0 + (int)((long long)j * n / count);
-                r->pieceBodyStart[k] = b0 + (int)((long long)j * nb / count);
-                r->piecePartition[k] = p;
-                int bound = 0, end = c0 + (int)((long long)(j + 1) * n / count);
-                for (int i = r->pieceConstraintStart[k]; i < end; i++)
-                    bound += MdtConstraintRowBound(out->constraints[i]);
-                r->packRowRoom[k] = user ? -1 - room : room; /* negative: written on the stepping thread */
-                r->packContactRoom[k] = contactRoom;
-                room += bound;
-                contactRoom += bound / 3;
-            }
-        }
-        r->pieceConstraintStart[pieces] = out->constraintStart[out->partitionCount];
-        r->pieceBodyStart[pieces] = out->partitionStart[out->partitionCount];
-        MdtRunStepTask(w, packTask, pieces, PACK_MIN_RANGE, &task);
-        k = 0;
-        for (int p = 0; p < out->partitionCount; p++) {
-            const int first = row;
-            r->partitionRowStart[p] = row;
-            r->partitionContactStart[p] = contact;
-            for (; k < pieces && r->piecePartition[k] == p; k++) {
-                if (r->packRowRoom[k] < 0) {
-                    r->packRowRoom[k] = -1 - r->packRowRoom[k];
-                    packPiece(&task, k, r->packRowRoom[k], r->packContactRoom[k]);
-                }
-                moveRows(w, k, row, contact);
-                row += r->packRows[k];
-                contact += r->packContacts[k];
-            }
-            MdtWorldLogMatrixSize(w, row - first);
-        }
-    }
-    r->partitionRowStart[out->partitionCount] = row;
-    r->partitionContactStart[out->partitionCount] = contact;
-    r->count = row;
-    w->lastRowCount = row;
+    int contacts;
+    const int rows = pieces <= PACK_MIN_RANGE ? packInPlace(&task, &contacts) : packInPieces(&task, pieces, &contacts);
+    r->partitionRowStart[out->partitionCount] = rows;
+    r->partitionContactStart[out->partitionCount] = contacts;
+    r->count = rows;
+    w->lastRowCount = rows;
     w->rowsPacked = METRUE;
 }
 

@@ -14,6 +14,7 @@
  * Output (world->partitions) lives in the world's partition chunk until the next step. */
 
 #include "../me/check.h"
+#include "../me/pool_slot.h"
 #include "../me/sort.h"
 #include "constraint.h"
 #include "world.h"
@@ -66,9 +67,9 @@ static void sortPartitions(MdtWorldData *w, MdtBodyData *const *seeds, int seedC
             cursor[p] = out->constraintStart[p];
         int placed = 0; /* the walk stops at the last placed constraint, not at the pool's end */
         for (int i = 0; i < w->constraintPool.capacity && placed < out->constraintCount; i++) {
-            if (!MePoolSlotIsLive(&w->constraintPool, i))
+            if (!MePoolSlotIsLiveInline(&w->constraintPool, i))
                 continue;
-            MdtConstraintData *c = MePoolSlot(&w->constraintPool, i);
+            MdtConstraintData *c = MePoolSlotInline(&w->constraintPool, i);
             if (c->visitStamp == stamp && c->enabled) {
                 out->constraints[cursor[c->partition]++] = c;
                 placed++;
@@ -119,9 +120,9 @@ void MdtPartitionStage(MdtWorldData *w)
     /* Seeds: the enabled bodies in (key, slot) order. */
     int seedCount = 0;
     for (int i = 0; i < w->bodyPool.capacity; i++) {
-        if (!MePoolSlotIsLive(&w->bodyPool, i))
+        if (!MePoolSlotIsLiveInline(&w->bodyPool, i))
             continue;
-        MdtBodyData *b = MePoolSlot(&w->bodyPool, i);
+        MdtBodyData *b = MePoolSlotInline(&w->bodyPool, i);
         b->partition = -1;
         b->stepIndex = -1;
         if (b->enabled)

@@ -164,6 +164,13 @@ static void gatherPartition(MdtWorldData *w, int p, const KeaStats *ks)
 /* Bytes of `n` rounded up to a cache line, so that workers' workspaces do not share lines. */
 static size_t cacheLines(size_t n) { return (n + 63) & ~(size_t)63; }
 
+/* Workspace sizes already asked in this step's loop (a direct-mapped memo, WORKSPACE_MEMO entries). */
+#define WORKSPACE_MEMO 16
+typedef struct WorkspaceSizeMemo {
+    int rows, bodies;
+    size_t bytes;
+} WorkspaceSizeMemo;
+
 void MdtSolveStage(MdtWorldData *w)
 {
     const MdtPartitionLists *out = &w->partitions;
@@ -186,16 +193,27 @@ void MdtSolveStage(MdtWorldData *w)
     kea.tasks.workers = w->enqueueTask ? w->workerCount : 1;
     kea.tasks.perStage = 0;
 
-    /* One workspace per worker, for the largest partition; then one result per partition. */
+    /* One workspace per worker, for the largest partition; then one result per partition. The bytes
+     * depend on the rows and bodies alone (kea is fixed here), and a scene's small partitions repeat a
+     * few shapes (a body on the ground, two boxes): the last sizes asked are remembered. */
     size_t need = 0;
     int splits = 0;
+    WorkspaceSizeMemo memo[WORKSPACE_MEMO];
+    for (int i = 0; i < WORKSPACE_MEMO; i++)
+        memo[i].rows = -1;
     for (int p = 0; p < out->partitionCount; p++) {
         int rows = r->partitionRowStart[p + 1] - r->partitionRowStart[p];
         int bodies = out->partitionStart[p + 1] - out->partitionStart[p];
         if (rows == 0)
             continue;
-        size_t bytes = KeaMemoryRequired(rows, bodies, KeaSelectPath(rows, &kea)) +
+        WorkspaceSizeMemo *m = &memo[(unsigned)(rows + 7 * bodies) % WORKSPACE_MEMO];
+        if (m->rows != rows || m->bodies != bodies) {
+            m->rows = rows;
+            m->bodies = bodies;
+            m->bytes = KeaMemoryRequired(rows, bodies, KeaSelectPath(rows, &kea)) +
                        KeaSplitMemoryRequired(rows, bodies, &kea);
+        }
+        const size_t bytes = m->bytes;
         splits += splitPartition(w, &kea, p);
         if (bytes > need)
             need = bytes;

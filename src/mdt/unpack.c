@@ -9,6 +9,7 @@
  * On several cores the constraints are unpacked as one task over the step's constraints. */
 #include <string.h>
 
+#include "../me/pool_slot.h"
 #include "constraint.h"
 #include "world.h"
 
@@ -16,9 +17,9 @@
 static void clearAccumulators(MdtWorldData *w)
 {
     for (int i = 0; i < w->bodyPool.capacity; i++) {
-        if (!MePoolSlotIsLive(&w->bodyPool, i))
+        if (!MePoolSlotIsLiveInline(&w->bodyPool, i))
             continue;
-        MdtBodyData *b = MePoolSlot(&w->bodyPool, i);
+        MdtBodyData *b = MePoolSlotInline(&w->bodyPool, i);
         if (b->stepIndex < 0)
             continue;
         MeVector3Set(b->force, 0, 0, 0);

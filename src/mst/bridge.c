@@ -227,6 +227,12 @@ void MstHandleTransitions(McdModelPairContainer *pairs, McdSpaceID space, MdtWor
     if (!b)
         return;
     ME_CHECK_NOT_NULL(pairs, ME_NOTHING);
+    MstBridgeSayGoodbye(pairs);
+    MstBridgeSayHello(pairs);
+}
+
+void MstBridgeSayGoodbye(McdModelPairContainer *pairs)
+{
     int n;
     McdModelPairID *goodbye = McdModelPairContainerGetGoodbyeArray(pairs, &n);
     for (int i = 0; i < n; i++) {
@@ -235,6 +241,11 @@ void MstHandleTransitions(McdModelPairContainer *pairs, McdSpaceID space, MdtWor
         destroyGroup(goodbye[i]);
         McdGoodbye(goodbye[i]);
     }
+}
+
+void MstBridgeSayHello(McdModelPairContainer *pairs)
+{
+    int n;
     McdModelPairID *hello = McdModelPairContainerGetHelloArray(pairs, &n);
     for (int i = 0; i < n; i++) {
         hello[i]->userData = NULL;
@@ -290,10 +301,8 @@ static int matchContacts(MstBridgeData *b, MdtContactGroupID g, const McdContact
     return n;
 }
 
-/* Convert one tested pair's contacts (`tested`: what McdIntersectForResponse returned for it) into
- * its contact group; returns the number of dynamics contacts made. On the thread that steps. */
-static int convertPair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world, MeBool tested,
-                       const McdModelPairModelInfo *models, McdIntersectResult *result)
+int MstBridgeConvertPair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world, MeBool tested,
+                         const McdModelPairModelInfo *models, McdIntersectResult *result)
 {
     if (!tested) { /* not tested: */
         if (models->frozen[0] && models->frozen[1])
@@ -362,7 +371,7 @@ static int collidePair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world)
     result.contacts = b->contacts;
     result.contactMaxCount = b->contactBufferSize;
     MeBool tested = McdIntersectForResponse(pair, &models, &result);
-    return convertPair(b, pair, world, tested, &models, &result);
+    return MstBridgeConvertPair(b, pair, world, tested, &models, &result);
 }
 
 void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorldID world, MstBridgeID id)
@@ -385,8 +394,8 @@ void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorl
     if (MstBridgeCollideInParallel(b, world, hello, n, staying, ns)) {
         for (int i = 0; i < n + ns; i++) {
             MstTestedPair *t = &b->tested[i];
-            b->lastContactCount += convertPair(b, i < n ? hello[i] : staying[i - n], world, t->tested, &t->info,
-                                               &t->result);
+            b->lastContactCount += MstBridgeConvertPair(b, i < n ? hello[i] : staying[i - n], world, t->tested,
+                                                        &t->info, &t->result);
         }
         b->lastPairCount += n + ns;
     } else {

@@ -44,9 +44,10 @@ typedef struct MstBridgeData {
     /* The pair tests on several workers (parallel_pairs.c): one record per pair of a chunk and
      * contactBufferSize contacts each; made when the universe gets a task system (else at the first
      * threaded update), remade when a buffer size changes. */
-    MstTestedPair *tested;
+    MstTestedPair *tested;             /* two sets of testedPairs records: a chunk's and the next one's */
     McdContact *testedContacts;
     int testedPairs, testedContactsPerPair;
+    McdModelPairContainer *nextPairs;  /* the next chunk, read while this one is converted */
     const char *materialsSizeName;     /* what sets maxMaterials, for "pool full" messages */
 } MstBridgeData;
 
@@ -63,8 +64,23 @@ void MstBridgeReadPairs(MstBridgeData *b, McdSpaceID space, MdtWorldID world, Me
  *  there is no memory for the records: then the caller tests them itself. */
 MeBool MstBridgeCollideInParallel(MstBridgeData *b, MdtWorldID world, McdModelPairID *hello, int helloCount,
                                   McdModelPairID *staying, int stayingCount);
-/** Make (or remake, for new buffer sizes) the records of the parallel pair tests: one per pair of the
- *  pair buffer, with the contact buffer's room each. MEFALSE, reported by MeMemory, without memory. */
+/** Convert one tested pair's contacts (`tested`: what McdIntersectForResponse returned for it) into its
+ *  contact group, calling the material's callbacks; returns the number of dynamics contacts made. */
+int MstBridgeConvertPair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world, MeBool tested,
+                         const McdModelPairModelInfo *models, McdIntersectResult *result);
+/** The Goodbye half of MstHandleTransitions: each leaving pair's contact group destroyed, its cache
+ *  released. */
+void MstBridgeSayGoodbye(McdModelPairContainer *pairs);
+/** The Hello half of MstHandleTransitions: each new pair's user data cleared and McdHello called. */
+void MstBridgeSayHello(McdModelPairContainer *pairs);
+/** The whole update of the pairs on `world`'s workers, chunk k's conversion running as one item of the
+ *  task that tests chunk k + 1 (parallel_pairs.c); MEFALSE, nothing done, when it does not apply (one
+ *  worker, no memory for the records, or a material with a callback, which must run on the stepping
+ *  thread): then the caller reads the pairs chunk by chunk itself. Called with the space's changes ended. */
+MeBool MstBridgeReadPairsPipelined(MstBridgeData *b, McdSpaceID space, MdtWorldID world);
+/** Make (or remake, for new buffer sizes) the records of the parallel pair tests: two sets of one per
+ *  pair of the pair buffer, with the contact buffer's room each, and the second pair container.
+ *  MEFALSE, reported by MeMemory, without memory. */
 MeBool MstBridgeReserveParallel(MstBridgeData *b);
 /** Free the records of the parallel pair tests. */
 void MstBridgeFreeParallel(MstBridgeData *b);

@@ -2,13 +2,22 @@
  *
  * With a task system on the world (MdtTaskSystem.h), the nearfield tests of a chunk of pairs run as
  * one task over the pairs (MdtWorldRunTask): each pair's test writes only its own record and its own
- * slice of contacts (and its own pair cache). The conversion into contact groups, the material
- * callbacks and the world's contacts then run on the stepping thread in pair order, exactly as the
- * serial update runs them, so the contacts, and every trajectory, are the serial ones bit for bit.
- * Karma's per-model intersect callbacks (McdModelSetIntersectCallback) are called inside the test:
- * with a task system they run on the workers. */
+ * slice of contacts (and its own pair cache). The conversion into contact groups then runs in pair
+ * order, exactly as the serial update runs it, so the contacts, and every trajectory, are the serial
+ * ones bit for bit. Karma's per-model intersect callbacks (McdModelSetIntersectCallback) are called
+ * inside the test: with a task system they run on the workers.
+ *
+ * The whole update (MstBridgeReadPairsPipelined) overlaps the conversion with the tests: chunk k's
+ * conversion is one item of the task that tests chunk k + 1 (two sets of records, two pair
+ * containers), so the serial part of the bridge runs beside the next chunk's tests. What orders the
+ * world's pools is kept: chunk k's conversion (which makes and removes contacts) still comes before
+ * chunk k + 1's goodbyes (which destroy contact groups), so every contact and group takes the slot it
+ * takes in the serial update. Only the Hellos of chunk k + 1 (McdHello: a pair's test and cache
+ * cleared) move before chunk k's conversion, which does not read them. A material with a callback
+ * keeps the chunk-by-chunk update: its callbacks run on the stepping thread, in pair order. */
 #include <string.h>
 
+#include <karma/McdSpace.h>
 #include <karma/MdtTaskSystem.h>
 #include <karma/MeMemory.h>
 
@@ -16,6 +25,23 @@
 
 /* Pairs per range of the test task: one convex pair test is a few thousand operations. */
 #define PAIR_MIN_RANGE 8
+
+/* Test one pair into record `r`, whose contacts are its own slice of the scratch. */
+static void testPair(MstBridgeData *b, McdModelPairID pair, MstTestedPair *r, McdContact *contacts)
+{
+    memset(&r->result, 0, sizeof r->result);
+    r->result.contacts = contacts;
+    r->result.contactMaxCount = b->testedContactsPerPair;
+    r->tested = McdIntersectForResponse(pair, &r->info, &r->result);
+}
+
+/* The records of set `set` (0 or 1) and the contacts of its pair i. */
+static MstTestedPair *recordsOf(MstBridgeData *b, int set) { return b->tested + (size_t)set * (size_t)b->testedPairs; }
+
+static McdContact *contactsOf(MstBridgeData *b, int set, int i)
+{
+    return b->testedContacts + ((size_t)set * (size_t)b->testedPairs + (size_t)i) * (size_t)b->testedContactsPerPair;
+}
 
 typedef struct PairTask {
     MstBridgeData *b;
@@ -30,11 +56,7 @@ static void testPairs(int start, int end, int worker, void *data)
     MstBridgeData *b = t->b;
     for (int i = start; i < end; i++) {
         McdModelPairID pair = i < t->helloCount ? t->hello[i] : t->staying[i - t->helloCount];
-        MstTestedPair *r = &b->tested[i];
-        memset(&r->result, 0, sizeof r->result);
-        r->result.contacts = b->testedContacts + (size_t)i * (size_t)b->testedContactsPerPair;
-        r->result.contactMaxCount = b->testedContactsPerPair;
-        r->tested = McdIntersectForResponse(pair, &r->info, &r->result);
+        testPair(b, pair, &b->tested[i], contactsOf(b, 0, i));
     }
 }
 
@@ -42,8 +64,11 @@ void MstBridgeFreeParallel(MstBridgeData *b)
 {
     MeMemoryDestroy(b->tested);
     MeMemoryDestroy(b->testedContacts);
+    if (b->nextPairs)
+        McdModelPairContainerDestroy(b->nextPairs);
     b->tested = NULL;
     b->testedContacts = NULL;
+    b->nextPairs = NULL;
     b->testedPairs = b->testedContactsPerPair = 0;
 }
 
@@ -52,10 +77,11 @@ MeBool MstBridgeReserveParallel(MstBridgeData *b)
     if (b->tested && b->testedPairs == b->pairBufferSize && b->testedContactsPerPair == b->contactBufferSize)
         return METRUE;
     MstBridgeFreeParallel(b);
-    b->tested = MeMemoryCreate(sizeof *b->tested * (size_t)b->pairBufferSize);
-    b->testedContacts = MeMemoryCreate(sizeof *b->testedContacts * (size_t)b->pairBufferSize *
+    b->tested = MeMemoryCreate(sizeof *b->tested * 2 * (size_t)b->pairBufferSize);
+    b->testedContacts = MeMemoryCreate(sizeof *b->testedContacts * 2 * (size_t)b->pairBufferSize *
                                        (size_t)b->contactBufferSize);
-    if (!b->tested || !b->testedContacts) {
+    b->nextPairs = McdModelPairContainerCreate(b->pairBufferSize);
+    if (!b->tested || !b->testedContacts || !b->nextPairs) {
         MstBridgeFreeParallel(b); /* reported by MeMemory; the pairs are tested serially */
         return MEFALSE;
     }
@@ -74,5 +100,113 @@ MeBool MstBridgeCollideInParallel(MstBridgeData *b, MdtWorldID world, McdModelPa
         return MEFALSE;
     PairTask task = {b, hello, staying, helloCount};
     MdtWorldRunTask(world, testPairs, count, PAIR_MIN_RANGE, &task);
+    return METRUE;
+}
+
+/* ---- the pipelined update ---------------------------------------------------------------------- */
+
+/* A chunk read from the space: its container and the set of records its tests write. */
+typedef struct Chunk {
+    McdModelPairContainer *pairs;
+    int set;
+    McdModelPairID *hello, *staying;
+    int helloCount, count;
+} Chunk;
+
+static void readChunk(Chunk *c)
+{
+    int staying;
+    c->hello = McdModelPairContainerGetHelloArray(c->pairs, &c->helloCount);
+    c->staying = McdModelPairContainerGetStayingArray(c->pairs, &staying);
+    c->count = c->helloCount + staying;
+}
+
+static McdModelPairID pairOf(const Chunk *c, int i)
+{
+    return i < c->helloCount ? c->hello[i] : c->staying[i - c->helloCount];
+}
+
+/* Chunk `convert`'s conversion (item 0, in pair order) and chunk `test`'s pair tests (items 1..). */
+typedef struct PipelineTask {
+    MstBridgeData *b;
+    MdtWorldID world;
+    const Chunk *convert, *test; /* either may be NULL */
+    int contacts;                /* made by the conversion */
+} PipelineTask;
+
+static void convertChunk(PipelineTask *t)
+{
+    MstBridgeData *b = t->b;
+    const Chunk *c = t->convert;
+    MstTestedPair *records = recordsOf(b, c->set);
+    for (int i = 0; i < c->count; i++)
+        t->contacts += MstBridgeConvertPair(b, pairOf(c, i), t->world, records[i].tested, &records[i].info,
+                                            &records[i].result);
+}
+
+static void pipelineItems(int start, int end, int worker, void *data)
+{
+    (void)worker;
+    PipelineTask *t = data;
+    MstBridgeData *b = t->b;
+    for (int i = start; i < end; i++) {
+        if (i == 0) {
+            if (t->convert)
+                convertChunk(t);
+            continue;
+        }
+        const int k = i - 1, set = t->test->set;
+        testPair(b, pairOf(t->test, k), &recordsOf(b, set)[k], contactsOf(b, set, k));
+    }
+}
+
+/* Whether a material of the bridge has a callback (which must run on the stepping thread). */
+static MeBool anyMaterialCallback(const MstBridgeData *b)
+{
+    for (int i = 0; i < b->materialCount; i++)
+        for (int j = i; j < b->materialCount; j++) {
+            const MstMaterialPairData *m = &b->table[i * b->maxMaterials + j];
+            if (m->intersectCB || m->perContactCB || m->perPairCB)
+                return METRUE;
+        }
+    return MEFALSE;
+}
+
+MeBool MstBridgeReadPairsPipelined(MstBridgeData *b, McdSpaceID space, MdtWorldID world)
+{
+    if (MdtWorldGetWorkerCount(world) <= 1 || anyMaterialCallback(b) || !MstBridgeReserveParallel(b))
+        return MEFALSE;
+    McdSpacePairIterator it;
+    McdSpacePairIteratorBegin(space, &it);
+    Chunk chunks[2] = {{b->pairs, 0, NULL, NULL, 0, 0}, {b->nextPairs, 1, NULL, NULL, 0, 0}};
+    Chunk *cur = &chunks[0], *next = &chunks[1];
+    McdModelPairContainerReset(cur->pairs);
+    MeBool more = McdSpaceGetPairs(space, &it, cur->pairs);
+    MstBridgeSayGoodbye(cur->pairs);
+    MstBridgeSayHello(cur->pairs);
+    readChunk(cur);
+    PipelineTask task = {b, world, NULL, cur, 0};
+    MdtWorldRunTask(world, pipelineItems, 1 + cur->count, PAIR_MIN_RANGE, &task); /* item 0 converts nothing */
+    for (;;) {
+        b->lastPairCount += cur->count;
+        task.convert = cur;
+        task.test = NULL;
+        if (more) {
+            McdModelPairContainerReset(next->pairs);
+            more = McdSpaceGetPairs(space, &it, next->pairs);
+            MstBridgeSayHello(next->pairs);
+            readChunk(next);
+            task.test = next;
+        }
+        task.contacts = 0;
+        MdtWorldRunTask(world, pipelineItems, 1 + (task.test ? next->count : 0), PAIR_MIN_RANGE, &task);
+        b->lastContactCount += task.contacts;
+        if (!task.test)
+            break;
+        MstBridgeSayGoodbye(next->pairs); /* after the conversion before it, as in the serial update */
+        Chunk *t = cur;
+        cur = next;
+        next = t;
+    }
     return METRUE;
 }

@@ -10,6 +10,10 @@ void MstBridgeReadPairs(MstBridgeData *b, McdSpaceID space, MdtWorldID world, Me
 {
     if (McdSpaceIsChanging(space))
         McdSpaceEndChanges(space);
+    if (collisions && MstBridgeReadPairsPipelined(b, space, world)) {
+        McdSpaceBeginChanges(space);
+        return;
+    }
     McdSpacePairIterator it;
     McdSpacePairIteratorBegin(space, &it);
     MeBool more;

@@ -49,6 +49,7 @@ typedef struct Jobs {
     int workers;
     int mode;            /* one of the enum below */
     int enqueued, finished, maxItems;
+    int watchItems, watched; /* tasks enqueued of exactly watchItems items */
     /* a deferred task, run by finish */
     MdtTaskFnPtr task;
     void *taskData;
@@ -56,6 +57,9 @@ typedef struct Jobs {
 } Jobs;
 
 enum { REVERSE, DEFERRED_SHUFFLED, WORKER_OUT_OF_RANGE, HALF_LEFT_OUT };
+
+/* Whether a range of a task is running (the job systems here run them on the calling thread). */
+static int insideRanges;
 
 /* Ranges of minRange items, run in the order of `order(k, n)`, worker index k mod workers. */
 static void runRanges(Jobs *j, int shuffled)
@@ -69,7 +73,9 @@ static void runRanges(Jobs *j, int shuffled)
         int worker = j->mode == WORKER_OUT_OF_RANGE ? j->workers : (i * 5) % j->workers;
         if (j->mode == HALF_LEFT_OUT && k % 2 == 1)
             continue;
+        insideRanges = 1;
         j->task(start, end, worker, j->taskData);
+        insideRanges = 0;
     }
 }
 
@@ -79,6 +85,7 @@ static void *enqueue(MdtTaskFnPtr task, int itemCount, int minRange, void *taskD
     j->enqueued++;
     if (itemCount > j->maxItems)
         j->maxItems = itemCount;
+    j->watched += itemCount == j->watchItems;
     j->task = task;
     j->taskData = taskData;
     j->itemCount = itemCount;
@@ -253,6 +260,150 @@ static void the_threaded_step_allocates_nothing_after_the_worker_count_is_set(vo
     MstUniverseDestroy(u);
 }
 
+/* The bridge's update on the workers: with a pair buffer smaller than the step's pairs, each chunk's
+ * conversion into contacts is one item of the task that tests the next chunk's pairs (a task of
+ * 1 + PAIR_BUFFER items). Whatever order the job system runs the items in (the conversion after the
+ * next chunk's tests, or first, or deferred), the contacts, the counts and every step's state are the
+ * serial update's, bit for bit. */
+#define PIPELINE_STACKS 16 /* 48 boxes falling onto each other and the ground: Hellos, Goodbyes, stayings */
+#define PAIR_BUFFER 9
+
+static uint64_t runPipelineScene(Jobs *jobs, int workers, int *pairs, int *contacts)
+{
+    MstUniverseID u = karma_partitions_scene(PIPELINE_STACKS, STACK_BOXES, 0, 0);
+    assert_non_null(u);
+    MstBridgeSetModelPairBufferSize(MstUniverseGetBridge(u), PAIR_BUFFER);
+    if (jobs)
+        MstUniverseSetTaskSystem(u, workers, enqueue, finish, jobs);
+    uint64_t hash = KARMA_HASH_INIT;
+    *pairs = *contacts = 0;
+    for (int i = 0; i < STEPS; i++) {
+        MstUniverseStep(u, ME_R(1.0) / 60);
+        hash = karma_hash_world(hash, MstUniverseGetWorld(u));
+        *pairs += MstBridgeGetLastPairCount(MstUniverseGetBridge(u));
+        *contacts += MstBridgeGetLastContactCount(MstUniverseGetBridge(u));
+    }
+    MstUniverseDestroy(u);
+    return hash;
+}
+
+static void the_bridge_converts_a_chunk_beside_the_next_chunks_tests(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    int serialPairs, serialContacts, pairs, contacts;
+    uint64_t serial = runPipelineScene(NULL, 1, &serialPairs, &serialContacts);
+    assert_true(serialPairs > 3 * PAIR_BUFFER * STEPS); /* several chunks a step */
+    assert_true(serialContacts > serialPairs / 2);
+    const int modes[] = {REVERSE, DEFERRED_SHUFFLED};
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++)
+        for (int workers = 2; workers <= 3; workers++) {
+            Jobs jobs;
+            memset(&jobs, 0, sizeof jobs);
+            jobs.workers = workers;
+            jobs.mode = modes[m];
+            jobs.watchItems = 1 + PAIR_BUFFER;
+            uint64_t hash = runPipelineScene(&jobs, workers, &pairs, &contacts);
+            assert_true(hash == serial);
+            assert_int_equal(pairs, serialPairs);
+            assert_int_equal(contacts, serialContacts);
+            assert_true(jobs.watched >= 2 * STEPS); /* a conversion beside full chunks' tests, every step */
+        }
+    assert_int_equal(karma_warning_count(), 0);
+}
+
+/* A material callback keeps the chunk-by-chunk update: the application's callbacks run on the stepping
+ * thread, never inside a task's items (the job system below marks the time its ranges run), in pair
+ * order, with the serial update's contacts. */
+#define CALLBACK_BOXES 24
+
+typedef struct CallbackLog {
+    int tests, count, insideTask;
+    unsigned long long contactSum; /* the contacts' positions and separations in callback order, hashed */
+} CallbackLog;
+
+static CallbackLog callbackLog;
+
+static void countTest(McdModel *model, McdIntersectResult *result)
+{
+    (void)model;
+    (void)result;
+    callbackLog.tests++;
+}
+
+static MeBool recordContact(McdIntersectResult *result, McdContact *colC, MdtContactID dynC)
+{
+    (void)result;
+    (void)dynC;
+    callbackLog.count++;
+    callbackLog.insideTask += insideRanges;
+    MeReal values[4] = {colC->position[0], colC->position[1], colC->position[2], colC->separation};
+    unsigned char bytes[sizeof values];
+    memcpy(bytes, values, sizeof values);
+    for (size_t i = 0; i < sizeof bytes; i++)
+        callbackLog.contactSum = callbackLog.contactSum * 1000003u + bytes[i];
+    return METRUE;
+}
+
+/* Boxes dropped in a loose heap on the ground, every model counting its tests; the bridge's pair
+ * buffer PAIR_BUFFER and a per-contact callback; stepped 60 steps. */
+static void runCallbackScene(Jobs *jobs, int workers, CallbackLog *out)
+{
+    static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 0, -1, 0}, {0, 1, 0, 0}, {0, 0, 0, 1}}; /* normal +y */
+    MstUniverseSizes sizes = MstUniverseDefaultSizes;
+    sizes.dynamicBodiesMaxCount = CALLBACK_BOXES;
+    sizes.collisionModelsMaxCount = CALLBACK_BOXES + 1;
+    sizes.dynamicConstraintsMaxCount = 40 * CALLBACK_BOXES;
+    sizes.collisionPairsMaxCount = 20 * CALLBACK_BOXES;
+    MstUniverseID u = MstUniverseCreate(&sizes);
+    assert_non_null(u);
+    MdtWorldSetGravity(MstUniverseGetWorld(u), 0, ME_R(-9.81), 0);
+    McdFrameworkID fw = MstUniverseGetFramework(u);
+    McdModelID ground = MstFixedModelCreate(u, McdPlaneCreate(fw), groundTM);
+    assert_non_null(ground);
+    McdModelSetIntersectCallback(ground, countTest);
+    McdGeometryID box = McdBoxCreate(fw, ME_R(0.5), ME_R(0.5), ME_R(0.5));
+    for (int k = 0; k < CALLBACK_BOXES; k++) {
+        McdModelID m = MstModelAndBodyCreate(u, box, ME_R(1.0));
+        assert_non_null(m);
+        McdModelSetIntersectCallback(m, countTest);
+        MdtBodySetPosition(McdModelGetBody(m), ME_R(0.45) * (MeReal)(k % 4) + ME_R(0.03) * (MeReal)(k / 8),
+                           ME_R(0.3) + ME_R(0.55) * (MeReal)(k / 8), ME_R(0.45) * (MeReal)((k / 4) % 2));
+    }
+    MstBridgeID b = MstUniverseGetBridge(u);
+    MstBridgeSetModelPairBufferSize(b, PAIR_BUFFER);
+    MstBridgeSetPerContactCB(b, MstBridgeGetDefaultMaterial(), MstBridgeGetDefaultMaterial(), recordContact);
+    if (jobs)
+        MstUniverseSetTaskSystem(u, workers, enqueue, finish, jobs);
+    memset(&callbackLog, 0, sizeof callbackLog);
+    for (int i = 0; i < 60; i++)
+        MstUniverseStep(u, ME_R(1.0) / 60);
+    *out = callbackLog;
+    MstUniverseDestroy(u);
+}
+
+static void material_callbacks_run_on_the_stepping_thread_in_pair_order(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    CallbackLog serial, threaded;
+    runCallbackScene(NULL, 1, &serial);
+    assert_true(serial.count > 10 * PAIR_BUFFER);
+    assert_true(serial.tests > 0);
+    assert_int_equal(serial.insideTask, 0);
+    Jobs jobs;
+    memset(&jobs, 0, sizeof jobs);
+    jobs.workers = 2;
+    jobs.mode = REVERSE;
+    jobs.watchItems = PAIR_BUFFER; /* the chunks' pair tests, handed to the job system */
+    runCallbackScene(&jobs, 2, &threaded);
+    assert_int_equal(threaded.insideTask, 0);
+    assert_true(jobs.watched > 0);
+    assert_int_equal(threaded.tests, serial.tests);
+    assert_int_equal(threaded.count, serial.count);
+    assert_true(threaded.contactSum == serial.contactSum);
+}
+
 /* MdtWorldRunTask, the application's way onto the world's task system: every item runs exactly
  * once whatever the job system does with the ranges; what it leaves out runs on the caller, reported;
  * a NULL task and a bad world are refused and nothing runs. */
@@ -321,6 +472,8 @@ int main(void)
         cmocka_unit_test(bad_task_systems_are_refused_and_change_nothing),
         cmocka_unit_test(the_threaded_step_allocates_nothing_after_the_worker_count_is_set),
         cmocka_unit_test(application_tasks_run_every_item_once),
+        cmocka_unit_test(the_bridge_converts_a_chunk_beside_the_next_chunks_tests),
+        cmocka_unit_test(material_callbacks_run_on_the_stepping_thread_in_pair_order),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -21,9 +21,15 @@
 #define CHAIN_LINKS 6
 #define STEPS 90
 
+/* The bridge's pair buffer of the scenes built (0: the default, more than the scene's pairs). */
+static int pairBuffer = 0;
+
 static MstUniverseID buildScene(void)
 {
-    return karma_partitions_scene(STACKS, STACK_BOXES, CHAINS, CHAIN_LINKS);
+    MstUniverseID u = karma_partitions_scene(STACKS, STACK_BOXES, CHAINS, CHAIN_LINKS);
+    if (u && pairBuffer > 0)
+        MstBridgeSetModelPairBufferSize(MstUniverseGetBridge(u), pairBuffer);
+    return u;
 }
 
 /* The hash of every step's state (0 when the scene could not be built), on `pool` (NULL: serial). */
@@ -65,6 +71,21 @@ static void pools_of_any_size_give_the_serial_state(void **state)
     assert_true(serial != 0);
     for (int threads = 2; threads <= 4; threads++)
         assert_true(runScene(threads) == serial);
+    assert_int_equal(karma_warning_count(), 0);
+}
+
+/* With a pair buffer smaller than the step's pairs, the bridge reads them in chunks and converts each
+ * chunk beside the next chunk's pair tests, on the pool's threads: still the serial state. */
+static void chunked_pairs_converted_beside_the_tests_give_the_serial_state(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    pairBuffer = 9;
+    uint64_t serial = runScene(1);
+    assert_true(serial != 0);
+    for (int threads = 2; threads <= 4; threads++)
+        assert_true(runScene(threads) == serial);
+    pairBuffer = 0;
     assert_int_equal(karma_warning_count(), 0);
 }
 
@@ -280,6 +301,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(pools_of_any_size_give_the_serial_state),
+        cmocka_unit_test(chunked_pairs_converted_beside_the_tests_give_the_serial_state),
         cmocka_unit_test(a_threaded_step_allocates_what_the_serial_step_does),
         cmocka_unit_test(two_universes_on_two_threads_each_with_a_pool),
         cmocka_unit_test(two_universes_on_two_threads_sharing_a_pool),
