@@ -143,12 +143,18 @@ static MeReal distance(const McdGeometryData *a, MeMatrix4 ta, const McdGeometry
     return d.distance - sa.radius - sb.radius;
 }
 
+/* A search's limits and its stopping tolerance eps (m): the distance counts as reached within eps. */
+typedef struct Search {
+    MeReal maxTime, gap, slop, eps;
+} Search;
+
 /* Conservative advancement of a (convex) against b (convex or plane) over [0, maxTime]: the time at
  * which their signed distance first comes within eps of the target, which is gap, or (slop >= 0 and
  * already within gap at the start) the start's distance less slop. */
-static McdSafeTimeOutcome advance(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap, MeReal slop,
-                                  MeReal eps, MeReal *time, McdSafeTimeHit *hit)
+static McdSafeTimeOutcome advance(const McdMotion *a, const McdMotion *b, const Search *search, MeReal *time,
+                                  McdSafeTimeHit *hit)
 {
+    const MeReal maxTime = search->maxTime, gap = search->gap, slop = search->slop, eps = search->eps;
     const MeReal spinB = b->g->type == kMcdGeometryTypePlane
                              ? ME_R(0.0)
                              : MeVector3Magnitude(b->w) * McdSafeTimeReach(b->g, b->relative);
@@ -200,9 +206,10 @@ static McdSafeTimeOutcome advance(const McdMotion *a, const McdMotion *b, MeReal
 }
 
 /* Sphere against sphere, centres in straight lines: the first root of |p + u t| = reach. */
-static McdSafeTimeOutcome sphereSphere(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap, MeReal eps,
-                                       MeReal *time, McdSafeTimeHit *hit)
+static McdSafeTimeOutcome sphereSphere(const McdMotion *a, const McdMotion *b, const Search *search, MeReal *time,
+                                       McdSafeTimeHit *hit)
 {
+    const MeReal maxTime = search->maxTime, gap = search->gap, eps = search->eps;
     MeMatrix4 ta, tb;
     MeVector3 p, u;
     poseAt(a, 0, ta);
@@ -240,9 +247,10 @@ static McdSafeTimeOutcome sphereSphere(const McdMotion *a, const McdMotion *b, M
 }
 
 /* Sphere a against a plane b that does not turn: the height above the plane falls linearly. */
-static McdSafeTimeOutcome spherePlane(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap, MeReal eps,
-                                      MeReal *time, McdSafeTimeHit *hit)
+static McdSafeTimeOutcome spherePlane(const McdMotion *a, const McdMotion *b, const Search *search, MeReal *time,
+                                      McdSafeTimeHit *hit)
 {
+    const MeReal maxTime = search->maxTime, gap = search->gap, eps = search->eps;
     MeMatrix4 ta, tb;
     MeVector3 rel;
     poseAt(a, 0, ta);
@@ -272,7 +280,7 @@ static McdSafeTimeOutcome spherePlane(const McdMotion *a, const McdMotion *b, Me
 
 typedef struct TerrainSweep {
     const McdMotion *convex, *terrain;
-    MeReal maxTime, gap, slop, eps;
+    Search search;
     MeVector3 c1, c2; /* the convex's centre at the start and the end, in the terrain's frame */
     MeReal core;      /* Box2D's core distance: a quarter of the convex's inner radius */
     MeReal turn;      /* how much deeper its turning can take the convex below its centre */
@@ -289,7 +297,7 @@ static MeBool sweepTriangle(void *ctx, const McdTerrainTriangle *tri)
     core.type = MCD_NF_TRIANGLE_TYPE;
     for (int k = 0; k < 3; k++)
         MeVector3Copy(core.u.triangle.v[k], tri->v[k]);
-    if (s->slop >= ME_R(0.0)) {
+    if (s->search.slop >= ME_R(0.0)) {
         /* A sweep skips a triangle whose plane the convex does not approach by the core distance and
          * ends above by more than it (rolling and sliding across a floor: Box2D v3's test for chain
          * segments, with the depth its turning can add), and a one-sided triangle it starts behind. */
@@ -305,7 +313,9 @@ static MeBool sweepTriangle(void *ctx, const McdTerrainTriangle *tri)
     MeReal when;
     /* Only a time earlier than the best so far matters. */
     McdSafeTimeHit hit;
-    if (advance(s->convex, &t, s->best, s->gap, s->slop, s->eps, &when, &hit) == MCD_SAFE_HIT && when <= s->best) {
+    Search upToBest = s->search;
+    upToBest.maxTime = s->best;
+    if (advance(s->convex, &t, &upToBest, &when, &hit) == MCD_SAFE_HIT && when <= s->best) {
         s->best = when;
         s->outcome = MCD_SAFE_HIT;
         s->hit = hit;
@@ -313,9 +323,10 @@ static MeBool sweepTriangle(void *ctx, const McdTerrainTriangle *tri)
     return s->best > ME_R(0.0); /* nothing is earlier than now */
 }
 
-static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap,
-                                        MeReal slop, MeReal eps, MeReal *time, McdSafeTimeHit *hit)
+static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, const Search *search, MeReal *time,
+                                        McdSafeTimeHit *hit)
 {
+    const MeReal maxTime = search->maxTime, gap = search->gap, eps = search->eps;
     /* The world box the convex sweeps (its reach about both ends of its path), widened by the
      * terrain's own travel, in the terrain's frame at t = 0; a turning terrain is searched whole. */
     const MeReal reach = McdSafeTimeReach(a->g, a->relative) + gap + eps;
@@ -346,8 +357,8 @@ static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, 
         centre[k] = ME_R(0.5) * (llo[k] + lhi[k]);
     MeVector3 half;
     MeVector3Subtract(half, lhi, llo);
-    TerrainSweep s = {.convex = a, .terrain = b, .maxTime = maxTime, .gap = gap, .slop = slop, .eps = eps,
-                      .core = ME_R(0.25) * McdSafeTimeInnerRadius(a->g), .outcome = MCD_SAFE_CLEAR, .best = maxTime};
+    TerrainSweep s = {.convex = a, .terrain = b, .search = *search, .core = ME_R(0.25) * McdSafeTimeInnerRadius(a->g),
+                      .outcome = MCD_SAFE_CLEAR, .best = maxTime};
     /* Turning about its centre moves the convex's lowest point by at most reach - inner radius, and
      * by no more than its fastest point travels. */
     const MeReal own = McdSafeTimeReach(a->g, NULL);
@@ -370,9 +381,10 @@ static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, 
 }
 
 McdSafeTimeOutcome McdSafeTimeMotions(const McdFrameworkData *fw, const McdMotion *a, const McdMotion *b,
-                                      MeReal maxTime, MeReal gap, MeReal slop, MeReal *time, McdSafeTimeHit *hit)
+                                      const McdSafeTimeLimits *limits, MeReal *time, McdSafeTimeHit *hit)
 {
-    const MeReal eps = MCD_SAFE_TIME_GAP * (fw ? fw->lengthScale : ME_R(1.0));
+    const MeReal maxTime = limits->maxTime, gap = limits->gap;
+    const Search search = {maxTime, gap, limits->slop, MCD_SAFE_TIME_GAP * (fw ? fw->lengthScale : ME_R(1.0))};
     McdSafeTimeOutcome out = MCD_SAFE_NO_METHOD;
     *time = maxTime;
     if (!a->g || !b->g)
@@ -391,17 +403,17 @@ McdSafeTimeOutcome McdSafeTimeMotions(const McdFrameworkData *fw, const McdMotio
         return MCD_SAFE_NO_METHOD;
     MeReal t = maxTime;
     /* The closed forms answer "when within gap"; with a slop (a sweep) the advancement does it all. */
-    const MeBool closed = slop < ME_R(0.0);
+    const MeBool closed = limits->slop < ME_R(0.0);
     if (closed && ca == kMcdGeometryTypeSphere && cb == kMcdGeometryTypeSphere && centreMovesStraight(a) &&
         centreMovesStraight(b))
-        out = sphereSphere(a, b, maxTime, gap, eps, &t, hit);
+        out = sphereSphere(a, b, &search, &t, hit);
     else if (closed && ca == kMcdGeometryTypeSphere && cb == kMcdGeometryTypePlane && centreMovesStraight(a) &&
              MeVector3MagnitudeSqr(b->w) == ME_R(0.0))
-        out = spherePlane(a, b, maxTime, gap, eps, &t, hit);
+        out = spherePlane(a, b, &search, &t, hit);
     else if (McdSafeTimeIsConvex(cb) || cb == kMcdGeometryTypePlane)
-        out = advance(a, b, maxTime, gap, slop, eps, &t, hit);
+        out = advance(a, b, &search, &t, hit);
     else if (isTerrain(cb))
-        out = convexTerrain(a, b, maxTime, gap, slop, eps, &t, hit);
+        out = convexTerrain(a, b, &search, &t, hit);
     if (out == MCD_SAFE_HIT) {
         *time = t;
         if (hit && swapped) { /* the point on the other: along the normal by the gap */
@@ -457,7 +469,8 @@ MeBool McdSafeTime(McdModelPairID pair, MeReal maxTime, McdSafeTimeResult *resul
         !velocityOf(m2->angularVelocity, b.w, "second model's angular"))
         return MEFALSE;
     MeReal t;
-    McdSafeTimeOutcome out = McdSafeTimeMotions(m1->framework, &a, &b, maxTime, ME_R(0.0), -ME_R(1.0), &t, NULL);
+    const McdSafeTimeLimits limits = {maxTime, ME_R(0.0), -ME_R(1.0)};
+    McdSafeTimeOutcome out = McdSafeTimeMotions(m1->framework, &a, &b, &limits, &t, NULL);
     result->pair = pair;
     result->time = t;
     return out != MCD_SAFE_NO_METHOD;
