@@ -88,13 +88,6 @@ int McdFrameworkGetContinuousModels(McdFrameworkID id, McdModelID *models, int m
     return fw->continuousCount;
 }
 
-static MeReal (*relativeOf(McdModelData *m))[4]
-{
-    if (m->relativePtr)
-        return m->relativePtr;
-    return m->hasRelative ? m->relativeTransform : NULL;
-}
-
 /* Whether the sweep's arguments are usable; reports the first that is not. */
 static MeBool sweepArgumentsValid(MeMatrix4 start, const MeVector3 v, const MeVector3 w, MeReal duration, MeReal gap)
 {
@@ -142,7 +135,7 @@ static MeBool sweepAgainst(McdModelData *m, McdMotion *a, McdModelData *o, const
     memset(&pair, 0, sizeof pair);
     pair.model1 = McdModelToID(m);
     pair.model2 = otherID;
-    McdMotion b = {o->geometry, McdModelTransformInternal(o), relativeOf(o), {0, 0, 0}, {0, 0, 0}, &pair};
+    McdMotion b = {o->geometry, McdModelTransformInternal(o), McdModelRelativeInternal(o), {0, 0, 0}, {0, 0, 0}, &pair};
     a->pair = &pair;
     MeReal t;
     McdSafeTimeHit hit;
@@ -176,7 +169,7 @@ MeBool McdSpaceSweepModel(McdModelID model, MeMatrix4 start, const MeVector3 v, 
     const MeReal slop = MeMAX(ME_R(2.0) * gap, MCD_SAFE_TIME_GAP * m->framework->lengthScale);
     if (!m->space || !m->geometry || !McdSafeTimeIsConvex(m->geometry->type))
         return MEFALSE;
-    McdMotion a = {m->geometry, start, relativeOf(m), {v[0], v[1], v[2]}, {w[0], w[1], w[2]}, NULL};
+    McdMotion a = {m->geometry, start, McdModelRelativeInternal(m), {v[0], v[1], v[2]}, {w[0], w[1], w[2]}, NULL};
     /* A model whose points all move less than half its inner radius cannot pass through anything the
      * contacts would not catch (Box2D v3's test for fast bodies): resting and slow models cost this. */
     const MeReal reach0 = McdSafeTimeReach(m->geometry, a.relative);

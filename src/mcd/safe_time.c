@@ -323,40 +323,51 @@ static MeBool sweepTriangle(void *ctx, const McdTerrainTriangle *tri)
     return s->best > ME_R(0.0); /* nothing is earlier than now */
 }
 
-static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, const Search *search, MeReal *time,
-                                        McdSafeTimeHit *hit)
+/* The part of terrain b that convex a may meet over the search: the world box a sweeps (its reach
+ * about both ends of its path), widened by the terrain's own travel, in the terrain's frame at t = 0
+ * (tb: that frame); a turning terrain is searched whole. */
+static void terrainRegion(const McdMotion *a, const McdMotion *b, const Search *search, MeMatrix4 tb,
+                          McdTerrainRegion *region)
 {
-    const MeReal maxTime = search->maxTime, gap = search->gap, eps = search->eps;
-    /* The world box the convex sweeps (its reach about both ends of its path), widened by the
-     * terrain's own travel, in the terrain's frame at t = 0; a turning terrain is searched whole. */
-    const MeReal reach = McdSafeTimeReach(a->g, a->relative) + gap + eps;
-    MeVector3 lo, hi, llo, lhi, centre;
+    const MeReal maxTime = search->maxTime;
+    const MeReal reach = McdSafeTimeReach(a->g, a->relative) + search->gap + search->eps;
+    MeVector3 lo, hi;
     const MeReal slide = MeVector3Magnitude(b->v) * maxTime;
     for (int k = 0; k < 3; k++) {
         const MeReal end = a->start[3][k] + a->v[k] * maxTime;
         lo[k] = MeMIN(a->start[3][k], end) - reach - slide;
         hi[k] = MeMAX(a->start[3][k], end) + reach + slide;
     }
-    MeMatrix4 tb, inv;
-    poseAt(b, 0, tb);
     if (MeVector3MagnitudeSqr(b->w) > ME_R(0.0)) {
-        McdGeometryAABBInternal(b->g, identityTM, llo, lhi);
+        McdGeometryAABBInternal(b->g, identityTM, region->lo, region->hi);
     } else {
+        MeMatrix4 inv;
         MeMatrix4Copy(inv, tb);
         MeMatrix4TMInvert(inv);
         for (int c = 0; c < 8; c++) {
             MeVector3 corner = {c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]}, local;
             McdNfToWorld(local, inv, corner);
             for (int k = 0; k < 3; k++) {
-                llo[k] = c ? MeMIN(llo[k], local[k]) : local[k];
-                lhi[k] = c ? MeMAX(lhi[k], local[k]) : local[k];
+                region->lo[k] = c ? MeMIN(region->lo[k], local[k]) : local[k];
+                region->hi[k] = c ? MeMAX(region->hi[k], local[k]) : local[k];
             }
         }
     }
     for (int k = 0; k < 3; k++)
-        centre[k] = ME_R(0.5) * (llo[k] + lhi[k]);
+        region->centre[k] = ME_R(0.5) * (region->lo[k] + region->hi[k]);
     MeVector3 half;
-    MeVector3Subtract(half, lhi, llo);
+    MeVector3Subtract(half, region->hi, region->lo);
+    region->radius = ME_R(0.5) * MeVector3Magnitude(half);
+}
+
+static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, const Search *search, MeReal *time,
+                                        McdSafeTimeHit *hit)
+{
+    const MeReal maxTime = search->maxTime;
+    MeMatrix4 tb, inv;
+    poseAt(b, 0, tb);
+    McdTerrainRegion region;
+    terrainRegion(a, b, search, tb, &region);
     TerrainSweep s = {.convex = a, .terrain = b, .search = *search, .core = ME_R(0.25) * McdSafeTimeInnerRadius(a->g),
                       .outcome = MCD_SAFE_CLEAR, .best = maxTime};
     /* Turning about its centre moves the convex's lowest point by at most reach - inner radius, and
@@ -373,7 +384,7 @@ static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, 
     poseAt(b, maxTime, tbEnd);
     MeMatrix4TMInvert(tbEnd);
     McdNfToWorld(s.c2, tbEnd, ta[3]);
-    McdTerrainForEach(b->g, llo, lhi, centre, ME_R(0.5) * MeVector3Magnitude(half), b->pair, sweepTriangle, &s);
+    McdTerrainForEach(b->g, &region, b->pair, sweepTriangle, &s);
     *time = s.best;
     if (hit && s.outcome == MCD_SAFE_HIT)
         *hit = s.hit;
@@ -426,13 +437,6 @@ McdSafeTimeOutcome McdSafeTimeMotions(const McdFrameworkData *fw, const McdMotio
 
 /* ---- Karma's entry point ------------------------------------------------------------------------ */
 
-static MeReal (*relativeOf(McdModelData *m))[4]
-{
-    if (m->relativePtr)
-        return m->relativePtr;
-    return m->hasRelative ? m->relativeTransform : NULL;
-}
-
 static MeBool velocityOf(const MeReal *ptr, MeVector3 out, const char *which)
 {
     if (!ptr) {
@@ -461,8 +465,10 @@ MeBool McdSafeTime(McdModelPairID pair, MeReal maxTime, McdSafeTimeResult *resul
     McdModelData *m1 = McdModelFromID(pair->model1, __func__), *m2 = McdModelFromID(pair->model2, __func__);
     if (!m1 || !m2)
         return MEFALSE;
-    McdMotion a = {m1->geometry, McdModelTransformInternal(m1), relativeOf(m1), {0, 0, 0}, {0, 0, 0}, pair};
-    McdMotion b = {m2->geometry, McdModelTransformInternal(m2), relativeOf(m2), {0, 0, 0}, {0, 0, 0}, pair};
+    McdMotion a = {m1->geometry, McdModelTransformInternal(m1), McdModelRelativeInternal(m1), {0, 0, 0}, {0, 0, 0},
+                   pair};
+    McdMotion b = {m2->geometry, McdModelTransformInternal(m2), McdModelRelativeInternal(m2), {0, 0, 0}, {0, 0, 0},
+                   pair};
     if (!velocityOf(m1->linearVelocity, a.v, "first model's linear") ||
         !velocityOf(m1->angularVelocity, a.w, "first model's angular") ||
         !velocityOf(m2->linearVelocity, b.v, "second model's linear") ||
