@@ -254,26 +254,35 @@ static MeBool writePlotScript(const char *script, const char *csvPath, const Dem
 
 /* ---- karma run ------------------------------------------------------------------------------ */
 
-/* `karma run` (plot = MEFALSE) and `karma plot` (METRUE: writes SCENE.csv and SCENE.gp, then draws
- * them with gnuplot when it is installed). */
-static int runScene(int argc, char **argv, MeBool plot)
+/* What the command line asked of `karma run` or `karma plot`. */
+typedef struct RunOptions {
+    const DemoScene *scene;
+    long steps;
+    MeReal h;                   /* s */
+    const char *csvPath, *png; /* NULL when not asked (plot: csvPath is SCENE.csv by default) */
+    MeBool longForm, plot;
+    char defaultCsv[96];
+} RunOptions;
+
+/* Reads the scene and options into *o; returns -1 when they are usable, else the exit status (a
+ * usage error has been printed). */
+static int parseRunOptions(int argc, char **argv, MeBool plot, RunOptions *o)
 {
     if (argc < 1)
         return KarmaUsageError("%s", plot ? "`plot` needs a scene name; `karma list` shows them"
                                      : "`run` needs a scene name; `karma list` shows them");
-    const DemoScene *scene = DemoSceneFind(argv[0]);
-    if (!scene)
+    memset(o, 0, sizeof *o);
+    o->plot = plot;
+    o->scene = DemoSceneFind(argv[0]);
+    if (!o->scene)
         return KarmaUsageError("no scene called '%s'; `karma list` shows the scenes", argv[0]);
-
-    long steps = scene->defaultSteps;
-    MeReal h = scene->defaultStepSize;
-    const char *csvPath = NULL, *png = NULL;
-    MeBool longForm = MEFALSE;
+    o->steps = o->scene->defaultSteps;
+    o->h = o->scene->defaultStepSize;
     for (int i = 1; i < argc; i++) {
         const char *option = argv[i];
         const char *value = i + 1 < argc ? argv[i + 1] : NULL;
         if (!plot && strcmp(option, "--long") == 0) {
-            longForm = METRUE;
+            o->longForm = METRUE;
             continue;
         }
         if (strcmp(option, "--steps") == 0 || strcmp(option, "--dt") == 0 || strcmp(option, "--csv") == 0 ||
@@ -285,105 +294,120 @@ static int runScene(int argc, char **argv, MeBool plot)
             return KarmaUsageError(plot ? "unknown option '%s' for `plot`" : "unknown option '%s' for `run`", option);
         }
         if (strcmp(option, "--png") == 0)
-            png = value;
-        if (strcmp(option, "--steps") == 0 && !parseSteps(value, &steps))
+            o->png = value;
+        if (strcmp(option, "--steps") == 0 && !parseSteps(value, &o->steps))
             return KarmaUsageError("--steps takes a whole number from 0 to 2147483647, not '%s'", value);
-        if (strcmp(option, "--dt") == 0 && !parseStepSize(value, &h))
+        if (strcmp(option, "--dt") == 0 && !parseStepSize(value, &o->h))
             return KarmaUsageError("--dt takes a step size in seconds, greater than 0 and at most 10, not '%s'", value);
         if (strcmp(option, "--csv") == 0)
-            csvPath = value;
+            o->csvPath = value;
     }
+    if (plot && !o->csvPath) {
+        snprintf(o->defaultCsv, sizeof o->defaultCsv, "%s.csv", o->scene->name);
+        o->csvPath = o->defaultCsv;
+    }
+    return -1;
+}
 
-    char defaultCsv[96], script[96];
-    if (plot && !csvPath) {
-        snprintf(defaultCsv, sizeof defaultCsv, "%s.csv", scene->name);
-        csvPath = defaultCsv;
-    }
-    unsigned long warningsBefore = MeMessageGetTotalCount(ME_LEVEL_WARNING);
+/* A run in progress: the scene, what was measured before and after, and the solver's and collision's
+ * counts summed over the steps. */
+typedef struct Run {
+    const RunOptions *options;
     DemoInstance demo;
-    if (!DemoCreate(scene, &demo)) {
-        fprintf(stderr, "karma: scene '%s' could not be built (see the messages above)\n", scene->name);
-        return EXIT_FAILURE;
-    }
-    FILE *csv = NULL;
-    if (csvPath) {
-        csv = fopen(csvPath, "w");
-        if (!csv) {
-            fprintf(stderr, "karma: cannot write '%s': %s\n", csvPath, strerror(errno));
-            DemoDestroy(&demo);
-            return EXIT_FAILURE;
-        }
-        writeCsvHeader(csv, &demo, longForm);
-    }
-
+    FILE *csv;
     Totals before, after;
-    measure(demo.world, &before);
-    if (csv)
-        writeCsvRows(csv, &demo, longForm);
-    double sumPartitions = 0, sumRows = 0, sumPairs = 0, sumContacts = 0;
-    int maxRows = 0;
-    for (long i = 0; i < steps; i++) {
-        DemoStep(&demo, h);
-        if (csv)
-            writeCsvRows(csv, &demo, longForm);
+    double sumPartitions, sumRows, sumPairs, sumContacts;
+    int maxRows;
+    unsigned long warnings;
+} Run;
+
+/* Steps the scene, writing a CSV row after each step when asked, and sums the per-step counts. */
+static void stepScene(Run *run)
+{
+    DemoInstance *demo = &run->demo;
+    measure(demo->world, &run->before);
+    if (run->csv)
+        writeCsvRows(run->csv, demo, run->options->longForm);
+    for (long i = 0; i < run->options->steps; i++) {
+        DemoStep(demo, run->options->h);
+        if (run->csv)
+            writeCsvRows(run->csv, demo, run->options->longForm);
         MdtSolverStats stats;
-        MdtWorldGetSolverStats(demo.world, &stats);
-        sumPartitions += stats.partitions;
-        sumRows += stats.rows;
-        if (stats.maxPartitionRows > maxRows)
-            maxRows = stats.maxPartitionRows;
-        if (demo.universe) {
-            sumPairs += McdSpaceGetPairCount(MstUniverseGetSpace(demo.universe));
-            sumContacts += MstBridgeGetLastContactCount(MstUniverseGetBridge(demo.universe));
+        MdtWorldGetSolverStats(demo->world, &stats);
+        run->sumPartitions += stats.partitions;
+        run->sumRows += stats.rows;
+        if (stats.maxPartitionRows > run->maxRows)
+            run->maxRows = stats.maxPartitionRows;
+        if (demo->universe) {
+            run->sumPairs += McdSpaceGetPairCount(MstUniverseGetSpace(demo->universe));
+            run->sumContacts += MstBridgeGetLastContactCount(MstUniverseGetBridge(demo->universe));
         }
     }
-    measure(demo.world, &after);
-    unsigned long warnings = MeMessageGetTotalCount(ME_LEVEL_WARNING) - warningsBefore;
+    measure(demo->world, &run->after);
+}
 
+/* The run's sizes, counts per step and the time of each stage. */
+static void printCountsAndTimes(const Run *run)
+{
+    const DemoScene *scene = run->options->scene;
+    const DemoInstance *demo = &run->demo;
+    const long steps = run->options->steps;
     printf("karma run %s: %s\n", scene->name, scene->description);
-    printf("  %s; %ld steps of %.6g s = %.4g s simulated\n", MeToolkitVersionString(), steps, (double)h,
-           (double)demo.time);
-    printf("  bodies: %d, awake %d at the start and %d at the end; constraints: %d\n", after.bodies,
-           before.enabled, after.enabled, MdtWorldGetTotalConstraints(demo.world));
+    printf("  %s; %ld steps of %.6g s = %.4g s simulated\n", MeToolkitVersionString(), steps,
+           (double)run->options->h, (double)demo->time);
+    printf("  bodies: %d, awake %d at the start and %d at the end; constraints: %d\n", run->after.bodies,
+           run->before.enabled, run->after.enabled, MdtWorldGetTotalConstraints(demo->world));
 
     double perStep = steps > 0 ? 1e6 / (double)steps : 0, mean = steps > 0 ? 1.0 / (double)steps : 0;
-    printf("  per step (mean): partitions %.1f, rows %.1f (largest partition %d rows)", sumPartitions * mean,
-           sumRows * mean, maxRows);
-    if (demo.universe)
-        printf(", pairs %.1f, contacts %.1f", sumPairs * mean, sumContacts * mean);
+    printf("  per step (mean): partitions %.1f, rows %.1f (largest partition %d rows)", run->sumPartitions * mean,
+           run->sumRows * mean, run->maxRows);
+    if (demo->universe)
+        printf(", pairs %.1f, contacts %.1f", run->sumPairs * mean, run->sumContacts * mean);
     printf("\n");
-    if (demo.universe) {
-        const MeProfile *collision = MstUniverseGetProfile(demo.universe);
+    if (demo->universe) {
+        const MeProfile *collision = MstUniverseGetProfile(demo->universe);
         printf("  collision time per step (µs): Farfield %.3f Nearfield %.3f\n",
                MeProfileGetSectionTotal(collision, MST_SECTION_FARFIELD) * perStep,
                MeProfileGetSectionTotal(collision, MST_SECTION_NEARFIELD) * perStep);
     }
-    const MeProfile *profile = MdtWorldGetProfile(demo.world);
+    const MeProfile *profile = MdtWorldGetProfile(demo->world);
     printf("  dynamics time per step by stage (µs, mean of %ld):", steps);
     for (int s = 0; s < STAGE_COUNT; s++)
         printf(" %s %.3f", stageNames[s], MeProfileGetSectionTotal(profile, stageNames[s]) * perStep);
     printf("; whole step %.3f\n", MeProfileGetSectionTotal(profile, "Dynamics") * perStep);
+}
 
+/* Energy and momenta before and after, with the momentum gravity's impulse predicts. */
+static void printConservation(const Run *run)
+{
+    const Totals *before = &run->before, *after = &run->after;
     printf("  energy (kinetic + gravitational potential): before %.4f J, after %.4f J\n",
-           before.kinetic + before.potential, after.kinetic + after.potential);
+           before->kinetic + before->potential, after->kinetic + after->potential);
     double expected[3];
     for (int k = 0; k < 3; k++)
-        expected[k] = before.momentum[k] + before.gravityImpulsePerSecond[k] * (double)demo.time;
-    printVector("  linear momentum: before ", before.momentum, "");
-    printVector(", after ", after.momentum, "kg·m/s");
+        expected[k] = before->momentum[k] + before->gravityImpulsePerSecond[k] * (double)run->demo.time;
+    printVector("  linear momentum: before ", before->momentum, "");
+    printVector(", after ", after->momentum, "kg·m/s");
     printVector(" (before + gravity's impulse: ", expected, "");
     printf(")\n");
-    printVector("  angular momentum about the origin: before ", before.angularMomentum, "");
-    printVector(", after ", after.angularMomentum, "kg·m²/s");
+    printVector("  angular momentum about the origin: before ", before->angularMomentum, "");
+    printVector(", after ", after->angularMomentum, "kg·m²/s");
     printf("\n");
+}
 
-    printf("  final positions (m; x, y up, z)%s:\n", after.bodies > 12 ? ", named bodies and the first few" : "");
+/* Where the bodies ended (the named ones and the first few of a large scene), then the scene's own
+ * report and the count of warnings. */
+static void printFinalState(const Run *run)
+{
+    const DemoInstance *demo = &run->demo;
+    const int bodies = run->after.bodies;
+    printf("  final positions (m; x, y up, z)%s:\n", bodies > 12 ? ", named bodies and the first few" : "");
     int index = 0, shown = 0;
-    for (MdtBodyID b = MdtBodyGetFirst(demo.world); b; b = MdtBodyGetNext(b), index++) {
+    for (MdtBodyID b = MdtBodyGetFirst(demo->world); b; b = MdtBodyGetNext(b), index++) {
         MeVector3 x;
-        const char *name = DemoBodyName(&demo, b);
+        const char *name = DemoBodyName(demo, b);
         char fallback[32];
-        if (!name && after.bodies > 12 && index >= 8)
+        if (!name && bodies > 12 && index >= 8)
             continue;
         shown++;
         if (!name) {
@@ -394,43 +418,82 @@ static int runScene(int argc, char **argv, MeBool plot)
         printf("    %-12s (%10.4f, %10.4f, %10.4f)%s\n", name, (double)x[0], (double)x[1], (double)x[2],
                MdtBodyIsEnabled(b) ? "" : "  asleep");
     }
-    if (shown < after.bodies)
-        printf("    ... and %d more\n", after.bodies - shown);
-    if (scene->report) {
+    if (shown < bodies)
+        printf("    ... and %d more\n", bodies - shown);
+    if (run->options->scene->report) {
         printf("  what the scene measured:\n");
-        scene->report(&demo, stdout);
+        run->options->scene->report(demo, stdout);
     }
-    printf("  Karma warnings during the run: %lu\n", warnings);
+    printf("  Karma warnings during the run: %lu\n", run->warnings);
+}
 
-    if (plot) {
-        snprintf(script, sizeof script, "%s.gp", scene->name);
-        if (!writePlotScript(script, csvPath, &demo, png)) {
-            fprintf(stderr, "karma: cannot write '%s': %s\n", script, strerror(errno));
-            warnings++;
-        }
+/* Draws the gnuplot script with gnuplot when it is installed; returns the exit status. */
+static int drawPlot(const RunOptions *o, const char *script)
+{
+    printf("  wrote %s (one row per step) and %s (a gnuplot script of each body's height)\n", o->csvPath, script);
+    fflush(stdout); /* the report before gnuplot's drawing */
+    if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
+        printf("  gnuplot is not installed: `apt-get install gnuplot-nox`, then `gnuplot %s`\n", script);
+        return EXIT_SUCCESS;
     }
-    DemoDestroy(&demo);
-    if (csv && fclose(csv) != 0) {
-        fprintf(stderr, "karma: error writing '%s'\n", csvPath);
+    char command[256];
+    snprintf(command, sizeof command, "gnuplot '%s'", script);
+    if (system(command) != 0) {
+        fprintf(stderr, "karma: gnuplot failed on '%s'\n", script);
         return EXIT_FAILURE;
     }
+    if (o->png)
+        printf("  drew %s\n", o->png);
+    return EXIT_SUCCESS;
+}
+
+/* `karma run` (plot = MEFALSE) and `karma plot` (METRUE: writes SCENE.csv and SCENE.gp, then draws
+ * them with gnuplot when it is installed). */
+static int runScene(int argc, char **argv, MeBool plot)
+{
+    RunOptions o;
+    const int usage = parseRunOptions(argc, argv, plot, &o);
+    if (usage >= 0)
+        return usage;
+    Run run;
+    memset(&run, 0, sizeof run);
+    run.options = &o;
+    unsigned long warningsBefore = MeMessageGetTotalCount(ME_LEVEL_WARNING);
+    if (!DemoCreate(o.scene, &run.demo)) {
+        fprintf(stderr, "karma: scene '%s' could not be built (see the messages above)\n", o.scene->name);
+        return EXIT_FAILURE;
+    }
+    if (o.csvPath) {
+        run.csv = fopen(o.csvPath, "w");
+        if (!run.csv) {
+            fprintf(stderr, "karma: cannot write '%s': %s\n", o.csvPath, strerror(errno));
+            DemoDestroy(&run.demo);
+            return EXIT_FAILURE;
+        }
+        writeCsvHeader(run.csv, &run.demo, o.longForm);
+    }
+    stepScene(&run);
+    run.warnings = MeMessageGetTotalCount(ME_LEVEL_WARNING) - warningsBefore;
+    printCountsAndTimes(&run);
+    printConservation(&run);
+    printFinalState(&run);
+
+    char script[96] = "";
     if (plot) {
-        printf("  wrote %s (one row per step) and %s (a gnuplot script of each body's height)\n", csvPath, script);
-        fflush(stdout); /* the report before gnuplot's drawing */
-        if (system("command -v gnuplot >/dev/null 2>&1") == 0) {
-            char command[256];
-            snprintf(command, sizeof command, "gnuplot '%s'", script);
-            if (system(command) != 0) {
-                fprintf(stderr, "karma: gnuplot failed on '%s'\n", script);
-                return EXIT_FAILURE;
-            }
-            if (png)
-                printf("  drew %s\n", png);
-        } else {
-            printf("  gnuplot is not installed: `apt-get install gnuplot-nox`, then `gnuplot %s`\n", script);
+        snprintf(script, sizeof script, "%s.gp", o.scene->name);
+        if (!writePlotScript(script, o.csvPath, &run.demo, o.png)) {
+            fprintf(stderr, "karma: cannot write '%s': %s\n", script, strerror(errno));
+            run.warnings++;
         }
     }
-    return warnings ? EXIT_FAILURE : EXIT_SUCCESS;
+    DemoDestroy(&run.demo);
+    if (run.csv && fclose(run.csv) != 0) {
+        fprintf(stderr, "karma: error writing '%s'\n", o.csvPath);
+        return EXIT_FAILURE;
+    }
+    if (plot && drawPlot(&o, script) != EXIT_SUCCESS)
+        return EXIT_FAILURE;
+    return run.warnings ? EXIT_FAILURE : EXIT_SUCCESS;
 }
 
 int main(int argc, char **argv)

@@ -54,6 +54,7 @@ static MeBool bothFrozen(const McdModelPair *pair)
     return m1 && m2 && m1->frozen && m2->frozen;
 }
 
+/* Size: Karma 1.2's signature. */
 MeBool MEAPI McdBatchIntersectEach(McdBatchContext *context, McdModelPairContainer *pairs,
                                    McdIntersectResult *resultArray, int *resultCount, int resultMaxCount,
                                    McdContact *contactArray, int *contactCount, int contactMaxCount)

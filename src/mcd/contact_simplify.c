@@ -21,6 +21,7 @@ static MeReal planarDistanceSqr(const MeReal *a, const MeReal *b, const MeReal *
     return MeVector3Dot(d, d);
 }
 
+/* Size: Karma 1.2's signature. */
 int MEAPI McdContactSimplify(const MeReal *avgNormal, McdContact *contacts_src, const int nContacts_src,
                              McdContact *contacts_dst, const int nContacts_dest, const int faceNormalsFirst,
                              const MeReal scale)

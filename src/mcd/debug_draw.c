@@ -31,16 +31,21 @@ static void penLine(const Pen *pen, const MeVector3 a, const MeVector3 b)
     MeDebugDrawAPI.line(wa, wb, pen->r, pen->g, pen->b);
 }
 
-/* The arc centre + radius (cos t e1 + sin t e2), t from t0 to t1, in `segments` lines (local). */
-static void penArc(const Pen *pen, const MeVector3 centre, const MeVector3 e1, const MeVector3 e2, MeReal radius,
-                   MeReal t0, MeReal t1, int segments)
+/* An arc in the local frame: the points centre + radius (cos t e1 + sin t e2), t from t0 to t1. */
+typedef struct Arc {
+    const MeReal *centre, *e1, *e2;
+    MeReal radius, t0, t1;
+} Arc;
+
+/* The arc in `segments` lines. */
+static void penArc(const Pen *pen, const Arc *arc, int segments)
 {
     MeVector3 prev, next;
     for (int i = 0; i <= segments; i++) {
-        MeReal t = t0 + (t1 - t0) * (MeReal)i / (MeReal)segments;
-        MeReal c = radius * MeCos(t), s = radius * MeSin(t);
+        MeReal t = arc->t0 + (arc->t1 - arc->t0) * (MeReal)i / (MeReal)segments;
+        MeReal c = arc->radius * MeCos(t), s = arc->radius * MeSin(t);
         for (int k = 0; k < 3; k++)
-            next[k] = centre[k] + c * e1[k] + s * e2[k];
+            next[k] = arc->centre[k] + c * arc->e1[k] + s * arc->e2[k];
         if (i > 0)
             penLine(pen, prev, next);
         MeVector3Copy(prev, next);
@@ -53,7 +58,7 @@ static const MeVector3 axisX = {1, 0, 0}, axisY = {0, 1, 0}, axisZ = {0, 0, 1};
 static void penCircleZ(const Pen *pen, MeReal z, MeReal radius)
 {
     MeVector3 centre = {0, 0, z};
-    penArc(pen, centre, axisX, axisY, radius, 0, 2 * ME_PI, MCDU_DEBUG_DRAW_CIRCLE_SEGMENTS);
+    penArc(pen, &(Arc){centre, axisX, axisY, radius, 0, 2 * ME_PI}, MCDU_DEBUG_DRAW_CIRCLE_SEGMENTS);
 }
 
 /* Four lines joining the circle of rLo at zLo to the circle of rHi at zHi (at 0, 90, 180, 270 deg). */
@@ -92,9 +97,9 @@ static MeBool drawBuiltIn(const McdGeometryData *g, const Pen *pen)
         MeVector3 o = {0, 0, 0};
         MeReal r = g->u.sphere.radius;
         int n = MCDU_DEBUG_DRAW_CIRCLE_SEGMENTS;
-        penArc(pen, o, axisX, axisY, r, 0, 2 * ME_PI, n);
-        penArc(pen, o, axisY, axisZ, r, 0, 2 * ME_PI, n);
-        penArc(pen, o, axisZ, axisX, r, 0, 2 * ME_PI, n);
+        penArc(pen, &(Arc){o, axisX, axisY, r, 0, 2 * ME_PI}, n);
+        penArc(pen, &(Arc){o, axisY, axisZ, r, 0, 2 * ME_PI}, n);
+        penArc(pen, &(Arc){o, axisZ, axisX, r, 0, 2 * ME_PI}, n);
         return METRUE;
     }
     case kMcdGeometryTypeBox: {
@@ -118,10 +123,10 @@ static MeBool drawBuiltIn(const McdGeometryData *g, const Pen *pen)
         penCircleZ(pen, -h, r);
         penCircleZ(pen, h, r);
         penSides(pen, -h, r, h, r);
-        penArc(pen, top, axisX, axisZ, r, 0, ME_PI, n); /* the caps' half circles */
-        penArc(pen, top, axisY, axisZ, r, 0, ME_PI, n);
-        penArc(pen, bottom, axisX, axisZ, r, ME_PI, 2 * ME_PI, n);
-        penArc(pen, bottom, axisY, axisZ, r, ME_PI, 2 * ME_PI, n);
+        penArc(pen, &(Arc){top, axisX, axisZ, r, 0, ME_PI}, n); /* the caps' half circles */
+        penArc(pen, &(Arc){top, axisY, axisZ, r, 0, ME_PI}, n);
+        penArc(pen, &(Arc){bottom, axisX, axisZ, r, ME_PI, 2 * ME_PI}, n);
+        penArc(pen, &(Arc){bottom, axisY, axisZ, r, ME_PI, 2 * ME_PI}, n);
         return METRUE;
     }
     case kMcdGeometryTypeCone: {

@@ -436,7 +436,8 @@ MeBool McdFrameworkSetInteraction(McdFrameworkData *fw, int type1, int type2, Mc
     return McdFrameworkSetInteractionWithCache(fw, type1, type2, fn, NULL, function);
 }
 
-/* Calls an application's pair test: the entry is found from the two types, in the table's order. */
+/* Calls an application's pair test: the entry is found from the two types, in the table's order.
+ * Size: McdNearfieldFn's signature, the pair-test table's type. */
 static int userTrampoline(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                           MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {

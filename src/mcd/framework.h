@@ -126,6 +126,8 @@ MeBool McdGeometryLineSegInternal(const McdGeometryData *g, const MeVector3 p0, 
 /* ---- models ----------------------------------------------------------------------------------- */
 /** The transform the model follows (the pointer given or its own). */
 MeMatrix4Ptr McdModelTransformInternal(McdModelData *m);
+/** The geometry's place in that transform's frame (the pointer given or its own), or NULL for none. */
+MeMatrix4Ptr McdModelRelativeInternal(McdModelData *m);
 /** Drop the model's continuous flag and its count in the framework (destroy, reset). */
 void McdModelContinuousForget(McdModelData *m);
 void McdModelUpdateInternal(McdModelData *m);

@@ -48,6 +48,13 @@ static void setDefaults(McdModelData *m)
 
 MeMatrix4Ptr McdModelTransformInternal(McdModelData *m) { return m->transform ? m->transform : m->ownTransform; }
 
+MeMatrix4Ptr McdModelRelativeInternal(McdModelData *m)
+{
+    if (m->relativePtr)
+        return m->relativePtr;
+    return m->hasRelative ? m->relativeTransform : NULL;
+}
+
 static void compound(McdModelData *m)
 {
     MeMatrix4Ptr tm = McdModelTransformInternal(m);
@@ -269,9 +276,7 @@ void McdModelSetRelativeTransform(McdModelID id, MeMatrix4 relTM)
 MeMatrix4Ptr McdModelGetRelativeTransform(McdModelID id)
 {
     MODEL_OR_RETURN(m, id, NULL);
-    if (m->relativePtr)
-        return m->relativePtr;
-    return m->hasRelative ? m->relativeTransform : NULL;
+    return McdModelRelativeInternal(m);
 }
 
 void McdModelSetRelativeTransformPtrs(McdModelID id, MeMatrix4 relTM, MeMatrix4 refTM, MeMatrix4 compoundTM, MeBool own)
@@ -300,7 +305,7 @@ void McdModelGetRelativeTransformPtrs(McdModelID id, MeMatrix4Ptr *relTM, MeMatr
 {
     MODEL_OR_RETURN(m, id, ME_NOTHING);
     if (relTM)
-        *relTM = m->relativePtr ? m->relativePtr : (m->hasRelative ? m->relativeTransform : NULL);
+        *relTM = McdModelRelativeInternal(m);
     if (refTM)
         *refTM = McdModelTransformInternal(m);
 }

@@ -88,13 +88,69 @@ int McdFrameworkGetContinuousModels(McdFrameworkID id, McdModelID *models, int m
     return fw->continuousCount;
 }
 
-static MeReal (*relativeOf(McdModelData *m))[4]
+/* Whether the sweep's arguments are usable; reports the first that is not. */
+static MeBool sweepArgumentsValid(MeMatrix4 start, const MeVector3 v, const MeVector3 w, MeReal duration, MeReal gap)
 {
-    if (m->relativePtr)
-        return m->relativePtr;
-    return m->hasRelative ? m->relativeTransform : NULL;
+    if (!(isfinite(duration) && duration >= 0) || !(isfinite(gap) && gap >= 0)) {
+        ME_REPORT_IN("McdSpaceSweepModel", ME_ERR_MCD_SAFE_TIME_RANGE, "arguments 'duration' (%g) and 'gap' (%g) "
+                     "must be finite and >= 0; nothing swept", (double)duration, (double)gap);
+        return MEFALSE;
+    }
+    MeBool finite = MeVector3IsValid(v) && MeVector3IsValid(w);
+    for (int k = 0; k < 4 && finite; k++)
+        finite = MeVector3IsValid(start[k]);
+    if (!finite) {
+        ME_REPORT_IN("McdSpaceSweepModel", ME_ERR_MCD_SAFE_TIME_VELOCITY,
+                     "the start transform or a velocity is not finite; nothing swept");
+        return MEFALSE;
+    }
+    return METRUE;
 }
 
+/* Whether the model in `slot` of m's space may stop m's sweep: live, another body's, its box meeting
+ * the swept box [lo, hi], and the pair neither disabled nor culled. */
+static MeBool mayBlock(const McdModelData *m, int slot, const MeVector3 lo, const MeVector3 hi)
+{
+    const McdSpaceData *space = m->space;
+    const McdSpaceObject *ob = &space->obj[slot];
+    const McdModelData *o = ob->model;
+    if (!(ob->flags & MCD_OBJ_LIVE) || !o || o == m || !o->geometry || (m->body && o->body == m->body))
+        return MEFALSE;
+    const MeReal *olo = MCD_BOX_LO(space, slot), *ohi = MCD_BOX_HI(space, slot);
+    for (int k = 0; k < 3; k++)
+        if (ohi[k] < lo[k] || olo[k] > hi[k])
+            return MEFALSE;
+    const int pa = MeMIN(slot, m->spaceIndex), pb = MeMAX(slot, m->spaceIndex);
+    const int rec = McdSpacePairFind(space, pa, pb);
+    return !((rec >= 0 && (space->pairs[rec].flags & MCD_PAIR_DISABLED)) || McdSpaceObjectsCulled(space, pa, pb));
+}
+
+/* Sweeps the motion a of model m against the model o, at rest where it is; an earlier hit than the
+ * result's replaces it. Returns whether it did. */
+static MeBool sweepAgainst(McdModelData *m, McdMotion *a, McdModelData *o, const McdSafeTimeLimits *limits,
+                           McdSweepResult *result)
+{
+    const McdModelID otherID = McdModelToID(o);
+    McdModelPair pair;
+    memset(&pair, 0, sizeof pair);
+    pair.model1 = McdModelToID(m);
+    pair.model2 = otherID;
+    McdMotion b = {o->geometry, McdModelTransformInternal(o), McdModelRelativeInternal(o), {0, 0, 0}, {0, 0, 0}, &pair};
+    a->pair = &pair;
+    MeReal t;
+    McdSafeTimeHit hit;
+    const McdSafeTimeOutcome out = McdSafeTimeMotions(m->framework, a, &b, limits, &t, &hit);
+    if (!(out == MCD_SAFE_HIT && t < result->time))
+        return MEFALSE;
+    result->time = t;
+    result->model = otherID;
+    MeVector3Copy(result->normal, hit.normal);
+    MeVector3Copy(result->position, hit.point);
+    result->touching = hit.touching;
+    return METRUE;
+}
+
+/* Size: the sweep's public signature, as docs/api_changes.md gives it. */
 MeBool McdSpaceSweepModel(McdModelID model, MeMatrix4 start, const MeVector3 v, const MeVector3 w, MeReal duration,
                           MeReal gap, McdSweepResult *result)
 {
@@ -103,20 +159,8 @@ MeBool McdSpaceSweepModel(McdModelID model, MeMatrix4 start, const MeVector3 v, 
     ME_CHECK_NOT_NULL(w, MEFALSE);
     ME_CHECK_NOT_NULL(result, MEFALSE);
     McdModelData *m = McdModelFromID(model, __func__);
-    if (!m)
+    if (!m || !sweepArgumentsValid(start, v, w, duration, gap))
         return MEFALSE;
-    if (!(isfinite(duration) && duration >= 0) || !(isfinite(gap) && gap >= 0)) {
-        ME_REPORT(ME_ERR_MCD_SAFE_TIME_RANGE, "arguments 'duration' (%g) and 'gap' (%g) must be finite and >= 0; "
-                  "nothing swept", (double)duration, (double)gap);
-        return MEFALSE;
-    }
-    MeBool finite = MeVector3IsValid(v) && MeVector3IsValid(w);
-    for (int k = 0; k < 4 && finite; k++)
-        finite = MeVector3IsValid(start[k]);
-    if (!finite) {
-        ME_REPORT(ME_ERR_MCD_SAFE_TIME_VELOCITY, "the start transform or a velocity is not finite; nothing swept");
-        return MEFALSE;
-    }
     result->time = duration;
     result->model = NULL;
     result->touching = MEFALSE;
@@ -125,7 +169,7 @@ MeBool McdSpaceSweepModel(McdModelID model, MeMatrix4 start, const MeVector3 v, 
     const MeReal slop = MeMAX(ME_R(2.0) * gap, MCD_SAFE_TIME_GAP * m->framework->lengthScale);
     if (!m->space || !m->geometry || !McdSafeTimeIsConvex(m->geometry->type))
         return MEFALSE;
-    McdMotion a = {m->geometry, start, relativeOf(m), {v[0], v[1], v[2]}, {w[0], w[1], w[2]}, NULL};
+    McdMotion a = {m->geometry, start, McdModelRelativeInternal(m), {v[0], v[1], v[2]}, {w[0], w[1], w[2]}, NULL};
     /* A model whose points all move less than half its inner radius cannot pass through anything the
      * contacts would not catch (Box2D v3's test for fast bodies): resting and slow models cost this. */
     const MeReal reach0 = McdSafeTimeReach(m->geometry, a.relative);
@@ -140,44 +184,16 @@ MeBool McdSpaceSweepModel(McdModelID model, MeMatrix4 start, const MeVector3 v, 
         lo[k] = MeMIN(start[3][k], end) - reach;
         hi[k] = MeMAX(start[3][k], end) + reach;
     }
+    /* The space's own arrays: a plain pass over its slots and boxes (as its segment queries). Touching
+     * already: only a further approach by the slop counts (a body resting, sliding or rolling on the
+     * other is not stopped; one being driven through it is). */
     MeBool found = MEFALSE;
-    /* The space's own arrays: a plain pass over its slots and boxes (as its segment queries). */
-    McdSpaceData *space = m->space;
-    for (int slot = 0; slot < space->maxObjects; slot++) {
-        const McdSpaceObject *ob = &space->obj[slot];
-        McdModelData *o = ob->model;
-        if (!(ob->flags & MCD_OBJ_LIVE) || !o || o == m || !o->geometry || (m->body && o->body == m->body))
+    for (int slot = 0; slot < m->space->maxObjects; slot++) {
+        if (!mayBlock(m, slot, lo, hi))
             continue;
-        const MeReal *olo = MCD_BOX_LO(space, slot), *ohi = MCD_BOX_HI(space, slot);
-        MeBool apart = MEFALSE;
-        for (int k = 0; k < 3 && !apart; k++)
-            apart = ohi[k] < lo[k] || olo[k] > hi[k];
-        if (apart)
-            continue;
-        const int pa = MeMIN(slot, m->spaceIndex), pb = MeMAX(slot, m->spaceIndex);
-        const int rec = McdSpacePairFind(space, pa, pb);
-        if ((rec >= 0 && (space->pairs[rec].flags & MCD_PAIR_DISABLED)) || McdSpaceObjectsCulled(space, pa, pb))
-            continue;
-        const McdModelID otherID = McdModelToID(o);
-        McdModelPair pair;
-        memset(&pair, 0, sizeof pair);
-        pair.model1 = model;
-        pair.model2 = otherID;
-        McdMotion b = {o->geometry, McdModelTransformInternal(o), relativeOf(o), {0, 0, 0}, {0, 0, 0}, &pair};
-        a.pair = &pair;
-        MeReal t;
-        McdSafeTimeHit hit;
-        /* Touching already: only a further approach by the slop counts (a body resting, sliding or
-         * rolling on the other is not stopped; one being driven through it is). */
-        const McdSafeTimeOutcome out = McdSafeTimeMotions(m->framework, &a, &b, result->time, gap, slop, &t, &hit);
-        if (out == MCD_SAFE_HIT && t < result->time) {
-            result->time = t;
-            result->model = otherID;
-            MeVector3Copy(result->normal, hit.normal);
-            MeVector3Copy(result->position, hit.point);
-            result->touching = hit.touching;
+        const McdSafeTimeLimits limits = {result->time, gap, slop};
+        if (sweepAgainst(m, &a, m->space->obj[slot].model, &limits, result))
             found = METRUE;
-        }
     }
     return found;
 }

@@ -363,6 +363,7 @@ void McdGoodbyeEach(McdModelPairContainer *pairs)
         McdGoodbye(pairs->array[i]);
 }
 
+/* Size: Karma 1.2's signature. */
 MeBool McdIntersectEach(McdModelPairContainer *pairs, McdModelPairContainerIterator *iter,
                         McdIntersectResult *resultArray, int resultArraySize, int *resultCount,
                         McdContact *contactArray, int contactArraySize, int *contactCount)

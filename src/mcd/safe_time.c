@@ -143,12 +143,18 @@ static MeReal distance(const McdGeometryData *a, MeMatrix4 ta, const McdGeometry
     return d.distance - sa.radius - sb.radius;
 }
 
+/* A search's limits and its stopping tolerance eps (m): the distance counts as reached within eps. */
+typedef struct Search {
+    MeReal maxTime, gap, slop, eps;
+} Search;
+
 /* Conservative advancement of a (convex) against b (convex or plane) over [0, maxTime]: the time at
  * which their signed distance first comes within eps of the target, which is gap, or (slop >= 0 and
  * already within gap at the start) the start's distance less slop. */
-static McdSafeTimeOutcome advance(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap, MeReal slop,
-                                  MeReal eps, MeReal *time, McdSafeTimeHit *hit)
+static McdSafeTimeOutcome advance(const McdMotion *a, const McdMotion *b, const Search *search, MeReal *time,
+                                  McdSafeTimeHit *hit)
 {
+    const MeReal maxTime = search->maxTime, gap = search->gap, slop = search->slop, eps = search->eps;
     const MeReal spinB = b->g->type == kMcdGeometryTypePlane
                              ? ME_R(0.0)
                              : MeVector3Magnitude(b->w) * McdSafeTimeReach(b->g, b->relative);
@@ -200,9 +206,10 @@ static McdSafeTimeOutcome advance(const McdMotion *a, const McdMotion *b, MeReal
 }
 
 /* Sphere against sphere, centres in straight lines: the first root of |p + u t| = reach. */
-static McdSafeTimeOutcome sphereSphere(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap, MeReal eps,
-                                       MeReal *time, McdSafeTimeHit *hit)
+static McdSafeTimeOutcome sphereSphere(const McdMotion *a, const McdMotion *b, const Search *search, MeReal *time,
+                                       McdSafeTimeHit *hit)
 {
+    const MeReal maxTime = search->maxTime, gap = search->gap, eps = search->eps;
     MeMatrix4 ta, tb;
     MeVector3 p, u;
     poseAt(a, 0, ta);
@@ -240,9 +247,10 @@ static McdSafeTimeOutcome sphereSphere(const McdMotion *a, const McdMotion *b, M
 }
 
 /* Sphere a against a plane b that does not turn: the height above the plane falls linearly. */
-static McdSafeTimeOutcome spherePlane(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap, MeReal eps,
-                                      MeReal *time, McdSafeTimeHit *hit)
+static McdSafeTimeOutcome spherePlane(const McdMotion *a, const McdMotion *b, const Search *search, MeReal *time,
+                                      McdSafeTimeHit *hit)
 {
+    const MeReal maxTime = search->maxTime, gap = search->gap, eps = search->eps;
     MeMatrix4 ta, tb;
     MeVector3 rel;
     poseAt(a, 0, ta);
@@ -272,7 +280,7 @@ static McdSafeTimeOutcome spherePlane(const McdMotion *a, const McdMotion *b, Me
 
 typedef struct TerrainSweep {
     const McdMotion *convex, *terrain;
-    MeReal maxTime, gap, slop, eps;
+    Search search;
     MeVector3 c1, c2; /* the convex's centre at the start and the end, in the terrain's frame */
     MeReal core;      /* Box2D's core distance: a quarter of the convex's inner radius */
     MeReal turn;      /* how much deeper its turning can take the convex below its centre */
@@ -289,7 +297,7 @@ static MeBool sweepTriangle(void *ctx, const McdTerrainTriangle *tri)
     core.type = MCD_NF_TRIANGLE_TYPE;
     for (int k = 0; k < 3; k++)
         MeVector3Copy(core.u.triangle.v[k], tri->v[k]);
-    if (s->slop >= ME_R(0.0)) {
+    if (s->search.slop >= ME_R(0.0)) {
         /* A sweep skips a triangle whose plane the convex does not approach by the core distance and
          * ends above by more than it (rolling and sliding across a floor: Box2D v3's test for chain
          * segments, with the depth its turning can add), and a one-sided triangle it starts behind. */
@@ -305,7 +313,9 @@ static MeBool sweepTriangle(void *ctx, const McdTerrainTriangle *tri)
     MeReal when;
     /* Only a time earlier than the best so far matters. */
     McdSafeTimeHit hit;
-    if (advance(s->convex, &t, s->best, s->gap, s->slop, s->eps, &when, &hit) == MCD_SAFE_HIT && when <= s->best) {
+    Search upToBest = s->search;
+    upToBest.maxTime = s->best;
+    if (advance(s->convex, &t, &upToBest, &when, &hit) == MCD_SAFE_HIT && when <= s->best) {
         s->best = when;
         s->outcome = MCD_SAFE_HIT;
         s->hit = hit;
@@ -313,41 +323,53 @@ static MeBool sweepTriangle(void *ctx, const McdTerrainTriangle *tri)
     return s->best > ME_R(0.0); /* nothing is earlier than now */
 }
 
-static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, MeReal maxTime, MeReal gap,
-                                        MeReal slop, MeReal eps, MeReal *time, McdSafeTimeHit *hit)
+/* The part of terrain b that convex a may meet over the search: the world box a sweeps (its reach
+ * about both ends of its path), widened by the terrain's own travel, in the terrain's frame at t = 0
+ * (tb: that frame); a turning terrain is searched whole. */
+static void terrainRegion(const McdMotion *a, const McdMotion *b, const Search *search, MeMatrix4 tb,
+                          McdTerrainRegion *region)
 {
-    /* The world box the convex sweeps (its reach about both ends of its path), widened by the
-     * terrain's own travel, in the terrain's frame at t = 0; a turning terrain is searched whole. */
-    const MeReal reach = McdSafeTimeReach(a->g, a->relative) + gap + eps;
-    MeVector3 lo, hi, llo, lhi, centre;
+    const MeReal maxTime = search->maxTime;
+    const MeReal reach = McdSafeTimeReach(a->g, a->relative) + search->gap + search->eps;
+    MeVector3 lo, hi;
     const MeReal slide = MeVector3Magnitude(b->v) * maxTime;
     for (int k = 0; k < 3; k++) {
         const MeReal end = a->start[3][k] + a->v[k] * maxTime;
         lo[k] = MeMIN(a->start[3][k], end) - reach - slide;
         hi[k] = MeMAX(a->start[3][k], end) + reach + slide;
     }
-    MeMatrix4 tb, inv;
-    poseAt(b, 0, tb);
     if (MeVector3MagnitudeSqr(b->w) > ME_R(0.0)) {
-        McdGeometryAABBInternal(b->g, identityTM, llo, lhi);
+        McdGeometryAABBInternal(b->g, identityTM, region->lo, region->hi);
     } else {
+        MeMatrix4 inv;
         MeMatrix4Copy(inv, tb);
         MeMatrix4TMInvert(inv);
         for (int c = 0; c < 8; c++) {
             MeVector3 corner = {c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]}, local;
             McdNfToWorld(local, inv, corner);
             for (int k = 0; k < 3; k++) {
-                llo[k] = c ? MeMIN(llo[k], local[k]) : local[k];
-                lhi[k] = c ? MeMAX(lhi[k], local[k]) : local[k];
+                region->lo[k] = c ? MeMIN(region->lo[k], local[k]) : local[k];
+                region->hi[k] = c ? MeMAX(region->hi[k], local[k]) : local[k];
             }
         }
     }
     for (int k = 0; k < 3; k++)
-        centre[k] = ME_R(0.5) * (llo[k] + lhi[k]);
+        region->centre[k] = ME_R(0.5) * (region->lo[k] + region->hi[k]);
     MeVector3 half;
-    MeVector3Subtract(half, lhi, llo);
-    TerrainSweep s = {.convex = a, .terrain = b, .maxTime = maxTime, .gap = gap, .slop = slop, .eps = eps,
-                      .core = ME_R(0.25) * McdSafeTimeInnerRadius(a->g), .outcome = MCD_SAFE_CLEAR, .best = maxTime};
+    MeVector3Subtract(half, region->hi, region->lo);
+    region->radius = ME_R(0.5) * MeVector3Magnitude(half);
+}
+
+static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, const Search *search, MeReal *time,
+                                        McdSafeTimeHit *hit)
+{
+    const MeReal maxTime = search->maxTime;
+    MeMatrix4 tb, inv;
+    poseAt(b, 0, tb);
+    McdTerrainRegion region;
+    terrainRegion(a, b, search, tb, &region);
+    TerrainSweep s = {.convex = a, .terrain = b, .search = *search, .core = ME_R(0.25) * McdSafeTimeInnerRadius(a->g),
+                      .outcome = MCD_SAFE_CLEAR, .best = maxTime};
     /* Turning about its centre moves the convex's lowest point by at most reach - inner radius, and
      * by no more than its fastest point travels. */
     const MeReal own = McdSafeTimeReach(a->g, NULL);
@@ -362,7 +384,7 @@ static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, 
     poseAt(b, maxTime, tbEnd);
     MeMatrix4TMInvert(tbEnd);
     McdNfToWorld(s.c2, tbEnd, ta[3]);
-    McdTerrainForEach(b->g, llo, lhi, centre, ME_R(0.5) * MeVector3Magnitude(half), b->pair, sweepTriangle, &s);
+    McdTerrainForEach(b->g, &region, b->pair, sweepTriangle, &s);
     *time = s.best;
     if (hit && s.outcome == MCD_SAFE_HIT)
         *hit = s.hit;
@@ -370,9 +392,10 @@ static McdSafeTimeOutcome convexTerrain(const McdMotion *a, const McdMotion *b, 
 }
 
 McdSafeTimeOutcome McdSafeTimeMotions(const McdFrameworkData *fw, const McdMotion *a, const McdMotion *b,
-                                      MeReal maxTime, MeReal gap, MeReal slop, MeReal *time, McdSafeTimeHit *hit)
+                                      const McdSafeTimeLimits *limits, MeReal *time, McdSafeTimeHit *hit)
 {
-    const MeReal eps = MCD_SAFE_TIME_GAP * (fw ? fw->lengthScale : ME_R(1.0));
+    const MeReal maxTime = limits->maxTime, gap = limits->gap;
+    const Search search = {maxTime, gap, limits->slop, MCD_SAFE_TIME_GAP * (fw ? fw->lengthScale : ME_R(1.0))};
     McdSafeTimeOutcome out = MCD_SAFE_NO_METHOD;
     *time = maxTime;
     if (!a->g || !b->g)
@@ -391,17 +414,17 @@ McdSafeTimeOutcome McdSafeTimeMotions(const McdFrameworkData *fw, const McdMotio
         return MCD_SAFE_NO_METHOD;
     MeReal t = maxTime;
     /* The closed forms answer "when within gap"; with a slop (a sweep) the advancement does it all. */
-    const MeBool closed = slop < ME_R(0.0);
+    const MeBool closed = limits->slop < ME_R(0.0);
     if (closed && ca == kMcdGeometryTypeSphere && cb == kMcdGeometryTypeSphere && centreMovesStraight(a) &&
         centreMovesStraight(b))
-        out = sphereSphere(a, b, maxTime, gap, eps, &t, hit);
+        out = sphereSphere(a, b, &search, &t, hit);
     else if (closed && ca == kMcdGeometryTypeSphere && cb == kMcdGeometryTypePlane && centreMovesStraight(a) &&
              MeVector3MagnitudeSqr(b->w) == ME_R(0.0))
-        out = spherePlane(a, b, maxTime, gap, eps, &t, hit);
+        out = spherePlane(a, b, &search, &t, hit);
     else if (McdSafeTimeIsConvex(cb) || cb == kMcdGeometryTypePlane)
-        out = advance(a, b, maxTime, gap, slop, eps, &t, hit);
+        out = advance(a, b, &search, &t, hit);
     else if (isTerrain(cb))
-        out = convexTerrain(a, b, maxTime, gap, slop, eps, &t, hit);
+        out = convexTerrain(a, b, &search, &t, hit);
     if (out == MCD_SAFE_HIT) {
         *time = t;
         if (hit && swapped) { /* the point on the other: along the normal by the gap */
@@ -413,13 +436,6 @@ McdSafeTimeOutcome McdSafeTimeMotions(const McdFrameworkData *fw, const McdMotio
 }
 
 /* ---- Karma's entry point ------------------------------------------------------------------------ */
-
-static MeReal (*relativeOf(McdModelData *m))[4]
-{
-    if (m->relativePtr)
-        return m->relativePtr;
-    return m->hasRelative ? m->relativeTransform : NULL;
-}
 
 static MeBool velocityOf(const MeReal *ptr, MeVector3 out, const char *which)
 {
@@ -449,15 +465,18 @@ MeBool McdSafeTime(McdModelPairID pair, MeReal maxTime, McdSafeTimeResult *resul
     McdModelData *m1 = McdModelFromID(pair->model1, __func__), *m2 = McdModelFromID(pair->model2, __func__);
     if (!m1 || !m2)
         return MEFALSE;
-    McdMotion a = {m1->geometry, McdModelTransformInternal(m1), relativeOf(m1), {0, 0, 0}, {0, 0, 0}, pair};
-    McdMotion b = {m2->geometry, McdModelTransformInternal(m2), relativeOf(m2), {0, 0, 0}, {0, 0, 0}, pair};
+    McdMotion a = {m1->geometry, McdModelTransformInternal(m1), McdModelRelativeInternal(m1), {0, 0, 0}, {0, 0, 0},
+                   pair};
+    McdMotion b = {m2->geometry, McdModelTransformInternal(m2), McdModelRelativeInternal(m2), {0, 0, 0}, {0, 0, 0},
+                   pair};
     if (!velocityOf(m1->linearVelocity, a.v, "first model's linear") ||
         !velocityOf(m1->angularVelocity, a.w, "first model's angular") ||
         !velocityOf(m2->linearVelocity, b.v, "second model's linear") ||
         !velocityOf(m2->angularVelocity, b.w, "second model's angular"))
         return MEFALSE;
     MeReal t;
-    McdSafeTimeOutcome out = McdSafeTimeMotions(m1->framework, &a, &b, maxTime, ME_R(0.0), -ME_R(1.0), &t, NULL);
+    const McdSafeTimeLimits limits = {maxTime, ME_R(0.0), -ME_R(1.0)};
+    McdSafeTimeOutcome out = McdSafeTimeMotions(m1->framework, &a, &b, &limits, &t, NULL);
     result->pair = pair;
     result->time = t;
     return out != MCD_SAFE_NO_METHOD;

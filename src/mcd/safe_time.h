@@ -32,14 +32,21 @@ typedef struct McdSafeTimeHit {
     MeBool touching;
 } McdSafeTimeHit;
 
+/** What a safe-time search looks for: the window [0, maxTime] (s), how near counts as a hit (gap, m,
+ *  >= 0) and, for a sweep, how much further shapes already within gap at the start must approach to
+ *  hit (slop >= 0, m); slop < 0: shapes within gap at the start hit at 0 (McdSafeTime). */
+typedef struct McdSafeTimeLimits {
+    MeReal maxTime, gap, slop;
+} McdSafeTimeLimits;
+
 /** Whether a geometry type can be moved by the sweep: convex primitives and convex meshes. */
 MeBool McdSafeTimeIsConvex(int type);
-/** Conservative time at which a and b come within `gap` (>= 0) of each other; the stopping tolerance
+/** Conservative time at which a and b come within limits->gap of each other; the stopping tolerance
  *  is MCD_SAFE_TIME_GAP * lengthScale. With slop >= 0 (a sweep), shapes already within gap at the
  *  start hit only when their signed distance (depth when overlapping) falls by slop more; slop < 0:
  *  they hit at 0 (McdSafeTime). `hit` (may be NULL) receives the hit's direction. */
 McdSafeTimeOutcome McdSafeTimeMotions(const McdFrameworkData *fw, const McdMotion *a, const McdMotion *b,
-                                      MeReal maxTime, MeReal gap, MeReal slop, MeReal *time, McdSafeTimeHit *hit);
+                                      const McdSafeTimeLimits *limits, MeReal *time, McdSafeTimeHit *hit);
 /** Radius of a ball round the geometry's origin inside it (0 when unknown). */
 MeReal McdSafeTimeInnerRadius(const McdGeometryData *g);
 /** Radius about the followed frame's origin that holds the geometry placed at `relative` (NULL:

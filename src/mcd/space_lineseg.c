@@ -102,18 +102,16 @@ static MeBool queryModel(const Query *q, int slot, Hit *h)
     return METRUE;
 }
 
-static int firstHit(McdSpaceID space, const MeVector3 orig, const MeVector3 dest, McdLineSegIntersectResult *result,
-                    McdLineSegIntersectEnableCallback filter, void *data, const char *function)
+/* The nearest hit of a started query among the models `filter` (when not NULL) enables. */
+static int firstHit(const Query *q, McdLineSegIntersectEnableCallback filter, void *data,
+                    McdLineSegIntersectResult *result)
 {
-    Query q;
-    if (!queryStart(&q, space, orig, dest, result, function))
-        return 0;
     Hit best = {{0}, 0, 0}, h;
     MeBool found = MEFALSE;
-    for (int slot = 0; slot < q.s->maxObjects; slot++) {
-        if (!queryModel(&q, slot, &h))
+    for (int slot = 0; slot < q->s->maxObjects; slot++) {
+        if (!queryModel(q, slot, &h))
             continue;
-        if (filter && !filter((McdModelID)q.s->obj[slot].handle, data))
+        if (filter && !filter((McdModelID)q->s->obj[slot].handle, data))
             continue;
         if (!found || hitBefore(&h, &best)) {
             best = h;
@@ -128,14 +126,16 @@ static int firstHit(McdSpaceID space, const MeVector3 orig, const MeVector3 dest
 int McdSpaceGetLineSegFirstIntersection(McdSpaceID space, const MeVector3 orig, const MeVector3 dest,
                                         McdLineSegIntersectResult *result)
 {
-    return firstHit(space, orig, dest, result, NULL, NULL, __func__);
+    Query q;
+    return queryStart(&q, space, orig, dest, result, __func__) ? firstHit(&q, NULL, NULL, result) : 0;
 }
 
 int McdSpaceGetLineSegFirstEnabledIntersection(McdSpaceID space, const MeVector3 orig, const MeVector3 dest,
                                                McdLineSegIntersectEnableCallback filterCB, void *data,
                                                McdLineSegIntersectResult *result)
 {
-    return firstHit(space, orig, dest, result, filterCB, data, __func__);
+    Query q;
+    return queryStart(&q, space, orig, dest, result, __func__) ? firstHit(&q, filterCB, data, result) : 0;
 }
 
 int McdSpaceGetLineSegIntersections(McdSpaceID space, const MeVector3 orig, const MeVector3 dest,

@@ -869,6 +869,7 @@ static void addAtPosition(MdtBodyData *b, MeVector3 linear, MeVector3 angular, c
     MeVector3Add(angular, angular, rxv);
 }
 
+/* Size: Karma 1.2's signature. */
 void MdtBodyAddForceAtPosition(MdtBodyID id, MeReal fx, MeReal fy, MeReal fz, MeReal px, MeReal py, MeReal pz)
 {
     BODY_OR_RETURN(b, id, ME_NOTHING);
@@ -896,6 +897,7 @@ void MdtBodyAddImpulse(MdtBodyID id, MeReal ix, MeReal iy, MeReal iz)
     b->impulse[2] += iz;
 }
 
+/* Size: Karma 1.2's signature. */
 void MdtBodyAddImpulseAtPosition(MdtBodyID id, MeReal ix, MeReal iy, MeReal iz, MeReal px, MeReal py, MeReal pz)
 {
     BODY_OR_RETURN(b, id, ME_NOTHING);

@@ -348,6 +348,7 @@ void MdtConstraintSetAxis(MdtConstraintID id, MeReal px, MeReal py, MeReal pz)
         setWorldAxes(c, 0, 1, p, o);
 }
 
+/* Size: Karma 1.2's signature. */
 void MdtConstraintSetAxes(MdtConstraintID id, MeReal px, MeReal py, MeReal pz, MeReal ox, MeReal oy, MeReal oz)
 {
     CONSTRAINT_OR_RETURN(c, id, ME_NOTHING);
@@ -358,6 +359,7 @@ void MdtConstraintSetAxes(MdtConstraintID id, MeReal px, MeReal py, MeReal pz, M
         setWorldAxes(c, 0, 1, p, o);
 }
 
+/* Size: Karma 1.2's signature. */
 void MdtConstraintBodySetAxes(MdtConstraintID id, unsigned int bodyindex, MeReal px, MeReal py, MeReal pz,
                               MeReal ox, MeReal oy, MeReal oz)
 {
@@ -371,6 +373,7 @@ void MdtConstraintBodySetAxes(MdtConstraintID id, unsigned int bodyindex, MeReal
         setWorldAxes(c, (int)bodyindex, (int)bodyindex, p, o);
 }
 
+/* Size: Karma 1.2's signature. */
 void MdtConstraintBodySetAxesRel(MdtConstraintID id, unsigned int bodyindex, MeReal px, MeReal py, MeReal pz,
                                  MeReal ox, MeReal oy, MeReal oz)
 {

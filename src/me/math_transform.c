@@ -67,6 +67,7 @@ void MeMatrix4TMOrthoNormalize(MeMatrix4 tm)
     tm[3][3] = ME_R(1.0);
 }
 
+/* Size: Karma 1.2's signature. */
 void MeMatrix4TMFromEulerAnglesAndPosition(MeMatrix4 tm, MeReal xangle, MeReal yangle, MeReal zangle,
                                             MeReal x, MeReal y, MeReal z)
 {
@@ -112,6 +113,7 @@ void MeMatrix4TMUpdateFromVelocities(MeMatrix4 out, MeReal aEpsilon, MeReal aTim
     TMAdvance(out, in, displacement, angularStep, MeVector3Magnitude(aAngularVelocity) >= aEpsilon);
 }
 
+/* Size: Karma 1.2's signature. */
 void MeMatrix4TMUpdateFromVelocitiesAndAcceler(MeMatrix4 out, MeReal aEpsilon, MeReal aTimeStep,
                                                const MeVector3 aVelocity, const MeVector3 aAcceler,
                                                const MeVector3 aAngularVelocity, const MeVector3 aAngularAcceler,

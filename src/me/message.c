@@ -170,26 +170,27 @@ void MeDefaultMessageHandler(const MeMessageInfo *info, void *user)
         abort();
 }
 
-static void dispatch(MeErrorCode code, MeMessageLevel level, const char *function, const char *file, int line,
-                     const char *format, va_list args)
+/* Counts the message and hands it to the handler; `info` says all but the text, which is made here
+ * from format and args only when the message is shown. */
+static void dispatch(MeMessageInfo info, const char *format, va_list args)
 {
     char text[MeMAXMESSAGE];
-    if ((int)code >= 0 && code < ME_ERR_CODE_LIMIT_)
-        atomic_fetch_add(&counts[code], 1);
-    atomic_fetch_add(&levelCounts[level], 1);
-    if (level >= ME_LEVEL_WARNING)
-        atomic_store(&lastCode, (int)code);
-    if (level < minimumLevel && level != ME_LEVEL_FATAL)
+    if ((int)info.code >= 0 && info.code < ME_ERR_CODE_LIMIT_)
+        atomic_fetch_add(&counts[info.code], 1);
+    atomic_fetch_add(&levelCounts[info.level], 1);
+    if (info.level >= ME_LEVEL_WARNING)
+        atomic_store(&lastCode, (int)info.code);
+    if (info.level < minimumLevel && info.level != ME_LEVEL_FATAL)
         return;
     vsnprintf(text, sizeof text, format, args);
-    MeMessageInfo info = {code, level, function, file, line, text};
+    info.text = text;
     currentHandler(&info, currentUser);
 }
 
 void MeReportV(MeErrorCode code, const char *function, const char *file, int line, const char *format,
                va_list args)
 {
-    dispatch(code, MeErrorCodeLevel(code), function, file, line, format, args);
+    dispatch((MeMessageInfo){code, MeErrorCodeLevel(code), function, file, line, NULL}, format, args);
 }
 
 void MeReport(MeErrorCode code, const char *function, const char *file, int line, const char *format, ...)
@@ -213,7 +214,7 @@ int MeDebugLevel = INT_MAX;
     {                                                                                                  \
         if (level > (cutoff) && !(alwaysShown))                                                        \
             return;                                                                                    \
-        dispatch(ME_ERR_USER_MESSAGE, lvl, name, "application", 0, format, ap);                       \
+        dispatch((MeMessageInfo){ME_ERR_USER_MESSAGE, lvl, name, "application", 0, NULL}, format, ap); \
     }
 ME_KIND_HANDLER_(MeHandlerInfo, MeInfoLevel, ME_LEVEL_INFO, "MeInfo", 0)
 ME_KIND_HANDLER_(MeHandlerLog, MeLogLevel, ME_LEVEL_INFO, logFunctionName, 0)

@@ -316,7 +316,8 @@ static void random_convex_pairs(void **state)
         a.v[0] += (MeReal)ref_uniform(&rng, 1, 6); /* mostly towards b */
         const MeReal gap = iter % 3 == 0 ? ME_R(0.01) : 0;
         MeReal t;
-        McdSafeTimeOutcome out = McdSafeTimeMotions(NULL, &a, &b, 1, gap, -1, &t, NULL);
+        const McdSafeTimeLimits limits = {1, gap, -1};
+        McdSafeTimeOutcome out = McdSafeTimeMotions(NULL, &a, &b, &limits, &t, NULL);
         assert_int_not_equal(out, MCD_SAFE_NO_METHOD);
         /* before t: never closer than the gap (less the reference's accuracy) */
         for (int i = 0; i < 24; i++) {

@@ -150,19 +150,28 @@ static void runRanges(MeThreadPool *pool, int worker)
     }
 }
 
-/* Wait, spinning then parked, for a generation other than `seen` (or the stop). The publisher stores
- * the ticket then looks at `sleepers`; a helper counts itself in `sleepers` then looks at the ticket,
- * under the lock the publisher takes to wake it: one of the two sees the other's write. */
-static void waitForGeneration(MeThreadPool *pool, unsigned long long seen)
+/* Wait until `ready(pool, arg)` holds: spinning first, then parked on `cond`, counted in `parked`
+ * while parked. Whoever makes it ready stores its news and then looks at `parked`, under the lock to
+ * signal; the waiter counts itself in `parked` and then looks at `ready`, under the same lock: one of
+ * the two sees the other's write, so no wake-up is lost. */
+static void spinThenPark(MeThreadPool *pool, int (*ready)(MeThreadPool *, unsigned long long), unsigned long long arg,
+                         atomic_int *parked, pthread_cond_t *cond)
 {
-    if (spinUntil(pool, newGeneration, seen))
+    if (spinUntil(pool, ready, arg))
         return;
     pthread_mutex_lock(&pool->lock);
-    atomic_fetch_add(&pool->sleepers, 1);
-    while (!newGeneration(pool, seen))
-        pthread_cond_wait(&pool->wake, &pool->lock);
-    atomic_fetch_sub(&pool->sleepers, 1);
+    atomic_fetch_add(parked, 1);
+    while (!ready(pool, arg))
+        pthread_cond_wait(cond, &pool->lock);
+    atomic_fetch_sub(parked, 1);
     pthread_mutex_unlock(&pool->lock);
+}
+
+/* Wait for a generation other than `seen` (or the stop): the publisher stores the ticket, then looks
+ * at `sleepers` and wakes them. */
+static void waitForGeneration(MeThreadPool *pool, unsigned long long seen)
+{
+    spinThenPark(pool, newGeneration, seen, &pool->sleepers, &pool->wake);
 }
 
 static void *helperMain(void *arg)
@@ -278,18 +287,11 @@ void MeThreadPoolDestroy(MeThreadPool *pool)
 
 int MeThreadPoolGetThreadCount(const MeThreadPool *pool) { return pool ? pool->threadCount : 0; }
 
-/* Wait, spinning then parked, until the `joined` helpers have counted themselves out (the same
- * handshake as waitForGeneration's, on `callerParked` and `left`). */
+/* Wait until the `joined` helpers have counted themselves out: each adds itself to `left`, then
+ * looks at `callerParked` and signals `done`. */
 static void waitForHelpers(MeThreadPool *pool, unsigned long long joined)
 {
-    if (spinUntil(pool, helpersOut, joined))
-        return;
-    pthread_mutex_lock(&pool->lock);
-    atomic_store(&pool->callerParked, 1);
-    while (!helpersOut(pool, joined))
-        pthread_cond_wait(&pool->done, &pool->lock);
-    atomic_store(&pool->callerParked, 0);
-    pthread_mutex_unlock(&pool->lock);
+    spinThenPark(pool, helpersOut, joined, &pool->callerParked, &pool->done);
 }
 
 void *MeThreadPoolEnqueue(MdtTaskFnPtr task, int itemCount, int minRange, void *taskData, void *user)

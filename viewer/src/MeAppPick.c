@@ -164,6 +164,7 @@ void MEAPI MeAppUpdateMouseSpring(MeApp *app)
     RGraphicLineMoveEnds(m->line, grab, m->desiredPosition);
 }
 
+/* Size: Karma 1.2's signature. */
 void MEAPI MeAppMousePickCB(RRender *rc, int x, int y, int modifiers, RMouseButtonWhich which,
                             RMouseButtonEvent event, void *userdata)
 {

@@ -231,6 +231,7 @@ void MEAPI RGraphicNormalize(RGraphic *rg, int bKeepAspectRatio)
     RGraphicScale(rg, s[0], s[1], s[2]);
 }
 
+/* Size: Karma 1.2's signature. */
 RGraphic *MEAPI RGraphicCreate(RRender *rc, char *filename, AcmeReal xScale, AcmeReal yScale, AcmeReal zScale,
                                const float color[4], MeMatrix4Ptr matrix, int is2D, int bKeepAspectRatio)
 {

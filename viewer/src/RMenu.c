@@ -85,6 +85,7 @@ void MEAPI RMenuAddToggleEntry(RMenu *rm, const char *name, RMenuToggleCallback 
         e->toggle = func, e->on = defaultValue ? METRUE : MEFALSE;
 }
 
+/* Size: Karma 1.2's signature. */
 void MEAPI RMenuAddValueEntry(RMenu *rm, const char *name, RMenuValueCallback func, MeReal hi, MeReal lo,
                               MeReal increment, MeReal defaultValue)
 {

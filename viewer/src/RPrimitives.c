@@ -13,11 +13,12 @@ typedef struct Emit {
     int n;
 } Emit;
 
-static void put(Emit *e, double x, double y, double z, double nx, double ny, double nz, double u, double w)
+/* The next vertex: position p, unit normal n, texture coordinates (u, w). */
+static void put(Emit *e, const double p[3], const double n[3], double u, double w)
 {
     RObjectVertex *v = &e->v[e->n++];
-    v->m_X = (AcmeReal)x, v->m_Y = (AcmeReal)y, v->m_Z = (AcmeReal)z;
-    v->m_NX = (AcmeReal)nx, v->m_NY = (AcmeReal)ny, v->m_NZ = (AcmeReal)nz;
+    v->m_X = (AcmeReal)p[0], v->m_Y = (AcmeReal)p[1], v->m_Z = (AcmeReal)p[2];
+    v->m_NX = (AcmeReal)n[0], v->m_NY = (AcmeReal)n[1], v->m_NZ = (AcmeReal)n[2];
     v->m_U = (AcmeReal)u, v->m_V = (AcmeReal)w;
 }
 
@@ -51,7 +52,7 @@ static void quad(Emit *e, const double c[3], const double a[3], const double b[3
     static const double uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     for (int i = 0; i < 6; i++) {
         int j = idx[i];
-        put(e, p[j][0], p[j][1], p[j][2], n[0], n[1], n[2], uv[j][0], uv[j][1]);
+        put(e, p[j], n, uv[j][0], uv[j][1]);
     }
 }
 
@@ -81,6 +82,14 @@ RGraphic *MEAPI RGraphicBoxCreate(RRender *rc, AcmeReal width, AcmeReal height, 
     return rg;
 }
 
+/* The vertex of a profile point (radius, z, normal r, normal z) turned about z to the angle whose
+ * cosine and sine are c and s. */
+static void putTurned(Emit *e, const double point[4], double c, double s, double u, double w)
+{
+    const double p[3] = {point[0] * c, point[0] * s, point[1]}, n[3] = {point[2] * c, point[2] * s, point[3]};
+    put(e, p, n, u, w);
+}
+
 /* A surface of revolution about z from a profile of (radius, z, normal r, normal z) points; each
  * consecutive pair of points makes a ring of quads. Closed rings when the profile repeats a point. */
 static void revolve(Emit *e, const double (*profile)[4], int points, int n)
@@ -92,10 +101,8 @@ static void revolve(Emit *e, const double (*profile)[4], int points, int n)
             double c0 = cos(a0), s0 = sin(a0), c1 = cos(a1), s1 = sin(a1);
             double u0 = (double)k / n, u1 = (double)(k + 1) / n;
             double v0 = (double)i / (points - 1), v1 = (double)(i + 1) / (points - 1);
-#define RP(P, C, S, U, V) put(e, P[0] * C, P[0] * S, P[1], P[2] * C, P[2] * S, P[3], U, V)
-            RP(p, c0, s0, u0, v0), RP(p, c1, s1, u1, v0), RP(q, c1, s1, u1, v1);
-            RP(p, c0, s0, u0, v0), RP(q, c1, s1, u1, v1), RP(q, c0, s0, u0, v1);
-#undef RP
+            putTurned(e, p, c0, s0, u0, v0), putTurned(e, p, c1, s1, u1, v0), putTurned(e, q, c1, s1, u1, v1);
+            putTurned(e, p, c0, s0, u0, v0), putTurned(e, q, c1, s1, u1, v1), putTurned(e, q, c0, s0, u0, v1);
         }
     }
 }
@@ -161,6 +168,7 @@ RGraphic *MEAPI RGraphicSphylCreate(RRender *rc, AcmeReal radius, AcmeReal heigh
     return roundCreate(rc, "RGraphicSphylCreate", radius, height / 2, color, matrix);
 }
 
+/* Size: Karma 1.2's signature. */
 RGraphic *MEAPI RGraphicFrustumCreate(RRender *rc, AcmeReal bottomRadius, AcmeReal topRadius, AcmeReal bottom,
                                       AcmeReal top, int sideCount, const float color[4], MeMatrix4Ptr matrix)
 {

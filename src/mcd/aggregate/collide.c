@@ -146,6 +146,7 @@ static void rootNode(Node *node, const McdGeometryData *g, MeMatrix4 tm)
     node->isElement = MEFALSE;
 }
 
+/* Size: McdNearfieldFn's signature, the pair-test table's type. */
 int McdNfAggregateAny(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                       MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {

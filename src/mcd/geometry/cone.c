@@ -42,7 +42,8 @@ static void coneAABB(McdGeometryID g, void *data, MeMatrix4 tm, MeVector3 minCor
 {
     (void)g;
     const McdConeData *c = data;
-    McdAABBOfAxialShape(tm, c->zLower, c->lowerRadius, c->zUpper, c->upperRadius, 0, minCorner, maxCorner);
+    const McdAxialShape shape = {c->zLower, c->lowerRadius, c->zUpper, c->upperRadius, 0};
+    McdAABBOfAxialShape(tm, &shape, minCorner, maxCorner);
 }
 
 static void coneBSphere(McdGeometryID g, void *data, MeVector3 centre, MeReal *radius)

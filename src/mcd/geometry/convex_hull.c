@@ -236,12 +236,12 @@ static void linkFaces(Builder *b, int first, int last)
             }
 }
 
-/* Add the farthest point of face fi's conflict list. Returns 0, or -1 when memory ran out. */
-static int addPoint(Builder *b, int fi)
+/* Takes the farthest point of face fi's conflict list out of it and returns it: the eye. */
+static int takeEye(Builder *b, int fi)
 {
-    int eye = -1, i, prev = -1, eyePrev = -1, n = 0, top, k, firstNew, h, hc = 0;
+    int eye = -1, eyePrev = -1, prev = -1;
     double far = -1;
-    for (i = b->f[fi].head; i >= 0; prev = i, i = b->next[i]) {
+    for (int i = b->f[fi].head; i >= 0; prev = i, i = b->next[i]) {
         double d = dist(b, &b->f[fi], i);
         if (d > far) {
             far = d;
@@ -249,19 +249,24 @@ static int addPoint(Builder *b, int fi)
             eyePrev = prev;
         }
     }
-    /* take the eye out of the list */
     if (eyePrev < 0)
         b->f[fi].head = b->next[eye];
     else
         b->next[eyePrev] = b->next[eye];
-    /* the faces the eye sees, from fi across edges (more than the tolerance above) */
+    return eye;
+}
+
+/* Marks the faces the eye sees (more than the tolerance above), from fi across edges, and lists them
+ * in b->stack. Returns their count, or -1 when memory ran out. */
+static int markVisible(Builder *b, int fi, int eye)
+{
     b->f[fi].visible = 1;
-    n = pushStack(b, 0, fi);
+    int n = pushStack(b, 0, fi);
     if (n < 0)
         return -1;
-    for (top = 0; top < n; top++) {
+    for (int top = 0; top < n; top++) {
         Face *f = &b->f[b->stack[top]];
-        for (k = 0; k < 3; k++) {
+        for (int k = 0; k < 3; k++) {
             Face *g = &b->f[f->nb[k]];
             if (!g->visible && dist(b, g, eye) > b->tol) {
                 g->visible = 1;
@@ -271,12 +276,18 @@ static int addPoint(Builder *b, int fi)
             }
         }
     }
-    /* the horizon: edges of visible faces whose neighbour is not visible; each start vertex must be
-     * unique (the visible region is a disc) */
-    firstNew = b->nf;
-    for (top = 0; top < n; top++) {
+    return n;
+}
+
+/* The horizon: edges of the n visible faces whose neighbour is not visible. Claims each edge's start
+ * vertex in startFace and returns the count; 0 or -1 when a start vertex repeats (the visible region
+ * is not a disc). */
+static int claimHorizon(Builder *b, int n)
+{
+    int hc = 0;
+    for (int top = 0; top < n; top++) {
         const Face *f = &b->f[b->stack[top]];
-        for (k = 0; k < 3; k++)
+        for (int k = 0; k < 3; k++)
             if (!b->f[f->nb[k]].visible) {
                 if (b->startFace[f->v[k]] != -1)
                     hc = -1;
@@ -286,20 +297,17 @@ static int addPoint(Builder *b, int fi)
                 }
             }
     }
-    if (hc <= 0) {
-        /* Rounding made the visible region other than a disc: the eye lies within a rounding error
-         * of several faces. Drop it (it is within the hull's tolerance of the faces it pinches). */
-        for (top = 0; top < n; top++) {
-            const Face *f = &b->f[b->stack[top]];
-            b->f[b->stack[top]].visible = 0;
-            for (k = 0; k < 3; k++)
-                b->startFace[f->v[k]] = -1;
-        }
-        return 0;
-    }
-    for (top = 0; top < n; top++) {
+    return hc;
+}
+
+/* Joins each horizon edge of the n visible faces to the eye with a new face, and the new faces to
+ * each other. Returns 0, or -1 when memory ran out. */
+static int coneToEye(Builder *b, int n, int eye)
+{
+    const int firstNew = b->nf;
+    for (int top = 0; top < n; top++) {
         int fIdx = b->stack[top];
-        for (k = 0; k < 3; k++) {
+        for (int k = 0; k < 3; k++) {
             int a = b->f[fIdx].v[k], c = b->f[fIdx].v[(k + 1) % 3], out = b->f[fIdx].nb[k], nf;
             if (b->f[out].visible)
                 continue;
@@ -312,20 +320,44 @@ static int addPoint(Builder *b, int fi)
         }
     }
     /* join the new faces around the eye: face (a, c, eye) meets (c, x, eye) across (c, eye) */
-    for (h = firstNew; h < b->nf; h++) {
+    for (int h = firstNew; h < b->nf; h++) {
         int c = b->f[h].v[1], other = b->startFace[c];
         b->f[h].nb[1] = other;
         b->f[other].nb[2] = h;
     }
-    for (h = firstNew; h < b->nf; h++)
+    for (int h = firstNew; h < b->nf; h++)
         b->startFace[b->f[h].v[0]] = -1;
+    return 0;
+}
+
+/* Add the farthest point of face fi's conflict list. Returns 0, or -1 when memory ran out. */
+static int addPoint(Builder *b, int fi)
+{
+    const int eye = takeEye(b, fi);
+    const int n = markVisible(b, fi, eye);
+    if (n < 0)
+        return -1;
+    const int firstNew = b->nf;
+    if (claimHorizon(b, n) <= 0) {
+        /* Rounding made the visible region other than a disc: the eye lies within a rounding error
+         * of several faces. Drop it (it is within the hull's tolerance of the faces it pinches). */
+        for (int top = 0; top < n; top++) {
+            const Face *f = &b->f[b->stack[top]];
+            b->f[b->stack[top]].visible = 0;
+            for (int k = 0; k < 3; k++)
+                b->startFace[f->v[k]] = -1;
+        }
+        return 0;
+    }
+    if (coneToEye(b, n, eye) < 0)
+        return -1;
     /* the visible faces die; their points go to the new faces or are inside now */
-    for (top = 0; top < n; top++) {
+    for (int top = 0; top < n; top++) {
         Face *f = &b->f[b->stack[top]];
         int next;
         f->alive = 0;
         f->visible = 0;
-        for (i = f->head; i >= 0; i = next) {
+        for (int i = f->head; i >= 0; i = next) {
             next = b->next[i];
             assign(b, i, firstNew, b->nf);
         }
@@ -420,240 +452,294 @@ static int byPair(const void *x, const void *y)
     return a[0] != b[0] ? a[0] - b[0] : a[1] - b[1];
 }
 
-/* Merge the live triangles into polygons and fill the hull (input points as MeReal). */
-static McdHullStatus makePolygons(Builder *b, const MeVector3 *points, McdHull *hull)
+/* The merge's scratch: the coplanar groups of live triangles and, after groupPolygons, each group's
+ * polygon (gVerts from gStart[g], polyCount[g] vertices). */
+typedef struct Merge {
+    int nt, groups, polyVerts, nv, ne;
+    int *group;               /* per face: its group, -1 before it has one */
+    int *queue;               /* faces waiting to join the group being grown */
+    Order *order;             /* live faces by area, largest first */
+    int *mark;                /* per point: scratch */
+    int *remap;               /* per point: its index among the hull's vertices, -1 if none */
+    int *gStart, *gVerts;     /* each group's vertices */
+    double (*gNormal)[3];     /* each group's area-weighted normal */
+    int *polyCount;           /* vertices of each group's polygon */
+    P2 *pts, *work;           /* polygon2D's points and work space */
+    int *edgeList;            /* the polygons' edges as (lower, higher) vertex pairs */
+} Merge;
+
+static void mergeFree(Merge *m)
 {
-    int nt = 0, i, k, t, groups = 0, polyVerts = 0, nv = 0, ne = 0;
-    int *tri = NULL, *group = NULL, *queue = NULL, *mark = NULL, *remap = NULL, *gStart = NULL, *gVerts = NULL;
-    int *polyCount = NULL, *edgeList = NULL;
-    double (*gNormal)[3] = NULL;
-    Order *order = NULL;
-    P2 *pts = NULL, *work = NULL;
-    McdHullStatus status = MCD_HULL_NO_MEMORY;
-    memset(hull, 0, sizeof *hull);
-    for (i = 0; i < b->nf; i++)
-        nt += b->f[i].alive;
-    tri = MeMemoryCreate((size_t)nt * sizeof(int));
-    group = MeMemoryCreate((size_t)b->nf * sizeof(int));
-    queue = MeMemoryCreate((size_t)nt * sizeof(int));
-    order = MeMemoryCreate((size_t)nt * sizeof(Order));
-    mark = MeMemoryCreate((size_t)b->np * sizeof(int));
-    remap = MeMemoryCreate((size_t)b->np * sizeof(int));
-    gStart = MeMemoryCreate((size_t)(nt + 1) * sizeof(int));
-    gVerts = MeMemoryCreate((size_t)(3 * nt) * sizeof(int));
-    gNormal = MeMemoryCreate((size_t)nt * sizeof *gNormal);
-    polyCount = MeMemoryCreate((size_t)(nt + 1) * sizeof(int));
-    pts = MeMemoryCreate((size_t)(3 * nt) * sizeof(P2));
-    work = MeMemoryCreate((size_t)(6 * nt + 1) * sizeof(P2));
-    if (!tri || !group || !queue || !order || !mark || !remap || !gStart || !gVerts || !gNormal || !polyCount || !pts ||
-        !work)
-        goto done;
+    MeMemoryDestroy(m->group);
+    MeMemoryDestroy(m->queue);
+    MeMemoryDestroy(m->order);
+    MeMemoryDestroy(m->mark);
+    MeMemoryDestroy(m->remap);
+    MeMemoryDestroy(m->gStart);
+    MeMemoryDestroy(m->gVerts);
+    MeMemoryDestroy(m->gNormal);
+    MeMemoryDestroy(m->polyCount);
+    MeMemoryDestroy(m->pts);
+    MeMemoryDestroy(m->work);
+    MeMemoryDestroy(m->edgeList);
+}
+
+/* The scratch for the live faces of b; MEFALSE when memory ran out (mergeFree frees what was made). */
+static MeBool mergeAlloc(const Builder *b, Merge *m)
+{
+    memset(m, 0, sizeof *m);
+    for (int i = 0; i < b->nf; i++)
+        m->nt += b->f[i].alive;
+    const int nt = m->nt;
+    m->group = MeMemoryCreate((size_t)b->nf * sizeof(int));
+    m->queue = MeMemoryCreate((size_t)nt * sizeof(int));
+    m->order = MeMemoryCreate((size_t)nt * sizeof(Order));
+    m->mark = MeMemoryCreate((size_t)b->np * sizeof(int));
+    m->remap = MeMemoryCreate((size_t)b->np * sizeof(int));
+    m->gStart = MeMemoryCreate((size_t)(nt + 1) * sizeof(int));
+    m->gVerts = MeMemoryCreate((size_t)(3 * nt) * sizeof(int));
+    m->gNormal = MeMemoryCreate((size_t)nt * sizeof *m->gNormal);
+    m->polyCount = MeMemoryCreate((size_t)(nt + 1) * sizeof(int));
+    m->pts = MeMemoryCreate((size_t)(3 * nt) * sizeof(P2));
+    m->work = MeMemoryCreate((size_t)(6 * nt + 1) * sizeof(P2));
+    return m->group && m->queue && m->order && m->mark && m->remap && m->gStart && m->gVerts && m->gNormal &&
+           m->polyCount && m->pts && m->work;
+}
+
+/* Grows the group of face `seed` (number m->groups): from it to neighbours whose vertices lie on its
+ * plane; records the group's vertices and its area-weighted normal. */
+static void growGroup(const Builder *b, Merge *m, int seed)
+{
+    const int groups = m->groups;
+    int qn = 1, gv = 0, k;
+    const Face *s = &b->f[seed];
+    double acc[3] = {0, 0, 0};
+    m->group[seed] = groups;
+    m->queue[0] = seed;
+    m->gStart[groups] = m->polyVerts;
+    for (int qi = 0; qi < qn; qi++) {
+        const Face *f = &b->f[m->queue[qi]];
+        for (k = 0; k < 3; k++) {
+            acc[k] += f->area * f->n[k];
+            if (m->mark[f->v[k]] != groups) {
+                m->mark[f->v[k]] = groups;
+                m->gVerts[m->polyVerts + gv++] = f->v[k];
+            }
+        }
+        for (k = 0; k < 3; k++) {
+            int u = f->nb[k], j;
+            MeBool on = METRUE;
+            if (m->group[u] >= 0 || dot3(b->f[u].n, s->n) <= 0)
+                continue;
+            for (j = 0; j < 3 && on; j++)
+                on = fabs(dist(b, s, b->f[u].v[j])) <= b->tol;
+            if (on) {
+                m->group[u] = groups;
+                m->queue[qn++] = u;
+            }
+        }
+    }
+    double len = sqrt(dot3(acc, acc));
+    for (k = 0; k < 3; k++)
+        m->gNormal[groups][k] = len > 0 ? acc[k] / len : s->n[k];
+    m->polyVerts += gv;
+    m->groups++;
+}
+
+/* Groups: from the largest triangle, spread to neighbours whose vertices lie on its plane. */
+static void groupCoplanar(const Builder *b, Merge *m)
+{
+    int i, k;
     for (i = 0, k = 0; i < b->nf; i++) {
-        group[i] = -1;
+        m->group[i] = -1;
         if (b->f[i].alive) {
-            order[k].key = b->f[i].area;
-            order[k].index = i;
-            tri[k++] = i;
+            m->order[k].key = b->f[i].area;
+            m->order[k].index = i;
+            k++;
         }
     }
     for (i = 0; i < b->np; i++)
-        mark[i] = -1;
-    qsort(order, (size_t)nt, sizeof(Order), byAreaDesc);
-    /* groups: from the largest triangle, spread to neighbours whose vertices lie on its plane */
-    for (t = 0; t < nt; t++) {
-        int seed = order[t].index, qn = 1, qi, gv = 0;
-        const Face *s = &b->f[seed];
-        double acc[3] = {0, 0, 0};
-        if (group[seed] >= 0)
-            continue;
-        group[seed] = groups;
-        queue[0] = seed;
-        gStart[groups] = polyVerts;
-        for (qi = 0; qi < qn; qi++) {
-            const Face *f = &b->f[queue[qi]];
-            for (k = 0; k < 3; k++) {
-                acc[k] += f->area * f->n[k];
-                if (mark[f->v[k]] != groups) {
-                    mark[f->v[k]] = groups;
-                    gVerts[polyVerts + gv++] = f->v[k];
-                }
-            }
-            for (k = 0; k < 3; k++) {
-                int u = f->nb[k], j;
-                MeBool on = METRUE;
-                if (group[u] >= 0 || dot3(b->f[u].n, s->n) <= 0)
-                    continue;
-                for (j = 0; j < 3 && on; j++)
-                    on = fabs(dist(b, s, b->f[u].v[j])) <= b->tol;
-                if (on) {
-                    group[u] = groups;
-                    queue[qn++] = u;
-                }
-            }
+        m->mark[i] = -1;
+    qsort(m->order, (size_t)m->nt, sizeof(Order), byAreaDesc);
+    for (int t = 0; t < m->nt; t++)
+        if (m->group[m->order[t].index] < 0)
+            growGroup(b, m, m->order[t].index);
+    m->gStart[m->groups] = m->polyVerts;
+}
+
+/* Each group's polygon in its plane (counter-clockwise about the normal), in place in gVerts; marks
+ * the points a polygon uses. */
+static void groupPolygons(const Builder *b, Merge *m)
+{
+    int written = 0, k;
+    for (int i = 0; i < b->np; i++)
+        m->mark[i] = 0;
+    for (int t = 0; t < m->groups; t++) {
+        const double *n = m->gNormal[t];
+        double u[3], v[3], ax[3] = {0, 0, 0};
+        int count = m->gStart[t + 1] - m->gStart[t], c;
+        ax[fabs(n[0]) <= fabs(n[1]) && fabs(n[0]) <= fabs(n[2]) ? 0 : (fabs(n[1]) <= fabs(n[2]) ? 1 : 2)] = 1;
+        cross3(u, n, ax);
+        double l = sqrt(dot3(u, u));
+        u[0] /= l, u[1] /= l, u[2] /= l;
+        cross3(v, n, u); /* (u, v, n) right-handed: counter-clockwise in (u, v) is about n */
+        for (k = 0; k < count; k++) {
+            int vi = m->gVerts[m->gStart[t] + k];
+            m->pts[k].x = dot3(b->p[vi], u);
+            m->pts[k].y = dot3(b->p[vi], v);
+            m->pts[k].v = vi;
         }
-        {
-            double len = sqrt(dot3(acc, acc));
-            for (k = 0; k < 3; k++)
-                gNormal[groups][k] = len > 0 ? acc[k] / len : s->n[k];
-        }
-        polyVerts += gv;
-        groups++;
+        c = polygon2D(m->pts, count, m->work, b->tol, &m->gVerts[written]);
+        m->gStart[t] = written;
+        m->polyCount[t] = c;
+        for (k = 0; k < c; k++)
+            m->mark[m->gVerts[written + k]] = 1;
+        written += c;
     }
-    gStart[groups] = polyVerts;
-    /* each group's polygon in its plane (counter-clockwise about the normal); in place in gVerts */
+    m->polyVerts = written;
+}
+
+/* The hull's vertices (the points a polygon uses, numbered in input order), polygons, normals and
+ * offsets, and the polygons' edges in m->edgeList; MEFALSE when memory ran out. */
+static MeBool fillPolygons(const Builder *b, const MeVector3 *points, Merge *m, McdHull *hull)
+{
+    const int polyVerts = m->polyVerts;
+    int i, k;
     for (i = 0; i < b->np; i++)
-        mark[i] = 0;
-    {
-        int written = 0;
-        for (t = 0; t < groups; t++) {
-            const double *n = gNormal[t];
-            double u[3], v[3], ax[3] = {0, 0, 0};
-            int m = gStart[t + 1] - gStart[t], c;
-            ax[fabs(n[0]) <= fabs(n[1]) && fabs(n[0]) <= fabs(n[2]) ? 0 : (fabs(n[1]) <= fabs(n[2]) ? 1 : 2)] = 1;
-            cross3(u, n, ax);
-            {
-                double l = sqrt(dot3(u, u));
-                u[0] /= l, u[1] /= l, u[2] /= l;
-            }
-            cross3(v, n, u); /* (u, v, n) right-handed: counter-clockwise in (u, v) is about n */
-            for (k = 0; k < m; k++) {
-                int vi = gVerts[gStart[t] + k];
-                pts[k].x = dot3(b->p[vi], u);
-                pts[k].y = dot3(b->p[vi], v);
-                pts[k].v = vi;
-            }
-            c = polygon2D(pts, m, work, b->tol, &gVerts[written]);
-            gStart[t] = written;
-            polyCount[t] = c;
-            for (k = 0; k < c; k++)
-                mark[gVerts[written + k]] = 1;
-            written += c;
-        }
-        polyVerts = written;
-    }
-    /* vertices used by a polygon, numbered in input order */
-    for (i = 0; i < b->np; i++)
-        remap[i] = mark[i] ? nv++ : -1;
-    hull->vertices = MeMemoryCreate((size_t)nv * sizeof(MeVector3));
-    hull->polygonStart = MeMemoryCreate((size_t)(groups + 1) * sizeof(int));
+        m->remap[i] = m->mark[i] ? m->nv++ : -1;
+    hull->vertices = MeMemoryCreate((size_t)m->nv * sizeof(MeVector3));
+    hull->polygonStart = MeMemoryCreate((size_t)(m->groups + 1) * sizeof(int));
     hull->polygonVertices = MeMemoryCreate((size_t)(polyVerts > 0 ? polyVerts : 1) * sizeof(int));
-    hull->normals = MeMemoryCreate((size_t)groups * sizeof(MeVector3));
-    hull->offsets = MeMemoryCreate((size_t)groups * sizeof(MeReal));
-    edgeList = MeMemoryCreate((size_t)(2 * (polyVerts > 0 ? polyVerts : 1)) * sizeof(int));
+    hull->normals = MeMemoryCreate((size_t)m->groups * sizeof(MeVector3));
+    hull->offsets = MeMemoryCreate((size_t)m->groups * sizeof(MeReal));
+    m->edgeList = MeMemoryCreate((size_t)(2 * (polyVerts > 0 ? polyVerts : 1)) * sizeof(int));
     if (!hull->vertices || !hull->polygonStart || !hull->polygonVertices || !hull->normals || !hull->offsets ||
-        !edgeList)
-        goto done;
+        !m->edgeList)
+        return MEFALSE;
     for (i = 0; i < b->np; i++)
-        if (remap[i] >= 0)
-            MeVector3Copy(hull->vertices[remap[i]], points[i]);
-    hull->vertexCount = nv;
-    {
-        int pc = 0, w = 0;
-        for (t = 0; t < groups; t++) {
-            int c = polyCount[t];
-            double off = -DBL_MAX;
-            if (c < 3)
-                continue; /* a sliver of rounding: its neighbours cover it */
-            hull->polygonStart[pc] = w;
-            for (k = 0; k < c; k++) {
-                int vi = gVerts[gStart[t] + k], vn = gVerts[gStart[t] + (k + 1) % c];
-                double o = dot3(gNormal[t], b->p[vi]);
-                off = o > off ? o : off;
-                hull->polygonVertices[w++] = remap[vi];
-                edgeList[2 * ne] = remap[vi] < remap[vn] ? remap[vi] : remap[vn];
-                edgeList[2 * ne + 1] = remap[vi] < remap[vn] ? remap[vn] : remap[vi];
-                ne++;
-            }
-            MeVector3Set(hull->normals[pc], (MeReal)gNormal[t][0], (MeReal)gNormal[t][1], (MeReal)gNormal[t][2]);
-            hull->offsets[pc] = (MeReal)off;
-            pc++;
-        }
+        if (m->remap[i] >= 0)
+            MeVector3Copy(hull->vertices[m->remap[i]], points[i]);
+    hull->vertexCount = m->nv;
+    int pc = 0, w = 0;
+    const int *remap = m->remap;
+    for (int t = 0; t < m->groups; t++) {
+        int c = m->polyCount[t];
+        double off = -DBL_MAX;
+        if (c < 3)
+            continue; /* a sliver of rounding: its neighbours cover it */
         hull->polygonStart[pc] = w;
-        hull->polygonCount = pc;
+        for (k = 0; k < c; k++) {
+            int vi = m->gVerts[m->gStart[t] + k], vn = m->gVerts[m->gStart[t] + (k + 1) % c];
+            double o = dot3(m->gNormal[t], b->p[vi]);
+            off = o > off ? o : off;
+            hull->polygonVertices[w++] = remap[vi];
+            m->edgeList[2 * m->ne] = remap[vi] < remap[vn] ? remap[vi] : remap[vn];
+            m->edgeList[2 * m->ne + 1] = remap[vi] < remap[vn] ? remap[vn] : remap[vi];
+            m->ne++;
+        }
+        MeVector3Set(hull->normals[pc], (MeReal)m->gNormal[t][0], (MeReal)m->gNormal[t][1], (MeReal)m->gNormal[t][2]);
+        hull->offsets[pc] = (MeReal)off;
+        pc++;
     }
-    /* edges, each once, and the vertices' neighbours */
+    hull->polygonStart[pc] = w;
+    hull->polygonCount = pc;
+    return METRUE;
+}
+
+/* The edges, each once, and each vertex's neighbours; MEFALSE when memory ran out. m->remap is
+ * reused as the per-vertex write position. */
+static MeBool fillEdges(Merge *m, McdHull *hull)
+{
+    int *edgeList = m->edgeList, ne = m->ne, i;
+    const int nv = m->nv;
     qsort(edgeList, (size_t)ne, 2 * sizeof(int), byPair);
-    {
-        int u = 0;
-        for (i = 0; i < ne; i++)
-            if (i == 0 || byPair(&edgeList[2 * i], &edgeList[2 * (u - 1)]) != 0) {
-                edgeList[2 * u] = edgeList[2 * i];
-                edgeList[2 * u + 1] = edgeList[2 * i + 1];
-                u++;
-            }
-        ne = u;
-    }
+    int unique = 0;
+    for (i = 0; i < ne; i++)
+        if (i == 0 || byPair(&edgeList[2 * i], &edgeList[2 * (unique - 1)]) != 0) {
+            edgeList[2 * unique] = edgeList[2 * i];
+            edgeList[2 * unique + 1] = edgeList[2 * i + 1];
+            unique++;
+        }
+    ne = m->ne = unique;
     hull->edgeCount = ne;
     hull->edges = MeMemoryCreate((size_t)(2 * (ne > 0 ? ne : 1)) * sizeof(int));
     hull->neighbourStart = MeMemoryCreateZeroed((size_t)(nv + 1) * sizeof(int));
     hull->neighbours = MeMemoryCreate((size_t)(2 * (ne > 0 ? ne : 1)) * sizeof(int));
     if (!hull->edges || !hull->neighbourStart || !hull->neighbours)
-        goto done;
+        return MEFALSE;
     memcpy(hull->edges, edgeList, (size_t)(2 * ne) * sizeof(int));
     for (i = 0; i < 2 * ne; i++)
         hull->neighbourStart[edgeList[i] + 1]++;
     for (i = 0; i < nv; i++)
         hull->neighbourStart[i + 1] += hull->neighbourStart[i];
-    {
-        int *fill = remap; /* reuse: per-vertex write position */
-        for (i = 0; i < nv; i++)
-            fill[i] = hull->neighbourStart[i];
-        for (i = 0; i < ne; i++) {
-            int a = edgeList[2 * i], c = edgeList[2 * i + 1];
-            hull->neighbours[fill[a]++] = c;
-            hull->neighbours[fill[c]++] = a;
+    int *fill = m->remap;
+    for (i = 0; i < nv; i++)
+        fill[i] = hull->neighbourStart[i];
+    for (i = 0; i < ne; i++) {
+        int a = edgeList[2 * i], c = edgeList[2 * i + 1];
+        hull->neighbours[fill[a]++] = c;
+        hull->neighbours[fill[c]++] = a;
+    }
+    return METRUE;
+}
+
+/* The polygons around each vertex; MEFALSE when memory ran out. `fill` holds a value per vertex. */
+static MeBool fillVertexPolygons(McdHull *hull, int *fill)
+{
+    const int nv = hull->vertexCount, uses = hull->polygonStart[hull->polygonCount];
+    int i;
+    hull->vertexPolygonStart = MeMemoryCreateZeroed((size_t)(nv + 1) * sizeof(int));
+    hull->vertexPolygons = MeMemoryCreate((size_t)(uses > 0 ? uses : 1) * sizeof(int));
+    if (!hull->vertexPolygonStart || !hull->vertexPolygons)
+        return MEFALSE;
+    for (i = 0; i < uses; i++)
+        hull->vertexPolygonStart[hull->polygonVertices[i] + 1]++;
+    for (i = 0; i < nv; i++)
+        hull->vertexPolygonStart[i + 1] += hull->vertexPolygonStart[i];
+    for (i = 0; i < nv; i++)
+        fill[i] = hull->vertexPolygonStart[i];
+    for (int p = 0; p < hull->polygonCount; p++)
+        for (i = hull->polygonStart[p]; i < hull->polygonStart[p + 1]; i++)
+            hull->vertexPolygons[fill[hull->polygonVertices[i]]++] = p;
+    return METRUE;
+}
+
+/* Bounding sphere: centre of the vertices' box, radius to the farthest vertex. */
+static void fillBoundingSphere(McdHull *hull)
+{
+    MeVector3 lo, hi;
+    MeReal r2 = 0;
+    int i, k;
+    MeVector3Copy(lo, hull->vertices[0]);
+    MeVector3Copy(hi, hull->vertices[0]);
+    for (i = 1; i < hull->vertexCount; i++)
+        for (k = 0; k < 3; k++) {
+            lo[k] = MeMIN(lo[k], hull->vertices[i][k]);
+            hi[k] = MeMAX(hi[k], hull->vertices[i][k]);
+        }
+    for (k = 0; k < 3; k++)
+        hull->centre[k] = ME_R(0.5) * (lo[k] + hi[k]);
+    for (i = 0; i < hull->vertexCount; i++)
+        r2 = MeMAX(r2, MeVector3DistanceSqr(hull->vertices[i], hull->centre));
+    hull->radius = MeSqrt(r2);
+}
+
+/* Merge the live triangles into polygons and fill the hull (input points as MeReal). */
+static McdHullStatus makePolygons(Builder *b, const MeVector3 *points, McdHull *hull)
+{
+    Merge m;
+    McdHullStatus status = MCD_HULL_NO_MEMORY;
+    memset(hull, 0, sizeof *hull);
+    if (mergeAlloc(b, &m)) {
+        groupCoplanar(b, &m);
+        groupPolygons(b, &m);
+        if (fillPolygons(b, points, &m, hull) && fillEdges(&m, hull) && fillVertexPolygons(hull, m.remap)) {
+            fillBoundingSphere(hull);
+            hull->tolerance = (MeReal)b->tol;
+            status = hull->polygonCount >= 4 ? MCD_HULL_OK : MCD_HULL_FLAT;
         }
     }
-    /* the polygons around each vertex */
-    {
-        int uses = hull->polygonStart[hull->polygonCount], *fill = remap, p;
-        hull->vertexPolygonStart = MeMemoryCreateZeroed((size_t)(nv + 1) * sizeof(int));
-        hull->vertexPolygons = MeMemoryCreate((size_t)(uses > 0 ? uses : 1) * sizeof(int));
-        if (!hull->vertexPolygonStart || !hull->vertexPolygons)
-            goto done;
-        for (i = 0; i < uses; i++)
-            hull->vertexPolygonStart[hull->polygonVertices[i] + 1]++;
-        for (i = 0; i < nv; i++)
-            hull->vertexPolygonStart[i + 1] += hull->vertexPolygonStart[i];
-        for (i = 0; i < nv; i++)
-            fill[i] = hull->vertexPolygonStart[i];
-        for (p = 0; p < hull->polygonCount; p++)
-            for (i = hull->polygonStart[p]; i < hull->polygonStart[p + 1]; i++)
-                hull->vertexPolygons[fill[hull->polygonVertices[i]]++] = p;
-    }
-    /* bounding sphere: centre of the vertices' box, radius to the farthest vertex */
-    {
-        MeVector3 lo, hi;
-        MeReal r2 = 0;
-        MeVector3Copy(lo, hull->vertices[0]);
-        MeVector3Copy(hi, hull->vertices[0]);
-        for (i = 1; i < nv; i++)
-            for (k = 0; k < 3; k++) {
-                lo[k] = MeMIN(lo[k], hull->vertices[i][k]);
-                hi[k] = MeMAX(hi[k], hull->vertices[i][k]);
-            }
-        for (k = 0; k < 3; k++)
-            hull->centre[k] = ME_R(0.5) * (lo[k] + hi[k]);
-        for (i = 0; i < nv; i++)
-            r2 = MeMAX(r2, MeVector3DistanceSqr(hull->vertices[i], hull->centre));
-        hull->radius = MeSqrt(r2);
-    }
-    hull->tolerance = (MeReal)b->tol;
-    status = hull->polygonCount >= 4 ? MCD_HULL_OK : MCD_HULL_FLAT;
-done:
-    MeMemoryDestroy(tri);
-    MeMemoryDestroy(group);
-    MeMemoryDestroy(queue);
-    MeMemoryDestroy(order);
-    MeMemoryDestroy(mark);
-    MeMemoryDestroy(remap);
-    MeMemoryDestroy(gStart);
-    MeMemoryDestroy(gVerts);
-    MeMemoryDestroy(gNormal);
-    MeMemoryDestroy(polyCount);
-    MeMemoryDestroy(pts);
-    MeMemoryDestroy(work);
-    MeMemoryDestroy(edgeList);
+    mergeFree(&m);
     if (status != MCD_HULL_OK)
         McdHullFree(hull);
     return status;

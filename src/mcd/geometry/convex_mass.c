@@ -156,7 +156,8 @@ static void slabMoments(const McdHull *h, int p, const double n[3], double r, co
 
 /* The wedge along the edge a -> b between the faces of normals n1 and n2 (angle phi apart):
  * x = a + s e + rho w(alpha), w = n1 cos alpha + t sin alpha, 0 <= s <= L, 0 <= rho <= r,
- * 0 <= alpha <= phi, dV = rho. W1 = int w = (n1 + n2) tan(phi/2), W2 = int w w'. */
+ * 0 <= alpha <= phi, dV = rho. W1 = int w = (n1 + n2) tan(phi/2), W2 = int w w'.
+ * Size: the edge, its faces' normals, their angle and the radius are the formula's own terms. */
 static void wedgeMoments(const double a[3], const double b[3], const double n1[3], const double n2[3], double phi,
                          double r, Moments *m)
 {

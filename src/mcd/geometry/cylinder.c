@@ -8,7 +8,8 @@ static void cylinderAABB(McdGeometryID g, void *data, MeMatrix4 tm, MeVector3 mi
 {
     (void)g;
     const McdCylinderData *c = data;
-    McdAABBOfAxialShape(tm, -c->halfHeight, c->radius, c->halfHeight, c->radius, 0, minCorner, maxCorner);
+    const McdAxialShape shape = {-c->halfHeight, c->radius, c->halfHeight, c->radius, 0};
+    McdAABBOfAxialShape(tm, &shape, minCorner, maxCorner);
 }
 
 static void cylinderBSphere(McdGeometryID g, void *data, MeVector3 centre, MeReal *radius)

@@ -303,9 +303,10 @@ void McdAABBOfLocalBox(MeMatrix4 tm, const MeVector3 lo, const MeVector3 hi, MeV
     }
 }
 
-void McdAABBOfAxialShape(MeMatrix4 tm, MeReal zLo, MeReal rLo, MeReal zHi, MeReal rHi, MeReal sphereRadius,
-                         MeVector3 minCorner, MeVector3 maxCorner)
+void McdAABBOfAxialShape(MeMatrix4 tm, const McdAxialShape *shape, MeVector3 minCorner, MeVector3 maxCorner)
 {
+    const MeReal zLo = shape->zLo, rLo = shape->rLo, zHi = shape->zHi, rHi = shape->rHi;
+    const MeReal sphereRadius = shape->sphereRadius;
     /* The convex hull of two discs (normal = local z, row 2 of tm) swept by a sphere: along world
      * axis j a disc of radius r extends r * sqrt(1 - a_j^2), a_j the axis' j component. */
     for (int j = 0; j < 3; j++) {

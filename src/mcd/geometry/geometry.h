@@ -37,10 +37,15 @@ MeBool McdCheckDimension(const McdFrameworkData *fw, MeReal value, const char *n
 /** AABB of a local box [lo, hi] placed at tm (exact for boxes). */
 void McdAABBOfLocalBox(MeMatrix4 tm, const MeVector3 lo, const MeVector3 hi, MeVector3 minCorner,
                        MeVector3 maxCorner);
-/** AABB of a shape that is the set {segment from z=-h to z=+h along local z} swept by a disc
- *  (radius r, in the local xy plane) -- a cylinder; `sphereRadius` adds a sphere (a sphyl). */
-void McdAABBOfAxialShape(MeMatrix4 tm, MeReal zLo, MeReal rLo, MeReal zHi, MeReal rHi, MeReal sphereRadius,
-                         MeVector3 minCorner, MeVector3 maxCorner);
+/** A shape about local z: the convex hull of the discs of radius rLo at z = zLo and rHi at z = zHi
+ *  (in planes normal to z), swept by a sphere of sphereRadius: a cylinder, a cone, or (discs of
+ *  radius 0 and a sphere) a sphyl. */
+typedef struct McdAxialShape {
+    MeReal zLo, rLo, zHi, rHi, sphereRadius;
+} McdAxialShape;
+
+/** AABB of an axial shape placed at tm. */
+void McdAABBOfAxialShape(MeMatrix4 tm, const McdAxialShape *shape, MeVector3 minCorner, MeVector3 maxCorner);
 
 /* ---- segment tests: the set of t (over the whole line p0 + t d) inside a shape is an interval,
  *      with the outward normal at its start; a convex shape is the intersection of simple parts. */

@@ -11,7 +11,8 @@ static void sphylAABB(McdGeometryID g, void *data, MeMatrix4 tm, MeVector3 minCo
 {
     (void)g;
     const McdSphylData *s = data;
-    McdAABBOfAxialShape(tm, -s->halfHeight, 0, s->halfHeight, 0, s->radius, minCorner, maxCorner);
+    const McdAxialShape shape = {-s->halfHeight, 0, s->halfHeight, 0, s->radius};
+    McdAABBOfAxialShape(tm, &shape, minCorner, maxCorner);
 }
 
 static void sphylBSphere(McdGeometryID g, void *data, MeVector3 centre, MeReal *radius)

@@ -302,18 +302,21 @@ static MeBool visitTriangle(void *ctx, const McdTerrainTriangle *t)
     return METRUE;
 }
 
-void McdTerrainForEach(const McdGeometryData *g, const MeVector3 lo, const MeVector3 hi, const MeVector3 centre,
-                       MeReal radius, McdModelPair *pair, McdTerrainVisitFn visit, void *ctx)
+void McdTerrainForEach(const McdGeometryData *g, const McdTerrainRegion *region, McdModelPair *pair,
+                       McdTerrainVisitFn visit, void *ctx)
 {
     const McdTerrainData *t = g->u.terrain;
     switch (g->type) {
-    case kMcdGeometryTypeTriangleList: McdTriangleListForEach(&t->s.list, centre, radius, pair, visit, ctx); break;
-    case kMcdGeometryTypeTriangleMesh: McdTriangleMeshForEach(&t->s.mesh, lo, hi, visit, ctx); break;
-    case kMcdGeometryTypeRGHeightField: McdHeightFieldForEach(&t->s.field, lo, hi, visit, ctx); break;
+    case kMcdGeometryTypeTriangleList:
+        McdTriangleListForEach(&t->s.list, region->centre, region->radius, pair, visit, ctx);
+        break;
+    case kMcdGeometryTypeTriangleMesh: McdTriangleMeshForEach(&t->s.mesh, region->lo, region->hi, visit, ctx); break;
+    case kMcdGeometryTypeRGHeightField: McdHeightFieldForEach(&t->s.field, region->lo, region->hi, visit, ctx); break;
     default: break;
     }
 }
 
+/* Size: McdNearfieldFn's signature, the pair-test table's type. */
 int McdNfConvexTerrain(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                        MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
@@ -322,7 +325,8 @@ int McdNfConvexTerrain(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeomet
     McdModelPair *pair = cache ? (McdModelPair *)(void *)((char *)cache - offsetof(McdModelPair, cache)) : NULL;
     Gather g;
     MeMatrix4 rel;
-    MeVector3 lo, hi, bsCentre;
+    McdTerrainRegion region;
+    MeVector3 bsCentre;
     MeReal bsRadius;
     int k, n;
     if (maxContacts <= 0)
@@ -334,17 +338,19 @@ int McdNfConvexTerrain(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeomet
     }
     MeMatrix4TMInverseTransform(rel[3], tm2, tm1[3]);
     rel[3][3] = ME_R(1.0);
-    McdGeometryAABBInternal(g1, rel, lo, hi);
+    McdGeometryAABBInternal(g1, rel, region.lo, region.hi);
     for (k = 0; k < 3; k++) {
-        lo[k] -= tolerance;
-        hi[k] += tolerance;
+        region.lo[k] -= tolerance;
+        region.hi[k] += tolerance;
     }
     McdGeometryTypeOf(g1)->getBSphere(McdGeometryToID(g1), McdGeometryShapeData(g1), bsCentre, &bsRadius);
     McdNfShapeInit(&g.convex, g1, rel);
     MeMatrix4TMTransform(g.centre, rel, bsCentre);
     g.tolerance = tolerance;
     g.count = 0;
-    McdTerrainForEach(g2, lo, hi, g.centre, bsRadius + tolerance, pair, visitTriangle, &g);
+    MeVector3Copy(region.centre, g.centre);
+    region.radius = bsRadius + tolerance;
+    McdTerrainForEach(g2, &region, pair, visitTriangle, &g);
     if (g.count == 0)
         return 0;
     if (maxContacts > MCD_NF_MAX_CONTACTS)
@@ -416,18 +422,19 @@ MeBool McdTerrainSegment(const McdGeometryData *g, const MeVector3 p0, const MeV
                          MeReal *t, MeVector3 normal)
 {
     SegmentSearch s;
-    MeVector3 lo, hi, centre;
+    McdTerrainRegion region;
     int k;
     MeVector3Copy(s.p0, p0);
     MeVector3Subtract(s.d, p1, p0);
     s.hit = MEFALSE;
     s.t = ME_R(1.0);
     for (k = 0; k < 3; k++) {
-        lo[k] = MeMIN(p0[k], p1[k]);
-        hi[k] = MeMAX(p0[k], p1[k]);
+        region.lo[k] = MeMIN(p0[k], p1[k]);
+        region.hi[k] = MeMAX(p0[k], p1[k]);
     }
-    MeVector3Lerp(centre, p0, p1, ME_R(0.5));
-    McdTerrainForEach(g, lo, hi, centre, ME_R(0.5) * MeVector3Magnitude(s.d), pair, visitSegment, &s);
+    MeVector3Lerp(region.centre, p0, p1, ME_R(0.5));
+    region.radius = ME_R(0.5) * MeVector3Magnitude(s.d);
+    McdTerrainForEach(g, &region, pair, visitSegment, &s);
     if (!s.hit)
         return MEFALSE;
     *t = s.t;

@@ -177,6 +177,7 @@ static int fieldSegment(McdGeometryID g, void *data, const MeVector3 p0, const M
 const McdGeometryTypeDesc McdRGHeightFieldTypeDesc = {"RGHeightField", fieldDestroy, fieldAABB, fieldBSphere,
                                                       fieldSupport, McdTerrainMass, fieldSegment, NULL};
 
+/* Size: Karma 1.2's signature. */
 McdRGHeightFieldID McdRGHeightFieldCreate(McdFrameworkID fwId, MeReal *heightArray, int xVertexCount, int yVertexCount,
                                           MeReal xIncrement, MeReal yIncrement, MeReal x0, MeReal y0)
 {
@@ -236,6 +237,7 @@ McdRGHeightFieldID McdRGHeightFieldCreate(McdFrameworkID fwId, MeReal *heightArr
     return McdGeometryToID(g);
 }
 
+/* Size: Karma 1.2's signature. */
 void McdRGHeightFieldGetParameters(McdRGHeightFieldID g, MeReal **heightArray, int *xVertexCount, int *yVertexCount,
                                    MeReal *xIncrement, MeReal *yIncrement, MeReal *x0, MeReal *y0)
 {

@@ -18,9 +18,13 @@ static uint32_t le32(const unsigned char *p)
 
 static unsigned le16(const unsigned char *p) { return (unsigned)p[0] | (unsigned)p[1] << 8; }
 
+/* A pixel's height: r, g and b times its red, green and blue (each 0 to 1), plus z0 (m). */
+typedef struct ColourWeights {
+    MeReal r, g, b, z0;
+} ColourWeights;
+
 /* Read the file's pixels into heights; returns 0 with a reason on failure. */
-static int readBmp(FILE *f, MeReal rMult, MeReal gMult, MeReal bMult, MeReal z0, MeReal **out, int *nx, int *ny,
-                   const char **why)
+static int readBmp(FILE *f, const ColourWeights *weights, MeReal **out, int *nx, int *ny, const char **why)
 {
     unsigned char h[54];
     if (fread(h, 1, sizeof h, f) != sizeof h || h[0] != 'B' || h[1] != 'M') {
@@ -60,8 +64,8 @@ static int readBmp(FILE *f, MeReal rMult, MeReal gMult, MeReal bMult, MeReal z0,
         for (int32_t ix = 0; ix < width; ix++) {
             const unsigned char *px = row + 3 * (size_t)ix; /* blue, green, red */
             heights[(size_t)iy * (size_t)width + (size_t)ix] =
-                rMult * (MeReal)px[2] / ME_R(255.0) + gMult * (MeReal)px[1] / ME_R(255.0) +
-                bMult * (MeReal)px[0] / ME_R(255.0) + z0;
+                weights->r * (MeReal)px[2] / ME_R(255.0) + weights->g * (MeReal)px[1] / ME_R(255.0) +
+                weights->b * (MeReal)px[0] / ME_R(255.0) + weights->z0;
         }
     }
     MeMemoryDestroy(row);
@@ -71,6 +75,7 @@ static int readBmp(FILE *f, MeReal rMult, MeReal gMult, MeReal bMult, MeReal z0,
     return 1;
 }
 
+/* Size: Karma 1.2's signature. */
 int McduRGHeighFieldCreateHeightMatrixFromBmp(char *filename, MeReal rMult, MeReal gMult, MeReal bMult, MeReal z0,
                                               MeReal **outHeightMatrix, int *outXsize, int *outYsize)
 {
@@ -84,7 +89,8 @@ int McduRGHeighFieldCreateHeightMatrixFromBmp(char *filename, MeReal rMult, MeRe
     ME_CHECK_FINITE(z0, 0);
     FILE *f = fopen(filename, "rb");
     const char *why = "it cannot be opened";
-    int ok = f && readBmp(f, rMult, gMult, bMult, z0, outHeightMatrix, outXsize, outYsize, &why);
+    const ColourWeights weights = {rMult, gMult, bMult, z0};
+    int ok = f && readBmp(f, &weights, outHeightMatrix, outXsize, outYsize, &why);
     if (f)
         fclose(f);
     if (!ok)
@@ -92,6 +98,7 @@ int McduRGHeighFieldCreateHeightMatrixFromBmp(char *filename, MeReal rMult, MeRe
     return ok;
 }
 
+/* Size: Karma 1.2's signature. */
 McdRGHeightFieldID McduRGHeighFieldCreateFromBmp(McdFrameworkID fw, char *bmpFileName, MeReal x0, MeReal y0,
                                                  MeReal xSize, MeReal ySize, MeReal rMult, MeReal gMult, MeReal bMult,
                                                  MeReal z0)

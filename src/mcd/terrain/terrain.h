@@ -89,11 +89,17 @@ typedef MeBool (*McdTerrainVisitFn)(void *ctx, const McdTerrainTriangle *t);
 /** Mass properties of a static terrain: none (volume 0, identity frame, zero inertia). */
 void McdTerrainMass(McdGeometryID g, void *data, MeMatrix4 relTM, MeMatrix3 inertia, MeReal *volume);
 
-/** Hand the triangles of g (a terrain type) that may touch the local box [lo, hi] (and the sphere
- *  (centre, radius) that holds it, for a triangle list's generator) to visit. `pair` goes to the
+/** The part of a terrain asked for, in its frame: the box [lo, hi], and the sphere (centre, radius)
+ *  that holds it, for a triangle list's generator. */
+typedef struct McdTerrainRegion {
+    MeVector3 lo, hi, centre;
+    MeReal radius;
+} McdTerrainRegion;
+
+/** Hand the triangles of g (a terrain type) that may touch the region to visit. `pair` goes to the
  *  triangle list's generator. */
-void McdTerrainForEach(const McdGeometryData *g, const MeVector3 lo, const MeVector3 hi, const MeVector3 centre,
-                       MeReal radius, McdModelPair *pair, McdTerrainVisitFn visit, void *ctx);
+void McdTerrainForEach(const McdGeometryData *g, const McdTerrainRegion *region, McdModelPair *pair,
+                       McdTerrainVisitFn visit, void *ctx);
 /** Each terrain type's own enumeration (as McdTerrainForEach). */
 void McdTriangleListForEach(const McdTriangleListShape *s, const MeVector3 centre, MeReal radius, McdModelPair *pair,
                             McdTerrainVisitFn visit, void *ctx);

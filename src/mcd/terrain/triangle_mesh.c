@@ -182,12 +182,11 @@ typedef struct Builder {
     MeVector3 *centroids;
 } Builder;
 
-static void boundsOf(const Builder *b, int first, int count, MeVector3 lo, MeVector3 hi, MeVector3 clo, MeVector3 chi)
+/* The box [lo, hi] of the triangles order[first .. first + count - 1]. */
+static void boundsOf(const Builder *b, int first, int count, MeVector3 lo, MeVector3 hi)
 {
     MeVector3Set(lo, MEINFINITY, MEINFINITY, MEINFINITY);
     MeVector3Set(hi, -MEINFINITY, -MEINFINITY, -MEINFINITY);
-    MeVector3Copy(clo, lo);
-    MeVector3Copy(chi, hi);
     for (int i = first; i < first + count; i++) {
         int tri = b->s->order[i];
         for (int k = 0; k < 3; k++) {
@@ -197,6 +196,16 @@ static void boundsOf(const Builder *b, int first, int count, MeVector3 lo, MeVec
                 hi[j] = MeMAX(hi[j], v[j]);
             }
         }
+    }
+}
+
+/* The box [clo, chi] of those triangles' centroids (where the split is chosen). */
+static void centroidBoundsOf(const Builder *b, int first, int count, MeVector3 clo, MeVector3 chi)
+{
+    MeVector3Set(clo, MEINFINITY, MEINFINITY, MEINFINITY);
+    MeVector3Set(chi, -MEINFINITY, -MEINFINITY, -MEINFINITY);
+    for (int i = first; i < first + count; i++) {
+        int tri = b->s->order[i];
         for (int j = 0; j < 3; j++) {
             clo[j] = MeMIN(clo[j], b->centroids[tri][j]);
             chi[j] = MeMAX(chi[j], b->centroids[tri][j]);
@@ -237,7 +246,8 @@ static void buildNode(Builder *b, int nodeIndex, int first, int count)
 {
     McdBvhNode *node = &b->s->nodes[nodeIndex];
     MeVector3 clo, chi;
-    boundsOf(b, first, count, node->lo, node->hi, clo, chi);
+    boundsOf(b, first, count, node->lo, node->hi);
+    centroidBoundsOf(b, first, count, clo, chi);
     if (count <= MCD_TERRAIN_LEAF_SIZE) {
         node->first = first;
         node->count = count;

@@ -264,6 +264,7 @@ void MdtCarWheelSetHingeLimitedForceMotor(MdtCarWheelID j, MeReal desiredVelocit
     d->hingeForce = forceLimit;
 }
 
+/* Size: Karma 1.2's signature. */
 void MdtCarWheelSetSuspension(MdtCarWheelID j, MeReal Kp, MeReal Kd, MeReal limit_softness, MeReal lolimit,
                               MeReal hilimit, MeReal reference)
 {

@@ -105,38 +105,23 @@ static MeReal pointVelocityAlong(const MdtBodyData *b, const MeVector3 r, const 
     return MeVector3Dot(dir, b->vel) + MeVector3Dot(dir, wxr);
 }
 
-void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contact, MdtRowWriter *w)
-{
-    ContactData *d = MDT_CONSTRAINT_DATA(contact, ContactData);
-    const MdtContactParams *p = &d->params;
-    const MdtBodyData *b0 = owner->body[0], *b1 = owner->body[1];
-    const MeReal h = w->h;
-    MeVector3 r0, r1 = {0, 0, 0};
-    MeVector3Set(r0, d->position[0] - b0->comTM[3][0], d->position[1] - b0->comTM[3][1],
-                 d->position[2] - b0->comTM[3][2]);
-    if (b1)
-        MeVector3Set(r1, d->position[0] - b1->comTM[3][0], d->position[1] - b1->comTM[3][1],
-                     d->position[2] - b1->comTM[3][2]);
-    const MeBool movingWorld = !b1 && (p->options & MdtBclContactOptionUseWorldVelocity);
-    const int stepRows = MdtContactStepRows(contact); /* matrix capping may drop friction or all */
-    if (stepRows == 0)
-        return;
+/* Where a contact sits on its bodies: the bodies, the lever arms from their centres of mass, and
+ * whether body 1 is the world moving at the contact's world velocity. */
+typedef struct ContactArms {
+    const MdtBodyData *b0, *b1;
+    MeVector3 r0, r1;
+    MeBool movingWorld;
+} ContactArms;
 
-    /* normal */
-    MdtRow row;
-    MdtRowInit(&row);
-    directionRow(&row, d->normal, r0, r1);
-    row.lo = (p->options & MdtBclContactOptionAdhesive) ? -p->max_adhesive_force : 0;
-    row.hi = MEINFINITY;
-    row.epsilon = (p->options & MdtBclContactOptionSoft) ? p->softness : 0;
-    /* Separating speed of body 0 from body 1 (negative when approaching). */
-    MeReal vn = pointVelocityAlong(b0, r0, d->normal) - pointVelocityAlong(b1, r1, d->normal);
-    if (movingWorld)
-        vn -= MeVector3Dot(d->normal, d->worldVelocity);
-    /* Restitution. A contact reported with a gap g that the bodies close within this step (at speed
-     * v = −vn) bounces now if g is small (the bounce comes at most g early), or else lands exactly
-     * this step and bounces at the start of the next with the remembered approach speed (at most
-     * one step late); the choice g < e v h / (1 + 2e) balances the two position errors. */
+/* Restitution. A contact reported with a gap g that the bodies close within this step (at speed
+ * v = −vn) bounces now if g is small (the bounce comes at most g early), or else lands exactly
+ * this step and bounces at the start of the next with the remembered approach speed (at most
+ * one step late); the choice g < e v h / (1 + 2e) balances the two position errors. Returns
+ * whether it bounces now, with the approach speed to bounce from in *approachOut. */
+static MeBool bouncesNow(ContactData *d, MeReal vn, const MdtRowWriter *w, MeReal *approachOut)
+{
+    const MdtContactParams *p = &d->params;
+    const MeReal h = w->h;
     const MeBool bounces = (p->options & MdtBclContactOptionBounce) != 0;
     const MeReal gap = -d->penetration;
     MeReal approach = -vn;
@@ -151,7 +136,27 @@ void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contac
         else if (!w->captured)
             d->pendingBounce = approach; /* land first */
     }
-    if (bounceNow) {
+    *approachOut = approach;
+    return bounceNow;
+}
+
+/* The normal row; returns its index among the constraint's rows (negative when not written). */
+static int addNormalRow(ContactData *d, const ContactArms *a, MdtRowWriter *w)
+{
+    const MdtContactParams *p = &d->params;
+    const MeReal h = w->h;
+    MdtRow row;
+    MdtRowInit(&row);
+    directionRow(&row, d->normal, a->r0, a->r1);
+    row.lo = (p->options & MdtBclContactOptionAdhesive) ? -p->max_adhesive_force : 0;
+    row.hi = MEINFINITY;
+    row.epsilon = (p->options & MdtBclContactOptionSoft) ? p->softness : 0;
+    /* Separating speed of body 0 from body 1 (negative when approaching). */
+    MeReal vn = pointVelocityAlong(a->b0, a->r0, d->normal) - pointVelocityAlong(a->b1, a->r1, d->normal);
+    if (a->movingWorld)
+        vn -= MeVector3Dot(d->normal, d->worldVelocity);
+    MeReal approach;
+    if (bouncesNow(d, vn, w, &approach)) {
         /* Separate at e·|vn|; a deeper penetration's correction wins if it asks for more. */
         MeReal correction = w->gamma * d->penetration / h;
         if (correction > w->maxCorrection)
@@ -174,19 +179,20 @@ void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contac
         if (d->penetration < 0)
             row.gamma = 1;
     }
-    if (movingWorld)
+    if (a->movingWorld)
         row.velocity += MeVector3Dot(d->normal, d->worldVelocity);
     int normalRow = MdtRowWriterAdd(w, &row);
     if (!w->captured && normalRow >= 0)
         w->x0[w->first + normalRow] = d->impulse[0];
+    return normalRow;
+}
 
-    if (p->type == MdtContactTypeFrictionZero || stepRows < 2)
-        return;
-
-    /* friction directions */
-    MeVector3 t[2];
+/* The friction directions: t[0] the given direction made normal to n (or one chosen normal to n),
+ * t[1] = t[0] × n. */
+static void frictionDirections(const ContactData *d, MeVector3 t[2])
+{
     MeBool haveDirection = MEFALSE;
-    if (p->options & MdtBclContactOptionUseDirection) {
+    if (d->params.options & MdtBclContactOptionUseDirection) {
         MeReal dn = MeVector3Dot(d->direction, d->normal);
         MeVector3Set(t[0], d->direction[0] - dn * d->normal[0], d->direction[1] - dn * d->normal[1],
                      d->direction[2] - dn * d->normal[2]);
@@ -197,7 +203,15 @@ void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contac
         MeVector3PlaneSpace(d->normal, t[0], other);
     }
     MeVector3Cross(t[1], t[0], d->normal);
+}
 
+/* The friction rows; returns how many were written linked to the normal row (NormalForce model). */
+static int addFrictionRows(ContactData *d, const ContactArms *a, MdtRowWriter *w, int normalRow)
+{
+    const MdtContactParams *p = &d->params;
+    const MeReal h = w->h;
+    MeVector3 t[2];
+    frictionDirections(d, t);
     const MdtFrictionModel model[2] = {p->model1, p->model2};
     const MeReal bound[2] = {p->friction1, p->friction2};
     const MeReal coefficient[2] = {p->frictioncoeff1, p->frictioncoeff2};
@@ -211,10 +225,11 @@ void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contac
                              (p->options & MdtBclContactOptionSlide2) ? p->slide2 : 0};
     int directions = p->type == MdtContactTypeFriction2D ? 2 : 1, linked = 0;
     for (int k = 0; k < directions; k++) {
+        MdtRow row;
         MdtRowInit(&row);
-        directionRow(&row, t[k], r0, r1);
+        directionRow(&row, t[k], a->r0, a->r1);
         row.velocity = slide[k];
-        if (movingWorld)
+        if (a->movingWorld)
             row.velocity += MeVector3Dot(t[k], d->worldVelocity);
         if (slip[k] > 0) {
             row.epsilon = slip[k] + ME_R(1e-3) * w->epsilon0;
@@ -232,9 +247,30 @@ void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contac
             w->x0[w->first + local] = d->impulse[1 + k];
         linked += local >= 0 && row.link >= 0;
     }
+    return linked;
+}
+
+void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contact, MdtRowWriter *w)
+{
+    ContactData *d = MDT_CONSTRAINT_DATA(contact, ContactData);
+    const MdtContactParams *p = &d->params;
+    ContactArms a = {owner->body[0], owner->body[1], {0, 0, 0}, {0, 0, 0}, MEFALSE};
+    MeVector3Set(a.r0, d->position[0] - a.b0->comTM[3][0], d->position[1] - a.b0->comTM[3][1],
+                 d->position[2] - a.b0->comTM[3][2]);
+    if (a.b1)
+        MeVector3Set(a.r1, d->position[0] - a.b1->comTM[3][0], d->position[1] - a.b1->comTM[3][1],
+                     d->position[2] - a.b1->comTM[3][2]);
+    a.movingWorld = !a.b1 && (p->options & MdtBclContactOptionUseWorldVelocity);
+    const int stepRows = MdtContactStepRows(contact); /* matrix capping may drop friction or all */
+    if (stepRows == 0)
+        return;
+    const int normalRow = addNormalRow(d, &a, w);
+    if (p->type == MdtContactTypeFrictionZero || stepRows < 2)
+        return;
+    const int linked = addFrictionRows(d, &a, w, normalRow);
     /* A non-adhesive contact with two friction rows bounded by the normal force is Kea's typed contact
      * (KeaContact); any other (adhesive, box friction, one friction direction) stays generic rows. */
-    if (linked == 2 && !(p->options & MdtBclContactOptionAdhesive) && normalRow >= 0 && b0 != b1)
+    if (linked == 2 && !(p->options & MdtBclContactOptionAdhesive) && normalRow >= 0 && a.b0 != a.b1)
         MdtRowWriterDeclareContact(w, normalRow);
 }
 

@@ -521,6 +521,70 @@ static void hardStopRow(MdtLimit *l, MdtRowWriter *w, MdtRow *row, int side, MeR
     row->hi = side == 0 ? MEINFINITY : 0;
 }
 
+/* Which stops need a row this step (need[0] lower, need[1] upper): a hard stop the joint reaches
+ * within the step at its predicted speed, a soft one it is past. Crossed stops (set one at a time
+ * through MdtSingleLimitSetStop) bound no range and are not applied; reported once until they are put
+ * in order. */
+static void stopsNeeded(MdtLimit *l, const MdtRowWriter *w, const MdtRow *jacobian, MeReal x, MeBool need[2])
+{
+    const MeBool capture = w->captured != NULL;
+    const MeBool crossed = l->limited && l->limit[0].stop > l->limit[1].stop;
+    if (crossed && !capture && !MDT_LIMIT_ORDER_REPORTED(l))
+        ME_REPORT_IN("MdtWorldStep", ME_ERR_LIMIT_ORDER,
+                     "a joint's lower stop (%g) lies above its upper stop (%g); its stops are not applied until "
+                     "they are in order", (double)l->limit[0].stop, (double)l->limit[1].stop);
+    if (!capture)
+        MDT_LIMIT_ORDER_REPORTED(l) = crossed;
+    if (!l->limited || crossed)
+        return;
+    const MeReal vstar = MdtRowPredictedVelocity(w->constraint, jacobian), h = w->h;
+    for (int s = 0; s < 2; s++) {
+        if (!sideExists(&l->limit[s]))
+            continue;
+        MeReal sigma = s == 0 ? 1 : -1, phi = sigma * (x - l->limit[s].stop), approach = -sigma * vstar;
+        need[s] = isHard(l, s) ? phi <= h * (approach > 0 ? approach : 0) : phi < 0;
+    }
+    /* Two stops at one place (a spring's natural length, a rod): one two-sided row. */
+    if (sideExists(&l->limit[0]) && sideExists(&l->limit[1]) && l->limit[1].stop <= l->limit[0].stop)
+        need[0] = need[1] = METRUE;
+}
+
+/* The row at stop s alone (soft: a spring; hard: a stop, with the motor driving away from it or
+ * pushing into it); returns the row's kind. */
+static int oneStopRow(MdtLimit *l, MdtRowWriter *w, MdtRow *row, int s, MeReal x, MeReal rate)
+{
+    const MeBool motor = l->powered && l->fmax > 0;
+    const MeReal sigma = s == 0 ? 1 : -1;
+    if (!isHard(l, s)) {
+        MdtRowMakeSpring(row, w->constraint, l->limit[s].stiffness, l->limit[s].damping, x - l->limit[s].stop, w->h);
+        row->lo = s == 0 ? 0 : -MEINFINITY;
+        row->hi = s == 0 ? MEINFINITY : 0;
+        return ROW_STOP;
+    }
+    if (motor && sigma * l->desired_velocity > 0 && !MDT_LIMIT_STALLED(l)) {
+        /* The motor drives away from the stop: let it, unless it stalled there last step. */
+        row->velocity = l->desired_velocity;
+        row->lo = -l->fmax;
+        row->hi = l->fmax;
+        return s == 0 ? ROW_MOTOR_AT_STOP0 : ROW_MOTOR_AT_STOP1;
+    }
+    hardStopRow(l, w, row, s, x, rate);
+    if (motor && sigma * l->desired_velocity > 0) {
+        /* Stalled: the motor pushes away with all it has; the stop supplies the rest. */
+        if (s == 0)
+            row->lo = l->fmax;
+        else
+            row->hi = -l->fmax;
+        return s == 0 ? ROW_STALLED0 : ROW_STALLED1;
+    }
+    /* A motor pushing into the stop (or holding still) keeps pushing with up to fmax. */
+    if (motor && s == 0)
+        row->lo = -l->fmax;
+    else if (motor)
+        row->hi = l->fmax;
+    return ROW_STOP;
+}
+
 void MdtLimitAddRow(MdtLimit *l, MdtRowWriter *w, const MdtRow *jacobian, MeReal measured)
 {
     MdtConstraintData *c = w->constraint;
@@ -547,27 +611,7 @@ void MdtLimitAddRow(MdtLimit *l, MdtRowWriter *w, const MdtRow *jacobian, MeReal
         kind = ROW_LOCK;
     } else {
         MeBool need[2] = {MEFALSE, MEFALSE};
-        /* Stops crossed through MdtSingleLimitSetStop (which cannot see the other stop): they
-         * bound no range, so they are not applied; reported once until they are put in order. */
-        const MeBool crossed = l->limited && l->limit[0].stop > l->limit[1].stop;
-        if (crossed && !capture && !MDT_LIMIT_ORDER_REPORTED(l))
-            ME_REPORT_IN("MdtWorldStep", ME_ERR_LIMIT_ORDER,
-                         "a joint's lower stop (%g) lies above its upper stop (%g); its stops are not applied until "
-                         "they are in order", (double)l->limit[0].stop, (double)l->limit[1].stop);
-        if (!capture)
-            MDT_LIMIT_ORDER_REPORTED(l) = crossed;
-        if (l->limited && !crossed) {
-            const MeReal vstar = MdtRowPredictedVelocity(c, jacobian);
-            for (int s = 0; s < 2; s++) {
-                if (!sideExists(&l->limit[s]))
-                    continue;
-                MeReal sigma = s == 0 ? 1 : -1, phi = sigma * (x - l->limit[s].stop), approach = -sigma * vstar;
-                need[s] = isHard(l, s) ? phi <= h * (approach > 0 ? approach : 0) : phi < 0;
-            }
-            /* Two stops at one place (a spring's natural length, a rod): one two-sided row. */
-            if (sideExists(&l->limit[0]) && sideExists(&l->limit[1]) && l->limit[1].stop <= l->limit[0].stop)
-                need[0] = need[1] = METRUE;
-        }
+        stopsNeeded(l, w, jacobian, x, need);
         if (need[0] && need[1]) {
             int s = x < l->limit[0].stop ? 0 : 1;
             if (isHard(l, 0) || isHard(l, 1)) {
@@ -580,37 +624,7 @@ void MdtLimitAddRow(MdtLimit *l, MdtRowWriter *w, const MdtRow *jacobian, MeReal
             }
             kind = ROW_TWO_SIDED;
         } else if (need[0] || need[1]) {
-            int s = need[0] ? 0 : 1;
-            const MeReal sigma = s == 0 ? 1 : -1;
-            if (!isHard(l, s)) {
-                MdtRowMakeSpring(&row, c, l->limit[s].stiffness, l->limit[s].damping, x - l->limit[s].stop, h);
-                row.lo = s == 0 ? 0 : -MEINFINITY;
-                row.hi = s == 0 ? MEINFINITY : 0;
-                kind = ROW_STOP;
-            } else if (motor && sigma * l->desired_velocity > 0 && !MDT_LIMIT_STALLED(l)) {
-                /* The motor drives away from the stop: let it, unless it stalled there last step. */
-                row.velocity = l->desired_velocity;
-                row.lo = -l->fmax;
-                row.hi = l->fmax;
-                kind = s == 0 ? ROW_MOTOR_AT_STOP0 : ROW_MOTOR_AT_STOP1;
-            } else {
-                hardStopRow(l, w, &row, s, x, rate);
-                if (motor && sigma * l->desired_velocity > 0) {
-                    /* Stalled: the motor pushes away with all it has; the stop supplies the rest. */
-                    if (s == 0)
-                        row.lo = l->fmax;
-                    else
-                        row.hi = -l->fmax;
-                    kind = s == 0 ? ROW_STALLED0 : ROW_STALLED1;
-                } else {
-                    /* A motor pushing into the stop (or holding still) keeps pushing with up to fmax. */
-                    if (motor && s == 0)
-                        row.lo = -l->fmax;
-                    else if (motor)
-                        row.hi = l->fmax;
-                    kind = ROW_STOP;
-                }
-            }
+            kind = oneStopRow(l, w, &row, need[0] ? 0 : 1, x, rate);
         } else if (motor) {
             row.velocity = l->desired_velocity;
             row.lo = -l->fmax;
