@@ -608,7 +608,7 @@ static void laned_contact_step_is_the_scalar_step(void **state)
             }
             (void)KeaContactLanesTry(&t.p, &w, blocks, s, v0, v1, x, 1, &tr);
             for (c = 0; c < count; ++c)
-                ++seen[(tr.fits >> c) & 1];
+                ++seen[tr.fits[c] != 0];
         }
         lane_save(&w, x, &start);
         lanes = lane_sweep(&prm, &statsLanes);

@@ -133,57 +133,20 @@ static void KeaContactDense(const KeaProblem *problem, KeaIterativeWork *w, int 
     KeaBlockApplyDeltas(w, s, 3, x, &sweep->decrease);
 }
 
-/* The contact step's second half, once its rows' w (wb), impulses (xb) and all-free try (xn, and
- * whether it keeps within the bounds: fits) are known: else the active sets or the dense solver
- * into xn; then the changes applied (the tally, the bodies, x, which rows are free). The scalar step
- * and the laned one (kea_contact_lanes.h) share it. Size: the step's state as both hold it. */
-KEA_ALWAYS_INLINE void KeaContactFinish(const KeaProblem *problem, KeaIterativeWork *w, int block, const MeReal *xb,
-                                        const MeReal *wb, MeReal *xn, int fits, MeReal *x, KeaSweepState *sweep)
-{
-    const int s = w->blockStart[block], onWorld = w->blockContact[block] == KEA_CONTACT_WORLD;
-    KeaVel4 *v0 = &w->dv[w->body[s][0]], *v1 = &w->dv[w->body[s][1]];
-    const MeReal *mu = problem->mu + s;
-    MeReal d[3];
-    int r;
-    if (!fits) {
-        const MeReal *A = w->blockA + w->blockMatrix[block];
-        MeReal rl[3];
-        for (r = 0; r < 3; ++r) /* r_loc = A_bb x_b - w_b */
-            rl[r] = ((A[r] * xb[0] + A[3 + r] * xb[1]) + A[6 + r] * xb[2]) - wb[r];
-        /* the set the contact was in, tried first */
-        const MeReal was1Bound = KeaFrictionBound(mu[1], xb[0]), was2Bound = KeaFrictionBound(mu[2], xb[0]);
-        const int was1 = xb[1] >= was1Bound ? 1 : (xb[1] <= -was1Bound ? -1 : 0);
-        const int was2 = xb[2] >= was2Bound ? 1 : (xb[2] <= -was2Bound ? -1 : 0);
-        if (!((was1 | was2) != 0 && xb[0] > ME_R(0.0) && KeaContactTry(A, rl, mu, was1, was2, xn)) &&
-            !KeaContactActiveSets(A, rl, mu, xn)) { /* valid only within rounding, or no factor */
-            KeaContactDense(problem, w, block, wb, rl, x, sweep);
-            sweep->changed += KeaContactFreeRows(mu, x + s, w->wasFree + s);
-            return;
-        }
-    }
-    for (r = 0; r < 3; ++r)
-        d[r] = xn[r] - xb[r];
-    if (sweep->tally) /* only the sweep after an SM step is asked how much it lowered the objective */
-        for (r = 0; r < 3; ++r)
-            sweep->decrease -= ME_R(0.5) * d[r] * wb[r];
-    if (d[0] != ME_R(0.0) || d[1] != ME_R(0.0) || d[2] != ME_R(0.0))
-        KeaContactScatter(&w->B[s], d, v0, onWorld ? NULL : v1);
-    for (r = 0; r < 3; ++r) /* d_r = 0: xn_r is x_r */
-        x[s + r] = xn[r];
-    sweep->changed += KeaContactFreeRows(mu, xn, w->wasFree + s);
-}
-
 /* The contact step (top comment) for the declared contact `block` (blockContact: on two bodies, or
  * on a body and the world, whose half of the rows, exact zeros, is not computed), its three rows
- * held in locals: the rows' w, the residual and the all-free try here, the rest in KeaContactFinish.
- * Returns the block's largest row residual before the step (when sweep->measure; else 0). */
+ * held in locals. Returns the block's largest row residual before the step (when sweep->measure;
+ * else 0).
+ * Longer than most functions here, and on purpose: it is the pile's every block step, and its
+ * parts (gather, residual, all-free try, active sets, scatter) share the block's rows held in
+ * locals; split into functions they would pass those locals through memory. */
 KEA_ALWAYS_INLINE MeReal KeaContactBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block,
                                              MeReal *x, KeaSweepState *sweep)
 {
     const int s = w->blockStart[block], onWorld = w->blockContact[block] == KEA_CONTACT_WORLD;
     KeaVel4 *v0 = &w->dv[w->body[s][0]], *v1 = &w->dv[w->body[s][1]];
     const MeReal *mu = problem->mu + s, *inv = w->blockInv + w->blockMatrix[block];
-    MeReal wb[3], xb[3], xn[3], t[3], bound, bound2, worst;
+    MeReal wb[3], xb[3], xn[3], d[3], t[3], bound, bound2, worst;
     int r, fits = 0;
     KeaContactGather(&w->J[s], v0, onWorld ? NULL : v1, wb);
     for (r = 0; r < 3; ++r) {
@@ -214,7 +177,32 @@ KEA_ALWAYS_INLINE MeReal KeaContactBlockStep(const KeaProblem *problem, KeaItera
         bound2 = KeaFrictionBound(mu[2], xn[0]);
         fits = xn[0] >= ME_R(0.0) && xn[1] >= -bound && xn[1] <= bound && xn[2] >= -bound2 && xn[2] <= bound2;
     }
-    KeaContactFinish(problem, w, block, xb, wb, xn, fits, x, sweep);
+    if (!fits) {
+        const MeReal *A = w->blockA + w->blockMatrix[block];
+        MeReal rl[3];
+        for (r = 0; r < 3; ++r) /* r_loc = A_bb x_b - w_b */
+            rl[r] = ((A[r] * xb[0] + A[3 + r] * xb[1]) + A[6 + r] * xb[2]) - wb[r];
+        /* the set the contact was in, tried first */
+        const MeReal was1Bound = KeaFrictionBound(mu[1], xb[0]), was2Bound = KeaFrictionBound(mu[2], xb[0]);
+        const int was1 = xb[1] >= was1Bound ? 1 : (xb[1] <= -was1Bound ? -1 : 0);
+        const int was2 = xb[2] >= was2Bound ? 1 : (xb[2] <= -was2Bound ? -1 : 0);
+        if (!((was1 | was2) != 0 && xb[0] > ME_R(0.0) && KeaContactTry(A, rl, mu, was1, was2, xn)) &&
+            !KeaContactActiveSets(A, rl, mu, xn)) { /* valid only within rounding, or no factor */
+            KeaContactDense(problem, w, block, wb, rl, x, sweep);
+            sweep->changed += KeaContactFreeRows(mu, x + s, w->wasFree + s);
+            return worst;
+        }
+    }
+    for (r = 0; r < 3; ++r)
+        d[r] = xn[r] - xb[r];
+    if (sweep->tally) /* only the sweep after an SM step is asked how much it lowered the objective */
+        for (r = 0; r < 3; ++r)
+            sweep->decrease -= ME_R(0.5) * d[r] * wb[r];
+    if (d[0] != ME_R(0.0) || d[1] != ME_R(0.0) || d[2] != ME_R(0.0))
+        KeaContactScatter(&w->B[s], d, v0, onWorld ? NULL : v1);
+    for (r = 0; r < 3; ++r) /* d_r = 0: xn_r is x_r */
+        x[s + r] = xn[r];
+    sweep->changed += KeaContactFreeRows(mu, xn, w->wasFree + s);
     return worst;
 }
 

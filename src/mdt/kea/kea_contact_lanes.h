@@ -22,37 +22,27 @@
 #define KEA_SWEEP_LANES 4
 
 /* A lane's part of the laned step (KeaContactLanesStep): its rows' w [row][lane], impulses before
- * and after the all-free try, and which lanes' tries keep within the bounds (bit l: lane l). */
+ * and after the all-free try, and whether that try keeps within the bounds. */
 typedef struct KeaLaneTry {
-    _Alignas(16) MeReal xb[3][KEA_SWEEP_LANES];
-    _Alignas(16) MeReal wb[3][KEA_SWEEP_LANES];
-    _Alignas(16) MeReal xn[3][KEA_SWEEP_LANES];
-    int fits;
+    MeReal xb[3][KEA_SWEEP_LANES], wb[3][KEA_SWEEP_LANES], xn[3][KEA_SWEEP_LANES];
+    int fits[KEA_SWEEP_LANES];
 } KeaLaneTry;
 
-/* mid(lo, v, hi) lane by lane, as KeaClamp: min then max. */
-static inline KeaLanes KeaLanesClamp(KeaLanes v, KeaLanes lo, KeaLanes hi)
-{
-    return KeaLanesMax(lo, KeaLanesMin(hi, v));
-}
-
 /* The rows' w of four contacts, their residual before the step (when measure) and the all-free try,
- * lane by lane the scalar step's operations (KeaContactBlockStep) in four-lane operations
- * (kea_lanes.h). Returns the lanes' largest residual. Size: the lanes' blocks and bodies as the
- * laned step holds them (its one call site). */
+ * lane by lane the scalar step's operations (KeaContactBlockStep). Returns the lanes' largest
+ * residual. Size: the lanes' blocks and bodies as the laned step holds them (its one call site). */
 KEA_ALWAYS_INLINE MeReal KeaContactLanesTry(const KeaProblem *problem, const KeaIterativeWork *w, const int *block,
                                             const int *s, KeaVel4 *const *v0, KeaVel4 *const *v1, const MeReal *x,
                                             int measure, KeaLaneTry *t)
 {
     enum { L = KEA_SWEEP_LANES };
-    _Alignas(16) MeReal g[L][4], e[3][L], rh[3][L], mu[3][L], dg[3][L], id[3][L], inv[L][8], inv8[L], worst[L];
-    const KeaLanes zero = KeaLanesSplat(ME_R(0.0));
-    KeaLanes wb[3], xb[3], xn[3], a, b, c, d, m, bound, bound2;
+    MeReal g[L][3], e[3][L], rh[3][L], mu[3][L], dg[3][L], id[3][L], inv[9][L], worst[L], tr[3][L];
     MeReal result = ME_R(0.0);
-    int factored = 0, l, r, k;
+    int factored[L], l, r, k;
     for (l = 0; l < L; ++l) {
+        const MeReal *iv = w->blockInv + w->blockMatrix[block[l]];
         KeaContactGather(&w->J[s[l]], v0[l], v1[l], g[l]);
-        g[l][3] = ME_R(0.0);
+        factored[l] = w->blockFactored[block[l]];
         for (r = 0; r < 3; ++r) {
             t->xb[r][l] = x[s[l] + r];
             e[r][l] = w->eps[s[l] + r];
@@ -61,83 +51,44 @@ KEA_ALWAYS_INLINE MeReal KeaContactLanesTry(const KeaProblem *problem, const Kea
             dg[r][l] = w->diag[s[l] + r];
             id[r][l] = w->invDiag[s[l] + r];
         }
-        if (w->blockFactored[block[l]]) {
-            const MeReal *iv = w->blockInv + w->blockMatrix[block[l]];
-            factored |= 1 << l;
-            for (k = 0; k < 8; ++k)
-                inv[l][k] = iv[k];
-            inv8[l] = iv[8];
-        } else { /* an unfactored block's inverse is not read: its lane fails */
-            for (k = 0; k < 8; ++k)
-                inv[l][k] = ME_R(0.0);
-            inv8[l] = ME_R(0.0);
-        }
+        for (k = 0; k < 9; ++k) /* an unfactored block's inverse is not read: its lane fails */
+            inv[k][l] = factored[l] ? iv[k] : ME_R(0.0);
     }
-    /* the lanes' gathers as rows: w = g + eps x - r */
-    a = KeaLanesLoadA(g[0]);
-    b = KeaLanesLoadA(g[1]);
-    c = KeaLanesLoadA(g[2]);
-    d = KeaLanesLoadA(g[3]);
-    KeaLanesTranspose4(&a, &b, &c, &d);
-    wb[0] = a;
-    wb[1] = b;
-    wb[2] = c;
-    for (r = 0; r < 3; ++r) {
-        xb[r] = KeaLanesLoadA(t->xb[r]);
-        wb[r] = KeaLanesSub(KeaLanesAdd(wb[r], KeaLanesMul(KeaLanesLoadA(e[r]), xb[r])), KeaLanesLoadA(rh[r]));
-        KeaLanesStoreA(t->wb[r], wb[r]);
-    }
+    for (r = 0; r < 3; ++r)
+        for (l = 0; l < L; ++l)
+            t->wb[r][l] = g[l][r] + e[r][l] * t->xb[r][l] - rh[r][l];
     if (measure) { /* normal row in [0, inf), friction rows in [-mu n, mu n] */
-        m = KeaLanesMax(zero, KeaLanesMul(KeaLanesLoadA(dg[0]),
-                                          KeaLanesAbs(KeaLanesSub(xb[0], KeaLanesClamp(KeaLanesSub(xb[0], KeaLanesMul(wb[0], KeaLanesLoadA(id[0]))),
-                                                                                      zero, KeaLanesSplat(MEINFINITY))))));
-        for (r = 1; r < 3; ++r) {
-            bound = KeaLanesMul(KeaLanesLoadA(mu[r]), KeaLanesMax(xb[0], zero));
-            m = KeaLanesMax(m, KeaLanesMul(KeaLanesLoadA(dg[r]),
-                                           KeaLanesAbs(KeaLanesSub(xb[r], KeaLanesClamp(KeaLanesSub(xb[r], KeaLanesMul(wb[r], KeaLanesLoadA(id[r]))),
-                                                                                       KeaLanesNeg(bound), bound)))));
-        }
-        KeaLanesStoreA(worst, m);
+        for (l = 0; l < L; ++l)
+            worst[l] = KeaMax(ME_R(0.0), dg[0][l] * KeaFabs(t->xb[0][l] - KeaClamp(t->xb[0][l] - t->wb[0][l] * id[0][l],
+                                                                                  ME_R(0.0), MEINFINITY)));
+        for (r = 1; r < 3; ++r)
+            for (l = 0; l < L; ++l) {
+                const MeReal bound = KeaFrictionBound(mu[r][l], t->xb[0][l]);
+                worst[l] = KeaMax(worst[l], dg[r][l] * KeaFabs(t->xb[r][l] - KeaClamp(t->xb[r][l] - t->wb[r][l] * id[r][l],
+                                                                                     -bound, bound)));
+            }
         for (l = 0; l < L; ++l)
             result = KeaMax(result, worst[l]);
     }
-    /* every row free: x - A^-1 w, the inverse's nine entries as lanes (two transposes and the last) */
-    {
-        KeaLanes i0 = KeaLanesLoadA(inv[0]), i1 = KeaLanesLoadA(inv[1]), i2 = KeaLanesLoadA(inv[2]),
-                 i3 = KeaLanesLoadA(inv[3]);
-        KeaLanes j0 = KeaLanesLoadA(inv[0] + 4), j1 = KeaLanesLoadA(inv[1] + 4), j2 = KeaLanesLoadA(inv[2] + 4),
-                 j3 = KeaLanesLoadA(inv[3] + 4);
-        KeaLanes col[9];
-        KeaLanesTranspose4(&i0, &i1, &i2, &i3);
-        KeaLanesTranspose4(&j0, &j1, &j2, &j3);
-        col[0] = i0;
-        col[1] = i1;
-        col[2] = i2;
-        col[3] = i3;
-        col[4] = j0;
-        col[5] = j1;
-        col[6] = j2;
-        col[7] = j3;
-        col[8] = KeaLanesLoadA(inv8);
-        for (r = 0; r < 3; ++r) {
-            xn[r] = KeaLanesSub(xb[r], KeaLanesAdd(KeaLanesAdd(KeaLanesMul(col[r], wb[0]), KeaLanesMul(col[3 + r], wb[1])),
-                                                   KeaLanesMul(col[6 + r], wb[2])));
-            KeaLanesStoreA(t->xn[r], xn[r]);
-        }
+    for (r = 0; r < 3; ++r)
+        for (l = 0; l < L; ++l)
+            tr[r][l] = (inv[r][l] * t->wb[0][l] + inv[3 + r][l] * t->wb[1][l]) + inv[6 + r][l] * t->wb[2][l];
+    for (r = 0; r < 3; ++r)
+        for (l = 0; l < L; ++l)
+            t->xn[r][l] = t->xb[r][l] - tr[r][l];
+    for (l = 0; l < L; ++l) {
+        const MeReal bound = KeaFrictionBound(mu[1][l], t->xn[0][l]), bound2 = KeaFrictionBound(mu[2][l], t->xn[0][l]);
+        t->fits[l] = factored[l] & (t->xn[0][l] >= ME_R(0.0)) & (t->xn[1][l] >= -bound) & (t->xn[1][l] <= bound) &
+                     (t->xn[2][l] >= -bound2) & (t->xn[2][l] <= bound2);
     }
-    bound = KeaLanesMul(KeaLanesLoadA(mu[1]), KeaLanesMax(xn[0], zero));
-    bound2 = KeaLanesMul(KeaLanesLoadA(mu[2]), KeaLanesMax(xn[0], zero));
-    t->fits = factored & KeaLanesLeMask(zero, xn[0]) & KeaLanesLeMask(KeaLanesNeg(bound), xn[1]) &
-              KeaLanesLeMask(xn[1], bound) & KeaLanesLeMask(KeaLanesNeg(bound2), xn[2]) & KeaLanesLeMask(xn[2], bound2);
     return result;
 }
 
 /* The contact step for `count` (1 to KEA_SWEEP_LANES) declared contacts block[0 .. count - 1] that
- * share no body but the world, in lane order: their rows' w, residuals and all-free tries four at a
- * time (KeaContactLanesTry, the missing lanes repeating the first contact, their results unused),
- * then lane after lane the rest of the scalar step (KeaContactFinish: the result applied, or the
- * active sets or the dense solver first). Returns the largest residual measured before the steps
- * (when sweep->measure; else 0). */
+ * share no body but the world, in lane order: their all-free tries four at a time
+ * (KeaContactLanesTry, the missing lanes repeating the first contact, their results unused), then
+ * lane after lane either that result applied as the scalar step applies it, or the scalar step
+ * itself. Returns the largest residual measured before the steps (when sweep->measure; else 0). */
 KEA_ALWAYS_INLINE MeReal KeaContactLanesStep(const KeaProblem *problem, KeaIterativeWork *w, const int *blocks,
                                              int count, MeReal *x, KeaSweepState *sweep)
 {
@@ -154,13 +105,26 @@ KEA_ALWAYS_INLINE MeReal KeaContactLanesStep(const KeaProblem *problem, KeaItera
     }
     worst = KeaContactLanesTry(problem, w, block, s, v0, v1, x, sweep->measure, &t);
     for (l = 0; l < count; ++l) {
-        MeReal xb[3], wb[3], xn[3];
-        for (r = 0; r < 3; ++r) {
-            xb[r] = t.xb[r][l];
-            wb[r] = t.wb[r][l];
-            xn[r] = t.xn[r][l];
+        MeReal d[3], xn[3];
+        if (!t.fits[l]) { /* the scalar step from the start (its residual is the lane's, measured) */
+            const int measure = sweep->measure;
+            sweep->measure = 0;
+            (void)KeaContactBlockStep(problem, w, block[l], x, sweep);
+            sweep->measure = measure;
+            continue;
         }
-        KeaContactFinish(problem, w, block[l], xb, wb, xn, (t.fits >> l) & 1, x, sweep);
+        for (r = 0; r < 3; ++r) {
+            xn[r] = t.xn[r][l];
+            d[r] = xn[r] - t.xb[r][l];
+        }
+        if (sweep->tally)
+            for (r = 0; r < 3; ++r)
+                sweep->decrease -= ME_R(0.5) * d[r] * t.wb[r][l];
+        if (d[0] != ME_R(0.0) || d[1] != ME_R(0.0) || d[2] != ME_R(0.0))
+            KeaContactScatter(&w->B[s[l]], d, v0[l], v1[l]);
+        for (r = 0; r < 3; ++r)
+            x[s[l] + r] = xn[r];
+        sweep->changed += KeaContactFreeRows(problem->mu + s[l], xn, w->wasFree + s[l]);
     }
     return worst;
 }

@@ -27,14 +27,6 @@ static inline KeaLanes KeaLanesAdd(KeaLanes a, KeaLanes b) { return _mm_add_ps(a
 static inline KeaLanes KeaLanesSub(KeaLanes a, KeaLanes b) { return _mm_sub_ps(a, b); }
 static inline KeaLanes KeaLanesMul(KeaLanes a, KeaLanes b) { return _mm_mul_ps(a, b); }
 static inline KeaLanes KeaLanesSplat(MeReal s) { return _mm_set1_ps(s); }
-/** a > b ? a : b and a < b ? a : b lane by lane (KeaMax, KeaMin: NaN in a gives b). */
-static inline KeaLanes KeaLanesMax(KeaLanes a, KeaLanes b) { return _mm_max_ps(a, b); }
-static inline KeaLanes KeaLanesMin(KeaLanes a, KeaLanes b) { return _mm_min_ps(a, b); }
-/** |a| and -a: the sign bit cleared or flipped (MeFabs, unary minus). */
-static inline KeaLanes KeaLanesAbs(KeaLanes a) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), a); }
-static inline KeaLanes KeaLanesNeg(KeaLanes a) { return _mm_xor_ps(_mm_set1_ps(-0.0f), a); }
-/** Bit k set where lane k of a <= lane k of b (clear for a NaN). */
-static inline int KeaLanesLeMask(KeaLanes a, KeaLanes b) { return _mm_movemask_ps(_mm_cmple_ps(a, b)); }
 /** (a0 + a1) + a2: the sum of a padded 3-vector's components, in that order. */
 static inline MeReal KeaLanesSum3(KeaLanes a)
 {
@@ -113,41 +105,6 @@ static inline KeaLanes KeaLanesSplat(MeReal s)
     return a;
 }
 static inline MeReal KeaLanesSum3(KeaLanes a) { return (a.v[0] + a.v[1]) + a.v[2]; }
-static inline KeaLanes KeaLanesMax(KeaLanes a, KeaLanes b)
-{
-    int k;
-    for (k = 0; k < 4; ++k)
-        a.v[k] = a.v[k] > b.v[k] ? a.v[k] : b.v[k];
-    return a;
-}
-static inline KeaLanes KeaLanesMin(KeaLanes a, KeaLanes b)
-{
-    int k;
-    for (k = 0; k < 4; ++k)
-        a.v[k] = a.v[k] < b.v[k] ? a.v[k] : b.v[k];
-    return a;
-}
-static inline KeaLanes KeaLanesAbs(KeaLanes a)
-{
-    int k;
-    for (k = 0; k < 4; ++k)
-        a.v[k] = MeFabs(a.v[k]);
-    return a;
-}
-static inline KeaLanes KeaLanesNeg(KeaLanes a)
-{
-    int k;
-    for (k = 0; k < 4; ++k)
-        a.v[k] = -a.v[k];
-    return a;
-}
-static inline int KeaLanesLeMask(KeaLanes a, KeaLanes b)
-{
-    int k, mask = 0;
-    for (k = 0; k < 4; ++k)
-        mask |= (a.v[k] <= b.v[k]) << k;
-    return mask;
-}
 static inline int KeaLanesFinite3x4(const MeReal *a, const MeReal *b, const MeReal *c, const MeReal *d)
 {
     int ok = 1, k;
