@@ -9,7 +9,6 @@
 
 #include "kea_test_problems.h"
 #include "mdt/kea/kea_block_kernels.h"
-#include "mdt/kea/kea_contact_lanes.h"
 #include "mdt/kea/kea_contact_packs.h"
 
 /* Random values of mixed sign and magnitude (including exact zeros), as solver data has. */
@@ -460,181 +459,6 @@ static void pack_scatter_is_the_row_kernels_within_rounding(void **state)
     }
 }
 
-/* ---- the contact step four contacts at a time (kea_contact_lanes.h) ---------------------------- */
-
-enum { LANE_CONTACTS = 4, LANE_BODIES = 2 * LANE_CONTACTS, LANE_ROWS = 3 * LANE_CONTACTS };
-
-/* Four declared contacts on distinct bodies (contact c on bodies 2c and 2c + 1, or on body 2c and the
- * world when bit c of worldMask is set), random rows, friction mu per contact, normals mostly pressed
- * but some pulled (they open); `parallel` gives contact 0 two parallel friction rows (no safe factor:
- * the dense solver's case). */
-static void lane_problem(KtRng *rng, int worldMask, int parallel, KtProblem *t)
-{
-    int c, r, k;
-    kt_random_contacts(t, rng, LANE_CONTACTS, 0, LANE_BODIES, 0.5, 1e-3);
-    for (c = 0; c < LANE_CONTACTS; ++c) {
-        const int world = (worldMask >> c) & 1;
-        const MeReal mu = (MeReal)kt_range(rng, 0.05, 1.0);
-        for (r = 0; r < 3; ++r) {
-            const int i = 3 * c + r;
-            t->rowBodies[i][0] = 2 * c;
-            t->rowBodies[i][1] = world ? KEA_WORLD : 2 * c + 1;
-            for (k = 0; k < 3; ++k) {
-                t->J[i].lin1[k] = world ? ME_R(0.0) : (MeReal)kt_range(rng, -1, 1);
-                t->J[i].ang1[k] = world ? ME_R(0.0) : (MeReal)kt_range(rng, -1, 1);
-            }
-            if (r > 0)
-                t->mu[i] = mu;
-        }
-        t->rhs[3 * c] = (MeReal)kt_range(rng, -0.3, 1.0);
-    }
-    if (parallel) {
-        t->J[2] = t->J[1];
-        t->eps[0] = t->eps[1] = t->eps[2] = ME_R(0.0);
-    }
-}
-
-/* The work of a solve of t set up (KeaIterativeBegin) from a random warm start, its bodies' velocity
- * changes then made random (so that every row's w is); returns the workspace to free. */
-static void *lane_work(KtRng *rng, KtProblem *t, KeaParameters *prm, KeaIterativeWork *w, MeReal *x)
-{
-    KeaArena counter = {NULL, 0, 0}, arena;
-    KeaBodyVelocity dv[LANE_BODIES];
-    void *mem;
-    int i, b, k;
-    *prm = kt_params(KeaPathIterative);
-    KeaIterativeLayout(&counter, LANE_ROWS, LANE_BODIES, KEA_MAX_BLOCK_ROWS, w);
-    mem = malloc(counter.used + KEA_ALIGN);
-    arena.base = mem;
-    arena.size = counter.used + KEA_ALIGN;
-    arena.used = 0;
-    KeaIterativeLayout(&arena, LANE_ROWS, LANE_BODIES, KEA_MAX_BLOCK_ROWS, w);
-    for (i = 0; i < LANE_ROWS; ++i)
-        x[i] = (MeReal)(i % 3 == 0 ? kt_range(rng, 0.0, 1.0) : kt_range(rng, -0.5, 0.5));
-    KeaIterativeBegin(&t->p, prm, w, x, dv);
-    for (b = 0; b < LANE_BODIES; ++b)
-        for (k = 0; k < 3; ++k) {
-            w->dv[b].lin[k] = (MeReal)kt_range(rng, -0.2, 0.2);
-            w->dv[b].ang[k] = (MeReal)kt_range(rng, -0.2, 0.2);
-        }
-    return mem;
-}
-
-/* What a block step changes: the impulses, the bodies (the world's too), which rows are free. */
-typedef struct LaneState {
-    MeReal x[LANE_ROWS];
-    KeaVel4 dv[LANE_BODIES + 1];
-    unsigned char wasFree[LANE_ROWS];
-} LaneState;
-
-static void lane_save(const KeaIterativeWork *w, const MeReal *x, LaneState *st)
-{
-    memcpy(st->x, x, sizeof st->x);
-    memcpy(st->dv, w->dv, sizeof st->dv);
-    memcpy(st->wasFree, w->wasFree, sizeof st->wasFree);
-}
-
-static void lane_restore(KeaIterativeWork *w, MeReal *x, const LaneState *st)
-{
-    memcpy(x, st->x, sizeof st->x);
-    memcpy(w->dv, st->dv, sizeof st->dv);
-    memcpy(w->wasFree, st->wasFree, sizeof st->wasFree);
-}
-
-static void assert_same_state(const LaneState *a, const LaneState *b)
-{
-    int i, k;
-    for (i = 0; i < LANE_ROWS; ++i) {
-        assert_true(same_bits(a->x[i], b->x[i]));
-        assert_int_equal(a->wasFree[i], b->wasFree[i]);
-    }
-    for (i = 0; i <= LANE_BODIES; ++i)
-        for (k = 0; k < 4; ++k) {
-            assert_true(same_bits(a->dv[i].lin[k], b->dv[i].lin[k]));
-            assert_true(same_bits(a->dv[i].ang[k], b->dv[i].ang[k]));
-        }
-}
-
-static KeaSweepState lane_sweep(const KeaParameters *prm, KeaStats *stats)
-{
-    KeaSweepState sweep;
-    memset(stats, 0, sizeof *stats);
-    sweep.decrease = ME_R(0.0);
-    sweep.changed = 0;
-    sweep.measure = 1;
-    sweep.tally = 1;
-    sweep.maxPasses = prm->maxFrictionPasses;
-    sweep.stats = stats;
-    return sweep;
-}
-
-/* The laned contact step gives every contact, body and tally the bits of the scalar contact step taken
- * contact after contact in lane order: lanes whose all-free try keeps within the cone and lanes at a
- * bound (opening, sliding: the scalar step's active sets), a block with no safe factor (its lane
- * fails), the world as a body, and groups of fewer than four contacts (the last group of a chunk). */
-static void laned_contact_step_is_the_scalar_step(void **state)
-{
-    KtRng rng = {777};
-    int trial, seen[2] = {0, 0}, partial = 0, world = 0, unfactored = 0;
-    (void)state;
-    for (trial = 0; trial < 1500; ++trial) {
-        const int worldMask = kt_int(&rng, 16), parallel = kt_uniform(&rng) < 0.1;
-        const int count = 1 + kt_int(&rng, LANE_CONTACTS);
-        KtProblem t;
-        KeaParameters prm;
-        KeaIterativeWork w;
-        KeaStats statsLanes, statsScalar;
-        KeaSweepState lanes, scalar;
-        LaneState start, afterLanes, afterScalar;
-        MeReal x[LANE_ROWS], worstLanes, worstScalar = ME_R(0.0);
-        int blocks[LANE_CONTACTS], c;
-        void *mem;
-        memset(&t, 0, sizeof t);
-        lane_problem(&rng, worldMask, parallel, &t);
-        mem = lane_work(&rng, &t, &prm, &w, x);
-        assert_int_equal(w.nBlocks, LANE_CONTACTS);
-        for (c = 0; c < LANE_CONTACTS; ++c) {
-            assert_int_equal(w.blockContact[c], (worldMask >> c) & 1 ? KEA_CONTACT_WORLD : KEA_CONTACT_BODIES);
-            blocks[c] = LANE_CONTACTS - 1 - c; /* any order of the lanes */
-        }
-        { /* which lanes fit (the coverage of this test) */
-            KeaLaneTry tr;
-            KeaVel4 *v0[LANE_CONTACTS], *v1[LANE_CONTACTS];
-            int s[LANE_CONTACTS];
-            for (c = 0; c < LANE_CONTACTS; ++c) {
-                s[c] = w.blockStart[blocks[c]];
-                v0[c] = &w.dv[w.body[s[c]][0]];
-                v1[c] = (worldMask >> blocks[c]) & 1 ? NULL : &w.dv[w.body[s[c]][1]];
-            }
-            (void)KeaContactLanesTry(&t.p, &w, blocks, s, v0, v1, x, 1, &tr);
-            for (c = 0; c < count; ++c)
-                ++seen[tr.fits[c] != 0];
-        }
-        lane_save(&w, x, &start);
-        lanes = lane_sweep(&prm, &statsLanes);
-        worstLanes = KeaContactLanesStep(&t.p, &w, blocks, count, x, &lanes);
-        lane_save(&w, x, &afterLanes);
-        lane_restore(&w, x, &start);
-        scalar = lane_sweep(&prm, &statsScalar);
-        for (c = 0; c < count; ++c)
-            worstScalar = KeaMax(worstScalar, KeaContactBlockStep(&t.p, &w, blocks[c], x, &scalar));
-        lane_save(&w, x, &afterScalar);
-        assert_same_state(&afterLanes, &afterScalar);
-        assert_true(same_bits(lanes.decrease, scalar.decrease));
-        assert_int_equal(lanes.changed, scalar.changed);
-        assert_int_equal(statsLanes.pivots, statsScalar.pivots);
-        assert_true(same_bits(worstLanes, worstScalar));
-        partial += count < LANE_CONTACTS;
-        world += worldMask != 0;
-        unfactored += !w.blockFactored[0];
-        free(mem);
-        kt_free(&t);
-    }
-    /* every case met often: lanes that fit, lanes at a bound, short groups, the world, no factor */
-    assert_true(seen[1] > 500 && seen[0] > 500);
-    assert_true(partial > 300 && world > 300 && unfactored > 50);
-}
-
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -647,7 +471,6 @@ int main(void)
         cmocka_unit_test(transpose_moves_every_entry),
         cmocka_unit_test(pack_gather_and_inverse_are_the_row_kernels),
         cmocka_unit_test(pack_scatter_is_the_row_kernels_within_rounding),
-        cmocka_unit_test(laned_contact_step_is_the_scalar_step),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

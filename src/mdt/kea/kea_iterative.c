@@ -5,7 +5,7 @@
  * (kea_subspace.c) and reports the residual. */
 #include <string.h>
 
-#include "kea_contact_lanes.h"
+#include "kea_contact_kernel.h"
 
 static MeReal KeaRowW(const KeaProblem *problem, const KeaIterativeWork *w, int i, const MeReal *x,
                       const KeaVel4 *v0, const KeaVel4 *v1)
@@ -159,68 +159,8 @@ typedef struct KeaSplitSweep {
     int firstChunk, lastChunk; /* the colour's chunks */
 } KeaSplitSweep;
 
-/* One group's contacts (kea_contact_lanes.h): `units` (1 to KEA_SWEEP_LANES) units of declared
- * contacts, unit g's blocks first[g] .. first[g] + count[g] - 1, taken a round at a time: each unit's
- * first contact in sweep order as one laned step, then each one's second, and so on (a unit out of
- * contacts leaves the round's lanes). Returns the largest residual measured. Size: the sweep's
- * state and the group, as KeaSweepUnits holds them (its one call site). */
-KEA_ALWAYS_INLINE MeReal KeaSweepGroup(const KeaSplitSweep *t, KeaIterativeWork *w, const int *first,
-                                       const int *count, int units, MeReal worst, KeaSweepState *sweep)
-{
-    int blocks[KEA_SWEEP_LANES], rounds = 0, j, g, lanes;
-    for (g = 0; g < units; ++g)
-        rounds = count[g] > rounds ? count[g] : rounds;
-    for (j = 0; j < rounds; ++j) {
-        lanes = 0;
-        for (g = 0; g < units; ++g)
-            if (j < count[g])
-                blocks[lanes++] = t->backward ? first[g] + count[g] - 1 - j : first[g] + j;
-        sweep->measure = worst <= t->measureUpTo;
-        worst = KeaMax(worst, KeaContactLanesStep(t->problem, w, blocks, lanes, t->x, sweep));
-    }
-    return worst;
-}
-
-/* The blocks order[first .. first + count) of a colour's chunk (whole units) in sweep order, four
- * units at a time: a unit whose blocks are all declared contacts joins a group of up to
- * KEA_SWEEP_LANES units, a lane each (KeaSweepGroup), swept when full or at the chunk's end; a unit
- * with other blocks takes its steps at once. The units of a colour share no body, so the grouping
- * changes no impulse or body; only the chunk's tallies are added in its order. */
-static MeReal KeaSweepUnits(const KeaSplitSweep *t, int first, int count, KeaIterativeWork *w, KeaSweepState *sweep)
-{
-    const KeaSplit *split = t->split;
-    int unitFirst[KEA_SWEEP_LANES], unitCount[KEA_SWEEP_LANES], units = 0, k = 0, j;
-    MeReal worst = ME_R(0.0);
-    while (k < count) {
-        const int u = split->blockUnit[split->order[t->backward ? first + count - 1 - k : first + k]];
-        const int u0 = split->unitStart[u], n = split->unitStart[u + 1] - u0;
-        int contacts = 1;
-        for (j = 0; j < n; ++j)
-            contacts &= w->blockContact[u0 + j] != 0;
-        k += n;
-        if (!contacts) {
-            for (j = 0; j < n; ++j) {
-                sweep->measure = worst <= t->measureUpTo;
-                worst = KeaMax(worst, KeaSweepBlock(t->problem, w, t->backward ? u0 + n - 1 - j : u0 + j, t->x, sweep,
-                                                    t->omega));
-            }
-            continue;
-        }
-        unitFirst[units] = u0;
-        unitCount[units++] = n;
-        if (units == KEA_SWEEP_LANES) {
-            worst = KeaSweepGroup(t, w, unitFirst, unitCount, units, worst, sweep);
-            units = 0;
-        }
-    }
-    if (units > 0)
-        worst = KeaSweepGroup(t, w, unitFirst, unitCount, units, worst, sweep);
-    return worst;
-}
-
-/* Chunk `chunk` of a colour on a worker's copy of the work: its blocks in sweep order (a colour's
- * four units at a time, KeaSweepUnits; the overflow colour's, whose units may share bodies, one
- * after the other), its tallies into its own record. */
+/* Chunk `chunk` of a colour on a worker's copy of the work: its blocks in sweep order, its tallies
+ * into its own record. */
 static void KeaSweepChunk(const KeaSplitSweep *t, int chunk, KeaIterativeWork *w)
 {
     const KeaSplit *split = t->split;
@@ -236,14 +176,10 @@ static void KeaSweepChunk(const KeaSplitSweep *t, int chunk, KeaIterativeWork *w
     sweep.tally = t->tally;
     sweep.maxPasses = t->maxPasses;
     sweep.stats = &local;
-    if (chunk < split->colourChunk[KEA_COLOUR_OVERFLOW]) {
-        worst = KeaSweepUnits(t, first, count, w, &sweep);
-    } else {
-        for (k = 0; k < count; ++k) {
-            const int block = split->order[t->backward ? first + count - 1 - k : first + k];
-            sweep.measure = worst <= t->measureUpTo;
-            worst = KeaMax(worst, KeaSweepBlock(t->problem, w, block, t->x, &sweep, t->omega));
-        }
+    for (k = 0; k < count; ++k) {
+        const int block = split->order[t->backward ? first + count - 1 - k : first + k];
+        sweep.measure = worst <= t->measureUpTo;
+        worst = KeaMax(worst, KeaSweepBlock(t->problem, w, block, t->x, &sweep, t->omega));
     }
     record->decrease = sweep.decrease;
     record->worst = worst;
@@ -433,12 +369,6 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
             w->dv[b].lin[k] = dv[b].lin[k];
             w->dv[b].ang[k] = dv[b].ang[k];
         }
-}
-
-void KeaIterativeBegin(const KeaProblem *problem, const KeaParameters *params, KeaIterativeWork *w, MeReal *x,
-                       KeaBodyVelocity *dv)
-{
-    KeaIterativeSetUp(problem, params, w, x, dv);
 }
 
 /* What a solve hands its driver (KeaIterate): the problem, its settings, the work and the outputs. */

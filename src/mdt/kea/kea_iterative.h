@@ -373,12 +373,6 @@ static inline unsigned char KeaRowIsFree(const KeaIterativeWork *w, int i, MeRea
 void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIterativeWork *w);
 void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap);
 
-/* kea_iterative.c: a solve's set-up alone (the padded rows, the blocks and their inverses, the warm
- * start: x clamped, dv from it) on a work laid out by KeaIterativeLayout with split NULL, for the
- * kernel tests (test_kea_lanes), which then take block steps on it. */
-void KeaIterativeBegin(const KeaProblem *problem, const KeaParameters *params, KeaIterativeWork *w, MeReal *x,
-                       KeaBodyVelocity *dv);
-
 /* kea_subspace.c: one SM chance after a sweep; returns the CG steps taken, -1 if skipped. */
 int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x);
 
