@@ -369,6 +369,47 @@ static void items_of_eight_bodies_are_coloured_into_independent_sets(void **stat
     assert_int_equal(colour[0], -7);
 }
 
+/* The colouring is first fit, exactly: each item takes the lowest colour none of whose earlier items
+ * holds one of its bodies (the world aside), or the overflow colour when every colour does. Checked
+ * against that rule written out naively (a scan of the earlier items per colour) on random items of
+ * two and of eight bodies, with bodies shared by more items than there are colours: the split
+ * solve's trajectories rest on these exact colours. */
+static void each_item_takes_the_lowest_colour_free_of_its_bodies(void **state)
+{
+    enum { COUNT = 400, BODIES = 60, MAXPER = 8 };
+    static int bodies[COUNT * MAXPER], colour[COUNT], order[COUNT], expect[COUNT];
+    int start[KEA_COLOUR_COUNT + 2];
+    uint32_t seed = 4242;
+    (void)state;
+    for (int trial = 0; trial < 40; trial++) {
+        const int per = trial % 2 ? 8 : 2, bodyCount = 2 + (int)(lcg(&seed) % BODIES);
+        for (int i = 0; i < COUNT * per; i++) {
+            bodies[i] = (int)(lcg(&seed) % (uint32_t)(bodyCount + 3)) - 3; /* some on the world */
+            if (bodies[i] < 0)
+                bodies[i] = KEA_COLOUR_WORLD;
+        }
+        for (int i = 0; i < COUNT; i++) {
+            int c = 0;
+            for (; c < KEA_COLOUR_COUNT; c++) {
+                int clash = 0;
+                for (int j = 0; j < i && !clash; j++) {
+                    if (expect[j] != c)
+                        continue;
+                    for (int a = 0; a < per && !clash; a++)
+                        for (int b = 0; b < per && !clash; b++)
+                            clash = bodies[per * i + a] != KEA_COLOUR_WORLD && bodies[per * i + a] == bodies[per * j + b];
+                }
+                if (!clash)
+                    break;
+            }
+            expect[i] = c;
+        }
+        memset(workspace, 0x5a, sizeof workspace);
+        assert_true(KeaColourItems(bodies, per, COUNT, bodyCount, workspace, sizeof workspace, colour, order, start) >= 0);
+        assert_memory_equal(colour, expect, sizeof(int) * COUNT);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -379,6 +420,7 @@ int main(void)
         cmocka_unit_test(a_sweep_in_colour_order_is_the_same_for_any_worker_schedule),
         cmocka_unit_test(bad_input_is_refused_and_nothing_written),
         cmocka_unit_test(items_of_eight_bodies_are_coloured_into_independent_sets),
+        cmocka_unit_test(each_item_takes_the_lowest_colour_free_of_its_bodies),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,12 +1,15 @@
 /* kea_colour.c -- graph colouring of a partition's constraints by body (kea_colour.h).
  *
- * One bit set of bodies per colour; a constraint takes the first colour whose set holds neither of its
- * bodies, and adds them. The world belongs to no set: any number of constraints of one colour may hold
- * a body to the world, since the world's velocity is never written. Greedy first-fit in the
- * constraints' order: a constraint sharing bodies with d others gets a colour below d + 1, so a chain
- * takes two colours and a grid of stacked boxes a handful; only a body with more than
- * KEA_COLOUR_COUNT constraints sends some of them to the overflow colour. The same for items of more
- * bodies (KeaColourItems: SM's packs of four contacts, up to eight bodies). */
+ * One mask per body, bit c set when colour c holds the body; a constraint takes the lowest colour
+ * set in neither of its bodies' masks (the lowest bit clear in the OR of their masks), and sets it
+ * in both. The world has no mask: any number of constraints of one colour may hold a body to the
+ * world, since the world's velocity is never written. Greedy first-fit in the constraints' order: a
+ * constraint sharing bodies with d others gets a colour below d + 1, so a chain takes two colours
+ * and a grid of stacked boxes a handful; only a body with more than KEA_COLOUR_COUNT constraints
+ * sends some of them to the overflow colour. The same for items of more bodies (KeaColourItems:
+ * SM's packs of four contacts, up to eight bodies). A mask per body (an OR and a bit search per
+ * constraint) rather than a bit set of bodies per colour (a test per colour tried): the same
+ * colours, found in a few operations however many colours are tried. */
 #include <stdint.h>
 #include <string.h>
 
@@ -14,26 +17,14 @@
 #include "kea.h"
 
 _Static_assert(KEA_COLOUR_WORLD == KEA_WORLD, "the colouring takes Kea's rows' body indices as they are");
+_Static_assert(KEA_COLOUR_COUNT < 32, "a body's colours are the bits of a 32-bit mask");
 
-#define WORD_BITS 64
-
-static size_t wordsFor(int bodyCount) { return ((size_t)bodyCount + WORD_BITS - 1) / WORD_BITS; }
+/* The colours a mask may hold. */
+#define ALL_COLOURS ((uint32_t)((1u << KEA_COLOUR_COUNT) - 1u))
 
 size_t KeaColourMemoryRequired(int bodyCount)
 {
-    return bodyCount > 0 ? sizeof(uint64_t) * wordsFor(bodyCount) * KEA_COLOUR_COUNT : 0;
-}
-
-/* Whether body b (or the world) is free in the set. */
-static int isFree(const uint64_t *set, int b)
-{
-    return b == KEA_COLOUR_WORLD || !(set[b / WORD_BITS] & ((uint64_t)1 << (b % WORD_BITS)));
-}
-
-static void take(uint64_t *set, int b)
-{
-    if (b != KEA_COLOUR_WORLD)
-        set[b / WORD_BITS] |= (uint64_t)1 << (b % WORD_BITS);
+    return bodyCount > 0 ? sizeof(uint32_t) * (size_t)bodyCount : 0;
 }
 
 /* Size: the input (bodies, count, bodyCount), the caller's workspace (pointer and size) and the three
@@ -45,13 +36,17 @@ int KeaColourConstraints(const int (*bodies)[2], int count, int bodyCount, void 
                           order, colourStart);
 }
 
-/* Whether every body of an item (or the world) is free in the set. */
-static int allFree(const uint64_t *set, const int *item, int perItem)
+/* The lowest colour in `free` (not 0). */
+static int lowestColour(uint32_t free)
 {
-    for (int k = 0; k < perItem; k++)
-        if (!isFree(set, item[k]))
-            return 0;
-    return 1;
+#if defined(__GNUC__)
+    return __builtin_ctz(free);
+#else
+    int c = 0;
+    while (!((free >> c) & 1u))
+        c++;
+    return c;
+#endif
 }
 
 /* Size: KeaColourConstraints' parameters and the bodies per item. */
@@ -63,20 +58,23 @@ int KeaColourItems(const int *bodies, int perItem, int count, int bodyCount, voi
     for (int i = 0; i < count * perItem; i++)
         if (bodies[i] != KEA_COLOUR_WORLD && (bodies[i] < 0 || bodies[i] >= bodyCount))
             return -1;
-    const size_t words = wordsFor(bodyCount);
-    uint64_t *sets = workspace;
-    if (words > 0)
-        memset(sets, 0, sizeof(uint64_t) * words * KEA_COLOUR_COUNT);
+    uint32_t *masks = workspace;
+    if (bodyCount > 0)
+        memset(masks, 0, sizeof(uint32_t) * (size_t)bodyCount);
     int counts[KEA_COLOUR_COUNT + 1] = {0};
     int used = 0;
     for (int i = 0; i < count; i++) {
         const int *item = bodies + (size_t)i * (size_t)perItem;
-        int c = 0;
-        while (c < KEA_COLOUR_COUNT && !allFree(sets + (size_t)c * words, item, perItem))
-            c++;
+        uint32_t taken = 0;
+        for (int k = 0; k < perItem; k++)
+            if (item[k] != KEA_COLOUR_WORLD)
+                taken |= masks[item[k]];
+        const uint32_t free = ~taken & ALL_COLOURS;
+        const int c = free ? lowestColour(free) : KEA_COLOUR_OVERFLOW;
         if (c < KEA_COLOUR_COUNT) {
             for (int k = 0; k < perItem; k++)
-                take(sets + (size_t)c * words, item[k]);
+                if (item[k] != KEA_COLOUR_WORLD)
+                    masks[item[k]] |= (uint32_t)1u << c;
             if (c + 1 > used)
                 used = c + 1;
         }

@@ -322,7 +322,7 @@ typedef struct KeaSplit {
     int *packOrder;        /**< the packs by colour, each colour's in pack order */
     int *packChunk;        /**< the packs' scatter chunks: packOrder[packChunk[k] .. packChunk[k + 1]) */
     int packColourChunk[KEA_COLOUR_COUNT + 2]; /**< colour c's pack scatter chunks */
-    void *colourWork;      /**< the colouring's bit sets */
+    void *colourWork;      /**< the colouring's workspace (a mask of colours per body) */
     size_t colourBytes;
     int colourStart[KEA_COLOUR_COUNT + 2]; /**< colour c is order[colourStart[c] .. colourStart[c + 1]) (the
                                                  colouring's units at first) */
