@@ -176,7 +176,7 @@ static void KeaFindSegments(KeaIterativeWork *w, int first, int nFree)
 }
 
 /* z = P^-1 res (block-Jacobi preconditioner of the free rows) over pieces [k0, k1): a segment by its
- * block's inverse, a row on its own by 1 / d_i (the packs' contacts: KeaPacksPrecondition). */
+ * block's inverse, a row on its own by 1 / d_i (the packs' contacts: KeaPackPrecondition, in KeaPacksCgStart and KeaPacksCgUpdate). */
 static void KeaPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z, int k0, int k1)
 {
     const KeaFreePiece *pieces = w->pieces;
@@ -192,10 +192,11 @@ static void KeaPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal
     }
 }
 
-/* q += eps p, returning p . q (the new q) in one pass: the sums of KeaDotN4, in its order. */
-static MeReal KeaAddEpsDot(MeReal *q, const MeReal *eps, const MeReal *p, int n)
+/* q += eps p, returning p . q (the new q) in one pass: the sums of KeaDotN4, in its order, carried
+ * on from sum[0 .. 3] (the sums of the positions before, a multiple of 4; zeros for none). */
+static MeReal KeaAddEpsDot(const MeReal sum[4], MeReal *q, const MeReal *eps, const MeReal *p, int n)
 {
-    MeReal s0 = ME_R(0.0), s1 = ME_R(0.0), s2 = ME_R(0.0), s3 = ME_R(0.0);
+    MeReal s0 = sum[0], s1 = sum[1], s2 = sum[2], s3 = sum[3];
     int m = 0;
     for (; m + 4 <= n; m += 4) {
         const MeReal q0 = q[m] + eps[m] * p[m], q1 = q[m + 1] + eps[m + 1] * p[m + 1];
@@ -214,6 +215,20 @@ static MeReal KeaAddEpsDot(MeReal *q, const MeReal *eps, const MeReal *p, int n)
         s0 += p[m] * q[m];
     }
     return (s0 + s1) + (s2 + s3);
+}
+
+/* a . b over n entries with KeaDotN4's sums, carried on from the lanes acc (the sums of the packs'
+ * positions before a, at least four of them, KeaPacksCgStart's): KeaDotN4 over the whole range. */
+static MeReal KeaDotFrom(KeaLanes acc, const MeReal *a, const MeReal *b, int n)
+{
+    MeReal s[4];
+    int m = 0;
+    for (; m + 4 <= n; m += 4)
+        acc = KeaLanesAdd(acc, KeaLanesMul(KeaLanesLoad(a + m), KeaLanesLoad(b + m)));
+    KeaLanesStore(s, acc);
+    for (; m < n; ++m)
+        s[0] += a[m] * b[m];
+    return (s[0] + s[1]) + (s[2] + s[3]);
 }
 
 /* Set wasFree to which rows are free now (KeaRowIsFree); returns how many rows changed. Every
@@ -307,36 +322,38 @@ static void KeaGatherChunk(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal 
     KeaGather(w, dv, out, r[2], r[3]);
 }
 
-/* z = P^-1 res over chunk k's packs and pieces; returns the chunk's partial res . z. */
-static MeReal KeaPreconditionChunk(const KeaIterativeWork *w, const int r[6])
+/* The first position of chunk k's pieces (r: KeaSmChunk's ranges): after its packs' positions. */
+static int KeaPiecesFrom(const int r[6])
 {
-    KeaPacksPrecondition(w, w->res, w->z, r[0], r[1]);
-    KeaPrecondition(w, w->res, w->z, r[2], r[3]);
-    return KeaDotN4(w->res + r[4], w->z + r[4], r[5] - r[4]);
+    return r[4] + KEA_PACK_POSITIONS * (r[1] - r[0]);
 }
 
-/* CG's start on chunk k: grad = w_F at x (KeaGather + eps x - r), step = 0, res = -grad, z = P^-1 res,
- * dir = z; its partial res . z. (Each chunk writes its own positions of the work's arrays.) */
+/* CG's start on chunk k: grad = w_F at x (J_F dv + eps x - r), step = 0, res = -grad, z = P^-1 res,
+ * dir = z; its partial res . z. The packs in one pass of lanes (KeaPacksCgStart), then the pieces.
+ * (Each chunk writes its own positions of the work's arrays.) */
 static void KeaCgStartChunks(int start, int end, int worker, void *data)
 {
     const KeaSmTask *t = data;
     const KeaIterativeWork *w = t->w;
-    int k, r[6], p, i;
+    int k, r[6], p, i, p0;
     (void)worker;
     for (k = start; k < end; ++k) {
+        KeaLanes acc = KeaLanesSplat(ME_R(0.0));
         KeaSmChunk(t, k, r);
-        KeaGatherChunk(w, w->dv, w->grad, r);
-        for (p = r[4]; p < r[5]; ++p) {
+        KeaPacksCgStart(w, r[0], r[1], &acc);
+        p0 = KeaPiecesFrom(r);
+        KeaGather(w, w->dv, w->grad, r[2], r[3]);
+        for (p = p0; p < r[5]; ++p) {
             i = w->freeRows[p];
             w->epsFree[p] = w->eps[i];
             w->grad[p] = w->grad[p] + w->eps[i] * t->x[i] - t->problem->rhs[i];
             w->step[p] = ME_R(0.0);
             w->res[p] = -w->grad[p];
         }
-        KeaPacksClearMasked(w, w->grad, r[0], r[1]); /* a masked row's position holds 0 (kea_contact_packs.h) */
-        KeaPacksClearMasked(w, w->res, r[0], r[1]);
-        t->partial[k] = KeaPreconditionChunk(w, r);
-        for (p = r[4]; p < r[5]; ++p)
+        KeaPrecondition(w, w->res, w->z, r[2], r[3]);
+        t->partial[k] = r[1] > r[0] ? KeaDotFrom(acc, w->res + p0, w->z + p0, r[5] - p0)
+                                    : KeaDotN4(w->res + p0, w->z + p0, r[5] - p0);
+        for (p = p0; p < r[5]; ++p)
             w->dir[p] = w->z[p];
     }
 }
@@ -346,12 +363,17 @@ static void KeaCgProductChunks(int start, int end, int worker, void *data)
 {
     const KeaSmTask *t = data;
     const KeaIterativeWork *w = t->w;
-    int k, r[6];
+    int k, r[6], p0;
     (void)worker;
     for (k = start; k < end; ++k) {
+        KeaLanes acc = KeaLanesSplat(ME_R(0.0));
+        MeReal sum[4];
         KeaSmChunk(t, k, r);
-        KeaGatherChunk(w, w->dvTmp, w->q, r);
-        t->partial[k] = KeaAddEpsDot(w->q + r[4], w->epsFree + r[4], w->dir + r[4], r[5] - r[4]);
+        KeaPacksCgProduct(w, r[0], r[1], &acc);
+        KeaLanesStore(sum, acc);
+        p0 = KeaPiecesFrom(r);
+        KeaGather(w, w->dvTmp, w->q, r[2], r[3]);
+        t->partial[k] = KeaAddEpsDot(sum, w->q + p0, w->epsFree + p0, w->dir + p0, r[5] - p0);
     }
 }
 
@@ -360,12 +382,17 @@ static void KeaCgUpdateChunks(int start, int end, int worker, void *data)
 {
     const KeaSmTask *t = data;
     const KeaIterativeWork *w = t->w;
-    int k, r[6];
+    int k, r[6], p0;
     (void)worker;
     for (k = start; k < end; ++k) {
+        KeaLanes acc = KeaLanesSplat(ME_R(0.0));
         KeaSmChunk(t, k, r);
-        KeaCgUpdate(r[5] - r[4], t->a, w->dir + r[4], w->q + r[4], w->step + r[4], w->res + r[4]);
-        t->partial[k] = KeaPreconditionChunk(w, r);
+        KeaPacksCgUpdate(w, t->a, r[0], r[1], &acc);
+        p0 = KeaPiecesFrom(r);
+        KeaCgUpdate(r[5] - p0, t->a, w->dir + p0, w->q + p0, w->step + p0, w->res + p0);
+        KeaPrecondition(w, w->res, w->z, r[2], r[3]);
+        t->partial[k] = r[1] > r[0] ? KeaDotFrom(acc, w->res + p0, w->z + p0, r[5] - p0)
+                                    : KeaDotN4(w->res + p0, w->z + p0, r[5] - p0);
     }
 }
 
@@ -467,7 +494,7 @@ static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w
 int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x)
 {
     const int n = problem->nRows;
-    int i, nFree, listed, changed, steps;
+    int b, i, nFree, listed, changed, steps;
     KeaSmTask t;
     MeReal one;
 
@@ -487,13 +514,14 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
     }
     listed = KeaPacksListFree(w, x);
     nFree = KEA_PACK_POSITIONS * w->nPacks;
-    for (i = 0; i < n; ++i)
-        if (w->wasFree[i] && !w->packed[i]) { /* not a contact's row */
-            KeaRowBoundsInline(problem, x, i, &w->lo[nFree], &w->hi[nFree]);
-            w->xFree[nFree] = x[i];
-            w->freeRows[nFree++] = i;
-            ++listed;
-        }
+    for (b = 0; b < w->nBlocks && w->nContactBlocks < w->nBlocks; ++b) /* rows in order */
+        for (i = w->blockStart[b]; i < w->blockStart[b + 1] && !w->blockContact[b]; ++i)
+            if (w->wasFree[i]) { /* not a contact's row: those are in the packs */
+                KeaRowBoundsInline(problem, x, i, &w->lo[nFree], &w->hi[nFree]);
+                w->xFree[nFree] = x[i];
+                w->freeRows[nFree++] = i;
+                ++listed;
+            }
     if (listed == 0)
         return 0;
     KeaFindSegments(w, KEA_PACK_POSITIONS * w->nPacks, nFree);
