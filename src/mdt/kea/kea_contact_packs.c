@@ -162,20 +162,28 @@ int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x)
     return listed;
 }
 
-void KeaPacksGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, int first, int last)
-{
-    const KeaContactPack *packs = w->packs;
-    int k;
-    for (k = first; k < last; ++k)
-        KeaPackGather(&packs[k], dv, out + KEA_PACK_POSITIONS * k);
-}
-
 void KeaPacksScatter(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, int first, int last)
 {
     const KeaContactPack *packs = w->packs;
     int k;
     for (k = first; k < last; ++k)
         KeaPackScatter(&packs[k], v + KEA_PACK_POSITIONS * k, dv, -1);
+}
+
+void KeaPacksScatterDirection(const KeaIterativeWork *w, MeReal beta, int first, int last)
+{
+    const KeaContactPack *packs = w->packs;
+    const KeaLanes b = KeaLanesSplat(beta);
+    int k, r;
+    for (k = first; k < last; ++k) {
+        MeReal *dir = w->dir + KEA_PACK_POSITIONS * k;
+        const MeReal *z = w->z + KEA_PACK_POSITIONS * k;
+        for (r = 0; r < 3; ++r) {
+            const int o = KEA_PACK_LANES * r;
+            KeaLanesStoreA(dir + o, KeaLanesAdd(KeaLanesLoadA(z + o), KeaLanesMul(b, KeaLanesLoadA(dir + o))));
+        }
+        KeaPackScatter(&packs[k], dir, w->dvTmp, -1);
+    }
 }
 
 void KeaPacksScatterSplit(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, const int *order, int first,
@@ -263,4 +271,27 @@ void KeaPacksCgUpdate(const KeaIterativeWork *w, MeReal a, int first, int last, 
             sum = KeaLanesAdd(sum, KeaLanesMul(KeaLanesLoadA(res + KEA_PACK_LANES * r), KeaLanesLoadA(z + KEA_PACK_LANES * r)));
     }
     *acc = sum;
+}
+
+MeReal KeaPacksTrial(const KeaIterativeWork *w, int first, int last, MeReal df)
+{
+    const KeaContactPack *packs = w->packs;
+    const KeaVel4 *dv = w->dvTmp;
+    const KeaLanes half = KeaLanesSplat(ME_R(0.5));
+    int k, r, l;
+    for (k = first; k < last; ++k) {
+        const int base = KEA_PACK_POSITIONS * k;
+        KeaLanes g[3];
+        KeaPackGatherLanes(&packs[k], dv, g);
+        for (r = 0; r < 3; ++r) {
+            const int o = base + KEA_PACK_LANES * r;
+            const KeaLanes s = KeaLanesLoadA(w->z + o);
+            const KeaLanes As = KeaLanesAdd(g[r], KeaLanesMul(KeaLanesLoadA(w->epsFree + o), s));
+            _Alignas(16) MeReal term[KEA_PACK_LANES];
+            KeaLanesStoreA(term, KeaLanesMul(s, KeaLanesAdd(KeaLanesLoadA(w->grad + o), KeaLanesMul(half, As))));
+            for (l = 0; l < KEA_PACK_LANES; ++l)
+                df += term[l];
+        }
+    }
+    return df;
 }

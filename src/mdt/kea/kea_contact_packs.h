@@ -195,10 +195,11 @@ void KeaPacksFill(const KeaProblem *problem, KeaIterativeWork *w);
  * region's bounds and x (lo, hi, xFree at its positions; 0 for a masked row, up to the sign of a
  * zero); returns the free rows. (freeRows and epsFree of the region: KeaPacksFill, once.) */
 int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x);
-/* out[p] = J_p dv over the packs' positions (masked rows 0). */
-void KeaPacksGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, int first, int last);
 /* dv += M^-1 J^T v over the packs' positions. */
 void KeaPacksScatter(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, int first, int last);
+/* CG's next direction and its scatter in one pass: dir = z + beta dir, then dvTmp += M^-1 J^T dir,
+ * over the packs' positions (the same bits as the two passes). */
+void KeaPacksScatterDirection(const KeaIterativeWork *w, MeReal beta, int first, int last);
 /* The same for packs order[j], j in [first, last), the world's dv (nb) not written: a split solve's
  * colour of packs sharing no body but the world (KeaSplitPacks), on several workers at once. */
 void KeaPacksScatterSplit(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, const int *order, int first,
@@ -214,5 +215,8 @@ void KeaPacksCgStart(const KeaIterativeWork *w, int first, int last, KeaLanes *a
 void KeaPacksCgProduct(const KeaIterativeWork *w, int first, int last, KeaLanes *acc);
 /* CG's update: step += a dir, res -= a q, z = P^-1 res; acc: res . z. */
 void KeaPacksCgUpdate(const KeaIterativeWork *w, MeReal a, int first, int last, KeaLanes *acc);
+/* The line search's trial (z: the trial step s, dvTmp its scatter): returns df + sum s (grad + 1/2
+ * (J dvTmp + eps s)), each position's term added in position order (one sum, as SM's scalar loop). */
+MeReal KeaPacksTrial(const KeaIterativeWork *w, int first, int last, MeReal df);
 
 #endif

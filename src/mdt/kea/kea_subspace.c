@@ -130,7 +130,7 @@ static void KeaScatter(const KeaProblem *problem, KeaIterativeWork *w, const MeR
 }
 
 /* out[p] = J_i . dv of the free rows of pieces [k0, k1) (a piece at a time, as KeaScatter; the packs'
- * positions by KeaPacksGather). */
+ * positions by KeaPacksCg*, KeaPacksTrial). */
 static void KeaGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, int k0, int k1)
 {
     const KeaFreePiece *pieces = w->pieces;
@@ -218,7 +218,8 @@ static MeReal KeaAddEpsDot(const MeReal sum[4], MeReal *q, const MeReal *eps, co
 }
 
 /* a . b over n entries with KeaDotN4's sums, carried on from the lanes acc (the sums of the packs'
- * positions before a, at least four of them, KeaPacksCgStart's): KeaDotN4 over the whole range. */
+ * positions before a, KeaPacksCgStart's; zeros for none): KeaDotN4 over the whole range, to the bit
+ * (with fewer than four entries in all, (s0 + 0) + (0 + 0) is KeaDotN4's s0 + 0). */
 static MeReal KeaDotFrom(KeaLanes acc, const MeReal *a, const MeReal *b, int n)
 {
     MeReal s[4];
@@ -279,6 +280,22 @@ static void KeaCgDirection(int nFree, MeReal beta, const MeReal *restrict z, MeR
         dir[p] = z[p] + beta * dir[p];
 }
 
+/* CG's next direction, dir = z + beta dir, and its scatter dvTmp = M^-1 J_F^T dir: not split, in one
+ * pass over the packs (KeaPacksScatterDirection), then the pieces; split, the direction first. */
+static void KeaScatterDirection(const KeaProblem *problem, KeaIterativeWork *w, int nFree, MeReal beta)
+{
+    const int p0 = KEA_PACK_POSITIONS * w->nPacks;
+    if (w->split) {
+        KeaCgDirection(nFree, beta, w->z, w->dir);
+        KeaScatter(problem, w, w->dir);
+        return;
+    }
+    memset(w->dvTmp, 0, sizeof(KeaVel4) * (size_t)(problem->nBodies + 1));
+    KeaPacksScatterDirection(w, beta, 0, w->nPacks);
+    KeaCgDirection(nFree - p0, beta, w->z + p0, w->dir + p0);
+    KeaScatterPieces(w, w->dir, NULL, 0, w->nPieces);
+}
+
 /* The line search's trial step z = mid(lo, xF + scale step, hi) - xF over the free list (xF, lo
  * and hi by position), element by element as KeaCgUpdate. Size: separate restrict arrays, so that
  * the compiler vectorises the loop (a struct of them would hide that they do not alias). */
@@ -315,13 +332,6 @@ static void KeaSmChunk(const KeaSmTask *t, int k, int r[6])
     }
 }
 
-/* out = J_F dv over chunk k's packs and pieces (r: KeaSmChunk's ranges). */
-static void KeaGatherChunk(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, const int r[6])
-{
-    KeaPacksGather(w, dv, out, r[0], r[1]);
-    KeaGather(w, dv, out, r[2], r[3]);
-}
-
 /* The first position of chunk k's pieces (r: KeaSmChunk's ranges): after its packs' positions. */
 static int KeaPiecesFrom(const int r[6])
 {
@@ -351,8 +361,7 @@ static void KeaCgStartChunks(int start, int end, int worker, void *data)
             w->res[p] = -w->grad[p];
         }
         KeaPrecondition(w, w->res, w->z, r[2], r[3]);
-        t->partial[k] = r[1] > r[0] ? KeaDotFrom(acc, w->res + p0, w->z + p0, r[5] - p0)
-                                    : KeaDotN4(w->res + p0, w->z + p0, r[5] - p0);
+        t->partial[k] = KeaDotFrom(acc, w->res + p0, w->z + p0, r[5] - p0);
         for (p = p0; p < r[5]; ++p)
             w->dir[p] = w->z[p];
     }
@@ -391,13 +400,13 @@ static void KeaCgUpdateChunks(int start, int end, int worker, void *data)
         p0 = KeaPiecesFrom(r);
         KeaCgUpdate(r[5] - p0, t->a, w->dir + p0, w->q + p0, w->step + p0, w->res + p0);
         KeaPrecondition(w, w->res, w->z, r[2], r[3]);
-        t->partial[k] = r[1] > r[0] ? KeaDotFrom(acc, w->res + p0, w->z + p0, r[5] - p0)
-                                    : KeaDotN4(w->res + p0, w->z + p0, r[5] - p0);
+        t->partial[k] = KeaDotFrom(acc, w->res + p0, w->z + p0, r[5] - p0);
     }
 }
 
 /* The line search's trial on chunk k: q = J_F dvTmp (KeaScatter of the trial step z before); its
- * partial of the objective's change, sum z (grad + 1/2 (q + eps z)). */
+ * partial of the objective's change, sum z (grad + 1/2 (q + eps z)), position by position (the packs
+ * by KeaPacksTrial, then the pieces). */
 static void KeaTrialChunks(int start, int end, int worker, void *data)
 {
     const KeaSmTask *t = data;
@@ -405,10 +414,11 @@ static void KeaTrialChunks(int start, int end, int worker, void *data)
     int k, r[6], p;
     (void)worker;
     for (k = start; k < end; ++k) {
-        MeReal df = ME_R(0.0);
+        MeReal df;
         KeaSmChunk(t, k, r);
-        KeaGatherChunk(w, w->dvTmp, w->q, r);
-        for (p = r[4]; p < r[5]; ++p) {
+        df = KeaPacksTrial(w, r[0], r[1], ME_R(0.0));
+        KeaGather(w, w->dvTmp, w->q, r[2], r[3]);
+        for (p = KeaPiecesFrom(r); p < r[5]; ++p) {
             const MeReal As = w->q[p] + w->epsFree[p] * w->z[p];
             df += w->z[p] * (w->grad[p] + ME_R(0.5) * As);
         }
@@ -437,7 +447,7 @@ static MeReal KeaSmRun(KeaSmTask *t, KeaTaskFn task)
  * set to w_F at x); returns the CG steps taken (at most maxSteps). Sets smRan when CG can start. */
 static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, KeaSmTask *t, int maxSteps)
 {
-    MeReal rz, rz0;
+    MeReal rz, rz0, beta = ME_R(0.0);
     int steps = 0;
     rz = rz0 = KeaSmRun(t, KeaCgStartChunks);
     if (!(rz0 > ME_R(0.0)))
@@ -445,8 +455,11 @@ static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, KeaSmTa
     w->smRan = 1;
     w->smDecrease = ME_R(0.0);
     while (steps < maxSteps) {
-        MeReal pq, rzNew, beta;
-        KeaScatter(problem, w, w->dir);
+        MeReal pq, rzNew;
+        if (steps == 0)
+            KeaScatter(problem, w, w->dir);
+        else /* the direction made where it is scattered (none made after the last step) */
+            KeaScatterDirection(problem, w, t->nFree, beta);
         pq = KeaSmRun(t, KeaCgProductChunks);
         if (!(pq > ME_R(0.0)))
             break;
@@ -456,7 +469,6 @@ static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, KeaSmTa
         if (!(rzNew > KEA_SM_CG_STOP * rz0))
             break;
         beta = rzNew / rz;
-        KeaCgDirection(t->nFree, beta, w->z, w->dir);
         rz = rzNew;
     }
     return steps;
