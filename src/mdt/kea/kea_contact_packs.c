@@ -230,22 +230,29 @@ void KeaPacksCgStart(const KeaIterativeWork *w, int first, int last, KeaLanes *a
     *acc = sum;
 }
 
+/* (A_FF v) at pack k's positions, in lanes: q[r] = J_r dvTmp + eps_r v_r (dvTmp: the scatter of v). */
+static inline void KeaPackProduct(const KeaIterativeWork *w, int k, const MeReal *v, KeaLanes q[3])
+{
+    const int base = KEA_PACK_POSITIONS * k;
+    int r;
+    KeaPackGatherLanes(&w->packs[k], w->dvTmp, q);
+    for (r = 0; r < 3; ++r) {
+        const int o = base + KEA_PACK_LANES * r;
+        q[r] = KeaLanesAdd(q[r], KeaLanesMul(KeaLanesLoadA(w->epsFree + o), KeaLanesLoadA(v + o)));
+    }
+}
+
 void KeaPacksCgProduct(const KeaIterativeWork *w, int first, int last, KeaLanes *acc)
 {
-    const KeaContactPack *packs = w->packs;
-    const KeaVel4 *dv = w->dvTmp;
     KeaLanes sum = *acc;
     int k, r;
     for (k = first; k < last; ++k) {
-        const int base = KEA_PACK_POSITIONS * k;
-        KeaLanes g[3];
-        KeaPackGatherLanes(&packs[k], dv, g);
+        KeaLanes q[3];
+        KeaPackProduct(w, k, w->dir, q);
         for (r = 0; r < 3; ++r) {
-            const int o = base + KEA_PACK_LANES * r;
-            const KeaLanes d = KeaLanesLoadA(w->dir + o);
-            const KeaLanes q = KeaLanesAdd(g[r], KeaLanesMul(KeaLanesLoadA(w->epsFree + o), d));
-            KeaLanesStoreA(w->q + o, q);
-            sum = KeaLanesAdd(sum, KeaLanesMul(d, q));
+            const int o = KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r;
+            KeaLanesStoreA(w->q + o, q[r]);
+            sum = KeaLanesAdd(sum, KeaLanesMul(KeaLanesLoadA(w->dir + o), q[r]));
         }
     }
     *acc = sum;
@@ -275,20 +282,16 @@ void KeaPacksCgUpdate(const KeaIterativeWork *w, MeReal a, int first, int last, 
 
 MeReal KeaPacksTrial(const KeaIterativeWork *w, int first, int last, MeReal df)
 {
-    const KeaContactPack *packs = w->packs;
-    const KeaVel4 *dv = w->dvTmp;
     const KeaLanes half = KeaLanesSplat(ME_R(0.5));
     int k, r, l;
     for (k = first; k < last; ++k) {
-        const int base = KEA_PACK_POSITIONS * k;
-        KeaLanes g[3];
-        KeaPackGatherLanes(&packs[k], dv, g);
+        KeaLanes As[3];
+        KeaPackProduct(w, k, w->z, As);
         for (r = 0; r < 3; ++r) {
-            const int o = base + KEA_PACK_LANES * r;
-            const KeaLanes s = KeaLanesLoadA(w->z + o);
-            const KeaLanes As = KeaLanesAdd(g[r], KeaLanesMul(KeaLanesLoadA(w->epsFree + o), s));
+            const int o = KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r;
             _Alignas(16) MeReal term[KEA_PACK_LANES];
-            KeaLanesStoreA(term, KeaLanesMul(s, KeaLanesAdd(KeaLanesLoadA(w->grad + o), KeaLanesMul(half, As))));
+            KeaLanesStoreA(term, KeaLanesMul(KeaLanesLoadA(w->z + o),
+                                             KeaLanesAdd(KeaLanesLoadA(w->grad + o), KeaLanesMul(half, As[r]))));
             for (l = 0; l < KEA_PACK_LANES; ++l)
                 df += term[l];
         }
