@@ -30,16 +30,6 @@ typedef struct Fixture {
 
 static Fixture fx;
 
-static MeReal random_value(KtRng *r)
-{
-    const double u = kt_uniform(r);
-    if (u < 0.05)
-        return ME_R(0.0);
-    return (MeReal)(kt_range(r, -1.0, 1.0) * (u < 0.5 ? 1.0 : 1e3 * kt_uniform(r)));
-}
-
-static int same_bits(MeReal a, MeReal b) { return memcmp(&a, &b, sizeof a) == 0; }
-
 static int lanes_of(int k) { return k == NP - 1 ? 3 : KEA_PACK_LANES; }
 
 static int used(int k, int l) { return l < lanes_of(k); }
@@ -63,28 +53,28 @@ static void make_fixture(KtRng *rng)
             for (r = 0; r < 2; ++r)
                 pack->mu[r][l] = u ? (kt_uniform(rng) < 0.2 ? MEINFINITY : (MeReal)kt_range(rng, 0.0, 1.0)) : ME_R(0.0);
             for (r = 0; r < 3; ++r) {
-                pack->rhs[r][l] = u ? random_value(rng) : ME_R(0.0);
+                pack->rhs[r][l] = u ? kt_mixed_value(rng) : ME_R(0.0);
                 pack->invDiag[r][l] = u ? (MeReal)kt_range(rng, 0.01, 10.0) : ME_R(0.0);
                 for (c = 0; c < 12; ++c) {
                     const int world = c >= 6 && pack->body[1][l] == NB;
-                    pack->J[r][c][l] = u && !world ? random_value(rng) : ME_R(0.0);
-                    pack->B[r][c][l] = u && !world ? random_value(rng) : ME_R(0.0);
+                    pack->J[r][c][l] = u && !world ? kt_mixed_value(rng) : ME_R(0.0);
+                    pack->B[r][c][l] = u && !world ? kt_mixed_value(rng) : ME_R(0.0);
                 }
                 for (c = 0; c <= r; ++c)
-                    pack->inv[3 * r + c][l] = pack->inv[3 * c + r][l] = pack->live[l] ? random_value(rng) : ME_R(0.0);
+                    pack->inv[3 * r + c][l] = pack->inv[3 * c + r][l] = pack->live[l] ? kt_mixed_value(rng) : ME_R(0.0);
             }
         }
     }
     for (b = 0; b < NB; ++b)
         for (c = 0; c < 3; ++c) {
-            fx.dv[b].lin[c] = random_value(rng);
-            fx.dv[b].ang[c] = random_value(rng);
-            fx.dvTmp[b].lin[c] = random_value(rng);
-            fx.dvTmp[b].ang[c] = random_value(rng);
+            fx.dv[b].lin[c] = kt_mixed_value(rng);
+            fx.dv[b].ang[c] = kt_mixed_value(rng);
+            fx.dvTmp[b].lin[c] = kt_mixed_value(rng);
+            fx.dvTmp[b].ang[c] = kt_mixed_value(rng);
         }
     for (r = 0; r < NPOS; ++r) {
         fx.was[r] = kt_uniform(rng) < 0.7;
-        fx.x[r] = r % 3 == 0 && kt_uniform(rng) < 0.2 ? -random_value(rng) * random_value(rng) : random_value(rng);
+        fx.x[r] = r % 3 == 0 && kt_uniform(rng) < 0.2 ? -kt_mixed_value(rng) * kt_mixed_value(rng) : kt_mixed_value(rng);
         if (r % 3 == 0 && kt_uniform(rng) < 0.3)
             fx.x[r] = (MeReal)kt_range(rng, 2.0, 10.0); /* with mu = MEINFINITY: an infinite bound */
         fx.epsFree[r] = kt_uniform(rng) < 0.3 ? ME_R(0.0) : (MeReal)kt_range(rng, 1e-6, 1e-2);
@@ -121,7 +111,7 @@ static void assert_rows(const MeReal *got, const MeReal *expect)
         if (masked(p))
             assert_true(got[p] == ME_R(0.0));
         else
-            assert_true(same_bits(got[p], expect[p]));
+            assert_true(kt_same_bits(got[p], expect[p]));
 }
 
 /* KeaDotN4's value from the lanes a pass left. */
@@ -137,7 +127,7 @@ static void random_vector(KtRng *rng, MeReal *v)
 {
     int p;
     for (p = 0; p < NPOS; ++p)
-        v[p] = masked(p) ? ME_R(0.0) : random_value(rng);
+        v[p] = masked(p) ? ME_R(0.0) : kt_mixed_value(rng);
 }
 
 /* The bounds are the contact step's (normal [0, hi], friction +-mu max(n, 0)) at a free row, and
@@ -165,9 +155,9 @@ static void listed_bounds_are_the_contact_steps(void **state)
                     expectListed += on;
                     assert_true(pack->mask[r][l] == (on ? ME_R(1.0) : ME_R(0.0)));
                     if (on) {
-                        assert_true(same_bits(fx.lo[p], r == 0 ? ME_R(0.0) : -bound));
-                        assert_true(same_bits(fx.hi[p], bound));
-                        assert_true(same_bits(fx.xFree[p], fx.x[s + r]));
+                        assert_true(kt_same_bits(fx.lo[p], r == 0 ? ME_R(0.0) : -bound));
+                        assert_true(kt_same_bits(fx.hi[p], bound));
+                        assert_true(kt_same_bits(fx.xFree[p], fx.x[s + r]));
                     } else {
                         assert_true(fx.lo[p] == ME_R(0.0) && fx.hi[p] == ME_R(0.0) && fx.xFree[p] == ME_R(0.0));
                     }
@@ -215,7 +205,7 @@ static void cg_passes_are_the_element_loops(void **state)
         assert_rows(fx.dir, z);
         for (p = 0; p < NPOS; ++p)
             assert_true(fx.step[p] == ME_R(0.0));
-        assert_true(same_bits(lanes_sum(acc), expect));
+        assert_true(kt_same_bits(lanes_sum(acc), expect));
 
         /* the product: q = J dvTmp + eps dir, dir . q */
         random_vector(&rng, fx.dir);
@@ -227,10 +217,10 @@ static void cg_passes_are_the_element_loops(void **state)
         acc = KeaLanesSplat(ME_R(0.0));
         KeaPacksCgProduct(&fx.w, 0, NP, &acc);
         assert_rows(fx.q, q);
-        assert_true(same_bits(lanes_sum(acc), expect));
+        assert_true(kt_same_bits(lanes_sum(acc), expect));
 
         /* the update: step += a dir, res -= a q, z = P^-1 res, res . z */
-        a = random_value(&rng);
+        a = kt_mixed_value(&rng);
         random_vector(&rng, fx.step);
         random_vector(&rng, fx.res);
         for (p = 0; p < NPOS; ++p) {
@@ -245,10 +235,10 @@ static void cg_passes_are_the_element_loops(void **state)
         assert_rows(fx.step, step);
         assert_rows(fx.res, res);
         assert_rows(fx.z, z);
-        assert_true(same_bits(lanes_sum(acc), expect));
+        assert_true(kt_same_bits(lanes_sum(acc), expect));
 
         /* the next direction and its scatter in one pass: dir = z + beta dir, dvTmp += M^-1 J^T dir */
-        beta = random_value(&rng);
+        beta = kt_mixed_value(&rng);
         for (p = 0; p < NPOS; ++p)
             dir[p] = fx.z[p] + beta * fx.dir[p];
         memcpy(dvExpect, fx.dvTmp, sizeof dvExpect);
@@ -265,7 +255,7 @@ static void cg_passes_are_the_element_loops(void **state)
         df = ME_R(0.0);
         for (p = 0; p < NPOS; ++p)
             df += fx.z[p] * (fx.grad[p] + ME_R(0.5) * (q[p] + fx.epsFree[p] * fx.z[p]));
-        assert_true(same_bits(KeaPacksTrial(&fx.w, 0, NP, ME_R(0.0)), df));
+        assert_true(kt_same_bits(KeaPacksTrial(&fx.w, 0, NP, ME_R(0.0)), df));
     }
 }
 
