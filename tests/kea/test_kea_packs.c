@@ -1,9 +1,9 @@
 /* test_kea_packs.c -- subspace minimisation's passes over the packs of four contacts
  * (kea_contact_packs.c: KeaPacksListFree, KeaPacksCgStart, KeaPacksCgProduct, KeaPacksCgUpdate,
- * KeaPacksScatterDirection, KeaPacksTrial) give every free row the bits of the element-by-element
- * loops they replaced (a pack kernel, then the vector arithmetic position by position), every dot
- * product the bits of KeaDotN4's four sums, and every masked row 0: the "same trajectories" claim
- * of docs/kea.md ("SM's passes, one per product") rests on it. */
+ * KeaPacksScatterDirection, KeaPacksTrial, KeaPacksApply) give every free row the bits of the
+ * element-by-element loops they replaced (a pack kernel, then the vector arithmetic position by
+ * position), every dot product the bits of KeaDotN4's four sums, and every masked row 0: the "same
+ * trajectories" claim of docs/kea.md ("SM's passes, one per product") rests on it. */
 #include "karma_test.h"
 
 #include <float.h>
@@ -172,7 +172,8 @@ static void listed_bounds_are_the_contact_steps(void **state)
 }
 
 /* CG's start, product, update and the direction's scatter against the pack kernels followed by
- * the element-by-element loops of before, and the line search's trial against its one sum. */
+ * the element-by-element loops of before, the line search's trial against its one sum, and the
+ * accepted step against the loop over positions. */
 static void cg_passes_are_the_element_loops(void **state)
 {
     KtRng rng = {777};
@@ -181,6 +182,7 @@ static void cg_passes_are_the_element_loops(void **state)
     for (trial = 0; trial < 300; ++trial) {
         _Alignas(16) MeReal g[NPOS], grad[NPOS], res[NPOS], z[NPOS], q[NPOS], step[NPOS], dir[NPOS];
         KeaVel4 dvExpect[NB + 1];
+        MeReal xExpect[NPOS];
         KeaLanes acc;
         MeReal expect, a, beta, df;
         make_fixture(&rng);
@@ -256,6 +258,16 @@ static void cg_passes_are_the_element_loops(void **state)
         for (p = 0; p < NPOS; ++p)
             df += fx.z[p] * (fx.grad[p] + ME_R(0.5) * (q[p] + fx.epsFree[p] * fx.z[p]));
         assert_true(kt_same_bits(KeaPacksTrial(&fx.w, 0, NP, ME_R(0.0)), df));
+
+        /* the accepted step: x += s at every position whose s is not 0 (a masked row's x untouched) */
+        memcpy(xExpect, fx.x, sizeof xExpect);
+        for (p = 0; p < NPOS; ++p) {
+            const KeaContactPack *pack = &fx.packs[p / KEA_PACK_POSITIONS];
+            if (fx.z[p] != ME_R(0.0))
+                xExpect[pack->row[p % KEA_PACK_LANES] + (p % KEA_PACK_POSITIONS) / KEA_PACK_LANES] += fx.z[p];
+        }
+        KeaPacksApply(&fx.w, fx.x);
+        assert_memory_equal(fx.x, xExpect, sizeof xExpect);
     }
 }
 

@@ -298,3 +298,20 @@ MeReal KeaPacksTrial(const KeaIterativeWork *w, int first, int last, MeReal df)
     }
     return df;
 }
+
+void KeaPacksApply(const KeaIterativeWork *w, MeReal *x)
+{
+    const MeReal *z = w->z;
+    int k, l, r;
+    for (k = 0; k < w->nPacks; ++k) {
+        const KeaContactPack *pack = &w->packs[k];
+        for (l = 0; l < pack->lanes; ++l) { /* a contact's three rows are consecutive in x */
+            MeReal *xc = x + pack->row[l];
+            for (r = 0; r < 3; ++r) {
+                const MeReal s = z[KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r + l];
+                if (s != ME_R(0.0))
+                    xc[r] += s;
+            }
+        }
+    }
+}

@@ -218,5 +218,8 @@ void KeaPacksCgUpdate(const KeaIterativeWork *w, MeReal a, int first, int last, 
 /* The line search's trial (z: the trial step s, dvTmp its scatter): returns df + sum s (grad + 1/2
  * (J dvTmp + eps s)), each position's term added in position order (one sum, as SM's scalar loop). */
 MeReal KeaPacksTrial(const KeaIterativeWork *w, int first, int last, MeReal df);
+/* The accepted step: x += z at every pack position whose z is not 0 (a masked row's is 0: x is left
+ * alone, the same bits as the position loop it replaces, without its list of rows). */
+void KeaPacksApply(const KeaIterativeWork *w, MeReal *x);
 
 #endif

@@ -488,7 +488,8 @@ static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w
         df = KeaSmRun(t, KeaTrialChunks); /* q is free after CG */
         if (df < ME_R(0.0)) {
             w->smDecrease = -df;
-            for (p = 0; p < nFree; ++p) /* a masked row's z is 0: it is left alone */
+            KeaPacksApply(w, x);
+            for (p = KEA_PACK_POSITIONS * w->nPacks; p < nFree; ++p)
                 if (w->z[p] != ME_R(0.0))
                     x[w->freeRows[p]] += w->z[p];
             for (b = 0; b < problem->nBodies; ++b)
