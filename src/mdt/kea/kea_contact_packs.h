@@ -13,7 +13,10 @@
  * factored block (preconditioned by the block's inverse, as a segment of the free list; a lane
  * with only some rows free, by 1 / d_i per row, as rows on their own). A masked row's position
  * holds 0 in every SM vector (its gather is multiplied by 0, its bounds and x are 0), so it adds
- * nothing to any product, sum or step.
+ * nothing to any product, sum or step. Each of CG's stages is one pass over the packs that does its
+ * vector work beside its product (KeaPacksCgStart, KeaPacksCgProduct, KeaPacksCgUpdate,
+ * KeaPacksScatterDirection, KeaPacksTrial), in the order of the element-by-element loops it
+ * replaced, so with the same bits (docs/kea.md, "SM's passes, one per product").
  *
  * The scatter adds a lane's contribution to its bodies lane by lane, in lane order: the four
  * contacts of a pack may share a body (neighbouring contacts usually do: the four corners of one
