@@ -266,16 +266,18 @@ void KeaPacksCgUpdate(const KeaIterativeWork *w, MeReal a, int first, int last, 
     int k, r;
     for (k = first; k < last; ++k) {
         const int base = KEA_PACK_POSITIONS * k;
-        MeReal *res = w->res + base, *z = w->z + base;
+        MeReal *res = w->res + base, *z = w->z + base, *step = w->step + base;
+        const MeReal *dir = w->dir + base, *q = w->q + base;
         for (r = 0; r < 3; ++r) {
             const int o = KEA_PACK_LANES * r;
-            MeReal *step = w->step + base + o;
-            KeaLanesStoreA(step, KeaLanesAdd(KeaLanesLoadA(step), KeaLanesMul(av, KeaLanesLoadA(w->dir + base + o))));
-            KeaLanesStoreA(res + o, KeaLanesSub(KeaLanesLoadA(res + o), KeaLanesMul(av, KeaLanesLoadA(w->q + base + o))));
+            KeaLanesStoreA(step + o, KeaLanesAdd(KeaLanesLoadA(step + o), KeaLanesMul(av, KeaLanesLoadA(dir + o))));
+            KeaLanesStoreA(res + o, KeaLanesSub(KeaLanesLoadA(res + o), KeaLanesMul(av, KeaLanesLoadA(q + o))));
         }
         KeaPackPrecondition(&packs[k], res, z);
-        for (r = 0; r < 3; ++r)
-            sum = KeaLanesAdd(sum, KeaLanesMul(KeaLanesLoadA(res + KEA_PACK_LANES * r), KeaLanesLoadA(z + KEA_PACK_LANES * r)));
+        for (r = 0; r < 3; ++r) {
+            const int o = KEA_PACK_LANES * r;
+            sum = KeaLanesAdd(sum, KeaLanesMul(KeaLanesLoadA(res + o), KeaLanesLoadA(z + o)));
+        }
     }
     *acc = sum;
 }

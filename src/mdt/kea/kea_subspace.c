@@ -176,7 +176,8 @@ static void KeaFindSegments(KeaIterativeWork *w, int first, int nFree)
 }
 
 /* z = P^-1 res (block-Jacobi preconditioner of the free rows) over pieces [k0, k1): a segment by its
- * block's inverse, a row on its own by 1 / d_i (the packs' contacts: KeaPackPrecondition, in KeaPacksCgStart and KeaPacksCgUpdate). */
+ * block's inverse, a row on its own by 1 / d_i (the packs' contacts: KeaPackPrecondition, in
+ * KeaPacksCgStart and KeaPacksCgUpdate). */
 static void KeaPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z, int k0, int k1)
 {
     const KeaFreePiece *pieces = w->pieces;
