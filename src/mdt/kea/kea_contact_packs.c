@@ -123,12 +123,15 @@ void KeaPacksFill(const KeaProblem *problem, KeaIterativeWork *w)
 int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x)
 {
     const unsigned char *was = w->wasFree;
+    KeaContactPack *const packs = w->packs;
+    MeReal *const los = w->lo, *const his = w->hi, *const xFs = w->xFree; /* read once: KeaPackVectors */
+    const int nPacks = w->nPacks;
     const KeaLanes minusOne = KeaLanesSplat(ME_R(-1.0)), zero = KeaLanesSplat(ME_R(0.0));
     int k, l, r, listed = 0;
-    for (k = 0; k < w->nPacks; ++k) {
-        KeaContactPack *pack = &w->packs[k];
+    for (k = 0; k < nPacks; ++k) {
+        KeaContactPack *pack = &packs[k];
         const int base = KEA_PACK_POSITIONS * k;
-        MeReal *lo = w->lo + base, *hi = w->hi + base, *xF = w->xFree + base;
+        MeReal *lo = los + base, *hi = his + base, *xF = xFs + base;
         _Alignas(16) MeReal xs[3][KEA_PACK_LANES], nPos[KEA_PACK_LANES];
         KeaLanes m[3], bound;
         int allFull = 1;
@@ -173,16 +176,19 @@ void KeaPacksScatter(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, in
 void KeaPacksScatterDirection(const KeaIterativeWork *w, MeReal beta, int first, int last)
 {
     const KeaContactPack *packs = w->packs;
+    MeReal *const dirs = w->dir;
+    const MeReal *const zs = w->z;
+    KeaVel4 *const dvTmp = w->dvTmp;
     const KeaLanes b = KeaLanesSplat(beta);
     int k, r;
     for (k = first; k < last; ++k) {
-        MeReal *dir = w->dir + KEA_PACK_POSITIONS * k;
-        const MeReal *z = w->z + KEA_PACK_POSITIONS * k;
+        MeReal *dir = dirs + KEA_PACK_POSITIONS * k;
+        const MeReal *z = zs + KEA_PACK_POSITIONS * k;
         for (r = 0; r < 3; ++r) {
             const int o = KEA_PACK_LANES * r;
             KeaLanesStoreA(dir + o, KeaLanesAdd(KeaLanesLoadA(z + o), KeaLanesMul(b, KeaLanesLoadA(dir + o))));
         }
-        KeaPackScatter(&packs[k], dir, w->dvTmp, -1);
+        KeaPackScatter(&packs[k], dir, dvTmp, -1);
     }
 }
 
@@ -196,63 +202,88 @@ void KeaPacksScatterSplit(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *d
         KeaPackScatter(&packs[order[j]], v + KEA_PACK_POSITIONS * order[j], dv, nb);
 }
 
+/* The SM arrays of the pack passes read into locals once (a four-lane store may alias anything for
+ * the compiler, which would reload every array pointer of the work after each one). */
+typedef struct KeaPackVectors {
+    MeReal *grad, *res, *z, *dir, *step, *q;
+    const MeReal *eps, *xFree;
+    const KeaContactPack *packs;
+} KeaPackVectors;
+
+static KeaPackVectors KeaPackVectorsOf(const KeaIterativeWork *w)
+{
+    KeaPackVectors v;
+    v.grad = w->grad;
+    v.res = w->res;
+    v.z = w->z;
+    v.dir = w->dir;
+    v.step = w->step;
+    v.q = w->q;
+    v.eps = w->epsFree;
+    v.xFree = w->xFree;
+    v.packs = w->packs;
+    return v;
+}
+
 void KeaPacksCgStart(const KeaIterativeWork *w, int first, int last, KeaLanes *acc)
 {
-    const KeaContactPack *packs = w->packs;
+    const KeaPackVectors v = KeaPackVectorsOf(w);
     const KeaVel4 *dv = w->dv;
     const KeaLanes minusOne = KeaLanesSplat(ME_R(-1.0)), zero = KeaLanesSplat(ME_R(0.0));
     KeaLanes sum = *acc;
     int k, r;
     for (k = first; k < last; ++k) {
-        const KeaContactPack *pack = &packs[k];
+        const KeaContactPack *pack = &v.packs[k];
         const int base = KEA_PACK_POSITIONS * k;
-        MeReal *grad = w->grad + base, *res = w->res + base, *z = w->z + base;
+        MeReal *res = v.res + base, *z = v.z + base;
         KeaLanes g[3];
         KeaPackGatherLanes(pack, dv, g);
         for (r = 0; r < 3; ++r) {
-            const int o = KEA_PACK_LANES * r;
+            const int o = base + KEA_PACK_LANES * r;
             const KeaLanes m = KeaLanesLoadA(pack->mask[r]);
-            g[r] = KeaLanesSub(KeaLanesAdd(g[r], KeaLanesMul(KeaLanesLoadA(w->epsFree + base + o),
-                                                             KeaLanesLoadA(w->xFree + base + o))),
+            g[r] = KeaLanesSub(KeaLanesAdd(g[r], KeaLanesMul(KeaLanesLoadA(v.eps + o), KeaLanesLoadA(v.xFree + o))),
                                KeaLanesLoadA(pack->rhs[r]));
             g[r] = KeaLanesMul(g[r], m);
-            KeaLanesStoreA(grad + o, g[r]);
-            KeaLanesStoreA(res + o, KeaLanesMul(g[r], minusOne));
-            KeaLanesStoreA(w->step + base + o, zero);
+            KeaLanesStoreA(v.grad + o, g[r]);
+            KeaLanesStoreA(v.res + o, KeaLanesMul(g[r], minusOne));
+            KeaLanesStoreA(v.step + o, zero);
         }
         KeaPackPrecondition(pack, res, z);
         for (r = 0; r < 3; ++r) {
             const KeaLanes zr = KeaLanesLoadA(z + KEA_PACK_LANES * r);
             sum = KeaLanesAdd(sum, KeaLanesMul(KeaLanesLoadA(res + KEA_PACK_LANES * r), zr));
-            KeaLanesStoreA(w->dir + base + KEA_PACK_LANES * r, zr);
+            KeaLanesStoreA(v.dir + base + KEA_PACK_LANES * r, zr);
         }
     }
     *acc = sum;
 }
 
-/* (A_FF v) at pack k's positions, in lanes: q[r] = J_r dvTmp + eps_r v_r (dvTmp: the scatter of v). */
-static inline void KeaPackProduct(const KeaIterativeWork *w, int k, const MeReal *v, KeaLanes q[3])
+/* (A_FF u) at pack k's positions, in lanes: q[r] = J_r dvTmp + eps_r u_r (dvTmp: the scatter of u). */
+static inline void KeaPackProduct(const KeaPackVectors *v, const KeaVel4 *dvTmp, int k, const MeReal *u,
+                                  KeaLanes q[3])
 {
     const int base = KEA_PACK_POSITIONS * k;
     int r;
-    KeaPackGatherLanes(&w->packs[k], w->dvTmp, q);
+    KeaPackGatherLanes(&v->packs[k], dvTmp, q);
     for (r = 0; r < 3; ++r) {
         const int o = base + KEA_PACK_LANES * r;
-        q[r] = KeaLanesAdd(q[r], KeaLanesMul(KeaLanesLoadA(w->epsFree + o), KeaLanesLoadA(v + o)));
+        q[r] = KeaLanesAdd(q[r], KeaLanesMul(KeaLanesLoadA(v->eps + o), KeaLanesLoadA(u + o)));
     }
 }
 
 void KeaPacksCgProduct(const KeaIterativeWork *w, int first, int last, KeaLanes *acc)
 {
+    const KeaPackVectors v = KeaPackVectorsOf(w);
+    const KeaVel4 *dvTmp = w->dvTmp;
     KeaLanes sum = *acc;
     int k, r;
     for (k = first; k < last; ++k) {
         KeaLanes q[3];
-        KeaPackProduct(w, k, w->dir, q);
+        KeaPackProduct(&v, dvTmp, k, v.dir, q);
         for (r = 0; r < 3; ++r) {
             const int o = KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r;
-            KeaLanesStoreA(w->q + o, q[r]);
-            sum = KeaLanesAdd(sum, KeaLanesMul(KeaLanesLoadA(w->dir + o), q[r]));
+            KeaLanesStoreA(v.q + o, q[r]);
+            sum = KeaLanesAdd(sum, KeaLanesMul(KeaLanesLoadA(v.dir + o), q[r]));
         }
     }
     *acc = sum;
@@ -260,20 +291,20 @@ void KeaPacksCgProduct(const KeaIterativeWork *w, int first, int last, KeaLanes 
 
 void KeaPacksCgUpdate(const KeaIterativeWork *w, MeReal a, int first, int last, KeaLanes *acc)
 {
-    const KeaContactPack *packs = w->packs;
+    const KeaPackVectors v = KeaPackVectorsOf(w);
     const KeaLanes av = KeaLanesSplat(a);
     KeaLanes sum = *acc;
     int k, r;
     for (k = first; k < last; ++k) {
         const int base = KEA_PACK_POSITIONS * k;
-        MeReal *res = w->res + base, *z = w->z + base, *step = w->step + base;
-        const MeReal *dir = w->dir + base, *q = w->q + base;
+        MeReal *res = v.res + base, *z = v.z + base, *step = v.step + base;
+        const MeReal *dir = v.dir + base, *q = v.q + base;
         for (r = 0; r < 3; ++r) {
             const int o = KEA_PACK_LANES * r;
             KeaLanesStoreA(step + o, KeaLanesAdd(KeaLanesLoadA(step + o), KeaLanesMul(av, KeaLanesLoadA(dir + o))));
             KeaLanesStoreA(res + o, KeaLanesSub(KeaLanesLoadA(res + o), KeaLanesMul(av, KeaLanesLoadA(q + o))));
         }
-        KeaPackPrecondition(&packs[k], res, z);
+        KeaPackPrecondition(&v.packs[k], res, z);
         for (r = 0; r < 3; ++r) {
             const int o = KEA_PACK_LANES * r;
             sum = KeaLanesAdd(sum, KeaLanesMul(KeaLanesLoadA(res + o), KeaLanesLoadA(z + o)));
@@ -284,16 +315,18 @@ void KeaPacksCgUpdate(const KeaIterativeWork *w, MeReal a, int first, int last, 
 
 MeReal KeaPacksTrial(const KeaIterativeWork *w, int first, int last, MeReal df)
 {
+    const KeaPackVectors v = KeaPackVectorsOf(w);
+    const KeaVel4 *dvTmp = w->dvTmp;
     const KeaLanes half = KeaLanesSplat(ME_R(0.5));
     int k, r, l;
     for (k = first; k < last; ++k) {
         KeaLanes As[3];
-        KeaPackProduct(w, k, w->z, As);
+        KeaPackProduct(&v, dvTmp, k, v.z, As);
         for (r = 0; r < 3; ++r) {
             const int o = KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r;
             _Alignas(16) MeReal term[KEA_PACK_LANES];
-            KeaLanesStoreA(term, KeaLanesMul(KeaLanesLoadA(w->z + o),
-                                             KeaLanesAdd(KeaLanesLoadA(w->grad + o), KeaLanesMul(half, As[r]))));
+            KeaLanesStoreA(term, KeaLanesMul(KeaLanesLoadA(v.z + o),
+                                             KeaLanesAdd(KeaLanesLoadA(v.grad + o), KeaLanesMul(half, As[r]))));
             for (l = 0; l < KEA_PACK_LANES; ++l)
                 df += term[l];
         }
