@@ -47,6 +47,16 @@ static inline double kt_uniform(KtRng *r)
 
 static inline double kt_range(KtRng *r, double a, double b) { return a + (b - a) * kt_uniform(r); }
 static inline int kt_int(KtRng *r, int n) { return (int)(kt_uniform(r) * n); }
+/* Random values of mixed sign and magnitude (including exact zeros), as solver data has. */
+static inline MeReal kt_mixed_value(KtRng *r)
+{
+    const double u = kt_uniform(r);
+    if (u < 0.05)
+        return ME_R(0.0);
+    return (MeReal)(kt_range(r, -1.0, 1.0) * (u < 0.5 ? 1.0 : 1e3 * kt_uniform(r)));
+}
+/* The same bits (a "same trajectory" check: -0 and +0 differ). */
+static inline int kt_same_bits(MeReal a, MeReal b) { return memcmp(&a, &b, sizeof a) == 0; }
 
 /* ---- problems ------------------------------------------------------------------------------- */
 

@@ -11,16 +11,8 @@
 #include "mdt/kea/kea_block_kernels.h"
 #include "mdt/kea/kea_contact_packs.h"
 
-/* Random values of mixed sign and magnitude (including exact zeros), as solver data has. */
-static MeReal random_value(KtRng *r)
-{
-    const double u = kt_uniform(r);
-    if (u < 0.05)
-        return ME_R(0.0);
-    return (MeReal)(kt_range(r, -1.0, 1.0) * (u < 0.5 ? 1.0 : 1e3 * kt_uniform(r)));
-}
-
-static int same_bits(MeReal a, MeReal b) { return memcmp(&a, &b, sizeof a) == 0; }
+static MeReal random_value(KtRng *r) { return kt_mixed_value(r); } /* kea_test_problems.h */
+static int same_bits(MeReal a, MeReal b) { return kt_same_bits(a, b); }
 
 static void lanes_do_the_scalar_operations(void **state)
 {

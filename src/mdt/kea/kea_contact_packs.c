@@ -50,6 +50,8 @@ static void KeaPackSet(const KeaProblem *problem, KeaIterativeWork *w, KeaContac
         pack->mu[0][l] = l < lanes ? problem->mu[s + 1] : ME_R(0.0);
         pack->mu[1][l] = l < lanes ? problem->mu[s + 2] : ME_R(0.0);
         pack->normalHi[l] = l < lanes ? problem->hi[s] : ME_R(0.0);
+        for (r = 0; r < 3; ++r)
+            pack->rhs[r][l] = l < lanes ? problem->rhs[s + r] : ME_R(0.0);
         pack->body[0][l] = l < lanes ? w->body[s][0] : problem->nBodies;
         pack->body[1][l] = l < lanes ? w->body[s][1] : problem->nBodies;
         pack->row[l] = s;
@@ -59,6 +61,20 @@ static void KeaPackSet(const KeaProblem *problem, KeaIterativeWork *w, KeaContac
     pack->pair = lanes == KEA_PACK_LANES;
     for (l = 1; l < KEA_PACK_LANES; ++l)
         pack->pair &= pack->body[0][l] == pack->body[0][0] && pack->body[1][l] == pack->body[1][0];
+}
+
+/* The free list's pack region's rows and eps, the same for every SM step of the solve (a lane with
+ * no contact: lane 0's rows, masked). */
+static void KeaPacksPositions(KeaIterativeWork *w)
+{
+    int k, l, r;
+    for (k = 0; k < w->nPacks; ++k)
+        for (r = 0; r < 3; ++r)
+            for (l = 0; l < KEA_PACK_LANES; ++l) {
+                const int p = KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r + l, i = w->packs[k].row[l] + r;
+                w->freeRows[p] = i;
+                w->epsFree[p] = w->eps[i];
+            }
 }
 
 /* The contacts in block order, four to a pack; a run of contacts on one body pair (a box on a box
@@ -96,49 +112,57 @@ void KeaPacksFill(const KeaProblem *problem, KeaIterativeWork *w)
     }
     if (mixed > 0)
         KeaPackSet(problem, w, &w->packs[w->nPacks++], mixedBlock, mixed);
+    KeaPacksPositions(w);
 }
 
 /* A contact's bounds as the contact step reads them (kea_contact_kernel.h: the normal row [0, hi],
- * the friction rows +-mu max(n, 0)); a masked row holds 0 everywhere. */
+ * the friction rows +-mu max(n, 0)), in lanes: each a row's value times its mask (1 or 0), so a
+ * free row's the same bits and a masked row's 0 (up to the sign of a zero, which no SM sum or step
+ * can see: a zero added to a sum started at +0 leaves it, and a masked row's step is never applied);
+ * a friction bound as mu (max(n, 0) mask), so that a masked row's is 0 even where mu is MEINFINITY. */
 int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x)
 {
     const unsigned char *was = w->wasFree;
+    KeaContactPack *const packs = w->packs;
+    MeReal *const los = w->lo, *const his = w->hi, *const xFs = w->xFree; /* read once: KeaPackVectors */
+    const int nPacks = w->nPacks;
+    const KeaLanes minusOne = KeaLanesSplat(ME_R(-1.0)), zero = KeaLanesSplat(ME_R(0.0));
     int k, l, r, listed = 0;
-    for (k = 0; k < w->nPacks; ++k) {
-        KeaContactPack *pack = &w->packs[k];
+    for (k = 0; k < nPacks; ++k) {
+        KeaContactPack *pack = &packs[k];
         const int base = KEA_PACK_POSITIONS * k;
-        int *freeRows = w->freeRows + base, allFull = 1;
-        MeReal *lo = w->lo + base, *hi = w->hi + base, *xF = w->xFree + base;
+        MeReal *lo = los + base, *hi = his + base, *xF = xFs + base;
+        _Alignas(16) MeReal xs[3][KEA_PACK_LANES], nPos[KEA_PACK_LANES];
+        KeaLanes m[3], bound;
+        int allFull = 1;
         for (l = 0; l < KEA_PACK_LANES; ++l) {
             const int s = pack->row[l], used = l < pack->lanes;
-            const int on[3] = {used & was[s], used & was[s + 1], used & was[s + 2]};
-            const MeReal n = x[s];
-            const MeReal bound[3] = {pack->normalHi[l], KeaFrictionBound(pack->mu[0][l], n),
-                                     KeaFrictionBound(pack->mu[1][l], n)};
-            const int full = pack->live[l] & on[0] & on[1] & on[2];
-            pack->full[l] = full ? ME_R(1.0) : ME_R(0.0);
+            const int on0 = used & was[s], on1 = used & was[s + 1], on2 = used & was[s + 2];
+            const int full = pack->live[l] & on0 & on1 & on2;
+            pack->mask[0][l] = (MeReal)on0;
+            pack->mask[1][l] = (MeReal)on1;
+            pack->mask[2][l] = (MeReal)on2;
+            pack->full[l] = (MeReal)full;
             allFull &= full;
-            for (r = 0; r < 3; ++r) {
-                const int p = KEA_PACK_LANES * r + l;
-                pack->mask[r][l] = on[r] ? ME_R(1.0) : ME_R(0.0);
-                freeRows[p] = s + r;
-                lo[p] = on[r] && r > 0 ? -bound[r] : ME_R(0.0);
-                hi[p] = on[r] ? bound[r] : ME_R(0.0);
-                xF[p] = on[r] ? x[s + r] : ME_R(0.0);
-                listed += on[r];
-            }
+            listed += on0 + on1 + on2;
+            for (r = 0; r < 3; ++r)
+                xs[r][l] = x[s + r];
+            nPos[l] = KeaMax(xs[0][l], ME_R(0.0));
         }
         pack->allFull = allFull;
+        for (r = 0; r < 3; ++r) {
+            m[r] = KeaLanesLoadA(pack->mask[r]);
+            KeaLanesStoreA(xF + KEA_PACK_LANES * r, KeaLanesMul(KeaLanesLoadA(xs[r]), m[r]));
+        }
+        KeaLanesStoreA(lo, zero);
+        KeaLanesStoreA(hi, KeaLanesMul(KeaLanesLoadA(pack->normalHi), m[0]));
+        for (r = 1; r < 3; ++r) { /* KeaFrictionBound in lanes */
+            bound = KeaLanesMul(KeaLanesLoadA(pack->mu[r - 1]), KeaLanesMul(KeaLanesLoadA(nPos), m[r]));
+            KeaLanesStoreA(hi + KEA_PACK_LANES * r, bound);
+            KeaLanesStoreA(lo + KEA_PACK_LANES * r, KeaLanesMul(bound, minusOne));
+        }
     }
     return listed;
-}
-
-void KeaPacksGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, int first, int last)
-{
-    const KeaContactPack *packs = w->packs;
-    int k;
-    for (k = first; k < last; ++k)
-        KeaPackGather(&packs[k], dv, out + KEA_PACK_POSITIONS * k);
 }
 
 void KeaPacksScatter(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, int first, int last)
@@ -147,6 +171,25 @@ void KeaPacksScatter(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, in
     int k;
     for (k = first; k < last; ++k)
         KeaPackScatter(&packs[k], v + KEA_PACK_POSITIONS * k, dv, -1);
+}
+
+void KeaPacksScatterDirection(const KeaIterativeWork *w, MeReal beta, int first, int last)
+{
+    const KeaContactPack *packs = w->packs;
+    MeReal *const dirs = w->dir;
+    const MeReal *const zs = w->z;
+    KeaVel4 *const dvTmp = w->dvTmp;
+    const KeaLanes b = KeaLanesSplat(beta);
+    int k, r;
+    for (k = first; k < last; ++k) {
+        MeReal *dir = dirs + KEA_PACK_POSITIONS * k;
+        const MeReal *z = zs + KEA_PACK_POSITIONS * k;
+        for (r = 0; r < 3; ++r) {
+            const int o = KEA_PACK_LANES * r;
+            KeaLanesStoreA(dir + o, KeaLanesAdd(KeaLanesLoadA(z + o), KeaLanesMul(b, KeaLanesLoadA(dir + o))));
+        }
+        KeaPackScatter(&packs[k], dir, dvTmp, -1);
+    }
 }
 
 void KeaPacksScatterSplit(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, const int *order, int first,
@@ -159,20 +202,151 @@ void KeaPacksScatterSplit(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *d
         KeaPackScatter(&packs[order[j]], v + KEA_PACK_POSITIONS * order[j], dv, nb);
 }
 
-void KeaPacksPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z, int first, int last)
+/* The SM arrays of the pack passes read into locals once (a four-lane store may alias anything for
+ * the compiler, which would reload every array pointer of the work after each one). */
+typedef struct KeaPackVectors {
+    MeReal *grad, *res, *z, *dir, *step, *q;
+    const MeReal *eps, *xFree;
+    const KeaContactPack *packs;
+} KeaPackVectors;
+
+static KeaPackVectors KeaPackVectorsOf(const KeaIterativeWork *w)
 {
-    const KeaContactPack *packs = w->packs;
-    int k;
-    for (k = first; k < last; ++k)
-        KeaPackPrecondition(&packs[k], res + KEA_PACK_POSITIONS * k, z + KEA_PACK_POSITIONS * k);
+    KeaPackVectors v;
+    v.grad = w->grad;
+    v.res = w->res;
+    v.z = w->z;
+    v.dir = w->dir;
+    v.step = w->step;
+    v.q = w->q;
+    v.eps = w->epsFree;
+    v.xFree = w->xFree;
+    v.packs = w->packs;
+    return v;
 }
 
-void KeaPacksClearMasked(const KeaIterativeWork *w, MeReal *v, int first, int last)
+void KeaPacksCgStart(const KeaIterativeWork *w, int first, int last, KeaLanes *acc)
 {
+    const KeaPackVectors v = KeaPackVectorsOf(w);
+    const KeaVel4 *dv = w->dv;
+    const KeaLanes minusOne = KeaLanesSplat(ME_R(-1.0)), zero = KeaLanesSplat(ME_R(0.0));
+    KeaLanes sum = *acc;
+    int k, r;
+    for (k = first; k < last; ++k) {
+        const KeaContactPack *pack = &v.packs[k];
+        const int base = KEA_PACK_POSITIONS * k;
+        MeReal *res = v.res + base, *z = v.z + base;
+        KeaLanes g[3];
+        KeaPackGatherLanes(pack, dv, g);
+        for (r = 0; r < 3; ++r) {
+            const int o = base + KEA_PACK_LANES * r;
+            const KeaLanes m = KeaLanesLoadA(pack->mask[r]);
+            g[r] = KeaLanesSub(KeaLanesAdd(g[r], KeaLanesMul(KeaLanesLoadA(v.eps + o), KeaLanesLoadA(v.xFree + o))),
+                               KeaLanesLoadA(pack->rhs[r]));
+            g[r] = KeaLanesMul(g[r], m);
+            KeaLanesStoreA(v.grad + o, g[r]);
+            KeaLanesStoreA(v.res + o, KeaLanesMul(g[r], minusOne));
+            KeaLanesStoreA(v.step + o, zero);
+        }
+        KeaPackPrecondition(pack, res, z);
+        for (r = 0; r < 3; ++r) {
+            const KeaLanes zr = KeaLanesLoadA(z + KEA_PACK_LANES * r);
+            sum = KeaLanesAdd(sum, KeaLanesMul(KeaLanesLoadA(res + KEA_PACK_LANES * r), zr));
+            KeaLanesStoreA(v.dir + base + KEA_PACK_LANES * r, zr);
+        }
+    }
+    *acc = sum;
+}
+
+/* (A_FF u) at pack k's positions, in lanes: q[r] = J_r dvTmp + eps_r u_r (dvTmp: the scatter of u). */
+static inline void KeaPackProduct(const KeaPackVectors *v, const KeaVel4 *dvTmp, int k, const MeReal *u,
+                                  KeaLanes q[3])
+{
+    const int base = KEA_PACK_POSITIONS * k;
+    int r;
+    KeaPackGatherLanes(&v->packs[k], dvTmp, q);
+    for (r = 0; r < 3; ++r) {
+        const int o = base + KEA_PACK_LANES * r;
+        q[r] = KeaLanesAdd(q[r], KeaLanesMul(KeaLanesLoadA(v->eps + o), KeaLanesLoadA(u + o)));
+    }
+}
+
+void KeaPacksCgProduct(const KeaIterativeWork *w, int first, int last, KeaLanes *acc)
+{
+    const KeaPackVectors v = KeaPackVectorsOf(w);
+    const KeaVel4 *dvTmp = w->dvTmp;
+    KeaLanes sum = *acc;
+    int k, r;
+    for (k = first; k < last; ++k) {
+        KeaLanes q[3];
+        KeaPackProduct(&v, dvTmp, k, v.dir, q);
+        for (r = 0; r < 3; ++r) {
+            const int o = KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r;
+            KeaLanesStoreA(v.q + o, q[r]);
+            sum = KeaLanesAdd(sum, KeaLanesMul(KeaLanesLoadA(v.dir + o), q[r]));
+        }
+    }
+    *acc = sum;
+}
+
+void KeaPacksCgUpdate(const KeaIterativeWork *w, MeReal a, int first, int last, KeaLanes *acc)
+{
+    const KeaPackVectors v = KeaPackVectorsOf(w);
+    const KeaLanes av = KeaLanesSplat(a);
+    KeaLanes sum = *acc;
+    int k, r;
+    for (k = first; k < last; ++k) {
+        const int base = KEA_PACK_POSITIONS * k;
+        MeReal *res = v.res + base, *z = v.z + base, *step = v.step + base;
+        const MeReal *dir = v.dir + base, *q = v.q + base;
+        for (r = 0; r < 3; ++r) {
+            const int o = KEA_PACK_LANES * r;
+            KeaLanesStoreA(step + o, KeaLanesAdd(KeaLanesLoadA(step + o), KeaLanesMul(av, KeaLanesLoadA(dir + o))));
+            KeaLanesStoreA(res + o, KeaLanesSub(KeaLanesLoadA(res + o), KeaLanesMul(av, KeaLanesLoadA(q + o))));
+        }
+        KeaPackPrecondition(&v.packs[k], res, z);
+        for (r = 0; r < 3; ++r) {
+            const int o = KEA_PACK_LANES * r;
+            sum = KeaLanesAdd(sum, KeaLanesMul(KeaLanesLoadA(res + o), KeaLanesLoadA(z + o)));
+        }
+    }
+    *acc = sum;
+}
+
+MeReal KeaPacksTrial(const KeaIterativeWork *w, int first, int last, MeReal df)
+{
+    const KeaPackVectors v = KeaPackVectorsOf(w);
+    const KeaVel4 *dvTmp = w->dvTmp;
+    const KeaLanes half = KeaLanesSplat(ME_R(0.5));
     int k, r, l;
-    for (k = first; k < last; ++k)
-        for (r = 0; r < 3; ++r)
+    for (k = first; k < last; ++k) {
+        KeaLanes As[3];
+        KeaPackProduct(&v, dvTmp, k, v.z, As);
+        for (r = 0; r < 3; ++r) {
+            const int o = KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r;
+            _Alignas(16) MeReal term[KEA_PACK_LANES];
+            KeaLanesStoreA(term, KeaLanesMul(KeaLanesLoadA(v.z + o),
+                                             KeaLanesAdd(KeaLanesLoadA(v.grad + o), KeaLanesMul(half, As[r]))));
             for (l = 0; l < KEA_PACK_LANES; ++l)
-                if (w->packs[k].mask[r][l] == ME_R(0.0))
-                    v[KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r + l] = ME_R(0.0);
+                df += term[l];
+        }
+    }
+    return df;
+}
+
+void KeaPacksApply(const KeaIterativeWork *w, MeReal *x)
+{
+    const MeReal *z = w->z;
+    int k, l, r;
+    for (k = 0; k < w->nPacks; ++k) {
+        const KeaContactPack *pack = &w->packs[k];
+        for (l = 0; l < pack->lanes; ++l) { /* a contact's three rows are consecutive in x */
+            MeReal *xc = x + pack->row[l];
+            for (r = 0; r < 3; ++r) {
+                const MeReal s = z[KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r + l];
+                if (s != ME_R(0.0))
+                    xc[r] += s;
+            }
+        }
+    }
 }

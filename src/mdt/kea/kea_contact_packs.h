@@ -13,7 +13,10 @@
  * factored block (preconditioned by the block's inverse, as a segment of the free list; a lane
  * with only some rows free, by 1 / d_i per row, as rows on their own). A masked row's position
  * holds 0 in every SM vector (its gather is multiplied by 0, its bounds and x are 0), so it adds
- * nothing to any product, sum or step.
+ * nothing to any product, sum or step. Each of CG's stages is one pass over the packs that does its
+ * vector work beside its product (KeaPacksCgStart, KeaPacksCgProduct, KeaPacksCgUpdate,
+ * KeaPacksScatterDirection, KeaPacksTrial), in the order of the element-by-element loops it
+ * replaced, so with the same bits (docs/kea.md, "SM's passes, one per product").
  *
  * The scatter adds a lane's contribution to its bodies lane by lane, in lane order: the four
  * contacts of a pack may share a body (neighbouring contacts usually do: the four corners of one
@@ -48,6 +51,7 @@ struct KeaContactPack {
     MeReal full[KEA_PACK_LANES];       /**< SM: 1 for a lane preconditioned by its inverse, else 0 */
     MeReal mu[2][KEA_PACK_LANES];      /**< the friction rows' coefficients */
     MeReal normalHi[KEA_PACK_LANES];   /**< the normal row's upper bound (its lower is 0) */
+    MeReal rhs[3][KEA_PACK_LANES];     /**< the rows' r (0 in a lane with no contact) */
     int body[2][KEA_PACK_LANES];       /**< the halves' bodies (the world, and a lane with no contact: nb) */
     int row[KEA_PACK_LANES];           /**< the contact's first row (a lane with no contact: lane 0's) */
     int live[KEA_PACK_LANES];          /**< 1 for a contact whose block is factored, else 0 */
@@ -84,11 +88,11 @@ static inline void KeaPackBody(const KeaVel4 *b, KeaLanes *v)
     }
 }
 
-/* out[4 r + l] = mask_rl J_r (v0, v1) of lane l's contact: in each lane the sums of KeaRowVel4, in
+/* out[r] = mask_rl J_r (v0, v1) of lane l's contact, in lanes: in each lane the sums of KeaRowVel4, in
  * its order (component k's two halves, then the three components), so a lane with mask 1 gives its
  * bits (on the world too, up to the sign of a zero). A pack on one body pair splats its two
  * bodies instead of transposing eight. */
-static inline void KeaPackGather(const KeaContactPack *pack, const KeaVel4 *dv, MeReal *out)
+static inline void KeaPackGatherLanes(const KeaContactPack *pack, const KeaVel4 *dv, KeaLanes out[3])
 {
     KeaLanes v[12], s[3];
     int r, k;
@@ -104,8 +108,18 @@ static inline void KeaPackGather(const KeaContactPack *pack, const KeaVel4 *dv, 
         for (k = 0; k < 3; ++k)
             s[k] = KeaLanesAdd(KeaLanesDot2L(J[k], v[k], J[3 + k], v[3 + k]),
                                KeaLanesDot2L(J[6 + k], v[6 + k], J[9 + k], v[9 + k]));
-        KeaLanesStoreA(out + 4 * r, KeaLanesMul(KeaLanesAdd(KeaLanesAdd(s[0], s[1]), s[2]), KeaLanesLoadA(pack->mask[r])));
+        out[r] = KeaLanesMul(KeaLanesAdd(KeaLanesAdd(s[0], s[1]), s[2]), KeaLanesLoadA(pack->mask[r]));
     }
+}
+
+/* out[4 r + l] = mask_rl J_r (v0, v1) of lane l's contact (KeaPackGatherLanes, stored). */
+static inline void KeaPackGather(const KeaContactPack *pack, const KeaVel4 *dv, MeReal *out)
+{
+    KeaLanes g[3];
+    int r;
+    KeaPackGatherLanes(pack, dv, g);
+    for (r = 0; r < 3; ++r)
+        KeaLanesStoreA(out + 4 * r, g[r]);
 }
 
 /* Lane l's bodies += sum_r B_r d[4 r + l], lane by lane in lane order (lanes may share a body);
@@ -181,19 +195,34 @@ static inline void KeaPackPrecondition(const KeaContactPack *pack, const MeReal 
  * mark their rows (KeaIterativeWork.packed). */
 void KeaPacksFill(const KeaProblem *problem, KeaIterativeWork *w);
 /* SM: set the rows' masks and the lanes' preconditioner from wasFree, and the free list's pack
- * region (freeRows, lo, hi, xFree at its positions; 0 for a masked row); returns the free rows. */
+ * region's bounds and x (lo, hi, xFree at its positions; 0 for a masked row, up to the sign of a
+ * zero); returns the free rows. (freeRows and epsFree of the region: KeaPacksFill, once.) */
 int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x);
-/* out[p] = J_p dv over the packs' positions (masked rows 0). */
-void KeaPacksGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, int first, int last);
 /* dv += M^-1 J^T v over the packs' positions. */
 void KeaPacksScatter(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, int first, int last);
+/* CG's next direction and its scatter in one pass: dir = z + beta dir, then dvTmp += M^-1 J^T dir,
+ * over the packs' positions (the same bits as the two passes). */
+void KeaPacksScatterDirection(const KeaIterativeWork *w, MeReal beta, int first, int last);
 /* The same for packs order[j], j in [first, last), the world's dv (nb) not written: a split solve's
  * colour of packs sharing no body but the world (KeaSplitPacks), on several workers at once. */
 void KeaPacksScatterSplit(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, const int *order, int first,
                           int last);
-/* z = A_bb^-1 res per contact over the packs' positions. */
-void KeaPacksPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z, int first, int last);
-/* v[p] = 0 at every masked row's position of packs first ... last - 1. */
-void KeaPacksClearMasked(const KeaIterativeWork *w, MeReal *v, int first, int last);
+
+/* SM's CG passes over packs first ... last - 1 in one pass each (kea_subspace.c), on the work's SM
+ * vectors at the packs' positions, a masked row's position 0 in each (up to the sign of a zero);
+ * *acc += the pass's dot product lane-wise, position 12 k + 4 r + l into lane l, in position order
+ * (KeaDotN4's sums). CG's start: grad = J dv + eps xFree - r, res = -grad, z = P^-1 res, dir = z,
+ * step = 0; acc: res . z. */
+void KeaPacksCgStart(const KeaIterativeWork *w, int first, int last, KeaLanes *acc);
+/* A_FF dir: q = J dvTmp + eps dir (dvTmp: the scatter of dir); acc: dir . q. */
+void KeaPacksCgProduct(const KeaIterativeWork *w, int first, int last, KeaLanes *acc);
+/* CG's update: step += a dir, res -= a q, z = P^-1 res; acc: res . z. */
+void KeaPacksCgUpdate(const KeaIterativeWork *w, MeReal a, int first, int last, KeaLanes *acc);
+/* The line search's trial (z: the trial step s, dvTmp its scatter): returns df + sum s (grad + 1/2
+ * (J dvTmp + eps s)), each position's term added in position order (one sum, as SM's scalar loop). */
+MeReal KeaPacksTrial(const KeaIterativeWork *w, int first, int last, MeReal df);
+/* The accepted step: x += z at every pack position whose z is not 0 (a masked row's is 0: x is left
+ * alone, the same bits as the position loop it replaces, without its list of rows). */
+void KeaPacksApply(const KeaIterativeWork *w, MeReal *x);
 
 #endif

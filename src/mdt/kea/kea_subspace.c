@@ -130,7 +130,7 @@ static void KeaScatter(const KeaProblem *problem, KeaIterativeWork *w, const MeR
 }
 
 /* out[p] = J_i . dv of the free rows of pieces [k0, k1) (a piece at a time, as KeaScatter; the packs'
- * positions by KeaPacksGather). */
+ * positions by KeaPacksCg*, KeaPacksTrial). */
 static void KeaGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, int k0, int k1)
 {
     const KeaFreePiece *pieces = w->pieces;
@@ -176,7 +176,8 @@ static void KeaFindSegments(KeaIterativeWork *w, int first, int nFree)
 }
 
 /* z = P^-1 res (block-Jacobi preconditioner of the free rows) over pieces [k0, k1): a segment by its
- * block's inverse, a row on its own by 1 / d_i (the packs' contacts: KeaPacksPrecondition). */
+ * block's inverse, a row on its own by 1 / d_i (the packs' contacts: KeaPackPrecondition, in
+ * KeaPacksCgStart and KeaPacksCgUpdate). */
 static void KeaPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z, int k0, int k1)
 {
     const KeaFreePiece *pieces = w->pieces;
@@ -192,10 +193,11 @@ static void KeaPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal
     }
 }
 
-/* q += eps p, returning p . q (the new q) in one pass: the sums of KeaDotN4, in its order. */
-static MeReal KeaAddEpsDot(MeReal *q, const MeReal *eps, const MeReal *p, int n)
+/* q += eps p, returning p . q (the new q) in one pass: the sums of KeaDotN4, in its order, carried
+ * on from sum[0 .. 3] (the sums of the positions before, a multiple of 4; zeros for none). */
+static MeReal KeaAddEpsDot(const MeReal sum[4], MeReal *q, const MeReal *eps, const MeReal *p, int n)
 {
-    MeReal s0 = ME_R(0.0), s1 = ME_R(0.0), s2 = ME_R(0.0), s3 = ME_R(0.0);
+    MeReal s0 = sum[0], s1 = sum[1], s2 = sum[2], s3 = sum[3];
     int m = 0;
     for (; m + 4 <= n; m += 4) {
         const MeReal q0 = q[m] + eps[m] * p[m], q1 = q[m + 1] + eps[m + 1] * p[m + 1];
@@ -214,6 +216,21 @@ static MeReal KeaAddEpsDot(MeReal *q, const MeReal *eps, const MeReal *p, int n)
         s0 += p[m] * q[m];
     }
     return (s0 + s1) + (s2 + s3);
+}
+
+/* a . b over n entries with KeaDotN4's sums, carried on from the lanes acc (the sums of the packs'
+ * positions before a, KeaPacksCgStart's; zeros for none): KeaDotN4 over the whole range, to the bit
+ * (with fewer than four entries in all, (s0 + 0) + (0 + 0) is KeaDotN4's s0 + 0). */
+static MeReal KeaDotFrom(KeaLanes acc, const MeReal *a, const MeReal *b, int n)
+{
+    MeReal s[4];
+    int m = 0;
+    for (; m + 4 <= n; m += 4)
+        acc = KeaLanesAdd(acc, KeaLanesMul(KeaLanesLoad(a + m), KeaLanesLoad(b + m)));
+    KeaLanesStore(s, acc);
+    for (; m < n; ++m)
+        s[0] += a[m] * b[m];
+    return (s[0] + s[1]) + (s[2] + s[3]);
 }
 
 /* Set wasFree to which rows are free now (KeaRowIsFree); returns how many rows changed. Every
@@ -264,6 +281,22 @@ static void KeaCgDirection(int nFree, MeReal beta, const MeReal *restrict z, MeR
         dir[p] = z[p] + beta * dir[p];
 }
 
+/* CG's next direction, dir = z + beta dir, and its scatter dvTmp = M^-1 J_F^T dir: not split, in one
+ * pass over the packs (KeaPacksScatterDirection), then the pieces; split, the direction first. */
+static void KeaScatterDirection(const KeaProblem *problem, KeaIterativeWork *w, int nFree, MeReal beta)
+{
+    const int p0 = KEA_PACK_POSITIONS * w->nPacks;
+    if (w->split) {
+        KeaCgDirection(nFree, beta, w->z, w->dir);
+        KeaScatter(problem, w, w->dir);
+        return;
+    }
+    memset(w->dvTmp, 0, sizeof(KeaVel4) * (size_t)(problem->nBodies + 1));
+    KeaPacksScatterDirection(w, beta, 0, w->nPacks);
+    KeaCgDirection(nFree - p0, beta, w->z + p0, w->dir + p0);
+    KeaScatterPieces(w, w->dir, NULL, 0, w->nPieces);
+}
+
 /* The line search's trial step z = mid(lo, xF + scale step, hi) - xF over the free list (xF, lo
  * and hi by position), element by element as KeaCgUpdate. Size: separate restrict arrays, so that
  * the compiler vectorises the loop (a struct of them would hide that they do not alias). */
@@ -300,43 +333,37 @@ static void KeaSmChunk(const KeaSmTask *t, int k, int r[6])
     }
 }
 
-/* out = J_F dv over chunk k's packs and pieces (r: KeaSmChunk's ranges). */
-static void KeaGatherChunk(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, const int r[6])
+/* The first position of chunk k's pieces (r: KeaSmChunk's ranges): after its packs' positions. */
+static int KeaPiecesFrom(const int r[6])
 {
-    KeaPacksGather(w, dv, out, r[0], r[1]);
-    KeaGather(w, dv, out, r[2], r[3]);
+    return r[4] + KEA_PACK_POSITIONS * (r[1] - r[0]);
 }
 
-/* z = P^-1 res over chunk k's packs and pieces; returns the chunk's partial res . z. */
-static MeReal KeaPreconditionChunk(const KeaIterativeWork *w, const int r[6])
-{
-    KeaPacksPrecondition(w, w->res, w->z, r[0], r[1]);
-    KeaPrecondition(w, w->res, w->z, r[2], r[3]);
-    return KeaDotN4(w->res + r[4], w->z + r[4], r[5] - r[4]);
-}
-
-/* CG's start on chunk k: grad = w_F at x (KeaGather + eps x - r), step = 0, res = -grad, z = P^-1 res,
- * dir = z; its partial res . z. (Each chunk writes its own positions of the work's arrays.) */
+/* CG's start on chunk k: grad = w_F at x (J_F dv + eps x - r), step = 0, res = -grad, z = P^-1 res,
+ * dir = z; its partial res . z. The packs in one pass of lanes (KeaPacksCgStart), then the pieces.
+ * (Each chunk writes its own positions of the work's arrays.) */
 static void KeaCgStartChunks(int start, int end, int worker, void *data)
 {
     const KeaSmTask *t = data;
     const KeaIterativeWork *w = t->w;
-    int k, r[6], p, i;
+    int k, r[6], p, i, p0;
     (void)worker;
     for (k = start; k < end; ++k) {
+        KeaLanes acc = KeaLanesSplat(ME_R(0.0));
         KeaSmChunk(t, k, r);
-        KeaGatherChunk(w, w->dv, w->grad, r);
-        for (p = r[4]; p < r[5]; ++p) {
+        KeaPacksCgStart(w, r[0], r[1], &acc);
+        p0 = KeaPiecesFrom(r);
+        KeaGather(w, w->dv, w->grad, r[2], r[3]);
+        for (p = p0; p < r[5]; ++p) {
             i = w->freeRows[p];
             w->epsFree[p] = w->eps[i];
             w->grad[p] = w->grad[p] + w->eps[i] * t->x[i] - t->problem->rhs[i];
             w->step[p] = ME_R(0.0);
             w->res[p] = -w->grad[p];
         }
-        KeaPacksClearMasked(w, w->grad, r[0], r[1]); /* a masked row's position holds 0 (kea_contact_packs.h) */
-        KeaPacksClearMasked(w, w->res, r[0], r[1]);
-        t->partial[k] = KeaPreconditionChunk(w, r);
-        for (p = r[4]; p < r[5]; ++p)
+        KeaPrecondition(w, w->res, w->z, r[2], r[3]);
+        t->partial[k] = KeaDotFrom(acc, w->res + p0, w->z + p0, r[5] - p0);
+        for (p = p0; p < r[5]; ++p)
             w->dir[p] = w->z[p];
     }
 }
@@ -346,12 +373,17 @@ static void KeaCgProductChunks(int start, int end, int worker, void *data)
 {
     const KeaSmTask *t = data;
     const KeaIterativeWork *w = t->w;
-    int k, r[6];
+    int k, r[6], p0;
     (void)worker;
     for (k = start; k < end; ++k) {
+        KeaLanes acc = KeaLanesSplat(ME_R(0.0));
+        MeReal sum[4];
         KeaSmChunk(t, k, r);
-        KeaGatherChunk(w, w->dvTmp, w->q, r);
-        t->partial[k] = KeaAddEpsDot(w->q + r[4], w->epsFree + r[4], w->dir + r[4], r[5] - r[4]);
+        KeaPacksCgProduct(w, r[0], r[1], &acc);
+        KeaLanesStore(sum, acc);
+        p0 = KeaPiecesFrom(r);
+        KeaGather(w, w->dvTmp, w->q, r[2], r[3]);
+        t->partial[k] = KeaAddEpsDot(sum, w->q + p0, w->epsFree + p0, w->dir + p0, r[5] - p0);
     }
 }
 
@@ -360,17 +392,22 @@ static void KeaCgUpdateChunks(int start, int end, int worker, void *data)
 {
     const KeaSmTask *t = data;
     const KeaIterativeWork *w = t->w;
-    int k, r[6];
+    int k, r[6], p0;
     (void)worker;
     for (k = start; k < end; ++k) {
+        KeaLanes acc = KeaLanesSplat(ME_R(0.0));
         KeaSmChunk(t, k, r);
-        KeaCgUpdate(r[5] - r[4], t->a, w->dir + r[4], w->q + r[4], w->step + r[4], w->res + r[4]);
-        t->partial[k] = KeaPreconditionChunk(w, r);
+        KeaPacksCgUpdate(w, t->a, r[0], r[1], &acc);
+        p0 = KeaPiecesFrom(r);
+        KeaCgUpdate(r[5] - p0, t->a, w->dir + p0, w->q + p0, w->step + p0, w->res + p0);
+        KeaPrecondition(w, w->res, w->z, r[2], r[3]);
+        t->partial[k] = KeaDotFrom(acc, w->res + p0, w->z + p0, r[5] - p0);
     }
 }
 
 /* The line search's trial on chunk k: q = J_F dvTmp (KeaScatter of the trial step z before); its
- * partial of the objective's change, sum z (grad + 1/2 (q + eps z)). */
+ * partial of the objective's change, sum z (grad + 1/2 (q + eps z)), position by position (the packs
+ * by KeaPacksTrial, then the pieces). */
 static void KeaTrialChunks(int start, int end, int worker, void *data)
 {
     const KeaSmTask *t = data;
@@ -378,10 +415,11 @@ static void KeaTrialChunks(int start, int end, int worker, void *data)
     int k, r[6], p;
     (void)worker;
     for (k = start; k < end; ++k) {
-        MeReal df = ME_R(0.0);
+        MeReal df;
         KeaSmChunk(t, k, r);
-        KeaGatherChunk(w, w->dvTmp, w->q, r);
-        for (p = r[4]; p < r[5]; ++p) {
+        df = KeaPacksTrial(w, r[0], r[1], ME_R(0.0));
+        KeaGather(w, w->dvTmp, w->q, r[2], r[3]);
+        for (p = KeaPiecesFrom(r); p < r[5]; ++p) {
             const MeReal As = w->q[p] + w->epsFree[p] * w->z[p];
             df += w->z[p] * (w->grad[p] + ME_R(0.5) * As);
         }
@@ -410,7 +448,7 @@ static MeReal KeaSmRun(KeaSmTask *t, KeaTaskFn task)
  * set to w_F at x); returns the CG steps taken (at most maxSteps). Sets smRan when CG can start. */
 static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, KeaSmTask *t, int maxSteps)
 {
-    MeReal rz, rz0;
+    MeReal rz, rz0, beta = ME_R(0.0);
     int steps = 0;
     rz = rz0 = KeaSmRun(t, KeaCgStartChunks);
     if (!(rz0 > ME_R(0.0)))
@@ -418,8 +456,11 @@ static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, KeaSmTa
     w->smRan = 1;
     w->smDecrease = ME_R(0.0);
     while (steps < maxSteps) {
-        MeReal pq, rzNew, beta;
-        KeaScatter(problem, w, w->dir);
+        MeReal pq, rzNew;
+        if (steps == 0)
+            KeaScatter(problem, w, w->dir);
+        else /* the direction made where it is scattered (none made after the last step) */
+            KeaScatterDirection(problem, w, t->nFree, beta);
         pq = KeaSmRun(t, KeaCgProductChunks);
         if (!(pq > ME_R(0.0)))
             break;
@@ -429,7 +470,6 @@ static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, KeaSmTa
         if (!(rzNew > KEA_SM_CG_STOP * rz0))
             break;
         beta = rzNew / rz;
-        KeaCgDirection(t->nFree, beta, w->z, w->dir);
         rz = rzNew;
     }
     return steps;
@@ -449,7 +489,8 @@ static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w
         df = KeaSmRun(t, KeaTrialChunks); /* q is free after CG */
         if (df < ME_R(0.0)) {
             w->smDecrease = -df;
-            for (p = 0; p < nFree; ++p) /* a masked row's z is 0: it is left alone */
+            KeaPacksApply(w, x);
+            for (p = KEA_PACK_POSITIONS * w->nPacks; p < nFree; ++p)
                 if (w->z[p] != ME_R(0.0))
                     x[w->freeRows[p]] += w->z[p];
             for (b = 0; b < problem->nBodies; ++b)
@@ -467,7 +508,7 @@ static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w
 int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x)
 {
     const int n = problem->nRows;
-    int i, nFree, listed, changed, steps;
+    int b, i, nFree, listed, changed, steps;
     KeaSmTask t;
     MeReal one;
 
@@ -487,13 +528,14 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
     }
     listed = KeaPacksListFree(w, x);
     nFree = KEA_PACK_POSITIONS * w->nPacks;
-    for (i = 0; i < n; ++i)
-        if (w->wasFree[i] && !w->packed[i]) { /* not a contact's row */
-            KeaRowBoundsInline(problem, x, i, &w->lo[nFree], &w->hi[nFree]);
-            w->xFree[nFree] = x[i];
-            w->freeRows[nFree++] = i;
-            ++listed;
-        }
+    for (b = 0; b < w->nBlocks && w->nContactBlocks < w->nBlocks; ++b) /* rows in order */
+        for (i = w->blockStart[b]; i < w->blockStart[b + 1] && !w->blockContact[b]; ++i)
+            if (w->wasFree[i]) { /* not a contact's row: those are in the packs */
+                KeaRowBoundsInline(problem, x, i, &w->lo[nFree], &w->hi[nFree]);
+                w->xFree[nFree] = x[i];
+                w->freeRows[nFree++] = i;
+                ++listed;
+            }
     if (listed == 0)
         return 0;
     KeaFindSegments(w, KEA_PACK_POSITIONS * w->nPacks, nFree);
