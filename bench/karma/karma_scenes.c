@@ -266,27 +266,17 @@ static void karma_destroy(void *world)
     free(w);
 }
 
-static void *karma_create(const BenchScene *scene, MeBool autoDisable)
+/* Whether the environment variable `name` is set to something other than "" or "0". */
+static MeBool env_flag(const char *name)
 {
-    KarmaWorld *w = calloc(1, sizeof *w);
-    if (!w)
-        return NULL;
-    w->scene = scene;
-    const char *prof = getenv("KARMA_BENCH_PROFILE");
-    w->profile = prof && *prof && strcmp(prof, "0") != 0;
-    const char *stepStats = getenv("KARMA_BENCH_STEPSTATS");
-    w->stepStats = stepStats && *stepStats && strcmp(stepStats, "0") != 0;
-    const char *tasks = getenv("KARMA_BENCH_TASKS");
-    w->taskLog = tasks && *tasks && strcmp(tasks, "0") != 0;
-    w->bodies = calloc((size_t)scene->bodyCount, sizeof *w->bodies);
-    w->fixedTM = calloc((size_t)scene->bodyCount, sizeof *w->fixedTM);
-    if (!w->bodies || !w->fixedTM) {
-        karma_destroy(w);
-        return NULL;
-    }
-    karmaWarnings = 0;
-    karmaFirstWarning[0] = '\0';
+    const char *v = getenv(name);
+    return v && *v && strcmp(v, "0") != 0;
+}
 
+/* The universe for the scene (its pools, thread pool, task log, profile clock) and its world's
+ * settings; MEFALSE when it cannot be made. */
+static MeBool karma_make_universe(KarmaWorld *w, const BenchScene *scene, MeBool autoDisable)
+{
     /* Pools. Models: every body and the ground. Pairs (overlapping boxes, the ground's with every
      * body among them, and one entry per disabled pair): the pile's bottom layers and the pyramids
      * have up to ~8 neighbours per body. Constraints: joints, and for every pair the space can hold a
@@ -303,18 +293,14 @@ static void *karma_create(const BenchScene *scene, MeBool autoDisable)
     sizes.lengthScale = 1;
     sizes.massScale = (MeReal)mean_dynamic_mass(scene);
     w->universe = MstUniverseCreate(&sizes);
-    if (!w->universe) {
-        karma_destroy(w);
-        return NULL;
-    }
+    if (!w->universe)
+        return MEFALSE;
     w->world = MstUniverseGetWorld(w->universe);
     if (BenchThreads > 1) {
         if (!threadPool)
             threadPool = MeThreadPoolCreate(BenchThreads);
-        if (!threadPool) {
-            karma_destroy(w);
-            return NULL;
-        }
+        if (!threadPool)
+            return MEFALSE;
         MeThreadPoolAttachUniverse(threadPool, w->universe);
     }
     if (w->taskLog)
@@ -333,30 +319,30 @@ static void *karma_create(const BenchScene *scene, MeBool autoDisable)
     double heavy = heaviest_jointed_mass(scene);
     if (heavy > 100 * (double)sizes.massScale) /* joints on bodies past Karma's mass range: ε for them */
         MdtWorldSetEpsilon(w->world, (MeReal)((double)MDTWORLD_DEFAULT_EPSILON / heavy));
+    return METRUE;
+}
 
-    bench_karma_contact_defaults(w->universe, scene->friction);
+/* The ground plane, when the scene has one; MEFALSE when it cannot be made. */
+static MeBool karma_add_ground(KarmaWorld *w, McdFrameworkID fw)
+{
+    if (!w->scene->hasGround)
+        return METRUE;
+    /* The scenes are y-up; Karma's plane is the half-space z <= 0 of its frame, so it is turned by
+     * -90 degrees about x (rows {1,0,0}, {0,0,-1}, {0,1,0}: local +z onto world +y, docs K30). */
+    static const MeMatrix4 yUpGround = {{1, 0, 0, 0}, {0, 0, -1, 0}, {0, 1, 0, 0}, {0, 0, 0, 1}};
+    memcpy(w->groundTM, yUpGround, sizeof w->groundTM);
+    return MstFixedModelCreate(w->universe, McdPlaneCreate(fw), w->groundTM) != NULL;
+}
 
-    McdFrameworkID fw = MstUniverseGetFramework(w->universe);
-    if (scene->hasGround) {
-        /* The scenes are y-up; Karma's plane is the half-space z <= 0 of its frame, so it is turned by
-         * -90 degrees about x (rows {1,0,0}, {0,0,-1}, {0,1,0}: local +z onto world +y, docs K30). */
-        static const MeMatrix4 yUpGround = {{1, 0, 0, 0}, {0, 0, -1, 0}, {0, 1, 0, 0}, {0, 0, 0, 1}};
-        memcpy(w->groundTM, yUpGround, sizeof w->groundTM);
-        if (!MstFixedModelCreate(w->universe, McdPlaneCreate(fw), w->groundTM)) {
-            karma_destroy(w);
-            return NULL;
-        }
-    }
-    McdModelID *model = calloc((size_t)scene->bodyCount, sizeof *model);
-    if (!model) {
-        karma_destroy(w);
-        return NULL;
-    }
+/* The scene's bodies, fixed ones as fixed models, their models into model[]; MEFALSE on a failure. */
+static MeBool karma_add_bodies(KarmaWorld *w, McdFrameworkID fw, McdModelID *model)
+{
+    const BenchScene *scene = w->scene;
     for (int i = 0; i < scene->bodyCount; i++) {
         const BenchBody *b = &scene->bodies[i];
         McdGeometryID g = make_geometry(fw, b);
         if (!g)
-            goto fail;
+            return MEFALSE;
         if (b->fixed) {
             MeVector4 q = {(MeReal)b->quat[0], (MeReal)b->quat[1], (MeReal)b->quat[2], (MeReal)b->quat[3]};
             MeMatrix4TMMakeIdentity(w->fixedTM[i]);
@@ -365,66 +351,117 @@ static void *karma_create(const BenchScene *scene, MeBool autoDisable)
                 w->fixedTM[i][3][k] = (MeReal)b->pos[k];
             model[i] = MstFixedModelCreate(w->universe, g, w->fixedTM[i]);
             if (!model[i])
-                goto fail;
+                return MEFALSE;
             continue;
         }
         double inertia[3];
         BenchBodyInertia(b, inertia);
         model[i] = bench_karma_body(w->universe, g, b->mass, inertia, b->pos, b->quat);
         if (!model[i])
-            goto fail;
+            return MEFALSE;
         MdtBodyID body = McdModelGetBody(model[i]);
         MdtBodySetLinearVelocity(body, (MeReal)b->vel[0], (MeReal)b->vel[1], (MeReal)b->vel[2]);
         w->bodies[i] = body;
     }
+    return METRUE;
+}
 
+/* The scene's joint `bj` (a ball joint, or a hinge with its limits and motor), enabled; NULL when it
+ * cannot be made. */
+static MdtConstraintID karma_make_joint(KarmaWorld *w, const BenchJoint *bj)
+{
+    MdtBodyID b0 = w->bodies[bj->body[0]], b1 = bj->body[1] >= 0 ? w->bodies[bj->body[1]] : NULL;
+    MdtConstraintID c;
+    if (bj->type == BENCH_BALL) {
+        MdtBSJointID j = MdtBSJointCreate(w->world);
+        if (!j)
+            return NULL;
+        MdtBSJointSetBodies(j, b0, b1);
+        MdtBSJointSetPosition(j, (MeReal)bj->anchor[0], (MeReal)bj->anchor[1], (MeReal)bj->anchor[2]);
+        c = MdtBSJointQuaConstraint(j);
+    } else {
+        MdtHingeID j = MdtHingeCreate(w->world);
+        if (!j)
+            return NULL;
+        MdtHingeSetBodies(j, b0, b1);
+        MdtHingeSetPosition(j, (MeReal)bj->anchor[0], (MeReal)bj->anchor[1], (MeReal)bj->anchor[2]);
+        MdtHingeSetAxis(j, (MeReal)bj->axis[0], (MeReal)bj->axis[1], (MeReal)bj->axis[2]);
+        if (bj->limited) {
+            /* Karma measures body 0 relative to body 1: the opposite sign of the scene's angle */
+            MdtLimitID l = MdtHingeGetLimit(j);
+            MdtSingleLimitSetStop(MdtLimitGetLowerLimit(l), (MeReal)-bj->hi);
+            MdtSingleLimitSetStop(MdtLimitGetUpperLimit(l), (MeReal)-bj->lo);
+            MdtSingleLimitSetRestitution(MdtLimitGetLowerLimit(l), 0);
+            MdtSingleLimitSetRestitution(MdtLimitGetUpperLimit(l), 0);
+            MdtLimitActivateLimits(l, METRUE);
+        }
+        if (bj->motor) /* Karma's angle is body 0 relative to body 1, the motor's sense */
+            MdtLimitSetLimitedForceMotor(MdtHingeGetLimit(j), (MeReal)bj->motorSpeed, (MeReal)bj->motorTorque);
+        c = MdtHingeQuaConstraint(j);
+    }
+    MdtConstraintEnable(c);
+    return c;
+}
+
+/* The scene's joints; jointed bodies' models (model[]) do not collide. MEFALSE on a failure. */
+static MeBool karma_add_joints(KarmaWorld *w, McdModelID *model)
+{
+    const BenchScene *scene = w->scene;
     McdSpaceID space = MstUniverseGetSpace(w->universe);
     MeBool changing = McdSpaceIsChanging(space);
     if (!changing)
         McdSpaceBeginChanges(space);
     for (int k = 0; k < scene->jointCount; k++) {
         const BenchJoint *bj = &scene->joints[k];
-        MdtBodyID b0 = w->bodies[bj->body[0]], b1 = bj->body[1] >= 0 ? w->bodies[bj->body[1]] : NULL;
-        MdtConstraintID c;
-        if (bj->type == BENCH_BALL) {
-            MdtBSJointID j = MdtBSJointCreate(w->world);
-            if (!j)
-                goto fail;
-            MdtBSJointSetBodies(j, b0, b1);
-            MdtBSJointSetPosition(j, (MeReal)bj->anchor[0], (MeReal)bj->anchor[1], (MeReal)bj->anchor[2]);
-            c = MdtBSJointQuaConstraint(j);
-        } else {
-            MdtHingeID j = MdtHingeCreate(w->world);
-            if (!j)
-                goto fail;
-            MdtHingeSetBodies(j, b0, b1);
-            MdtHingeSetPosition(j, (MeReal)bj->anchor[0], (MeReal)bj->anchor[1], (MeReal)bj->anchor[2]);
-            MdtHingeSetAxis(j, (MeReal)bj->axis[0], (MeReal)bj->axis[1], (MeReal)bj->axis[2]);
-            if (bj->limited) {
-                /* Karma measures body 0 relative to body 1: the opposite sign of the scene's angle */
-                MdtLimitID l = MdtHingeGetLimit(j);
-                MdtSingleLimitSetStop(MdtLimitGetLowerLimit(l), (MeReal)-bj->hi);
-                MdtSingleLimitSetStop(MdtLimitGetUpperLimit(l), (MeReal)-bj->lo);
-                MdtSingleLimitSetRestitution(MdtLimitGetLowerLimit(l), 0);
-                MdtSingleLimitSetRestitution(MdtLimitGetUpperLimit(l), 0);
-                MdtLimitActivateLimits(l, METRUE);
-            }
-            if (bj->motor) /* Karma's angle is body 0 relative to body 1, the motor's sense */
-                MdtLimitSetLimitedForceMotor(MdtHingeGetLimit(j), (MeReal)bj->motorSpeed, (MeReal)bj->motorTorque);
-            c = MdtHingeQuaConstraint(j);
-        }
-        MdtConstraintEnable(c);
+        if (!karma_make_joint(w, bj))
+            return MEFALSE;
         if (bj->body[1] >= 0) /* jointed bodies do not collide */
             McdSpaceDisablePair(model[bj->body[0]], model[bj->body[1]]);
     }
     if (!changing)
         McdSpaceEndChanges(space);
+    return METRUE;
+}
+
+static void *karma_create(const BenchScene *scene, MeBool autoDisable)
+{
+    KarmaWorld *w = calloc(1, sizeof *w);
+    if (!w)
+        return NULL;
+    w->scene = scene;
+    w->profile = env_flag("KARMA_BENCH_PROFILE");
+    w->stepStats = env_flag("KARMA_BENCH_STEPSTATS");
+    w->taskLog = env_flag("KARMA_BENCH_TASKS");
+    w->bodies = calloc((size_t)scene->bodyCount, sizeof *w->bodies);
+    w->fixedTM = calloc((size_t)scene->bodyCount, sizeof *w->fixedTM);
+    if (!w->bodies || !w->fixedTM) {
+        karma_destroy(w);
+        return NULL;
+    }
+    karmaWarnings = 0;
+    karmaFirstWarning[0] = '\0';
+    if (!karma_make_universe(w, scene, autoDisable)) {
+        karma_destroy(w);
+        return NULL;
+    }
+    bench_karma_contact_defaults(w->universe, scene->friction);
+    McdFrameworkID fw = MstUniverseGetFramework(w->universe);
+    if (!karma_add_ground(w, fw)) {
+        karma_destroy(w);
+        return NULL;
+    }
+    McdModelID *model = calloc((size_t)scene->bodyCount, sizeof *model);
+    if (!model) {
+        karma_destroy(w);
+        return NULL;
+    }
+    if (!karma_add_bodies(w, fw, model) || !karma_add_joints(w, model)) {
+        free(model);
+        karma_destroy(w);
+        return NULL;
+    }
     free(model);
     return w;
-fail:
-    free(model);
-    karma_destroy(w);
-    return NULL;
 }
 
 static void *karma_create_default(const BenchScene *scene) { return karma_create(scene, METRUE); }

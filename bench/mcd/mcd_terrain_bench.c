@@ -75,28 +75,15 @@ static double pairCost(McdFrameworkID fw, McdModelID floor, McdGeometryID shape,
     return 1e9 * (t1 - t0) / (double)tests;
 }
 
-int main(int argc, char **argv)
+/* The box query of the mesh's tree (vertices v, indices idx of an n x n terrain) against a scan of
+ * every triangle's box, at random places: ns per query of each, printed. */
+static void boxQueries(McdTriangleMeshID mesh, const MeVector3 *v, const int *idx, int n, double budget)
 {
-    double budget = argc > 1 ? atof(argv[1]) : 0.5;
-    McdFrameworkID fw = McdInit(0, 16, 0, 1);
-    McdPrimitivesRegisterInteractions(fw);
-    const int n = 224; /* 2 x 224^2 = 100,352 triangles */
-    int nv = (n + 1) * (n + 1), nt = 2 * n * n;
-    MeVector3 *v;
-    int *idx;
-    terrainArrays(n, &v, &idx);
-    double t0 = now();
-    McdTriangleMeshID mesh = McdTriangleMeshCreate(fw, (const MeVector3 *)v, nv, idx, nt);
-    double build = now() - t0;
-    printf("Karma Mcd terrain benchmark (%s precision)\n\n", sizeof(MeReal) == sizeof(double) ? "double" : "single");
-    printf("triangle mesh of %d triangles: tree and adjacency built in %.1f ms\n", nt, 1e3 * build);
-
-    /* box queries: the tree against a scan of every triangle's box */
+    const int nt = 2 * n * n;
     int *out = malloc((size_t)nt * sizeof *out);
     long queries = 0, found = 0;
     srand(3);
-    t0 = now();
-    double t1;
+    double t0 = now(), t1;
     do {
         for (int k = 0; k < 1000; k++) {
             MeReal x = (MeReal)(n - 2) * (MeReal)rand() / (MeReal)RAND_MAX, y = (MeReal)(n - 2) * (MeReal)rand() / (MeReal)RAND_MAX;
@@ -128,6 +115,47 @@ int main(int argc, char **argv)
     double scan = 1e9 * (t1 - t0) / (double)scans;
     printf("box query (1 x 1 x 4 m, ~%.1f triangles found): tree %.0f ns, scan of all triangles %.0f ns\n",
            perQuery, tree, scan);
+    free(out);
+}
+
+/* The pair tests of a sphere and a box resting on a 512 x 512 height field of the terrain: printed. */
+static void heightFieldCosts(McdFrameworkID fw, double budget)
+{
+    const int g = 512;
+    MeReal *h = malloc((size_t)g * g * sizeof *h);
+    for (int j = 0; j < g; j++)
+        for (int i = 0; i < g; i++)
+            h[j * g + i] = heightAt(i, j);
+    double t0 = now();
+    McdRGHeightFieldID field = McdRGHeightFieldCreate(fw, h, g, g, 1, 1, 0, 0);
+    double fieldBuild = now() - t0;
+    McdModelID fieldModel = McdModelCreate(field);
+    McdModelUpdate(fieldModel);
+    double cs, cb;
+    double sphereNs = pairCost(fw, fieldModel, McdSphereCreate(fw, ME_R(0.3)), g, budget, &cs);
+    double boxNs = pairCost(fw, fieldModel, McdBoxCreate(fw, ME_R(0.5), ME_R(0.5), ME_R(0.5)), g, budget, &cb);
+    printf("height field %d x %d (created in %.1f ms): sphere %.0f ns per McdIntersect (%.2f contacts), box %.0f ns "
+           "(%.2f contacts)\n", g, g, 1e3 * fieldBuild, sphereNs, cs, boxNs, cb);
+    free(h);
+}
+
+int main(int argc, char **argv)
+{
+    double budget = argc > 1 ? atof(argv[1]) : 0.5;
+    McdFrameworkID fw = McdInit(0, 16, 0, 1);
+    McdPrimitivesRegisterInteractions(fw);
+    const int n = 224; /* 2 x 224^2 = 100,352 triangles */
+    int nv = (n + 1) * (n + 1), nt = 2 * n * n;
+    MeVector3 *v;
+    int *idx;
+    terrainArrays(n, &v, &idx);
+    double t0 = now();
+    McdTriangleMeshID mesh = McdTriangleMeshCreate(fw, (const MeVector3 *)v, nv, idx, nt);
+    double build = now() - t0;
+    printf("Karma Mcd terrain benchmark (%s precision)\n\n", sizeof(MeReal) == sizeof(double) ? "double" : "single");
+    printf("triangle mesh of %d triangles: tree and adjacency built in %.1f ms\n", nt, 1e3 * build);
+
+    boxQueries(mesh, (const MeVector3 *)v, idx, n, budget);
 
     McdModelID meshModel = McdModelCreate(mesh);
     McdModelUpdate(meshModel);
@@ -137,22 +165,7 @@ int main(int argc, char **argv)
     printf("on the mesh: sphere (r 0.3) %.0f ns per McdIntersect (%.2f contacts), box (0.5 m) %.0f ns (%.2f contacts)\n",
            sphereNs, cs, boxNs, cb);
 
-    const int g = 512;
-    MeReal *h = malloc((size_t)g * g * sizeof *h);
-    for (int j = 0; j < g; j++)
-        for (int i = 0; i < g; i++)
-            h[j * g + i] = heightAt(i, j);
-    t0 = now();
-    McdRGHeightFieldID field = McdRGHeightFieldCreate(fw, h, g, g, 1, 1, 0, 0);
-    double fieldBuild = now() - t0;
-    McdModelID fieldModel = McdModelCreate(field);
-    McdModelUpdate(fieldModel);
-    sphereNs = pairCost(fw, fieldModel, McdSphereCreate(fw, ME_R(0.3)), g, budget, &cs);
-    boxNs = pairCost(fw, fieldModel, McdBoxCreate(fw, ME_R(0.5), ME_R(0.5), ME_R(0.5)), g, budget, &cb);
-    printf("height field %d x %d (created in %.1f ms): sphere %.0f ns per McdIntersect (%.2f contacts), box %.0f ns "
-           "(%.2f contacts)\n", g, g, 1e3 * fieldBuild, sphereNs, cs, boxNs, cb);
-    free(h);
-    free(out);
+    heightFieldCosts(fw, budget);
     free(v);
     free(idx);
     McdTerm(fw);

@@ -59,22 +59,9 @@ static void poses(MdtBodyID *bodies, int n, double (*pos)[3], double (*quat)[4])
     }
 }
 
-static int runScene(const BenchMdtScene *s, MdtLCPSolver path, int steps, double budget, Run *run)
+/* The scene's bodies, ball joints and contact groups (one per support) in world w. */
+static void populate(const BenchMdtScene *s, MdtWorldID w, MdtBodyID *bodies, MdtContactGroupID *groups)
 {
-    memset(run, 0, sizeof *run);
-    const unsigned maxConstraints = (unsigned)(s->jointCount + 5 * s->supportCount + 8);
-    MdtWorldID w = MdtWorldCreate((unsigned)s->bodyCount, maxConstraints, 1, 1);
-    MdtBodyID *bodies = calloc((size_t)s->bodyCount, sizeof *bodies);
-    MdtContactGroupID *groups = calloc((size_t)(s->supportCount + 1), sizeof *groups);
-    double(*pos)[3] = calloc((size_t)s->bodyCount, sizeof *pos);
-    double(*quat)[4] = calloc((size_t)s->bodyCount, sizeof *quat);
-    double *times = calloc((size_t)steps, sizeof *times);
-    double *cpu = calloc((size_t)steps, sizeof *cpu);
-    if (!w || !bodies || !groups || !pos || !quat || !times || !cpu)
-        return 0;
-    MdtWorldSetGravity(w, (MeReal)s->gravity[0], (MeReal)s->gravity[1], (MeReal)s->gravity[2]);
-    MdtWorldSetAutoDisable(w, MEFALSE);
-    MdtWorldSetLCPSolver(w, path);
     for (int i = 0; i < s->bodyCount; i++) {
         const BenchMdtBody *b = &s->bodies[i];
         MeMatrix3 I;
@@ -100,6 +87,57 @@ static int runScene(const BenchMdtScene *s, MdtLCPSolver path, int steps, double
         MdtContactGroupSetBodies(groups[k], bodies[sp->upper], sp->lower >= 0 ? bodies[sp->lower] : NULL);
         MdtContactGroupEnable(groups[k]);
     }
+}
+
+/* Each support's contacts for this step: a box on the ground plane (normal `up`) or on another box. */
+static void placeContacts(const BenchMdtScene *s, const MdtBodyID *bodies, MdtContactGroupID *groups,
+                          const MeVector3 up, const MdtContactParams *params)
+{
+    for (int k = 0; k < s->supportCount; k++) {
+        const BenchMdtSupport *sp = &s->supports[k];
+        const BenchMdtBody *u = &s->bodies[sp->upper];
+        MeVector3 hu = {(MeReal)u->half[0], (MeReal)u->half[1], (MeReal)u->half[2]};
+        if (sp->lower < 0) {
+            karma_box_on_plane(groups[k], bodies[sp->upper], hu, up, 0, params);
+        } else {
+            const BenchMdtBody *l = &s->bodies[sp->lower];
+            MeVector3 hl = {(MeReal)l->half[0], (MeReal)l->half[1], (MeReal)l->half[2]};
+            karma_box_on_box_clipped(groups[k], bodies[sp->upper], hu, bodies[sp->lower], hl, params);
+        }
+    }
+}
+
+/* The step's solver statistics into run's largest figures; returns the step's iterations. */
+static double recordStats(MdtWorldID w, Run *run)
+{
+    MdtSolverStats st;
+    MdtWorldGetSolverStats(w, &st);
+    if (st.maxPartitionRows > run->maxRows)
+        run->maxRows = st.maxPartitionRows;
+    if (st.partitions > run->partitions)
+        run->partitions = st.partitions;
+    if ((double)st.maxResidual > run->maxResidual)
+        run->maxResidual = (double)st.maxResidual;
+    return st.iterations;
+}
+
+static int runScene(const BenchMdtScene *s, MdtLCPSolver path, int steps, double budget, Run *run)
+{
+    memset(run, 0, sizeof *run);
+    const unsigned maxConstraints = (unsigned)(s->jointCount + 5 * s->supportCount + 8);
+    MdtWorldID w = MdtWorldCreate((unsigned)s->bodyCount, maxConstraints, 1, 1);
+    MdtBodyID *bodies = calloc((size_t)s->bodyCount, sizeof *bodies);
+    MdtContactGroupID *groups = calloc((size_t)(s->supportCount + 1), sizeof *groups);
+    double(*pos)[3] = calloc((size_t)s->bodyCount, sizeof *pos);
+    double(*quat)[4] = calloc((size_t)s->bodyCount, sizeof *quat);
+    double *times = calloc((size_t)steps, sizeof *times);
+    double *cpu = calloc((size_t)steps, sizeof *cpu);
+    if (!w || !bodies || !groups || !pos || !quat || !times || !cpu)
+        return 0;
+    MdtWorldSetGravity(w, (MeReal)s->gravity[0], (MeReal)s->gravity[1], (MeReal)s->gravity[2]);
+    MdtWorldSetAutoDisable(w, MEFALSE);
+    MdtWorldSetLCPSolver(w, path);
+    populate(s, w, bodies, groups);
     MdtContactParams params;
     karma_contact_params_friction(&params, (MeReal)s->friction);
     const MeVector3 up = {0, 1, 0}; /* the scenes are y-up */
@@ -107,32 +145,13 @@ static int runScene(const BenchMdtScene *s, MdtLCPSolver path, int steps, double
     BenchMdtQualityInit(s, &run->quality);
     double start = now(), iterations = 0;
     for (int i = 0; i < steps; i++) {
-        for (int k = 0; k < s->supportCount; k++) {
-            const BenchMdtSupport *sp = &s->supports[k];
-            const BenchMdtBody *u = &s->bodies[sp->upper];
-            MeVector3 hu = {(MeReal)u->half[0], (MeReal)u->half[1], (MeReal)u->half[2]};
-            if (sp->lower < 0) {
-                karma_box_on_plane(groups[k], bodies[sp->upper], hu, up, 0, &params);
-            } else {
-                const BenchMdtBody *l = &s->bodies[sp->lower];
-                MeVector3 hl = {(MeReal)l->half[0], (MeReal)l->half[1], (MeReal)l->half[2]};
-                karma_box_on_box_clipped(groups[k], bodies[sp->upper], hu, bodies[sp->lower], hl, &params);
-            }
-        }
+        placeContacts(s, bodies, groups, up, &params);
         double t0 = now();
         clock_t c0 = clock();
         MdtWorldStep(w, (MeReal)s->step);
         cpu[i] = (double)(clock() - c0) / CLOCKS_PER_SEC;
         times[i] = now() - t0;
-        MdtSolverStats st;
-        MdtWorldGetSolverStats(w, &st);
-        if (st.maxPartitionRows > run->maxRows)
-            run->maxRows = st.maxPartitionRows;
-        if (st.partitions > run->partitions)
-            run->partitions = st.partitions;
-        if ((double)st.maxResidual > run->maxResidual)
-            run->maxResidual = (double)st.maxResidual;
-        iterations += st.iterations;
+        iterations += recordStats(w, run);
         poses(bodies, s->bodyCount, pos, quat);
         BenchMdtQualityObserve(s, &run->quality, (const double(*)[3])pos, (const double(*)[4])quat);
         run->steps = i + 1;

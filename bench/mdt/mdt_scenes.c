@@ -25,6 +25,7 @@ static BenchMdtScene *newScene(const char *name, int bodies, int joints, int sup
     return s;
 }
 
+/* Size: a box's half-extents, mass and position, flat, one box to a line in the scene builders. */
 static void setBox(BenchMdtBody *b, double hx, double hy, double hz, double mass, double x, double y, double z)
 {
     b->half[0] = hx;
@@ -37,6 +38,7 @@ static void setBox(BenchMdtBody *b, double hx, double hy, double hz, double mass
 }
 
 /* A ball joint at a world anchor; the local anchors follow from the initial (unrotated) poses. */
+/* Size: the joint's slot, its two bodies and its anchor's coordinates, one joint to a line. */
 static void setJoint(BenchMdtScene *s, int j, int b0, int b1, double x, double y, double z)
 {
     BenchMdtJoint *jt = &s->joints[j];

@@ -127,29 +127,10 @@ static void ode_destroy(void *world)
     free(w);
 }
 
-static void *ode_create(const BenchScene *scene, int quick)
+/* The scene's bodies: a geometry each, fixed ones placed, the others on a body of theirs. */
+static void ode_add_bodies(OdeWorld *w)
 {
-    OdeWorld *w = calloc(1, sizeof *w);
-    if (!w)
-        return NULL;
-    w->scene = scene;
-    w->quick = quick;
-    w->bodies = calloc((size_t)scene->bodyCount, sizeof *w->bodies);
-    if (!quick) {
-        w->parent = malloc(sizeof *w->parent * (size_t)scene->bodyCount);
-        w->rows = malloc(sizeof *w->rows * (size_t)scene->bodyCount);
-    }
-    if (!w->bodies || (!quick && (!w->parent || !w->rows))) {
-        ode_destroy(w);
-        return NULL;
-    }
-    odeMessages = 0;
-    odeFirstMessage[0] = '\0';
-    dRandSetSeed(0); /* quickstep reorders its rows with ODE's global generator: same start every run */
-    bench_ode_open(&w->ode, scene->gravity[0], scene->gravity[1], scene->gravity[2], ODE_QUICK_ITERATIONS,
-                   scene->friction);
-    if (scene->hasGround) /* the scenes are y-up: the plane y = 0 */
-        dCreatePlane(w->ode.space, 0, 1, 0, 0);
+    const BenchScene *scene = w->scene;
     for (int i = 0; i < scene->bodyCount; i++) {
         const BenchBody *b = &scene->bodies[i];
         dGeomID g;
@@ -184,6 +165,12 @@ static void *ode_create(const BenchScene *scene, int quick)
         dGeomSetBody(g, body);
         w->bodies[i] = body;
     }
+}
+
+/* The scene's joints: ball joints and hinges with their limits and motors. */
+static void ode_add_joints(OdeWorld *w)
+{
+    const BenchScene *scene = w->scene;
     for (int k = 0; k < scene->jointCount; k++) {
         const BenchJoint *bj = &scene->joints[k];
         dBodyID b0 = w->bodies[bj->body[0]], b1 = bj->body[1] >= 0 ? w->bodies[bj->body[1]] : NULL;
@@ -210,6 +197,33 @@ static void *ode_create(const BenchScene *scene, int quick)
             }
         }
     }
+}
+
+static void *ode_create(const BenchScene *scene, int quick)
+{
+    OdeWorld *w = calloc(1, sizeof *w);
+    if (!w)
+        return NULL;
+    w->scene = scene;
+    w->quick = quick;
+    w->bodies = calloc((size_t)scene->bodyCount, sizeof *w->bodies);
+    if (!quick) {
+        w->parent = malloc(sizeof *w->parent * (size_t)scene->bodyCount);
+        w->rows = malloc(sizeof *w->rows * (size_t)scene->bodyCount);
+    }
+    if (!w->bodies || (!quick && (!w->parent || !w->rows))) {
+        ode_destroy(w);
+        return NULL;
+    }
+    odeMessages = 0;
+    odeFirstMessage[0] = '\0';
+    dRandSetSeed(0); /* quickstep reorders its rows with ODE's global generator: same start every run */
+    bench_ode_open(&w->ode, scene->gravity[0], scene->gravity[1], scene->gravity[2], ODE_QUICK_ITERATIONS,
+                   scene->friction);
+    if (scene->hasGround) /* the scenes are y-up: the plane y = 0 */
+        dCreatePlane(w->ode.space, 0, 1, 0, 0);
+    ode_add_bodies(w);
+    ode_add_joints(w);
     return w;
 }
 

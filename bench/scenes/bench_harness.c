@@ -68,62 +68,102 @@ static int in_list(const char *list, const char *name)
     return 0;
 }
 
+/* One run's record: the poses, every step's wall and CPU time, their sums, the contacts summed over
+ * the steps and the quality measured. */
+typedef struct RunRecord {
+    double (*pos)[3], (*quat)[4];
+    double *times, *cpuTimes;
+    int done;
+    double contacts, spent, spentCpu;
+    BenchQuality quality;
+} RunRecord;
+
+/* Step the world up to `steps` times, timing each step and observing the quality into r; returns why
+ * it stopped early ("" when it did not). */
+static const char *run_steps(const BenchEngine *e, void *world, const BenchScene *scene, const Options *opt,
+                             int steps, RunRecord *r)
+{
+    int n = scene->bodyCount;
+    for (; r->done < steps; ) {
+        const char *why = "stopped by the engine";
+        /* wall time (what the brief asks for) and process CPU time (what a loaded, shared machine
+         * does not inflate) of the step call alone */
+        double c0 = clock_seconds(CLOCK_PROCESS_CPUTIME_ID), t0 = clock_seconds(CLOCK_MONOTONIC);
+        int stop = e->step(world, &why);
+        double dt = clock_seconds(CLOCK_MONOTONIC) - t0;
+        double dc = clock_seconds(CLOCK_PROCESS_CPUTIME_ID) - c0;
+        if (stop)
+            return why;
+        if (opt->stepTimes)
+            fprintf(stderr, "    step %5d cpu_ms %.4f wall_ms %.4f\n", r->done + 1, dc * 1e3, dt * 1e3);
+        r->cpuTimes[r->done] = dc;
+        r->times[r->done++] = dt;
+        r->spent += dt;
+        r->spentCpu += dc;
+        r->contacts += e->contacts(world);
+        e->read(world, r->pos, r->quat);
+        BenchQualityObserve(scene, &r->quality, (const double(*)[3])r->pos, (const double(*)[4])r->quat);
+        if (opt->trace >= 0 && opt->trace < n && r->done % 60 == 0)
+            fprintf(stderr, "    step %5d body %d pos %9.4f %9.4f %9.4f quat %7.4f %7.4f %7.4f %7.4f\n", r->done,
+                    opt->trace, r->pos[opt->trace][0], r->pos[opt->trace][1], r->pos[opt->trace][2],
+                    r->quat[opt->trace][0], r->quat[opt->trace][1], r->quat[opt->trace][2], r->quat[opt->trace][3]);
+        if (r->spentCpu > opt->budget && r->done < steps) /* CPU time: the same runs finish under any load */
+            return "time budget reached";
+    }
+    return "";
+}
+
+/* The run's CSV line on stdout and its summary on stderr (r's times are sorted on the way). */
+static void print_run(const BenchEngine *e, const BenchScene *scene, int steps, RunRecord *r, const char *note)
+{
+    const BenchQuality *quality = &r->quality;
+    int done = r->done;
+    double mean = done ? r->spent / done * 1e3 : (double)NAN;
+    double med = median(r->times, done) * 1e3, cpu = median(r->cpuTimes, done) * 1e3; /* median() sorts */
+    double p99 = quantile_sorted(r->times, done, 0.99) * 1e3, p99cpu = quantile_sorted(r->cpuTimes, done, 0.99) * 1e3;
+    const char *standing = quality->standing < 0 ? "-" : quality->standing ? "yes" : "no";
+    if (done == steps || quality->nonFinite)
+        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,%.6g,%s,%.4f,%.6g,%s,%.4f,%.4f\n", e->engine, e->variant,
+               scene->name, scene->dynamicCount, steps, done, med, mean, cpu, done ? r->contacts / done : 0.0,
+               scene->qualityName, quality->value, standing, quality->floorPenetration, quality->meanJointError, note,
+               p99, p99cpu);
+    else /* an incomplete run has no quality figure: it was not measured at the scene's time */
+        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,,-,,,%s,%.4f,%.4f\n", e->engine, e->variant, scene->name,
+               scene->dynamicCount, steps, done, med, mean, cpu, done ? r->contacts / done : 0.0, scene->qualityName,
+               note, p99, p99cpu);
+    fflush(stdout);
+    fprintf(stderr, "  %-6s %-14s %-10s %5d steps, %8.3f ms/step (CPU %.3f, CPU p99 %.3f = %.2f x median), %s\n",
+            e->engine, e->variant, scene->name, done, med, cpu, p99cpu, cpu > 0 ? p99cpu / cpu : (double)NAN,
+            *note ? note : "ok");
+}
+
 static void run_one(const BenchEngine *e, const BenchScene *scene, const Options *opt)
 {
     int steps = opt->steps > 0 ? opt->steps : scene->steps;
     int n = scene->bodyCount;
-    double(*pos)[3] = malloc(sizeof *pos * (size_t)n);
-    double(*quat)[4] = malloc(sizeof *quat * (size_t)n);
-    double *times = malloc(sizeof *times * (size_t)steps), *cpuTimes = malloc(sizeof *cpuTimes * (size_t)steps);
-    if (!pos || !quat || !times || !cpuTimes) {
+    RunRecord r;
+    memset(&r, 0, sizeof r);
+    r.pos = malloc(sizeof *r.pos * (size_t)n);
+    r.quat = malloc(sizeof *r.quat * (size_t)n);
+    r.times = malloc(sizeof *r.times * (size_t)steps);
+    r.cpuTimes = malloc(sizeof *r.cpuTimes * (size_t)steps);
+    if (!r.pos || !r.quat || !r.times || !r.cpuTimes) {
         fprintf(stderr, "bench: out of memory for %s\n", scene->name);
-        free(pos), free(quat), free(times), free(cpuTimes);
+        free(r.pos), free(r.quat), free(r.times), free(r.cpuTimes);
         return;
     }
     for (int i = 0; i < n; i++) {
-        memcpy(pos[i], scene->bodies[i].pos, sizeof pos[i]);
-        memcpy(quat[i], scene->bodies[i].quat, sizeof quat[i]);
+        memcpy(r.pos[i], scene->bodies[i].pos, sizeof r.pos[i]);
+        memcpy(r.quat[i], scene->bodies[i].quat, sizeof r.quat[i]);
     }
     const char *note = "";
     char remarkCopy[160];
-    int done = 0;
-    double contacts = 0, spent = 0, spentCpu = 0;
-    BenchQuality quality;
-    BenchQualityInit(scene, &quality);
+    BenchQualityInit(scene, &r.quality);
     void *world = e->create(scene);
     if (!world) {
         note = "world creation failed";
     } else {
-        for (; done < steps; ) {
-            const char *why = "stopped by the engine";
-            /* wall time (what the brief asks for) and process CPU time (what a loaded, shared machine
-             * does not inflate) of the step call alone */
-            double c0 = clock_seconds(CLOCK_PROCESS_CPUTIME_ID), t0 = clock_seconds(CLOCK_MONOTONIC);
-            int stop = e->step(world, &why);
-            double dt = clock_seconds(CLOCK_MONOTONIC) - t0;
-            double dc = clock_seconds(CLOCK_PROCESS_CPUTIME_ID) - c0;
-            if (stop) {
-                note = why;
-                break;
-            }
-            if (opt->stepTimes)
-                fprintf(stderr, "    step %5d cpu_ms %.4f wall_ms %.4f\n", done + 1, dc * 1e3, dt * 1e3);
-            cpuTimes[done] = dc;
-            times[done++] = dt;
-            spent += dt;
-            spentCpu += dc;
-            contacts += e->contacts(world);
-            e->read(world, pos, quat);
-            BenchQualityObserve(scene, &quality, (const double(*)[3])pos, (const double(*)[4])quat);
-            if (opt->trace >= 0 && opt->trace < n && done % 60 == 0)
-                fprintf(stderr, "    step %5d body %d pos %9.4f %9.4f %9.4f quat %7.4f %7.4f %7.4f %7.4f\n", done,
-                        opt->trace, pos[opt->trace][0], pos[opt->trace][1], pos[opt->trace][2],
-                        quat[opt->trace][0], quat[opt->trace][1], quat[opt->trace][2], quat[opt->trace][3]);
-            if (spentCpu > opt->budget && done < steps) { /* CPU time: the same runs finish under any load */
-                note = "time budget reached";
-                break;
-            }
-        }
+        note = run_steps(e, world, scene, opt, steps, &r);
         const char *remark = e->remark ? e->remark(world) : NULL;
         if (remark && *remark && !*note) {
             snprintf(remarkCopy, sizeof remarkCopy, "%s", remark);
@@ -131,27 +171,11 @@ static void run_one(const BenchEngine *e, const BenchScene *scene, const Options
         }
         e->destroy(world);
     }
-    BenchQualityFinish(scene, &quality, (const double(*)[3])pos, (const double(*)[4])quat, done == steps);
-    if (quality.nonFinite && !*note)
+    BenchQualityFinish(scene, &r.quality, (const double(*)[3])r.pos, (const double(*)[4])r.quat, r.done == steps);
+    if (r.quality.nonFinite && !*note)
         note = "non-finite state";
-    double mean = done ? spent / done * 1e3 : (double)NAN;
-    double med = median(times, done) * 1e3, cpu = median(cpuTimes, done) * 1e3; /* median() sorts */
-    double p99 = quantile_sorted(times, done, 0.99) * 1e3, p99cpu = quantile_sorted(cpuTimes, done, 0.99) * 1e3;
-    const char *standing = quality.standing < 0 ? "-" : quality.standing ? "yes" : "no";
-    if (done == steps || quality.nonFinite)
-        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,%.6g,%s,%.4f,%.6g,%s,%.4f,%.4f\n", e->engine, e->variant,
-               scene->name, scene->dynamicCount, steps, done, med, mean, cpu, done ? contacts / done : 0.0,
-               scene->qualityName, quality.value, standing, quality.floorPenetration, quality.meanJointError, note, p99,
-               p99cpu);
-    else /* an incomplete run has no quality figure: it was not measured at the scene's time */
-        printf("%s,%s,%s,%d,%d,%d,%.4f,%.4f,%.4f,%.1f,%s,,-,,,%s,%.4f,%.4f\n", e->engine, e->variant, scene->name,
-               scene->dynamicCount, steps, done, med, mean, cpu, done ? contacts / done : 0.0, scene->qualityName,
-               note, p99, p99cpu);
-    fflush(stdout);
-    fprintf(stderr, "  %-6s %-14s %-10s %5d steps, %8.3f ms/step (CPU %.3f, CPU p99 %.3f = %.2f x median), %s\n",
-            e->engine, e->variant, scene->name, done, med, cpu, p99cpu, cpu > 0 ? p99cpu / cpu : (double)NAN,
-            *note ? note : "ok");
-    free(pos), free(quat), free(times), free(cpuTimes);
+    print_run(e, scene, steps, &r, note);
+    free(r.pos), free(r.quat), free(r.times), free(r.cpuTimes);
 }
 
 int BenchThreads = 1;

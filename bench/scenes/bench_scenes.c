@@ -120,6 +120,7 @@ BenchScene *scene_new(const char *prefix, int count, int standard, int maxBodies
     return s;
 }
 
+/* Size: a body's fields, flat, as the scene builders write them one body to a line. */
 int add_body(BenchScene *s, BenchShape shape, double a, double b, double c, double mass,
                     const double pos[3], const double quat[4], int fixed)
 {
@@ -135,6 +136,7 @@ int add_body(BenchScene *s, BenchShape shape, double a, double b, double c, doub
     return s->bodyCount++;
 }
 
+/* Size: a joint's fields, flat, as the scene builders write them one joint to a line. */
 void add_joint(BenchScene *s, BenchJointType type, int b0, int b1, const double anchor[3],
                       const double axis[3], double lo, double hi)
 {

@@ -30,6 +30,7 @@ static double solid_mass(BenchShape shape, double a, double b, double c, double 
     }
 }
 
+/* Size: add_body's parameters with a density in place of the mass. */
 static int add_solid(BenchScene *s, BenchShape shape, double a, double b, double c, double density,
                      const double pos[3], const double quat[4], int fixed)
 {

@@ -63,6 +63,7 @@ static int compareDoubles(const void *a, const void *b)
 
 /* Min and median wall ns of `reps` calls of the task over `items` in ranges of `minRange`, on `pool`
  * (NULL: inline on the caller). */
+/* Size: the task and its split (items, minRange, work), the gap and repetitions, and the two results. */
 static void measure(MeThreadPool *pool, MdtTaskFnPtr task, int items, int minRange, int work, double gapNs, int reps,
                     double *minNs, double *medianNs)
 {

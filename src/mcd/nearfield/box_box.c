@@ -36,6 +36,7 @@ static int clipPlane(MeVector3 *in, int n, MeVector3 *out, const MeVector3 o, Me
 }
 
 /* Face contact: reference box `ref` with face normal nr (unit, pointing towards `inc`) along axis k. */
+/* Size: the reference face (box, axis, normal), the incident box, the order, tolerance and output. */
 static int faceContact(const Box *ref, int k, const MeVector3 nr, const Box *inc, MeBool refIsFirst,
                        MeReal tol, McdContact *out)
 {
@@ -105,6 +106,7 @@ static void supportEdge(const Box *b, int i, const MeVector3 d, MeVector3 e0, Me
     MeVector3MultiplyAdd(e1, b->h[i], b->ax[i]);
 }
 
+/* Size: McdNearfieldFn's signature. */
 int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2, MeReal tolerance,
                 McdContact *contacts, int maxContacts, void **cache)
 {

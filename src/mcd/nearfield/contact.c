@@ -23,6 +23,8 @@ void McdNfPerpendicular(MeVector3 out, const MeVector3 n)
     MeVector3Normalize(out);
 }
 
+/* Size: the contact array being filled (contacts, count, maxContacts), then the pair of points, normal,
+ * tolerance and dimension of the contact written: every pair test calls it so. */
 int McdNfAddPair(McdContact *contacts, int count, int maxContacts, const MeVector3 on1, const MeVector3 on2,
                  const MeVector3 normal, MeReal tolerance, int dims)
 {

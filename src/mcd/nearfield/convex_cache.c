@@ -59,6 +59,7 @@ static void toLocalDir(MeVector3 out, MeMatrix4 tm, const MeVector3 d)
         out[k] = MeVector3Dot(tm[k], d);
 }
 
+/* Size: McdNearfieldFn's signature. */
 int McdNfConvexMeshConvex(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                           MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
@@ -93,6 +94,7 @@ int McdNfConvexMeshConvex(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeo
     return McdNfManifoldCoherent(&s1, &s2, &d, tolerance, contacts, maxContacts, &c->refSide);
 }
 
+/* Size: McdNearfieldFn's signature. */
 int McdNfConvexMeshPlaneCached(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                                MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {

@@ -19,6 +19,7 @@ typedef struct Bary {
     MeReal lambda[4];
 } Bary;
 
+/* Size: the point's three (index, weight) pairs and their count, each stored as given. */
 static void baryPoint(Bary *r, int i, MeReal li, int j, MeReal lj, int k, MeReal lk, int n)
 {
     r->n = n;
@@ -154,6 +155,45 @@ static MeBool closestOnTetrahedron(MeVector3 *w, Bary *r, MeReal flat)
     return outside;
 }
 
+/* The point of the simplex closest to the origin, as weights of its vertices, into r. MEFALSE when the
+ * origin lies inside the simplex (a tetrahedron). */
+static MeBool closestInSimplex(McdNfSimplex *sx, Bary *r, MeReal absEps)
+{
+    if (sx->n == 1)
+        baryPoint(r, 0, ME_R(1.0), 0, ME_R(0.0), 0, ME_R(0.0), 1);
+    else if (sx->n == 2)
+        closestOnSegment(sx->w, 0, 1, r);
+    else if (sx->n == 3)
+        closestOnTriangle(sx->w, 0, 1, 2, r);
+    else if (!closestOnTetrahedron(sx->w, r, absEps))
+        return MEFALSE;
+    return METRUE;
+}
+
+/* Keep the simplex's vertices that carry the closest point r; v becomes that point and out's p1, p2 its
+ * witness points on the two cores. */
+static void reduceSimplex(McdNfSimplex *sx, const Bary *r, MeVector3 v, McdNfDistance *out)
+{
+    McdNfSimplex t = *sx;
+    MeVector3 p = {ME_R(0.0), ME_R(0.0), ME_R(0.0)};
+    MeVector3 pa = {ME_R(0.0), ME_R(0.0), ME_R(0.0)}, pb = {ME_R(0.0), ME_R(0.0), ME_R(0.0)};
+    int k;
+    sx->n = r->n;
+    for (k = 0; k < r->n; k++) {
+        MeVector3Copy(sx->w[k], t.w[r->idx[k]]);
+        MeVector3Copy(sx->a[k], t.a[r->idx[k]]);
+        MeVector3Copy(sx->b[k], t.b[r->idx[k]]);
+        MeVector3MultiplyAdd(p, r->lambda[k], t.w[r->idx[k]]);
+    }
+    MeVector3Copy(v, p);
+    for (k = 0; k < r->n; k++) {
+        MeVector3MultiplyAdd(pa, r->lambda[k], sx->a[k]);
+        MeVector3MultiplyAdd(pb, r->lambda[k], sx->b[k]);
+    }
+    MeVector3Copy(out->p1, pa);
+    MeVector3Copy(out->p2, pb);
+}
+
 MeBool McdNfGjk(const McdNfShape *s1, const McdNfShape *s2, McdNfSimplex *sx, McdNfDistance *out)
 {
     const MeReal scale = s1->size + s2->size;
@@ -191,36 +231,10 @@ MeBool McdNfGjk(const McdNfShape *s1, const McdNfShape *s2, McdNfSimplex *sx, Mc
         MeVector3Copy(sx->a[sx->n], a);
         MeVector3Copy(sx->b[sx->n], b);
         sx->n++;
-        if (sx->n == 1)
-            baryPoint(&r, 0, ME_R(1.0), 0, ME_R(0.0), 0, ME_R(0.0), 1);
-        else if (sx->n == 2)
-            closestOnSegment(sx->w, 0, 1, &r);
-        else if (sx->n == 3)
-            closestOnTriangle(sx->w, 0, 1, 2, &r);
-        else if (!closestOnTetrahedron(sx->w, &r, absEps))
+        if (!closestInSimplex(sx, &r, absEps))
             return MEFALSE; /* origin inside: the cores overlap */
-        {
-            McdNfSimplex t = *sx;
-            MeVector3 p = {ME_R(0.0), ME_R(0.0), ME_R(0.0)};
-            sx->n = r.n;
-            for (k = 0; k < r.n; k++) {
-                MeVector3Copy(sx->w[k], t.w[r.idx[k]]);
-                MeVector3Copy(sx->a[k], t.a[r.idx[k]]);
-                MeVector3Copy(sx->b[k], t.b[r.idx[k]]);
-                MeVector3MultiplyAdd(p, r.lambda[k], t.w[r.idx[k]]);
-            }
-            MeVector3Copy(v, p);
-            vv = MeVector3MagnitudeSqr(v);
-            {
-                MeVector3 pa = {ME_R(0.0), ME_R(0.0), ME_R(0.0)}, pb = {ME_R(0.0), ME_R(0.0), ME_R(0.0)};
-                for (k = 0; k < r.n; k++) {
-                    MeVector3MultiplyAdd(pa, r.lambda[k], sx->a[k]);
-                    MeVector3MultiplyAdd(pb, r.lambda[k], sx->b[k]);
-                }
-                MeVector3Copy(out->p1, pa);
-                MeVector3Copy(out->p2, pb);
-            }
-        }
+        reduceSimplex(sx, &r, v, out);
+        vv = MeVector3MagnitudeSqr(v);
         if (vv <= absEps * absEps)
             return MEFALSE; /* touching cores: the direction is not defined, let EPA decide */
         if (vv >= prev) { /* rounding stalled the descent: keep the previous, closer simplex */
@@ -259,6 +273,7 @@ static void supportD(const McdNfShape *s1, const McdNfShape *s2, const MeVector3
 
 /* Overlap F(x, y) = h_D(n) along n = normalize(n0 + x u + y v), and its gradient: the support point
  * s(n) is the gradient of h_D, chained through the normalisation. */
+/* Size: the pair, the frame (n0, u, v) and the point (x, y) in it, and the two results. */
 static MeReal overlapAt(const McdNfShape *s1, const McdNfShape *s2, const MeVector3 n0, const MeVector3 u,
                         const MeVector3 v, MeReal x, MeReal y, MeReal g[2], MeVector3 nOut)
 {

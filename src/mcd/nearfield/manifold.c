@@ -9,6 +9,7 @@
 #include "nearfield.h"
 
 /* Write a contact of the pair (on1, on2) found along the query's direction n12 (core 1 -> core 2). */
+/* Size: McdNfAddPair's parameters, with the query direction in place of the contact normal. */
 static int addAlong(McdContact *c, int count, int maxc, const MeVector3 on1, const MeVector3 on2,
                     const MeVector3 n12, MeReal tol, int dims)
 {
@@ -45,41 +46,55 @@ static MeReal polygonNormal(const Side *f, MeVector3 m)
     return MeFabs(MeVector3Dot(m, f->facing));
 }
 
+/* A face clipping under way: the reference and incident features, the reference plane's unit normal m
+ * (facing the incident feature), the query's direction n (core 1 -> core 2) and nm, n oriented with the
+ * reference polygon's vertex order, which shape is the reference, and the tolerance. */
+typedef struct Clip {
+    const Side *ref, *inc;
+    MeVector3 m, nm;
+    const MeReal *n;
+    MeBool refIsFirst;
+    MeReal tol;
+} Clip;
+
 /* Emit a contact from a point `p` of the incident feature and its partner on the reference plane. */
-static int emit(McdContact *c, int count, int maxc, const Side *ref, const MeVector3 q0, const MeVector3 m,
-                const MeVector3 p, const MeVector3 n, MeBool refIsFirst, MeReal tol, int dims)
+static int emit(const Clip *k, McdContact *c, int count, const MeVector3 p, int dims)
 {
+    const Side *ref = k->ref;
+    const MeReal *q0 = ref->pts[0], *m = k->m, *n = k->n;
     MeVector3 a, d, on1, on2;
     MeReal t, mn = MeVector3Dot(m, n);
     MeVector3Subtract(d, p, q0);
     t = MeVector3Dot(d, m) / mn;
     MeVector3ScaleAndAdd(a, p, -t, n); /* p moved along n onto the reference plane */
-    if (refIsFirst) {
+    if (k->refIsFirst) {
         MeVector3ScaleAndAdd(on1, a, ref->s->radius, n);
         MeVector3Copy(on2, p);
     } else {
         MeVector3Copy(on1, p);
         MeVector3ScaleAndAdd(on2, a, -ref->s->radius, n);
     }
-    (void)ref;
-    return addAlong(c, count, maxc, on1, on2, n, tol, dims);
+    return addAlong(c, count, CLIP_MAX, on1, on2, n, k->tol, dims);
 }
 
-/* Clip the incident feature (segment or polygon) against the side planes of the reference polygon;
- * the side planes contain n, so this is clipping in projection along n. */
-static int clipFaces(const Side *ref, const Side *inc, const MeVector3 n, MeBool refIsFirst, MeReal tol,
-                     McdContact *c, int maxc)
+/* The reference plane of a clipping: its unit normal m, turned to face the incident feature, and nm. */
+static void clipPlane(Clip *k)
 {
-    MeVector3 buf[2][CLIP_MAX], m, nm, across;
-    int cnt, i, e, cur = 0, count = 0, dims;
     MeReal orient;
-    const MeReal incRadius = inc->s->radius;
-    polygonNormal(ref, m);
+    polygonNormal(k->ref, k->m);
     /* orientation of the reference polygon's vertex order about n */
-    orient = MeVector3Dot(m, n) >= ME_R(0.0) ? ME_R(1.0) : -ME_R(1.0);
-    MeVector3MultiplyScalar(nm, n, orient);
-    if (MeVector3Dot(m, ref->facing) < ME_R(0.0))
-        MeVector3Scale(m, -ME_R(1.0));
+    orient = MeVector3Dot(k->m, k->n) >= ME_R(0.0) ? ME_R(1.0) : -ME_R(1.0);
+    MeVector3MultiplyScalar(k->nm, k->n, orient);
+    if (MeVector3Dot(k->m, k->ref->facing) < ME_R(0.0))
+        MeVector3Scale(k->m, -ME_R(1.0));
+}
+
+/* The incident feature's surface points facing the reference, into out; returns their count. */
+static int incidentSurface(const Side *inc, MeVector3 out[CLIP_MAX])
+{
+    MeVector3 across;
+    int i;
+    const MeReal incRadius = inc->s->radius;
     /* A rounded incident segment (sphyl): its surface points facing the reference lie across the axis,
      * along the facing direction made perpendicular to the segment. They are clipped themselves (not
      * the axis), so that every clipped point stays over the reference feature. */
@@ -91,17 +106,25 @@ static int clipFaces(const Side *ref, const Side *inc, const MeVector3 n, MeBool
         MeVector3MultiplyAdd(across, -MeVector3Dot(across, ax), ax);
         MeVector3Normalize(across);
     }
-    cnt = inc->n;
-    for (i = 0; i < cnt; i++)
-        MeVector3ScaleAndAdd(buf[0][i], inc->pts[i], incRadius, across);
+    for (i = 0; i < inc->n; i++)
+        MeVector3ScaleAndAdd(out[i], inc->pts[i], incRadius, across);
+    return inc->n;
+}
+
+/* Clip the cnt points of buf[*cur] (a segment or polygon) against the reference polygon's side planes,
+ * alternating between the two buffers; *cur ends on the result, whose count is returned. */
+static int clipBySides(const Clip *k, MeVector3 buf[2][CLIP_MAX], int cnt, int *cur)
+{
+    const Side *ref = k->ref;
+    int i, e;
     for (e = 0; e < ref->n && cnt > 0; e++) {
         const MeReal *q = ref->pts[e], *q1 = ref->pts[(e + 1) % ref->n];
         MeVector3 edge, o;
-        int nxt = 1 - cur, out = 0, loops = cnt == 2 ? 1 : cnt;
+        int nxt = 1 - *cur, out = 0, loops = cnt == 2 ? 1 : cnt;
         MeVector3Subtract(edge, q1, q);
-        MeVector3Cross(o, edge, nm); /* outward side normal for a counter-clockwise polygon about nm */
+        MeVector3Cross(o, edge, k->nm); /* outward side normal for a counter-clockwise polygon about nm */
         for (i = 0; i < loops; i++) {
-            const MeReal *p = buf[cur][i], *p1 = buf[cur][(i + 1) % cnt];
+            const MeReal *p = buf[*cur][i], *p1 = buf[*cur][(i + 1) % cnt];
             MeVector3 dp, dp1;
             MeReal s0, s1;
             MeVector3Subtract(dp, p, q);
@@ -117,43 +140,77 @@ static int clipFaces(const Side *ref, const Side *inc, const MeVector3 n, MeBool
                 MeVector3Copy(buf[nxt][out++], p1);
         }
         cnt = out;
-        cur = nxt;
+        *cur = nxt;
     }
+    return cnt;
+}
+
+/* Whether p lies over the reference polygon (inside all its side planes, in projection along n). */
+static MeBool overReference(const Clip *k, const MeVector3 p)
+{
+    const Side *ref = k->ref;
+    MeBool inside = METRUE;
+    int e;
+    for (e = 0; e < ref->n && inside; e++) {
+        MeVector3 edge, o, dp;
+        MeVector3Subtract(edge, ref->pts[(e + 1) % ref->n], ref->pts[e]);
+        MeVector3Cross(o, edge, k->nm);
+        MeVector3Subtract(dp, p, ref->pts[e]);
+        inside = MeVector3Dot(o, dp) <= ME_R(0.0);
+    }
+    return inside;
+}
+
+/* The incident shape's deepest point (its support along the facing direction, e.g. a sphyl's end cap)
+ * is the minimum-translation witness; the clipped points of a rounded or tilted feature may all be
+ * shallower: add it to the count contacts (of a clipped feature of cnt points) when it lies over the
+ * reference feature and is deeper. Returns the new count. */
+static int addDeepest(const Clip *k, McdContact *c, int count, int cnt, int dims)
+{
+    const Side *ref = k->ref, *inc = k->inc;
+    MeVector3 p;
+    MeReal deepest = c[0].separation;
+    int i;
+    McdNfCoreSupport(inc->s, inc->facing, p);
+    MeVector3ScaleAndAdd(p, p, inc->s->radius, inc->facing);
+    for (i = 1; i < count; i++)
+        deepest = MeMIN(deepest, c[i].separation);
+    if (overReference(k, p) && emit(k, c, count, p, dims)) {
+        if (c[count].separation < deepest - MCD_NF_REL_EPS * (ref->s->size + inc->s->size)) {
+            if (cnt == 2) { /* a line contact stays two points: the nearer end gives way */
+                int near = MeVector3DistanceSqr(c[0].position, c[count].position) <=
+                                   MeVector3DistanceSqr(c[count - 1].position, c[count].position)
+                               ? 0
+                               : count - 1;
+                c[near] = c[count];
+            } else
+                count++;
+        }
+    }
+    return count;
+}
+
+/* Clip the incident feature (segment or polygon) against the side planes of the reference polygon;
+ * the side planes contain n, so this is clipping in projection along n. Writes at most CLIP_MAX
+ * contacts to c. */
+static int clipFaces(const Side *ref, const Side *inc, const MeVector3 n, MeBool refIsFirst, MeReal tol,
+                     McdContact *c)
+{
+    MeVector3 buf[2][CLIP_MAX];
+    int cnt, i, cur = 0, count = 0, dims;
+    Clip k;
+    k.ref = ref;
+    k.inc = inc;
+    k.n = n;
+    k.refIsFirst = refIsFirst;
+    k.tol = tol;
+    clipPlane(&k);
+    cnt = clipBySides(&k, buf, incidentSurface(inc, buf[0]), &cur);
     dims = cnt >= 3 ? 2 : (cnt == 2 ? 1 : 0);
     for (i = 0; i < cnt; i++)
-        count += emit(c, count, CLIP_MAX, ref, ref->pts[0], m, buf[cur][i], n, refIsFirst, tol, dims);
-    /* The incident shape's deepest point (its support along the facing direction, e.g. a sphyl's end
-     * cap) is the minimum-translation witness; the clipped points of a rounded or tilted feature may
-     * all be shallower: add it when it lies over the reference feature and is deeper. */
-    if (count > 0 && count < CLIP_MAX) {
-        MeVector3 p;
-        MeReal deepest = c[0].separation;
-        MeBool inside = METRUE;
-        McdNfCoreSupport(inc->s, inc->facing, p);
-        MeVector3ScaleAndAdd(p, p, incRadius, inc->facing);
-        for (i = 1; i < count; i++)
-            deepest = MeMIN(deepest, c[i].separation);
-        for (e = 0; e < ref->n && inside; e++) {
-            MeVector3 edge, o, dp;
-            MeVector3Subtract(edge, ref->pts[(e + 1) % ref->n], ref->pts[e]);
-            MeVector3Cross(o, edge, nm);
-            MeVector3Subtract(dp, p, ref->pts[e]);
-            inside = MeVector3Dot(o, dp) <= ME_R(0.0);
-        }
-        if (inside && emit(c, count, CLIP_MAX, ref, ref->pts[0], m, p, n, refIsFirst, tol, dims)) {
-            if (c[count].separation < deepest - MCD_NF_REL_EPS * (ref->s->size + inc->s->size)) {
-                if (cnt == 2) { /* a line contact stays two points: the nearer end gives way */
-                    int near = MeVector3DistanceSqr(c[0].position, c[count].position) <=
-                                       MeVector3DistanceSqr(c[count - 1].position, c[count].position)
-                                   ? 0
-                                   : count - 1;
-                    c[near] = c[count];
-                } else
-                    count++;
-            }
-        }
-    }
-    (void)maxc;
+        count += emit(&k, c, count, buf[cur][i], dims);
+    if (count > 0 && count < CLIP_MAX)
+        count = addDeepest(&k, c, count, cnt, dims);
     return count;
 }
 
@@ -265,6 +322,7 @@ int McdNfManifold(const McdNfShape *s1, const McdNfShape *s2, const McdNfDistanc
     return McdNfManifoldCoherent(s1, s2, d, tolerance, contacts, maxContacts, NULL);
 }
 
+/* Size: McdNfManifold's parameters and the reference side kept from the last step. */
 int McdNfManifoldCoherent(const McdNfShape *s1, const McdNfShape *s2, const McdNfDistance *d, MeReal tolerance,
                           McdContact *contacts, int maxContacts, int *refSide)
 {
@@ -293,9 +351,9 @@ int McdNfManifoldCoherent(const McdNfShape *s1, const McdNfShape *s2, const McdN
             if (refSide)
                 *refSide = firstRef ? 1 : 2;
             if (firstRef)
-                count = clipFaces(&f1, &f2, d->normal, METRUE, tolerance, buf, CLIP_MAX);
+                count = clipFaces(&f1, &f2, d->normal, METRUE, tolerance, buf);
             else
-                count = clipFaces(&f2, &f1, d->normal, MEFALSE, tolerance, buf, CLIP_MAX);
+                count = clipFaces(&f2, &f1, d->normal, MEFALSE, tolerance, buf);
         }
     } else if (f1.n == 2 && f2.n == 2) {
         count = clipSegments(&f1, &f2, d->normal, tolerance, s1->size + s2->size, buf);
@@ -311,6 +369,7 @@ int McdNfManifoldCoherent(const McdNfShape *s1, const McdNfShape *s2, const McdN
     return count;
 }
 
+/* Size: McdNearfieldFn's signature. */
 int McdNfConvexConvex(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                       MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {

@@ -222,7 +222,8 @@ int McdNfCallInPairFrame(McdNearfieldFn fn, const McdGeometryData *g1, MeMatrix4
  *  pair, so a small pair far from the origin keeps its own precision (a 2e-6 m box at 4e6 m gave depths
  *  of 1e10 in float). Nearer the origin the test gets the transforms as they are (same bits). The
  *  contacts are then kept as McdNfKeepPlausible keeps them (McdNfKeepValid for a user type). Inline:
- *  it runs for every pair tested, and the far case, rare, is out of line. */
+ *  it runs for every pair tested, and the far case, rare, is out of line.
+ *  Size: McdNearfieldFn's arguments and the test to call. */
 static inline int McdNfCallCentred(McdNearfieldFn fn, const McdGeometryData *g1, MeMatrix4 tm1,
                                    const McdGeometryData *g2, MeMatrix4 tm2, MeReal tolerance, McdContact *contacts,
                                    int maxContacts, void **cache)

@@ -32,6 +32,7 @@ static int finish(McdContact *c, int count, int maxContacts)
     return count;
 }
 
+/* Size: McdNearfieldFn's signature. */
 int McdNfSpherePlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                      MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
@@ -44,6 +45,7 @@ int McdNfSpherePlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometry
     return planePoint(contacts, 0, maxContacts, tm2, p, tolerance);
 }
 
+/* Size: McdNearfieldFn's signature. */
 int McdNfBoxPlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                   MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
@@ -70,6 +72,7 @@ int McdNfBoxPlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryDat
 #define MCD_NF_RIM_SIN ME_R(0.01)
 
 /* Four points of a rim (centre c, unit axis a, radius r), the first the lowest towards the plane. */
+/* Size: the contact array being filled, the plane, the rim (centre, axis, radius) and tolerance. */
 static int rimPoints(McdContact *c, int count, int maxc, MeMatrix4 plane, const MeVector3 centre,
                      const MeVector3 a, MeReal r, MeReal tol)
 {
@@ -101,6 +104,7 @@ static int rimPoints(McdContact *c, int count, int maxc, MeMatrix4 plane, const 
     return count;
 }
 
+/* Size: McdNearfieldFn's signature. */
 int McdNfCylinderPlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                        MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
@@ -121,6 +125,7 @@ int McdNfCylinderPlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeomet
     return count;
 }
 
+/* Size: McdNearfieldFn's signature. */
 int McdNfConePlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                    MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
@@ -145,6 +150,7 @@ int McdNfConePlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryDa
     return count;
 }
 
+/* Size: McdNearfieldFn's signature. */
 int McdNfSphylPlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                     MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {
@@ -192,6 +198,7 @@ static MeReal hullHeight(MeMatrix4 tm1, MeMatrix4 plane, const MeVector3 local)
  * neighbour lies below by more than MCD_NF_FEATURE_SIN of the edge -- each moved down by r: the
  * lowest points of their balls, on the surface exactly when the feature is level and within
  * r (1 - cos 3 deg) = 1.3e-3 r of it otherwise (another vertex's ball point lies inside the solid). */
+/* Size: McdNearfieldFn's signature. */
 int McdNfConvexMeshPlane(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                          MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {

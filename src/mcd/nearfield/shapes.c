@@ -175,96 +175,130 @@ static int convexFeature(const McdConvexMeshData *c, const MeVector3 n, MeVector
     return 2;
 }
 
+/* A sphyl's feature facing n: its axis when n is across it, else 0 (a point). */
+static int sphylFeature(const McdSphylData *c, const MeVector3 n, MeVector3 *pts)
+{
+    if (MeFabs(n[2]) <= MCD_NF_FEATURE_SIN) {
+        MeVector3Set(pts[0], ME_R(0.0), ME_R(0.0), -c->halfHeight);
+        MeVector3Set(pts[1], ME_R(0.0), ME_R(0.0), c->halfHeight);
+        return 2;
+    }
+    return 0;
+}
+
+/* A box's (half-extents r) feature facing n: a face, an edge, or 0 (a vertex). */
+static int boxFeature(const MeReal *r, const MeVector3 n, MeVector3 *pts)
+{
+    int small[3], nSmall = 0, i;
+    for (i = 0; i < 3; i++) {
+        small[i] = MeFabs(n[i]) <= MCD_NF_FEATURE_SIN;
+        nSmall += small[i];
+    }
+    if (nSmall == 2) { /* a face: the axis that is not small */
+        int a = small[0] ? (small[1] ? 2 : 1) : 0, b = (a + 1) % 3, c = (a + 2) % 3;
+        MeReal sa = signOf(n[a]);
+        static const MeReal u[4] = {ME_R(1.0), -ME_R(1.0), -ME_R(1.0), ME_R(1.0)};
+        static const MeReal v[4] = {ME_R(1.0), ME_R(1.0), -ME_R(1.0), -ME_R(1.0)};
+        for (i = 0; i < 4; i++) {
+            pts[i][a] = sa * r[a];
+            pts[i][b] = u[i] * r[b];
+            pts[i][c] = v[i] * r[c];
+        }
+        return 4;
+    }
+    if (nSmall == 1) { /* an edge along the small axis */
+        int a = small[0] ? 0 : (small[1] ? 1 : 2);
+        for (i = 0; i < 3; i++)
+            pts[0][i] = pts[1][i] = signOf(n[i]) * r[i];
+        pts[0][a] = -r[a];
+        pts[1][a] = r[a];
+        return 2;
+    }
+    return 0;
+}
+
+/* A cylinder's feature facing n (radial part rho; (dx, dy) orients a disc): an end disc, a side line,
+ * or 0 (a point of a rim). */
+static int cylinderFeature(const McdCylinderData *cy, const MeVector3 n, MeReal rho, MeReal dx, MeReal dy,
+                           MeVector3 *pts)
+{
+    const MeReal sinTol = MCD_NF_FEATURE_SIN;
+    MeReal r = cy->radius, hh = cy->halfHeight;
+    if (rho <= sinTol)
+        return discPolygon(r, signOf(n[2]) * hh, dx, dy, pts);
+    if (MeFabs(n[2]) <= sinTol) {
+        MeVector3Set(pts[0], r * n[0] / rho, r * n[1] / rho, -hh);
+        MeVector3Set(pts[1], r * n[0] / rho, r * n[1] / rho, hh);
+        return 2;
+    }
+    return 0;
+}
+
+/* A cone's feature facing n (radial part rho; (dx, dy) orients a disc): an end disc, a side line, or 0
+ * (a point). */
+static int coneFeature(const McdConeData *c, const MeVector3 n, MeReal rho, MeReal dx, MeReal dy, MeVector3 *pts)
+{
+    const MeReal sinTol = MCD_NF_FEATURE_SIN;
+    MeReal gr, gz, gl;
+    if (rho <= sinTol && n[2] < ME_R(0.0))
+        return discPolygon(c->lowerRadius, c->zLower, dx, dy, pts);
+    if (rho <= sinTol && c->upperRadius > ME_R(1e-3) * c->lowerRadius)
+        return discPolygon(c->upperRadius, c->zUpper, dx, dy, pts);
+    /* the side line at the azimuth of n: generator (gr, gz) from the lower to the upper rim */
+    gr = c->upperRadius - c->lowerRadius;
+    gz = c->zUpper - c->zLower;
+    gl = MeSqrt(gr * gr + gz * gz);
+    if (rho > sinTol && MeFabs(rho * gr + n[2] * gz) <= sinTol * gl) {
+        MeVector3Set(pts[0], c->lowerRadius * n[0] / rho, c->lowerRadius * n[1] / rho, c->zLower);
+        MeVector3Set(pts[1], c->upperRadius * n[0] / rho, c->upperRadius * n[1] / rho, c->zUpper);
+        return 2;
+    }
+    return 0;
+}
+
+/* A triangle's feature facing n: the vertices within the feature angle of the deepest, in order. */
+static int triangleFeature(const McdTriangleCoreData *t, const MeVector3 n, MeVector3 *pts)
+{
+    MeReal top = MeMAX3(MeVector3Dot(t->v[0], n), MeVector3Dot(t->v[1], n), MeVector3Dot(t->v[2], n));
+    int k, best = 0, count = 0;
+    for (k = 1; k < 3; k++)
+        if (MeVector3Dot(t->v[k], n) > MeVector3Dot(t->v[best], n))
+            best = k;
+    for (k = 0; k < 3; k++)
+        if (top - MeVector3Dot(t->v[k], n) <= MCD_NF_FEATURE_SIN * MeVector3Distance(t->v[k], t->v[best]))
+            MeVector3Copy(pts[count++], t->v[k]);
+    return count;
+}
+
 /* The local feature of a core facing the local unit direction n; h orients discs when n has no
  * radial part. */
 static int localFeature(const McdGeometryData *g, const MeVector3 n, const MeVector3 h, MeVector3 *pts)
 {
-    const MeReal sinTol = MCD_NF_FEATURE_SIN;
     MeReal rho = MeSqrt(n[0] * n[0] + n[1] * n[1]);
     MeReal dx = rho > ME_R(1e-3) ? n[0] : h[0], dy = rho > ME_R(1e-3) ? n[1] : h[1];
+    int count = 0;
     switch (g->type) {
     case kMcdGeometryTypeConvexMesh:
         return convexFeature(&g->u.convex, n, pts);
     case kMcdGeometryTypeSphyl:
-        if (MeFabs(n[2]) <= sinTol) {
-            MeVector3Set(pts[0], ME_R(0.0), ME_R(0.0), -g->u.sphyl.halfHeight);
-            MeVector3Set(pts[1], ME_R(0.0), ME_R(0.0), g->u.sphyl.halfHeight);
-            return 2;
-        }
+        count = sphylFeature(&g->u.sphyl, n, pts);
         break;
-    case kMcdGeometryTypeBox: {
-        const MeReal *r = g->u.box.radii;
-        int small[3], nSmall = 0, i;
-        for (i = 0; i < 3; i++) {
-            small[i] = MeFabs(n[i]) <= sinTol;
-            nSmall += small[i];
-        }
-        if (nSmall == 2) { /* a face: the axis that is not small */
-            int a = small[0] ? (small[1] ? 2 : 1) : 0, b = (a + 1) % 3, c = (a + 2) % 3;
-            MeReal sa = signOf(n[a]);
-            static const MeReal u[4] = {ME_R(1.0), -ME_R(1.0), -ME_R(1.0), ME_R(1.0)};
-            static const MeReal v[4] = {ME_R(1.0), ME_R(1.0), -ME_R(1.0), -ME_R(1.0)};
-            for (i = 0; i < 4; i++) {
-                pts[i][a] = sa * r[a];
-                pts[i][b] = u[i] * r[b];
-                pts[i][c] = v[i] * r[c];
-            }
-            return 4;
-        }
-        if (nSmall == 1) { /* an edge along the small axis */
-            int a = small[0] ? 0 : (small[1] ? 1 : 2);
-            for (i = 0; i < 3; i++)
-                pts[0][i] = pts[1][i] = signOf(n[i]) * r[i];
-            pts[0][a] = -r[a];
-            pts[1][a] = r[a];
-            return 2;
-        }
+    case kMcdGeometryTypeBox:
+        count = boxFeature(g->u.box.radii, n, pts);
         break;
-    }
-    case kMcdGeometryTypeCylinder: {
-        MeReal r = g->u.cylinder.radius, hh = g->u.cylinder.halfHeight;
-        if (rho <= sinTol)
-            return discPolygon(r, signOf(n[2]) * hh, dx, dy, pts);
-        if (MeFabs(n[2]) <= sinTol) {
-            MeVector3Set(pts[0], r * n[0] / rho, r * n[1] / rho, -hh);
-            MeVector3Set(pts[1], r * n[0] / rho, r * n[1] / rho, hh);
-            return 2;
-        }
+    case kMcdGeometryTypeCylinder:
+        count = cylinderFeature(&g->u.cylinder, n, rho, dx, dy, pts);
         break;
-    }
-    case kMcdGeometryTypeCone: {
-        const McdConeData *c = &g->u.cone;
-        MeReal gr, gz, gl;
-        if (rho <= sinTol && n[2] < ME_R(0.0))
-            return discPolygon(c->lowerRadius, c->zLower, dx, dy, pts);
-        if (rho <= sinTol && c->upperRadius > ME_R(1e-3) * c->lowerRadius)
-            return discPolygon(c->upperRadius, c->zUpper, dx, dy, pts);
-        /* the side line at the azimuth of n: generator (gr, gz) from the lower to the upper rim */
-        gr = c->upperRadius - c->lowerRadius;
-        gz = c->zUpper - c->zLower;
-        gl = MeSqrt(gr * gr + gz * gz);
-        if (rho > sinTol && MeFabs(rho * gr + n[2] * gz) <= sinTol * gl) {
-            MeVector3Set(pts[0], c->lowerRadius * n[0] / rho, c->lowerRadius * n[1] / rho, c->zLower);
-            MeVector3Set(pts[1], c->upperRadius * n[0] / rho, c->upperRadius * n[1] / rho, c->zUpper);
-            return 2;
-        }
+    case kMcdGeometryTypeCone:
+        count = coneFeature(&g->u.cone, n, rho, dx, dy, pts);
         break;
-    }
-    case MCD_NF_TRIANGLE_TYPE: { /* the vertices within the feature angle of the deepest, in order */
-        const McdTriangleCoreData *t = &g->u.triangle;
-        MeReal top = MeMAX3(MeVector3Dot(t->v[0], n), MeVector3Dot(t->v[1], n), MeVector3Dot(t->v[2], n));
-        int k, best = 0, count = 0;
-        for (k = 1; k < 3; k++)
-            if (MeVector3Dot(t->v[k], n) > MeVector3Dot(t->v[best], n))
-                best = k;
-        for (k = 0; k < 3; k++)
-            if (top - MeVector3Dot(t->v[k], n) <= sinTol * MeVector3Distance(t->v[k], t->v[best]))
-                MeVector3Copy(pts[count++], t->v[k]);
-        return count;
-    }
+    case MCD_NF_TRIANGLE_TYPE:
+        return triangleFeature(&g->u.triangle, n, pts);
     default:
         break;
     }
+    if (count > 0)
+        return count;
     localCoreSupport(g, n, pts[0]);
     return 1;
 }

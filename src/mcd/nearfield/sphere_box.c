@@ -2,6 +2,7 @@
  * the box, the nearest face (internal). */
 #include "nearfield.h"
 
+/* Size: McdNearfieldFn's signature. */
 int McdNfSphereBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                    MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {

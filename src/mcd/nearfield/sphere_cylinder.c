@@ -2,6 +2,7 @@
  * centre inside it, the nearest of the side and the caps (internal). */
 #include "nearfield.h"
 
+/* Size: McdNearfieldFn's signature. */
 int McdNfSphereCylinder(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                         MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {

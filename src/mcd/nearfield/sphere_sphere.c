@@ -1,6 +1,7 @@
 /* sphere_sphere.c -- sphere against sphere: the line of centres (internal). */
 #include "nearfield.h"
 
+/* Size: McdNearfieldFn's signature. */
 int McdNfSphereSphere(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                       MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {

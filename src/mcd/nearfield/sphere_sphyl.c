@@ -1,6 +1,7 @@
 /* sphere_sphyl.c -- sphere against sphyl (capsule): the centre against the capsule's segment. */
 #include "nearfield.h"
 
+/* Size: McdNearfieldFn's signature. */
 int McdNfSphereSphyl(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2,
                      MeReal tolerance, McdContact *contacts, int maxContacts, void **cache)
 {

@@ -91,6 +91,7 @@ static MeBool withinDistance(const MeVector3 p, const MeVector3 origin, MeReal b
  * specialised): the contacts within [deepest, shallowest] of separation, with a unit normal, finite
  * (`finiteTests`) and within `bound` of `origin` (`distanceTest`), kept in place and the others
  * counted. */
+/* Size: the flags and bounds stay separate parameters so that each use, inlined, is specialised. */
 static inline int keepIf(McdContact *contacts, int n, MeBool finiteTests, MeBool distanceTest, MeReal deepest,
                          MeReal shallowest, const MeVector3 origin, MeReal bound, MeReal boundSqr)
 {
@@ -126,6 +127,7 @@ int McdNfKeepPlausible(MeReal reach, MeMatrix4 tm1, MeMatrix4 tm2, MeReal tolera
                        : keepIf(contacts, n, MEFALSE, METRUE, -bound, shallowest, tm1[3], bound, bound * bound);
 }
 
+/* Size: McdNearfieldFn's arguments, the test to call and the pair's reach. */
 int McdNfCallInPairFrame(McdNearfieldFn fn, const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2,
                          MeMatrix4 tm2, MeReal reach, MeReal tolerance, McdContact *contacts, int maxContacts,
                          void **cache)
@@ -147,6 +149,7 @@ int McdNfCallInPairFrame(McdNearfieldFn fn, const McdGeometryData *g1, MeMatrix4
     return n;
 }
 
+/* Size: McdNearfieldFn's arguments without the cache. */
 int McdNfCollide(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2, MeReal tolerance,
                  McdContact *contacts, int maxContacts)
 {
