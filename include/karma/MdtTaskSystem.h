@@ -23,7 +23,10 @@
  * afterwards on the stepping thread in the serial order: the trajectories are bit-identical to the
  * serial step for every worker count and every task system (decisions K33, K38). Messages a stage
  * reports from inside an item (a row writer's, a pair test's, a contact conversion's) and Karma's
- * per-model intersect callbacks may run on a worker.
+ * per-model intersect callbacks may run on a worker; an intersect callback may run while the
+ * previous chunk of pairs is converted into contacts, so it must read only its own pair's result,
+ * not the world or contact groups. In that pipelined update a chunk's Hellos are reported before
+ * its Goodbyes, not after them (decision K44); the contacts and pool slots are the serial update's.
  *
  * Memory: the solver's workspace chunk holds one workspace per worker; setting the worker count sizes
  * it for that many at once (from the largest workspace seen so far), and the marks of the items each

@@ -5,11 +5,10 @@
  * in both. The world has no mask: any number of constraints of one colour may hold a body to the
  * world, since the world's velocity is never written. Greedy first-fit in the constraints' order: a
  * constraint sharing bodies with d others gets a colour below d + 1, so a chain takes two colours
- * and a grid of stacked boxes a handful; only a body with more than KEA_COLOUR_COUNT constraints
- * sends some of them to the overflow colour. The same for items of more bodies (KeaColourItems:
+ * and a grid of stacked boxes a handful; a constraint whose bodies together already hold every colour
+ * goes to the overflow colour (possible with fewer than KEA_COLOUR_COUNT constraints on each body). The same for items of more bodies (KeaColourItems:
  * SM's packs of four contacts, up to eight bodies). A mask per body (an OR and a bit search per
- * constraint) rather than a bit set of bodies per colour (a test per colour tried): the same
- * colours, found in a few operations however many colours are tried. */
+ * constraint): a colour is found in a few operations however many colours are tried. */
 #include <stdint.h>
 #include <string.h>
 

@@ -15,8 +15,9 @@
  * holds 0 in every SM vector (its gather is multiplied by 0, its bounds and x are 0), so it adds
  * nothing to any product, sum or step. Each of CG's stages is one pass over the packs that does its
  * vector work beside its product (KeaPacksCgStart, KeaPacksCgProduct, KeaPacksCgUpdate,
- * KeaPacksScatterDirection, KeaPacksTrial), in the order of the element-by-element loops it
- * replaced, so with the same bits (docs/kea.md, "SM's passes, one per product").
+ * KeaPacksScatterDirection, KeaPacksTrial), its sums in SM's position order (docs/kea.md, "SM's
+ * passes, one per product"). Masking by a product assumes finite x, rhs and dv (a NaN in a masked
+ * row would reach the sums; SM stops on a non-positive or NaN res . z).
  *
  * The scatter adds a lane's contribution to its bodies lane by lane, in lane order: the four
  * contacts of a pack may share a body (neighbouring contacts usually do: the four corners of one
@@ -222,7 +223,7 @@ void KeaPacksCgUpdate(const KeaIterativeWork *w, MeReal a, int first, int last, 
  * (J dvTmp + eps s)), each position's term added in position order (one sum, as SM's scalar loop). */
 MeReal KeaPacksTrial(const KeaIterativeWork *w, int first, int last, MeReal df);
 /* The accepted step: x += z at every pack position whose z is not 0 (a masked row's is 0: x is left
- * alone, the same bits as the position loop it replaces, without its list of rows). */
+ * alone), with no list of rows. */
 void KeaPacksApply(const KeaIterativeWork *w, MeReal *x);
 
 #endif
