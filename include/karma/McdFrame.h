@@ -72,6 +72,10 @@ ME_API McdRequest *McdFrameworkGetDefaultRequestPtr(McdFrameworkID fw);
 ME_API void McdFrameworkSetDefaultRequestPtr(McdFrameworkID fw, McdRequest *request);
 /** Number of live models in the framework's pool; 0 for an invalid ID (reported). */
 ME_API int McdFrameworkGetModelCount(McdFrameworkID fw);
+/** Number of live models of the framework with an intersect callback (McdModelSetIntersectCallback);
+ *  0 for an invalid ID (reported). For a bridge that must know whether pair tests call the
+ *  application (Mst runs them beside its conversion only when none do). An addition. */
+ME_API int McdFrameworkGetIntersectCallbackCount(McdFrameworkID fw);
 /** Number of live geometries in the framework's pool; 0 for an invalid ID (reported). */
 ME_API int McdFrameworkGetGeometryCount(McdFrameworkID fw);
 /** Size of the model pool given to McdInit; 0 for an invalid ID (reported). */

@@ -65,6 +65,12 @@ ME_API int MdtWorldGetWorkerCount(MdtWorldID w);
  *  calling thread as worker 0 (ME_ERR_TASK_WORKER). For the application's per-item work that must
  *  share the world's workers (the bridge's pair tests use it). NULL task: ME_ERR_TASK_CALLBACK. */
 ME_API void MdtWorldRunTask(MdtWorldID w, MdtTaskFnPtr task, int itemCount, int minRange, void *taskData);
+/** Make room now for the bookkeeping of tasks of up to `itemCount` items (one byte each), so that
+ *  MdtWorldRunTask does not allocate during a step for them (the world sizes it for its pools when the
+ *  task system is set; a layer with larger tasks, as the bridge's pair tests, asks for more). Returns
+ *  METRUE when the room is there; MEFALSE without memory (reported) or for a negative count
+ *  (ME_ERR_ARGUMENT_RANGE). An addition (docs/api_changes.md). */
+ME_API MeBool MdtWorldReserveTaskItems(MdtWorldID w, int itemCount);
 
 ME_EXTERN_C_END
 

@@ -241,6 +241,12 @@ int McdFrameworkGetModelCount(McdFrameworkID id)
     return MePoolGetUsed(&fw->modelPool);
 }
 
+int McdFrameworkGetIntersectCallbackCount(McdFrameworkID id)
+{
+    FW_OR_RETURN(fw, id, 0);
+    return fw->intersectCallbackCount;
+}
+
 int McdFrameworkGetGeometryCount(McdFrameworkID id)
 {
     FW_OR_RETURN(fw, id, 0);

@@ -71,6 +71,7 @@ typedef struct McdFrameworkData {
     MeU32 nextPairId;              /* identities of pairs made by McdModelPairCreate */
     int continuousCount;           /* models with McdModelEnableContinuous (model_sweep.c), listed in */
     struct McdModelData **continuousModels; /* enable order (a removal moves the last one in), or NULL */
+    int intersectCallbackCount;    /* live models with McdModelSetIntersectCallback's callback set */
     /* McdFrameworkGetCounters (atomic: pairs may be tested on several threads) */
     atomic_ulong pairFallbacks, droppedContacts, segmentFallbacks;
 } McdFrameworkData;

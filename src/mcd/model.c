@@ -23,6 +23,13 @@ McdModelData *McdModelFromID(McdModelID id, const char *function)
     if (!m)                                                                                          \
     return ret
 
+/* Set the model's intersect callback, keeping the framework's count of models that have one. */
+static void setIntersectFn(McdModelData *m, McdModelIntersectFnPtr fn)
+{
+    m->framework->intersectCallbackCount += (fn != NULL) - (m->intersectFn != NULL);
+    m->intersectFn = fn;
+}
+
 static void setDefaults(McdModelData *m)
 {
     m->transform = NULL;
@@ -41,7 +48,7 @@ static void setDefaults(McdModelData *m)
     m->angularVelocity = NULL;
     m->requestID = McdModelGetDefaultRequestID();
     m->updateFn = NULL;
-    m->intersectFn = NULL;
+    setIntersectFn(m, NULL);
     m->inUpdateFn = MEFALSE;
     m->continuous = MEFALSE;
 }
@@ -177,6 +184,7 @@ McdModelID McdModelCreate(McdGeometryID geometry)
     m->id = MeHandleOfSlot(fw->ownerSlot, ME_HANDLE_MODEL, MePoolIndexOf(&fw->modelPool, m));
     m->framework = fw;
     m->geometry = g;
+    m->intersectFn = NULL; /* a pool slot holds a destroyed model's leftovers: none counted */
     if (!McdInstanceTreeCreate(m, __func__)) {
         MePoolPutStruct(&fw->modelPool, m);
         return NULL;
@@ -199,6 +207,7 @@ void McdModelDestroy(McdModelID id)
         return;
     }
     McdModelContinuousForget(m);
+    setIntersectFn(m, NULL);
     m->geometry->refCount--;
     McdInstanceTreeDestroy(m);
     MePoolPutStruct(&m->framework->modelPool, m);
@@ -461,7 +470,7 @@ McdModelUpdateFnPtr McdModelGetUpdateCallback(McdModelID id)
 void McdModelSetIntersectCallback(McdModelID id, McdModelIntersectFnPtr fn)
 {
     MODEL_OR_RETURN(m, id, ME_NOTHING);
-    m->intersectFn = fn;
+    setIntersectFn(m, fn);
 }
 
 McdModelIntersectFnPtr McdModelGetIntersectCallback(McdModelID id)
@@ -536,6 +545,7 @@ void McdFrameworkDestroyAllModelsAndGeometries(McdFrameworkID id)
         if (m->space)
             McdSpaceForgetModel(m);
         McdModelContinuousForget(m);
+        setIntersectFn(m, NULL);
         m->geometry->refCount--;
         McdInstanceTreeDestroy(m);
         MePoolPutStruct(&fw->modelPool, m);

@@ -147,3 +147,15 @@ void MdtWorldRunTask(MdtWorldID id, MdtTaskFnPtr task, int itemCount, int minRan
         minRange = 1;
     MdtRunStepTask(w, task, itemCount, minRange, taskData);
 }
+
+MeBool MdtWorldReserveTaskItems(MdtWorldID id, int itemCount)
+{
+    MdtWorldData *w = MdtWorldFromID(id, __func__);
+    if (!w)
+        return MEFALSE;
+    if (itemCount < 0) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'itemCount' (%d) must not be negative; call ignored", itemCount);
+        return MEFALSE;
+    }
+    return MeChunkGetCurrentSize(&w->taskChunk) >= (size_t)itemCount || MeChunkSetAuto(&w->taskChunk, (size_t)itemCount);
+}

@@ -147,7 +147,7 @@ void MstBridgeSetModelPairBufferSize(MstBridgeID id, int size)
     b->pairs = c;
     b->pairBufferSize = size;
     if (b->tested)
-        MstBridgeReserveParallel(b); /* the parallel pair tests' records follow, now */
+        MstBridgeReserveParallel(b, NULL); /* the parallel pair tests' records follow, now */
 }
 
 int MstBridgeGetModelPairBufferSize(MstBridgeID id)
@@ -174,7 +174,7 @@ void MstBridgeSetContactBufferSize(MstBridgeID id, int size)
     b->contacts = c;
     b->contactBufferSize = size;
     if (b->tested)
-        MstBridgeReserveParallel(b); /* the parallel pair tests' records follow, now */
+        MstBridgeReserveParallel(b, NULL); /* the parallel pair tests' records follow, now */
 }
 
 int MstBridgeGetContactBufferSize(MstBridgeID id)
@@ -310,7 +310,10 @@ int MstBridgeConvertPair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world,
         return 0; /* two pieces of the world, or a bad model (reported) */
     }
     MdtBodyID b1 = (MdtBodyID)models->bodyData[0], b2 = (MdtBodyID)models->bodyData[1];
-    MstMaterialPairData *mat = MstBridgeMaterialPair(b, models->material[0], models->material[1], "MstHandleCollisions");
+    /* Named as the call the application made (MstHandleCollisions names itself if nothing did). */
+    const char *caller = MdtWorldGetCallerName(world);
+    MstMaterialPairData *mat = MstBridgeMaterialPair(b, models->material[0], models->material[1],
+                                                     caller ? caller : "MstHandleCollisions");
     if (!mat)
         return 0;
     if (result->contactCount > 0 && mat->intersectCB)

@@ -49,6 +49,11 @@ typedef struct MstBridgeData {
     int testedPairs, testedContactsPerPair;
     McdModelPairContainer *nextPairs;  /* the next chunk, read while this one is converted */
     const char *materialsSizeName;     /* what sets maxMaterials, for "pool full" messages */
+    int materialCallbackCount;         /* table entries with a callback (the setters keep it) */
+    /* Buffer sizes the records could not be made for (reported then; 0: no failure): not tried again
+     * until a size changes. */
+    int failedPairs, failedContactsPerPair;
+    MdtWorldID markedWorld;            /* the world whose task marks were sized for a chunk's tasks */
 } MstBridgeData;
 
 MstBridgeData *MstBridgeFromID(MstBridgeID id, const char *function);
@@ -79,9 +84,11 @@ void MstBridgeSayHello(McdModelPairContainer *pairs);
  *  thread): then the caller reads the pairs chunk by chunk itself. Called with the space's changes ended. */
 MeBool MstBridgeReadPairsPipelined(MstBridgeData *b, McdSpaceID space, MdtWorldID world);
 /** Make (or remake, for new buffer sizes) the records of the parallel pair tests: two sets of one per
- *  pair of the pair buffer, with the contact buffer's room each, and the second pair container.
- *  MEFALSE, reported by MeMemory, without memory. */
-MeBool MstBridgeReserveParallel(MstBridgeData *b);
+ *  pair of the pair buffer, with the contact buffer's room each, and the second pair container; and
+ *  size `world`'s task marks (NULL: the world they were last sized for, if still valid) for a chunk's
+ *  tasks (pairBufferSize + 1 items). MEFALSE, reported by MeMemory, without memory; a failure is
+ *  remembered, and not tried again, until a buffer size changes. */
+MeBool MstBridgeReserveParallel(MstBridgeData *b, MdtWorldID world);
 /** Free the records of the parallel pair tests. */
 void MstBridgeFreeParallel(MstBridgeData *b);
 

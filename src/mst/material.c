@@ -55,14 +55,20 @@ MdtContactParamsID MstBridgeGetContactParams(MstBridgeID id, MstMaterialID m1, M
     return e ? &e->params : NULL;
 }
 
-/* Setter and getter of one callback field of the table. */
+static MeBool hasCallback(const MstMaterialPairData *e) { return e->intersectCB || e->perContactCB || e->perPairCB; }
+
+/* Setter and getter of one callback field of the table; the setter keeps the bridge's count of entries
+ * with a callback, which decides whether its update may run on several workers. */
 #define MATERIAL_CALLBACK(Name, Type, field)                                                         \
     void MstBridgeSet##Name(MstBridgeID id, MstMaterialID m1, MstMaterialID m2, Type cb)             \
     {                                                                                                \
         MstBridgeData *b = MstBridgeFromID(id, __func__);                                                \
         MstMaterialPairData *e = b ? MstBridgeMaterialPair(b, m1, m2, __func__) : NULL;                  \
-        if (e)                                                                                       \
-            e->field = cb;                                                                           \
+        if (!e)                                                                                      \
+            return;                                                                                  \
+        const MeBool had = hasCallback(e);                                                           \
+        e->field = cb;                                                                               \
+        b->materialCallbackCount += hasCallback(e) - had;                                            \
     }                                                                                                \
     Type MstBridgeGet##Name(MstBridgeID id, MstMaterialID m1, MstMaterialID m2)                      \
     {                                                                                                \

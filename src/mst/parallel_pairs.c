@@ -17,8 +17,10 @@
  * keeps the chunk-by-chunk update: its callbacks run on the stepping thread, in pair order. */
 #include <string.h>
 
+#include <karma/McdFrame.h>
 #include <karma/McdSpace.h>
 #include <karma/MdtTaskSystem.h>
+#include <karma/MdtWorld.h>
 #include <karma/MeMemory.h>
 
 #include "bridge.h"
@@ -72,10 +74,28 @@ void MstBridgeFreeParallel(MstBridgeData *b)
     b->testedPairs = b->testedContactsPerPair = 0;
 }
 
-MeBool MstBridgeReserveParallel(MstBridgeData *b)
+/* Size the world's task marks for a chunk's tasks: its pairs' tests and the conversion beside them. A
+ * failure is reported by the world's chunk; the tasks then run serially, as MdtWorldRunTask does
+ * without memory for its marks, so it is not tried again for this world. */
+static void markWorld(MstBridgeData *b, MdtWorldID world)
 {
-    if (b->tested && b->testedPairs == b->pairBufferSize && b->testedContactsPerPair == b->contactBufferSize)
+    if (!world && b->markedWorld && MdtWorldIsValid(b->markedWorld))
+        world = b->markedWorld;
+    if (!world)
+        return;
+    (void)MdtWorldReserveTaskItems(world, b->pairBufferSize + 1);
+    b->markedWorld = world;
+}
+
+MeBool MstBridgeReserveParallel(MstBridgeData *b, MdtWorldID world)
+{
+    if (b->tested && b->testedPairs == b->pairBufferSize && b->testedContactsPerPair == b->contactBufferSize) {
+        if (world && world != b->markedWorld)
+            markWorld(b, world);
         return METRUE;
+    }
+    if (b->failedPairs == b->pairBufferSize && b->failedContactsPerPair == b->contactBufferSize)
+        return MEFALSE; /* failed for these sizes (reported then): not again at every update */
     MstBridgeFreeParallel(b);
     b->tested = MeMemoryCreate(sizeof *b->tested * 2 * (size_t)b->pairBufferSize);
     b->testedContacts = MeMemoryCreate(sizeof *b->testedContacts * 2 * (size_t)b->pairBufferSize *
@@ -83,10 +103,14 @@ MeBool MstBridgeReserveParallel(MstBridgeData *b)
     b->nextPairs = McdModelPairContainerCreate(b->pairBufferSize);
     if (!b->tested || !b->testedContacts || !b->nextPairs) {
         MstBridgeFreeParallel(b); /* reported by MeMemory; the pairs are tested serially */
+        b->failedPairs = b->pairBufferSize;
+        b->failedContactsPerPair = b->contactBufferSize;
         return MEFALSE;
     }
+    b->failedPairs = b->failedContactsPerPair = 0;
     b->testedPairs = b->pairBufferSize;
     b->testedContactsPerPair = b->contactBufferSize;
+    markWorld(b, world);
     return METRUE;
 }
 
@@ -96,7 +120,7 @@ MeBool MstBridgeCollideInParallel(MstBridgeData *b, MdtWorldID world, McdModelPa
     const int count = helloCount + stayingCount;
     if (MdtWorldGetWorkerCount(world) <= 1 || count <= PAIR_MIN_RANGE || count > b->pairBufferSize)
         return MEFALSE;
-    if (!MstBridgeReserveParallel(b))
+    if (!MstBridgeReserveParallel(b, world))
         return MEFALSE;
     PairTask task = {b, hello, staying, helloCount};
     MdtWorldRunTask(world, testPairs, count, PAIR_MIN_RANGE, &task);
@@ -160,53 +184,49 @@ static void pipelineItems(int start, int end, int worker, void *data)
     }
 }
 
-/* Whether a material of the bridge has a callback (which must run on the stepping thread). */
-static MeBool anyMaterialCallback(const MstBridgeData *b)
+/* Whether the pair tests or the conversion call the application: a material's callback (which runs
+ * in the conversion) or a model's intersect callback (which runs in the pair test, and so would run
+ * beside the previous chunk's conversion). Then the update stays chunk by chunk. */
+static MeBool callsTheApplication(const MstBridgeData *b)
 {
-    for (int i = 0; i < b->materialCount; i++)
-        for (int j = i; j < b->materialCount; j++) {
-            const MstMaterialPairData *m = &b->table[i * b->maxMaterials + j];
-            if (m->intersectCB || m->perContactCB || m->perPairCB)
-                return METRUE;
-        }
-    return MEFALSE;
+    return b->materialCallbackCount > 0 || (b->framework && McdFrameworkGetIntersectCallbackCount(b->framework) > 0);
 }
 
 MeBool MstBridgeReadPairsPipelined(MstBridgeData *b, McdSpaceID space, MdtWorldID world)
 {
-    if (MdtWorldGetWorkerCount(world) <= 1 || anyMaterialCallback(b) || !MstBridgeReserveParallel(b))
+    if (MdtWorldGetWorkerCount(world) <= 1 || callsTheApplication(b) || !MstBridgeReserveParallel(b, world))
         return MEFALSE;
     McdSpacePairIterator it;
     McdSpacePairIteratorBegin(space, &it);
     Chunk chunks[2] = {{b->pairs, 0, NULL, NULL, 0, 0}, {b->nextPairs, 1, NULL, NULL, 0, 0}};
-    Chunk *cur = &chunks[0], *next = &chunks[1];
-    McdModelPairContainerReset(cur->pairs);
-    MeBool more = McdSpaceGetPairs(space, &it, cur->pairs);
-    MstBridgeSayGoodbye(cur->pairs);
-    MstBridgeSayHello(cur->pairs);
-    readChunk(cur);
-    PipelineTask task = {b, world, NULL, cur, 0};
-    MdtWorldRunTask(world, pipelineItems, 1 + cur->count, PAIR_MIN_RANGE, &task); /* item 0 converts nothing */
-    for (;;) {
-        b->lastPairCount += cur->count;
-        task.convert = cur;
+    Chunk *converted = NULL, *read = &chunks[0];
+    PipelineTask task = {b, world, NULL, NULL, 0};
+    MeBool more = METRUE;
+    /* Each pass reads the next chunk (if any), then tests it beside the conversion of the chunk before:
+     * the first pass converts nothing, the last reads and tests nothing. */
+    while (more || converted) {
         task.test = NULL;
         if (more) {
-            McdModelPairContainerReset(next->pairs);
-            more = McdSpaceGetPairs(space, &it, next->pairs);
-            MstBridgeSayHello(next->pairs);
-            readChunk(next);
-            task.test = next;
+            McdModelPairContainerReset(read->pairs);
+            more = McdSpaceGetPairs(space, &it, read->pairs);
+            if (!converted) /* the first chunk: its goodbyes come first, as in the serial update */
+                MstBridgeSayGoodbye(read->pairs);
+            MstBridgeSayHello(read->pairs);
+            readChunk(read);
+            task.test = read;
         }
+        task.convert = converted;
         task.contacts = 0;
-        MdtWorldRunTask(world, pipelineItems, 1 + (task.test ? next->count : 0), PAIR_MIN_RANGE, &task);
+        MdtWorldRunTask(world, pipelineItems, 1 + (task.test ? task.test->count : 0), PAIR_MIN_RANGE, &task);
         b->lastContactCount += task.contacts;
-        if (!task.test)
-            break;
-        MstBridgeSayGoodbye(next->pairs); /* after the conversion before it, as in the serial update */
-        Chunk *t = cur;
-        cur = next;
-        next = t;
+        if (task.test) {
+            b->lastPairCount += task.test->count;
+            if (converted) /* after the conversion before it, as in the serial update */
+                MstBridgeSayGoodbye(read->pairs);
+        }
+        Chunk *const spare = converted ? converted : &chunks[1];
+        converted = task.test ? read : NULL;
+        read = spare;
     }
     return METRUE;
 }

@@ -206,7 +206,7 @@ MstUniverseID MstUniverseCreate(const MstUniverseSizes *sizes)
     MstSetWorldHandlers(u->world);
     nameSizes(u);
     if (MdtWorldGetWorkerCount(u->world) > 1) /* a world that steps on a task system from its creation */
-        MstBridgeReserveParallel(MstBridgeFromID(u->bridge, __func__));
+        MstBridgeReserveParallel(MstBridgeFromID(u->bridge, __func__), u->world);
     /* The entry is this thread's from the claim on; the ID is handed out only after this. */
     universes[index] = (MstUniverse){.sizes = u->sizes, .world = u->world, .frame = u->framework,
                                      .space = u->space, .bridge = u->bridge};
@@ -333,7 +333,7 @@ void MstUniverseSetTaskSystem(MstUniverseID id, int workerCount, MdtEnqueueTaskC
     MdtWorldSetCallerName(u->world, worldCaller);
     /* The bridge's records for pair tests on the workers, now rather than in a step. */
     if (MdtWorldGetWorkerCount(u->world) > 1)
-        MstBridgeReserveParallel(MstBridgeFromID(u->bridge, __func__));
+        MstBridgeReserveParallel(MstBridgeFromID(u->bridge, __func__), u->world);
 }
 
 /* ---- mass properties from geometry ---------------------------------------------------------- */
