@@ -18,14 +18,14 @@
  * velocities, the writing of each partition's rows, the partitions' solves (each on a workspace of its
  * worker's), their integration, the unpacking of the constraints' forces, and, with MstUniverseStep or
  * MstBridgeUpdateContacts, the bridge's pair tests (and, beside a chunk's tests, the previous chunk's
- * conversion into contacts when no material has a callback). Each item writes only its own data and
+ * conversion into contacts when no material has a callback and no model an intersect callback). Each item writes only its own data and
  * everything that must happen in order (messages, counters, the application's callbacks) happens
  * afterwards on the stepping thread in the serial order: the trajectories are bit-identical to the
  * serial step for every worker count and every task system (decisions K33, K38). Messages a stage
  * reports from inside an item (a row writer's, a pair test's, a contact conversion's) and Karma's
- * per-model intersect callbacks may run on a worker; an intersect callback may run while the
- * previous chunk of pairs is converted into contacts, so it must read only its own pair's result,
- * not the world or contact groups. In that pipelined update a chunk's Hellos are reported before
+ * per-model intersect callbacks may run on a worker, with the other pairs of their chunk, but never
+ * beside a conversion into contacts: while any model has one (McdFrameworkGetIntersectCallbackCount)
+ * the bridge converts chunk by chunk. In the pipelined update a chunk's Hellos are reported before
  * its Goodbyes, not after them (decision K44); the contacts and pool slots are the serial update's.
  *
  * Memory: the solver's workspace chunk holds one workspace per worker; setting the worker count sizes
