@@ -163,6 +163,13 @@ typedef struct MdtRowWriter {
 /** Append a row for the current constraint; returns its index relative to the constraint's first
  *  row, or -1 when the capacity (the class's row count) is exhausted. */
 int MdtRowWriterAdd(MdtRowWriter *w, const MdtRow *row);
+/** Add a contact's three rows at once: row k's Jacobian is that of direction dir[k] at lever arms r0
+ *  and r1 (J v = dir·(v0 + ω0 × r0 − v1 − ω1 × r1), as the contact's rows are written), the rest of
+ *  the row from params[k] (whose lin/ang are not read), its warm start x0[k]. The arrays get the bits
+ *  three MdtRowWriterAdd calls would give them. Returns the first row's index relative to the
+ *  constraint's first row; -1 (an internal error) without room. Not for captured rows. */
+int MdtRowWriterAddDirections(MdtRowWriter *w, MeVector3 dir[3], const MeVector3 r0, const MeVector3 r1,
+                              const MdtRow params[3], const MeReal x0[3]);
 /** Declare the current constraint's three rows from `normalRow` (relative to its first row, as
  *  MdtRowWriterAdd returned it) a contact for Kea (KeaContact: the normal row [0, inf), then two
  *  friction rows linked to it without bounds of their own, on the same bodies, the first a body).

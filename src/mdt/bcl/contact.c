@@ -140,17 +140,15 @@ static MeBool bouncesNow(ContactData *d, MeReal vn, const MdtRowWriter *w, MeRea
     return bounceNow;
 }
 
-/* The normal row; returns its index among the constraint's rows (negative when not written). */
-static int addNormalRow(ContactData *d, const ContactArms *a, MdtRowWriter *w)
+/* The normal row's fields but its Jacobian (bounds, softness, target, error, γ), into *row. */
+static void normalRowParams(ContactData *d, const ContactArms *a, const MdtRowWriter *w, MdtRow *row)
 {
     const MdtContactParams *p = &d->params;
     const MeReal h = w->h;
-    MdtRow row;
-    MdtRowInit(&row);
-    directionRow(&row, d->normal, a->r0, a->r1);
-    row.lo = (p->options & MdtBclContactOptionAdhesive) ? -p->max_adhesive_force : 0;
-    row.hi = MEINFINITY;
-    row.epsilon = (p->options & MdtBclContactOptionSoft) ? p->softness : 0;
+    MdtRowInit(row);
+    row->lo = (p->options & MdtBclContactOptionAdhesive) ? -p->max_adhesive_force : 0;
+    row->hi = MEINFINITY;
+    row->epsilon = (p->options & MdtBclContactOptionSoft) ? p->softness : 0;
     /* Separating speed of body 0 from body 1 (negative when approaching). */
     MeReal vn = pointVelocityAlong(a->b0, a->r0, d->normal) - pointVelocityAlong(a->b1, a->r1, d->normal);
     if (a->movingWorld)
@@ -162,25 +160,33 @@ static int addNormalRow(ContactData *d, const ContactArms *a, MdtRowWriter *w)
         if (correction > w->maxCorrection)
             correction = w->maxCorrection;
         MeReal bounce = p->restitution * approach;
-        row.velocity = bounce > correction ? bounce : correction;
-        row.gamma = 0;
+        row->velocity = bounce > correction ? bounce : correction;
+        row->gamma = 0;
         /* The world's softness would absorb part of the bounce (ε x of it); keep only a trace of it
          * to regularise redundant contacts, so that the restitution law holds. */
-        row.noWorldEpsilon = METRUE;
-        row.epsilon += ME_R(1e-3) * w->epsilon0;
+        row->noWorldEpsilon = METRUE;
+        row->epsilon += ME_R(1e-3) * w->epsilon0;
     } else {
-        row.error = -d->penetration;
+        row->error = -d->penetration;
         /* The correction γ·depth/h is bounded by the world's maximum correcting speed: a deep
          * penetration (or a tiny step) would otherwise launch the bodies apart. */
         if (w->gamma * d->penetration > w->maxCorrection * h)
-            row.error = -w->maxCorrection * h / w->gamma;
+            row->error = -w->maxCorrection * h / w->gamma;
         /* A separated contact (reported within the contact tolerance) may close its gap completely this
          * step, no less: anything slower would stop the bodies before they touch. */
         if (d->penetration < 0)
-            row.gamma = 1;
+            row->gamma = 1;
     }
     if (a->movingWorld)
-        row.velocity += MeVector3Dot(d->normal, d->worldVelocity);
+        row->velocity += MeVector3Dot(d->normal, d->worldVelocity);
+}
+
+/* The normal row; returns its index among the constraint's rows (negative when not written). */
+static int addNormalRow(ContactData *d, const ContactArms *a, MdtRowWriter *w)
+{
+    MdtRow row;
+    normalRowParams(d, a, w, &row);
+    directionRow(&row, d->normal, a->r0, a->r1);
     int normalRow = MdtRowWriterAdd(w, &row);
     if (!w->captured && normalRow >= 0)
         w->x0[w->first + normalRow] = d->impulse[0];
@@ -205,49 +211,73 @@ static void frictionDirections(const ContactData *d, MeVector3 t[2])
     MeVector3Cross(t[1], t[0], d->normal);
 }
 
-/* The friction rows; returns how many were written linked to the normal row (NormalForce model). */
-static int addFrictionRows(ContactData *d, const ContactArms *a, MdtRowWriter *w, int normalRow)
+/* The fields but the Jacobian of friction row k (0 or 1; along t[k]) of the contact whose normal row
+ * is `normalRow`, into *row. */
+static void frictionRowParams(const ContactData *d, const ContactArms *a, const MdtRowWriter *w, int k,
+                              const MeVector3 t, int normalRow, MdtRow *row)
 {
     const MdtContactParams *p = &d->params;
     const MeReal h = w->h;
-    MeVector3 t[2];
-    frictionDirections(d, t);
-    const MdtFrictionModel model[2] = {p->model1, p->model2};
-    const MeReal bound[2] = {p->friction1, p->friction2};
-    const MeReal coefficient[2] = {p->frictioncoeff1, p->frictioncoeff2};
+    const MeU32 slipOption = k == 0 ? MdtBclContactOptionSlip1 : MdtBclContactOptionSlip2;
+    const MeU32 slideOption = k == 0 ? MdtBclContactOptionSlide1 : MdtBclContactOptionSlide2;
     /* Slip is a compliance in force units (User Guide: slip speed = slip × friction force, whatever
      * the step); the row's ε is per impulse (force × h), hence slip / h. A slipping row has its own
      * compliance: the world's ε (which would add ε₀ h × force) is left out but for a trace that keeps
      * redundant rows regular, as for bouncing rows. */
-    const MeReal slip[2] = {(p->options & MdtBclContactOptionSlip1) ? p->slip1 / h : 0,
-                            (p->options & MdtBclContactOptionSlip2) ? p->slip2 / h : 0};
-    const MeReal slide[2] = {(p->options & MdtBclContactOptionSlide1) ? p->slide1 : 0,
-                             (p->options & MdtBclContactOptionSlide2) ? p->slide2 : 0};
+    const MeReal slip = (p->options & slipOption) ? (k == 0 ? p->slip1 : p->slip2) / h : 0;
+    MdtRowInit(row);
+    row->velocity = (p->options & slideOption) ? (k == 0 ? p->slide1 : p->slide2) : 0;
+    if (a->movingWorld)
+        row->velocity += MeVector3Dot(t, d->worldVelocity);
+    if (slip > 0) {
+        row->epsilon = slip + ME_R(1e-3) * w->epsilon0;
+        row->noWorldEpsilon = METRUE;
+    }
+    if ((k == 0 ? p->model1 : p->model2) == MdtFrictionModelNormalForce) {
+        row->link = normalRow;
+        row->mu = k == 0 ? p->frictioncoeff1 : p->frictioncoeff2;
+    } else {
+        const MeReal bound = k == 0 ? p->friction1 : p->friction2;
+        row->lo = -bound;
+        row->hi = bound;
+    }
+}
+
+/* The friction rows; returns how many were written linked to the normal row (NormalForce model). */
+static int addFrictionRows(ContactData *d, const ContactArms *a, MdtRowWriter *w, int normalRow)
+{
+    const MdtContactParams *p = &d->params;
+    MeVector3 t[2];
+    frictionDirections(d, t);
     int directions = p->type == MdtContactTypeFriction2D ? 2 : 1, linked = 0;
     for (int k = 0; k < directions; k++) {
         MdtRow row;
-        MdtRowInit(&row);
+        frictionRowParams(d, a, w, k, t[k], normalRow, &row);
         directionRow(&row, t[k], a->r0, a->r1);
-        row.velocity = slide[k];
-        if (a->movingWorld)
-            row.velocity += MeVector3Dot(t[k], d->worldVelocity);
-        if (slip[k] > 0) {
-            row.epsilon = slip[k] + ME_R(1e-3) * w->epsilon0;
-            row.noWorldEpsilon = METRUE;
-        }
-        if (model[k] == MdtFrictionModelNormalForce) {
-            row.link = normalRow;
-            row.mu = coefficient[k];
-        } else {
-            row.lo = -bound[k];
-            row.hi = bound[k];
-        }
         int local = MdtRowWriterAdd(w, &row);
         if (!w->captured && local >= 0)
             w->x0[w->first + local] = d->impulse[1 + k];
         linked += local >= 0 && row.link >= 0;
     }
     return linked;
+}
+
+/* A contact's three rows (two friction directions, nothing capped) written together; returns how many
+ * friction rows are linked to the normal row, with the normal row's index in *normalRow. */
+static int addThreeRows(ContactData *d, const ContactArms *a, MdtRowWriter *w, int *normalRow)
+{
+    MdtRow rows[3];
+    MeVector3 dir[3], t[2];
+    frictionDirections(d, t);
+    MeVector3Copy(dir[0], d->normal);
+    MeVector3Copy(dir[1], t[0]);
+    MeVector3Copy(dir[2], t[1]);
+    normalRowParams(d, a, w, &rows[0]);
+    const int first = w->count - w->first; /* where the normal row goes */
+    frictionRowParams(d, a, w, 0, dir[1], first, &rows[1]);
+    frictionRowParams(d, a, w, 1, dir[2], first, &rows[2]);
+    *normalRow = MdtRowWriterAddDirections(w, dir, a->r0, a->r1, rows, d->impulse);
+    return *normalRow >= 0 ? (rows[1].link >= 0) + (rows[2].link >= 0) : 0;
 }
 
 void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contact, MdtRowWriter *w)
@@ -264,10 +294,15 @@ void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contac
     const int stepRows = MdtContactStepRows(contact); /* matrix capping may drop friction or all */
     if (stepRows == 0)
         return;
-    const int normalRow = addNormalRow(d, &a, w);
-    if (p->type == MdtContactTypeFrictionZero || stepRows < 2)
-        return;
-    const int linked = addFrictionRows(d, &a, w, normalRow);
+    int normalRow, linked;
+    if (stepRows == 3 && !w->captured) {
+        linked = addThreeRows(d, &a, w, &normalRow);
+    } else {
+        normalRow = addNormalRow(d, &a, w);
+        if (p->type == MdtContactTypeFrictionZero || stepRows < 2)
+            return;
+        linked = addFrictionRows(d, &a, w, normalRow);
+    }
     /* A non-adhesive contact with two friction rows bounded by the normal force is Kea's typed contact
      * (KeaContact); any other (adhesive, box friction, one friction direction) stays generic rows. */
     if (linked == 2 && !(p->options & MdtBclContactOptionAdhesive) && normalRow >= 0 && a.b0 != a.b1)
