@@ -91,6 +91,7 @@ MstBridgeID MstBridgeCreate(McdFrameworkID frame, int maxMaterials)
     b->framework = frame;
     b->maxMaterials = maxMaterials;
     b->materialsSizeName = "maxMaterials in MstBridgeCreate";
+    b->converting = "MstHandleCollisions";
     b->materialCount = 1; /* the default material */
     b->table = MeMemoryCreateZeroed(sizeof *b->table * (size_t)maxMaterials * (size_t)maxMaterials);
     b->pairBufferSize = DEFAULT_PAIR_BUFFER;
@@ -310,10 +311,7 @@ int MstBridgeConvertPair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world,
         return 0; /* two pieces of the world, or a bad model (reported) */
     }
     MdtBodyID b1 = (MdtBodyID)models->bodyData[0], b2 = (MdtBodyID)models->bodyData[1];
-    /* Named as the call the application made (MstHandleCollisions names itself if nothing did). */
-    const char *caller = MdtWorldGetCallerName(world);
-    MstMaterialPairData *mat = MstBridgeMaterialPair(b, models->material[0], models->material[1],
-                                                     caller ? caller : "MstHandleCollisions");
+    MstMaterialPairData *mat = MstBridgeMaterialPair(b, models->material[0], models->material[1], b->converting);
     if (!mat)
         return 0;
     if (result->contactCount > 0 && mat->intersectCB)
@@ -391,6 +389,7 @@ void MstHandleCollisions(McdModelPairContainer *pairs, McdSpaceID space, MdtWorl
     const char *caller = MdtWorldGetCallerName(world);
     if (!caller)
         MdtWorldSetCallerName(world, __func__);
+    b->converting = caller ? caller : __func__;
     int n, ns;
     McdModelPairID *hello = McdModelPairContainerGetHelloArray(pairs, &n);
     McdModelPairID *staying = McdModelPairContainerGetStayingArray(pairs, &ns);

@@ -54,6 +54,7 @@ typedef struct MstBridgeData {
      * until a size changes. */
     int failedPairs, failedContactsPerPair;
     MdtWorldID markedWorld;            /* the world whose task marks were sized for a chunk's tasks */
+    const char *converting;            /* the application's call the conversion's messages name */
 } MstBridgeData;
 
 MstBridgeData *MstBridgeFromID(MstBridgeID id, const char *function);
@@ -70,7 +71,8 @@ void MstBridgeReadPairs(MstBridgeData *b, McdSpaceID space, MdtWorldID world, Me
 MeBool MstBridgeCollideInParallel(MstBridgeData *b, MdtWorldID world, McdModelPairID *hello, int helloCount,
                                   McdModelPairID *staying, int stayingCount);
 /** Convert one tested pair's contacts (`tested`: what McdIntersectForResponse returned for it) into its
- *  contact group, calling the material's callbacks; returns the number of dynamics contacts made. */
+ *  contact group, calling the material's callbacks; returns the number of dynamics contacts made. Its
+ *  messages name b->converting, the application's call (set once per update by the caller). */
 int MstBridgeConvertPair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world, MeBool tested,
                          const McdModelPairModelInfo *models, McdIntersectResult *result);
 /** The Goodbye half of MstHandleTransitions: each leaving pair's contact group destroyed, its cache

@@ -197,6 +197,10 @@ MeBool MstBridgeReadPairsPipelined(MstBridgeData *b, McdSpaceID space, MdtWorldI
 {
     if (MdtWorldGetWorkerCount(world) <= 1 || callsTheApplication(b) || !MstBridgeReserveParallel(b, world))
         return MEFALSE;
+    /* The conversion's messages name the call the application made (MstUniverseStep or
+     * MstBridgeUpdateContacts, which name themselves first). */
+    const char *caller = MdtWorldGetCallerName(world);
+    b->converting = caller ? caller : "MstBridgeUpdateContacts";
     McdSpacePairIterator it;
     McdSpacePairIteratorBegin(space, &it);
     Chunk chunks[2] = {{b->pairs, 0, NULL, NULL, 0, 0}, {b->nextPairs, 1, NULL, NULL, 0, 0}};
