@@ -39,17 +39,17 @@
 #  define SPLIT_ROWS 100
 #  if KARMA_DOUBLE
 #    define GOLDEN_PILE 0xa567d2393fd4d968ull
-#    define GOLDEN_PYRAMID 0xc263c5241595078bull
+#    define GOLDEN_PYRAMID 0x9396c50c5d108ea9ull
 #  else
 #    define GOLDEN_PILE 0xb26e837c337c439cull
-#    define GOLDEN_PYRAMID 0xe9a150aaabd1b931ull
+#    define GOLDEN_PYRAMID 0x8b5033afb9716940ull
 #  endif
 #elif KARMA_DOUBLE
 #  define GOLDEN_PILE 0x723b3f95c4e4629cull
-#  define GOLDEN_PYRAMID 0x9c370eda546c0820ull
+#  define GOLDEN_PYRAMID 0xbeaefabbb00b6348ull
 #else
-#  define GOLDEN_PILE 0x2930d4eebe120312ull
-#  define GOLDEN_PYRAMID 0x6f7d874e094e3543ull
+#  define GOLDEN_PILE 0x46c5b9a092d8eb1aull
+#  define GOLDEN_PYRAMID 0x52e23deb3c1221d6ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};

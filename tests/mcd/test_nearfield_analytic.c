@@ -179,6 +179,20 @@ static void box_cases(void **state)
     expect(&c, "box-box parallel faces apart 0.01", 4, 4, 0, 0, -1, 0.01, ME_TOL(1e-8, 1e-5)), run(&c);
     identity(c.tm2, 0, 0, 1.05);
     expect(&c, "box-box apart 0.05 (beyond tolerance)", 0, 0, 0, 0, -1, 0, e), run(&c);
+    /* apart within the tolerance, parallel faces half over each other: clipped, the gap exact */
+    identity(c.tm2, 0.7, 0.2, 1.01);
+    expect(&c, "box-box parallel faces apart 0.01, offset", 4, 4, 0, 0, -1, 0.01, ME_TOL(1e-8, 1e-5)), run(&c);
+    {
+        /* apart within the tolerance, a vertex over the face: the general path, the gap exact */
+        double ax = 1, ay = -1, az = 0, angle = acos(-S3);
+        place(c.tm2, ax, ay, az, angle, 0.1, 0, 0.5 + 0.5 * sqrt(3.0) + 0.01);
+        expect(&c, "box-box vertex over the face, apart 0.01", 1, 1, 0, 0, -1, 0.01, ME_TOL(1e-8, 1e-5)), run(&c);
+    }
+    /* apart edge to edge beyond both faces' rims: each face axis sees less than the distance (0.006
+     * and 0.008 of 0.01), the general path measures it */
+    identity(c.tm2, 1.006, 0, 1.008);
+    expect(&c, "box-box parallel edges apart 0.01, off the faces", 1, 4, -0.6, 0, -0.8, 0.01, ME_TOL(1e-8, 1e-5)),
+        run(&c);
     place(c.tm2, 0, 1, 0, 0.785398163397, 0, 0, 0.5 + S2 - 0.05);
     expect(&c, "box-box edge on face, depth 0.05", 2, 2, 0, 0, -1, -0.05, e), run(&c);
     {
