@@ -109,7 +109,8 @@ int MdtRowWriterAddDirections(MdtRowWriter *w, MeVector3 dir[3], const MeVector3
     KeaLanes c2 = KeaLanesSub(KeaLanesMul(d0, SPLAT(r1[1])), KeaLanesMul(d1, SPLAT(r1[0])));
     /* J v* = (lin0·v0 + ang0·ω0) + (lin1·v1 + ang1·ω1), each dot (x0 y0 + x1 y1) + x2 y2 */
 #define DOT3(x0, x1, x2, v)                                                                          \
-    KeaLanesAdd(KeaLanesAdd(KeaLanesMul(x0, SPLAT((v)[0])), KeaLanesMul(x1, SPLAT((v)[1]))), KeaLanesMul(x2, SPLAT((v)[2])))
+    KeaLanesAdd(KeaLanesAdd(KeaLanesMul(x0, SPLAT((v)[0])), KeaLanesMul(x1, SPLAT((v)[1]))),                     \
+                KeaLanesMul(x2, SPLAT((v)[2])))
     const KeaLanes jv = KeaLanesAdd(KeaLanesAdd(DOT3(d0, d1, d2, b0->velStar), DOT3(a0, a1, a2, b0->velrotStar)),
                                     KeaLanesAdd(DOT3(l0, l1, l2, v1), DOT3(c0, c1, c2, w1)));
 #undef DOT3

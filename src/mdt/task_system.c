@@ -157,5 +157,6 @@ MeBool MdtWorldReserveTaskItems(MdtWorldID id, int itemCount)
         ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'itemCount' (%d) must not be negative; call ignored", itemCount);
         return MEFALSE;
     }
-    return MeChunkGetCurrentSize(&w->taskChunk) >= (size_t)itemCount || MeChunkSetAuto(&w->taskChunk, (size_t)itemCount);
+    const size_t items = (size_t)itemCount;
+    return MeChunkGetCurrentSize(&w->taskChunk) >= items || MeChunkSetAuto(&w->taskChunk, items);
 }

@@ -239,7 +239,10 @@ static uint64_t runBlock(int threads, int *piecesSteps, int *largestRows)
     for (int i = 0; i < BLOCK_STEPS; i++) {
         watch.seen = watch.rowItems = watch.partitionItems = 0;
         MstUniverseStep(u, ME_R(1.0) / 60);
-        if (watch.seen == 2 && watch.rowItems > watch.partitionItems)
+        /* one task of that range: the integration's partitions were too few (at most ROWS_MIN_RANGE)
+         * to be handed out, the rows' pieces were not (the block settles into a few partitions) */
+        if ((watch.seen == 2 && watch.rowItems > watch.partitionItems) ||
+            (watch.seen == 1 && watch.rowItems > ROWS_MIN_RANGE))
             watch.piecesSteps++;
         hash = karma_hash_world(hash, w);
         MdtSolverStats stats;

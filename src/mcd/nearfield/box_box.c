@@ -230,7 +230,10 @@ int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData 
         const int fa = faceAxis % 3;
         const MeReal aligned = faceAxis < 3 ? MeMAX(MeMAX(AR[fa][0], AR[fa][1]), AR[fa][2])
                                             : MeMAX(MeMAX(AR[0][fa], AR[1][fa]), AR[2][fa]);
-        if (faceBest <= edgeBest && aligned >= FACES_PARALLEL_COS && (count = faceManifold(&A, &B, faceAxis, ta, tb, tolerance, contacts, maxContacts)) > 0) {
+        count = faceBest <= edgeBest && aligned >= FACES_PARALLEL_COS
+                    ? faceManifold(&A, &B, faceAxis, ta, tb, tolerance, contacts, maxContacts)
+                    : 0;
+        if (count > 0) {
             MeReal nearest = contacts[0].separation;
             for (k = 1; k < count; k++)
                 nearest = MeMIN(nearest, contacts[k].separation);
