@@ -14,8 +14,9 @@
  * chunk k + 1's goodbyes (which destroy contact groups), so every contact and group takes the slot it
  * takes in the serial update. Only the Hellos of chunk k + 1 (McdHello: a pair's test and cache
  * cleared) move before chunk k's conversion, which does not read them. A model with an intersect
- * callback (which runs in the test, and could read what the conversion writes) or a material with a callback
- * keeps the chunk-by-chunk update: its callbacks run on the stepping thread, in pair order. */
+ * callback (which runs in the test, and could read what the conversion writes) or a material with a
+ * callback keeps the chunk-by-chunk update: a material's callbacks run on the stepping thread, in pair
+ * order, and a model's run only while no conversion does. */
 #include <string.h>
 
 #include <karma/McdFrame.h>
