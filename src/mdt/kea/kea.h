@@ -180,6 +180,9 @@ typedef struct KeaParameters {
                                  so the result differs from the unsplit solve's but not between worker
                                  counts. 0 = never, the default */
     KeaTaskHook tasks;      /**< the caller's workers for a split solve; default none (run NULL) */
+    int nonsmoothCg;        /**< iterative: 1 = nonsmooth nonlinear conjugate gradient (NNCG): each sweep
+                                 followed by a Fletcher-Reeves momentum step along the sweeps' changes
+                                 (kea_nncg.c); 0 = plain sweeps, the default */
 } KeaParameters;
 
 /** What a solve did. */
