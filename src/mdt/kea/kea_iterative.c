@@ -3,8 +3,6 @@
  * blocks (a declared contact through the contact step, kea_contact_kernel.h), and KeaSolveIterative,
  * which sets up the blocks, warm-starts, alternates sweeps with subspace minimisation
  * (kea_subspace.c) and reports the residual. */
-#include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "kea_contact_kernel.h"
@@ -387,59 +385,6 @@ typedef struct KeaSolveState {
 /* The solve after the layout: set-up, sweeps and SM, the extra effort, dv out and the residual. In a
  * split solve on several workers it runs inside the team's task, on whichever worker started first
  * (kea_split.c, KeaTeamTask), handing its chunked loops to the others. */
-
-/* PROTOTYPE: residual curves of several methods from one warm start (not to be committed). */
-static void KeaCurveMeasure(const KeaProblem *problem, const KeaIterativeWork *w, const MeReal *x, double *mean, double *obj)
-{
-    double sum = 0, f = 0;
-    int i;
-    for (i = 0; i < problem->nRows; ++i) {
-        const MeReal wi = KeaRowW(problem, w, i, x, &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
-        MeReal lo, hi;
-        KeaRowBoundsInline(problem, x, i, &lo, &hi);
-        sum += (double)KeaRowResidual(w->diag[i], x[i], wi, lo, hi);
-        f += 0.5 * (double)x[i] * (double)wi - 0.5 * (double)problem->rhs[i] * (double)x[i];
-    }
-    *mean = sum / problem->nRows;
-    *obj = f;
-}
-
-static void KeaCurves(KeaSolveState *state, int iters)
-{
-    static const int cfg[][3] = {{0, 0, 1}, {0, 4, 1}, {1, 0, 1}, {2, 0, 1}, {2, 4, 1}, {0, 4, 2}, {2, 4, 2}};
-    const KeaProblem *problem = state->problem;
-    KeaIterativeWork *w = state->w;
-    const int n = problem->nRows;
-    MeReal *x0 = malloc(sizeof(MeReal) * (size_t)n);
-    KeaStats stats;
-    int c, it;
-    memcpy(x0, state->x, sizeof(MeReal) * (size_t)n);
-    for (c = 0; c < (int)(sizeof cfg / sizeof cfg[0]); ++c) {
-        const int nncg = cfg[c][0], sm = cfg[c][1], every = cfg[c][2];
-        MeReal *x = state->x;
-        memset(&stats, 0, sizeof stats);
-        memcpy(x, x0, sizeof(MeReal) * (size_t)n);
-        KeaIterativeSetUp(problem, state->params, w, x, state->dv);
-        if (nncg)
-            KeaNncgStart(w, x, n);
-        for (it = 1; it <= iters; ++it) {
-            double mean, obj;
-            KeaSweep(problem, w, state->params, x, &stats, (it & 1) == 0, ME_R(0.0));
-            if (w->smRan)
-                w->smUnpaid = w->sweepDecrease > w->smDecrease;
-            w->smRan = 0;
-            if (sm > 0 && it < iters && it % every == 0)
-                KeaSubspaceMinimise(problem, w, sm, x);
-            KeaCurveMeasure(problem, w, x, &mean, &obj);
-            fprintf(stderr, "curve nncg%d sm%d/%d %d %.4g %.4g %.9g\n", nncg, sm, every, it, (double)KeaIterativeResidual(problem, w, x), mean, obj);
-            if (nncg && it < iters && (nncg == 1 || (it & 1) == 0))
-                KeaNncgStep(w, x, n);
-        }
-    }
-    memcpy(state->x, x0, sizeof(MeReal) * (size_t)n);
-    free(x0);
-}
-
 static void KeaIterate(void *data)
 {
     KeaSolveState *state = data;
@@ -450,18 +395,9 @@ static void KeaIterate(void *data)
     KeaStats *stats = state->stats;
     const int nb = problem->nBodies;
     const int effort = KeaEffortAllowed(problem, params);
+    const int smEvery = params->subspaceEvery > 1 ? params->subspaceEvery : 1;
     int it, b, k, limit;
-    /* PROTOTYPE knobs (not to be committed) */
-    const int nncg = getenv("KEA_NNCG") ? atoi(getenv("KEA_NNCG")) : params->nonsmoothCg;
-    const int smSteps = getenv("KEA_SM") ? atoi(getenv("KEA_SM")) : params->subspaceIterations;
-    const int maxIt = getenv("KEA_ITERS") ? atoi(getenv("KEA_ITERS")) : params->maxIterations;
-    const int trace = getenv("KEA_TRACE") && problem->nRows > 1000;
-    static int traceStep = 0;
-    MeReal beta = 0;
-    const int smEvery = getenv("KEA_SM_EVERY") ? atoi(getenv("KEA_SM_EVERY")) : 1;
 
-    if (problem->nRows > 1000 && getenv("KEA_CURVE") && atoi(getenv("KEA_CURVE")) == traceStep + 1)
-        KeaCurves(state, getenv("KEA_CURVE_ITERS") ? atoi(getenv("KEA_CURVE_ITERS")) : 40);
     KeaIterativeSetUp(problem, params, w, x, state->dv);
     if (w->split)
         stats->colours = w->split->colours +
@@ -470,14 +406,14 @@ static void KeaIterate(void *data)
 
     /* maxIterations sweeps, then the extra effort (params->effortResidual, kea_tuning.h) if the
      * partition rests (KeaEffortAllowed): while the last sweep leaves a residual above it, two more
-     * (so that the last still runs backwards), up to KEA_EFFORT_FACTOR maxIterations more in all. */
-    limit = maxIt;
-    if (nncg)
+     * (so that the last still runs backwards), up to KEA_EFFORT_FACTOR maxIterations more in all.
+     * SM at every subspaceEvery-th chance; with nonsmoothCg, NNCG's momentum after every second sweep. */
+    limit = params->maxIterations;
+    if (params->nonsmoothCg)
         KeaNncgStart(w, x, problem->nRows);
-    ++traceStep;
     for (it = 1; it <= limit; ++it) {
         const int mayExtend = it == limit && effort &&
-                              limit < maxIt * (1 + KEA_EFFORT_FACTOR);
+                              limit < params->maxIterations * (1 + KEA_EFFORT_FACTOR);
         const MeReal measureUpTo = mayExtend ? KeaMax(params->tolerance, params->effortResidual) : params->tolerance;
         const MeReal sweepResidual = (w->split ? KeaSweepSplit : KeaSweep)(problem, w, params, x, stats, (it & 1) == 0,
                                                                            measureUpTo);
@@ -493,17 +429,16 @@ static void KeaIterate(void *data)
         if (w->smRan) /* did the last SM step lower the objective more than this sweep? */
             w->smUnpaid = w->sweepDecrease > w->smDecrease;
         w->smRan = 0;
-        if (smSteps > 0 && it < limit && it % smEvery == 0) {
-            const int steps = KeaSubspaceMinimise(problem, w, smSteps, x);
+        if (params->subspaceIterations > 0 && it < limit && it % smEvery == 0) {
+            const int steps = KeaSubspaceMinimise(problem, w, params->subspaceIterations, x);
             if (steps < 0)
                 ++stats->subspaceSkipped;
             else
                 stats->subspaceSteps += steps;
         }
-        if (trace)
-            fprintf(stderr, "trace %d %d %g %g\n", traceStep, it, (double)KeaIterativeResidual(problem, w, x), (double)beta);
-        if (nncg && it < limit && (nncg == 1 || (it & 1) == 0))
-            beta = KeaNncgStep(w, x, problem->nRows);
+        /* NNCG (kea_nncg.c): a momentum step after each pair of sweeps, never after the last */
+        if (params->nonsmoothCg && it < limit && (it & 1) == 0)
+            KeaNncgStep(w, x, problem->nRows);
     }
     for (b = 0; b < nb; ++b)
         for (k = 0; k < 3; ++k) {

@@ -1,16 +1,19 @@
-/* kea_nncg.c -- nonsmooth nonlinear conjugate gradient (NNCG) on Kea's iterative path (kea_iterative.h),
- * after Silcowitz, Niebe and Erleben, "A nonsmooth nonlinear conjugate gradient method for
- * interactive contact force problems" (The Visual Computer, 2010).
+/* kea_nncg.c -- nonsmooth nonlinear conjugate gradient (NNCG) on Kea's iterative path (kea_iterative.h,
+ * KeaParameters.nonsmoothCg), after Silcowitz, Niebe and Erleben, "A nonsmooth nonlinear conjugate
+ * gradient method for interactive contact force problems" (The Visual Computer, 2010).
  *
- * The projected Gauss-Seidel sweep is a fixed-point map x -> PGS(x) whose fixed point is the LCP's
- * solution; its change r_k = x_{k-1} - PGS(x_{k-1}) plays the part of a gradient. After each sweep
- * the iterate takes a Fletcher-Reeves momentum step along the sweeps' earlier changes:
- *   beta = |r_k|^2 / |r_{k-1}|^2  (restart, beta = 0, when it exceeds 1: the sweeps stopped shrinking),
- *   x_k = PGS(x_{k-1}) + beta p_{k-1},   p_k = beta p_{k-1} - r_k.
- * Since x_{k-1} + p_k = PGS(x_{k-1}) + beta p_{k-1}, the step is x_k = x_{k-1} + p_k. The bodies'
- * velocity change dv = M^-1 J^T x is linear in x, so its image of p is kept beside p from the sweeps'
- * own changes of dv: an iteration costs a sweep and two passes over the rows and bodies, no product
- * with J. The momentum step may leave a row outside its bounds for the next sweep to project; the
+ * A projected Gauss-Seidel pass is a fixed-point map x -> G(x) whose fixed point is the LCP's
+ * solution; its change r_k = x_{k-1} - G(x_{k-1}) plays the part of a gradient. After each pass the
+ * iterate takes a Fletcher-Reeves momentum step along the passes' earlier changes:
+ *   beta = |r_k|^2 / |r_{k-1}|^2  (restart, beta = 0, when it exceeds 1: the changes stopped shrinking),
+ *   x_k = G(x_{k-1}) + beta p_{k-1},   p_k = beta p_{k-1} - r_k,
+ * so that x_k = x_{k-1} + p_k with p_k here the negated direction. The pass G is a pair of sweeps,
+ * forwards then backwards (with SM between when it runs): taken one sweep at a time, the forward
+ * and backward sweeps' changes differ in size, beta exceeds 1 every other sweep and the direction
+ * restarts each time (docs/kea_log.md, "NNCG"). The bodies' velocity change dv = M^-1 J^T x is linear
+ * in x, so its image of p is kept beside p from the sweeps' own changes of dv: the momentum costs two
+ * passes over the rows and bodies, no product with J. The momentum step may leave a row outside its
+ * bounds for the next sweep to project (the block steps solve for x_b from w, whatever x_b was); the
  * solve always ends on a sweep, so the impulses it returns are within them. */
 #include <string.h>
 
@@ -24,7 +27,7 @@ void KeaNncgStart(KeaIterativeWork *w, const MeReal *x, int n)
     w->nncgLast = ME_R(0.0);
 }
 
-/* After a sweep that is not the solve's last: the momentum step on x and dv; returns beta (0: the
+/* After a pass (a pair of sweeps) that is not the solve's last: the momentum step on x and dv; returns beta (0: the
  * direction restarted from this sweep's change). */
 MeReal KeaNncgStep(KeaIterativeWork *w, MeReal *restrict x, int n)
 {
