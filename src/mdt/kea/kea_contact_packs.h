@@ -109,7 +109,7 @@ static inline void KeaPackGatherLanes(const KeaContactPack *pack, const KeaVel4 
         for (k = 0; k < 3; ++k)
             s[k] = KeaLanesAdd(KeaLanesDot2L(J[k], v[k], J[3 + k], v[3 + k]),
                                KeaLanesDot2L(J[6 + k], v[6 + k], J[9 + k], v[9 + k]));
-        out[r] = KeaLanesMul(KeaLanesAdd(KeaLanesAdd(s[0], s[1]), s[2]), KeaLanesLoadA(pack->mask[r]));
+        out[r] = KeaLanesKeep(KeaLanesAdd(KeaLanesAdd(s[0], s[1]), s[2]), KeaLanesLoadA(pack->mask[r]));
     }
 }
 

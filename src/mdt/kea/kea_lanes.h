@@ -27,6 +27,9 @@ static inline KeaLanes KeaLanesAdd(KeaLanes a, KeaLanes b) { return _mm_add_ps(a
 static inline KeaLanes KeaLanesSub(KeaLanes a, KeaLanes b) { return _mm_sub_ps(a, b); }
 static inline KeaLanes KeaLanesMul(KeaLanes a, KeaLanes b) { return _mm_mul_ps(a, b); }
 static inline KeaLanes KeaLanesSplat(MeReal s) { return _mm_set1_ps(s); }
+/** a where the mask m is not 0 (SM's masks: 1 or 0), else +0: a select, not a product, so that a
+ *  masked lane is +0 even when a is a NaN or an infinity. */
+static inline KeaLanes KeaLanesKeep(KeaLanes a, KeaLanes m) { return _mm_and_ps(a, _mm_cmpneq_ps(m, _mm_setzero_ps())); }
 /** (a0 + a1) + a2: the sum of a padded 3-vector's components, in that order. */
 static inline MeReal KeaLanesSum3(KeaLanes a)
 {
@@ -102,6 +105,13 @@ static inline KeaLanes KeaLanesSplat(MeReal s)
     int k;
     for (k = 0; k < 4; ++k)
         a.v[k] = s;
+    return a;
+}
+static inline KeaLanes KeaLanesKeep(KeaLanes a, KeaLanes m)
+{
+    int k;
+    for (k = 0; k < 4; ++k)
+        a.v[k] = m.v[k] != ME_R(0.0) ? a.v[k] : ME_R(0.0);
     return a;
 }
 static inline MeReal KeaLanesSum3(KeaLanes a) { return (a.v[0] + a.v[1]) + a.v[2]; }
