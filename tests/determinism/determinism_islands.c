@@ -34,10 +34,10 @@
 
 #if KARMA_DOUBLE
 #  define GOLDEN_DIRECT 0xe45fd0e26951e694ull
-#  define GOLDEN_ITERATIVE 0xaefbef4938643eb5ull
+#  define GOLDEN_ITERATIVE 0x0777a3af499e7858ull
 #else
 #  define GOLDEN_DIRECT 0xe279e5e663381afbull
-#  define GOLDEN_ITERATIVE 0x9ad96c2d70727ee5ull
+#  define GOLDEN_ITERATIVE 0xffce4016de671224ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
