@@ -6,6 +6,7 @@
  *   kea_contact_kernel.h  the contact step: one declared contact's exact step (KeaContactBlockStep)
  *   kea_iterative.c       the sweep, the generic block step and the driver (KeaSolveIterative)
  *   kea_subspace.c        subspace minimisation and its schedule (KeaSubspaceMinimise)
+ *   kea_nncg.c            NNCG: a momentum step after each pair of sweeps (KeaNncgStep)
  *   kea_contact_packs.*   declared contacts four to a pack, a lane each (SM's products on them)
  * This header holds the padded data, the work struct and the row kernels; the tuning constants
  * (KEA_SM_*, KEA_GATHER_ROW_BY_ROW) are in kea_tuning.h.
