@@ -44,7 +44,7 @@ static void KeaPackSet(const KeaProblem *problem, KeaIterativeWork *w, KeaContac
                 pack->inv[3 * r + c][l] = factored ? inv[3 * c + r] : ME_R(0.0);
         for (r = 0; r < 3; ++r) {
             pack->invDiag[r][l] = l < lanes ? w->invDiag[s + r] : ME_R(0.0);
-            pack->mask[r][l] = ME_R(0.0);
+            pack->mask[r][l] = pack->keep[r][l] = ME_R(0.0);
         }
         pack->full[l] = ME_R(0.0);
         pack->mu[0][l] = l < lanes ? problem->mu[s + 1] : ME_R(0.0);
@@ -151,7 +151,8 @@ int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x)
         }
         pack->allFull = allFull;
         for (r = 0; r < 3; ++r) {
-            m[r] = KeaLanesLoadA(pack->mask[r]);
+            m[r] = KeaLanesSelectOf(KeaLanesLoadA(pack->mask[r]));
+            KeaLanesStoreA(pack->keep[r], m[r]);
             KeaLanesStoreA(xF + KEA_PACK_LANES * r, KeaLanesKeep(KeaLanesLoadA(xs[r]), m[r]));
         }
         KeaLanesStoreA(lo, zero);
@@ -240,7 +241,7 @@ void KeaPacksCgStart(const KeaIterativeWork *w, int first, int last, KeaLanes *a
         KeaPackGatherLanes(pack, dv, g);
         for (r = 0; r < 3; ++r) {
             const int o = base + KEA_PACK_LANES * r;
-            const KeaLanes m = KeaLanesLoadA(pack->mask[r]);
+            const KeaLanes m = KeaLanesLoadA(pack->keep[r]);
             g[r] = KeaLanesSub(KeaLanesAdd(g[r], KeaLanesMul(KeaLanesLoadA(v.eps + o), KeaLanesLoadA(v.xFree + o))),
                                KeaLanesLoadA(pack->rhs[r]));
             g[r] = KeaLanesKeep(g[r], m);
