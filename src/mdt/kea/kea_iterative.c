@@ -2,7 +2,7 @@
  * generic block step (a block at rest, or a block LCP), the projected Gauss-Seidel sweep over the
  * blocks (a declared contact through the contact step, kea_contact_kernel.h), and KeaSolveIterative,
  * which sets up the blocks, warm-starts, alternates sweeps with subspace minimisation
- * (kea_subspace.c) and reports the residual. */
+ * (kea_subspace.c) and NNCG's momentum steps (kea_nncg.c), and reports the residual. */
 #include <string.h>
 
 #include "kea_contact_kernel.h"
