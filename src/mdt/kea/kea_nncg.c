@@ -7,7 +7,7 @@
  * iterate takes a Fletcher-Reeves momentum step along the passes' earlier changes:
  *   beta = |r_k|^2 / |r_{k-1}|^2  (restart, beta = 0, when it exceeds 1: the changes stopped shrinking),
  *   x_k = G(x_{k-1}) + beta p_{k-1},   p_k = beta p_{k-1} - r_k,
- * so that x_k = x_{k-1} + p_k with p_k here the negated direction. The pass G is a pair of sweeps,
+ * and since G(x_{k-1}) = x_{k-1} - r_k, the step is x_k = x_{k-1} + p_k. The pass G is a pair of sweeps,
  * forwards then backwards (with SM between when it runs): taken one sweep at a time, the forward
  * and backward sweeps' changes differ in size, beta exceeds 1 every other sweep and the direction
  * restarts each time (docs/kea_log.md, "NNCG"). The bodies' velocity change dv = M^-1 J^T x is linear
@@ -27,8 +27,8 @@ void KeaNncgStart(KeaIterativeWork *w, const MeReal *x, int n)
     w->nncgLast = ME_R(0.0);
 }
 
-/* After a pass (a pair of sweeps) that is not the solve's last: the momentum step on x and dv; returns beta (0: the
- * direction restarted from this sweep's change). */
+/* After a pass (a pair of sweeps) that is not the solve's last: the momentum step on x and dv; returns
+ * beta (0: the direction restarted from this pass's change). */
 MeReal KeaNncgStep(KeaIterativeWork *w, MeReal *restrict x, int n)
 {
     MeReal *restrict xPrev = w->xPrev, *restrict p = w->nncgDir;
