@@ -135,6 +135,9 @@ ME_API MeReal MdtWorldGetLCPTolerance(MdtWorldID w);
 /** Rows from which an iterative partition is split over the workers (MdtWorldSetPartitionSplitRows);
  *  0 (never) by default and for an invalid ID. */
 ME_API int MdtWorldGetPartitionSplitRows(MdtWorldID w);
+/** Whether the iterative solver adds NNCG's momentum to its sweeps (MdtWorldSetNonsmoothCG); METRUE
+ *  by default, MEFALSE for an invalid ID. */
+ME_API MeBool MdtWorldGetNonsmoothCG(MdtWorldID w);
 
 /* ---- mutators ----------------------------------------------------------------------------- */
 /** Gravity acceleration (m/s²); default (0,0,0). */
@@ -188,6 +191,10 @@ ME_API void MdtWorldSetMaxDirectRows(MdtWorldID w, int rows);
  *  (decision K42). 0 = never, the default; rows < 0 is refused (ME_ERR_ARGUMENT_RANGE). A few
  *  thousand rows is where the split pays on two cores (docs/kea.md). */
 ME_API void MdtWorldSetPartitionSplitRows(MdtWorldID w, int rows);
+/** Not in Karma 1.2: the iterative solver's sweeps with a momentum step after each forward-and-backward
+ *  pair (nonsmooth nonlinear conjugate gradient, NNCG; docs/kea.md): the same LCP, reached in fewer
+ *  sweeps. On by default (decision K46-nncg); MEFALSE gives Karma 1.2's plain sweeps. */
+ME_API void MdtWorldSetNonsmoothCG(MdtWorldID w, MeBool on);
 /** The iterative solver stops early once its residual is below this (m/s, > 0). Default 1e-6. */
 ME_API void MdtWorldSetLCPTolerance(MdtWorldID w, MeReal tolerance);
 /** Called when the world enables a body (also by the partitioner) / disables one (auto-disable). */

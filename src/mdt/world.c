@@ -47,6 +47,8 @@ void MdtWorldSetDefaults(MdtWorldData *w)
     w->kea.effortRestSpeed = KEA_EFFORT_REST_SPEED * w->lengthScale;
     /* Auto hands a partition whose pivots run over their budget to the iterative path (docs/kea.md) */
     w->kea.autoPivotsPerRow = KEA_AUTO_PIVOTS_PER_ROW;
+    /* NNCG's momentum on the iterative path's sweeps: the same LCP in fewer sweeps (decision K46-nncg) */
+    w->kea.nonsmoothCg = 1;
     w->autoDisable.enabled = METRUE;
     w->autoDisable.velocity = DEFAULT_AD_VELOCITY * l2;
     w->autoDisable.angularVelocity = DEFAULT_AD_ANGULAR_VELOCITY;
@@ -520,6 +522,18 @@ void MdtWorldSetPartitionSplitRows(MdtWorldID id, int rows)
         return;
     }
     w->kea.splitRows = rows;
+}
+
+MeBool MdtWorldGetNonsmoothCG(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, MEFALSE);
+    return w->kea.nonsmoothCg ? METRUE : MEFALSE;
+}
+
+void MdtWorldSetNonsmoothCG(MdtWorldID id, MeBool on)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    w->kea.nonsmoothCg = on ? 1 : 0;
 }
 
 MeReal MdtWorldGetLCPTolerance(MdtWorldID id)

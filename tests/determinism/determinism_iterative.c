@@ -38,18 +38,18 @@
  * for every worker count. */
 #  define SPLIT_ROWS 100
 #  if KARMA_DOUBLE
-#    define GOLDEN_PILE 0xa567d2393fd4d968ull
-#    define GOLDEN_PYRAMID 0x9396c50c5d108ea9ull
+#    define GOLDEN_PILE 0x624da1869b948ebaull
+#    define GOLDEN_PYRAMID 0x6d335f8bff0e94caull
 #  else
-#    define GOLDEN_PILE 0xb26e837c337c439cull
-#    define GOLDEN_PYRAMID 0x8b5033afb9716940ull
+#    define GOLDEN_PILE 0x7ac8c1482050c2d8ull
+#    define GOLDEN_PYRAMID 0x54c52ba3b064c713ull
 #  endif
 #elif KARMA_DOUBLE
-#  define GOLDEN_PILE 0x723b3f95c4e4629cull
-#  define GOLDEN_PYRAMID 0xbeaefabbb00b6348ull
+#  define GOLDEN_PILE 0x48ba899ea3cefc5bull
+#  define GOLDEN_PYRAMID 0x66af905eba74687eull
 #else
-#  define GOLDEN_PILE 0x46c5b9a092d8eb1aull
-#  define GOLDEN_PYRAMID 0x52e23deb3c1221d6ull
+#  define GOLDEN_PILE 0xb4f24690410faa1cull
+#  define GOLDEN_PYRAMID 0x812cd930ed3bcd89ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};

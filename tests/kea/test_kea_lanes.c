@@ -290,6 +290,15 @@ static void transpose_moves_every_entry(void **state)
     }
 }
 
+
+/* The pack's selects from its masks, as KeaPacksListFree makes them (KeaLanesKeep reads them). */
+static void set_keep(KeaContactPack *pack)
+{
+    int r;
+    for (r = 0; r < 3; ++r)
+        KeaLanesStoreA(pack->keep[r], KeaLanesSelectOf(KeaLanesLoadA(pack->mask[r])));
+}
+
 /* A pack (kea_contact_packs.h) against the row kernels it stands for, on NB bodies and the world
  * (body NB, all zero): lanes 0 and 1 share their body 0 (the scatter's write conflict), lane 2 is
  * on the world, and with `lanes` < 4 the last lanes hold no contact (zeros on the world, mask 0),
@@ -336,6 +345,7 @@ static void make_pack(KtRng *rng, int lanes, int pair, KeaContactPack *pack, Kea
             for (k = 0; k < 3; ++k)
                 pack->inv[3 * r + k][l] = inv[l][3 * k + r];
     }
+    set_keep(pack);
 }
 
 static void random_bodies(KtRng *rng, KeaVel4 *v)
@@ -370,6 +380,7 @@ static void pack_gather_and_inverse_are_the_row_kernels(void **state)
             pack.full[0] = ME_R(0.0);
             pack.allFull = 0;
         }
+        set_keep(&pack);
         for (r = 0; r < 12; ++r)
             res[r] = (r % 4) < lanes ? random_value(&rng) : ME_R(0.0);
         KeaPackGather(&pack, dv, out);

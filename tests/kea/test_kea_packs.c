@@ -171,6 +171,37 @@ static void listed_bounds_are_the_contact_steps(void **state)
     }
 }
 
+
+/* A masked row is +0 in SM's vectors whatever its numbers: a NaN in a masked row's impulse or
+ * right-hand side (a row SM must not touch) stays out of the bounds, the gradient and CG's first
+ * sum (the masks select, they do not multiply: NaN times 0 is NaN). */
+static void masked_rows_keep_a_nan_out(void **state)
+{
+    KtRng rng = {99};
+    int trial, k, l, r, p;
+    (void)state;
+    for (trial = 0; trial < 50; ++trial) {
+        KeaLanes acc = KeaLanesSplat(ME_R(0.0));
+        make_fixture(&rng);
+        for (k = 0; k < NP; ++k)
+            for (l = 0; l < lanes_of(k); ++l)
+                for (r = 0; r < 3; ++r) {
+                    const int s = fx.packs[k].row[l];
+                    if (!fx.was[s + r]) {
+                        fx.x[s + r] = (MeReal)NAN;
+                        fx.packs[k].rhs[r][l] = (MeReal)NAN;
+                    }
+                }
+        KeaPacksListFree(&fx.w, fx.x);
+        KeaPacksCgStart(&fx.w, 0, NP, &acc);
+        for (p = 0; p < NPOS; ++p)
+            if (masked(p))
+                assert_true(fx.lo[p] == ME_R(0.0) && fx.hi[p] == ME_R(0.0) && fx.xFree[p] == ME_R(0.0) &&
+                            fx.grad[p] == ME_R(0.0) && fx.res[p] == ME_R(0.0));
+        assert_false(isnan((double)lanes_sum(acc)));
+    }
+}
+
 /* CG's start, product, update and the direction's scatter against the pack kernels followed by
  * the element-by-element loops of before, the line search's trial against its one sum, and the
  * accepted step against the loop over positions. */
@@ -276,6 +307,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(listed_bounds_are_the_contact_steps),
         cmocka_unit_test(cg_passes_are_the_element_loops),
+        cmocka_unit_test(masked_rows_keep_a_nan_out),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

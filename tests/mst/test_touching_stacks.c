@@ -104,6 +104,24 @@ static void touching_pyramid_of_15_rows_stands(void **state)
     sceneStands(&s, "touching pyramid, 15 rows");
 }
 
+/* The same pyramid without the iterative solver's NNCG momentum (MdtWorldSetNonsmoothCG, on by
+ * default: decision K46-nncg): Karma 1.2's plain sweeps hold it as well. */
+static void touching_pyramid_stands_without_nonsmooth_cg(void **state)
+{
+    (void)state;
+    Scene s;
+    sceneInit(&s);
+    MdtWorldID w = MstUniverseGetWorld(s.u);
+    assert_true(MdtWorldGetNonsmoothCG(w));
+    MdtWorldSetNonsmoothCG(w, MEFALSE);
+    assert_false(MdtWorldGetNonsmoothCG(w));
+    const int rows = 15;
+    for (int r = 0; r < rows; r++)
+        for (int i = 0; i < rows - r; i++)
+            sceneBox(&s, 1, 1, 1, 1, (MeReal)(i - 0.5 * (rows - r - 1)), 0, ME_R(0.5) + (MeReal)r);
+    sceneStands(&s, "touching pyramid, 15 rows, plain sweeps");
+}
+
 /* A wall of 1 x 0.5 x 0.5 m bricks in running bond, 12 courses, 8 and 7 bricks a course, touching. */
 static void touching_wall_stands(void **state)
 {
@@ -168,6 +186,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(touching_pyramid_of_15_rows_stands),
+        cmocka_unit_test(touching_pyramid_stands_without_nonsmooth_cg),
         cmocka_unit_test(touching_wall_stands),
         cmocka_unit_test(jittered_column_of_20_stands),
         cmocka_unit_test(boxes_on_convex_and_primitive_shapes_stand),

@@ -180,6 +180,12 @@ typedef struct KeaParameters {
                                  so the result differs from the unsplit solve's but not between worker
                                  counts. 0 = never, the default */
     KeaTaskHook tasks;      /**< the caller's workers for a split solve; default none (run NULL) */
+    int nonsmoothCg;        /**< iterative: 1 = nonsmooth nonlinear conjugate gradient (NNCG, kea_nncg.c):
+                                 after each pair of sweeps (forwards, backwards, SM between) a
+                                 Fletcher-Reeves momentum step along the pairs' changes; 0 = plain
+                                 sweeps, the default (opt-in: docs/kea_log.md, "NNCG") */
+    int subspaceEvery;      /**< iterative: an SM chance only after every this-many-th sweep (values
+                                 below 1 count as 1); default 1, every sweep */
 } KeaParameters;
 
 /** What a solve did. */

@@ -47,6 +47,10 @@ void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIte
     w->eps = KEA_ALLOC(arena, MeReal, n);
     w->dv = KEA_ALLOC(arena, KeaVel4, nb + 1);
     w->dvTmp = KEA_ALLOC(arena, KeaVel4, nb + 1);
+    w->xPrev = KEA_ALLOC(arena, MeReal, n);
+    w->nncgDir = KEA_ALLOC(arena, MeReal, n);
+    w->dvPrev = KEA_ALLOC(arena, KeaVel4, nb + 1);
+    w->dvDir = KEA_ALLOC(arena, KeaVel4, nb + 1);
     w->bodyColumns = KEA_ALLOC(arena, KeaBodyColumns, nb);
     w->nb = nb;
     w->split = NULL;

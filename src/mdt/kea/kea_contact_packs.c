@@ -44,7 +44,7 @@ static void KeaPackSet(const KeaProblem *problem, KeaIterativeWork *w, KeaContac
                 pack->inv[3 * r + c][l] = factored ? inv[3 * c + r] : ME_R(0.0);
         for (r = 0; r < 3; ++r) {
             pack->invDiag[r][l] = l < lanes ? w->invDiag[s + r] : ME_R(0.0);
-            pack->mask[r][l] = ME_R(0.0);
+            pack->mask[r][l] = pack->keep[r][l] = ME_R(0.0);
         }
         pack->full[l] = ME_R(0.0);
         pack->mu[0][l] = l < lanes ? problem->mu[s + 1] : ME_R(0.0);
@@ -63,9 +63,10 @@ static void KeaPackSet(const KeaProblem *problem, KeaIterativeWork *w, KeaContac
         pack->pair &= pack->body[0][l] == pack->body[0][0] && pack->body[1][l] == pack->body[1][0];
 }
 
-/* The free list's pack region's rows and eps, the same for every SM step of the solve (a lane with
- * no contact: lane 0's rows, masked). */
-static void KeaPacksPositions(KeaIterativeWork *w)
+/* Assign the free list's pack region its rows and eps, the same for every SM step of the solve (a
+ * lane with no contact: lane 0's rows, masked); as for the generic rows listed after it per SM step,
+ * a position's eps is written where its row is assigned. */
+static void KeaPacksAssignPositions(KeaIterativeWork *w)
 {
     int k, l, r;
     for (k = 0; k < w->nPacks; ++k)
@@ -112,14 +113,13 @@ void KeaPacksFill(const KeaProblem *problem, KeaIterativeWork *w)
     }
     if (mixed > 0)
         KeaPackSet(problem, w, &w->packs[w->nPacks++], mixedBlock, mixed);
-    KeaPacksPositions(w);
+    KeaPacksAssignPositions(w);
 }
 
 /* A contact's bounds as the contact step reads them (kea_contact_kernel.h: the normal row [0, hi],
- * the friction rows +-mu max(n, 0)), in lanes: each a row's value times its mask (1 or 0), so a
- * free row's the same bits and a masked row's 0 (up to the sign of a zero, which no SM sum or step
- * can see: a zero added to a sum started at +0 leaves it, and a masked row's step is never applied);
- * a friction bound as mu (max(n, 0) mask), so that a masked row's is 0 even where mu is MEINFINITY. */
+ * the friction rows +-mu max(n, 0)), in lanes: each a row's value where its mask is 1, +0 where it
+ * is 0 (KeaLanesKeep, a select: a free row's the same bits, a masked row's +0 whatever its value,
+ * even a NaN or mu max(n, 0) with mu = MEINFINITY and n = 0). */
 int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x)
 {
     const unsigned char *was = w->wasFree;
@@ -151,13 +151,14 @@ int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x)
         }
         pack->allFull = allFull;
         for (r = 0; r < 3; ++r) {
-            m[r] = KeaLanesLoadA(pack->mask[r]);
-            KeaLanesStoreA(xF + KEA_PACK_LANES * r, KeaLanesMul(KeaLanesLoadA(xs[r]), m[r]));
+            m[r] = KeaLanesSelectOf(KeaLanesLoadA(pack->mask[r]));
+            KeaLanesStoreA(pack->keep[r], m[r]);
+            KeaLanesStoreA(xF + KEA_PACK_LANES * r, KeaLanesKeep(KeaLanesLoadA(xs[r]), m[r]));
         }
         KeaLanesStoreA(lo, zero);
-        KeaLanesStoreA(hi, KeaLanesMul(KeaLanesLoadA(pack->normalHi), m[0]));
+        KeaLanesStoreA(hi, KeaLanesKeep(KeaLanesLoadA(pack->normalHi), m[0]));
         for (r = 1; r < 3; ++r) { /* KeaFrictionBound in lanes */
-            bound = KeaLanesMul(KeaLanesLoadA(pack->mu[r - 1]), KeaLanesMul(KeaLanesLoadA(nPos), m[r]));
+            bound = KeaLanesKeep(KeaLanesMul(KeaLanesLoadA(pack->mu[r - 1]), KeaLanesLoadA(nPos)), m[r]);
             KeaLanesStoreA(hi + KEA_PACK_LANES * r, bound);
             KeaLanesStoreA(lo + KEA_PACK_LANES * r, KeaLanesMul(bound, minusOne));
         }
@@ -240,10 +241,10 @@ void KeaPacksCgStart(const KeaIterativeWork *w, int first, int last, KeaLanes *a
         KeaPackGatherLanes(pack, dv, g);
         for (r = 0; r < 3; ++r) {
             const int o = base + KEA_PACK_LANES * r;
-            const KeaLanes m = KeaLanesLoadA(pack->mask[r]);
+            const KeaLanes m = KeaLanesLoadA(pack->keep[r]);
             g[r] = KeaLanesSub(KeaLanesAdd(g[r], KeaLanesMul(KeaLanesLoadA(v.eps + o), KeaLanesLoadA(v.xFree + o))),
                                KeaLanesLoadA(pack->rhs[r]));
-            g[r] = KeaLanesMul(g[r], m);
+            g[r] = KeaLanesKeep(g[r], m);
             KeaLanesStoreA(v.grad + o, g[r]);
             KeaLanesStoreA(v.res + o, KeaLanesMul(g[r], minusOne));
             KeaLanesStoreA(v.step + o, zero);

@@ -49,6 +49,7 @@ struct KeaContactPack {
     MeReal inv[9][KEA_PACK_LANES];     /**< the block's A_bb^-1, entry (r, c) at 3 r + c (0 unfactored) */
     MeReal invDiag[3][KEA_PACK_LANES]; /**< the rows' 1 / d_i */
     MeReal mask[3][KEA_PACK_LANES];    /**< SM: 1 for a free row, else 0 */
+    MeReal keep[3][KEA_PACK_LANES];    /**< SM: the masks as selects (KeaLanesSelectOf, for KeaLanesKeep) */
     MeReal full[KEA_PACK_LANES];       /**< SM: 1 for a lane preconditioned by its inverse, else 0 */
     MeReal mu[2][KEA_PACK_LANES];      /**< the friction rows' coefficients */
     MeReal normalHi[KEA_PACK_LANES];   /**< the normal row's upper bound (its lower is 0) */
@@ -109,7 +110,7 @@ static inline void KeaPackGatherLanes(const KeaContactPack *pack, const KeaVel4 
         for (k = 0; k < 3; ++k)
             s[k] = KeaLanesAdd(KeaLanesDot2L(J[k], v[k], J[3 + k], v[3 + k]),
                                KeaLanesDot2L(J[6 + k], v[6 + k], J[9 + k], v[9 + k]));
-        out[r] = KeaLanesMul(KeaLanesAdd(KeaLanesAdd(s[0], s[1]), s[2]), KeaLanesLoadA(pack->mask[r]));
+        out[r] = KeaLanesKeep(KeaLanesAdd(KeaLanesAdd(s[0], s[1]), s[2]), KeaLanesLoadA(pack->keep[r]));
     }
 }
 

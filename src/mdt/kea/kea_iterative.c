@@ -2,7 +2,7 @@
  * generic block step (a block at rest, or a block LCP), the projected Gauss-Seidel sweep over the
  * blocks (a declared contact through the contact step, kea_contact_kernel.h), and KeaSolveIterative,
  * which sets up the blocks, warm-starts, alternates sweeps with subspace minimisation
- * (kea_subspace.c) and reports the residual. */
+ * (kea_subspace.c) and NNCG's momentum steps (kea_nncg.c), and reports the residual. */
 #include <string.h>
 
 #include "kea_contact_kernel.h"
@@ -395,6 +395,7 @@ static void KeaIterate(void *data)
     KeaStats *stats = state->stats;
     const int nb = problem->nBodies;
     const int effort = KeaEffortAllowed(problem, params);
+    const int smEvery = params->subspaceEvery > 1 ? params->subspaceEvery : 1;
     int it, b, k, limit;
 
     KeaIterativeSetUp(problem, params, w, x, state->dv);
@@ -405,8 +406,11 @@ static void KeaIterate(void *data)
 
     /* maxIterations sweeps, then the extra effort (params->effortResidual, kea_tuning.h) if the
      * partition rests (KeaEffortAllowed): while the last sweep leaves a residual above it, two more
-     * (so that the last still runs backwards), up to KEA_EFFORT_FACTOR maxIterations more in all. */
+     * (so that the last still runs backwards), up to KEA_EFFORT_FACTOR maxIterations more in all.
+     * SM at every subspaceEvery-th chance; with nonsmoothCg, NNCG's momentum after every second sweep. */
     limit = params->maxIterations;
+    if (params->nonsmoothCg)
+        KeaNncgStart(w, x, problem->nRows);
     for (it = 1; it <= limit; ++it) {
         const int mayExtend = it == limit && effort &&
                               limit < params->maxIterations * (1 + KEA_EFFORT_FACTOR);
@@ -425,13 +429,16 @@ static void KeaIterate(void *data)
         if (w->smRan) /* did the last SM step lower the objective more than this sweep? */
             w->smUnpaid = w->sweepDecrease > w->smDecrease;
         w->smRan = 0;
-        if (params->subspaceIterations > 0 && it < limit) {
+        if (params->subspaceIterations > 0 && it < limit && it % smEvery == 0) {
             const int steps = KeaSubspaceMinimise(problem, w, params->subspaceIterations, x);
             if (steps < 0)
                 ++stats->subspaceSkipped;
             else
                 stats->subspaceSteps += steps;
         }
+        /* NNCG (kea_nncg.c): a momentum step after each pair of sweeps, never after the last */
+        if (params->nonsmoothCg && it < limit && (it & 1) == 0)
+            KeaNncgStep(w, x, problem->nRows);
     }
     for (b = 0; b < nb; ++b)
         for (k = 0; k < 3; ++k) {

@@ -6,6 +6,7 @@
  *   kea_contact_kernel.h  the contact step: one declared contact's exact step (KeaContactBlockStep)
  *   kea_iterative.c       the sweep, the generic block step and the driver (KeaSolveIterative)
  *   kea_subspace.c        subspace minimisation and its schedule (KeaSubspaceMinimise)
+ *   kea_nncg.c            NNCG: a momentum step after each pair of sweeps (KeaNncgStep)
  *   kea_contact_packs.*   declared contacts four to a pack, a lane each (SM's products on them)
  * This header holds the padded data, the work struct and the row kernels; the tuning constants
  * (KEA_SM_*, KEA_GATHER_ROW_BY_ROW) are in kea_tuning.h.
@@ -238,6 +239,12 @@ typedef struct KeaIterativeWork {
     MeReal *eps;           /**< eps_i (0 when the problem has none) */
     KeaVel4 *dv;           /**< the solve's dv (nb + 1), copied out at the end */
     KeaVel4 *dvTmp;        /**< per-body scratch for A_FF p and for the trial step (nb + 1) */
+    /* NNCG (kea_nncg.c): */
+    MeReal *xPrev;         /**< x before the last sweep (after its momentum step) */
+    MeReal *nncgDir;       /**< the momentum direction p (by row) */
+    KeaVel4 *dvPrev;       /**< dv before the last sweep (nb + 1) */
+    KeaVel4 *dvDir;        /**< M^-1 J^T p (nb + 1) */
+    MeReal nncgLast;       /**< |x change|^2 of the sweep before (0: none yet) */
     int nb;                /**< bodies: dv[nb] is the world's, all zero, never written by a sweep */
     struct KeaSplit *split; /**< a split solve's colouring and workers (kea_split.c); NULL: not split */
 } KeaIterativeWork;
@@ -372,6 +379,11 @@ static inline unsigned char KeaRowIsFree(const KeaIterativeWork *w, int i, MeRea
  * maxBlockRows rows), then split the rows into blocks and form and invert each block's matrix. */
 void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIterativeWork *w);
 void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap);
+
+/* kea_nncg.c: NNCG's momentum step (KeaParameters.nonsmoothCg): KeaNncgStart before the first sweep,
+ * KeaNncgStep after each sweep but the last (returns beta, 0 at a restart). */
+void KeaNncgStart(KeaIterativeWork *w, const MeReal *x, int n);
+MeReal KeaNncgStep(KeaIterativeWork *w, MeReal *restrict x, int n);
 
 /* kea_subspace.c: one SM chance after a sweep; returns the CG steps taken, -1 if skipped. */
 int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x);

@@ -27,6 +27,11 @@ static inline KeaLanes KeaLanesAdd(KeaLanes a, KeaLanes b) { return _mm_add_ps(a
 static inline KeaLanes KeaLanesSub(KeaLanes a, KeaLanes b) { return _mm_sub_ps(a, b); }
 static inline KeaLanes KeaLanesMul(KeaLanes a, KeaLanes b) { return _mm_mul_ps(a, b); }
 static inline KeaLanes KeaLanesSplat(MeReal s) { return _mm_set1_ps(s); }
+/** The select of a mask m (SM's masks: 1 or 0) for KeaLanesKeep: all bits set where m is not 0. */
+static inline KeaLanes KeaLanesSelectOf(KeaLanes m) { return _mm_cmpneq_ps(m, _mm_setzero_ps()); }
+/** a where the select k (KeaLanesSelectOf) is set, else +0: a select, not a product with the mask,
+ *  so that a masked lane is +0 even when a is a NaN or an infinity; one AND, as cheap as the product. */
+static inline KeaLanes KeaLanesKeep(KeaLanes a, KeaLanes k) { return _mm_and_ps(a, k); }
 /** (a0 + a1) + a2: the sum of a padded 3-vector's components, in that order. */
 static inline MeReal KeaLanesSum3(KeaLanes a)
 {
@@ -102,6 +107,14 @@ static inline KeaLanes KeaLanesSplat(MeReal s)
     int k;
     for (k = 0; k < 4; ++k)
         a.v[k] = s;
+    return a;
+}
+static inline KeaLanes KeaLanesSelectOf(KeaLanes m) { return m; }
+static inline KeaLanes KeaLanesKeep(KeaLanes a, KeaLanes m)
+{
+    int k;
+    for (k = 0; k < 4; ++k)
+        a.v[k] = m.v[k] != ME_R(0.0) ? a.v[k] : ME_R(0.0);
     return a;
 }
 static inline MeReal KeaLanesSum3(KeaLanes a) { return (a.v[0] + a.v[1]) + a.v[2]; }

@@ -28,6 +28,8 @@ void KeaParametersDefault(KeaParameters *params)
     params->tasks.user = NULL;
     params->tasks.workers = 1;
     params->tasks.perStage = 0;
+    params->nonsmoothCg = 0;
+    params->subspaceEvery = 1;
 }
 
 KeaPath KeaSelectPath(int nRows, const KeaParameters *params)

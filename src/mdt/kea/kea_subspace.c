@@ -356,7 +356,6 @@ static void KeaCgStartChunks(int start, int end, int worker, void *data)
         KeaGather(w, w->dv, w->grad, r[2], r[3]);
         for (p = p0; p < r[5]; ++p) {
             i = w->freeRows[p];
-            w->epsFree[p] = w->eps[i];
             w->grad[p] = w->grad[p] + w->eps[i] * t->x[i] - t->problem->rhs[i];
             w->step[p] = ME_R(0.0);
             w->res[p] = -w->grad[p];
@@ -528,14 +527,19 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
     }
     listed = KeaPacksListFree(w, x);
     nFree = KEA_PACK_POSITIONS * w->nPacks;
-    for (b = 0; b < w->nBlocks && w->nContactBlocks < w->nBlocks; ++b) /* rows in order */
-        for (i = w->blockStart[b]; i < w->blockStart[b + 1] && !w->blockContact[b]; ++i)
-            if (w->wasFree[i]) { /* not a contact's row: those are in the packs */
-                KeaRowBoundsInline(problem, x, i, &w->lo[nFree], &w->hi[nFree]);
-                w->xFree[nFree] = x[i];
-                w->freeRows[nFree++] = i;
-                ++listed;
-            }
+    if (w->nContactBlocks < w->nBlocks) /* else every block is a declared contact, all in the packs */
+        for (b = 0; b < w->nBlocks; ++b) { /* rows in order */
+            if (w->blockContact[b])
+                continue; /* a declared contact: its rows' places are in the packs */
+            for (i = w->blockStart[b]; i < w->blockStart[b + 1]; ++i)
+                if (w->wasFree[i]) { /* its eps where its place is assigned, as the packs' */
+                    KeaRowBoundsInline(problem, x, i, &w->lo[nFree], &w->hi[nFree]);
+                    w->xFree[nFree] = x[i];
+                    w->epsFree[nFree] = w->eps[i];
+                    w->freeRows[nFree++] = i;
+                    ++listed;
+                }
+        }
     if (listed == 0)
         return 0;
     KeaFindSegments(w, KEA_PACK_POSITIONS * w->nPacks, nFree);
