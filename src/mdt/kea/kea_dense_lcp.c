@@ -46,6 +46,14 @@
 
 enum { KEA_FREE = 0, KEA_AT_LO = 1, KEA_AT_HI = 2 };
 
+/* The per-row helpers below run inside every O(n) pass of the method; gcc's heuristics keep some of
+ * them out of line, so they are asked inline by attribute where the compiler has one. */
+#if defined(__GNUC__)
+#  define KEA_DENSE_INLINE static inline __attribute__((always_inline))
+#else
+#  define KEA_DENSE_INLINE static inline
+#endif
+
 struct KeaDenseWork {
     int capacity;        /**< largest n this workspace serves */
     KeaCholesky chol;    /**< factor of the free block */
@@ -102,12 +110,12 @@ KeaDenseWork *KeaDenseWorkCreate(KeaArena *arena, int n)
 }
 
 /* Effective bounds of row i (friction links applied, same rule as KeaRowBounds). */
-static void KeaDenseLinkBounds(const KeaDenseLcp *lcp, int i, MeReal xLink, MeReal *lo, MeReal *hi)
+KEA_DENSE_INLINE void KeaDenseLinkBounds(const KeaDenseLcp *lcp, int i, MeReal xLink, MeReal *lo, MeReal *hi)
 {
     KeaFrictionBounds(lcp->lo[i], lcp->hi[i], lcp->mu[i], xLink, lo, hi);
 }
 
-static void KeaDenseBounds(const KeaDenseLcp *lcp, const MeReal *x, int i, MeReal *lo, MeReal *hi)
+KEA_DENSE_INLINE void KeaDenseBounds(const KeaDenseLcp *lcp, const MeReal *x, int i, MeReal *lo, MeReal *hi)
 {
     if (lcp->link && lcp->link[i] >= 0) {
         KeaDenseLinkBounds(lcp, i, x[lcp->link[i]], lo, hi);
@@ -135,7 +143,7 @@ static int KeaDensePrepare(const KeaDenseLcp *lcp, KeaDenseWork *w, const MeReal
 }
 
 /* (A v)_i, after KeaDensePrepare(lcp, w, v, list) returned nz. */
-static MeReal KeaDenseRowDot(const KeaDenseLcp *lcp, int i, const MeReal *v, const int *list, int nz)
+KEA_DENSE_INLINE MeReal KeaDenseRowDot(const KeaDenseLcp *lcp, int i, const MeReal *v, const int *list, int nz)
 {
     const MeReal *Ai;
     MeReal s = ME_R(0.0);
