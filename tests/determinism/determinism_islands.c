@@ -33,11 +33,11 @@
 #define BODIES (STACKS * STACK_HEIGHT + CHAINS * LINKS + PENDULUMS + BALLS)
 
 #if KARMA_DOUBLE
-#  define GOLDEN_DIRECT 0xe45fd0e26951e694ull
-#  define GOLDEN_ITERATIVE 0x0777a3af499e7858ull
+#  define GOLDEN_DIRECT 0xc370ec8b9545a23eull
+#  define GOLDEN_ITERATIVE 0xaefbef4938643eb5ull
 #else
-#  define GOLDEN_DIRECT 0xe279e5e663381afbull
-#  define GOLDEN_ITERATIVE 0xffce4016de671224ull
+#  define GOLDEN_DIRECT 0x1ccb2de841f1d751ull
+#  define GOLDEN_ITERATIVE 0x9ad96c2d70727ee5ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};

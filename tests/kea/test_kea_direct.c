@@ -484,6 +484,65 @@ static void singular_matrix_without_softness(void **state)
     kt_free(&t);
 }
 
+/* A stack's partition (columns of 3 to 6 boxes, 12 contact rows a box, gravity's step as rhs),
+ * warm-started as a step at rest would be: the direct path solves it through the bodies' coordinates
+ * (KeaStats.bodyFactor) with the row factor's answer and the LCP's residual, also when the top box is
+ * pushed so that its contacts slide (warm-started at its solution, or 0.1 % above it: the friction
+ * polish, or a pivot), and when a friction pass frees rows (a contact starting at 0). When the active set must
+ * pivot (the top box lifted off: its contacts open), the softness is too small for that factor, or a
+ * body cannot turn (no inverse inertia: no inertia to put in H), the row factor solves it. */
+static void stack_solved_through_its_bodies(void **state)
+{
+    KeaParameters prm = kt_params(KeaPathDirect);
+    const double gravity[3] = {0.0, 0.0, -9.81};
+    int boxes, variant, viaBodies = 0;
+    (void)state;
+    for (boxes = 3; boxes <= 6; ++boxes)
+        for (variant = 0; variant < 7; ++variant) {
+            const int n = 12 * boxes, top = 6 * (boxes - 1);
+            KtProblem t;
+            MeReal rest[72], x[72], x2[72];
+            double v[36] = {0}, xd[72], scale;
+            KeaStats st;
+            int i;
+            /* variant 3: softness about 1e-7 of the rows' own J M^-1 J^T, too small for H in float */
+            kt_column(&t, boxes, 48.0, 0.6, variant == 3 ? 1e-8 : 2e-4);
+            kt_set_rhs_from_velocities(&t, v, 1.0 / 60.0, gravity);
+            assert_int_not_equal(kt_solve(&t.p, &prm, rest, NULL, &st), KeaStatusBadInput);
+            if (variant == 6)
+                memset(t.bodies[0].invInertia, 0, sizeof t.bodies[0].invInertia);
+            v[top] = variant == 1 || variant == 5 ? 2.0 : 0.0; /* pushed sideways: the top contacts slide */
+            v[top + 2] = variant == 2 ? 1.0 : 0.0; /* lifted: the top contacts open */
+            kt_set_rhs_from_velocities(&t, v, 1.0 / 60.0, gravity);
+            assert_int_not_equal(kt_solve(&t.p, &prm, x, NULL, &st), KeaStatusBadInput);
+            assert_near(st.residual, 0.0, ME_TOL(1e-9, 1e-4));
+            for (i = 0; i < n; ++i) { /* the warm start: the solution, or (2) the stack at rest */
+                t.x0[i] = variant == 2 ? rest[i] : x[i];
+                xd[i] = (double)x[i];
+            }
+            if (variant == 4)
+                t.x0[0] = ME_R(0.0); /* the bottom contact's normal at 0, its friction rows pinned */
+            if (variant == 5)
+                for (i = 0; i < n; ++i)
+                    t.x0[i] = x[i] * ME_R(1.001);
+            t.p.x0 = t.x0;
+            assert_int_not_equal(kt_solve(&t.p, &prm, x2, NULL, &st), KeaStatusBadInput);
+            scale = 1.0 + kt_max_abs(xd, n);
+            if (variant != 3) /* with so little softness the corners' shares are all but free */
+                assert_near(kt_max_abs_diff(x2, xd, n) / scale, 0.0, ME_TOL(1e-9, 1e-4));
+            assert_near(st.residual, 0.0, ME_TOL(1e-9, 1e-4));
+            if (variant != 5) /* 0.1 % above the solution: a pivot or none, either factor is right */
+                assert_int_equal(st.bodyFactor, variant == 2 || variant == 3 || variant == 6 ? 0 : 1);
+            if (variant == 2)
+                assert_true(st.pivots > 0);
+            if (variant == 4)
+                assert_true(st.frictionPasses > 1);
+            viaBodies += st.bodyFactor;
+            kt_free(&t);
+        }
+    print_message("stacks: %d of 28 solves through the bodies\n", viaBodies);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -498,6 +557,7 @@ int main(void)
         cmocka_unit_test(pivot_cap_is_reported),
         cmocka_unit_test(auto_pivot_budget_hands_over),
         cmocka_unit_test(singular_matrix_without_softness),
+        cmocka_unit_test(stack_solved_through_its_bodies),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

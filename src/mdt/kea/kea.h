@@ -209,6 +209,8 @@ typedef struct KeaStats {
     MeReal residual;    /**< natural-map residual of the returned x (top comment), velocity units */
     int colours;        /**< iterative, split (KeaParameters.splitRows): the blocks' colours (the
                              overflow colour counted when used); 0 when not split */
+    int bodyFactor;     /**< direct: 1 when the free rows were solved through the bodies' coordinates
+                             (a resting stack; kea_body_factor.c), 0 with the rows' own factor */
 } KeaStats;
 
 /** Default settings (see the field comments). */

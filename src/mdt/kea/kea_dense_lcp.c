@@ -41,10 +41,24 @@
  * rows A is made of (KeaDenseLcp). Then the factor works on envelopes (kea_dense.c), only A's
  * pattern is read, and every product with A goes through the bodies (A v = J M^-1 J^T v + eps v,
  * O(n)), so the costs above become those of the sparse factor: about linear in n for chains and
- * trees of bodies. The blocks of the iterative path use the plain dense form. */
+ * trees of bodies. The blocks of the iterative path use the plain dense form.
+ *
+ * The free rows' factor may instead be kept in the bodies' coordinates (KeaDenseWorkUseBodyFactor,
+ * kea_body_factor.c: a resting stack); then only A's diagonal is read. */
 #include "kea_internal.h"
 
 enum { KEA_FREE = 0, KEA_AT_LO = 1, KEA_AT_HI = 2 };
+/* Whether a solve with the body factor is refined once (kea_body_factor.c): the Newton points are,
+ * the final refinement and the polish's Woodbury solves (followed by their own refinement) are not. */
+enum { KEA_REFINE_NEWTON = 1, KEA_REFINE_OTHER = 0 };
+
+/* The per-row helpers below run inside every O(n) pass of the method; gcc's heuristics keep some of
+ * them out of line, so they are asked inline by attribute where the compiler has one. */
+#if defined(__GNUC__)
+#  define KEA_DENSE_INLINE static inline __attribute__((always_inline))
+#else
+#  define KEA_DENSE_INLINE static inline
+#endif
 
 struct KeaDenseWork {
     int capacity;        /**< largest n this workspace serves */
@@ -68,6 +82,7 @@ struct KeaDenseWork {
     int velocityOfX;     /**< lcp->velocity holds M^-1 J^T x for the x of the last pricing, which
                               found the optimum, and x has not moved since (the refinement's) */
     MeReal residual;     /**< then: KeaResidualWithDiagonal of the returned x (same sums) */
+    KeaBodyFactor *body; /**< the free rows solved through the bodies (kea_body_factor.c), or NULL */
 };
 
 KeaDenseWork *KeaDenseWorkCreate(KeaArena *arena, int n)
@@ -98,16 +113,58 @@ KeaDenseWork *KeaDenseWorkCreate(KeaArena *arena, int n)
     w->chol.ld = n;
     w->chol.size = 0;
     w->chol.regularised = 0;
+    w->body = NULL;
     return result;
 }
 
+void KeaDenseWorkUseBodyFactor(KeaDenseWork *w, KeaBodyFactor *f) { w->body = f; }
+
+/* The free set's factor, whichever it is: append row i, remove the row at position p, solve
+ * A_FF v = b in place (b zero before position `from`). The body factor keeps only F and pos here. */
+static void KeaFreeAppend(const KeaDenseLcp *lcp, KeaDenseWork *w, int i)
+{
+    KeaCholesky *c = &w->chol;
+    if (!w->body) {
+        KeaCholeskyAppend(c, lcp->A, lcp->n, i);
+        return;
+    }
+    c->F[c->size] = i;
+    c->pos[i] = c->size++;
+    KeaBodyFactorAddRow(w->body, i, ME_R(1.0));
+}
+
+static void KeaFreeRemove(KeaDenseWork *w, int p)
+{
+    KeaCholesky *c = &w->chol;
+    int q;
+    if (!w->body) {
+        KeaCholeskyRemove(c, p);
+        return;
+    }
+    KeaBodyFactorAddRow(w->body, c->F[p], ME_R(-1.0));
+    c->pos[c->F[p]] = -1;
+    for (q = p + 1; q < c->size; ++q) {
+        c->F[q - 1] = c->F[q];
+        c->pos[c->F[q - 1]] = q - 1;
+    }
+    --c->size;
+}
+
+static void KeaFreeSolve(KeaDenseWork *w, MeReal *b, int from, int refine)
+{
+    if (w->body)
+        w->chol.regularised += KeaBodyFactorSolve(w->body, w->chol.F, w->chol.size, b, refine);
+    else
+        KeaCholeskySolveFrom(&w->chol, b, from);
+}
+
 /* Effective bounds of row i (friction links applied, same rule as KeaRowBounds). */
-static void KeaDenseLinkBounds(const KeaDenseLcp *lcp, int i, MeReal xLink, MeReal *lo, MeReal *hi)
+KEA_DENSE_INLINE void KeaDenseLinkBounds(const KeaDenseLcp *lcp, int i, MeReal xLink, MeReal *lo, MeReal *hi)
 {
     KeaFrictionBounds(lcp->lo[i], lcp->hi[i], lcp->mu[i], xLink, lo, hi);
 }
 
-static void KeaDenseBounds(const KeaDenseLcp *lcp, const MeReal *x, int i, MeReal *lo, MeReal *hi)
+KEA_DENSE_INLINE void KeaDenseBounds(const KeaDenseLcp *lcp, const MeReal *x, int i, MeReal *lo, MeReal *hi)
 {
     if (lcp->link && lcp->link[i] >= 0) {
         KeaDenseLinkBounds(lcp, i, x[lcp->link[i]], lo, hi);
@@ -135,7 +192,7 @@ static int KeaDensePrepare(const KeaDenseLcp *lcp, KeaDenseWork *w, const MeReal
 }
 
 /* (A v)_i, after KeaDensePrepare(lcp, w, v, list) returned nz. */
-static MeReal KeaDenseRowDot(const KeaDenseLcp *lcp, int i, const MeReal *v, const int *list, int nz)
+KEA_DENSE_INLINE MeReal KeaDenseRowDot(const KeaDenseLcp *lcp, int i, const MeReal *v, const int *list, int nz)
 {
     const MeReal *Ai;
     MeReal s = ME_R(0.0);
@@ -171,9 +228,17 @@ static void KeaDenseFactorFree(const KeaDenseLcp *lcp, KeaDenseWork *w, KeaStats
         w->chol.pos[i] = -1;
     for (k = 0; k < n; ++k) {
         i = lcp->order ? lcp->order[k] : k;
-        if (w->state[i] == KEA_FREE)
+        if (w->state[i] != KEA_FREE)
+            continue;
+        if (w->body) {
+            w->chol.F[w->chol.size] = i;
+            w->chol.pos[i] = w->chol.size++;
+        } else {
             KeaCholeskyAppend(&w->chol, lcp->A, n, i);
+        }
     }
+    if (w->body)
+        (void)KeaBodyFactorRebuild(w->body, w->chol.F, w->chol.size);
     ++stats->factorizations;
 }
 
@@ -272,7 +337,7 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
             for (p = 0; p < c->size; ++p)
                 w->y[p] = r[c->F[p]];
         }
-        KeaCholeskySolve(c, w->y);
+        KeaFreeSolve(w, w->y, 0, KEA_REFINE_NEWTON);
 
         /* 2. Ratio test along y - x_F. */
         block = KeaRatioTest(w, x, &alpha, &blockSide);
@@ -286,7 +351,7 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
             i = c->F[block];
             x[i] = blockSide == KEA_AT_LO ? w->lo[i] : w->hi[i];
             w->state[i] = (signed char)blockSide;
-            KeaCholeskyRemove(c, block);
+            KeaFreeRemove(w, block);
             ++stats->pivots;
             if (alpha > ME_R(0.0)) {
                 if (nLocked) {
@@ -310,7 +375,7 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
             if (best < 0)
                 return KeaStatusOk;
             w->state[best] = KEA_FREE;
-            KeaCholeskyAppend(c, lcp->A, n, best);
+            KeaFreeAppend(lcp, w, best);
             lastFreed = best;
             if (++stats->pivots >= maxPivots)
                 return KeaStatusMaxPivots;
@@ -391,12 +456,12 @@ static void KeaDenseApplyBounds(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal 
     } else {
         for (i = 0; i < n; ++i)
             if (w->state[i] == KEA_FREE && newState[i] != KEA_FREE) {
-                KeaCholeskyRemove(&w->chol, w->chol.pos[i]);
+                KeaFreeRemove(w, w->chol.pos[i]);
                 ++stats->pivots;
             }
         for (i = 0; i < n; ++i)
             if (w->state[i] != KEA_FREE && newState[i] == KEA_FREE) {
-                KeaCholeskyAppend(&w->chol, lcp->A, n, i);
+                KeaFreeAppend(lcp, w, i);
                 ++stats->pivots;
             }
         for (i = 0; i < n; ++i)
@@ -424,7 +489,7 @@ static void KeaWoodburySolve(KeaDenseWork *w, int m, MeReal *v)
     const KeaCholesky *c = &w->chol;
     const int k = c->size;
     int a, p;
-    KeaCholeskySolve(c, v);
+    KeaFreeSolve(w, v, 0, KEA_REFINE_OTHER);
     for (a = 0; a < m; ++a)
         w->t[a] = v[c->pos[w->normals[a]]];
     KeaDenseSolveFactored(m, w->G, w->perm, w->t);
@@ -467,7 +532,12 @@ static int KeaPolishCapacitance(const KeaDenseLcp *lcp, KeaDenseWork *w, int m)
             continue;
         coef = (w->state[i] == KEA_AT_HI ? ME_R(1.0) : ME_R(-1.0)) * lcp->mu[i];
         u = w->U + (size_t)w->slot[lcp->link[i]] * (size_t)k;
-        if (lcp->patternStart) { /* A is symmetric, so is its pattern: column i = row i */
+        if (w->body) { /* A_FF^-1 A_F,i coef at once, through the bodies (Z's column, not U's) */
+            MeReal *column = w->cand; /* free until the candidate is made */
+            KeaBodyFactorColumn(w->body, c->F, k, i, coef, column);
+            for (p = 0; p < k; ++p)
+                u[p] += column[p];
+        } else if (lcp->patternStart) { /* A is symmetric, so is its pattern: column i = row i */
             for (j = lcp->patternStart[i]; j < lcp->patternStart[i + 1]; ++j)
                 if (c->pos[lcp->pattern[j]] >= 0)
                     u[c->pos[lcp->pattern[j]]] += coef * lcp->A[(size_t)i * (size_t)n + (size_t)lcp->pattern[j]];
@@ -484,8 +554,8 @@ static int KeaPolishCapacitance(const KeaDenseLcp *lcp, KeaDenseWork *w, int m)
         while (from[a] < k && u[from[a]] == ME_R(0.0))
             ++from[a];
     }
-    for (a = 0; a < m; ++a)
-        KeaCholeskySolveFrom(c, w->U + (size_t)a * (size_t)k, from[a]);
+    for (a = 0; a < m && !w->body; ++a)
+        KeaFreeSolve(w, w->U + (size_t)a * (size_t)k, from[a], KEA_REFINE_OTHER);
     for (a = 0; a < m; ++a) {
         const int pa = c->pos[w->normals[a]];
         for (j = 0; j < m; ++j)
@@ -586,7 +656,7 @@ static void KeaDenseRefine(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
     } else {
         KeaFreeRowsResidual(lcp, w, x);
     }
-    KeaCholeskySolve(c, w->y);
+    KeaFreeSolve(w, w->y, 0, KEA_REFINE_OTHER);
     for (p = 0; p < c->size; ++p) {
         const int i = c->F[p];
         x[i] = KeaClamp(x[i] + w->y[p], w->lo[i], w->hi[i]);

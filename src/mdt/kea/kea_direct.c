@@ -39,6 +39,7 @@ typedef struct KeaDirectWork {
     MeReal *formColumns; /**< KeaFormScratchReals: one body's rows while forming A */
     int *formInts;      /**< KeaFormScratchInts */
     KeaDenseWork *lcp;  /**< the dense solver's workspace */
+    KeaBodyFactor *body; /**< the free rows in body coordinates (kea_body_factor.c), when it fits */
 } KeaDirectWork;
 
 static void KeaDirectLayout(KeaArena *arena, int n, int nb, KeaDirectWork *w)
@@ -56,6 +57,7 @@ static void KeaDirectLayout(KeaArena *arena, int n, int nb, KeaDirectWork *w)
     w->formInts = KEA_ALLOC(arena, int, KeaFormScratchInts(n));
     w->lcp = KeaDenseWorkCreate(arena, n);
     w->bodyColumns = KEA_ALLOC(arena, KeaBodyColumns, nb);
+    w->body = KeaBodyFactorCreate(arena, n, nb);
 }
 
 /* Row i's structural non-zeros: every row on one of its bodies (itself included), once each. */
@@ -121,8 +123,82 @@ static long long KeaDirectEnvelope(int n, const KeaDirectWork *w)
     return envelope;
 }
 
+/* The row factor's structures: A's pattern, M^-1 J^T of every row and A itself. Returns 0 when Auto
+ * may decline the partition and its factor's envelope is over the budget (then nothing is formed). */
+static int KeaDirectRowSetUp(const KeaProblem *problem, const KeaParameters *params, int mayDecline,
+                             KeaDirectWork *w)
+{
+    const int n = problem->nRows;
+    int i;
+    KeaDirectPattern(problem, w->incidence, w->start, w);
+    if (mayDecline) {
+        const long long budget = (long long)params->maxDirectRows * ((long long)params->maxDirectRows + 1) / 2;
+        if (KeaDirectEnvelope(n, w) > budget)
+            return 0;
+    }
+    for (i = 0; i < n; ++i)
+        (void)KeaRowInvMassJT4(problem, w->bodyColumns, i, &w->B[i]);
+    KeaFormDenseMatrix(problem, w->B, w->A, w->incidence, w->start, w->patternStart, w->pattern, w->formColumns,
+                       w->formInts);
+    return 1;
+}
+
+/* Whether the partition's free rows go through its bodies' coordinates first (kea_body_factor.c:
+ * a partition of two or more bodies with more than 18 rows, at least 1.5 a body coordinate, enough
+ * softness): then only A's diagonal is formed (into A, for the solver and the residual). */
+static int KeaDirectBodySetUp(const KeaProblem *problem, int mayDecline, KeaDirectWork *w)
+{
+    const int n = problem->nRows;
+    int i;
+    if (!w->body || mayDecline)
+        return 0;
+    for (i = 0; i < n; ++i)
+        w->A[(size_t)i * (size_t)n + (size_t)i] = KeaRowInvMassJT4(problem, w->bodyColumns, i, &w->B[i]);
+    return KeaBodyFactorBegin(w->body, problem, w->bodyColumns, w->orderScratch, w->A, (size_t)n + 1);
+}
+
+/* The dense solver's view of the partition: A (or its diagonal), the rows, the order, and the
+ * pattern when the row factor is used. */
+static void KeaDirectLcp(const KeaProblem *problem, const KeaDirectWork *w, int bodySpace, KeaBodyVelocity *dv,
+                         KeaDenseLcp *lcp)
+{
+    lcp->n = problem->nRows;
+    lcp->A = w->A;
+    lcp->r = problem->rhs;
+    lcp->lo = problem->lo;
+    lcp->hi = problem->hi;
+    lcp->link = problem->link;
+    lcp->mu = problem->mu;
+    lcp->order = w->order;
+    lcp->patternStart = bodySpace ? NULL : w->patternStart;
+    lcp->pattern = bodySpace ? NULL : w->pattern;
+    lcp->rows = problem;
+    lcp->velocity = dv; /* scratch until the final velocity change */
+}
+
+/* The pivot cap of the solve, and whether it is Auto's budget (past it, the iterative path). */
+static int KeaDirectPivotCap(const KeaParameters *params, int n, int *budgeted)
+{
+    int maxPivots = params->maxPivots;
+    /* Only a partition of at most maxDirectRows rows: a larger one is on this path because its bodies
+     * form a tree (a chain, a column), where the iterative path's answer is far from the exact one */
+    *budgeted = params->path == KeaPathAuto && params->autoPivotsPerRow > ME_R(0.0) && n <= params->maxDirectRows;
+    if (*budgeted) { /* Auto's pivot budget (the worst frames, docs/kea.md) */
+        const MeReal budget = params->autoPivotsPerRow * (MeReal)n + (MeReal)KEA_AUTO_PIVOTS_EXTRA;
+        maxPivots = (int)budget;
+        if (params->maxPivots > 0 && params->maxPivots < maxPivots) {
+            maxPivots = params->maxPivots;
+            *budgeted = 0; /* the caller's own cap is the tighter one and keeps its meaning */
+        }
+    }
+    return maxPivots;
+}
+
 /* Size: KeaSolve's contract (problem, parameters, workspace, the three outputs) and whether it may
- * decline the partition to the iterative path. */
+ * decline the partition to the iterative path. The body factor (kea_body_factor.c) is tried first
+ * where it fits, for a solve without pivots (a resting stack: one factorisation, no A formed); at
+ * the first pivot the solve starts again from the warm start with the row factor, whose pivots
+ * cost less than the body factor's refactorisations, and gives the row factor's bits. */
 KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
                          int mayDecline, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
 {
@@ -130,49 +206,38 @@ KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params,
     KeaDirectWork w;
     KeaDenseLcp lcp;
     KeaStatus status;
-    int i, budgeted, maxPivots = params->maxPivots;
+    int i, budgeted, maxPivots;
 
     KeaDirectLayout(arena, n, problem->nBodies, &w);
     KeaBodyIncidence(problem, w.incidence, w.start);
     KeaEliminationOrder(problem, w.incidence, w.start, w.orderScratch, w.order);
-    KeaDirectPattern(problem, w.incidence, w.start, &w);
-    if (mayDecline) {
-        const long long budget = (long long)params->maxDirectRows * ((long long)params->maxDirectRows + 1) / 2;
-        if (KeaDirectEnvelope(n, &w) > budget)
-            return KeaStatusDeclined;
-    }
     KeaBodyColumnsFill(problem, w.bodyColumns);
-    for (i = 0; i < n; ++i)
-        (void)KeaRowInvMassJT4(problem, w.bodyColumns, i, &w.B[i]);
-    KeaFormDenseMatrix(problem, w.B, w.A, w.incidence, w.start, w.patternStart, w.pattern, w.formColumns,
-                       w.formInts);
-
-    lcp.n = n;
-    lcp.A = w.A;
-    lcp.r = problem->rhs;
-    lcp.lo = problem->lo;
-    lcp.hi = problem->hi;
-    lcp.link = problem->link;
-    lcp.mu = problem->mu;
-    lcp.order = w.order;
-    lcp.patternStart = w.patternStart;
-    lcp.pattern = w.pattern;
-    lcp.rows = problem;
-    lcp.velocity = dv; /* scratch until the final velocity change below */
-    /* Only a partition of at most maxDirectRows rows: a larger one is on this path because its bodies
-     * form a tree (a chain, a column), where the iterative path's answer is far from the exact one */
-    budgeted = params->path == KeaPathAuto && params->autoPivotsPerRow > ME_R(0.0) && n <= params->maxDirectRows;
-    if (budgeted) { /* Auto's pivot budget (the worst frames, docs/kea.md): past it, the iterative path */
-        const MeReal budget = params->autoPivotsPerRow * (MeReal)n + (MeReal)KEA_AUTO_PIVOTS_EXTRA;
-        maxPivots = (int)budget;
-        if (params->maxPivots > 0 && params->maxPivots < maxPivots) {
-            maxPivots = params->maxPivots;
-            budgeted = 0; /* the caller's own cap is the tighter one and keeps its meaning */
+    maxPivots = KeaDirectPivotCap(params, n, &budgeted);
+    status = KeaStatusMaxPivots;
+    if (KeaDirectBodySetUp(problem, mayDecline, &w)) {
+        const KeaStats before = *stats;
+        for (i = 0; i < n; ++i) /* the warm start, for the row factor if a pivot comes */
+            w.formColumns[i] = x[i];
+        KeaDenseWorkUseBodyFactor(w.lcp, w.body);
+        KeaDirectLcp(problem, &w, 1, dv, &lcp);
+        status = KeaDenseLcpSolve(&lcp, 1, params->maxFrictionPasses, w.lcp, x, stats);
+        if (status == KeaStatusMaxPivots) {
+            for (i = 0; i < n; ++i)
+                x[i] = w.formColumns[i];
+            *stats = before;
+        } else {
+            stats->bodyFactor = 1;
         }
     }
-    status = KeaDenseLcpSolve(&lcp, maxPivots, params->maxFrictionPasses, w.lcp, x, stats);
-    if (budgeted && status == KeaStatusMaxPivots)
-        return KeaStatusOverBudget;
+    if (status == KeaStatusMaxPivots) {
+        KeaDenseWorkUseBodyFactor(w.lcp, NULL);
+        if (!KeaDirectRowSetUp(problem, params, mayDecline, &w))
+            return KeaStatusDeclined;
+        KeaDirectLcp(problem, &w, 0, dv, &lcp);
+        status = KeaDenseLcpSolve(&lcp, maxPivots, params->maxFrictionPasses, w.lcp, x, stats);
+        if (budgeted && status == KeaStatusMaxPivots)
+            return KeaStatusOverBudget;
+    }
     if (!KeaDenseLcpFinalVelocity(w.lcp, &stats->residual)) { /* else dv and the residual are x's */
         KeaBodyVelocityFromImpulses(problem, x, dv);
         stats->residual = KeaResidualWithDiagonal(problem, x, dv, w.A, (size_t)n + 1);

@@ -296,6 +296,29 @@ void KeaCholeskySolveFrom(const KeaCholesky *c, MeReal *b, int from);
 /* ---- the dense box LCP solver (kea_dense_lcp.c) --------------------------------------------- */
 
 /** A dense box LCP: w = A x - r, bounds lo <= hi, optional friction links (indices into this LCP). */
+/* ---- the free rows solved through the bodies' coordinates (kea_body_factor.c) --------------- */
+
+/** The direct path's factor of the free rows in body coordinates (H = M + J_F^T E^-1 J_F). */
+typedef struct KeaBodyFactor KeaBodyFactor;
+/** Whether a partition of this size is laid out for it (many rows on few bodies). */
+int KeaBodyFactorFits(int nRows, int nBodies);
+/** Lay it out in the arena (NULL in counting mode, or when the partition does not fit). */
+KeaBodyFactor *KeaBodyFactorCreate(KeaArena *arena, int n, int nb);
+/** Ready it for the problem, bodies in the elimination order (rank[b], kea_order.c), H = M; diag:
+ *  the rows' A_ii (diag[i * stride]). Returns 0 when the partition must keep the row factor (no or
+ *  too little softness, a body with no mass or inertia, a row touching one body twice). */
+int KeaBodyFactorBegin(KeaBodyFactor *f, const KeaProblem *problem, const KeaBodyColumns *columns,
+                       const int *rank, const MeReal *diag, size_t stride);
+/** H = M + sum over the free rows F[0 .. size - 1]; 0 if a body has no mass. */
+int KeaBodyFactorRebuild(KeaBodyFactor *f, const int *F, int size);
+/** H += sign j_i j_i^T / eps_i (sign +1: row i freed, -1: fixed); refactored at the next solve. */
+void KeaBodyFactorAddRow(KeaBodyFactor *f, int i, MeReal sign);
+/** v = A_FF^-1 v (v by position in F), refined once if asked; returns the pivots raised to the floor. */
+int KeaBodyFactorSolve(KeaBodyFactor *f, const int *F, int size, MeReal *v, int refine);
+/** u = A_FF^-1 A_F,row coef for a row not in F, as E^-1 J_F H^-1 J_row^T coef (no difference of
+ *  nearly equal terms: A_FF^-1 J_F M^-1 = E^-1 J_F H^-1). */
+void KeaBodyFactorColumn(KeaBodyFactor *f, const int *F, int size, int row, MeReal coef, MeReal *u);
+
 typedef struct KeaDenseLcp {
     int n;               /**< rows */
     const MeReal *A;     /**< n x n row-major, symmetric positive (semi-)definite */
@@ -319,6 +342,9 @@ typedef struct KeaDenseWork KeaDenseWork;
 
 /** Lay out a dense-solver workspace for n rows in the arena (NULL in counting mode). */
 KeaDenseWork *KeaDenseWorkCreate(KeaArena *arena, int n);
+/** Solve the free rows through the bodies' coordinates (f ready, KeaBodyFactorBegin) instead of
+ *  A_FF's own Cholesky factor, until the next call: then only A's diagonal is read. NULL: A_FF's. */
+void KeaDenseWorkUseBodyFactor(KeaDenseWork *w, KeaBodyFactor *f);
 /** Solve the LCP exactly (kea_dense_lcp.c top comment). x: warm start in, solution out. Adds its
  *  pivots, factorisations, friction passes and regularised pivots to stats. maxPivots 0 = automatic
  *  (8 n + 64). */
