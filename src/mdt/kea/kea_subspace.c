@@ -503,6 +503,38 @@ static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w
     }
 }
 
+/* The packs' colouring (KeaSplitPacks) and their free rows (KeaPacksListFree) as the two items of one
+ * task: the colouring reads the packs' bodies and writes the split's pack order, the list reads the
+ * packs' rows and writes their masks and the free list's pack region, so the two serial passes run
+ * side by side on two workers. */
+typedef struct KeaPacksListTask {
+    KeaIterativeWork *w;
+    const MeReal *x;
+    int listed;
+} KeaPacksListTask;
+
+static void KeaColourPacksAndListFreeItems(int start, int end, int worker, void *data)
+{
+    KeaPacksListTask *t = data;
+    int j;
+    (void)worker;
+    for (j = start; j < end; ++j)
+        if (j == 0)
+            KeaSplitPacks(t->w, t->w->split);
+        else
+            t->listed = KeaPacksListFree(t->w, t->x);
+}
+
+static int KeaColourPacksAndListFree(KeaIterativeWork *w, const MeReal *x)
+{
+    KeaPacksListTask t;
+    t.w = w;
+    t.x = x;
+    t.listed = 0;
+    KeaSplitRun(w->split, KeaColourPacksAndListFreeItems, 2, &t);
+    return t.listed;
+}
+
 /* Subspace minimisation on the rows strictly inside their bounds; returns the CG steps taken, -1 if
  * skipped because the active set is still moving (top comment). */
 int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x)
@@ -523,10 +555,13 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
     /* the step runs: list the free rows, freeze their bounds; the packs' region first */
     if (w->nPacks < 0) { /* the first SM step of the solve that runs */
         KeaPacksFill(problem, w);
-        if (w->split)
-            KeaSplitPacks(w, w->split);
+        if (w->split) /* the packs' colouring beside their free rows: KeaColourPacksAndListFree */
+            listed = KeaColourPacksAndListFree(w, x);
+        else
+            listed = KeaPacksListFree(w, x);
+    } else {
+        listed = KeaPacksListFree(w, x);
     }
-    listed = KeaPacksListFree(w, x);
     nFree = KEA_PACK_POSITIONS * w->nPacks;
     for (b = 0; b < w->nBlocks && w->nContactBlocks < w->nBlocks; ++b) /* rows in order */
         for (i = w->blockStart[b]; i < w->blockStart[b + 1] && !w->blockContact[b]; ++i)
