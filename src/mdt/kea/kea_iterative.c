@@ -315,6 +315,7 @@ typedef struct KeaRowsTask {
     const KeaProblem *problem;
     KeaIterativeWork *w;
     MeReal *x;
+    KeaBodyVelocity *dv; /* KeaBodyVelocityRanges' output */
     int coloured; /* KeaSplitColour's answer, from KeaColourAndWarmStartChunks */
 } KeaRowsTask;
 
@@ -345,6 +346,20 @@ static void KeaColourAndWarmStartChunks(int start, int end, int worker, void *da
     }
 }
 
+/* dv = M^-1 J^T x from the warm start, item j for the j-th of `items` equal ranges of bodies: each
+ * reads every row and sums its own bodies' halves in row order (KeaBodyVelocityFromImpulsesOf), so
+ * the bits do not depend on the ranges, and the ranges may follow the worker count. */
+static void KeaBodyVelocityRanges(int start, int end, int worker, void *data)
+{
+    const KeaRowsTask *t = data;
+    const int nb = t->problem->nBodies, items = KeaSplitWorkers(&t->w->split->hook);
+    int j;
+    (void)worker;
+    for (j = start; j < end; ++j)
+        KeaBodyVelocityFromImpulsesOf(t->problem, t->x, t->dv, (int)((long)nb * j / items),
+                                      (int)((long)nb * (j + 1) / items));
+}
+
 /* Each row chunk's residual into the split's partial results (the chunk's worst, KeaResidualRows). */
 static void KeaResidualRowChunks(int start, int end, int worker, void *data)
 {
@@ -371,6 +386,7 @@ static MeReal KeaIterativeResidual(const KeaProblem *problem, KeaIterativeWork *
     t.problem = problem;
     t.w = w;
     t.x = x;
+    t.dv = NULL;
     t.coloured = 0;
     KeaSplitRun(w->split, KeaResidualRowChunks, chunks, &t);
     for (j = 0; j < chunks; ++j) {
@@ -395,6 +411,7 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
     t.problem = problem;
     t.w = w;
     t.x = x;
+    t.dv = dv;
     t.coloured = 0;
     KeaBodyColumnsFill(problem, w->bodyColumns);
     if (w->split)
@@ -409,7 +426,10 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
     } else {
         KeaWarmStartRows(w, x, 0, n);
     }
-    KeaBodyVelocityFromImpulses(problem, x, dv);
+    if (w->split) /* dv from the warm start in ranges of bodies, one a worker */
+        KeaSplitRun(w->split, KeaBodyVelocityRanges, KeaSplitWorkers(&w->split->hook), &t);
+    else
+        KeaBodyVelocityFromImpulses(problem, x, dv);
     w->skippedLast = 0;
     w->smRan = 0;
     w->smUnpaid = 0;
