@@ -503,6 +503,30 @@ static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w
     }
 }
 
+/* A split solve's KeaPacksFill: the plan on this thread, the packs filled in chunks of
+ * KEA_SPLIT_PACKS over the workers (KeaPacksSet: each pack writes only its own). */
+typedef struct KeaPacksSetTask {
+    const KeaProblem *problem;
+    KeaIterativeWork *w;
+} KeaPacksSetTask;
+
+static void KeaPacksSetChunks(int start, int end, int worker, void *data)
+{
+    const KeaPacksSetTask *t = data;
+    const int last = end * KEA_SPLIT_PACKS;
+    (void)worker;
+    KeaPacksSet(t->problem, t->w, start * KEA_SPLIT_PACKS, last < t->w->nPacks ? last : t->w->nPacks);
+}
+
+static void KeaPacksFillSplit(const KeaProblem *problem, KeaIterativeWork *w)
+{
+    KeaPacksSetTask t;
+    t.problem = problem;
+    t.w = w;
+    KeaPacksPlan(problem, w);
+    KeaSplitRun(w->split, KeaPacksSetChunks, (w->nPacks + KEA_SPLIT_PACKS - 1) / KEA_SPLIT_PACKS, &t);
+}
+
 /* The packs' colouring (KeaSplitPacks) and their free rows (KeaPacksListFree) as the two items of one
  * task: the colouring reads the packs' bodies and writes the split's pack order, the list reads the
  * packs' rows and writes their masks and the free list's pack region, so the two serial passes run
@@ -554,11 +578,13 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
         return -1; /* it did not pay: wait until the active set has settled */
     /* the step runs: list the free rows, freeze their bounds; the packs' region first */
     if (w->nPacks < 0) { /* the first SM step of the solve that runs */
-        KeaPacksFill(problem, w);
-        if (w->split) /* the packs' colouring beside their free rows: KeaColourPacksAndListFree */
+        if (w->split) { /* the packs filled in chunks, coloured beside their free rows */
+            KeaPacksFillSplit(problem, w);
             listed = KeaColourPacksAndListFree(w, x);
-        else
+        } else {
+            KeaPacksFill(problem, w);
             listed = KeaPacksListFree(w, x);
+        }
     } else {
         listed = KeaPacksListFree(w, x);
     }
