@@ -13,6 +13,7 @@
 
 #include "mdt/kea/kea_colour.h"
 #include "mdt/kea/kea_contact_packs.h"
+#include "mdt/kea/kea_internal.h"
 
 /* A partition like a pile's: contacts between random bodies and the world, every 30th on body 0 (so
  * that it has a contact in every colour and the overflow colour is used), and joint rows in blocks of
@@ -433,6 +434,51 @@ static void packs_scatter_colour_by_colour_in_any_order(void **state)
     assert_true(j > NB / 2); /* the scatter wrote the bodies */
 }
 
+/* dv = M^-1 J^T x by ranges of bodies (the split set-up's ranges, one a worker): any cut into ranges
+ * gives the whole pass's bits, each body summing its rows in row order, and a range writes only its
+ * own bodies. */
+static void body_ranges_give_the_whole_pass_bits(void **state)
+{
+    KtProblem t;
+    KtRng rng = kt_rng(4242);
+    KeaBodyVelocity *whole, *cut;
+    MeReal *x;
+    int i, k, nb;
+    (void)state;
+    make_pile(&t, 36000, 400, 90);
+    nb = t.p.nBodies;
+    whole = malloc(sizeof *whole * (size_t)nb);
+    cut = malloc(sizeof *cut * (size_t)nb);
+    x = malloc(sizeof *x * (size_t)t.p.nRows);
+    assert_non_null(whole);
+    assert_non_null(cut);
+    assert_non_null(x);
+    for (i = 0; i < t.p.nRows; ++i) /* a fifth of the impulses zero, as at rest: skipped */
+        x[i] = kt_int(&rng, 5) == 0 ? ME_R(0.0) : (MeReal)kt_range(&rng, -2, 2);
+    KeaBodyVelocityFromImpulses(&t.p, x, whole);
+    for (k = 1; k <= 6; ++k) { /* k ranges, the cuts at random bodies */
+        int cuts[8], j;
+        memset(cut, 0xff, sizeof *cut * (size_t)nb); /* NaN everywhere: a body no range writes shows */
+        cuts[0] = 0;
+        cuts[k] = nb;
+        for (j = 1; j < k; ++j)
+            cuts[j] = cuts[j - 1] + kt_int(&rng, nb - cuts[j - 1] + 1);
+        for (j = k - 1; j >= 0; --j) /* the ranges in reverse: the order changes nothing */
+            KeaBodyVelocityFromImpulsesOf(&t.p, x, cut, cuts[j], cuts[j + 1]);
+        assert_memory_equal(whole, cut, sizeof *cut * (size_t)nb);
+    }
+    memset(cut, 0xff, sizeof *cut * (size_t)nb);
+    KeaBodyVelocityFromImpulsesOf(&t.p, x, cut, 10, 20); /* one range: its bodies only */
+    for (i = 0; i < nb; ++i) {
+        const int inside = i >= 10 && i < 20;
+        assert_int_equal(memcmp(&cut[i], &whole[i], sizeof *cut) == 0, inside);
+    }
+    free(whole);
+    free(cut);
+    free(x);
+    kt_free(&t);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -441,6 +487,7 @@ int main(void)
         cmocka_unit_test(links_across_blocks_keep_the_plain_sweep),
         cmocka_unit_test(split_workspace),
         cmocka_unit_test(packs_scatter_colour_by_colour_in_any_order),
+        cmocka_unit_test(body_ranges_give_the_whole_pass_bits),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
