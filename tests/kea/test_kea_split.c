@@ -227,7 +227,7 @@ static void any_schedule_gives_the_same_bits(void **state)
                 assert_true(hook.calls > reference.stats.iterations); /* several chunks of a colour went out */
                 assert_true(hook.workerSeen[1]);                      /* to a worker other than 0 */
             } else {
-                assert_int_equal(hook.calls, 1); /* one task for the solve */
+                assert_int_equal(hook.calls, 2); /* one task for the rows' check, one for the solve */
             }
             assert_same_bits(&t, &reference, &other);
         }
@@ -287,7 +287,8 @@ static void links_across_blocks_keep_the_plain_sweep(void **state)
     solve(&t, &params, &split);
     solve(&t, &unsplit, &plain);
     assert_int_equal(split.stats.colours, 0);
-    assert_true(hook.calls <= 3); /* the set-up's row and block loops, and the warm start beside the colouring that gave up */
+    assert_true(hook.calls <= 4); /* the rows' check, the set-up's row and block loops, the warm start beside
+                                   * the colouring that gave up */
     assert_same_bits(&t, &split, &plain);
     kt_free(&t);
 }
@@ -479,6 +480,46 @@ static void body_ranges_give_the_whole_pass_bits(void **state)
     kt_free(&t);
 }
 
+/* A partition that will be split checks its rows in chunks on the workers: a bad row anywhere (here
+ * in the last chunk, a NaN rhs, or an index out of range in the first) is refused on every
+ * schedule, a task system that runs none of the chunks included (the rows are then checked on the
+ * caller), and nothing is solved. */
+static void bad_rows_are_refused_on_the_workers(void **state)
+{
+    static Result out;
+    const Schedule schedules[] = {InOrder, Reversed, Shuffled, Threads, Nothing};
+    const int perStage[] = {1, 1, 0, 0, 0};
+    KtProblem t;
+    int s, bad;
+    (void)state;
+    make_pile(&t, 37000, 1500, 300);
+    assert_true(t.p.nRows > 2 * KEA_SPLIT_ROWS);
+    for (bad = 0; bad < 2; ++bad) {
+        const int row = bad == 0 ? t.p.nRows - 2 : 5;
+        const MeReal rhs = t.rhs[row];
+        const int body = t.rowBodies[row][1];
+        if (bad == 0)
+            t.rhs[row] = (MeReal)NAN;
+        else
+            t.rowBodies[row][1] = t.p.nBodies;
+        for (s = 0; s < (int)(sizeof schedules / sizeof schedules[0]); ++s) {
+            Hook hook;
+            KeaParameters params;
+            memset(&hook, 0, sizeof hook);
+            hook.schedule = schedules[s];
+            hook.workers = 3;
+            hook.perStage = perStage[s];
+            hook.rng = kt_rng(91 + (uint64_t)s);
+            params = split_params(&hook);
+            assert_int_equal(solve(&t, &params, &out), KeaStatusBadInput);
+            assert_int_equal(hook.calls, 1); /* the check went out; no solve did */
+        }
+        t.rhs[row] = rhs;
+        t.rowBodies[row][1] = body;
+    }
+    kt_free(&t);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -488,6 +529,7 @@ int main(void)
         cmocka_unit_test(split_workspace),
         cmocka_unit_test(packs_scatter_colour_by_colour_in_any_order),
         cmocka_unit_test(body_ranges_give_the_whole_pass_bits),
+        cmocka_unit_test(bad_rows_are_refused_on_the_workers),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
