@@ -179,13 +179,16 @@ static int KeaProblemIsValid(const KeaProblem *p, const KeaParameters *params)
         if (!ok)
             return 0;
     }
-    if (params->tasks.run && params->tasks.workers > 1 && KeaSplits(p->nRows, params)) {
+    if (KeaSplits(p->nRows, params)) { /* on one worker the same chunks, here */
         const int chunks = (p->nRows + KEA_SPLIT_ROWS - 1) / KEA_SPLIT_ROWS;
         KeaRowsCheck check;
         check.problem = p;
         atomic_init(&check.invalid, 0);
         atomic_init(&check.chunksRun, 0);
-        params->tasks.run(KeaRowsCheckChunks, chunks, 1, &check, params->tasks.user);
+        if (params->tasks.run && params->tasks.workers > 1)
+            params->tasks.run(KeaRowsCheckChunks, chunks, 1, &check, params->tasks.user);
+        else
+            KeaRowsCheckChunks(0, chunks, 0, &check);
         if (atomic_load_explicit(&check.chunksRun, memory_order_relaxed) != chunks) {
             if (!KeaRowsAreValid(p, 0, p->nRows))
                 return 0;
