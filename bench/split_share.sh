@@ -32,8 +32,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 TASKS="predictTask packTask solveTask integrateTask unpackTask testPairs KeaSweepChunks KeaScatterChunks \
-KeaCgStartChunks KeaCgProductChunks KeaCgUpdateChunks KeaTrialChunks KeaSetUpRowChunks KeaWarmStartRowChunks \
-KeaFactorBlockChunks KeaScatterPackChunks"
+KeaCgStartChunks KeaCgProductChunks KeaCgUpdateChunks KeaTrialChunks KeaSetUpRowChunks KeaColourAndWarmStartChunks \
+KeaFactorBlockChunks KeaScatterPackChunks KeaResidualRowChunks KeaColourPacksAndListFreeItems KeaBodyVelocityRanges KeaPacksSetChunks KeaRowsCheckChunks"
 # serial parts printed for reference (not counted as in tasks): the packs' scatter of an unsplit solve (a
 # split solve scatters its packs colour by colour: KeaScatterPackChunks, in tasks)
 SERIAL="KeaPacksScatter"

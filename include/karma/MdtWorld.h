@@ -193,7 +193,7 @@ ME_API void MdtWorldSetMaxDirectRows(MdtWorldID w, int rows);
 ME_API void MdtWorldSetPartitionSplitRows(MdtWorldID w, int rows);
 /** Not in Karma 1.2: the iterative solver's sweeps with a momentum step after each forward-and-backward
  *  pair (nonsmooth nonlinear conjugate gradient, NNCG; docs/kea.md): the same LCP, reached in fewer
- *  sweeps. On by default (decision K46-nncg); MEFALSE gives Karma 1.2's plain sweeps. */
+ *  sweeps. On by default (decision K47); MEFALSE gives Karma 1.2's plain sweeps. */
 ME_API void MdtWorldSetNonsmoothCG(MdtWorldID w, MeBool on);
 /** The iterative solver stops early once its residual is below this (m/s, > 0). Default 1e-6. */
 ME_API void MdtWorldSetLCPTolerance(MdtWorldID w, MeReal tolerance);

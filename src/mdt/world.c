@@ -47,7 +47,7 @@ void MdtWorldSetDefaults(MdtWorldData *w)
     w->kea.effortRestSpeed = KEA_EFFORT_REST_SPEED * w->lengthScale;
     /* Auto hands a partition whose pivots run over their budget to the iterative path (docs/kea.md) */
     w->kea.autoPivotsPerRow = KEA_AUTO_PIVOTS_PER_ROW;
-    /* NNCG's momentum on the iterative path's sweeps: the same LCP in fewer sweeps (decision K46-nncg) */
+    /* NNCG's momentum on the iterative path's sweeps: the same LCP in fewer sweeps (decision K47) */
     w->kea.nonsmoothCg = 1;
     w->autoDisable.enabled = METRUE;
     w->autoDisable.velocity = DEFAULT_AD_VELOCITY * l2;

@@ -13,6 +13,7 @@
 
 #include "mdt/kea/kea_colour.h"
 #include "mdt/kea/kea_contact_packs.h"
+#include "mdt/kea/kea_internal.h"
 
 /* A partition like a pile's: contacts between random bodies and the world, every 30th on body 0 (so
  * that it has a contact in every colour and the overflow colour is used), and joint rows in blocks of
@@ -226,7 +227,7 @@ static void any_schedule_gives_the_same_bits(void **state)
                 assert_true(hook.calls > reference.stats.iterations); /* several chunks of a colour went out */
                 assert_true(hook.workerSeen[1]);                      /* to a worker other than 0 */
             } else {
-                assert_int_equal(hook.calls, 1); /* one task for the solve */
+                assert_int_equal(hook.calls, 2); /* one task for the rows' check, one for the solve */
             }
             assert_same_bits(&t, &reference, &other);
         }
@@ -286,7 +287,8 @@ static void links_across_blocks_keep_the_plain_sweep(void **state)
     solve(&t, &params, &split);
     solve(&t, &unsplit, &plain);
     assert_int_equal(split.stats.colours, 0);
-    assert_true(hook.calls <= 2); /* the set-up's row and block loops, before the colouring gave up */
+    assert_true(hook.calls <= 4); /* the rows' check, the set-up's row and block loops, the warm start beside
+                                   * the colouring that gave up */
     assert_same_bits(&t, &split, &plain);
     kt_free(&t);
 }
@@ -433,6 +435,91 @@ static void packs_scatter_colour_by_colour_in_any_order(void **state)
     assert_true(j > NB / 2); /* the scatter wrote the bodies */
 }
 
+/* dv = M^-1 J^T x by ranges of bodies (the split set-up's ranges, one a worker): any cut into ranges
+ * gives the whole pass's bits, each body summing its rows in row order, and a range writes only its
+ * own bodies. */
+static void body_ranges_give_the_whole_pass_bits(void **state)
+{
+    KtProblem t;
+    KtRng rng = kt_rng(4242);
+    KeaBodyVelocity *whole, *cut;
+    MeReal *x;
+    int i, k, nb;
+    (void)state;
+    make_pile(&t, 36000, 400, 90);
+    nb = t.p.nBodies;
+    whole = malloc(sizeof *whole * (size_t)nb);
+    cut = malloc(sizeof *cut * (size_t)nb);
+    x = malloc(sizeof *x * (size_t)t.p.nRows);
+    assert_non_null(whole);
+    assert_non_null(cut);
+    assert_non_null(x);
+    for (i = 0; i < t.p.nRows; ++i) /* a fifth of the impulses zero, as at rest: skipped */
+        x[i] = kt_int(&rng, 5) == 0 ? ME_R(0.0) : (MeReal)kt_range(&rng, -2, 2);
+    KeaBodyVelocityFromImpulses(&t.p, x, whole);
+    for (k = 1; k <= 6; ++k) { /* k ranges, the cuts at random bodies */
+        int cuts[8], j;
+        memset(cut, 0xff, sizeof *cut * (size_t)nb); /* NaN everywhere: a body no range writes shows */
+        cuts[0] = 0;
+        cuts[k] = nb;
+        for (j = 1; j < k; ++j)
+            cuts[j] = cuts[j - 1] + kt_int(&rng, nb - cuts[j - 1] + 1);
+        for (j = k - 1; j >= 0; --j) /* the ranges in reverse: the order changes nothing */
+            KeaBodyVelocityFromImpulsesOf(&t.p, x, cut, cuts[j], cuts[j + 1]);
+        assert_memory_equal(whole, cut, sizeof *cut * (size_t)nb);
+    }
+    memset(cut, 0xff, sizeof *cut * (size_t)nb);
+    KeaBodyVelocityFromImpulsesOf(&t.p, x, cut, 10, 20); /* one range: its bodies only */
+    for (i = 0; i < nb; ++i) {
+        const int inside = i >= 10 && i < 20;
+        assert_int_equal(memcmp(&cut[i], &whole[i], sizeof *cut) == 0, inside);
+    }
+    free(whole);
+    free(cut);
+    free(x);
+    kt_free(&t);
+}
+
+/* A partition that will be split checks its rows in chunks on the workers: a bad row anywhere (here
+ * in the last chunk, a NaN rhs, or an index out of range in the first) is refused on every
+ * schedule, a task system that runs none of the chunks included (the rows are then checked on the
+ * caller), and nothing is solved. */
+static void bad_rows_are_refused_on_the_workers(void **state)
+{
+    static Result out;
+    const Schedule schedules[] = {InOrder, Reversed, Shuffled, Threads, Nothing};
+    const int perStage[] = {1, 1, 0, 0, 0};
+    KtProblem t;
+    int s, bad;
+    (void)state;
+    make_pile(&t, 37000, 1500, 300);
+    assert_true(t.p.nRows > 2 * KEA_SPLIT_ROWS);
+    for (bad = 0; bad < 2; ++bad) {
+        const int row = bad == 0 ? t.p.nRows - 2 : 5;
+        const MeReal rhs = t.rhs[row];
+        const int body = t.rowBodies[row][1];
+        if (bad == 0)
+            t.rhs[row] = (MeReal)NAN;
+        else
+            t.rowBodies[row][1] = t.p.nBodies;
+        for (s = 0; s < (int)(sizeof schedules / sizeof schedules[0]); ++s) {
+            Hook hook;
+            KeaParameters params;
+            memset(&hook, 0, sizeof hook);
+            hook.schedule = schedules[s];
+            hook.workers = 3;
+            hook.perStage = perStage[s];
+            hook.rng = kt_rng(91 + (uint64_t)s);
+            params = split_params(&hook);
+            assert_int_equal(solve(&t, &params, &out), KeaStatusBadInput);
+            assert_int_equal(hook.calls, 1); /* the check went out; no solve did */
+        }
+        t.rhs[row] = rhs;
+        t.rowBodies[row][1] = body;
+    }
+    kt_free(&t);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -441,6 +528,8 @@ int main(void)
         cmocka_unit_test(links_across_blocks_keep_the_plain_sweep),
         cmocka_unit_test(split_workspace),
         cmocka_unit_test(packs_scatter_colour_by_colour_in_any_order),
+        cmocka_unit_test(body_ranges_give_the_whole_pass_bits),
+        cmocka_unit_test(bad_rows_are_refused_on_the_workers),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

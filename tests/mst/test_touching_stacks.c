@@ -105,7 +105,7 @@ static void touching_pyramid_of_15_rows_stands(void **state)
 }
 
 /* The same pyramid without the iterative solver's NNCG momentum (MdtWorldSetNonsmoothCG, on by
- * default: decision K46-nncg): Karma 1.2's plain sweeps hold it as well. */
+ * default: decision K47): Karma 1.2's plain sweeps hold it as well. */
 static void touching_pyramid_stands_without_nonsmooth_cg(void **state)
 {
     (void)state;

@@ -1,5 +1,6 @@
 /* karma_partitions.c -- a universe whose step has many partitions (karma_partitions.h). */
 #include "karma_partitions.h"
+#include "karma_test.h"
 
 MstUniverseID karma_partitions_scene(int stacks, int boxes, int chains, int links)
 {
@@ -45,4 +46,13 @@ MstUniverseID karma_partitions_scene(int stacks, int boxes, int chains, int link
         }
     }
     return u;
+}
+
+uint64_t karma_partitions_step_hash(MstUniverseID u, int steps, uint64_t hash)
+{
+    for (int i = 0; i < steps; i++) {
+        MstUniverseStep(u, ME_R(1.0) / 60);
+        hash = karma_hash_world(hash, MstUniverseGetWorld(u));
+    }
+    return hash;
 }

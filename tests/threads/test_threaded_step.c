@@ -43,11 +43,7 @@ static uint64_t runSceneOn(MeThreadPool *pool)
         if (MdtWorldGetWorkerCount(MstUniverseGetWorld(u)) != MeThreadPoolGetThreadCount(pool))
             return 0;
     }
-    uint64_t hash = KARMA_HASH_INIT;
-    for (int i = 0; i < STEPS; i++) {
-        MstUniverseStep(u, ME_R(1.0) / 60);
-        hash = karma_hash_world(hash, MstUniverseGetWorld(u));
-    }
+    uint64_t hash = karma_partitions_step_hash(u, STEPS, KARMA_HASH_INIT);
     MstUniverseDestroy(u);
     return hash;
 }

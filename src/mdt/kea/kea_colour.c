@@ -35,14 +35,14 @@ int KeaColourConstraints(const int (*bodies)[2], int count, int bodyCount, void 
                           order, colourStart);
 }
 
-/* The lowest colour in `free` (not 0). */
-static int lowestColour(uint32_t free)
+/* The lowest colour set in `available` (the colours an item may still take; not 0). */
+static int lowestColour(uint32_t available)
 {
 #if defined(__GNUC__)
-    return __builtin_ctz(free);
+    return __builtin_ctz(available);
 #else
     int c = 0;
-    while (!((free >> c) & 1u))
+    while (!((available >> c) & 1u))
         c++;
     return c;
 #endif
@@ -68,8 +68,8 @@ int KeaColourItems(const int *bodies, int perItem, int count, int bodyCount, voi
         for (int k = 0; k < perItem; k++)
             if (item[k] != KEA_COLOUR_WORLD)
                 taken |= masks[item[k]];
-        const uint32_t free = ~taken & ALL_COLOURS;
-        const int c = free ? lowestColour(free) : KEA_COLOUR_OVERFLOW;
+        const uint32_t available = ~taken & ALL_COLOURS;
+        const int c = available ? lowestColour(available) : KEA_COLOUR_OVERFLOW;
         if (c < KEA_COLOUR_COUNT) {
             for (int k = 0; k < perItem; k++)
                 if (item[k] != KEA_COLOUR_WORLD)

@@ -63,25 +63,33 @@ static void KeaPackSet(const KeaProblem *problem, KeaIterativeWork *w, KeaContac
         pack->pair &= pack->body[0][l] == pack->body[0][0] && pack->body[1][l] == pack->body[1][0];
 }
 
-/* Assign the free list's pack region its rows and eps, the same for every SM step of the solve (a
- * lane with no contact: lane 0's rows, masked); as for the generic rows listed after it per SM step,
- * a position's eps is written where its row is assigned. */
-static void KeaPacksAssignPositions(KeaIterativeWork *w)
+/* Assign pack k's rows and eps in the free list's pack region, the same for every SM step of the
+ * solve (a lane with no contact: lane 0's rows, masked); as for the generic rows listed after it per
+ * SM step, a position's eps is written where its row is assigned. */
+static void KeaPackAssignPositions(KeaIterativeWork *w, int k)
 {
-    int k, l, r;
-    for (k = 0; k < w->nPacks; ++k)
-        for (r = 0; r < 3; ++r)
-            for (l = 0; l < KEA_PACK_LANES; ++l) {
-                const int p = KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r + l, i = w->packs[k].row[l] + r;
-                w->freeRows[p] = i;
-                w->epsFree[p] = w->eps[i];
-            }
+    int l, r;
+    for (r = 0; r < 3; ++r)
+        for (l = 0; l < KEA_PACK_LANES; ++l) {
+            const int p = KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r + l, i = w->packs[k].row[l] + r;
+            w->freeRows[p] = i;
+            w->epsFree[p] = w->eps[i];
+        }
+}
+
+/* Pack k planned: its blocks, kept in its row[] until KeaPacksSet fills it. */
+static void KeaPackPlan(KeaContactPack *pack, const int *block, int lanes)
+{
+    int l;
+    for (l = 0; l < lanes; ++l)
+        pack->row[l] = block[l];
+    pack->lanes = lanes;
 }
 
 /* The contacts in block order, four to a pack; a run of contacts on one body pair (a box on a box
  * touches at four corners) fills packs of its own (KeaContactPack.pair), and what is left of each
  * run shares packs with the other remainders. */
-void KeaPacksFill(const KeaProblem *problem, KeaIterativeWork *w)
+void KeaPacksPlan(const KeaProblem *problem, KeaIterativeWork *w)
 {
     int b, run = 0, mixed = 0, runBlock[KEA_PACK_LANES], mixedBlock[KEA_PACK_LANES];
     w->nPacks = 0;
@@ -97,7 +105,7 @@ void KeaPacksFill(const KeaProblem *problem, KeaIterativeWork *w)
             for (k = 0; k < run; ++k) {
                 mixedBlock[mixed++] = runBlock[k];
                 if (mixed == KEA_PACK_LANES) {
-                    KeaPackSet(problem, w, &w->packs[w->nPacks++], mixedBlock, mixed);
+                    KeaPackPlan(&w->packs[w->nPacks++], mixedBlock, mixed);
                     mixed = 0;
                 }
             }
@@ -107,13 +115,31 @@ void KeaPacksFill(const KeaProblem *problem, KeaIterativeWork *w)
             continue;
         runBlock[run++] = b;
         if (run == KEA_PACK_LANES) {
-            KeaPackSet(problem, w, &w->packs[w->nPacks++], runBlock, run);
+            KeaPackPlan(&w->packs[w->nPacks++], runBlock, run);
             run = 0;
         }
     }
     if (mixed > 0)
-        KeaPackSet(problem, w, &w->packs[w->nPacks++], mixedBlock, mixed);
-    KeaPacksAssignPositions(w);
+        KeaPackPlan(&w->packs[w->nPacks++], mixedBlock, mixed);
+}
+
+void KeaPacksSet(const KeaProblem *problem, KeaIterativeWork *w, int first, int last)
+{
+    int k, l;
+    for (k = first; k < last; ++k) {
+        KeaContactPack *pack = &w->packs[k];
+        int block[KEA_PACK_LANES];
+        for (l = 0; l < pack->lanes; ++l)
+            block[l] = pack->row[l];
+        KeaPackSet(problem, w, pack, block, pack->lanes);
+        KeaPackAssignPositions(w, k);
+    }
+}
+
+void KeaPacksFill(const KeaProblem *problem, KeaIterativeWork *w)
+{
+    KeaPacksPlan(problem, w);
+    KeaPacksSet(problem, w, 0, w->nPacks);
 }
 
 /* A contact's bounds as the contact step reads them (kea_contact_kernel.h: the normal row [0, hi],

@@ -196,6 +196,12 @@ static inline void KeaPackPrecondition(const KeaContactPack *pack, const MeReal 
 /* Build the packs from the declared contacts' blocks (after KeaSetUpBlocks: J, B, the inverses) and
  * mark their rows (KeaIterativeWork.packed). */
 void KeaPacksFill(const KeaProblem *problem, KeaIterativeWork *w);
+/* KeaPacksFill in two parts: which blocks go in which pack, and their rows marked (serial: the packs
+ * follow the blocks' order), then packs first ... last - 1 filled with them (each writes only its own
+ * pack and pack region, so ranges of packs may be filled in any order; the split solve fills them
+ * in chunks over its workers). */
+void KeaPacksPlan(const KeaProblem *problem, KeaIterativeWork *w);
+void KeaPacksSet(const KeaProblem *problem, KeaIterativeWork *w, int first, int last);
 /* SM: set the rows' masks and the lanes' preconditioner from wasFree, and the free list's pack
  * region's bounds and x (lo, hi, xFree at its positions; 0 for a masked row, up to the sign of a
  * zero); returns the free rows. (freeRows and epsFree of the region: KeaPacksFill, once.) */

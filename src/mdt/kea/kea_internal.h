@@ -145,6 +145,11 @@ static inline void KeaBodyColumnsOf(const KeaBody *body, KeaBodyColumns *out)
 /** Every body's columns, once per solve (the paths' workspaces hold them). */
 void KeaBodyColumnsFill(const KeaProblem *problem, KeaBodyColumns *out);
 
+/** KeaBodyVelocityFromImpulses for bodies [b0, b1) only (writes dv[b0 .. b1 - 1]): each body's J^T x
+ *  summed over the rows in row order, as the whole pass sums it, so any cut into ranges gives the
+ *  whole pass's bits (the split solve runs ranges on its workers). */
+void KeaBodyVelocityFromImpulsesOf(const KeaProblem *problem, const MeReal *x, KeaBodyVelocity *dv, int b0, int b1);
+
 /* One half of a row's M^-1 J^T: B's half from J's half (pads 0), returning J . B over the half. */
 static inline MeReal KeaHalfInvMassJT4(const KeaBodyColumns *body, const MeReal *jLin, const MeReal *jAng,
                                        MeReal *bLin, MeReal *bAng)

@@ -238,13 +238,13 @@ KEA_NOINLINE MeReal KeaSweepSplit(const KeaProblem *problem, KeaIterativeWork *w
     return worst;
 }
 
-/* KeaResidual (kea_rows.c) of the final x and dv from the work's diagonal and padded rows (no
- * M^-1 J^T recomputed per row): the same measure, J_i dv summed in the padded kernel's order. */
-static MeReal KeaIterativeResidual(const KeaProblem *problem, const KeaIterativeWork *w, const MeReal *x)
+/* KeaResidual (kea_rows.c) of rows [i0, i1) of the final x and dv from the work's diagonal and padded
+ * rows (no M^-1 J^T recomputed per row): the same measure, J_i dv summed in the padded kernel's order. */
+static MeReal KeaResidualRows(const KeaProblem *problem, const KeaIterativeWork *w, const MeReal *x, int i0, int i1)
 {
     MeReal worst = ME_R(0.0);
     int i;
-    for (i = 0; i < problem->nRows; ++i) {
+    for (i = i0; i < i1; ++i) {
         const MeReal d = w->diag[i];
         const MeReal wi = KeaRowW(problem, w, i, x, &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
         MeReal lo, hi, r;
@@ -315,6 +315,8 @@ typedef struct KeaRowsTask {
     const KeaProblem *problem;
     KeaIterativeWork *w;
     MeReal *x;
+    KeaBodyVelocity *dv; /* KeaBodyVelocityRanges' output */
+    int coloured; /* KeaSplitColour's answer, from KeaColourAndWarmStartChunks */
 } KeaRowsTask;
 
 static void KeaSetUpRowChunks(int start, int end, int worker, void *data)
@@ -325,12 +327,74 @@ static void KeaSetUpRowChunks(int start, int end, int worker, void *data)
     KeaSetUpRows(t->problem, t->w, t->x, start * KEA_SPLIT_ROWS, end * KEA_SPLIT_ROWS < n ? end * KEA_SPLIT_ROWS : n);
 }
 
-static void KeaWarmStartRowChunks(int start, int end, int worker, void *data)
+/* The blocks' colouring (KeaSplitColour) as item 0 of the warm start's task, the warm start's row
+ * chunks as items 1..: the colouring reads only the blocks and the rows' bodies and links, the warm
+ * start writes only x and which rows are free, so the colouring, serial work, runs beside the rows'
+ * chunks instead of before them. */
+static void KeaColourAndWarmStartChunks(int start, int end, int worker, void *data)
+{
+    KeaRowsTask *t = data;
+    const int n = t->problem->nRows;
+    int j;
+    (void)worker;
+    for (j = start; j < end; ++j) {
+        const int i0 = (j - 1) * KEA_SPLIT_ROWS;
+        if (j == 0)
+            t->coloured = KeaSplitColour(t->problem, t->w, t->w->split);
+        else
+            KeaWarmStartRows(t->w, t->x, i0, i0 + KEA_SPLIT_ROWS < n ? i0 + KEA_SPLIT_ROWS : n);
+    }
+}
+
+/* dv = M^-1 J^T x from the warm start, item j for the j-th of `items` equal ranges of bodies: each
+ * reads every row and sums its own bodies' halves in row order (KeaBodyVelocityFromImpulsesOf), so
+ * the bits do not depend on the ranges, and the ranges may follow the worker count. */
+static void KeaBodyVelocityRanges(int start, int end, int worker, void *data)
+{
+    const KeaRowsTask *t = data;
+    const int nb = t->problem->nBodies, items = KeaSplitWorkers(&t->w->split->hook);
+    int j;
+    (void)worker;
+    for (j = start; j < end; ++j)
+        KeaBodyVelocityFromImpulsesOf(t->problem, t->x, t->dv, (int)((long)nb * j / items),
+                                      (int)((long)nb * (j + 1) / items));
+}
+
+/* Each row chunk's residual into the split's partial results (the chunk's worst, KeaResidualRows). */
+static void KeaResidualRowChunks(int start, int end, int worker, void *data)
 {
     const KeaRowsTask *t = data;
     const int n = t->problem->nRows;
+    int j;
     (void)worker;
-    KeaWarmStartRows(t->w, t->x, start * KEA_SPLIT_ROWS, end * KEA_SPLIT_ROWS < n ? end * KEA_SPLIT_ROWS : n);
+    for (j = start; j < end; ++j)
+        t->w->split->partial[j] = KeaResidualRows(t->problem, t->w, t->x, j * KEA_SPLIT_ROWS,
+                                                  (j + 1) * KEA_SPLIT_ROWS < n ? (j + 1) * KEA_SPLIT_ROWS : n);
+}
+
+/* The residual of the final x (KeaResidualRows over every row); split, in row chunks over the
+ * workers, the chunks' worst taken in chunk order by the same rule (a NaN stays, else the largest),
+ * so the same bits as one pass. */
+static MeReal KeaIterativeResidual(const KeaProblem *problem, KeaIterativeWork *w, MeReal *x)
+{
+    const int n = problem->nRows, chunks = (n + KEA_SPLIT_ROWS - 1) / KEA_SPLIT_ROWS;
+    KeaRowsTask t;
+    MeReal worst = ME_R(0.0);
+    int j;
+    if (!w->split)
+        return KeaResidualRows(problem, w, x, 0, n);
+    t.problem = problem;
+    t.w = w;
+    t.x = x;
+    t.dv = NULL;
+    t.coloured = 0;
+    KeaSplitRun(w->split, KeaResidualRowChunks, chunks, &t);
+    for (j = 0; j < chunks; ++j) {
+        const MeReal r = w->split->partial[j];
+        if (r > worst || r != r)
+            worst = r;
+    }
+    return worst;
 }
 
 /* The solve's set-up, before the first sweep: the padded rows (KeaSetUpRows), the blocks, the warm
@@ -347,19 +411,25 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
     t.problem = problem;
     t.w = w;
     t.x = x;
+    t.dv = dv;
+    t.coloured = 0;
     KeaBodyColumnsFill(problem, w->bodyColumns);
     if (w->split)
         KeaSplitRun(w->split, KeaSetUpRowChunks, rowChunks, &t);
     else
         KeaSetUpRows(problem, w, x, 0, n);
     KeaSetUpBlocks(problem, w, KeaBlockCap(n, params->maxBlockRows));
-    if (w->split && !KeaSplitColour(problem, w, w->split))
-        w->split = NULL; /* a friction link leaves its block: the plain sweep (KeaSplitColour) */
-    if (w->split)
-        KeaSplitRun(w->split, KeaWarmStartRowChunks, rowChunks, &t);
-    else
+    if (w->split) { /* the colouring beside the warm start's chunks */
+        KeaSplitRun(w->split, KeaColourAndWarmStartChunks, rowChunks + 1, &t);
+        if (!t.coloured)
+            w->split = NULL; /* a friction link leaves its block: the plain sweep (KeaSplitColour) */
+    } else {
         KeaWarmStartRows(w, x, 0, n);
-    KeaBodyVelocityFromImpulses(problem, x, dv);
+    }
+    if (w->split) /* dv from the warm start in ranges of bodies, one a worker */
+        KeaSplitRun(w->split, KeaBodyVelocityRanges, KeaSplitWorkers(&w->split->hook), &t);
+    else
+        KeaBodyVelocityFromImpulses(problem, x, dv);
     w->skippedLast = 0;
     w->smRan = 0;
     w->smUnpaid = 0;

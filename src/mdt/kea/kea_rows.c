@@ -91,9 +91,14 @@ void KeaRowBounds(const KeaProblem *problem, const MeReal *x, int i, MeReal *lo,
 
 void KeaBodyVelocityFromImpulses(const KeaProblem *problem, const MeReal *x, KeaBodyVelocity *dv)
 {
+    KeaBodyVelocityFromImpulsesOf(problem, x, dv, 0, problem->nBodies);
+}
+
+void KeaBodyVelocityFromImpulsesOf(const KeaProblem *problem, const MeReal *x, KeaBodyVelocity *dv, int b0, int b1)
+{
     int i, b, k;
     /* Accumulate the impulses J^T x per body, then apply M^-1 once per body. */
-    for (b = 0; b < problem->nBodies; ++b)
+    for (b = b0; b < b1; ++b)
         for (k = 0; k < 3; ++k)
             dv[b].lin[k] = dv[b].ang[k] = ME_R(0.0);
     for (i = 0; i < problem->nRows; ++i) {
@@ -102,18 +107,18 @@ void KeaBodyVelocityFromImpulses(const KeaProblem *problem, const MeReal *x, Kea
         MeReal s = x[i];
         if (s == ME_R(0.0))
             continue;
-        if (rb[0] >= 0)
+        if (rb[0] >= b0 && rb[0] < b1) /* the world (-1) is below every range */
             for (k = 0; k < 3; ++k) {
                 dv[rb[0]].lin[k] += J->lin0[k] * s;
                 dv[rb[0]].ang[k] += J->ang0[k] * s;
             }
-        if (rb[1] >= 0)
+        if (rb[1] >= b0 && rb[1] < b1)
             for (k = 0; k < 3; ++k) {
                 dv[rb[1]].lin[k] += J->lin1[k] * s;
                 dv[rb[1]].ang[k] += J->ang1[k] * s;
             }
     }
-    for (b = 0; b < problem->nBodies; ++b) {
+    for (b = b0; b < b1; ++b) {
         MeReal angularImpulse[3];
         const KeaBody *body = &problem->bodies[b];
         for (k = 0; k < 3; ++k) {

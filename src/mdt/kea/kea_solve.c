@@ -5,9 +5,11 @@
  * arena (KeaMemoryRequired) or on the caller's buffer (KeaSolve), so the two can never disagree.
  * The caller's buffer may have any alignment: KeaMemoryRequired includes KEA_ALIGN - 1 bytes so that
  * KeaSolve can align the base itself. */
+#include <stdatomic.h>
 #include <string.h>
 
 #include "kea_internal.h"
+#include "kea_iterative.h"
 
 void KeaParametersDefault(KeaParameters *params)
 {
@@ -105,29 +107,14 @@ static int KeaContactsAreValid(const KeaProblem *p)
     return 1;
 }
 
-/* Indices in range, bounds ordered, softness non-negative, numbers where numbers are needed (finite
- * in Karma's sense: within +-MEINFINITY). A row's tests are combined with & into one flag (a
- * comparison with a NaN is false), one branch per row: every step's every row goes through here. */
-static int KeaProblemIsValid(const KeaProblem *p)
+/* Rows [i0, i1) of KeaProblemIsValid: indices in range, bounds ordered, softness non-negative,
+ * numbers where numbers are needed (finite in Karma's sense: within +-MEINFINITY). A row's tests are
+ * combined with & into one flag (a comparison with a NaN is false), one branch per row: every step's
+ * every row goes through here. */
+static int KeaRowsAreValid(const KeaProblem *p, int i0, int i1)
 {
-    int i, b, k;
-    if (p->nRows < 0 || p->nBodies < 0)
-        return 0;
-    if (p->nRows > 0 && (!p->J || !p->rowBodies || !p->rhs || !p->lo || !p->hi))
-        return 0;
-    if (p->nBodies > 0 && !p->bodies)
-        return 0;
-    if (p->link && !p->mu)
-        return 0;
-    for (b = 0; b < p->nBodies; ++b) {
-        const KeaBody *body = &p->bodies[b];
-        int ok = (body->invMass >= ME_R(0.0)) & KeaIsFiniteFlag(body->invMass);
-        for (k = 0; k < 9; ++k)
-            ok &= KeaIsFiniteFlag(body->invInertia[k / 3][k % 3]);
-        if (!ok)
-            return 0;
-    }
-    for (i = 0; i < p->nRows; ++i) {
+    int i;
+    for (i = i0; i < i1; ++i) {
         const KeaJacobianRow *J = &p->J[i];
         int ok = (p->rowBodies[i][0] >= KEA_WORLD) & (p->rowBodies[i][0] < p->nBodies) &
                  (p->rowBodies[i][1] >= KEA_WORLD) & (p->rowBodies[i][1] < p->nBodies) & (p->lo[i] <= p->hi[i]) &
@@ -146,6 +133,72 @@ static int KeaProblemIsValid(const KeaProblem *p)
         } else if (p->link && p->link[i] < -1) {
             return 0;
         }
+    }
+    return 1;
+}
+
+/* A partition that will be split checks its rows in chunks over the caller's workers (one task
+ * before the solve's own): a chunk that finds a bad row says so; the answer does not depend on which
+ * chunks ran where. A task system that leaves chunks out (or runs one twice) has the rows checked
+ * here instead. */
+typedef struct KeaRowsCheck {
+    const KeaProblem *problem;
+    atomic_int invalid, chunksRun;
+} KeaRowsCheck;
+
+static void KeaRowsCheckChunks(int start, int end, int worker, void *data)
+{
+    KeaRowsCheck *t = data;
+    const int n = t->problem->nRows;
+    int j;
+    (void)worker;
+    for (j = start; j < end; ++j) {
+        const int i1 = (j + 1) * KEA_SPLIT_ROWS;
+        if (!KeaRowsAreValid(t->problem, j * KEA_SPLIT_ROWS, i1 < n ? i1 : n))
+            atomic_store_explicit(&t->invalid, 1, memory_order_relaxed);
+        atomic_fetch_add_explicit(&t->chunksRun, 1, memory_order_relaxed);
+    }
+}
+
+/* The problem keeps kea.h's promises (the bodies, the rows: KeaRowsAreValid, the declared contacts);
+ * the rows in chunks over params' workers when the partition will be split. */
+static int KeaProblemIsValid(const KeaProblem *p, const KeaParameters *params)
+{
+    int b, k;
+    if (p->nRows < 0 || p->nBodies < 0)
+        return 0;
+    if (p->nRows > 0 && (!p->J || !p->rowBodies || !p->rhs || !p->lo || !p->hi))
+        return 0;
+    if (p->nBodies > 0 && !p->bodies)
+        return 0;
+    if (p->link && !p->mu)
+        return 0;
+    for (b = 0; b < p->nBodies; ++b) {
+        const KeaBody *body = &p->bodies[b];
+        int ok = (body->invMass >= ME_R(0.0)) & KeaIsFiniteFlag(body->invMass);
+        for (k = 0; k < 9; ++k)
+            ok &= KeaIsFiniteFlag(body->invInertia[k / 3][k % 3]);
+        if (!ok)
+            return 0;
+    }
+    if (KeaSplits(p->nRows, params)) { /* on one worker the same chunks, here */
+        const int chunks = (p->nRows + KEA_SPLIT_ROWS - 1) / KEA_SPLIT_ROWS;
+        KeaRowsCheck check;
+        check.problem = p;
+        atomic_init(&check.invalid, 0);
+        atomic_init(&check.chunksRun, 0);
+        if (params->tasks.run && params->tasks.workers > 1)
+            params->tasks.run(KeaRowsCheckChunks, chunks, 1, &check, params->tasks.user);
+        else
+            KeaRowsCheckChunks(0, chunks, 0, &check);
+        if (atomic_load_explicit(&check.chunksRun, memory_order_relaxed) != chunks) {
+            if (!KeaRowsAreValid(p, 0, p->nRows))
+                return 0;
+        } else if (atomic_load_explicit(&check.invalid, memory_order_relaxed)) {
+            return 0;
+        }
+    } else if (!KeaRowsAreValid(p, 0, p->nRows)) {
+        return 0;
     }
     return KeaContactsAreValid(p);
 }
@@ -169,7 +222,7 @@ KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void 
     }
     path = KeaSelectPath(problem ? problem->nRows : 0, params);
     stats->path = path;
-    if (!problem || (!x && problem->nRows > 0) || !KeaProblemIsValid(problem)) {
+    if (!problem || (!x && problem->nRows > 0) || !KeaProblemIsValid(problem, params)) {
         stats->status = KeaStatusBadInput;
         return stats->status;
     }

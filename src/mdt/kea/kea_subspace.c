@@ -502,6 +502,62 @@ static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w
     }
 }
 
+/* A split solve's KeaPacksFill: the plan on this thread, the packs filled in chunks of
+ * KEA_SPLIT_PACKS over the workers (KeaPacksSet: each pack writes only its own). */
+typedef struct KeaPacksSetTask {
+    const KeaProblem *problem;
+    KeaIterativeWork *w;
+} KeaPacksSetTask;
+
+static void KeaPacksSetChunks(int start, int end, int worker, void *data)
+{
+    const KeaPacksSetTask *t = data;
+    const int last = end * KEA_SPLIT_PACKS;
+    (void)worker;
+    KeaPacksSet(t->problem, t->w, start * KEA_SPLIT_PACKS, last < t->w->nPacks ? last : t->w->nPacks);
+}
+
+static void KeaPacksFillSplit(const KeaProblem *problem, KeaIterativeWork *w)
+{
+    KeaPacksSetTask t;
+    t.problem = problem;
+    t.w = w;
+    KeaPacksPlan(problem, w);
+    KeaSplitRun(w->split, KeaPacksSetChunks, (w->nPacks + KEA_SPLIT_PACKS - 1) / KEA_SPLIT_PACKS, &t);
+}
+
+/* The packs' colouring (KeaSplitPacks) and their free rows (KeaPacksListFree) as the two items of one
+ * task: the colouring reads the packs' bodies and writes the split's pack order, the list reads the
+ * packs' rows and writes their masks and the free list's pack region, so the two serial passes run
+ * side by side on two workers. */
+typedef struct KeaPacksListTask {
+    KeaIterativeWork *w;
+    const MeReal *x;
+    int listed;
+} KeaPacksListTask;
+
+static void KeaColourPacksAndListFreeItems(int start, int end, int worker, void *data)
+{
+    KeaPacksListTask *t = data;
+    int j;
+    (void)worker;
+    for (j = start; j < end; ++j)
+        if (j == 0)
+            KeaSplitPacks(t->w, t->w->split);
+        else
+            t->listed = KeaPacksListFree(t->w, t->x);
+}
+
+static int KeaColourPacksAndListFree(KeaIterativeWork *w, const MeReal *x)
+{
+    KeaPacksListTask t;
+    t.w = w;
+    t.x = x;
+    t.listed = 0;
+    KeaSplitRun(w->split, KeaColourPacksAndListFreeItems, 2, &t);
+    return t.listed;
+}
+
 /* Subspace minimisation on the rows strictly inside their bounds; returns the CG steps taken, -1 if
  * skipped because the active set is still moving (top comment). */
 int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x)
@@ -521,11 +577,16 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
         return -1; /* it did not pay: wait until the active set has settled */
     /* the step runs: list the free rows, freeze their bounds; the packs' region first */
     if (w->nPacks < 0) { /* the first SM step of the solve that runs */
-        KeaPacksFill(problem, w);
-        if (w->split)
-            KeaSplitPacks(w, w->split);
+        if (w->split) { /* the packs filled in chunks, coloured beside their free rows */
+            KeaPacksFillSplit(problem, w);
+            listed = KeaColourPacksAndListFree(w, x);
+        } else {
+            KeaPacksFill(problem, w);
+            listed = KeaPacksListFree(w, x);
+        }
+    } else {
+        listed = KeaPacksListFree(w, x);
     }
-    listed = KeaPacksListFree(w, x);
     nFree = KEA_PACK_POSITIONS * w->nPacks;
     if (w->nContactBlocks < w->nBlocks) /* else every block is a declared contact, all in the packs */
         for (b = 0; b < w->nBlocks; ++b) { /* rows in order */
