@@ -39,17 +39,17 @@
 #  define SPLIT_ROWS 100
 #  if KARMA_DOUBLE
 #    define GOLDEN_PILE 0x624da1869b948ebaull
-#    define GOLDEN_PYRAMID 0x50b4c23e518c0f97ull
+#    define GOLDEN_PYRAMID 0x6d335f8bff0e94caull
 #  else
 #    define GOLDEN_PILE 0x7ac8c1482050c2d8ull
-#    define GOLDEN_PYRAMID 0xed330a7c46581abcull
+#    define GOLDEN_PYRAMID 0x54c52ba3b064c713ull
 #  endif
 #elif KARMA_DOUBLE
-#  define GOLDEN_PILE 0x29275c7a839fd352ull
-#  define GOLDEN_PYRAMID 0x887f00ce5cc84a85ull
+#  define GOLDEN_PILE 0x48ba899ea3cefc5bull
+#  define GOLDEN_PYRAMID 0x66af905eba74687eull
 #else
 #  define GOLDEN_PILE 0xb4f24690410faa1cull
-#  define GOLDEN_PYRAMID 0xc2416787349d33faull
+#  define GOLDEN_PYRAMID 0x812cd930ed3bcd89ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};

@@ -5,18 +5,11 @@
  * contact axis (a face axis unless an edge axis is clearly better, which keeps resting contacts
  * steady); a face contact clips the other box's most anti-parallel face against the reference face
  * (Sutherland-Hodgman) and keeps up to four points, an edge contact gives the closest points of the two
- * edges. Boxes apart by less than the tolerance are clipped the same way when their faces are parallel,
- * a face axis separates them most and their nearest points face each other across it (then that
- * axis's gap is their distance);
- * others go to the general path (GJK), which measures the true distance, not only its projection on
- * the fifteen axes. */
+ * edges. Boxes apart by less than the tolerance go to the general path (GJK), which measures the true
+ * distance, not only its projection on the fifteen axes. */
 #include <math.h>
 
 #include "nearfield.h"
-
-/* Boxes apart are clipped face to face only when their faces are this close to parallel (cosine of
- * the angle between the normals: 0.8 degrees). */
-#define FACES_PARALLEL_COS ME_R(0.9999)
 
 /* Prefer a face axis unless an edge axis overlaps less than this fraction of it. */
 #define EDGE_BIAS ME_R(0.999)
@@ -113,33 +106,6 @@ static void supportEdge(const Box *b, int i, const MeVector3 d, MeVector3 e0, Me
     MeVector3MultiplyAdd(e1, b->h[i], b->ax[i]);
 }
 
-/* The face contact on face axis `faceAxis` (0-2: A's, 3-5: B's; ta, tb: the centres' offset on A's and
- * B's axes), reduced to at most maxContacts (and MCD_NF_MAX_CONTACTS) in `contacts`; returns the count
- * (0 when rounding clipped everything away). Size: McdNfBoxBox's own data (the boxes, the axis, the
- * offsets it found them by) and McdNearfieldFn's output. */
-static int faceManifold(const Box *A, const Box *B, int faceAxis, const MeReal ta[3], const MeReal tb[3],
-                        MeReal tolerance, McdContact *contacts, int maxContacts)
-{
-    McdContact buf[16];
-    MeVector3 nr;
-    int count, k;
-    const Box *ref = faceAxis < 3 ? A : B, *inc = faceAxis < 3 ? B : A;
-    int axis = faceAxis % 3;
-    MeReal side = faceAxis < 3 ? ta[axis] : -tb[axis];
-    MeVector3Copy(nr, ref->ax[axis]);
-    if (side < ME_R(0.0))
-        MeVector3Scale(nr, -ME_R(1.0));
-    count = faceContact(ref, axis, nr, inc, faceAxis < 3, tolerance, buf);
-    if (count == 0)
-        return 0;
-    if (maxContacts > MCD_NF_MAX_CONTACTS)
-        maxContacts = MCD_NF_MAX_CONTACTS;
-    count = McdNfReduce(buf, count, maxContacts);
-    for (k = 0; k < count; k++)
-        contacts[k] = buf[k];
-    return count;
-}
-
 /* Size: McdNearfieldFn's signature. */
 int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2, MeReal tolerance,
                 McdContact *contacts, int maxContacts, void **cache)
@@ -217,30 +183,8 @@ int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData 
             }
         }
     }
-    if (separated) { /* within the tolerance but apart */
-        int count, k;
-        /* Parallel faces (boxes side by side in a stack or a wall) apart along a face axis that
-         * separates them at least as far as every other axis, with the nearest point of the incident
-         * face over the reference face: no two points of the boxes are closer than that axis's gap and
-         * that point is as close, so the gap is the boxes' distance, and the clipped incident face
-         * gives the contacts, each its point's distance to the face, as for overlapping boxes.
-         * Otherwise (tilted faces, nearest features beyond the face's rim, edge to edge) the general
-         * path measures the distance and its features: clipping a tilted face would keep every
-         * point within the tolerance, more contacts than the general path's (Topple's dominoes). */
-        const int fa = faceAxis % 3;
-        const MeReal aligned = faceAxis < 3 ? MeMAX(MeMAX(AR[fa][0], AR[fa][1]), AR[fa][2])
-                                            : MeMAX(MeMAX(AR[0][fa], AR[1][fa]), AR[2][fa]);
-        count = faceBest <= edgeBest && aligned >= FACES_PARALLEL_COS
-                    ? faceManifold(&A, &B, faceAxis, ta, tb, tolerance, contacts, maxContacts)
-                    : 0;
-        if (count > 0) {
-            MeReal nearest = contacts[0].separation;
-            for (k = 1; k < count; k++)
-                nearest = MeMIN(nearest, contacts[k].separation);
-            if (nearest <= -faceBest + MCD_NF_REL_EPS * size)
-                return count;
-        }
-        count = McdNfConvexConvex(g1, tm1, g2, tm2, tolerance, contacts, maxContacts, cache);
+    if (separated) { /* within the tolerance but apart: the exact distance and its features */
+        int count = McdNfConvexConvex(g1, tm1, g2, tm2, tolerance, contacts, maxContacts, cache), k;
         /* A separating axis proves the boxes apart, so a contact that claims an overlap is the general
          * path failing on nearly touching faces (it returned 0.63 m of depth along a wrong normal between
          * side-by-side boxes 1 mm apart, issue 17): then a separating face axis measures the contact by
@@ -273,9 +217,23 @@ int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData 
         return McdNfAddPair(contacts, 0, maxContacts, on1, on2, negAxis, tolerance, 0); /* B towards A */
     }
     {
-        const int count = faceManifold(&A, &B, faceAxis, ta, tb, tolerance, contacts, maxContacts);
+        McdContact buf[16];
+        MeVector3 nr;
+        int count, k;
+        const Box *ref = faceAxis < 3 ? &A : &B, *inc = faceAxis < 3 ? &B : &A;
+        int axis = faceAxis % 3;
+        MeReal side = faceAxis < 3 ? ta[axis] : -tb[axis];
+        MeVector3Copy(nr, ref->ax[axis]);
+        if (side < ME_R(0.0))
+            MeVector3Scale(nr, -ME_R(1.0));
+        count = faceContact(ref, axis, nr, inc, faceAxis < 3, tolerance, buf);
         if (count == 0) /* rounding clipped everything away: the general path */
             return McdNfConvexConvex(g1, tm1, g2, tm2, tolerance, contacts, maxContacts, cache);
+        if (maxContacts > MCD_NF_MAX_CONTACTS)
+            maxContacts = MCD_NF_MAX_CONTACTS;
+        count = McdNfReduce(buf, count, maxContacts);
+        for (k = 0; k < count; k++)
+            contacts[k] = buf[k];
         return count;
     }
 }
