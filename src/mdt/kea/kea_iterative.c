@@ -324,7 +324,7 @@ static void KeaSetUpRowChunks(int start, int end, int worker, void *data)
     const KeaRowsTask *t = data;
     const int n = t->problem->nRows;
     (void)worker;
-    KeaSetUpRows(t->problem, t->w, t->x, start * KEA_SPLIT_ROWS, end * KEA_SPLIT_ROWS < n ? end * KEA_SPLIT_ROWS : n);
+    KeaSetUpRows(t->problem, t->w, t->x, start * KEA_SPLIT_ROWS, KeaRowChunkEnd(end - 1, n));
 }
 
 /* The blocks' colouring (KeaSplitColour) as item 0 of the warm start's task, the warm start's row
@@ -338,11 +338,10 @@ static void KeaColourAndWarmStartChunks(int start, int end, int worker, void *da
     int j;
     (void)worker;
     for (j = start; j < end; ++j) {
-        const int i0 = (j - 1) * KEA_SPLIT_ROWS;
         if (j == 0)
             t->coloured = KeaSplitColour(t->problem, t->w, t->w->split);
         else
-            KeaWarmStartRows(t->w, t->x, i0, i0 + KEA_SPLIT_ROWS < n ? i0 + KEA_SPLIT_ROWS : n);
+            KeaWarmStartRows(t->w, t->x, (j - 1) * KEA_SPLIT_ROWS, KeaRowChunkEnd(j - 1, n));
     }
 }
 
@@ -368,8 +367,7 @@ static void KeaResidualRowChunks(int start, int end, int worker, void *data)
     int j;
     (void)worker;
     for (j = start; j < end; ++j)
-        t->w->split->partial[j] = KeaResidualRows(t->problem, t->w, t->x, j * KEA_SPLIT_ROWS,
-                                                  (j + 1) * KEA_SPLIT_ROWS < n ? (j + 1) * KEA_SPLIT_ROWS : n);
+        t->w->split->partial[j] = KeaResidualRows(t->problem, t->w, t->x, j * KEA_SPLIT_ROWS, KeaRowChunkEnd(j, n));
 }
 
 /* The residual of the final x (KeaResidualRows over every row); split, in row chunks over the
@@ -377,7 +375,7 @@ static void KeaResidualRowChunks(int start, int end, int worker, void *data)
  * so the same bits as one pass. */
 static MeReal KeaIterativeResidual(const KeaProblem *problem, KeaIterativeWork *w, MeReal *x)
 {
-    const int n = problem->nRows, chunks = (n + KEA_SPLIT_ROWS - 1) / KEA_SPLIT_ROWS;
+    const int n = problem->nRows, chunks = KeaRowChunkCount(n);
     KeaRowsTask t;
     MeReal worst = ME_R(0.0);
     int j;
@@ -405,7 +403,7 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
                                     MeReal *x, KeaBodyVelocity *dv)
 {
     const int n = problem->nRows, nb = problem->nBodies;
-    const int rowChunks = (n + KEA_SPLIT_ROWS - 1) / KEA_SPLIT_ROWS;
+    const int rowChunks = KeaRowChunkCount(n);
     KeaRowsTask t;
     int b, k;
     t.problem = problem;

@@ -275,6 +275,12 @@ typedef struct KeaIterativeWork {
 #define KEA_SPLIT_ROWS 256
 #define KEA_SPLIT_BLOCKS 64
 
+/** Row chunks of KEA_SPLIT_ROWS rows covering n rows (the last may be shorter). */
+static inline int KeaRowChunkCount(int n) { return (n + KEA_SPLIT_ROWS - 1) / KEA_SPLIT_ROWS; }
+
+/** One past the last row of row chunk j of n rows. */
+static inline int KeaRowChunkEnd(int j, int n) { return (j + 1) * KEA_SPLIT_ROWS < n ? (j + 1) * KEA_SPLIT_ROWS : n; }
+
 /** A chunk's tallies in one split sweep, added afterwards in chunk order. */
 typedef struct KeaSplitChunk {
     MeReal decrease;  /**< KeaSweepState.decrease over the chunk's blocks */

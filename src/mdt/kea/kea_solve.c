@@ -153,8 +153,7 @@ static void KeaRowsCheckChunks(int start, int end, int worker, void *data)
     int j;
     (void)worker;
     for (j = start; j < end; ++j) {
-        const int i1 = (j + 1) * KEA_SPLIT_ROWS;
-        if (!KeaRowsAreValid(t->problem, j * KEA_SPLIT_ROWS, i1 < n ? i1 : n))
+        if (!KeaRowsAreValid(t->problem, j * KEA_SPLIT_ROWS, KeaRowChunkEnd(j, n)))
             atomic_store_explicit(&t->invalid, 1, memory_order_relaxed);
         atomic_fetch_add_explicit(&t->chunksRun, 1, memory_order_relaxed);
     }
@@ -182,7 +181,7 @@ static int KeaProblemIsValid(const KeaProblem *p, const KeaParameters *params)
             return 0;
     }
     if (KeaSplits(p->nRows, params)) { /* on one worker the same chunks, here */
-        const int chunks = (p->nRows + KEA_SPLIT_ROWS - 1) / KEA_SPLIT_ROWS;
+        const int chunks = KeaRowChunkCount(p->nRows);
         KeaRowsCheck check;
         check.problem = p;
         atomic_init(&check.invalid, 0);
