@@ -33,6 +33,22 @@ static MeReal toImpulse(MeReal force, MeReal h)
     return force * h;
 }
 
+/* Row i's entries beside its Jacobian: bodies, right-hand side (from J v*, jv), ε, bounds as impulses,
+ * friction link and μ, warm start x0; one writer for both MdtRowWriterAdd and MdtRowWriterAddDirections. */
+static void writeRowParameters(MdtRowWriter *w, int i, const MdtRow *row, MeBool twoBodies, MeReal jv, MeReal x0)
+{
+    w->rowBodies[i][0] = w->localBody[0];
+    w->rowBodies[i][1] = twoBodies ? w->localBody[1] : KEA_WORLD;
+    MeReal gamma = row->gamma >= 0 ? row->gamma : w->gamma;
+    w->rhs[i] = row->velocity - gamma * row->error / w->h - jv;
+    w->epsilon[i] = (row->noWorldEpsilon ? 0 : w->epsilon0) + row->epsilon;
+    w->lo[i] = toImpulse(row->lo, w->h);
+    w->hi[i] = toImpulse(row->hi, w->h);
+    w->link[i] = row->link >= 0 ? w->first + row->link : -1;
+    w->mu[i] = row->mu;
+    w->x0[i] = x0;
+}
+
 int MdtRowWriterAdd(MdtRowWriter *w, const MdtRow *row)
 {
     MdtConstraintData *c = w->constraint;
@@ -61,16 +77,7 @@ int MdtRowWriterAdd(MdtRowWriter *w, const MdtRow *row)
         /* The world half does not move... unless the application said the anchor does. */
         jv += dot3(row->lin1, c->worldLinearVelocity) + dot3(row->ang1, c->worldAngularVelocity);
     }
-    w->rowBodies[i][0] = w->localBody[0];
-    w->rowBodies[i][1] = b1 ? w->localBody[1] : KEA_WORLD;
-    MeReal gamma = row->gamma >= 0 ? row->gamma : w->gamma;
-    w->rhs[i] = row->velocity - gamma * row->error / w->h - jv;
-    w->epsilon[i] = (row->noWorldEpsilon ? 0 : w->epsilon0) + row->epsilon;
-    w->lo[i] = toImpulse(row->lo, w->h);
-    w->hi[i] = toImpulse(row->hi, w->h);
-    w->link[i] = row->link >= 0 ? w->first + row->link : -1;
-    w->mu[i] = row->mu;
-    w->x0[i] = local < MDT_MAX_JOINT_ROWS ? c->impulse[local] : 0;
+    writeRowParameters(w, i, row, b1 != NULL, jv, local < MDT_MAX_JOINT_ROWS ? c->impulse[local] : 0);
     return local;
 }
 
@@ -134,22 +141,12 @@ int MdtRowWriterAddDirections(MdtRowWriter *w, MeVector3 dir[3], const MeVector3
     }
     for (int k = 0; k < 3; k++) {
         const int i = first + k;
-        const MdtRow *row = &params[k];
         KeaJacobianRow *J = &w->J[i];
         KeaLanesStore(J->lin0, lin0[k]);
         KeaLanesStore(J->ang0, ang0[k]);
         KeaLanesStore(J->lin1, lin1[k]);
         KeaLanesStore(J->ang1, ang1[k]);
-        w->rowBodies[i][0] = w->localBody[0];
-        w->rowBodies[i][1] = b1 ? w->localBody[1] : KEA_WORLD;
-        MeReal gamma = row->gamma >= 0 ? row->gamma : w->gamma;
-        w->rhs[i] = row->velocity - gamma * row->error / w->h - jvs[k];
-        w->epsilon[i] = (row->noWorldEpsilon ? 0 : w->epsilon0) + row->epsilon;
-        w->lo[i] = toImpulse(row->lo, w->h);
-        w->hi[i] = toImpulse(row->hi, w->h);
-        w->link[i] = row->link >= 0 ? w->first + row->link : -1;
-        w->mu[i] = row->mu;
-        w->x0[i] = x0[k];
+        writeRowParameters(w, i, &params[k], b1 != NULL, jvs[k], x0[k]);
     }
     return local;
 }
