@@ -33,20 +33,33 @@ static MeReal toImpulse(MeReal force, MeReal h)
     return force * h;
 }
 
-/* Row i's entries beside its Jacobian: bodies, right-hand side (from J v*, jv), ε, bounds as impulses,
- * friction link and μ, warm start x0; one writer for both MdtRowWriterAdd and MdtRowWriterAddDirections. */
-static void writeRowParameters(MdtRowWriter *w, int i, const MdtRow *row, MeBool twoBodies, MeReal jv, MeReal x0)
+/* Rows first .. first + count - 1's entries beside their Jacobians: bodies, right-hand side (from J v*,
+ * jv[k]), ε, bounds as impulses, friction link and μ, warm start x0[k]; one writer for both
+ * MdtRowWriterAdd and MdtRowWriterAddDirections. The writer's fields are read once, into locals: the
+ * compiler cannot keep them over the stores to the arrays, which it must assume may alias them. */
+static void writeRowParameters(const MdtRowWriter *w, int first, int count, const MdtRow *rows, MeBool twoBodies,
+                               const MeReal *jv, const MeReal *x0)
 {
-    w->rowBodies[i][0] = w->localBody[0];
-    w->rowBodies[i][1] = twoBodies ? w->localBody[1] : KEA_WORLD;
-    MeReal gamma = row->gamma >= 0 ? row->gamma : w->gamma;
-    w->rhs[i] = row->velocity - gamma * row->error / w->h - jv;
-    w->epsilon[i] = (row->noWorldEpsilon ? 0 : w->epsilon0) + row->epsilon;
-    w->lo[i] = toImpulse(row->lo, w->h);
-    w->hi[i] = toImpulse(row->hi, w->h);
-    w->link[i] = row->link >= 0 ? w->first + row->link : -1;
-    w->mu[i] = row->mu;
-    w->x0[i] = x0;
+    int(*const rowBodies)[2] = w->rowBodies;
+    MeReal *const rhs = w->rhs, *const epsilon = w->epsilon, *const lo = w->lo, *const hi = w->hi;
+    MeReal *const mu = w->mu, *const x0Out = w->x0;
+    int *const link = w->link;
+    const int body0 = w->localBody[0], body1 = twoBodies ? w->localBody[1] : KEA_WORLD, base = w->first;
+    const MeReal h = w->h, worldGamma = w->gamma, epsilon0 = w->epsilon0;
+    for (int k = 0; k < count; k++) {
+        const MdtRow *row = &rows[k];
+        const int i = first + k;
+        rowBodies[i][0] = body0;
+        rowBodies[i][1] = body1;
+        MeReal gamma = row->gamma >= 0 ? row->gamma : worldGamma;
+        rhs[i] = row->velocity - gamma * row->error / h - jv[k];
+        epsilon[i] = (row->noWorldEpsilon ? 0 : epsilon0) + row->epsilon;
+        lo[i] = toImpulse(row->lo, h);
+        hi[i] = toImpulse(row->hi, h);
+        link[i] = row->link >= 0 ? base + row->link : -1;
+        mu[i] = row->mu;
+        x0Out[i] = x0[k];
+    }
 }
 
 int MdtRowWriterAdd(MdtRowWriter *w, const MdtRow *row)
@@ -77,7 +90,8 @@ int MdtRowWriterAdd(MdtRowWriter *w, const MdtRow *row)
         /* The world half does not move... unless the application said the anchor does. */
         jv += dot3(row->lin1, c->worldLinearVelocity) + dot3(row->ang1, c->worldAngularVelocity);
     }
-    writeRowParameters(w, i, row, b1 != NULL, jv, local < MDT_MAX_JOINT_ROWS ? c->impulse[local] : 0);
+    const MeReal x0 = local < MDT_MAX_JOINT_ROWS ? c->impulse[local] : 0;
+    writeRowParameters(w, i, 1, row, b1 != NULL, &jv, &x0);
     return local;
 }
 
@@ -146,8 +160,8 @@ int MdtRowWriterAddDirections(MdtRowWriter *w, MeVector3 dir[3], const MeVector3
         KeaLanesStore(J->ang0, ang0[k]);
         KeaLanesStore(J->lin1, lin1[k]);
         KeaLanesStore(J->ang1, ang1[k]);
-        writeRowParameters(w, i, &params[k], b1 != NULL, jvs[k], x0[k]);
     }
+    writeRowParameters(w, first, 3, params, b1 != NULL, jvs, x0);
     return local;
 }
 

@@ -182,6 +182,20 @@ static void KeaFormBlockMatrix(const KeaProblem *problem, KeaIterativeWork *w, i
     }
 }
 
+/* KeaFormBlockMatrix's A_bb for a 3-row block on two bodies (a contact, a ball joint) with its trip
+ * counts constant: the same sums in the same order, without the general path's per-entry tests. */
+static inline void KeaFormBlockMatrix3(const KeaProblem *problem, const KeaIterativeWork *w, int i, MeReal *A)
+{
+    const KeaJacobianRow *J = w->J + i, *B = w->B + i;
+    int r, c;
+    for (c = 0; c < 3; ++c)
+        for (r = 0; r < 3; ++r)
+            A[r * 3 + c] = KeaRowDot4(&J[r], &B[c]);
+    if (problem->epsilon)
+        for (c = 0; c < 3; ++c)
+            A[c * 3 + c] += problem->epsilon[i + c];
+}
+
 /* The blocks' boundaries, kinds and matrix offsets (a few operations per block, in row order): a
  * declared contact (KeaContact) is a block of its own, solved by the contact step (blockContact set);
  * the generic rows between contacts are split by KeaGenericBlockRows. With cap < 3 (scalar PGS asked
@@ -223,8 +237,12 @@ static void KeaFactorBlocks(const KeaProblem *problem, KeaIterativeWork *w, int 
     int b;
     for (b = b0; b < b1; ++b) {
         const int i = w->blockStart[b], m = w->blockStart[b + 1] - i, offset = w->blockMatrix[b];
+        const int *bodies = problem->rowBodies[i];
         w->blockFactored[b] = 0;
-        KeaFormBlockMatrix(problem, w, i, m, problem->rowBodies[i], w->blockA + offset);
+        if (m == 3 && bodies[0] != bodies[1])
+            KeaFormBlockMatrix3(problem, w, i, w->blockA + offset);
+        else
+            KeaFormBlockMatrix(problem, w, i, m, bodies, w->blockA + offset);
         if (m == 3) { /* a contact or a ball joint: the same arithmetic, unrolled */
             w->blockFactored[b] = (unsigned char)KeaCholeskyDenseInline(3, w->blockA + offset, L);
             if (w->blockFactored[b])

@@ -274,30 +274,46 @@ static int KeaEffortAllowed(const KeaProblem *problem, const KeaParameters *para
 
 /* The set-up of rows [i0, i1): B = M^-1 J^T, the diagonal, J with its pads and world halves zeroed,
  * the halves' bodies, and the warm start's bounds (read from the unclamped x, as the direct path
- * does). Each row writes only its own entries. */
+ * does). Each row writes only its own entries. The arrays' addresses are read once, into locals: the
+ * compiler cannot keep them over the rows' stores, which it must assume may alias them. Size: those
+ * locals, one a line. */
 static void KeaSetUpRows(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x, int i0, int i1)
 {
+    static const MeReal components[4] = {ME_R(1.0), ME_R(1.0), ME_R(1.0), ME_R(0.0)};
     const int nb = problem->nBodies;
+    const KeaJacobianRow *const in = problem->J;
+    const int(*const rowBodies)[2] = problem->rowBodies;
+    const MeReal *const epsIn = problem->epsilon, *const loIn = problem->lo, *const hiIn = problem->hi;
+    const MeReal *const mu = problem->mu;
+    const int *const link = problem->link;
+    const KeaBodyColumns *const columns = w->bodyColumns;
+    KeaJacobianRow *const B = w->B, *const J = w->J;
+    MeReal *const diag = w->diag, *const invDiag = w->invDiag, *const eps = w->eps;
+    MeReal *const lo = w->lo, *const hi = w->hi;
+    int(*const body)[2] = w->body;
+    const KeaLanes keep = KeaLanesSelectOf(KeaLanesLoad(components)), none = KeaLanesSplat(ME_R(0.0));
     int i;
     for (i = i0; i < i1; ++i) {
-        const int *rb = problem->rowBodies[i];
-        KeaJacobianRow *J = &w->J[i];
-        w->diag[i] = KeaRowInvMassJT4(problem, w->bodyColumns, i, &w->B[i]);
-        w->invDiag[i] = w->diag[i] > ME_R(0.0) ? ME_R(1.0) / w->diag[i] : ME_R(0.0);
-        w->eps[i] = problem->epsilon ? problem->epsilon[i] : ME_R(0.0);
-        *J = problem->J[i]; /* then the pads and the world's halves zeroed */
-        J->lin0[3] = J->ang0[3] = J->lin1[3] = J->ang1[3] = ME_R(0.0);
-        if (rb[0] < 0) {
-            memset(J->lin0, 0, sizeof J->lin0);
-            memset(J->ang0, 0, sizeof J->ang0);
+        const int b0 = rowBodies[i][0], b1 = rowBodies[i][1];
+        const MeReal e = epsIn ? epsIn[i] : ME_R(0.0);
+        const KeaLanes keep0 = b0 >= 0 ? keep : none, keep1 = b1 >= 0 ? keep : none; /* pads and world halves 0 */
+        const MeReal d = KeaRowInvMassJTOf(&in[i], b0 >= 0 ? &columns[b0] : NULL, b1 >= 0 ? &columns[b1] : NULL, e,
+                                           &B[i]);
+        diag[i] = d;
+        invDiag[i] = d > ME_R(0.0) ? ME_R(1.0) / d : ME_R(0.0);
+        eps[i] = e;
+        KeaLanesStore(J[i].lin0, KeaLanesKeep(KeaLanesLoad(in[i].lin0), keep0));
+        KeaLanesStore(J[i].ang0, KeaLanesKeep(KeaLanesLoad(in[i].ang0), keep0));
+        KeaLanesStore(J[i].lin1, KeaLanesKeep(KeaLanesLoad(in[i].lin1), keep1));
+        KeaLanesStore(J[i].ang1, KeaLanesKeep(KeaLanesLoad(in[i].ang1), keep1));
+        body[i][0] = b0 >= 0 ? b0 : nb;
+        body[i][1] = b1 >= 0 ? b1 : nb;
+        if (link && link[i] >= 0) { /* KeaRowBoundsInline */
+            KeaFrictionBounds(loIn[i], hiIn[i], mu[i], x[link[i]], &lo[i], &hi[i]);
+        } else {
+            lo[i] = loIn[i];
+            hi[i] = hiIn[i];
         }
-        if (rb[1] < 0) {
-            memset(J->lin1, 0, sizeof J->lin1);
-            memset(J->ang1, 0, sizeof J->ang1);
-        }
-        w->body[i][0] = rb[0] >= 0 ? rb[0] : nb;
-        w->body[i][1] = rb[1] >= 0 ? rb[1] : nb;
-        KeaRowBoundsInline(problem, x, i, &w->lo[i], &w->hi[i]);
     }
 }
 
