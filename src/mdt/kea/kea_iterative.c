@@ -331,7 +331,6 @@ typedef struct KeaRowsTask {
     const KeaProblem *problem;
     KeaIterativeWork *w;
     MeReal *x;
-    KeaBodyVelocity *dv; /* KeaBodyVelocityRanges' output */
     int coloured; /* KeaSplitColour's answer, from KeaColourAndWarmStartChunks */
 } KeaRowsTask;
 
@@ -361,9 +360,46 @@ static void KeaColourAndWarmStartChunks(int start, int end, int worker, void *da
     }
 }
 
-/* dv = M^-1 J^T x from the warm start, item j for the j-th of `items` equal ranges of bodies: each
- * reads every row and sums its own bodies' halves in row order (KeaBodyVelocityFromImpulsesOf), so
- * the bits do not depend on the ranges, and the ranges may follow the worker count. */
+/* dv = M^-1 J^T x from the warm start for bodies [b0, b1), into the work's padded velocities, from
+ * the padded rows and the halves' bodies of KeaSetUpRows (the world's, nb, is above every range):
+ * per component the sums of KeaBodyVelocityFromImpulsesOf in its order (J^T x per body in row order,
+ * then M^-1 once, KeaDot3's order lane by lane), four lanes at a time; the pads stay 0. */
+static void KeaWarmVelocityOf(const KeaIterativeWork *w, const MeReal *x, int n, int b0, int b1)
+{
+    static const MeReal components[4] = {ME_R(1.0), ME_R(1.0), ME_R(1.0), ME_R(0.0)};
+    const KeaLanes keep = KeaLanesSelectOf(KeaLanesLoad(components)), zero = KeaLanesSplat(ME_R(0.0));
+    const KeaJacobianRow *const J = w->J;
+    const int(*const body)[2] = (const int(*)[2])w->body;
+    KeaVel4 *const dv = w->dv;
+    int i, b;
+    for (b = b0; b < b1; ++b) {
+        KeaLanesStoreA(dv[b].lin, zero);
+        KeaLanesStoreA(dv[b].ang, zero);
+    }
+    for (i = 0; i < n; ++i) {
+        const MeReal s = x[i];
+        const int h0 = body[i][0], h1 = body[i][1];
+        if (s == ME_R(0.0))
+            continue;
+        if (h0 >= b0 && h0 < b1)
+            KeaHalfApply4(J[i].lin0, J[i].ang0, s, &dv[h0]);
+        if (h1 >= b0 && h1 < b1)
+            KeaHalfApply4(J[i].lin1, J[i].ang1, s, &dv[h1]);
+    }
+    for (b = b0; b < b1; ++b) {
+        const KeaBodyColumns *c = &w->bodyColumns[b];
+        const MeReal *a = dv[b].ang;
+        const KeaLanes ang = KeaLanesAdd(KeaLanesAdd(KeaLanesMul(KeaLanesLoad(c->col[0]), KeaLanesSplat(a[0])),
+                                                     KeaLanesMul(KeaLanesLoad(c->col[1]), KeaLanesSplat(a[1]))),
+                                         KeaLanesMul(KeaLanesLoad(c->col[2]), KeaLanesSplat(a[2])));
+        KeaLanesStoreA(dv[b].lin, KeaLanesKeep(KeaLanesMul(KeaLanesLoadA(dv[b].lin), KeaLanesSplat(c->invMass)), keep));
+        KeaLanesStoreA(dv[b].ang, KeaLanesKeep(ang, keep));
+    }
+}
+
+/* dv from the warm start (KeaWarmVelocityOf), item j for the j-th of `items` equal ranges of bodies:
+ * each reads every row and sums its own bodies' halves in row order, so the bits do not depend on
+ * the ranges, and the ranges may follow the worker count. */
 static void KeaBodyVelocityRanges(int start, int end, int worker, void *data)
 {
     const KeaRowsTask *t = data;
@@ -371,8 +407,8 @@ static void KeaBodyVelocityRanges(int start, int end, int worker, void *data)
     int j;
     (void)worker;
     for (j = start; j < end; ++j)
-        KeaBodyVelocityFromImpulsesOf(t->problem, t->x, t->dv, (int)((long)nb * j / items),
-                                      (int)((long)nb * (j + 1) / items));
+        KeaWarmVelocityOf(t->w, t->x, t->problem->nRows, (int)((long)nb * j / items),
+                          (int)((long)nb * (j + 1) / items));
 }
 
 /* Each row chunk's residual into the split's partial results (the chunk's worst, KeaResidualRows). */
@@ -400,7 +436,6 @@ static MeReal KeaIterativeResidual(const KeaProblem *problem, KeaIterativeWork *
     t.problem = problem;
     t.w = w;
     t.x = x;
-    t.dv = NULL;
     t.coloured = 0;
     KeaSplitRun(w->split, KeaResidualRowChunks, chunks, &t);
     for (j = 0; j < chunks; ++j) {
@@ -412,20 +447,18 @@ static MeReal KeaIterativeResidual(const KeaProblem *problem, KeaIterativeWork *
 }
 
 /* The solve's set-up, before the first sweep: the padded rows (KeaSetUpRows), the blocks, the warm
- * start (x clamped, then dv and which rows are free), and in a split solve the colouring; the row
- * and block loops in chunks over the workers when split. Not inlined, so that a profile shows the
- * set-up apart from the sweeps. */
+ * start (x clamped, which rows are free, then the work's dv), and in a split solve the colouring;
+ * the row and block loops in chunks over the workers when split. Not inlined, so that a profile
+ * shows the set-up apart from the sweeps. */
 KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParameters *params, KeaIterativeWork *w,
-                                    MeReal *x, KeaBodyVelocity *dv)
+                                    MeReal *x)
 {
     const int n = problem->nRows, nb = problem->nBodies;
     const int rowChunks = KeaRowChunkCount(n);
     KeaRowsTask t;
-    int b, k;
     t.problem = problem;
     t.w = w;
     t.x = x;
-    t.dv = dv;
     t.coloured = 0;
     KeaBodyColumnsFill(problem, w->bodyColumns);
     if (w->split)
@@ -443,16 +476,11 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
     if (w->split) /* dv from the warm start in ranges of bodies, one a worker */
         KeaSplitRun(w->split, KeaBodyVelocityRanges, KeaSplitWorkers(&w->split->hook), &t);
     else
-        KeaBodyVelocityFromImpulses(problem, x, dv);
+        KeaWarmVelocityOf(w, x, n, 0, nb);
+    memset(&w->dv[nb], 0, sizeof(KeaVel4)); /* the world's */
     w->skippedLast = 0;
     w->smRan = 0;
     w->smUnpaid = 0;
-    memset(w->dv, 0, sizeof(KeaVel4) * (size_t)(nb + 1));
-    for (b = 0; b < nb; ++b)
-        for (k = 0; k < 3; ++k) {
-            w->dv[b].lin[k] = dv[b].lin[k];
-            w->dv[b].ang[k] = dv[b].ang[k];
-        }
 }
 
 /* What a solve hands its driver (KeaIterate): the problem, its settings, the work and the outputs. */
@@ -482,7 +510,7 @@ static void KeaIterate(void *data)
     const int smEvery = params->subspaceEvery > 1 ? params->subspaceEvery : 1;
     int it, b, k, limit;
 
-    KeaIterativeSetUp(problem, params, w, x, state->dv);
+    KeaIterativeSetUp(problem, params, w, x);
     if (w->split)
         stats->colours = w->split->colours +
                          (w->split->colourStart[KEA_COLOUR_OVERFLOW + 1] > w->split->colourStart[KEA_COLOUR_OVERFLOW]);
