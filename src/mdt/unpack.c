@@ -11,6 +11,7 @@
 
 #include "../me/pool_slot.h"
 #include "constraint.h"
+#include "kea/kea_lanes.h"
 #include "world.h"
 
 /* Clears the accumulators of the bodies that were simulated; disabled bodies keep theirs. */
@@ -31,7 +32,8 @@ static void clearAccumulators(MdtWorldData *w)
 }
 
 /* Constraints [start, end) of the step: forces, torques, warm starts, the type's own outputs. Each
- * writes only its own constraint (and a group its own contacts), so ranges may run at once. */
+ * writes only its own constraint (and a group its own contacts), so ranges may run at once. The sums
+ * J^T x run in four lanes a half (the padded rows), each component's the scalar sum in row order. */
 static void unpackTask(int start, int end, int worker, void *data)
 {
     (void)worker;
@@ -41,25 +43,29 @@ static void unpackTask(int start, int end, int worker, void *data)
     const MeReal invH = 1 / w->stepSize;
     for (int i = start; i < end; i++) {
         MdtConstraintData *c = out->constraints[i];
-        MeVector3 f0 = {0, 0, 0}, t0 = {0, 0, 0}, f1 = {0, 0, 0}, t1 = {0, 0, 0};
+        KeaLanes f0 = KeaLanesSplat(0), t0 = f0, f1 = f0, t1 = f0;
         for (int k = 0; k < c->rowCount; k++) {
             int row = c->rowStart + k;
             MeReal x = r->x[row];
             const KeaJacobianRow *J = &r->J[row];
-            for (int a = 0; a < 3; a++) {
-                f0[a] += x * J->lin0[a];
-                t0[a] += x * J->ang0[a];
-                f1[a] += x * J->lin1[a];
-                t1[a] += x * J->ang1[a];
-            }
+            const KeaLanes s = KeaLanesSplat(x);
+            f0 = KeaLanesAdd(f0, KeaLanesMul(s, KeaLanesLoad(J->lin0)));
+            t0 = KeaLanesAdd(t0, KeaLanesMul(s, KeaLanesLoad(J->ang0)));
+            f1 = KeaLanesAdd(f1, KeaLanesMul(s, KeaLanesLoad(J->lin1)));
+            t1 = KeaLanesAdd(t1, KeaLanesMul(s, KeaLanesLoad(J->ang1)));
             if (k < MDT_MAX_JOINT_ROWS)
                 c->impulse[k] = x;
         }
+        _Alignas(16) MeReal sums[4][4];
+        KeaLanesStoreA(sums[0], f0);
+        KeaLanesStoreA(sums[1], t0);
+        KeaLanesStoreA(sums[2], f1);
+        KeaLanesStoreA(sums[3], t1);
         for (int a = 0; a < 3; a++) {
-            c->force[0][a] = f0[a] * invH;
-            c->torque[0][a] = t0[a] * invH;
-            c->force[1][a] = f1[a] * invH;
-            c->torque[1][a] = t1[a] * invH;
+            c->force[0][a] = sums[0][a] * invH;
+            c->torque[0][a] = sums[1][a] * invH;
+            c->force[1][a] = sums[2][a] * invH;
+            c->torque[1][a] = sums[3][a] * invH;
         }
         if (c->cls->unpack)
             c->cls->unpack(c, r->x + c->rowStart, c->rowCount, w->stepSize);
