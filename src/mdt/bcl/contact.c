@@ -212,7 +212,7 @@ static void frictionDirections(const ContactData *d, MeVector3 t[2])
 }
 
 /* The fields but the Jacobian of friction row k (0 or 1; along t) of the contact whose normal row is
-  * `normalRow`, into *row (in place: no row copied on return). */
+ * `normalRow`, into *row (in place: no row copied on return). */
 static void frictionRowParams(const ContactData *d, const ContactArms *a, const MdtRowWriter *w, int k,
                               const MeVector3 t, int normalRow, MdtRow *row)
 {
