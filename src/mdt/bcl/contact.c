@@ -212,10 +212,11 @@ static void frictionDirections(const ContactData *d, MeVector3 t[2])
 }
 
 /* The fields but the Jacobian of friction row k (0 or 1; along t) of the contact whose normal row is
- * `normalRow`, into *row (in place: no row copied on return). */
-static void frictionRowParams(const ContactData *d, const ContactArms *a, const MdtRowWriter *w, int k,
-                              const MeVector3 t, int normalRow, MdtRow *row)
+ * `normalRow`. */
+static MdtRow frictionRowParams(const ContactData *d, const ContactArms *a, const MdtRowWriter *w, int k,
+                                const MeVector3 t, int normalRow)
 {
+    MdtRow r, *row = &r;
     const MdtContactParams *p = &d->params;
     const MeReal h = w->h;
     const MeU32 slipOption = k == 0 ? MdtBclContactOptionSlip1 : MdtBclContactOptionSlip2;
@@ -241,6 +242,7 @@ static void frictionRowParams(const ContactData *d, const ContactArms *a, const 
         row->lo = -bound;
         row->hi = bound;
     }
+    return r;
 }
 
 /* The friction rows; returns how many were written linked to the normal row (NormalForce model). */
@@ -251,8 +253,7 @@ static int addFrictionRows(ContactData *d, const ContactArms *a, MdtRowWriter *w
     frictionDirections(d, t);
     int directions = p->type == MdtContactTypeFriction2D ? 2 : 1, linked = 0;
     for (int k = 0; k < directions; k++) {
-        MdtRow row;
-        frictionRowParams(d, a, w, k, t[k], normalRow, &row);
+        MdtRow row = frictionRowParams(d, a, w, k, t[k], normalRow);
         directionRow(&row, t[k], a->r0, a->r1);
         int local = MdtRowWriterAdd(w, &row);
         if (!w->captured && local >= 0)
@@ -274,8 +275,8 @@ static int addThreeRows(ContactData *d, const ContactArms *a, MdtRowWriter *w, i
     MeVector3Copy(dir[2], t[1]);
     normalRowParams(d, a, w, &rows[0]);
     const int first = w->count - w->first; /* where the normal row goes */
-    frictionRowParams(d, a, w, 0, dir[1], first, &rows[1]);
-    frictionRowParams(d, a, w, 1, dir[2], first, &rows[2]);
+    rows[1] = frictionRowParams(d, a, w, 0, dir[1], first);
+    rows[2] = frictionRowParams(d, a, w, 1, dir[2], first);
     *normalRow = MdtRowWriterAddDirections(w, dir, a->r0, a->r1, rows, d->impulse);
     return *normalRow >= 0 ? (rows[1].link >= 0) + (rows[2].link >= 0) : 0;
 }
