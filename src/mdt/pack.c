@@ -36,7 +36,9 @@ static MeReal toImpulse(MeReal force, MeReal h)
 /* Rows first .. first + count - 1's entries beside their Jacobians: bodies, right-hand side (from J v*,
  * jv[k]), ε, bounds as impulses, friction link and μ, warm start x0[k]; one writer for both
  * MdtRowWriterAdd and MdtRowWriterAddDirections. The writer's fields are read once, into locals: the
- * compiler cannot keep them over the stores to the arrays, which it must assume may alias them. */
+ * compiler cannot keep them over the stores to the arrays, which it must assume may alias them.
+ * Size: seven parameters, the rows' range and their per-row inputs, so that the writer's fields are
+ * read once for a contact's three rows. */
 static void writeRowParameters(const MdtRowWriter *w, int first, int count, const MdtRow *rows, MeBool twoBodies,
                                const MeReal *jv, const MeReal *x0)
 {

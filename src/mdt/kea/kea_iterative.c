@@ -275,8 +275,7 @@ static int KeaEffortAllowed(const KeaProblem *problem, const KeaParameters *para
 /* The set-up of rows [i0, i1): B = M^-1 J^T, the diagonal, J with its pads and world halves zeroed,
  * the halves' bodies, and the warm start's bounds (read from the unclamped x, as the direct path
  * does). Each row writes only its own entries. The arrays' addresses are read once, into locals: the
- * compiler cannot keep them over the rows' stores, which it must assume may alias them. Size: those
- * locals, one a line. */
+ * compiler cannot keep them over the rows' stores, which it must assume may alias them. */
 static void KeaSetUpRows(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x, int i0, int i1)
 {
     static const MeReal components[4] = {ME_R(1.0), ME_R(1.0), ME_R(1.0), ME_R(0.0)};
