@@ -224,9 +224,9 @@ static void contact_kernels_are_the_row_kernels(void **state)
     int trial, r, k;
     (void)state;
     for (trial = 0; trial < 500; ++trial) {
-        KeaJacobianRow J[3];
+        _Alignas(16) KeaJacobianRow J[3]; /* as the work's rows: the contact kernels load them aligned */
         KeaVel4 v0, v1, a0, a1, b0, b1;
-        MeReal gathered[3], d[3];
+        MeReal gathered[4], d[3];
         memset(J, 0, sizeof J);
         memset(&v0, 0, sizeof v0);
         memset(&v1, 0, sizeof v1);
@@ -244,16 +244,16 @@ static void contact_kernels_are_the_row_kernels(void **state)
             v1.ang[k] = random_value(&rng);
             d[k] = random_value(&rng);
         }
-        KeaContactGather(J, &v0, &v1, gathered);
+        KeaLanesStore(gathered, KeaContactGather(J, &v0, &v1));
         for (r = 0; r < 3; ++r)
             assert_true(same_bits(gathered[r], KeaRowVel4(&J[r], &v0, &v1)));
-        KeaContactGather(J, &v0, NULL, gathered);
+        KeaLanesStore(gathered, KeaContactGather(J, &v0, NULL));
         for (r = 0; r < 3; ++r)
             assert_true(same_bits(gathered[r], KeaRowVel4World(&J[r], &v0)));
 
         a0 = b0 = v0;
         a1 = b1 = v1;
-        KeaContactScatter(J, d, &a0, &a1);
+        KeaContactScatter(J, KeaLanesLoad3(d), &a0, &a1);
         for (r = 0; r < 3; ++r)
             KeaRowApply4(&J[r], d[r], &b0, &b1);
         assert_memory_equal(&a0, &b0, sizeof a0);
