@@ -136,7 +136,7 @@ static void KeaContactDense(const KeaProblem *problem, KeaIterativeWork *w, int 
 /* The contact step's closed forms when not all rows are free (a quarter of the steps on a pile):
  * r_loc = A_bb x_b - w_b into rl, then the set the contact was in, then KeaContactActiveSets; 1 with
  * the solution in out if one is valid. Kept out of line, so that the common step's registers are not
- * spent on it. */
+ * spent on it. Size: the step's state handed on as the step holds it (its one call site). */
 KEA_NOINLINE int KeaContactClosedForms(const KeaIterativeWork *w, int block, const MeReal *mu, const MeReal *xb,
                                        KeaLanes wl, MeReal *rl, MeReal *out)
 {

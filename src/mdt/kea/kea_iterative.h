@@ -4,6 +4,7 @@
  *   kea_blocks.c          block set-up: the workspace layout, the blocks and their inverses
  *   kea_block_kernels.h   the block kernels every part shares (gather, scatter, a block's deltas)
  *   kea_contact_kernel.h  the contact step: one declared contact's exact step (KeaContactBlockStep)
+ *   kea_contact_consts.c  the contact step's constants, laid out once a solve (KeaContactConsts)
  *   kea_iterative.c       the sweep, the generic block step and the driver (KeaSolveIterative)
  *   kea_subspace.c        subspace minimisation and its schedule (KeaSubspaceMinimise)
  *   kea_nncg.c            NNCG: a momentum step after each pair of sweeps (KeaNncgStep)
