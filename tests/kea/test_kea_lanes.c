@@ -51,6 +51,53 @@ static void lanes_do_the_scalar_operations(void **state)
     }
 }
 
+/* The contact step's lane helpers (kea_lanes.h) are the scalar operations: the three sums at once,
+ * a lane out, |a|, and the compare masks (NaN and -0 among the values). */
+static void contact_step_lanes_are_the_scalars(void **state)
+{
+    KtRng rng = {2468};
+    int trial, k;
+    (void)state;
+    for (trial = 0; trial < 2000; ++trial) {
+        MeReal a[4], b[4], c[4], out[4];
+        int le = 0, lt = 0, nz = 0;
+        KeaLanes la, lb;
+        for (k = 0; k < 4; ++k) {
+            a[k] = random_value(&rng);
+            b[k] = k == 1 && trial % 7 == 0 ? -a[k] : random_value(&rng);
+            c[k] = random_value(&rng);
+        }
+        if (trial % 11 == 0)
+            a[trial % 3] = (MeReal)NAN;
+        if (trial % 13 == 0)
+            b[trial % 3] = ME_R(-0.0);
+        la = KeaLanesLoad(a);
+        lb = KeaLanesLoad(b);
+        KeaLanesStore(out, KeaLanesSum3Each(la, lb, KeaLanesLoad(c)));
+        assert_true(same_bits(out[0], (a[0] + a[1]) + a[2]));
+        assert_true(same_bits(out[1], (b[0] + b[1]) + b[2]));
+        assert_true(same_bits(out[2], (c[0] + c[1]) + c[2]));
+        assert_true(same_bits(out[3], ME_R(0.0)));
+        KeaLanesStore(out, KeaLanesLoad3(a));
+        for (k = 0; k < 3; ++k)
+            assert_true(same_bits(out[k], a[k]));
+        assert_true(same_bits(out[3], ME_R(0.0)));
+        KeaLanesStore(out, KeaLanesAbs(la));
+        for (k = 0; k < 4; ++k) {
+            assert_true(same_bits(KeaLanesAt(la, k), a[k]));
+            assert_true(same_bits(out[k], MeFabs(a[k])));
+        }
+        for (k = 0; k < 3; ++k) {
+            le |= (a[k] <= b[k]) << k;
+            lt |= (a[k] < b[k]) << k;
+            nz |= (a[k] != ME_R(0.0)) << k;
+        }
+        assert_int_equal(KeaLanesLe3(la, lb), le);
+        assert_int_equal(KeaLanesLt3(la, lb), lt);
+        assert_int_equal(KeaLanesNonZero3(la), nz);
+    }
+}
+
 /* KeaDotN4: four running sums over entries k, k + 4, ..., the tail added to the first, then
  * (s0 + s1) + (s2 + s3) -- the order the direct path's factor has always used. */
 static MeReal dot_reference(const MeReal *a, const MeReal *b, int n)
@@ -224,9 +271,9 @@ static void contact_kernels_are_the_row_kernels(void **state)
     int trial, r, k;
     (void)state;
     for (trial = 0; trial < 500; ++trial) {
-        KeaJacobianRow J[3];
+        _Alignas(16) KeaJacobianRow J[3]; /* as the work's rows: the contact kernels load them aligned */
         KeaVel4 v0, v1, a0, a1, b0, b1;
-        MeReal gathered[3], d[3];
+        MeReal gathered[4], d[3];
         memset(J, 0, sizeof J);
         memset(&v0, 0, sizeof v0);
         memset(&v1, 0, sizeof v1);
@@ -244,16 +291,16 @@ static void contact_kernels_are_the_row_kernels(void **state)
             v1.ang[k] = random_value(&rng);
             d[k] = random_value(&rng);
         }
-        KeaContactGather(J, &v0, &v1, gathered);
+        KeaLanesStore(gathered, KeaContactGather(J, &v0, &v1));
         for (r = 0; r < 3; ++r)
             assert_true(same_bits(gathered[r], KeaRowVel4(&J[r], &v0, &v1)));
-        KeaContactGather(J, &v0, NULL, gathered);
+        KeaLanesStore(gathered, KeaContactGather(J, &v0, NULL));
         for (r = 0; r < 3; ++r)
             assert_true(same_bits(gathered[r], KeaRowVel4World(&J[r], &v0)));
 
         a0 = b0 = v0;
         a1 = b1 = v1;
-        KeaContactScatter(J, d, &a0, &a1);
+        KeaContactScatter(J, KeaLanesLoad3(d), &a0, &a1);
         for (r = 0; r < 3; ++r)
             KeaRowApply4(&J[r], d[r], &b0, &b1);
         assert_memory_equal(&a0, &b0, sizeof a0);
@@ -471,6 +518,7 @@ int main(void)
         cmocka_unit_test(inverse_mass_rows_match_the_scalar_ones),
         cmocka_unit_test(finite_lanes_are_the_scalar_test),
         cmocka_unit_test(contact_kernels_are_the_row_kernels),
+        cmocka_unit_test(contact_step_lanes_are_the_scalars),
         cmocka_unit_test(transpose_moves_every_entry),
         cmocka_unit_test(pack_gather_and_inverse_are_the_row_kernels),
         cmocka_unit_test(pack_scatter_is_the_row_kernels_within_rounding),

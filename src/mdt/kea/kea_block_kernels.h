@@ -81,26 +81,27 @@ static inline void KeaBlockScatterSized(const int m, const KeaJacobianRow *B, co
     }
 }
 
-/* v += sum_r B_r d_r over a contact's three rows, on body half `half` of B, d splatted. */
+/* v += sum_r B_r d_r over a contact's three rows, on body half `half` of B (16-byte aligned, as the
+ * work's rows are: the loads fold into the products), d splatted. */
 static inline void KeaContactScatterHalf(const KeaJacobianRow *B, const KeaLanes *d, int half, KeaVel4 *v)
 {
-    KeaLanes lin = KeaLanesLoad(v->lin), ang = KeaLanesLoad(v->ang);
+    KeaLanes lin = KeaLanesLoadA(v->lin), ang = KeaLanesLoadA(v->ang);
     int r;
     for (r = 0; r < 3; ++r) {
-        lin = KeaLanesAdd(lin, KeaLanesMul(KeaLanesLoad(half ? B[r].lin1 : B[r].lin0), d[r]));
-        ang = KeaLanesAdd(ang, KeaLanesMul(KeaLanesLoad(half ? B[r].ang1 : B[r].ang0), d[r]));
+        lin = KeaLanesAdd(lin, KeaLanesMul(KeaLanesLoadA(half ? B[r].lin1 : B[r].lin0), d[r]));
+        ang = KeaLanesAdd(ang, KeaLanesMul(KeaLanesLoadA(half ? B[r].ang1 : B[r].ang0), d[r]));
     }
-    KeaLanesStore(v->lin, lin);
-    KeaLanesStore(v->ang, ang);
+    KeaLanesStoreA(v->lin, lin);
+    KeaLanesStoreA(v->ang, ang);
 }
 
-/* KeaBlockScatterSized for a contact's three rows (v0 != v1; v1 NULL on the world) without its
- * test per row: a row with d_r = 0 adds B_r 0, zeros (the same values; only a -0 in dv may become
- * +0, which no later comparison or product tells apart). d is read once for both halves (a store
- * to v0 could alias it for the compiler). */
-static inline void KeaContactScatter(const KeaJacobianRow *B, const MeReal *d, KeaVel4 *v0, KeaVel4 *v1)
+/* KeaBlockScatterSized for a contact's three rows (v0 != v1; v1 NULL on the world), d in lanes 0-2,
+ * without its test per row: a row with d_r = 0 adds B_r 0, zeros (the same values; only a -0 in dv
+ * may become +0, which no later comparison or product tells apart). */
+static inline void KeaContactScatter(const KeaJacobianRow *B, KeaLanes d, KeaVel4 *v0, KeaVel4 *v1)
 {
-    const KeaLanes ds[3] = {KeaLanesSplat(d[0]), KeaLanesSplat(d[1]), KeaLanesSplat(d[2])};
+    const KeaLanes ds[3] = {KeaLanesSplat(KeaLanesAt(d, 0)), KeaLanesSplat(KeaLanesAt(d, 1)),
+                            KeaLanesSplat(KeaLanesAt(d, 2))};
     KeaContactScatterHalf(B, ds, 0, v0);
     if (v1)
         KeaContactScatterHalf(B, ds, 1, v1);

@@ -87,21 +87,21 @@ static inline int KeaContactActiveSets(const MeReal *A, const MeReal *r, const M
            KeaContactTry(A, r, mu, -1, 1, out) || KeaContactTry(A, r, mu, -1, -1, out);
 }
 
-/* A contact's rows free now (KeaRowIsFree: its normal row's bounds [0, inf), its friction
- * rows' +-mu n) into was, from its impulses xb; returns how many of the three changed. The sweep
- * calls it after each contact's step, which is that block's last change before the next SM
- * chance (a contact's bounds depend on its own rows only). */
-static inline int KeaContactFreeRows(const MeReal *mu, const MeReal *xb, unsigned char *was)
+/* A contact's rows free now (KeaRowIsFree: its normal row's bounds [0, inf), its friction rows'
+ * +-mu n: -b < x_r < b is |x_r| < b) into was, from its impulses xn in lanes; returns how many of the
+ * three changed. The sweep calls it after each contact's step, which is that block's last change
+ * before the next SM chance (a contact's bounds depend on its own rows only). */
+static inline int KeaContactFreeRows(const KeaContactConsts *k, KeaLanes xn, unsigned char *was)
 {
-    const MeReal n = xb[0], bound1 = KeaFrictionBound(mu[1], n), bound2 = KeaFrictionBound(mu[2], n);
-    const unsigned char f0 = (unsigned char)(ME_R(0.0) < n && n < MEINFINITY);
-    const unsigned char f1 = (unsigned char)(-bound1 < xb[1] && xb[1] < bound1);
-    const unsigned char f2 = (unsigned char)(-bound2 < xb[2] && xb[2] < bound2);
-    const int changed = (f0 != was[0]) + (f1 != was[1]) + (f2 != was[2]);
-    was[0] = f0;
-    was[1] = f1;
-    was[2] = f2;
-    return changed;
+    static const unsigned char bitsSet[8] = {0, 1, 1, 2, 1, 2, 2, 3};
+    const MeReal n = KeaLanesAt(xn, 0);
+    const KeaLanes bound = KeaLanesMul(KeaLanesLoadA(k->mu), KeaLanesSplat(KeaMax(n, ME_R(0.0))));
+    const int now = (KeaLanesLt3(KeaLanesAbs(xn), bound) & 6) | (ME_R(0.0) < n && n < MEINFINITY);
+    const int before = was[0] | was[1] << 1 | was[2] << 2;
+    was[0] = (unsigned char)(now & 1);
+    was[1] = (unsigned char)(now >> 1 & 1);
+    was[2] = (unsigned char)(now >> 2);
+    return bitsSet[now ^ before];
 }
 
 /* The contact step is the sweep's every block on a pile: inlined into the sweep, its fields stay in
@@ -133,10 +133,30 @@ static void KeaContactDense(const KeaProblem *problem, KeaIterativeWork *w, int 
     KeaBlockApplyDeltas(w, s, 3, x, &sweep->decrease);
 }
 
+/* The contact step's closed forms when not all rows are free (a quarter of the steps on a pile):
+ * r_loc = A_bb x_b - w_b into rl, then the set the contact was in, then KeaContactActiveSets; 1 with
+ * the solution in out if one is valid. Kept out of line, so that the common step's registers are not
+ * spent on it. Size: the step's state handed on as the step holds it (its one call site). */
+KEA_NOINLINE int KeaContactClosedForms(const KeaIterativeWork *w, int block, const MeReal *mu, const MeReal *xb,
+                                       KeaLanes wl, MeReal *rl, MeReal *out)
+{
+    const MeReal *A = w->blockA + w->blockMatrix[block];
+    const MeReal was1Bound = KeaFrictionBound(mu[1], xb[0]), was2Bound = KeaFrictionBound(mu[2], xb[0]);
+    const int was1 = xb[1] >= was1Bound ? 1 : (xb[1] <= -was1Bound ? -1 : 0);
+    const int was2 = xb[2] >= was2Bound ? 1 : (xb[2] <= -was2Bound ? -1 : 0);
+    MeReal wb[4];
+    int r;
+    KeaLanesStore(wb, wl);
+    for (r = 0; r < 3; ++r)
+        rl[r] = ((A[r] * xb[0] + A[3 + r] * xb[1]) + A[6 + r] * xb[2]) - wb[r];
+    return ((was1 | was2) != 0 && xb[0] > ME_R(0.0) && KeaContactTry(A, rl, mu, was1, was2, out)) ||
+           KeaContactActiveSets(A, rl, mu, out);
+}
+
 /* The contact step (top comment) for the declared contact `block` (blockContact: on two bodies, or
  * on a body and the world, whose half of the rows, exact zeros, is not computed), its three rows
- * held in locals. Returns the block's largest row residual before the step (when sweep->measure;
- * else 0).
+ * in lanes (their constants from the contact's KeaContactConsts). Returns the block's largest row
+ * residual before the step (when sweep->measure; else 0).
  * Longer than most functions here, and on purpose: it is the pile's every block step, and its
  * parts (gather, residual, all-free try, active sets, scatter) share the block's rows held in
  * locals; split into functions they would pass those locals through memory. */
@@ -145,17 +165,20 @@ KEA_ALWAYS_INLINE MeReal KeaContactBlockStep(const KeaProblem *problem, KeaItera
 {
     const int s = w->blockStart[block], onWorld = w->blockContact[block] == KEA_CONTACT_WORLD;
     KeaVel4 *v0 = &w->dv[w->body[s][0]], *v1 = &w->dv[w->body[s][1]];
-    const MeReal *mu = problem->mu + s, *inv = w->blockInv + w->blockMatrix[block];
-    MeReal wb[3], xb[3], xn[3], d[3], t[3], bound, bound2, worst;
+    const KeaContactConsts *k = KeaContactConstsOf(w->JT, s);
+    const MeReal *mu = problem->mu + s;
+    const MeReal xb[3] = {x[s], x[s + 1], x[s + 2]};
+    const KeaLanes xl = KeaLanesLoad3(x + s);
+    /* w_b = J_b dv + eps x_b - r_b */
+    const KeaLanes wl = KeaLanesSub(KeaLanesAdd(KeaContactGather(&w->J[s], v0, onWorld ? NULL : v1),
+                                                KeaLanesMul(KeaLanesLoadA(k->eps), xl)),
+                                    KeaLanesLoadA(k->rhs));
+    const MeReal wb[3] = {KeaLanesAt(wl, 0), KeaLanesAt(wl, 1), KeaLanesAt(wl, 2)};
+    KeaLanes xn = xl, d;
+    MeReal bound, worst = ME_R(0.0);
     int r, fits = 0;
-    KeaContactGather(&w->J[s], v0, onWorld ? NULL : v1, wb);
-    for (r = 0; r < 3; ++r) {
-        xb[r] = x[s + r];
-        wb[r] = wb[r] + w->eps[s + r] * xb[r] - problem->rhs[s + r];
-    }
     /* the residual before the step (when the sweep still measures): normal row in [0, inf), friction
      * rows in [-mu n, mu n] */
-    worst = ME_R(0.0);
     if (sweep->measure) {
         worst = KeaMax(worst, w->diag[s] * KeaFabs(xb[0] - KeaClamp(xb[0] - wb[0] * w->invDiag[s], ME_R(0.0),
                                                                      MEINFINITY)));
@@ -165,44 +188,36 @@ KEA_ALWAYS_INLINE MeReal KeaContactBlockStep(const KeaProblem *problem, KeaItera
                                       KeaFabs(xb[r] - KeaClamp(xb[r] - wb[r] * w->invDiag[s + r], -bound, bound)));
         }
     }
-    /* every row free: x_b - A_bb^-1 w_b, if it keeps within the bounds its own normal gives (in
-     * scalars: a product with the inverse's padded columns in lanes costs more here, where the
-     * result is wanted row by row) */
+    /* every row free: x_b - A_bb^-1 w_b (the inverse's columns in lanes), if it keeps within the
+     * bounds its own normal gives (-b <= x_r <= b is |x_r| <= b) */
     if (w->blockFactored[block]) {
-        for (r = 0; r < 3; ++r)
-            t[r] = (inv[r] * wb[0] + inv[3 + r] * wb[1]) + inv[6 + r] * wb[2];
-        for (r = 0; r < 3; ++r)
-            xn[r] = xb[r] - t[r];
-        bound = KeaFrictionBound(mu[1], xn[0]);
-        bound2 = KeaFrictionBound(mu[2], xn[0]);
-        fits = xn[0] >= ME_R(0.0) && xn[1] >= -bound && xn[1] <= bound && xn[2] >= -bound2 && xn[2] <= bound2;
+        const KeaLanes t = KeaLanesAdd(KeaLanesAdd(KeaLanesMul(KeaLanesLoadA(k->inv[0]), KeaLanesSplat(wb[0])),
+                                                   KeaLanesMul(KeaLanesLoadA(k->inv[1]), KeaLanesSplat(wb[1]))),
+                                       KeaLanesMul(KeaLanesLoadA(k->inv[2]), KeaLanesSplat(wb[2])));
+        const MeReal n = KeaLanesAt(xn = KeaLanesSub(xl, t), 0);
+        const KeaLanes bounds = KeaLanesMul(KeaLanesLoadA(k->mu), KeaLanesSplat(KeaMax(n, ME_R(0.0))));
+        fits = n >= ME_R(0.0) && (KeaLanesLe3(KeaLanesAbs(xn), bounds) & 6) == 6;
     }
     if (!fits) {
-        const MeReal *A = w->blockA + w->blockMatrix[block];
-        MeReal rl[3];
-        for (r = 0; r < 3; ++r) /* r_loc = A_bb x_b - w_b */
-            rl[r] = ((A[r] * xb[0] + A[3 + r] * xb[1]) + A[6 + r] * xb[2]) - wb[r];
-        /* the set the contact was in, tried first */
-        const MeReal was1Bound = KeaFrictionBound(mu[1], xb[0]), was2Bound = KeaFrictionBound(mu[2], xb[0]);
-        const int was1 = xb[1] >= was1Bound ? 1 : (xb[1] <= -was1Bound ? -1 : 0);
-        const int was2 = xb[2] >= was2Bound ? 1 : (xb[2] <= -was2Bound ? -1 : 0);
-        if (!((was1 | was2) != 0 && xb[0] > ME_R(0.0) && KeaContactTry(A, rl, mu, was1, was2, xn)) &&
-            !KeaContactActiveSets(A, rl, mu, xn)) { /* valid only within rounding, or no factor */
+        MeReal rl[3], out[3];
+        if (!KeaContactClosedForms(w, block, mu, x + s, wl, rl, out)) { /* valid only within rounding, or no factor */
             KeaContactDense(problem, w, block, wb, rl, x, sweep);
-            sweep->changed += KeaContactFreeRows(mu, x + s, w->wasFree + s);
+            sweep->changed += KeaContactFreeRows(k, KeaLanesLoad3(x + s), w->wasFree + s);
             return worst;
         }
+        xn = KeaLanesLoad3(out);
     }
-    for (r = 0; r < 3; ++r)
-        d[r] = xn[r] - xb[r];
-    if (sweep->tally) /* only the sweep after an SM step is asked how much it lowered the objective */
-        for (r = 0; r < 3; ++r)
-            sweep->decrease -= ME_R(0.5) * d[r] * wb[r];
-    if (d[0] != ME_R(0.0) || d[1] != ME_R(0.0) || d[2] != ME_R(0.0))
+    d = KeaLanesSub(xn, xl);
+    if (sweep->tally) { /* only the sweep after an SM step is asked how much it lowered the objective */
+        const KeaLanes halfDW = KeaLanesMul(KeaLanesMul(KeaLanesSplat(ME_R(0.5)), d), wl);
+        sweep->decrease = ((sweep->decrease - KeaLanesAt(halfDW, 0)) - KeaLanesAt(halfDW, 1)) - KeaLanesAt(halfDW, 2);
+    }
+    if (KeaLanesNonZero3(d))
         KeaContactScatter(&w->B[s], d, v0, onWorld ? NULL : v1);
-    for (r = 0; r < 3; ++r) /* d_r = 0: xn_r is x_r */
-        x[s + r] = xn[r];
-    sweep->changed += KeaContactFreeRows(mu, xn, w->wasFree + s);
+    x[s] = KeaLanesAt(xn, 0); /* d_r = 0: xn_r is x_r */
+    x[s + 1] = KeaLanesAt(xn, 1);
+    x[s + 2] = KeaLanesAt(xn, 2);
+    sweep->changed += KeaContactFreeRows(k, xn, w->wasFree + s);
     return worst;
 }
 

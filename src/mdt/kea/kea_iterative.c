@@ -465,6 +465,7 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
     else
         KeaSetUpRows(problem, w, x, 0, n);
     KeaSetUpBlocks(problem, w, KeaBlockCap(n, params->maxBlockRows));
+    KeaContactConstsFill(problem, w);
     if (w->split) { /* the colouring beside the warm start's chunks */
         KeaSplitRun(w->split, KeaColourAndWarmStartChunks, rowChunks + 1, &t);
         if (!t.coloured)

@@ -4,6 +4,7 @@
  *   kea_blocks.c          block set-up: the workspace layout, the blocks and their inverses
  *   kea_block_kernels.h   the block kernels every part shares (gather, scatter, a block's deltas)
  *   kea_contact_kernel.h  the contact step: one declared contact's exact step (KeaContactBlockStep)
+ *   kea_contact_consts.c  the contact step's constants, laid out once a solve (KeaContactConsts)
  *   kea_iterative.c       the sweep, the generic block step and the driver (KeaSolveIterative)
  *   kea_subspace.c        subspace minimisation and its schedule (KeaSubspaceMinimise)
  *   kea_nncg.c            NNCG: a momentum step after each pair of sweeps (KeaNncgStep)
@@ -99,26 +100,29 @@ static inline MeReal KeaRowVel4World(const KeaJacobianRow *J, const KeaVel4 *v0)
     return KeaLanesSum3(KeaLanesDot2(J->lin0, v0->lin, J->ang0, v0->ang));
 }
 
-/** A contact's three rows J_r . (v0, v1) (v1 NULL: on the world, whose half adds exact zeros), the
- *  bodies' lanes loaded once for the three: the sums of KeaRowVel4 / KeaRowVel4World, in their
- *  order (a store to out could alias the bodies for the compiler, which would reload them). */
-static inline void KeaContactGather(const KeaJacobianRow *J, const KeaVel4 *v0, const KeaVel4 *v1, MeReal *out)
+/** KeaLanesDot2L of a row half read with aligned loads (a 16-byte aligned row, as the work's are:
+ *  the loads then fold into the products). */
+static inline KeaLanes KeaLanesDot2LA(const MeReal *a, KeaLanes b, const MeReal *c, KeaLanes d)
 {
-    const KeaLanes l0 = KeaLanesLoad(v0->lin), a0 = KeaLanesLoad(v0->ang);
-    MeReal o0, o1, o2;
+    return KeaLanesAdd(KeaLanesMul(KeaLanesLoadA(a), b), KeaLanesMul(KeaLanesLoadA(c), d));
+}
+
+/** A contact's three rows J_r . (v0, v1) in lanes 0-2 (v1 NULL: on the world, whose half adds exact
+ *  zeros; J 16-byte aligned, as the work's rows are), the bodies' lanes loaded once for the three:
+ *  the sums of KeaRowVel4 / KeaRowVel4World, in their order, the three horizontal sums done at once
+ *  (KeaLanesSum3Each). */
+static inline KeaLanes KeaContactGather(const KeaJacobianRow *J, const KeaVel4 *v0, const KeaVel4 *v1)
+{
+    const KeaLanes l0 = KeaLanesLoadA(v0->lin), a0 = KeaLanesLoadA(v0->ang);
+    KeaLanes s0 = KeaLanesDot2LA(J[0].lin0, l0, J[0].ang0, a0), s1 = KeaLanesDot2LA(J[1].lin0, l0, J[1].ang0, a0),
+             s2 = KeaLanesDot2LA(J[2].lin0, l0, J[2].ang0, a0);
     if (v1) {
-        const KeaLanes l1 = KeaLanesLoad(v1->lin), a1 = KeaLanesLoad(v1->ang);
-        o0 = KeaLanesSum3(KeaLanesAdd(KeaLanesDot2L(J[0].lin0, l0, J[0].ang0, a0), KeaLanesDot2L(J[0].lin1, l1, J[0].ang1, a1)));
-        o1 = KeaLanesSum3(KeaLanesAdd(KeaLanesDot2L(J[1].lin0, l0, J[1].ang0, a0), KeaLanesDot2L(J[1].lin1, l1, J[1].ang1, a1)));
-        o2 = KeaLanesSum3(KeaLanesAdd(KeaLanesDot2L(J[2].lin0, l0, J[2].ang0, a0), KeaLanesDot2L(J[2].lin1, l1, J[2].ang1, a1)));
-    } else {
-        o0 = KeaLanesSum3(KeaLanesDot2L(J[0].lin0, l0, J[0].ang0, a0));
-        o1 = KeaLanesSum3(KeaLanesDot2L(J[1].lin0, l0, J[1].ang0, a0));
-        o2 = KeaLanesSum3(KeaLanesDot2L(J[2].lin0, l0, J[2].ang0, a0));
+        const KeaLanes l1 = KeaLanesLoadA(v1->lin), a1 = KeaLanesLoadA(v1->ang);
+        s0 = KeaLanesAdd(s0, KeaLanesDot2LA(J[0].lin1, l1, J[0].ang1, a1));
+        s1 = KeaLanesAdd(s1, KeaLanesDot2LA(J[1].lin1, l1, J[1].ang1, a1));
+        s2 = KeaLanesAdd(s2, KeaLanesDot2LA(J[2].lin1, l1, J[2].ang1, a1));
     }
-    out[0] = o0;
-    out[1] = o1;
-    out[2] = o2;
+    return KeaLanesSum3Each(s0, s1, s2);
 }
 
 /** J_r . B_c of two padded rows: KeaRowVel4 with B_c's halves as the two bodies' velocities. */
@@ -166,6 +170,22 @@ typedef struct KeaFreePiece {
     int body[2];  /**< the row halves' bodies (the world: nb) */
     int matrix;   /**< a segment: its block's offset in blockInv (the preconditioner); else -1 */
 } KeaFreePiece;
+
+/** A declared contact's constants for the contact step (kea_contact_kernel.h), laid out once a
+ *  solve (KeaContactConstsFill) as the step reads them, padded to lanes (pads 0): at JT + 12 s, the
+ *  room its block's transpose would take, which a contact (gathered row by row) does not use. */
+typedef struct KeaContactConsts {
+    _Alignas(16) MeReal inv[3][4]; /**< the columns of its block's inverse A_bb^-1 (when factored) */
+    MeReal eps[4];                 /**< its rows' eps_i */
+    MeReal rhs[4];                 /**< its rows' r_i */
+    MeReal mu[4];                  /**< its friction rows' mu (lanes 1, 2; lane 0 is 0) */
+} KeaContactConsts;
+
+/** The contact step's constants of the declared contact whose rows start at s. */
+static inline const KeaContactConsts *KeaContactConstsOf(const MeReal *JT, int s)
+{
+    return (const KeaContactConsts *)(const void *)(JT + 12 * s);
+}
 
 /** What one sweep carries from block to block and hands to each block step: a local of KeaSweep
  *  (the steps are inlined into it, so its fields live in registers, where in the work struct each
@@ -233,7 +253,9 @@ typedef struct KeaIterativeWork {
      * on the world, so that the extra body contributes exact zeros. */
     KeaJacobianRow *J;     /**< J_i with pads and world halves zeroed */
     MeReal *JT;            /**< per block of m rows from s, its 12 x m transpose J_b^T (pads
-                                dropped) at JT + 12 s: J_b v is then a sum of 12 columns */
+                                dropped) at JT + 12 s: J_b v is then a sum of 12 columns; a
+                                declared contact's (gathered row by row) holds its
+                                KeaContactConsts instead */
     MeReal *localD;        /**< a block's impulse changes */
     int (*body)[2];        /**< row halves' bodies, KEA_WORLD mapped to nb */
     MeReal *eps;           /**< eps_i (0 when the problem has none) */
@@ -385,6 +407,9 @@ static inline unsigned char KeaRowIsFree(const KeaIterativeWork *w, int i, MeRea
  * maxBlockRows rows), then split the rows into blocks and form and invert each block's matrix. */
 void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIterativeWork *w);
 void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap);
+
+/* kea_contact_consts.c: every declared contact's KeaContactConsts, after KeaSetUpBlocks. */
+void KeaContactConstsFill(const KeaProblem *problem, KeaIterativeWork *w);
 
 /* kea_nncg.c: NNCG's momentum step (KeaParameters.nonsmoothCg): KeaNncgStart before the first sweep,
  * KeaNncgStep after each sweep but the last (returns beta, 0 at a restart). */

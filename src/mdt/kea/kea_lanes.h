@@ -51,6 +51,36 @@ static inline int KeaLanesFinite3x4(const MeReal *a, const MeReal *b, const MeRe
     return (_mm_movemask_ps(_mm_and_ps(ab, cd)) & 7) == 7;
 }
 
+/** [p0, p1, p2, 0]: three reals into lanes (p[3] is not read). */
+static inline KeaLanes KeaLanesLoad3(const MeReal *p) { return _mm_setr_ps(p[0], p[1], p[2], 0.0f); }
+/** Lane k (0 to 3; a constant where it is called, so that this is one shuffle). */
+static inline MeReal KeaLanesAt(KeaLanes a, int k)
+{
+    switch (k) {
+    case 0: return _mm_cvtss_f32(a);
+    case 1: return _mm_cvtss_f32(_mm_shuffle_ps(a, a, _MM_SHUFFLE(1, 1, 1, 1)));
+    case 2: return _mm_cvtss_f32(_mm_movehl_ps(a, a));
+    default: return _mm_cvtss_f32(_mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 3, 3, 3)));
+    }
+}
+/** |a|, lane by lane (the sign bit cleared). */
+static inline KeaLanes KeaLanesAbs(KeaLanes a) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), a); }
+/** Bit k set where a_k <= b_k (false for a NaN), lanes 0-2 (the pad not looked at). */
+static inline int KeaLanesLe3(KeaLanes a, KeaLanes b) { return _mm_movemask_ps(_mm_cmple_ps(a, b)) & 7; }
+/** Bit k set where a_k < b_k (false for a NaN), lanes 0-2. */
+static inline int KeaLanesLt3(KeaLanes a, KeaLanes b) { return _mm_movemask_ps(_mm_cmplt_ps(a, b)) & 7; }
+/** Bit k set where a_k != 0 (true for a NaN), lanes 0-2. */
+static inline int KeaLanesNonZero3(KeaLanes a) { return _mm_movemask_ps(_mm_cmpneq_ps(a, _mm_setzero_ps())) & 7; }
+/** [KeaLanesSum3(a), KeaLanesSum3(b), KeaLanesSum3(c), 0]: the three sums at once, the same
+ *  additions in the same order (a transpose, then two additions of lanes). */
+static inline KeaLanes KeaLanesSum3Each(KeaLanes a, KeaLanes b, KeaLanes c)
+{
+    const __m128 zero = _mm_setzero_ps();
+    const __m128 ab01 = _mm_unpacklo_ps(a, b), c01 = _mm_unpacklo_ps(c, zero);
+    const __m128 ab23 = _mm_unpackhi_ps(a, b), c23 = _mm_unpackhi_ps(c, zero);
+    return _mm_add_ps(_mm_add_ps(_mm_movelh_ps(ab01, c01), _mm_movehl_ps(c01, ab01)), _mm_movelh_ps(ab23, c23));
+}
+
 /** Transpose the 4 x 4 matrix whose rows are a, b, c, d: afterwards a holds the first lanes of the
  *  four, b the second ones, and so on (moves only, no arithmetic). */
 static inline void KeaLanesTranspose4(KeaLanes *a, KeaLanes *b, KeaLanes *c, KeaLanes *d)
@@ -125,6 +155,45 @@ static inline int KeaLanesFinite3x4(const MeReal *a, const MeReal *b, const MeRe
         ok &= (a[k] > -MEINFINITY) & (a[k] < MEINFINITY) & (b[k] > -MEINFINITY) & (b[k] < MEINFINITY) &
               (c[k] > -MEINFINITY) & (c[k] < MEINFINITY) & (d[k] > -MEINFINITY) & (d[k] < MEINFINITY);
     return ok;
+}
+
+static inline KeaLanes KeaLanesLoad3(const MeReal *p)
+{
+    KeaLanes a;
+    int k;
+    for (k = 0; k < 3; ++k)
+        a.v[k] = p[k];
+    a.v[3] = ME_R(0.0);
+    return a;
+}
+static inline MeReal KeaLanesAt(KeaLanes a, int k) { return a.v[k]; }
+static inline KeaLanes KeaLanesAbs(KeaLanes a)
+{
+    int k;
+    for (k = 0; k < 4; ++k)
+        a.v[k] = MeFabs(a.v[k]);
+    return a;
+}
+static inline int KeaLanesLe3(KeaLanes a, KeaLanes b)
+{
+    return (a.v[0] <= b.v[0]) | (a.v[1] <= b.v[1]) << 1 | (a.v[2] <= b.v[2]) << 2;
+}
+static inline int KeaLanesLt3(KeaLanes a, KeaLanes b)
+{
+    return (a.v[0] < b.v[0]) | (a.v[1] < b.v[1]) << 1 | (a.v[2] < b.v[2]) << 2;
+}
+static inline int KeaLanesNonZero3(KeaLanes a)
+{
+    return (a.v[0] != ME_R(0.0)) | (a.v[1] != ME_R(0.0)) << 1 | (a.v[2] != ME_R(0.0)) << 2;
+}
+static inline KeaLanes KeaLanesSum3Each(KeaLanes a, KeaLanes b, KeaLanes c)
+{
+    KeaLanes s;
+    s.v[0] = (a.v[0] + a.v[1]) + a.v[2];
+    s.v[1] = (b.v[0] + b.v[1]) + b.v[2];
+    s.v[2] = (c.v[0] + c.v[1]) + c.v[2];
+    s.v[3] = ME_R(0.0);
+    return s;
 }
 
 static inline void KeaLanesTranspose4(KeaLanes *a, KeaLanes *b, KeaLanes *c, KeaLanes *d)
