@@ -6,29 +6,14 @@
 
 #include <karma/karma.h>
 
+#include "karma_ground.h"
+
 /* A universe with gravity along −z and a ground plane at z = 0. */
-typedef struct Scene {
-    MstUniverseID u;
-    MdtWorldID w;
-    MstBridgeID b;
-    McdFrameworkID fw;
-    MeMatrix4 groundTM;
-    McdModelID ground;
-} Scene;
+typedef KarmaGround Scene;
 
 static void sceneInit(Scene *s)
 {
-    MstUniverseSizes sizes = MstUniverseDefaultSizes;
-    sizes.massScale = 500; /* the bodies here are of a few hundred kilograms: ε scales with 1/massScale */
-    s->u = MstUniverseCreate(&sizes);
-    assert_non_null(s->u);
-    s->w = MstUniverseGetWorld(s->u);
-    s->b = MstUniverseGetBridge(s->u);
-    s->fw = MstUniverseGetFramework(s->u);
-    MdtWorldSetGravity(s->w, 0, 0, -9.81f);
-    MeMatrix4TMMakeIdentity(s->groundTM);
-    s->ground = MstFixedModelCreate(s->u, McdPlaneCreate(s->fw), s->groundTM);
-    assert_non_null(s->ground);
+    karma_ground_init(s, 500); /* the bodies here are of a few hundred kilograms: ε scales with 1/massScale */
 }
 
 static McdModelID sphereAt(Scene *s, MeReal r, MeReal x, MeReal y, MeReal z)

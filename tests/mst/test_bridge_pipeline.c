@@ -17,6 +17,8 @@
 
 #include <karma/karma.h>
 
+#include "karma_ground.h"
+
 #define GRID 5 /* GRID² spheres on a plane: GRID² pairs */
 #define MAX_LOG 4096
 
@@ -53,39 +55,24 @@ static MeBool logHas(int itemCount)
 
 /* ---- the scene: spheres resting on a plane, each touching it from the first step ------------------ */
 typedef struct Scene {
-    MstUniverseID u;
-    MdtWorldID w;
-    MstBridgeID b;
-    McdFrameworkID fw;
-    McdModelID ground;
+    KarmaGround g;
     McdModelID spheres[GRID * GRID];
-    MeMatrix4 groundTM;
 } Scene;
 
 static void sceneInit(Scene *s, int workers, int pairBuffer)
 {
     memset(s, 0, sizeof *s);
-    MstUniverseSizes sizes = MstUniverseDefaultSizes;
-    sizes.massScale = 500; /* spheres of 524 kg */
-    s->u = MstUniverseCreate(&sizes);
-    assert_non_null(s->u);
-    s->w = MstUniverseGetWorld(s->u);
-    s->b = MstUniverseGetBridge(s->u);
-    s->fw = MstUniverseGetFramework(s->u);
-    MdtWorldSetGravity(s->w, 0, 0, -9.81f);
-    MeMatrix4TMMakeIdentity(s->groundTM);
-    s->ground = MstFixedModelCreate(s->u, McdPlaneCreate(s->fw), s->groundTM);
-    assert_non_null(s->ground);
+    karma_ground_init(&s->g, 500); /* spheres of 524 kg */
     for (int i = 0; i < GRID * GRID; i++) {
-        s->spheres[i] = MstModelAndBodyCreate(s->u, McdSphereCreate(s->fw, 0.5f), 1000);
+        s->spheres[i] = MstModelAndBodyCreate(s->g.u, McdSphereCreate(s->g.fw, 0.5f), 1000);
         assert_non_null(s->spheres[i]);
         /* a little into the plane: contacts from the first step */
         MdtBodySetPosition(McdModelGetBody(s->spheres[i]), (MeReal)(2 * (i % GRID)), (MeReal)(2 * (i / GRID)), 0.49f);
     }
     if (pairBuffer > 0)
-        MstBridgeSetModelPairBufferSize(s->b, pairBuffer);
+        MstBridgeSetModelPairBufferSize(s->g.b, pairBuffer);
     if (workers > 1)
-        MstUniverseSetTaskSystem(s->u, workers, reversedEnqueue, finishNothing, NULL);
+        MstUniverseSetTaskSystem(s->g.u, workers, reversedEnqueue, finishNothing, NULL);
 }
 
 /* Step once, the task log cleared first; whether the bridge converted beside the tests (its first
@@ -93,8 +80,8 @@ static void sceneInit(Scene *s, int workers, int pairBuffer)
 static MeBool stepPipelined(Scene *s)
 {
     taskLogCount = 0;
-    MstUniverseStep(s->u, ME_R(1.0) / 60);
-    const int pairs = MstBridgeGetLastPairCount(s->b);
+    MstUniverseStep(s->g.u, ME_R(1.0) / 60);
+    const int pairs = MstBridgeGetLastPairCount(s->g.b);
     return pairs > 0 && logHas(pairs + 1); /* no other task has as many items in these scenes */
 }
 
@@ -118,14 +105,14 @@ static int runWithCallback(int workers, int *out)
 {
     Scene s;
     sceneInit(&s, workers, 10);
-    seenWorld = s.w;
+    seenWorld = s.g.w;
     seenCount = 0;
-    McdModelSetIntersectCallback(s.ground, recordConstraints);
+    McdModelSetIntersectCallback(s.g.ground, recordConstraints);
     for (int i = 0; i < 3; i++)
-        MstUniverseStep(s.u, ME_R(1.0) / 60);
+        MstUniverseStep(s.g.u, ME_R(1.0) / 60);
     memcpy(out, seen, sizeof seen);
     const int n = seenCount;
-    MstUniverseDestroy(s.u);
+    MstUniverseDestroy(s.g.u);
     return n;
 }
 
@@ -159,35 +146,35 @@ static void the_framework_counts_the_models_with_an_intersect_callback(void **st
     karma_capture_messages();
     Scene s;
     sceneInit(&s, 2, 0);
-    assert_int_equal(McdFrameworkGetIntersectCallbackCount(s.fw), 0);
+    assert_int_equal(McdFrameworkGetIntersectCallbackCount(s.g.fw), 0);
     assert_true(stepPipelined(&s));
     McdModelSetIntersectCallback(s.spheres[0], recordConstraints);
     McdModelSetIntersectCallback(s.spheres[0], recordConstraints); /* set again: still one */
     McdModelSetIntersectCallback(s.spheres[1], recordConstraints);
-    assert_int_equal(McdFrameworkGetIntersectCallbackCount(s.fw), 2);
-    seenWorld = s.w;
+    assert_int_equal(McdFrameworkGetIntersectCallbackCount(s.g.fw), 2);
+    seenWorld = s.g.w;
     assert_false(stepPipelined(&s));
     McdModelSetIntersectCallback(s.spheres[0], NULL);
-    assert_int_equal(McdFrameworkGetIntersectCallbackCount(s.fw), 1);
+    assert_int_equal(McdFrameworkGetIntersectCallbackCount(s.g.fw), 1);
     assert_false(stepPipelined(&s));
     McdModelReset(s.spheres[1]); /* a reset clears the callback */
-    assert_int_equal(McdFrameworkGetIntersectCallbackCount(s.fw), 0);
+    assert_int_equal(McdFrameworkGetIntersectCallbackCount(s.g.fw), 0);
     assert_true(stepPipelined(&s));
     /* destroyed with its callback: no longer counted */
     McdModelSetIntersectCallback(s.spheres[2], recordConstraints);
     MstModelAndBodyDestroy(s.spheres[2]);
-    assert_int_equal(McdFrameworkGetIntersectCallbackCount(s.fw), 0);
+    assert_int_equal(McdFrameworkGetIntersectCallbackCount(s.g.fw), 0);
     /* a model made in the destroyed one's slot starts without */
-    McdModelID m = McdModelCreate(McdSphereCreate(s.fw, 0.5f));
+    McdModelID m = McdModelCreate(McdSphereCreate(s.g.fw, 0.5f));
     assert_non_null(m);
-    assert_int_equal(McdFrameworkGetIntersectCallbackCount(s.fw), 0);
+    assert_int_equal(McdFrameworkGetIntersectCallbackCount(s.g.fw), 0);
     McdModelSetIntersectCallback(m, recordConstraints);
-    McdFrameworkDestroyAllModelsAndGeometries(s.fw);
-    assert_int_equal(McdFrameworkGetIntersectCallbackCount(s.fw), 0);
+    McdFrameworkDestroyAllModelsAndGeometries(s.g.fw);
+    assert_int_equal(McdFrameworkGetIntersectCallbackCount(s.g.fw), 0);
     const unsigned long warnings = karma_warning_count();
     assert_int_equal(McdFrameworkGetIntersectCallbackCount(NULL), 0);
     assert_int_equal(karma_warning_count(), warnings + 1); /* an invalid ID, reported */
-    MstUniverseDestroy(s.u);
+    MstUniverseDestroy(s.g.u);
 }
 
 /* ---- B2: material callbacks ------------------------------------------------------------------------ */
@@ -205,19 +192,19 @@ static void the_material_callbacks_are_counted_by_their_setters(void **state)
     karma_capture_messages();
     Scene s;
     sceneInit(&s, 2, 0);
-    const MstMaterialID other = MstBridgeGetNewMaterial(s.b);
+    const MstMaterialID other = MstBridgeGetNewMaterial(s.g.b);
     assert_true(stepPipelined(&s));
-    MstBridgeSetPerContactCB(s.b, other, 0, keepContact);
-    MstBridgeSetPerContactCB(s.b, 0, other, keepContact); /* the same entry: counted once */
+    MstBridgeSetPerContactCB(s.g.b, other, 0, keepContact);
+    MstBridgeSetPerContactCB(s.g.b, 0, other, keepContact); /* the same entry: counted once */
     assert_false(stepPipelined(&s));
-    MstBridgeSetPerContactCB(s.b, other, 0, NULL);
+    MstBridgeSetPerContactCB(s.g.b, other, 0, NULL);
     assert_true(stepPipelined(&s));
     /* the spheres' own material */
-    MstBridgeSetPerContactCB(s.b, 0, 0, keepContact);
+    MstBridgeSetPerContactCB(s.g.b, 0, 0, keepContact);
     assert_false(stepPipelined(&s));
-    MstBridgeSetPerContactCB(s.b, 0, 0, NULL);
+    MstBridgeSetPerContactCB(s.g.b, 0, 0, NULL);
     assert_true(stepPipelined(&s));
-    MstUniverseDestroy(s.u);
+    MstUniverseDestroy(s.g.u);
 }
 
 /* ---- B3: the task marks of a small universe --------------------------------------------------- */
@@ -310,7 +297,7 @@ static void records_that_could_not_be_made_are_not_asked_for_at_every_step(void 
     failAbove = 2 * 128 * 32 * sizeof(McdContact) / 2;
     bigAttempts = 0;
     const unsigned long oom = MeMessageGetCount(ME_ERR_OUT_OF_MEMORY);
-    MstUniverseSetTaskSystem(s.u, 2, reversedEnqueue, finishNothing, NULL);
+    MstUniverseSetTaskSystem(s.g.u, 2, reversedEnqueue, finishNothing, NULL);
     assert_int_equal(bigAttempts, 1);
     assert_int_equal(MeMessageGetCount(ME_ERR_OUT_OF_MEMORY) - oom, 1);
     for (int i = 0; i < 5; i++)
@@ -318,12 +305,12 @@ static void records_that_could_not_be_made_are_not_asked_for_at_every_step(void 
     assert_int_equal(bigAttempts, 1);
     assert_int_equal(MeMessageGetCount(ME_ERR_OUT_OF_MEMORY) - oom, 1);
     /* a smaller contact buffer: the records are made again, and fit */
-    MstBridgeSetContactBufferSize(s.b, 8);
+    MstBridgeSetContactBufferSize(s.g.b, 8);
     assert_true(stepPipelined(&s));
     assert_int_equal(bigAttempts, 1);
     MeMemorySetAPI(NULL);
     failAbove = 0;
-    MstUniverseDestroy(s.u);
+    MstUniverseDestroy(s.g.u);
 }
 
 /* ---- B6: the conversion's messages -------------------------------------------------------------- */
@@ -349,13 +336,13 @@ static void a_conversion_on_workers_names_the_application_call(void **state)
         sceneInit(&s, workers, 0);
         McdModelSetMaterial(s.spheres[3], 7); /* the bridge has one material */
         materialMessages = 0;
-        MstUniverseStep(s.u, ME_R(1.0) / 60);
+        MstUniverseStep(s.g.u, ME_R(1.0) / 60);
         assert_int_equal(materialMessages, 1);
         assert_string_equal(materialFunction, "MstUniverseStep");
-        MstBridgeUpdateContacts(s.b, MstUniverseGetSpace(s.u), s.w);
+        MstBridgeUpdateContacts(s.g.b, MstUniverseGetSpace(s.g.u), s.g.w);
         assert_int_equal(materialMessages, 2);
         assert_string_equal(materialFunction, "MstBridgeUpdateContacts");
-        MstUniverseDestroy(s.u);
+        MstUniverseDestroy(s.g.u);
     }
     karma_capture_messages();
 }
@@ -370,12 +357,12 @@ static uint64_t runChunks(int workers, int pairBuffer)
         if (workers > 1 && pairBuffer == 0)
             assert_true(stepPipelined(&s));
         else
-            MstUniverseStep(s.u, ME_R(1.0) / 60);
-        assert_int_equal(MstBridgeGetLastPairCount(s.b), GRID * GRID);
-        assert_int_equal(MstBridgeGetLastContactCount(s.b), GRID * GRID);
-        hash = karma_hash_world(hash, s.w);
+            MstUniverseStep(s.g.u, ME_R(1.0) / 60);
+        assert_int_equal(MstBridgeGetLastPairCount(s.g.b), GRID * GRID);
+        assert_int_equal(MstBridgeGetLastContactCount(s.g.b), GRID * GRID);
+        hash = karma_hash_world(hash, s.g.w);
     }
-    MstUniverseDestroy(s.u);
+    MstUniverseDestroy(s.g.u);
     return hash;
 }
 

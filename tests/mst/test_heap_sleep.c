@@ -13,11 +13,12 @@
 
 #include <karma/karma.h>
 
+#include "karma_heap.h"
+
 #define HEAP 120
 #define STEP (ME_R(1.0) / 60)
 #define SLEEP_LIMIT_S 25.0 /* the stated time: the heap is asleep 25 s after the drop */
 #define GRAVITY ME_R(9.81)
-#define EDGE_JITTER 0.1 /* box edges 0.9 to 1.1 m */
 
 typedef struct Heap {
     MstUniverseID u;
@@ -25,52 +26,18 @@ typedef struct Heap {
     MdtBodyID body[HEAP];
 } Heap;
 
-static double uniform(unsigned long long *state) /* [-1, 1) */
-{
-    *state = *state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(*state >> 11) / 4503599627370496.0 - 1.0;
-}
-
-/* Boxes of edges 0.9 to 1.1 m, 16 to a layer on a 4 x 4 grid 1.6 m apart, layers 1.6 m apart: no two overlap at the start. */
+/* The heap of tests/support/karma_heap.c from seed 17 (tools/heap_sleep builds it from other seeds:
+ * the heap is chaotic, and this one is one draw of many). */
 static void buildHeap(Heap *h, MeReal averagingTime)
 {
-    MstUniverseSizes sizes = MstUniverseDefaultSizes;
-    sizes.massScale = 1;
-    sizes.dynamicBodiesMaxCount = HEAP;
-    sizes.collisionModelsMaxCount = HEAP + 1;
-    sizes.collisionPairsMaxCount = 10 * HEAP;
-    sizes.dynamicConstraintsMaxCount = 30 * HEAP;
-    h->u = MstUniverseCreate(&sizes);
+    h->u = karma_heap_build(HEAP, 17, h->body);
     assert_non_null(h->u);
     h->w = MstUniverseGetWorld(h->u);
-    MdtWorldSetGravity(h->w, 0, 0, -GRAVITY);
+    for (int i = 0; i < HEAP; i++)
+        assert_non_null(h->body[i]);
     assert_true(MdtWorldGetAutoDisable(h->w));
     assert_true(MdtWorldGetAutoDisableAveragingTime(h->w) == MDTWORLD_DEFAULT_AVERAGING_TIME);
     MdtWorldSetAutoDisableAveragingTime(h->w, averagingTime);
-    static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
-    McdFrameworkID fw = MstUniverseGetFramework(h->u);
-    assert_non_null(MstFixedModelCreate(h->u, McdPlaneCreate(fw), groundTM));
-    MdtContactParamsID p = MstBridgeGetContactParams(MstUniverseGetBridge(h->u), 0, 0);
-    MdtContactParamsSetType(p, MdtContactTypeFriction2D);
-    MdtContactParamsSetFrictionModel(p, MdtFrictionModelNormalForce);
-    MdtContactParamsSetFrictionCoeffecient(p, ME_R(0.6));
-    unsigned long long rng = 17;
-    for (int i = 0; i < HEAP; i++) {
-        const int layer = i / 16, j = i % 16;
-        const MeReal x = (MeReal)(((j % 4) - 1.5) * 1.6 + 0.1 * uniform(&rng));
-        const MeReal y = (MeReal)(((j / 4) - 1.5) * 1.6 + 0.1 * uniform(&rng));
-        double axis[3] = {uniform(&rng), uniform(&rng), uniform(&rng)};
-        const double len = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]) + 1e-9;
-        const double half = 0.5 * 3.14159265358979 * uniform(&rng);
-        const MeReal edge[3] = {(MeReal)(1.0 + EDGE_JITTER * uniform(&rng)), (MeReal)(1.0 + EDGE_JITTER * uniform(&rng)),
-                                (MeReal)(1.0 + EDGE_JITTER * uniform(&rng))};
-        McdModelID m = MstModelAndBodyCreate(h->u, McdBoxCreate(fw, edge[0], edge[1], edge[2]), 1);
-        assert_non_null(m);
-        h->body[i] = McdModelGetBody(m);
-        MdtBodySetPosition(h->body[i], x, y, (MeReal)(1.0 + 1.6 * layer));
-        MdtBodySetQuaternion(h->body[i], (MeReal)cos(half), (MeReal)(sin(half) * axis[0] / len),
-                             (MeReal)(sin(half) * axis[1] / len), (MeReal)(sin(half) * axis[2] / len));
-    }
 }
 
 static MeReal speed(MdtBodyID b)
