@@ -92,7 +92,9 @@ KeaBodyFactor *KeaBodyFactorCreate(KeaArena *arena, int n, int nb)
 }
 
 /* 3 x 3 inverse of a symmetric positive definite matrix (the body's inertia from its inverse);
- * returns 0 when it is not safely invertible. */
+ * returns 0 when it is not safely invertible.
+ * Not MeMatrix3SymmetricInvert, which takes any non-singular symmetric matrix: H's Cholesky needs a
+ * positive definite inertia, held to the row factor's pivot floor (a refusal: the row factor). */
 static int KeaInverse3(const MeReal m[3][3], MeReal out[3][3])
 {
     const MeReal c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1], c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2],
@@ -152,8 +154,9 @@ static void KeaHalf6(const KeaJacobianRow *J, int h, MeReal *a)
     a[6] = a[7] = ME_R(0.0); /* the lanes' pad (KeaBodyFactorBlock) */
 }
 
-/* H's block (s1, s2) += c a1 a2^T, all 36 entries (in a diagonal block the upper ones are never
- * read), each row as eight lanes: a2's last two are 0, so they add 0 to the entries after the block.
+/* H's block (s1, s2) += c a1 a2^T, each row as eight lanes: a2's last two are 0, so they add 0 to
+ * the entries after the block. In a diagonal block the entries above the diagonal are never read:
+ * its first four rows get only their first four lanes.
  * Size: H's storage (pointer, stride), the block's place and the outer product's three factors. */
 static void KeaBodyFactorBlock(MeReal *H, int ld, int s1, int s2, MeReal c, const MeReal *a1, const MeReal *a2)
 {
@@ -163,7 +166,8 @@ static void KeaBodyFactorBlock(MeReal *H, int ld, int s1, int s2, MeReal c, cons
         MeReal *row = H + (size_t)(s1 + p) * (size_t)ld + (size_t)s2;
         const KeaLanes cp = KeaLanesSplat(c * a1[p]);
         KeaLanesStore(row, KeaLanesAdd(KeaLanesLoad(row), KeaLanesMul(cp, lo)));
-        KeaLanesStore(row + 4, KeaLanesAdd(KeaLanesLoad(row + 4), KeaLanesMul(cp, hi)));
+        if (p >= 4 || s1 != s2)
+            KeaLanesStore(row + 4, KeaLanesAdd(KeaLanesLoad(row + 4), KeaLanesMul(cp, hi)));
     }
 }
 

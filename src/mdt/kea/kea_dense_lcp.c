@@ -75,6 +75,7 @@ struct KeaDenseWork {
     MeReal *t;           /**< n/2 */
     MeReal *cand;        /**< n: candidate solution */
     int *slot;           /**< n: column of a normal row in U, or -1 */
+    unsigned char *sliding; /**< n: KeaIsSliding of each row, set once by each polish */
     int *normals;        /**< n/2: normal rows with sliding friction rows */
     int *perm;           /**< n/2: row swaps of the capacitance matrix's LU */
     int velocityCurrent; /**< the last solve ended on an accepted polish whose products left
@@ -82,6 +83,8 @@ struct KeaDenseWork {
     int velocityOfX;     /**< lcp->velocity holds M^-1 J^T x for the x of the last pricing, which
                               found the optimum, and x has not moved since (the refinement's) */
     MeReal residual;     /**< then: KeaResidualWithDiagonal of the returned x (same sums) */
+    MeReal rScale;       /**< max |r_i| of the LCP being solved (the tolerances' scale) */
+    MeReal diagMax;      /**< max A_ii of the LCP being solved */
     KeaBodyFactor *body; /**< the free rows solved through the bodies (kea_body_factor.c), or NULL */
 };
 
@@ -108,6 +111,7 @@ KeaDenseWork *KeaDenseWorkCreate(KeaArena *arena, int n)
     w->t = KEA_ALLOC(arena, MeReal, half);
     w->cand = KEA_ALLOC(arena, MeReal, n);
     w->slot = KEA_ALLOC(arena, int, n);
+    w->sliding = KEA_ALLOC(arena, unsigned char, n);
     w->normals = KEA_ALLOC(arena, int, half);
     w->perm = KEA_ALLOC(arena, int, half);
     w->chol.ld = n;
@@ -275,8 +279,8 @@ static int KeaRatioTest(const KeaDenseWork *w, const MeReal *x, MeReal *alpha, i
 
 /* The active-set method's pricing, at the optimum on the current face: the fixed row (not locked)
  * whose multiplier points inside its bounds by more than the tolerance, the largest w_j^2 / A_jj
- * first; -1 when none does (the box QP's optimum). rScale, diagMax: max |r_i| and max A_ii. */
-static int KeaEnteringRow(const KeaDenseLcp *lcp, KeaDenseWork *w, const MeReal *x, MeReal rScale, MeReal diagMax)
+ * first; -1 when none does (the box QP's optimum). */
+static int KeaEnteringRow(const KeaDenseLcp *lcp, KeaDenseWork *w, const MeReal *x)
 {
     const int n = lcp->n;
     MeReal xScale = ME_R(0.0), tolW, bestScore = ME_R(0.0);
@@ -284,7 +288,7 @@ static int KeaEnteringRow(const KeaDenseLcp *lcp, KeaDenseWork *w, const MeReal 
     for (j = 0; j < n; ++j)
         xScale = KeaMax(xScale, KeaFabs(x[j]));
     nz = KeaDensePrepare(lcp, w, x, w->nonzero);
-    tolW = KEA_DIRECT_TOL * (rScale + diagMax * xScale);
+    tolW = KEA_DIRECT_TOL * (w->rScale + w->diagMax * xScale);
     for (j = 0; j < n; ++j) {
         MeReal wj, score;
         if (w->state[j] == KEA_FREE || w->locked[j] || !(w->lo[j] < w->hi[j]))
@@ -310,13 +314,8 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
     const int n = lcp->n;
     const MeReal *r = lcp->r;
     KeaCholesky *c = &w->chol;
-    MeReal rScale = ME_R(0.0), diagMax = ME_R(0.0);
     int i, j, p, lastFreed = -1, nLocked = 0;
 
-    for (i = 0; i < n; ++i) {
-        rScale = KeaMax(rScale, KeaFabs(r[i]));
-        diagMax = KeaMax(diagMax, lcp->A[(size_t)i * (size_t)n + (size_t)i]);
-    }
     for (i = 0; i < n; ++i)
         w->locked[i] = 0;
     w->velocityOfX = 0; /* x moves from here (and moved in KeaDenseApplyBounds before) */
@@ -371,7 +370,7 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
 
         /* 3. Optimal on the face: look for a fixed row whose multiplier has the wrong sign. */
         {
-            const int best = KeaEnteringRow(lcp, w, x, rScale, diagMax);
+            const int best = KeaEnteringRow(lcp, w, x);
             if (best < 0)
                 return KeaStatusOk;
             w->state[best] = KEA_FREE;
@@ -508,7 +507,7 @@ static void KeaPolishCandidate(const KeaDenseLcp *lcp, KeaDenseWork *w)
     for (p = 0; p < c->size; ++p)
         w->cand[c->F[p]] = w->y[p];
     for (i = 0; i < lcp->n; ++i)
-        if (KeaIsSliding(lcp, w, i))
+        if (w->sliding[i])
             w->cand[i] = (w->state[i] == KEA_AT_HI ? ME_R(1.0) : ME_R(-1.0)) * lcp->mu[i] *
                          w->cand[lcp->link[i]];
 }
@@ -528,7 +527,7 @@ static int KeaPolishCapacitance(const KeaDenseLcp *lcp, KeaDenseWork *w, int m)
         w->U[p] = ME_R(0.0);
     for (i = 0; i < n; ++i) {
         MeReal coef, *u;
-        if (!KeaIsSliding(lcp, w, i))
+        if (!w->sliding[i])
             continue;
         coef = (w->state[i] == KEA_AT_HI ? ME_R(1.0) : ME_R(-1.0)) * lcp->mu[i];
         u = w->U + (size_t)w->slot[lcp->link[i]] * (size_t)k;
@@ -569,15 +568,12 @@ static int KeaPolishCapacitance(const KeaDenseLcp *lcp, KeaDenseWork *w, int m)
 static int KeaPolishAccept(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
 {
     const int n = lcp->n;
-    MeReal rScale = ME_R(0.0), diagMax = ME_R(0.0), xScale = ME_R(0.0), tolW, tolX, worst = ME_R(0.0);
+    MeReal xScale = ME_R(0.0), tolW, tolX, worst = ME_R(0.0);
     int i, nz, unchanged = 1, positive = 1;
 
-    for (i = 0; i < n; ++i) {
-        rScale = KeaMax(rScale, KeaFabs(lcp->r[i]));
-        diagMax = KeaMax(diagMax, lcp->A[(size_t)i * (size_t)n + (size_t)i]);
+    for (i = 0; i < n; ++i)
         xScale = KeaMax(xScale, KeaFabs(w->cand[i]));
-    }
-    tolW = KEA_POLISH_TOL_W * KEA_DIRECT_TOL * (rScale + diagMax * xScale);
+    tolW = KEA_POLISH_TOL_W * KEA_DIRECT_TOL * (w->rScale + w->diagMax * xScale);
     tolX = KEA_POLISH_TOL_X * KEA_DIRECT_TOL * xScale;
     nz = KeaDensePrepare(lcp, w, w->cand, w->nonzero);
     for (i = 0; i < n; ++i) { /* natural-map test at the candidate's own bounds, every row alike */
@@ -620,7 +616,8 @@ static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
     for (i = 0; i < n; ++i)
         w->slot[i] = -1;
     for (i = 0; i < n; ++i) {
-        if (!KeaIsSliding(lcp, w, i) || w->slot[lcp->link[i]] >= 0)
+        w->sliding[i] = (unsigned char)KeaIsSliding(lcp, w, i);
+        if (!w->sliding[i] || w->slot[lcp->link[i]] >= 0)
             continue;
         w->slot[lcp->link[i]] = m;
         w->normals[m++] = lcp->link[i];
@@ -630,7 +627,7 @@ static int KeaDensePolish(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
 
     /* Solve from cand = x with the free and sliding rows zeroed, then one refinement step. */
     for (i = 0; i < n; ++i)
-        w->cand[i] = (w->state[i] == KEA_FREE || KeaIsSliding(lcp, w, i)) ? ME_R(0.0) : x[i];
+        w->cand[i] = (w->state[i] == KEA_FREE || w->sliding[i]) ? ME_R(0.0) : x[i];
     KeaFreeRowsResidual(lcp, w, w->cand);
     KeaWoodburySolve(w, m, w->y);
     KeaPolishCandidate(lcp, w);
@@ -677,6 +674,7 @@ KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses,
     const int n = lcp->n;
     const int pivotCap = stats->pivots + (maxPivots > 0 ? maxPivots : KEA_DENSE_PIVOTS_PER_ROW * n + KEA_DENSE_PIVOTS_EXTRA);
     KeaStatus status;
+    MeReal rScale = ME_R(0.0), diagMax = ME_R(0.0);
     int i, polished = 0, passes = 1;
 
     w->chol.regularised = 0;
@@ -685,8 +683,13 @@ KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses,
     w->chol.patternStart = lcp->patternStart;
     w->chol.pattern = lcp->pattern;
     /* Warm start: bounds from x as given (links read the unclamped normal impulses), then clamp. */
-    for (i = 0; i < n; ++i)
+    for (i = 0; i < n; ++i) {
         KeaDenseBounds(lcp, x, i, &w->lo[i], &w->hi[i]);
+        rScale = KeaMax(rScale, KeaFabs(lcp->r[i]));
+        diagMax = KeaMax(diagMax, lcp->A[(size_t)i * (size_t)n + (size_t)i]);
+    }
+    w->rScale = rScale;
+    w->diagMax = diagMax;
     for (i = 0; i < n; ++i)
         w->state[i] = KeaStateFromValue(&x[i], w->lo[i], w->hi[i]);
     { /* A row at a bound whose multiplier already says it would move inside starts free: the

@@ -34,6 +34,17 @@ void KeaEliminationOrder(const KeaProblem *problem, const int *incidence, const 
     int *count = stack + 2 * n + nb; /* nb + 2: rows per rank, then where each rank's rows start */
     int visited = 0, b, i, root;
 
+    if (nb == 1) { /* a block or a ball on the world: the same order without the search */
+        int k = 0;
+        rank[0] = 0;
+        for (i = 0; i < n; ++i)
+            if (problem->rowBodies[i][0] < 0 && problem->rowBodies[i][1] < 0)
+                order[k++] = i;
+        for (i = 0; i < n; ++i)
+            if (problem->rowBodies[i][0] >= 0 || problem->rowBodies[i][1] >= 0)
+                order[k++] = i;
+        return;
+    }
     for (b = 0; b < nb; ++b)
         rank[b] = -1;
     /* Depth-first preorder from the busiest body (a ragdoll's torso: its limbs become subtrees);
