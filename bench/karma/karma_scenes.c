@@ -313,6 +313,8 @@ static MeBool karma_make_universe(KarmaWorld *w, const BenchScene *scene, MeBool
     }
     MdtWorldSetGravity(w->world, (MeReal)scene->gravity[0], (MeReal)scene->gravity[1], (MeReal)scene->gravity[2]);
     MdtWorldSetAutoDisable(w->world, autoDisable);
+    if (env_flag("KARMA_DEFLATION"))
+        MdtWorldSetDeflation(w->world, METRUE);
     const char *splitRows = getenv("KARMA_SPLIT_ROWS");
     if (splitRows && *splitRows)
         MdtWorldSetPartitionSplitRows(w->world, atoi(splitRows));

@@ -1,0 +1,220 @@
+/* kea_deflation.c -- a coarse correction (deflation) on Kea's iterative path (kea_iterative.h,
+ * KeaParameters.deflation): after each pair of sweeps (and the SM step between, when it runs), the
+ * QP objective f(x) = 1/2 x^T A x - r^T x is minimised exactly over x + sum_k alpha_k d_k for a few
+ * directions d_k that the solve has made itself:
+ *   d_0 = the last pass's change of x,
+ *   d_1 = the change of the pass before (after its own correction: NNCG's direction p),
+ *   d_2 = the change since the warm start.
+ * The slow mode of a stack (a wall's sway) is global and moves little from one pass to the next, so
+ * the passes' changes hold it; a sweep only moves it a neighbour at a time. The step is NNCG's
+ * momentum (kea_nncg.c) with its length found, not guessed, and with a third direction.
+ *
+ * The k x k system (k <= 3) needs no product with J: each d_k's image M^-1 J^T d_k is the change of
+ * dv that came with it (kept beside x, as NNCG keeps it), so one pass over the rows gathers
+ * g = D^T w (w = J dv + eps x - r) and G = D^T A D, and alpha solves G alpha = -g (directions that
+ * add nothing new dropped at the factor's pivots). The step u = D alpha is clipped to the bounds as
+ * they stand (friction bounds from the normal rows' x, frozen as SM freezes them); the clipped part
+ * c = s - u of the step s is on few rows, so the objective's change
+ *   f(x + s) - f(x) = alpha.g + 1/2 alpha^T G alpha + c.(w + A u) + 1/2 c^T A c
+ * costs a scatter and gathers of those rows only. As SM's trial, a step that does not lower f is
+ * halved (KEA_SM_LINE_SEARCH_TRIES times) and otherwise dropped, so the correction never makes the QP
+ * worse. It runs on the solve's own thread in a split solve (serial passes: the same bits for any
+ * worker count). */
+#include <string.h>
+
+#include "kea_iterative.h"
+
+enum { KEA_DEFLATION_DIRECTIONS = 3 };
+
+/* A direction's pivot below this fraction of its diagonal adds nothing new: dropped. */
+#define KEA_DEFLATION_DROP ME_R(1e-6)
+
+/* The directions' images: out[k] = J_i (M^-1 J^T d_k) + eps_i d_k,i for row i. */
+typedef struct KeaDeflationRow {
+    MeReal d[KEA_DEFLATION_DIRECTIONS];  /* d_k,i */
+    MeReal Ad[KEA_DEFLATION_DIRECTIONS]; /* (A d_k)_i */
+    MeReal w;                            /* w_i at x */
+} KeaDeflationRow;
+
+/* Row i's entries of the directions, their images and w (the images by differences of dv: d_0's is
+ * dv - dvPrev, d_1's dvDir, d_2's dv - dvStart). */
+static void KeaDeflationRowOf(const KeaProblem *problem, const KeaIterativeWork *w, const MeReal *x, int i,
+                              KeaDeflationRow *row)
+{
+    const KeaJacobianRow *J = &w->J[i];
+    const int b0 = w->body[i][0], b1 = w->body[i][1];
+    const MeReal eps = w->eps[i];
+    const MeReal jv = KeaRowVel4(J, &w->dv[b0], &w->dv[b1]);
+    row->d[0] = x[i] - w->xPrev[i];
+    row->d[1] = w->nncgDir[i];
+    row->d[2] = x[i] - w->xStart[i];
+    row->Ad[0] = jv - KeaRowVel4(J, &w->dvPrev[b0], &w->dvPrev[b1]) + eps * row->d[0];
+    row->Ad[1] = KeaRowVel4(J, &w->dvDir[b0], &w->dvDir[b1]) + eps * row->d[1];
+    row->Ad[2] = jv - KeaRowVel4(J, &w->dvStart[b0], &w->dvStart[b1]) + eps * row->d[2];
+    row->w = jv + eps * x[i] - problem->rhs[i];
+}
+
+/* alpha solving G alpha = -g (G row-major, 3 x 3) over the first k directions by Cholesky, a direction whose pivot is
+ * not above KEA_DEFLATION_DROP of its diagonal left out (its alpha 0); returns the directions kept. */
+int KeaDeflationSolve(int k, const MeReal G[9], const MeReal g[3], MeReal alpha[3])
+{
+    MeReal L[3][3] = {{0}}, y[3] = {0};
+    int keep[3] = {0}, i, j, m, kept = 0;
+    for (i = 0; i < k; ++i) {
+        MeReal pivot = G[3 * i + i];
+        for (m = 0; m < i; ++m)
+            pivot -= L[i][m] * L[i][m];
+        alpha[i] = ME_R(0.0);
+        if (!(pivot > KEA_DEFLATION_DROP * G[3 * i + i]) || !(G[3 * i + i] > ME_R(0.0)))
+            continue; /* L[i][*] stays 0 */
+        keep[i] = 1;
+        ++kept;
+        L[i][i] = KeaSqrt(pivot);
+        for (j = i + 1; j < k; ++j) {
+            MeReal s = G[3 * j + i];
+            for (m = 0; m < i; ++m)
+                s -= L[j][m] * L[i][m];
+            L[j][i] = s / L[i][i];
+        }
+    }
+    for (i = 0; i < k; ++i) /* L y = -g */
+        if (keep[i]) {
+            MeReal s = -g[i];
+            for (m = 0; m < i; ++m)
+                s -= L[i][m] * y[m];
+            y[i] = s / L[i][i];
+        }
+    for (i = k - 1; i >= 0; --i) /* L^T alpha = y */
+        if (keep[i]) {
+            MeReal s = y[i];
+            for (m = i + 1; m < k; ++m)
+                s -= L[m][i] * alpha[m];
+            alpha[i] = s / L[i][i];
+        }
+    for (i = k; i < KEA_DEFLATION_DIRECTIONS; ++i)
+        alpha[i] = ME_R(0.0);
+    return kept;
+}
+
+/* The trial step s = mid(lo, x + D alpha, hi) - x into s (n rows), its clipped part c = s - D alpha
+ * into c; returns f(x + s) - f(x) (top comment), dvTmp left holding M^-1 J^T c. */
+static MeReal KeaDeflationTrial(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x,
+                                const MeReal alpha[3], MeReal model, MeReal *s, MeReal *c)
+{
+    const int n = problem->nRows;
+    MeReal cross = ME_R(0.0), cAc = ME_R(0.0);
+    int i, clipped = 0;
+    memset(w->dvTmp, 0, sizeof(KeaVel4) * (size_t)(w->nb + 1));
+    for (i = 0; i < n; ++i) {
+        KeaDeflationRow row;
+        MeReal lo, hi, u;
+        row.d[0] = x[i] - w->xPrev[i];
+        row.d[1] = w->nncgDir[i];
+        row.d[2] = x[i] - w->xStart[i];
+        u = (alpha[0] * row.d[0] + alpha[1] * row.d[1]) + alpha[2] * row.d[2];
+        KeaRowBoundsInline(problem, x, i, &lo, &hi);
+        s[i] = KeaClamp(x[i] + u, lo, hi) - x[i];
+        c[i] = s[i] - u;
+        if (c[i] != ME_R(0.0)) {
+            KeaDeflationRowOf(problem, w, x, i, &row);
+            cross += c[i] * (row.w + ((alpha[0] * row.Ad[0] + alpha[1] * row.Ad[1]) + alpha[2] * row.Ad[2]));
+            KeaRowApply4(&w->B[i], c[i], &w->dvTmp[w->body[i][0]], &w->dvTmp[w->body[i][1]]);
+            clipped = 1;
+        }
+    }
+    if (clipped)
+        for (i = 0; i < n; ++i)
+            if (c[i] != ME_R(0.0))
+                cAc += c[i] * (KeaRowVel4(&w->J[i], &w->dvTmp[w->body[i][0]], &w->dvTmp[w->body[i][1]]) +
+                               w->eps[i] * c[i]);
+    return model + cross + ME_R(0.5) * cAc;
+}
+
+/* Before the first sweep: remember x and dv (the warm start's, and the pass's start), no direction. */
+void KeaDeflationStart(KeaIterativeWork *w, const MeReal *x, int n)
+{
+    memcpy(w->xStart, x, sizeof(MeReal) * (size_t)n);
+    memcpy(w->dvStart, w->dv, sizeof(KeaVel4) * (size_t)(w->nb + 1));
+    memcpy(w->xPrev, x, sizeof(MeReal) * (size_t)n);
+    memcpy(w->dvPrev, w->dv, sizeof(KeaVel4) * (size_t)(w->nb + 1));
+    memset(w->nncgDir, 0, sizeof(MeReal) * (size_t)n);
+    memset(w->dvDir, 0, sizeof(KeaVel4) * (size_t)(w->nb + 1));
+    w->nncgLast = ME_R(0.0);
+}
+
+/* Apply the accepted step: x += s, dv += D alpha's image + dvTmp (c's); then the pass's whole change
+ * becomes d_1 for the next, and x, dv the next pass's start. alpha all 0: nothing applied. */
+static void KeaDeflationApply(const KeaProblem *problem, KeaIterativeWork *w, MeReal *x, const MeReal alpha[3],
+                              const MeReal *s)
+{
+    const int n = problem->nRows, nb = w->nb;
+    const int moved = alpha[0] != ME_R(0.0) || alpha[1] != ME_R(0.0) || alpha[2] != ME_R(0.0);
+    int i, b, k;
+    for (i = 0; i < n; ++i) {
+        if (moved)
+            x[i] += s[i];
+        w->nncgDir[i] = x[i] - w->xPrev[i];
+        w->xPrev[i] = x[i];
+    }
+    for (b = 0; b < nb; ++b)
+        for (k = 0; k < 4; ++k) {
+            MeReal lin = w->dv[b].lin[k], ang = w->dv[b].ang[k];
+            if (moved) {
+                lin += ((alpha[0] * (lin - w->dvPrev[b].lin[k]) + alpha[1] * w->dvDir[b].lin[k]) +
+                        alpha[2] * (lin - w->dvStart[b].lin[k])) + w->dvTmp[b].lin[k];
+                ang += ((alpha[0] * (ang - w->dvPrev[b].ang[k]) + alpha[1] * w->dvDir[b].ang[k]) +
+                        alpha[2] * (ang - w->dvStart[b].ang[k])) + w->dvTmp[b].ang[k];
+                w->dv[b].lin[k] = lin;
+                w->dv[b].ang[k] = ang;
+            }
+            w->dvDir[b].lin[k] = lin - w->dvPrev[b].lin[k];
+            w->dvDir[b].ang[k] = ang - w->dvPrev[b].ang[k];
+            w->dvPrev[b].lin[k] = lin;
+            w->dvPrev[b].ang[k] = ang;
+        }
+}
+
+/* After a pass that is not the solve's last: the coarse correction; returns the objective's change
+ * (< 0) or 0 when no step lowered it (x and dv then as the pass left them). */
+MeReal KeaDeflationStep(const KeaProblem *problem, KeaIterativeWork *w, MeReal *x)
+{
+    const int n = problem->nRows;
+    const int k = w->nncgLast > ME_R(0.0) ? KEA_DEFLATION_DIRECTIONS : 1; /* the first pass: d_0 alone */
+    MeReal G[9] = {0}, g[3] = {0}, alpha[3] = {0}, scale, df = ME_R(0.0);
+    int i, a, b, tries;
+    for (i = 0; i < n; ++i) {
+        KeaDeflationRow row;
+        KeaDeflationRowOf(problem, w, x, i, &row);
+        for (a = 0; a < k; ++a) {
+            g[a] += row.d[a] * row.w;
+            for (b = 0; b <= a; ++b)
+                G[3 * a + b] += row.d[a] * row.Ad[b];
+        }
+    }
+    for (a = 0; a < k; ++a)
+        for (b = a + 1; b < k; ++b)
+            G[3 * a + b] = G[3 * b + a];
+    w->nncgLast = ME_R(1.0); /* a direction d_1 exists from the next pass on */
+    if (KeaDeflationSolve(k, G, g, alpha) > 0) {
+        MeReal *s = w->z, *c = w->q; /* SM's scratch: free between SM steps (KeaFreePositions >= n) */
+        for (tries = 0, scale = ME_R(1.0); tries < KEA_SM_LINE_SEARCH_TRIES; ++tries, scale *= ME_R(0.5)) {
+            MeReal model = ME_R(0.0), t[3];
+            for (a = 0; a < KEA_DEFLATION_DIRECTIONS; ++a)
+                t[a] = scale * alpha[a];
+            for (a = 0; a < k; ++a) {
+                MeReal Gt = ME_R(0.0);
+                for (b = 0; b < k; ++b)
+                    Gt += G[3 * a + b] * t[b];
+                model += t[a] * (g[a] + ME_R(0.5) * Gt);
+            }
+            df = KeaDeflationTrial(problem, w, x, t, model, s, c);
+            if (df < ME_R(0.0)) {
+                KeaDeflationApply(problem, w, x, t, s);
+                return df;
+            }
+        }
+    }
+    alpha[0] = alpha[1] = alpha[2] = ME_R(0.0);
+    KeaDeflationApply(problem, w, x, alpha, NULL);
+    return ME_R(0.0);
+}
