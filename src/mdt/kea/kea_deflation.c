@@ -96,7 +96,7 @@ int KeaDeflationSolve(int k, const MeReal G[9], const MeReal g[3], MeReal alpha[
     return kept;
 }
 
-/* The trial step s = mid(lo, x + D alpha, hi) - x into s (n rows), its clipped part c = s - D alpha
+/* The trial x + s = mid(lo, x + D alpha, hi) into s (n rows), the step's clipped part c = s - D alpha
  * into c; returns f(x + s) - f(x) (top comment), dvTmp left holding M^-1 J^T c. */
 static MeReal KeaDeflationTrial(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x,
                                 const MeReal alpha[3], MeReal model, MeReal *s, MeReal *c)
@@ -113,8 +113,8 @@ static MeReal KeaDeflationTrial(const KeaProblem *problem, KeaIterativeWork *w, 
         row.d[2] = x[i] - w->xStart[i];
         u = (alpha[0] * row.d[0] + alpha[1] * row.d[1]) + alpha[2] * row.d[2];
         KeaRowBoundsInline(problem, x, i, &lo, &hi);
-        s[i] = KeaClamp(x[i] + u, lo, hi) - x[i];
-        c[i] = s[i] - u;
+        s[i] = KeaClamp(x[i] + u, lo, hi); /* the new x itself: within the bounds to the bit */
+        c[i] = (s[i] - x[i]) - u;
         if (c[i] != ME_R(0.0)) {
             KeaDeflationRowOf(problem, w, x, i, &row);
             cross += c[i] * (row.w + ((alpha[0] * row.Ad[0] + alpha[1] * row.Ad[1]) + alpha[2] * row.Ad[2]));
@@ -142,7 +142,7 @@ void KeaDeflationStart(KeaIterativeWork *w, const MeReal *x, int n)
     w->nncgLast = ME_R(0.0);
 }
 
-/* Apply the accepted step: x += s, dv += D alpha's image + dvTmp (c's); then the pass's whole change
+/* Apply the accepted step: x = the trial's (s), dv += D alpha's image + dvTmp (c's); then the pass's whole change
  * becomes d_1 for the next, and x, dv the next pass's start. alpha all 0: nothing applied. */
 static void KeaDeflationApply(const KeaProblem *problem, KeaIterativeWork *w, MeReal *x, const MeReal alpha[3],
                               const MeReal *s)
@@ -152,7 +152,7 @@ static void KeaDeflationApply(const KeaProblem *problem, KeaIterativeWork *w, Me
     int i, b, k;
     for (i = 0; i < n; ++i) {
         if (moved)
-            x[i] += s[i];
+            x[i] = s[i];
         w->nncgDir[i] = x[i] - w->xPrev[i];
         w->xPrev[i] = x[i];
     }
