@@ -52,7 +52,7 @@ static void deflation_solve_drops_dependent_directions(void **state)
 }
 
 /* The work's fields the correction reads, from the problem: J with the world's halves zeroed, B =
- * M^-1 J^T, the bodies (the world nb), eps, SM's scratch z and q. */
+ * M^-1 J^T, the bodies (the world nb), eps, invDiag (not 0: a row may be free), SM's scratch z and q. */
 static void make_work(const KeaProblem *p, KeaIterativeWork *w)
 {
     const int n = p->nRows, nb = p->nBodies;
@@ -63,6 +63,7 @@ static void make_work(const KeaProblem *p, KeaIterativeWork *w)
     w->B = calloc((size_t)n, sizeof(KeaJacobianRow));
     w->body = calloc((size_t)n, sizeof(int[2]));
     w->eps = calloc((size_t)n, sizeof(MeReal));
+    w->invDiag = calloc((size_t)n, sizeof(MeReal));
     w->xPrev = calloc((size_t)n, sizeof(MeReal));
     w->nncgDir = calloc((size_t)n, sizeof(MeReal));
     w->xStart = calloc((size_t)n, sizeof(MeReal));
@@ -77,6 +78,7 @@ static void make_work(const KeaProblem *p, KeaIterativeWork *w)
     w->dvStart = w->dv + 4 * (nb + 1);
     for (i = 0; i < n; ++i) {
         w->eps[i] = p->epsilon ? p->epsilon[i] : ME_R(0.0);
+        w->invDiag[i] = ME_R(1.0); /* every row may be free */
         for (h = 0; h < 2; ++h) {
             const int b = p->rowBodies[i][h];
             const MeReal *lin = h ? p->J[i].lin1 : p->J[i].lin0, *ang = h ? p->J[i].ang1 : p->J[i].ang0;
@@ -103,6 +105,7 @@ static void free_work(KeaIterativeWork *w)
     free(w->B);
     free(w->body);
     free(w->eps);
+    free(w->invDiag);
     free(w->xPrev);
     free(w->nncgDir);
     free(w->xStart);

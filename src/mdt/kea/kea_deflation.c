@@ -113,8 +113,12 @@ static MeReal KeaDeflationTrial(const KeaProblem *problem, KeaIterativeWork *w, 
         row.d[2] = x[i] - w->xStart[i];
         u = (alpha[0] * row.d[0] + alpha[1] * row.d[1]) + alpha[2] * row.d[2];
         KeaRowBoundsInline(problem, x, i, &lo, &hi);
-        s[i] = KeaClamp(x[i] + u, lo, hi); /* the new x itself: within the bounds to the bit */
-        c[i] = (s[i] - x[i]) - u;
+        s[i] = x[i] + u; /* the new x itself, within the bounds to the bit */
+        c[i] = ME_R(0.0);
+        if (s[i] < lo || s[i] > hi) {
+            s[i] = s[i] < lo ? lo : hi;
+            c[i] = (s[i] - x[i]) - u;
+        }
         if (c[i] != ME_R(0.0)) {
             KeaDeflationRowOf(problem, w, x, i, &row);
             cross += c[i] * (row.w + ((alpha[0] * row.Ad[0] + alpha[1] * row.Ad[1]) + alpha[2] * row.Ad[2]));
@@ -174,43 +178,131 @@ static void KeaDeflationApply(const KeaProblem *problem, KeaIterativeWork *w, Me
         }
 }
 
+/* Restrict the directions to the rows free now (KeaRowIsFree): a row at a bound (or fixed) takes no
+ * part, so its entries are taken out of each direction and out of its image (xPrev, xStart set to x
+ * there and dvPrev, dvStart moved by B_i times the change; d_1 zeroed there and dvDir moved back):
+ * a scatter only for the rows at a bound that some direction moves. Adds the rows' terms of g and
+ * G: g_k += sum_i d_k,i (eps_i x_i - r_i), G_kl += sum_i eps_i d_k,i d_l,i (lower triangle). */
+static void KeaDeflationRows(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x, MeReal G[9], MeReal g[3])
+{
+    const int n = problem->nRows;
+    int i;
+    for (i = 0; i < n; ++i) {
+        MeReal lo, hi, d0, d1, d2, e;
+        KeaRowBoundsInline(problem, x, i, &lo, &hi);
+        if (!KeaRowIsFree(w, i, x[i], lo, hi)) {
+            KeaVel4 *v0 = &w->dvPrev[w->body[i][0]], *v1 = &w->dvPrev[w->body[i][1]];
+            if (x[i] != w->xPrev[i])
+                KeaRowApply4(&w->B[i], x[i] - w->xPrev[i], v0, v1);
+            if (x[i] != w->xStart[i])
+                KeaRowApply4(&w->B[i], x[i] - w->xStart[i], &w->dvStart[w->body[i][0]], &w->dvStart[w->body[i][1]]);
+            if (w->nncgDir[i] != ME_R(0.0))
+                KeaRowApply4(&w->B[i], -w->nncgDir[i], &w->dvDir[w->body[i][0]], &w->dvDir[w->body[i][1]]);
+            w->xPrev[i] = w->xStart[i] = x[i];
+            w->nncgDir[i] = ME_R(0.0);
+            continue;
+        }
+        d0 = x[i] - w->xPrev[i];
+        d1 = w->nncgDir[i];
+        d2 = x[i] - w->xStart[i];
+        e = w->eps[i];
+        g[0] += d0 * (e * x[i] - problem->rhs[i]);
+        g[1] += d1 * (e * x[i] - problem->rhs[i]);
+        g[2] += d2 * (e * x[i] - problem->rhs[i]);
+        G[0] += e * d0 * d0;
+        G[3] += e * d1 * d0;
+        G[4] += e * d1 * d1;
+        G[6] += e * d2 * d0;
+        G[7] += e * d2 * d1;
+        G[8] += e * d2 * d2;
+    }
+}
+
+/* The bodies' terms: J^T d_k = M (M^-1 J^T d_k), so d_k^T J dv = dvD_k^T M dv and d_k^T J M^-1 J^T d_l =
+ * dvD_k^T M dvD_l, each body's M from its inverse (a movable body whose inverse inertia is
+ * singular: returns 0, no correction). The world's and immovable bodies' dvD are 0. */
+static int KeaDeflationBodies(const KeaProblem *problem, const KeaIterativeWork *w, MeReal G[9], MeReal g[3])
+{
+    int b, k, l, m;
+    for (b = 0; b < problem->nBodies; ++b) {
+        const KeaBody *body = &problem->bodies[b];
+        const MeReal(*Ii)[3] = body->invInertia;
+        MeReal I[3][3], det, D[3][6], MD[3][6], v[6];
+        if (body->invMass == ME_R(0.0))
+            continue;
+        I[0][0] = Ii[1][1] * Ii[2][2] - Ii[1][2] * Ii[2][1];
+        I[0][1] = Ii[0][2] * Ii[2][1] - Ii[0][1] * Ii[2][2];
+        I[0][2] = Ii[0][1] * Ii[1][2] - Ii[0][2] * Ii[1][1];
+        det = Ii[0][0] * I[0][0] + Ii[1][0] * I[0][1] + Ii[2][0] * I[0][2];
+        if (!(det > ME_R(0.0)))
+            return 0;
+        I[1][0] = Ii[1][2] * Ii[2][0] - Ii[1][0] * Ii[2][2];
+        I[1][1] = Ii[0][0] * Ii[2][2] - Ii[0][2] * Ii[2][0];
+        I[1][2] = Ii[0][2] * Ii[1][0] - Ii[0][0] * Ii[1][2];
+        I[2][0] = Ii[1][0] * Ii[2][1] - Ii[1][1] * Ii[2][0];
+        I[2][1] = Ii[0][1] * Ii[2][0] - Ii[0][0] * Ii[2][1];
+        I[2][2] = Ii[0][0] * Ii[1][1] - Ii[0][1] * Ii[1][0];
+        for (m = 0; m < 3; ++m) {
+            D[0][m] = w->dv[b].lin[m] - w->dvPrev[b].lin[m];
+            D[0][3 + m] = w->dv[b].ang[m] - w->dvPrev[b].ang[m];
+            D[1][m] = w->dvDir[b].lin[m];
+            D[1][3 + m] = w->dvDir[b].ang[m];
+            D[2][m] = w->dv[b].lin[m] - w->dvStart[b].lin[m];
+            D[2][3 + m] = w->dv[b].ang[m] - w->dvStart[b].ang[m];
+            v[m] = w->dv[b].lin[m];
+            v[3 + m] = w->dv[b].ang[m];
+        }
+        for (k = 0; k < 3; ++k)
+            for (m = 0; m < 3; ++m) {
+                MD[k][m] = D[k][m] / body->invMass;
+                MD[k][3 + m] = (I[m][0] * D[k][3] + I[m][1] * D[k][4] + I[m][2] * D[k][5]) / det;
+            }
+        for (k = 0; k < 3; ++k) {
+            MeReal gk = ME_R(0.0);
+            for (m = 0; m < 6; ++m)
+                gk += MD[k][m] * v[m];
+            g[k] += gk;
+            for (l = 0; l <= k; ++l) {
+                MeReal Gkl = ME_R(0.0);
+                for (m = 0; m < 6; ++m)
+                    Gkl += MD[k][m] * D[l][m];
+                G[3 * k + l] += Gkl;
+            }
+        }
+    }
+    return 1;
+}
+
 /* After a pass that is not the solve's last: the coarse correction; returns the objective's change
  * (< 0) or 0 when no step lowered it (x and dv then as the pass left them). */
 MeReal KeaDeflationStep(const KeaProblem *problem, KeaIterativeWork *w, MeReal *x)
 {
-    const int n = problem->nRows;
     const int k = w->nncgLast > ME_R(0.0) ? KEA_DEFLATION_DIRECTIONS : 1; /* the first pass: d_0 alone */
     MeReal G[9] = {0}, g[3] = {0}, alpha[3] = {0}, scale, df = ME_R(0.0);
-    int i, a, b, tries;
-    for (i = 0; i < n; ++i) {
-        KeaDeflationRow row;
-        KeaDeflationRowOf(problem, w, x, i, &row);
-        for (a = 0; a < k; ++a) {
-            g[a] += row.d[a] * row.w;
-            for (b = 0; b <= a; ++b)
-                G[3 * a + b] += row.d[a] * row.Ad[b];
-        }
-    }
-    for (a = 0; a < k; ++a)
-        for (b = a + 1; b < k; ++b)
-            G[3 * a + b] = G[3 * b + a];
+    int a, b, tries;
+    KeaDeflationRows(problem, w, x, G, g);
     w->nncgLast = ME_R(1.0); /* a direction d_1 exists from the next pass on */
-    if (KeaDeflationSolve(k, G, g, alpha) > 0) {
-        MeReal *s = w->z, *c = w->q; /* SM's scratch: free between SM steps (KeaFreePositions >= n) */
-        for (tries = 0, scale = ME_R(1.0); tries < KEA_SM_LINE_SEARCH_TRIES; ++tries, scale *= ME_R(0.5)) {
-            MeReal model = ME_R(0.0), t[3];
-            for (a = 0; a < KEA_DEFLATION_DIRECTIONS; ++a)
-                t[a] = scale * alpha[a];
-            for (a = 0; a < k; ++a) {
-                MeReal Gt = ME_R(0.0);
-                for (b = 0; b < k; ++b)
-                    Gt += G[3 * a + b] * t[b];
-                model += t[a] * (g[a] + ME_R(0.5) * Gt);
-            }
-            df = KeaDeflationTrial(problem, w, x, t, model, s, c);
-            if (df < ME_R(0.0)) {
-                KeaDeflationApply(problem, w, x, t, s);
-                return df;
+    if (KeaDeflationBodies(problem, w, G, g)) {
+        for (a = 0; a < 3; ++a)
+            for (b = a + 1; b < 3; ++b)
+                G[3 * a + b] = G[3 * b + a];
+        if (KeaDeflationSolve(k, G, g, alpha) > 0) {
+            MeReal *s = w->z, *c = w->q; /* SM's scratch: free between SM steps (KeaFreePositions >= n) */
+            for (tries = 0, scale = ME_R(1.0); tries < KEA_SM_LINE_SEARCH_TRIES; ++tries, scale *= ME_R(0.5)) {
+                MeReal model = ME_R(0.0), t[3];
+                for (a = 0; a < KEA_DEFLATION_DIRECTIONS; ++a)
+                    t[a] = scale * alpha[a];
+                for (a = 0; a < k; ++a) {
+                    MeReal Gt = ME_R(0.0);
+                    for (b = 0; b < k; ++b)
+                        Gt += G[3 * a + b] * t[b];
+                    model += t[a] * (g[a] + ME_R(0.5) * Gt);
+                }
+                df = KeaDeflationTrial(problem, w, x, t, model, s, c);
+                if (df < ME_R(0.0)) {
+                    KeaDeflationApply(problem, w, x, t, s);
+                    return df;
+                }
             }
         }
     }
