@@ -52,7 +52,7 @@ static void deflation_solve_drops_dependent_directions(void **state)
 }
 
 /* The work's fields the correction reads, from the problem: J with the world's halves zeroed, B =
- * M^-1 J^T, the bodies (the world nb), eps, invDiag (not 0: a row may be free), SM's scratch z and q. */
+ * M^-1 J^T, the bodies (the world nb), eps, invDiag (not 0: a row may be free), SM's scratch z, q, lo, hi. */
 static void make_work(const KeaProblem *p, KeaIterativeWork *w)
 {
     const int n = p->nRows, nb = p->nBodies;
@@ -69,6 +69,8 @@ static void make_work(const KeaProblem *p, KeaIterativeWork *w)
     w->xStart = calloc((size_t)n, sizeof(MeReal));
     w->z = calloc((size_t)n, sizeof(MeReal));
     w->q = calloc((size_t)n, sizeof(MeReal));
+    w->lo = calloc((size_t)n, sizeof(MeReal));
+    w->hi = calloc((size_t)n, sizeof(MeReal));
     w->dv = aligned_alloc(16, sizeof(KeaVel4) * (size_t)(nb + 1) * 6);
     assert_non_null(w->dv);
     memset(w->dv, 0, sizeof(KeaVel4) * (size_t)(nb + 1) * 6);
@@ -111,6 +113,8 @@ static void free_work(KeaIterativeWork *w)
     free(w->xStart);
     free(w->z);
     free(w->q);
+    free(w->lo);
+    free(w->hi);
     free(w->dv);
 }
 

@@ -96,41 +96,51 @@ int KeaDeflationSolve(int k, const MeReal G[9], const MeReal g[3], MeReal alpha[
     return kept;
 }
 
-/* The trial x + s = mid(lo, x + D alpha, hi) into s (n rows), the step's clipped part c = s - D alpha
- * into c; returns f(x + s) - f(x) (top comment), dvTmp left holding M^-1 J^T c. */
+/* The trial's new x, s = mid(lo, x + u, hi) with u = D alpha, and its clipped part c = (s - x) - u
+ * (0 where x + u is within the bounds) over n rows, element by element so that the compiler runs it
+ * four lanes at a time; returns whether any row was clipped. Size: separate restrict arrays (as
+ * kea_subspace.c's KeaTrialStep), so that the loop is vectorised. */
+static int KeaDeflationClamp(int n, const MeReal alpha[3], const MeReal *restrict x, const MeReal *restrict xPrev,
+                             const MeReal *restrict p, const MeReal *restrict xStart, const MeReal *restrict lo,
+                             const MeReal *restrict hi, MeReal *restrict s, MeReal *restrict c)
+{
+    const MeReal a0 = alpha[0], a1 = alpha[1], a2 = alpha[2];
+    int i, clipped = 0;
+    for (i = 0; i < n; ++i) {
+        const MeReal u = (a0 * (x[i] - xPrev[i]) + a1 * p[i]) + a2 * (x[i] - xStart[i]);
+        const MeReal v = x[i] + u, sv = KeaClamp(v, lo[i], hi[i]);
+        s[i] = sv;
+        c[i] = sv != v ? (sv - x[i]) - u : ME_R(0.0);
+        clipped |= sv != v;
+    }
+    return clipped;
+}
+
+/* The trial x + s = mid(lo, x + D alpha, hi) (the bounds as KeaDeflationRows stored them) into s (the
+ * new x itself, within the bounds to the bit), the clipped part c into SM's q, *clipped whether
+ * any; returns f(x + s) - f(x) (top comment) from the model's alpha.g + 1/2 alpha^T G alpha, dvTmp
+ * left holding M^-1 J^T c when clipped. */
 static MeReal KeaDeflationTrial(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x,
-                                const MeReal alpha[3], MeReal model, MeReal *s, MeReal *c)
+                                const MeReal alpha[3], MeReal model, MeReal *s, int *clipped)
 {
     const int n = problem->nRows;
-    MeReal cross = ME_R(0.0), cAc = ME_R(0.0);
-    int i, clipped = 0;
+    MeReal cross = ME_R(0.0), cAc = ME_R(0.0), *c = w->q; /* SM's scratch, as s */
+    int i;
+    *clipped = KeaDeflationClamp(n, alpha, x, w->xPrev, w->nncgDir, w->xStart, w->lo, w->hi, s, c);
+    if (!*clipped)
+        return model;
     memset(w->dvTmp, 0, sizeof(KeaVel4) * (size_t)(w->nb + 1));
-    for (i = 0; i < n; ++i) {
-        KeaDeflationRow row;
-        MeReal lo, hi, u;
-        row.d[0] = x[i] - w->xPrev[i];
-        row.d[1] = w->nncgDir[i];
-        row.d[2] = x[i] - w->xStart[i];
-        u = (alpha[0] * row.d[0] + alpha[1] * row.d[1]) + alpha[2] * row.d[2];
-        KeaRowBoundsInline(problem, x, i, &lo, &hi);
-        s[i] = x[i] + u; /* the new x itself, within the bounds to the bit */
-        c[i] = ME_R(0.0);
-        if (s[i] < lo || s[i] > hi) {
-            s[i] = s[i] < lo ? lo : hi;
-            c[i] = (s[i] - x[i]) - u;
-        }
+    for (i = 0; i < n; ++i)
         if (c[i] != ME_R(0.0)) {
+            KeaDeflationRow row;
             KeaDeflationRowOf(problem, w, x, i, &row);
             cross += c[i] * (row.w + ((alpha[0] * row.Ad[0] + alpha[1] * row.Ad[1]) + alpha[2] * row.Ad[2]));
             KeaRowApply4(&w->B[i], c[i], &w->dvTmp[w->body[i][0]], &w->dvTmp[w->body[i][1]]);
-            clipped = 1;
         }
-    }
-    if (clipped)
-        for (i = 0; i < n; ++i)
-            if (c[i] != ME_R(0.0))
-                cAc += c[i] * (KeaRowVel4(&w->J[i], &w->dvTmp[w->body[i][0]], &w->dvTmp[w->body[i][1]]) +
-                               w->eps[i] * c[i]);
+    for (i = 0; i < n; ++i)
+        if (c[i] != ME_R(0.0))
+            cAc += c[i] * (KeaRowVel4(&w->J[i], &w->dvTmp[w->body[i][0]], &w->dvTmp[w->body[i][1]]) +
+                           w->eps[i] * c[i]);
     return model + cross + ME_R(0.5) * cAc;
 }
 
@@ -146,28 +156,29 @@ void KeaDeflationStart(KeaIterativeWork *w, const MeReal *x, int n)
     w->nncgLast = ME_R(0.0);
 }
 
-/* Apply the accepted step: x = the trial's (s), dv += D alpha's image + dvTmp (c's); then the pass's whole change
+/* Apply the accepted step: x = the trial's (s), dv += D alpha's image + dvTmp (c's, when clipped); then the pass's whole change
  * becomes d_1 for the next, and x, dv the next pass's start. alpha all 0: nothing applied. */
 static void KeaDeflationApply(const KeaProblem *problem, KeaIterativeWork *w, MeReal *x, const MeReal alpha[3],
-                              const MeReal *s)
+                              const MeReal *s, int clipped)
 {
     const int n = problem->nRows, nb = w->nb;
     const int moved = alpha[0] != ME_R(0.0) || alpha[1] != ME_R(0.0) || alpha[2] != ME_R(0.0);
+    MeReal *restrict xPrev = w->xPrev, *restrict p = w->nncgDir;
     int i, b, k;
+    if (moved)
+        memcpy(x, s, sizeof(MeReal) * (size_t)n); /* s is SM's scratch, apart from x */
     for (i = 0; i < n; ++i) {
-        if (moved)
-            x[i] = s[i];
-        w->nncgDir[i] = x[i] - w->xPrev[i];
-        w->xPrev[i] = x[i];
+        p[i] = x[i] - xPrev[i];
+        xPrev[i] = x[i];
     }
     for (b = 0; b < nb; ++b)
         for (k = 0; k < 4; ++k) {
             MeReal lin = w->dv[b].lin[k], ang = w->dv[b].ang[k];
             if (moved) {
                 lin += ((alpha[0] * (lin - w->dvPrev[b].lin[k]) + alpha[1] * w->dvDir[b].lin[k]) +
-                        alpha[2] * (lin - w->dvStart[b].lin[k])) + w->dvTmp[b].lin[k];
+                        alpha[2] * (lin - w->dvStart[b].lin[k])) + (clipped ? w->dvTmp[b].lin[k] : ME_R(0.0));
                 ang += ((alpha[0] * (ang - w->dvPrev[b].ang[k]) + alpha[1] * w->dvDir[b].ang[k]) +
-                        alpha[2] * (ang - w->dvStart[b].ang[k])) + w->dvTmp[b].ang[k];
+                        alpha[2] * (ang - w->dvStart[b].ang[k])) + (clipped ? w->dvTmp[b].ang[k] : ME_R(0.0));
                 w->dv[b].lin[k] = lin;
                 w->dv[b].ang[k] = ang;
             }
@@ -190,6 +201,8 @@ static void KeaDeflationRows(const KeaProblem *problem, KeaIterativeWork *w, con
     for (i = 0; i < n; ++i) {
         MeReal lo, hi, d0, d1, d2, e;
         KeaRowBoundsInline(problem, x, i, &lo, &hi);
+        w->lo[i] = lo; /* for the trial (SM's arrays: free between SM steps) */
+        w->hi[i] = hi;
         if (!KeaRowIsFree(w, i, x[i], lo, hi)) {
             KeaVel4 *v0 = &w->dvPrev[w->body[i][0]], *v1 = &w->dvPrev[w->body[i][1]];
             if (x[i] != w->xPrev[i])
@@ -287,7 +300,8 @@ MeReal KeaDeflationStep(const KeaProblem *problem, KeaIterativeWork *w, MeReal *
             for (b = a + 1; b < 3; ++b)
                 G[3 * a + b] = G[3 * b + a];
         if (KeaDeflationSolve(k, G, g, alpha) > 0) {
-            MeReal *s = w->z, *c = w->q; /* SM's scratch: free between SM steps (KeaFreePositions >= n) */
+            MeReal *s = w->z; /* SM's scratch: free between SM steps (KeaFreePositions >= n) */
+            int clipped;
             for (tries = 0, scale = ME_R(1.0); tries < KEA_SM_LINE_SEARCH_TRIES; ++tries, scale *= ME_R(0.5)) {
                 MeReal model = ME_R(0.0), t[3];
                 for (a = 0; a < KEA_DEFLATION_DIRECTIONS; ++a)
@@ -298,15 +312,15 @@ MeReal KeaDeflationStep(const KeaProblem *problem, KeaIterativeWork *w, MeReal *
                         Gt += G[3 * a + b] * t[b];
                     model += t[a] * (g[a] + ME_R(0.5) * Gt);
                 }
-                df = KeaDeflationTrial(problem, w, x, t, model, s, c);
+                df = KeaDeflationTrial(problem, w, x, t, model, s, &clipped);
                 if (df < ME_R(0.0)) {
-                    KeaDeflationApply(problem, w, x, t, s);
+                    KeaDeflationApply(problem, w, x, t, s, clipped);
                     return df;
                 }
             }
         }
     }
     alpha[0] = alpha[1] = alpha[2] = ME_R(0.0);
-    KeaDeflationApply(problem, w, x, alpha, NULL);
+    KeaDeflationApply(problem, w, x, alpha, w->z, 0);
     return ME_R(0.0);
 }
