@@ -9,17 +9,21 @@
  * the passes' changes hold it; a sweep only moves it a neighbour at a time. The step is NNCG's
  * momentum (kea_nncg.c) with its length found, not guessed, and with a third direction.
  *
- * The k x k system (k <= 3) needs no product with J: each d_k's image M^-1 J^T d_k is the change of
- * dv that came with it (kept beside x, as NNCG keeps it), so one pass over the rows gathers
- * g = D^T w (w = J dv + eps x - r) and G = D^T A D, and alpha solves G alpha = -g (directions that
- * add nothing new dropped at the factor's pivots). The step u = D alpha is clipped to the bounds as
+ * Each direction is restricted to the rows free now (a row at a bound takes no part: its entries
+ * are taken out of the direction and, by a scatter of those rows, out of its image). The k x k
+ * system (k <= 3) needs no product with J: each d_k's image dvD_k = M^-1 J^T d_k is the change of dv
+ * that came with it (kept beside x, as NNCG keeps it), so with J^T d_k = M dvD_k
+ *   g_k = d_k . w = dvD_k^T M dv + sum_i d_k,i (eps_i x_i - r_i)     (w = J dv + eps x - r),
+ *   G_kl = d_k^T A d_l = dvD_k^T M dvD_l + sum_i eps_i d_k,i d_l,i,
+ * one pass over the rows and one over the bodies; alpha solves G alpha = -g (directions that add
+ * nothing new dropped at the factor's pivots). The step u = D alpha is clipped to the bounds as
  * they stand (friction bounds from the normal rows' x, frozen as SM freezes them); the clipped part
  * c = s - u of the step s is on few rows, so the objective's change
  *   f(x + s) - f(x) = alpha.g + 1/2 alpha^T G alpha + c.(w + A u) + 1/2 c^T A c
  * costs a scatter and gathers of those rows only. As SM's trial, a step that does not lower f is
  * halved (KEA_SM_LINE_SEARCH_TRIES times) and otherwise dropped, so the correction never makes the QP
  * worse. It runs on the solve's own thread in a split solve (serial passes: the same bits for any
- * worker count). */
+ * worker count). Figures: bench/RESULTS.md, "defl". */
 #include <string.h>
 
 #include "kea_iterative.h"
@@ -29,7 +33,7 @@ enum { KEA_DEFLATION_DIRECTIONS = 3 };
 /* A direction's pivot below this fraction of its diagonal adds nothing new: dropped. */
 #define KEA_DEFLATION_DROP ME_R(1e-6)
 
-/* The directions' images: out[k] = J_i (M^-1 J^T d_k) + eps_i d_k,i for row i. */
+/* Row i of the directions, of their images under A and of w (a clipped row of the trial). */
 typedef struct KeaDeflationRow {
     MeReal d[KEA_DEFLATION_DIRECTIONS];  /* d_k,i */
     MeReal Ad[KEA_DEFLATION_DIRECTIONS]; /* (A d_k)_i */
@@ -116,15 +120,15 @@ static int KeaDeflationClamp(int n, const MeReal alpha[3], const MeReal *restric
     return clipped;
 }
 
-/* The trial x + s = mid(lo, x + D alpha, hi) (the bounds as KeaDeflationRows stored them) into s (the
- * new x itself, within the bounds to the bit), the clipped part c into SM's q, *clipped whether
+/* The trial x + s = mid(lo, x + D alpha, hi) (the bounds as KeaDeflationRows stored them) into SM's
+ * z (the new x itself, within the bounds to the bit), the clipped part c into SM's q, *clipped whether
  * any; returns f(x + s) - f(x) (top comment) from the model's alpha.g + 1/2 alpha^T G alpha, dvTmp
  * left holding M^-1 J^T c when clipped. */
 static MeReal KeaDeflationTrial(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x,
-                                const MeReal alpha[3], MeReal model, MeReal *s, int *clipped)
+                                const MeReal alpha[3], MeReal model, int *clipped)
 {
     const int n = problem->nRows;
-    MeReal cross = ME_R(0.0), cAc = ME_R(0.0), *c = w->q; /* SM's scratch, as s */
+    MeReal cross = ME_R(0.0), cAc = ME_R(0.0), *s = w->z, *c = w->q; /* SM's scratch */
     int i;
     *clipped = KeaDeflationClamp(n, alpha, x, w->xPrev, w->nncgDir, w->xStart, w->lo, w->hi, s, c);
     if (!*clipped)
@@ -300,7 +304,6 @@ MeReal KeaDeflationStep(const KeaProblem *problem, KeaIterativeWork *w, MeReal *
             for (b = a + 1; b < 3; ++b)
                 G[3 * a + b] = G[3 * b + a];
         if (KeaDeflationSolve(k, G, g, alpha) > 0) {
-            MeReal *s = w->z; /* SM's scratch: free between SM steps (KeaFreePositions >= n) */
             int clipped;
             for (tries = 0, scale = ME_R(1.0); tries < KEA_SM_LINE_SEARCH_TRIES; ++tries, scale *= ME_R(0.5)) {
                 MeReal model = ME_R(0.0), t[3];
@@ -312,9 +315,9 @@ MeReal KeaDeflationStep(const KeaProblem *problem, KeaIterativeWork *w, MeReal *
                         Gt += G[3 * a + b] * t[b];
                     model += t[a] * (g[a] + ME_R(0.5) * Gt);
                 }
-                df = KeaDeflationTrial(problem, w, x, t, model, s, &clipped);
+                df = KeaDeflationTrial(problem, w, x, t, model, &clipped);
                 if (df < ME_R(0.0)) {
-                    KeaDeflationApply(problem, w, x, t, s, clipped);
+                    KeaDeflationApply(problem, w, x, t, w->z, clipped); /* z: the trial's x */
                     return df;
                 }
             }
