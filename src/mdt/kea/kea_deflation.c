@@ -160,8 +160,9 @@ void KeaDeflationStart(KeaIterativeWork *w, const MeReal *x, int n)
     w->nncgLast = ME_R(0.0);
 }
 
-/* Apply the accepted step: x = the trial's (s), dv += D alpha's image + dvTmp (c's, when clipped); then the pass's whole change
- * becomes d_1 for the next, and x, dv the next pass's start. alpha all 0: nothing applied. */
+/* Apply the accepted step: x = the trial's (s), dv += D alpha's image + dvTmp (c's, when clipped);
+ * then the pass's whole change becomes d_1 for the next, and x, dv the next pass's start. alpha all
+ * 0: nothing applied. */
 static void KeaDeflationApply(const KeaProblem *problem, KeaIterativeWork *w, MeReal *x, const MeReal alpha[3],
                               const MeReal *s, int clipped)
 {
