@@ -51,7 +51,8 @@
  * MeThreadPoolAttachUniverse), made once for the process; the trajectories are the same for any N.
  * KARMA_SPLIT_ROWS=R in the environment splits every iterative partition of at least R rows over the
  * threads (MdtWorldSetPartitionSplitRows: the pile's heap); its trajectories differ from the unsplit
- * ones, but are again the same for any N (one thread included).
+ * ones, but are again the same for any N (one thread included). KARMA_DEFLATION=1 turns the
+ * solver's coarse correction on (MdtWorldSetDeflation; off by default).
  *
  * Profile: with KARMA_BENCH_PROFILE=1 in the environment, each run prints to stderr the time per step
  * of every profile section (MstUniverseGetProfile: Collision = Farfield + Nearfield;
