@@ -1,27 +1,14 @@
 /* test_kea_deflation.c -- the coarse correction of Kea's iterative path (kea_deflation.c,
  * KeaParameters.deflation): its k x k solve drops a direction that adds nothing new; each step on a
  * random contact LCP, between real sweeps, never raises the QP objective f(x) = 1/2 x^T A x - r^T x,
- * keeps x within the bounds as they stood and keeps dv = M^-1 J^T x; and a solve with it reaches the
- * direct path's solution of a column of boxes started cold. f in double from the test's dense A. */
+ * keeps x within the bounds as they stood and keeps dv = M^-1 J^T x (a cold column of boxes solved
+ * with it: test_kea_iterative, NNCG's test). f in double from the test's dense A. */
 #include "karma_test.h"
 
 #include <string.h>
 
 #include "kea_test_problems.h"
 #include "mdt/kea/kea_iterative.h"
-
-static double objective(int n, const double *A, const MeReal *r, const MeReal *x)
-{
-    double f = 0.0;
-    int i, j;
-    for (i = 0; i < n; ++i) {
-        double ax = 0.0;
-        for (j = 0; j < n; ++j)
-            ax += A[i * n + j] * (double)x[j];
-        f += 0.5 * (double)x[i] * ax - (double)r[i] * (double)x[i];
-    }
-    return f;
-}
 
 /* G alpha = -g on an SPD 3 x 3 is solved; with the third direction the first again, it is dropped
  * (alpha_2 = 0) and the first two solved alone. */
@@ -195,9 +182,9 @@ static void deflation_step_never_raises_the_objective(void **state)
                 KeaRowBounds(&t.p, x, i, &lo[i], &hi[i]);
                 xBefore[i] = x[i];
             }
-            f0 = objective(n, A, t.p.rhs, x);
+            f0 = kt_objective(n, A, t.p.rhs, x);
             df = KeaDeflationStep(&t.p, &w, x);
-            f1 = objective(n, A, t.p.rhs, x);
+            f1 = kt_objective(n, A, t.p.rhs, x);
             ++steps;
             lowered += df < ME_R(0.0);
             assert_true(df <= ME_R(0.0));
@@ -229,63 +216,11 @@ static void deflation_step_never_raises_the_objective(void **state)
     assert_true(2 * lowered >= steps);
 }
 
-/* A column of 20 boxes started cold reaches the direct path's solution with deflation (and SM at
- * every second chance, its schedule); within 40 sweeps without SM its objective gap is below
- * NNCG's momentum's. */
-static void deflation_converges_to_the_same_solution(void **state)
-{
-    enum { BOXES = 20, N = 12 * BOXES };
-    static const double gravity[3] = {0, 0, -9.81};
-    const double v[6 * BOXES] = {0};
-    KtProblem t;
-    MeReal xd[N], xi[N];
-    static double A[N * N];
-    KeaParameters direct = kt_params(KeaPathDirect), iter = kt_params(KeaPathIterative);
-    KeaStats st;
-    double fStar, gap[2];
-    int i, k;
-    (void)state;
-    kt_column(&t, BOXES, 1.0, 0.6, 1e-2);
-    kt_set_rhs_from_velocities(&t, v, 1.0 / 60, gravity);
-    kt_dense_matrix(&t.p, A);
-    assert_int_equal(kt_solve(&t.p, &direct, xd, NULL, &st), KeaStatusOk);
-    fStar = objective(N, A, t.rhs, xd);
-    iter.deflation = 1;
-    iter.maxIterations = 3000;
-    iter.tolerance = ME_TOL(1e-9, 1e-5);
-    kt_solve(&t.p, &iter, xi, NULL, &st);
-    print_message("column of %d, cold, deflation + SM every 2nd: %d sweeps, residual %.2g\n", BOXES, st.iterations,
-                  (double)st.residual);
-    assert_true(st.residual <= 10 * iter.tolerance);
-    for (i = 0; i < N; ++i)
-        assert_near(xi[i], xd[i], ME_TOL(1e-5, 2e-2) * (1.0 + fabs((double)xd[i])));
-    for (k = 0; k < 2; ++k) {
-        iter = kt_params(KeaPathIterative);
-        iter.nonsmoothCg = 1;
-        iter.deflation = k;
-        iter.subspaceIterations = 0;
-        iter.maxIterations = 40;
-        iter.tolerance = ME_R(0.0);
-        kt_solve(&t.p, &iter, xi, NULL, &st);
-        gap[k] = objective(N, A, t.rhs, xi) - fStar;
-        for (i = 0; i < N; ++i) {
-            MeReal lo, hi;
-            KeaRowBounds(&t.p, xi, i, &lo, &hi);
-            assert_true(xi[i] >= lo && xi[i] <= hi);
-        }
-    }
-    print_message("column of %d, 40 sweeps without SM: objective gap NNCG %.3g, deflation %.3g\n", BOXES, gap[0],
-                  gap[1]);
-    assert_true(gap[1] < gap[0]);
-    kt_free(&t);
-}
-
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(deflation_solve_drops_dependent_directions),
         cmocka_unit_test(deflation_step_never_raises_the_objective),
-        cmocka_unit_test(deflation_converges_to_the_same_solution),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
