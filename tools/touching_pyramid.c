@@ -9,7 +9,8 @@
  * world's sweep cap (MdtWorldSetMaxLCPIterations); TOUCHING_PYRAMID_BODY=i prints body i's state each
  * step and, from step 18 on, its contacts; TOUCHING_PYRAMID_ROWS=1 prints per row, at the end, the
  * largest |x| and |vx| (x is out of the pyramid's plane); TOUCHING_PYRAMID_SLEEP=1 keeps the world's
- * auto-disable (sleeping) on.
+ * auto-disable (sleeping) on; TOUCHING_PYRAMID_DEFLATION=1 turns the solver's coarse correction on
+ * (MdtWorldSetDeflation).
  *
  * TOUCHING_PYRAMID_EPSILON=e sets the world's softness (MdtWorldSetEpsilon); TOUCHING_PYRAMID_ACROSS=m the
  * largest distance a box may end from where it was placed, across (default MOVED_ACROSS_MAX).
@@ -57,6 +58,8 @@ static MstUniverseID createUniverse(int count)
         MdtWorldSetAutoDisable(w, MEFALSE);
     if (getenv("TOUCHING_PYRAMID_EPSILON"))
         MdtWorldSetEpsilon(w, (MeReal)atof(getenv("TOUCHING_PYRAMID_EPSILON")));
+    if (getenv("TOUCHING_PYRAMID_DEFLATION")) /* the coarse correction (MdtWorldSetDeflation) */
+        MdtWorldSetDeflation(w, METRUE);
     if (getenv("TOUCHING_PYRAMID_ITERS"))
         MdtWorldSetMaxLCPIterations(w, atoi(getenv("TOUCHING_PYRAMID_ITERS")));
     MdtContactParamsID p = MstBridgeGetContactParams(MstUniverseGetBridge(u), 0, 0);

@@ -51,7 +51,8 @@
  * MeThreadPoolAttachUniverse), made once for the process; the trajectories are the same for any N.
  * KARMA_SPLIT_ROWS=R in the environment splits every iterative partition of at least R rows over the
  * threads (MdtWorldSetPartitionSplitRows: the pile's heap); its trajectories differ from the unsplit
- * ones, but are again the same for any N (one thread included).
+ * ones, but are again the same for any N (one thread included). KARMA_DEFLATION=1 turns the
+ * solver's coarse correction on (MdtWorldSetDeflation; off by default).
  *
  * Profile: with KARMA_BENCH_PROFILE=1 in the environment, each run prints to stderr the time per step
  * of every profile section (MstUniverseGetProfile: Collision = Farfield + Nearfield;
@@ -313,6 +314,8 @@ static MeBool karma_make_universe(KarmaWorld *w, const BenchScene *scene, MeBool
     }
     MdtWorldSetGravity(w->world, (MeReal)scene->gravity[0], (MeReal)scene->gravity[1], (MeReal)scene->gravity[2]);
     MdtWorldSetAutoDisable(w->world, autoDisable);
+    if (env_flag("KARMA_DEFLATION"))
+        MdtWorldSetDeflation(w->world, METRUE);
     const char *splitRows = getenv("KARMA_SPLIT_ROWS");
     if (splitRows && *splitRows)
         MdtWorldSetPartitionSplitRows(w->world, atoi(splitRows));

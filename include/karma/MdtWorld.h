@@ -138,6 +138,9 @@ ME_API int MdtWorldGetPartitionSplitRows(MdtWorldID w);
 /** Whether the iterative solver adds NNCG's momentum to its sweeps (MdtWorldSetNonsmoothCG); METRUE
  *  by default, MEFALSE for an invalid ID. */
 ME_API MeBool MdtWorldGetNonsmoothCG(MdtWorldID w);
+/** Whether the iterative solver takes the coarse correction (MdtWorldSetDeflation); MEFALSE by
+ *  default and for an invalid ID. */
+ME_API MeBool MdtWorldGetDeflation(MdtWorldID w);
 
 /* ---- mutators ----------------------------------------------------------------------------- */
 /** Gravity acceleration (m/s²); default (0,0,0). */
@@ -195,6 +198,11 @@ ME_API void MdtWorldSetPartitionSplitRows(MdtWorldID w, int rows);
  *  pair (nonsmooth nonlinear conjugate gradient, NNCG; docs/kea.md): the same LCP, reached in fewer
  *  sweeps. On by default (decision K47); MEFALSE gives Karma 1.2's plain sweeps. */
 ME_API void MdtWorldSetNonsmoothCG(MdtWorldID w, MeBool on);
+/** Not in Karma 1.2: after each pair of the iterative solver's sweeps, a coarse correction
+ *  (deflation; docs/kea.md) in place of NNCG's momentum: the LCP's objective minimised over the
+ *  solve's own last changes of the impulses, with subspace minimisation at every second chance
+ *  only. The same LCP; MEFALSE (the default) keeps NNCG and SM at every chance. */
+ME_API void MdtWorldSetDeflation(MdtWorldID w, MeBool on);
 /** The iterative solver stops early once its residual is below this (m/s, > 0). Default 1e-6. */
 ME_API void MdtWorldSetLCPTolerance(MdtWorldID w, MeReal tolerance);
 /** Called when the world enables a body (also by the partitioner) / disables one (auto-disable). */

@@ -536,6 +536,18 @@ void MdtWorldSetNonsmoothCG(MdtWorldID id, MeBool on)
     w->kea.nonsmoothCg = on ? 1 : 0;
 }
 
+MeBool MdtWorldGetDeflation(MdtWorldID id)
+{
+    WORLD_OR_RETURN(w, id, MEFALSE);
+    return w->kea.deflation ? METRUE : MEFALSE;
+}
+
+void MdtWorldSetDeflation(MdtWorldID id, MeBool on)
+{
+    WORLD_OR_RETURN(w, id, ME_NOTHING);
+    w->kea.deflation = on ? 1 : 0;
+}
+
 MeReal MdtWorldGetLCPTolerance(MdtWorldID id)
 {
     WORLD_OR_RETURN(w, id, 0);

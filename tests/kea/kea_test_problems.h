@@ -254,6 +254,20 @@ static inline void kt_random_contacts(KtProblem *t, KtRng *r, int nContacts, int
     kt_declare_contacts(t, nContacts);
 }
 
+/** The QP objective f(x) = 1/2 x^T A x - r^T x in double, A dense n x n (kt_dense_matrix). */
+static inline double kt_objective(int n, const double *A, const MeReal *r, const MeReal *x)
+{
+    double f = 0.0;
+    int i, j;
+    for (i = 0; i < n; ++i) {
+        double ax = 0.0;
+        for (j = 0; j < n; ++j)
+            ax += A[i * n + j] * (double)x[j];
+        f += 0.5 * (double)x[i] * ax - (double)r[i] * (double)x[i];
+    }
+    return f;
+}
+
 /** A = J M^-1 J^T + diag(eps) in double, from a full J (n x 6 nb) and block-diagonal M^-1. */
 static inline void kt_dense_matrix(const KeaProblem *p, double *A)
 {

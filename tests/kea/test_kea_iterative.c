@@ -10,19 +10,6 @@
 
 #include "kea_test_problems.h"
 
-static double objective(int n, const double *A, const MeReal *r, const MeReal *x)
-{
-    double f = 0.0;
-    int i, j;
-    for (i = 0; i < n; ++i) {
-        double ax = 0.0;
-        for (j = 0; j < n; ++j)
-            ax += A[i * n + j] * (double)x[j];
-        f += 0.5 * (double)x[i] * ax - (double)r[i] * (double)x[i];
-    }
-    return f;
-}
-
 typedef struct Variant {
     const char *name;
     int blockRows, subspace;
@@ -59,7 +46,7 @@ static void error_does_not_grow_with_iteration_cap(void **state)
         make_problem(&t, seed);
         kt_dense_matrix(&t.p, A);
         assert_int_equal(kt_solve(&t.p, &direct, xd, NULL, &st), KeaStatusOk);
-        fStar = objective(36, A, t.rhs, xd);
+        fStar = kt_objective(36, A, t.rhs, xd);
         scale = 1.0;
         for (k = 0; k < 36; ++k)
             scale = fmax(scale, fabs((double)xd[k]));
@@ -78,7 +65,7 @@ static void error_does_not_grow_with_iteration_cap(void **state)
                     assert_int_equal(st.iterations, caps[k]);
                 else
                     assert_true(st.iterations <= caps[k]);
-                gap = objective(36, A, t.rhs, xi) - fStar;
+                gap = kt_objective(36, A, t.rhs, xi) - fStar;
                 /* non-increasing, up to the rounding of f itself */
                 assert_true(gap <= gapPrev + ME_TOL(1e-12, 1e-5) * (1.0 + fabs(fStar)));
                 gapPrev = gap;
@@ -667,7 +654,9 @@ static void subspace_steps_that_do_not_pay_wait(void **state)
  * sweep) reaches the direct path's solution with NNCG alone and with NNCG and SM at every second
  * chance; at a budget of 40 sweeps without SM, NNCG's objective gap to the solution is well below
  * plain PGS's (the acceleration it is for); and the impulses returned are within their bounds (the
- * solve ends on a sweep), with the velocity change they imply (dv kept beside the momentum). */
+ * solve ends on a sweep), with the velocity change they imply (dv kept beside the momentum). The
+ * coarse correction (KeaParameters.deflation, kea_deflation.c) in NNCG's place reaches the same
+ * solution and, at 40 sweeps without SM, a smaller gap than NNCG's. */
 static void nncg_converges_faster_to_the_same_solution(void **state)
 {
     enum { BOXES = 20, N = 12 * BOXES };
@@ -678,35 +667,38 @@ static void nncg_converges_faster_to_the_same_solution(void **state)
     static double A[N * N];
     KeaParameters direct = kt_params(KeaPathDirect), iter = kt_params(KeaPathIterative);
     KeaStats st;
-    double fStar, gap[2];
+    double fStar, gap[3];
     int i, k;
     (void)state;
     kt_column(&t, BOXES, 1.0, 0.6, 1e-2);
     kt_set_rhs_from_velocities(&t, v, 1.0 / 60, gravity);
     kt_dense_matrix(&t.p, A);
     assert_int_equal(kt_solve(&t.p, &direct, xd, NULL, &st), KeaStatusOk);
-    fStar = objective(N, A, t.rhs, xd);
-    for (k = 0; k < 2; ++k) {
+    fStar = kt_objective(N, A, t.rhs, xd);
+    for (k = 0; k < 3; ++k) { /* the third: deflation (kea_deflation.c) in NNCG's place, SM every 2nd */
         iter.nonsmoothCg = 1;
+        iter.deflation = k == 2;
         iter.subspaceIterations = k == 0 ? 0 : 4;
         iter.subspaceEvery = 2;
         iter.maxIterations = 3000;
         iter.tolerance = ME_TOL(1e-9, 1e-5);
         kt_solve(&t.p, &iter, xi, NULL, &st);
-        print_message("column of %d, cold, NNCG%s: %d sweeps, residual %.2g\n", BOXES, k ? " + SM every 2nd" : "",
+        print_message("column of %d, cold, %s: %d sweeps, residual %.2g\n", BOXES,
+                      k == 0 ? "NNCG" : (k == 1 ? "NNCG + SM every 2nd" : "deflation + SM every 2nd"),
                       st.iterations, (double)st.residual);
         assert_true(st.residual <= 10 * iter.tolerance); /* the stop measures rows before their step */
         for (i = 0; i < N; ++i)
             assert_near(xi[i], xd[i], ME_TOL(1e-5, 2e-2) * (1.0 + fabs((double)xd[i])));
     }
-    for (k = 0; k < 2; ++k) {
+    for (k = 0; k < 3; ++k) {
         iter = kt_params(KeaPathIterative);
-        iter.nonsmoothCg = k;
+        iter.nonsmoothCg = k > 0;
+        iter.deflation = k == 2;
         iter.subspaceIterations = 0;
         iter.maxIterations = 40;
         iter.tolerance = ME_R(0.0);
         kt_solve(&t.p, &iter, xi, NULL, &st);
-        gap[k] = objective(N, A, t.rhs, xi) - fStar;
+        gap[k] = kt_objective(N, A, t.rhs, xi) - fStar;
         assert_true(st.residual < ME_R(1.0)); /* measured on x and dv as returned: bounded, finite */
         for (i = 0; i < N; ++i) {
             MeReal lo, hi;
@@ -714,8 +706,10 @@ static void nncg_converges_faster_to_the_same_solution(void **state)
             assert_true(xi[i] >= lo && xi[i] <= hi);
         }
     }
-    print_message("column of %d, 40 sweeps without SM: objective gap PGS %.3g, NNCG %.3g\n", BOXES, gap[0], gap[1]);
+    print_message("column of %d, 40 sweeps without SM: objective gap PGS %.3g, NNCG %.3g, deflation %.3g\n", BOXES,
+                  gap[0], gap[1], gap[2]);
     assert_true(gap[1] < 0.5 * gap[0]);
+    assert_true(gap[2] < gap[1]);
     kt_free(&t);
 }
 

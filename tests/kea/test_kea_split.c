@@ -236,6 +236,36 @@ static void any_schedule_gives_the_same_bits(void **state)
     assert_true(overflowSeen); /* some problem used the overflow colour */
 }
 
+/* The coarse correction (KeaParameters.deflation, kea_deflation.c) runs on the solve's own thread:
+ * a split solve with it gives the serial split solve's bits on any schedule and worker count. */
+static void deflation_gives_the_same_bits_on_any_schedule(void **state)
+{
+    static Result reference, other;
+    const Schedule schedules[] = {InOrder, Shuffled, Threads, Threads};
+    const int workers[] = {2, 4, 4, 2};
+    const int perStage[] = {1, 1, 1, 0};
+    KtProblem t;
+    KeaParameters params = split_params(NULL);
+    int s;
+    (void)state;
+    make_pile(&t, 31007, 1500, 300);
+    params.deflation = 1;
+    assert_int_not_equal(solve(&t, &params, &reference), KeaStatusBadInput);
+    for (s = 0; s < 4; ++s) {
+        Hook hook;
+        memset(&hook, 0, sizeof hook);
+        hook.schedule = schedules[s];
+        hook.workers = workers[s];
+        hook.perStage = perStage[s];
+        hook.rng = kt_rng(91 + (uint64_t)s);
+        params = split_params(&hook);
+        params.deflation = 1;
+        solve(&t, &params, &other);
+        assert_same_bits(&t, &reference, &other);
+    }
+    kt_free(&t);
+}
+
 /* The split sweep goes colour by colour, so its result after the default 10 sweeps differs from the
  * unsplit sweep's (the check above could not fail if the colours were not used); run to convergence
  * both reach the partition's one solution (eps > 0: a strictly convex QP). */
@@ -524,6 +554,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(any_schedule_gives_the_same_bits),
+        cmocka_unit_test(deflation_gives_the_same_bits_on_any_schedule),
         cmocka_unit_test(split_changes_the_order_not_the_solution),
         cmocka_unit_test(links_across_blocks_keep_the_plain_sweep),
         cmocka_unit_test(split_workspace),

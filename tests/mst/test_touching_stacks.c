@@ -91,16 +91,21 @@ static MeReal jitter(unsigned *seed)
     return (MeReal)((double)((*seed >> 8) & 0xFFFF) / 32767.5 - 1.0);
 }
 
+/* A pyramid of `rows` rows of unit 1 kg boxes, one box deep, neighbours in a row touching. */
+static void scenePyramid(Scene *s, int rows)
+{
+    for (int r = 0; r < rows; r++)
+        for (int i = 0; i < rows - r; i++)
+            sceneBox(s, 1, 1, 1, 1, (MeReal)(i - 0.5 * (rows - r - 1)), 0, ME_R(0.5) + (MeReal)r);
+}
+
 /* A pyramid of 15 rows (120 unit 1 kg boxes), one box deep, neighbours in a row touching. */
 static void touching_pyramid_of_15_rows_stands(void **state)
 {
     (void)state;
     Scene s;
     sceneInit(&s);
-    const int rows = 15;
-    for (int r = 0; r < rows; r++)
-        for (int i = 0; i < rows - r; i++)
-            sceneBox(&s, 1, 1, 1, 1, (MeReal)(i - 0.5 * (rows - r - 1)), 0, ME_R(0.5) + (MeReal)r);
+    scenePyramid(&s, 15);
     sceneStands(&s, "touching pyramid, 15 rows");
 }
 
@@ -115,11 +120,23 @@ static void touching_pyramid_stands_without_nonsmooth_cg(void **state)
     assert_true(MdtWorldGetNonsmoothCG(w));
     MdtWorldSetNonsmoothCG(w, MEFALSE);
     assert_false(MdtWorldGetNonsmoothCG(w));
-    const int rows = 15;
-    for (int r = 0; r < rows; r++)
-        for (int i = 0; i < rows - r; i++)
-            sceneBox(&s, 1, 1, 1, 1, (MeReal)(i - 0.5 * (rows - r - 1)), 0, ME_R(0.5) + (MeReal)r);
+    scenePyramid(&s, 15);
     sceneStands(&s, "touching pyramid, 15 rows, plain sweeps");
+}
+
+/* The same pyramid with the coarse correction (MdtWorldSetDeflation, off by default) and its schedule,
+ * SM at every second chance: it holds the pyramid as well. */
+static void touching_pyramid_stands_with_deflation(void **state)
+{
+    (void)state;
+    Scene s;
+    sceneInit(&s);
+    MdtWorldID w = MstUniverseGetWorld(s.u);
+    assert_false(MdtWorldGetDeflation(w));
+    MdtWorldSetDeflation(w, METRUE);
+    assert_true(MdtWorldGetDeflation(w));
+    scenePyramid(&s, 15);
+    sceneStands(&s, "touching pyramid, 15 rows, deflation");
 }
 
 /* A wall of 1 x 0.5 x 0.5 m bricks in running bond, 12 courses, 8 and 7 bricks a course, touching. */
@@ -187,6 +204,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(touching_pyramid_of_15_rows_stands),
         cmocka_unit_test(touching_pyramid_stands_without_nonsmooth_cg),
+        cmocka_unit_test(touching_pyramid_stands_with_deflation),
         cmocka_unit_test(touching_wall_stands),
         cmocka_unit_test(jittered_column_of_20_stands),
         cmocka_unit_test(boxes_on_convex_and_primitive_shapes_stand),

@@ -186,6 +186,10 @@ typedef struct KeaParameters {
                                  sweeps, the default (opt-in: docs/kea_log.md, "NNCG") */
     int subspaceEvery;      /**< iterative: an SM chance only after every this-many-th sweep (values
                                  below 1 count as 1); default 1, every sweep */
+    int deflation;          /**< iterative: 1 = a coarse correction (kea_deflation.c) after each pair of
+                                 sweeps in place of NNCG's momentum: the QP minimised over the
+                                 solve's last changes of x, and SM at every second chance only;
+                                 0 = off, the default */
 } KeaParameters;
 
 /** What a solve did. */

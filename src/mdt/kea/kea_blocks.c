@@ -51,6 +51,8 @@ void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIte
     w->nncgDir = KEA_ALLOC(arena, MeReal, n);
     w->dvPrev = KEA_ALLOC(arena, KeaVel4, nb + 1);
     w->dvDir = KEA_ALLOC(arena, KeaVel4, nb + 1);
+    w->xStart = KEA_ALLOC(arena, MeReal, n);
+    w->dvStart = KEA_ALLOC(arena, KeaVel4, nb + 1);
     w->bodyColumns = KEA_ALLOC(arena, KeaBodyColumns, nb);
     w->nb = nb;
     w->split = NULL;

@@ -507,7 +507,7 @@ static void KeaIterate(void *data)
     KeaStats *stats = state->stats;
     const int nb = problem->nBodies;
     const int effort = KeaEffortAllowed(problem, params);
-    const int smEvery = params->subspaceEvery > 1 ? params->subspaceEvery : 1;
+    const int smEvery = params->deflation ? 2 : (params->subspaceEvery > 1 ? params->subspaceEvery : 1);
     int it, b, k, limit;
 
     KeaIterativeSetUp(problem, params, w, x);
@@ -519,9 +519,12 @@ static void KeaIterate(void *data)
     /* maxIterations sweeps, then the extra effort (params->effortResidual, kea_tuning.h) if the
      * partition rests (KeaEffortAllowed): while the last sweep leaves a residual above it, two more
      * (so that the last still runs backwards), up to KEA_EFFORT_FACTOR maxIterations more in all.
-     * SM at every subspaceEvery-th chance; with nonsmoothCg, NNCG's momentum after every second sweep. */
+     * SM at every subspaceEvery-th chance; with nonsmoothCg, NNCG's momentum after every second sweep;
+     * with deflation, its coarse correction there instead and SM at every second chance. */
     limit = params->maxIterations;
-    if (params->nonsmoothCg)
+    if (params->deflation)
+        KeaDeflationStart(w, x, problem->nRows);
+    else if (params->nonsmoothCg)
         KeaNncgStart(w, x, problem->nRows);
     for (it = 1; it <= limit; ++it) {
         const int mayExtend = it == limit && effort &&
@@ -548,8 +551,10 @@ static void KeaIterate(void *data)
             else
                 stats->subspaceSteps += steps;
         }
-        /* NNCG (kea_nncg.c): a momentum step after each pair of sweeps, never after the last */
-        if (params->nonsmoothCg && it < limit && (it & 1) == 0)
+        /* NNCG (kea_nncg.c) or deflation (kea_deflation.c): after each pair of sweeps, never the last */
+        if (params->deflation && it < limit && (it & 1) == 0)
+            KeaDeflationStep(problem, w, x);
+        else if (params->nonsmoothCg && it < limit && (it & 1) == 0)
             KeaNncgStep(w, x, problem->nRows);
     }
     for (b = 0; b < nb; ++b)

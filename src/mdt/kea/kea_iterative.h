@@ -267,6 +267,9 @@ typedef struct KeaIterativeWork {
     KeaVel4 *dvPrev;       /**< dv before the last sweep (nb + 1) */
     KeaVel4 *dvDir;        /**< M^-1 J^T p (nb + 1) */
     MeReal nncgLast;       /**< |x change|^2 of the sweep before (0: none yet) */
+    /* Deflation (kea_deflation.c), beside NNCG's arrays above: */
+    MeReal *xStart;        /**< x at the warm start */
+    KeaVel4 *dvStart;      /**< dv at the warm start (nb + 1) */
     int nb;                /**< bodies: dv[nb] is the world's, all zero, never written by a sweep */
     struct KeaSplit *split; /**< a split solve's colouring and workers (kea_split.c); NULL: not split */
 } KeaIterativeWork;
@@ -415,6 +418,13 @@ void KeaContactConstsFill(const KeaProblem *problem, KeaIterativeWork *w);
  * KeaNncgStep after each sweep but the last (returns beta, 0 at a restart). */
 void KeaNncgStart(KeaIterativeWork *w, const MeReal *x, int n);
 MeReal KeaNncgStep(KeaIterativeWork *w, MeReal *restrict x, int n);
+
+/* kea_deflation.c: the coarse correction (KeaParameters.deflation): KeaDeflationStart before the
+ * first sweep, KeaDeflationStep after each pair of sweeps but the last (returns the objective's
+ * change, 0 when no step lowered it); KeaDeflationSolve, its k x k system (k <= 3, tests). */
+void KeaDeflationStart(KeaIterativeWork *w, const MeReal *x, int n);
+MeReal KeaDeflationStep(const KeaProblem *problem, KeaIterativeWork *w, MeReal *x);
+int KeaDeflationSolve(int k, const MeReal G[9], const MeReal g[3], MeReal alpha[3]);
 
 /* kea_subspace.c: one SM chance after a sweep; returns the CG steps taken, -1 if skipped. */
 int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxSteps, MeReal *x);
