@@ -278,7 +278,6 @@ static int KeaEffortAllowed(const KeaProblem *problem, const KeaParameters *para
  * compiler cannot keep them over the rows' stores, which it must assume may alias them. */
 static void KeaSetUpRows(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x, int i0, int i1)
 {
-    static const MeReal components[4] = {ME_R(1.0), ME_R(1.0), ME_R(1.0), ME_R(0.0)};
     const int nb = problem->nBodies;
     const KeaJacobianRow *const in = problem->J;
     const int(*const rowBodies)[2] = problem->rowBodies;
@@ -290,7 +289,7 @@ static void KeaSetUpRows(const KeaProblem *problem, KeaIterativeWork *w, const M
     MeReal *const diag = w->diag, *const invDiag = w->invDiag, *const eps = w->eps;
     MeReal *const lo = w->lo, *const hi = w->hi;
     int(*const body)[2] = w->body;
-    const KeaLanes keep = KeaLanesSelectOf(KeaLanesLoad(components)), none = KeaLanesSplat(ME_R(0.0));
+    const KeaLanes keep = KeaLanesSelectComponents(), none = KeaLanesSplat(ME_R(0.0));
     int i;
     for (i = i0; i < i1; ++i) {
         const int b0 = rowBodies[i][0], b1 = rowBodies[i][1];
@@ -365,8 +364,7 @@ static void KeaColourAndWarmStartChunks(int start, int end, int worker, void *da
  * then M^-1 once, KeaDot3's order lane by lane), four lanes at a time; the pads stay 0. */
 static void KeaWarmVelocityOf(const KeaIterativeWork *w, const MeReal *x, int n, int b0, int b1)
 {
-    static const MeReal components[4] = {ME_R(1.0), ME_R(1.0), ME_R(1.0), ME_R(0.0)};
-    const KeaLanes keep = KeaLanesSelectOf(KeaLanesLoad(components)), zero = KeaLanesSplat(ME_R(0.0));
+    const KeaLanes keep = KeaLanesSelectComponents(), zero = KeaLanesSplat(ME_R(0.0));
     const KeaJacobianRow *const J = w->J;
     const int(*const body)[2] = (const int(*)[2])w->body;
     KeaVel4 *const dv = w->dv;

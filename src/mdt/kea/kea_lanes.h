@@ -215,6 +215,13 @@ static inline void KeaLanesTranspose4(KeaLanes *a, KeaLanes *b, KeaLanes *c, Kea
 
 #endif
 
+/** The select (KeaLanesSelectOf) of lanes 0-2, the pad's lane clear: a padded 3-vector's components. */
+static inline KeaLanes KeaLanesSelectComponents(void)
+{
+    static const MeReal components[4] = {ME_R(1.0), ME_R(1.0), ME_R(1.0), ME_R(0.0)};
+    return KeaLanesSelectOf(KeaLanesLoad(components));
+}
+
 /** a * b + c * d, lane by lane (each product rounded, then the sum). */
 static inline KeaLanes KeaLanesDot2(const MeReal *a, const MeReal *b, const MeReal *c, const MeReal *d)
 {
