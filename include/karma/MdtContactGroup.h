@@ -47,6 +47,21 @@ ME_API void MdtContactGroupSetSwapped(MdtContactGroupID g, MeBool swapped);
  *  many were written. Invalid group, NULL `contacts` or negative `max` refused (0). */
 ME_API int MdtContactGroupGetContactsAndPositions(MdtContactGroupID g, MdtContactID *contacts, MeVector3 *positions,
                                                   int max);
+/** A collision point for MdtContactGroupSetFromCollisions: position (m), normal from body 1 towards
+ *  body 0 (made unit) and penetration (m; > 0: overlap). */
+typedef struct MdtCollisionPoint {
+    MeVector3 position, normal;
+    MeReal penetration;
+} MdtCollisionPoint;
+/** Refresh the group's contacts from n (>= 0) collision points with one handle check (a bridge, each
+ *  step): point i takes the group's old contact nearest to it (greedy, in order, so that the warm
+ *  start follows the point) or a new one appended to the group, the old contacts no point took are
+ *  destroyed, and each point's contact is set as MdtContactSetFromCollision would with `params`;
+ *  out[i] receives point i's contact. Returns how many points got a contact (fewer than n when the
+ *  constraint pool is full, reported). Invalid group, NULL argument, negative n or a world in its
+ *  step refused (0, nothing changed). */
+ME_API int MdtContactGroupSetFromCollisions(MdtContactGroupID g, const MdtContactParams *params,
+                                            const MdtCollisionPoint *points, int n, MdtContactID *out);
 /** Number of contacts in the group; 0 for an invalid ID. */
 ME_API int MdtContactGroupGetCount(MdtContactGroupID g);
 /** Sum of the contacts' normal forces in the last step, N. */

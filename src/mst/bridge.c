@@ -37,41 +37,28 @@ static MeBool checkID(const void *id, MeHandleKind kind, const char *function, c
 #define DEFAULT_PAIR_BUFFER 128
 #define DEFAULT_CONTACT_BUFFER 32
 
-/* Make room for `count` contacts in the scratch of matchContacts; 0 (reported by MeMemory) if
+/* Make room for `count` contacts in the scratch of a group's refresh; 0 (reported by MeMemory) if
  * memory runs out, the old scratch kept. */
-static MeBool reserveMatchScratch(MstBridgeData *b, int count)
+static MeBool reserveRefreshScratch(MstBridgeData *b, int count)
 {
-    if (count <= b->matchCapacity)
-        return METRUE;
-    MdtContactID *oldContacts = MeMemoryCreate(sizeof *oldContacts * (size_t)count);
-    MdtContactID *newContacts = MeMemoryCreate(sizeof *newContacts * (size_t)count);
-    MeVector3 *oldPositions = MeMemoryCreate(sizeof *oldPositions * (size_t)count);
-    MeBool *oldUsed = MeMemoryCreate(sizeof *oldUsed * (size_t)count);
-    if (!oldContacts || !newContacts || !oldPositions || !oldUsed) {
-        MeMemoryDestroy(oldContacts);
-        MeMemoryDestroy(newContacts);
-        MeMemoryDestroy(oldPositions);
-        MeMemoryDestroy(oldUsed);
+    MdtCollisionPoint *points = MeMemoryCreate(sizeof *points * (size_t)count);
+    MdtContactID *contacts = MeMemoryCreate(sizeof *contacts * (size_t)count);
+    if (!points || !contacts) {
+        MeMemoryDestroy(points);
+        MeMemoryDestroy(contacts);
         return MEFALSE;
     }
-    MeMemoryDestroy(b->oldContacts);
+    MeMemoryDestroy(b->points);
     MeMemoryDestroy(b->newContacts);
-    MeMemoryDestroy(b->oldPositions);
-    MeMemoryDestroy(b->oldUsed);
-    b->oldContacts = oldContacts;
-    b->newContacts = newContacts;
-    b->oldPositions = oldPositions;
-    b->oldUsed = oldUsed;
-    b->matchCapacity = count;
+    b->points = points;
+    b->newContacts = contacts;
     return METRUE;
 }
 
-static void freeMatchScratch(MstBridgeData *b)
+static void freeRefreshScratch(MstBridgeData *b)
 {
-    MeMemoryDestroy(b->oldContacts);
+    MeMemoryDestroy(b->points);
     MeMemoryDestroy(b->newContacts);
-    MeMemoryDestroy(b->oldPositions);
-    MeMemoryDestroy(b->oldUsed);
 }
 
 MstBridgeData *MstBridgeFromID(MstBridgeID id, const char *function)
@@ -98,7 +85,7 @@ MstBridgeID MstBridgeCreate(McdFrameworkID frame, int maxMaterials)
     b->pairs = McdModelPairContainerCreate(b->pairBufferSize);
     b->contactBufferSize = DEFAULT_CONTACT_BUFFER;
     b->contacts = MeMemoryCreate(sizeof *b->contacts * (size_t)b->contactBufferSize);
-    const MeBool scratch = reserveMatchScratch(b, b->contactBufferSize);
+    const MeBool scratch = reserveRefreshScratch(b, b->contactBufferSize);
     b->ownerSlot = (b->table && b->pairs && b->contacts && scratch) ? MeHandleRegisterOwner(b, ME_HANDLE_BRIDGE, __func__)
                                                                     : 0;
     if (!b->ownerSlot) {
@@ -106,7 +93,7 @@ MstBridgeID MstBridgeCreate(McdFrameworkID frame, int maxMaterials)
         if (b->pairs)
             McdModelPairContainerDestroy(b->pairs);
         MeMemoryDestroy(b->contacts);
-        freeMatchScratch(b);
+        freeRefreshScratch(b);
         MeMemoryDestroy(b);
         return NULL;
     }
@@ -125,7 +112,7 @@ void MstBridgeDestroy(MstBridgeID id)
     MeHandleUnregisterOwner(b->ownerSlot);
     McdModelPairContainerDestroy(b->pairs);
     MeMemoryDestroy(b->contacts);
-    freeMatchScratch(b);
+    freeRefreshScratch(b);
     MeMemoryDestroy(b->table);
     MeMemoryDestroy(b);
 }
@@ -167,7 +154,7 @@ void MstBridgeSetContactBufferSize(MstBridgeID id, int size)
         return;
     }
     McdContact *c = MeMemoryCreate(sizeof *c * (size_t)size);
-    if (!c || !reserveMatchScratch(b, size)) {
+    if (!c || !reserveRefreshScratch(b, size)) {
         MeMemoryDestroy(c);
         return;
     }
@@ -254,52 +241,24 @@ void MstBridgeSayHello(McdModelPairContainer *pairs)
     }
 }
 
-/* The group's existing contacts are reused for the new ones; a new contact takes the old contact
- * nearest to it (greedy, in the test's order), so that warm-start impulses follow the points. The
- * bridge's scratch holds every old contact, however many the group has. Returns how many of the n
- * new contacts have a dynamics contact in b->newContacts. */
-static int matchContacts(MstBridgeData *b, MdtContactGroupID g, const McdContact *in, int n)
+/* The group's contacts refreshed from the pair's n collision contacts (normals negated for a
+ * swapped pair, penetration the negated separation); returns how many have a dynamics contact in
+ * b->newContacts. The group's old contacts are reused for the new ones, each new one taking the
+ * old one nearest to it (MdtContactGroupSetFromCollisions), so that warm-start impulses follow the
+ * points. */
+static int refreshGroup(MstBridgeData *b, MdtContactGroupID g, const MstMaterialPairData *mat,
+                        const McdContact *in, int n, MeBool swapped)
 {
-    /* One call reads the group when the scratch holds it, as it does unless the group has grown
-     * beyond every earlier one: a full read may have left some out, so the group is counted then. */
-    int oldCount = MdtContactGroupGetContactsAndPositions(g, b->oldContacts, b->oldPositions, b->matchCapacity);
-    if (oldCount == b->matchCapacity || n > b->matchCapacity) {
-        const int groupCount = MdtContactGroupGetCount(g);
-        if (!reserveMatchScratch(b, groupCount > n ? groupCount : n))
-            return 0; /* out of memory: reported by MeMemory; the group keeps last step's contacts */
-        oldCount = MdtContactGroupGetContactsAndPositions(g, b->oldContacts, b->oldPositions, b->matchCapacity);
-    }
-    MdtContactID *old = b->oldContacts, *out = b->newContacts;
-    MeBool *used = b->oldUsed;
-    for (int k = 0; k < oldCount; k++)
-        used[k] = MEFALSE;
+    MdtCollisionPoint *points = b->points;
     for (int i = 0; i < n; i++) {
-        int best = -1;
-        MeReal bestD = MEINFINITY;
-        for (int k = 0; k < oldCount; k++) {
-            if (used[k])
-                continue;
-            MeReal d = MeVector3DistanceSqr(b->oldPositions[k], in[i].position);
-            if (d < bestD) {
-                bestD = d;
-                best = k;
-            }
-        }
-        if (best >= 0) {
-            used[best] = METRUE;
-            out[i] = old[best];
-        } else {
-            out[i] = MdtContactGroupCreateContact(g);
-            if (!out[i]) {
-                n = i; /* constraint pool full: reported by Mdt (once, in the world's caller name) */
-                break;
-            }
-        }
+        MeVector3Copy(points[i].position, in[i].position);
+        if (swapped)
+            MeVector3Set(points[i].normal, -in[i].normal[0], -in[i].normal[1], -in[i].normal[2]);
+        else
+            MeVector3Copy(points[i].normal, in[i].normal);
+        points[i].penetration = -in[i].separation;
     }
-    for (int k = 0; k < oldCount; k++)
-        if (!used[k])
-            MdtContactGroupDestroyContact(g, old[k]);
-    return n;
+    return MdtContactGroupSetFromCollisions(g, &mat->params, points, n, b->newContacts);
 }
 
 int MstBridgeConvertPair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world, MeBool tested,
@@ -337,22 +296,14 @@ int MstBridgeConvertPair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world,
     }
     /* An intersect callback may have set a count beyond the buffer it was given. */
     int n = result->contactCount < b->contactBufferSize ? result->contactCount : b->contactBufferSize;
-    n = matchContacts(b, g, result->contacts, n);
-    MdtContactID *dyn = b->newContacts;
-    int kept = 0;
-    for (int i = 0; i < n; i++) {
-        const McdContact *c = &result->contacts[i];
-        if (swapped) {
-            const MeVector3 normal = {-c->normal[0], -c->normal[1], -c->normal[2]};
-            MdtContactSetFromCollision(dyn[i], &mat->params, c->position, normal, -c->separation);
-        } else {
-            MdtContactSetFromCollision(dyn[i], &mat->params, c->position, c->normal, -c->separation);
+    n = refreshGroup(b, g, mat, result->contacts, n, swapped);
+    /* The per-contact callback sees each contact set, the group's others set too. */
+    int kept = n;
+    for (int i = 0; i < n && mat->perContactCB; i++)
+        if (!mat->perContactCB(result, &result->contacts[i], b->newContacts[i])) {
+            MdtContactGroupDestroyContact(g, b->newContacts[i]);
+            kept--;
         }
-        if (mat->perContactCB && !mat->perContactCB(result, &result->contacts[i], dyn[i]))
-            MdtContactGroupDestroyContact(g, dyn[i]);
-        else
-            kept++;
-    }
     /* A per-pair callback returning 0 removes the pair's contacts (Karma's MstPerPairCBPtr), not the
      * group, which lives until Goodbye. */
     if (kept == 0 || (mat->perPairCB && !mat->perPairCB(result, g))) {

@@ -33,13 +33,10 @@ typedef struct MstBridgeData {
     int pairBufferSize;
     McdContact *contacts;              /* buffer for one pair test */
     int contactBufferSize;
-    /* Scratch of one group's refresh (matchContacts), room for matchCapacity contacts: the group's
-     * old contacts, their positions and whether a new one took them, and the new contacts. It grows
-     * with the contact buffer and with a group that holds more contacts than that. */
-    MdtContactID *oldContacts, *newContacts;
-    MeVector3 *oldPositions;
-    MeBool *oldUsed;
-    int matchCapacity;
+    /* Scratch of one group's refresh (refreshGroup), room for the contact buffer: the collision
+     * points and the group's contacts for them. */
+    MdtCollisionPoint *points;
+    MdtContactID *newContacts;
     int lastPairCount, lastContactCount;
     /* The pair tests on several workers (parallel_pairs.c): one record per pair of a chunk and
      * contactBufferSize contacts each; made when the universe gets a task system (else at the first

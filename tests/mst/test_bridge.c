@@ -284,6 +284,64 @@ static void group_contacts_and_positions_in_order(void **state)
     MdtWorldDestroy(w);
 }
 
+/* A group refreshed from collision points in one call: each point takes the nearest old contact not
+ * yet taken (its warm start with it), a point with none left gets a new contact appended, old
+ * contacts no point took are destroyed; the fields are set as MdtContactSetFromCollision sets them;
+ * a full constraint pool stops at the point it could not serve; bad arguments are refused. */
+static void group_refresh_takes_the_nearest_old_contacts(void **state)
+{
+    (void)state;
+    karma_capture_messages();
+    MdtWorldID w = MdtWorldCreate(4, 5, 1, 1); /* room for the group and four contacts */
+    MdtContactGroupID g = MdtContactGroupCreate(w);
+    MdtContactID made[3];
+    for (int i = 0; i < 3; i++) {
+        made[i] = MdtContactGroupCreateContact(g);
+        MdtContactSetPosition(made[i], (MeReal)i, 0, 0);
+    }
+    MdtContactParams params;
+    MdtContactParamsReset(&params);
+    MdtContactParamsSetFriction(&params, 3);
+    MdtCollisionPoint points[4] = {{{2.1f, 0, 0}, {0, 0, 2}, 0.01f}, {{0.1f, 0, 0}, {0, 1, 0}, 0.02f}};
+    MdtContactID out[4] = {NULL, NULL, NULL, NULL};
+    assert_int_equal(MdtContactGroupSetFromCollisions(g, &params, points, 2, out), 2);
+    assert_ptr_equal(out[0], made[2]);
+    assert_ptr_equal(out[1], made[0]);
+    assert_false(MdtConstraintIsValid(MdtContactQuaConstraint(made[1]))); /* no point took it */
+    MdtContactID got[3];
+    assert_int_equal(MdtContactGroupGetContactsAndPositions(g, got, NULL, 3), 2);
+    assert_ptr_equal(got[0], made[0]); /* the group's order kept */
+    assert_ptr_equal(got[1], made[2]);
+    MeVector3 p, n;
+    MdtContactGetPosition(made[2], p);
+    MdtContactGetNormal(made[2], n);
+    assert_true(p[0] == 2.1f && n[0] == 0 && n[1] == 0 && n[2] == 1); /* the normal made unit */
+    assert_true(MdtContactGetPenetration(made[2]) == (MeReal)0.01f);
+    assert_near(MdtContactParamsGetPrimaryFriction(MdtContactGetParams(made[0])), 3, 0);
+    /* four points on three old contacts: each takes the nearest one left, the last a new one */
+    MdtCollisionPoint more[5] = {{{0, 0, 0}, {0, 1, 0}, 0}, {{9, 0, 0}, {0, 1, 0}, 0}, {{2, 0, 0}, {0, 1, 0}, 0},
+                                 {{8, 0, 0}, {0, 1, 0}, 0}, {{7, 0, 0}, {0, 1, 0}, 0}};
+    MdtContactID extra = MdtContactGroupCreateContact(g);
+    MdtContactSetPosition(extra, 100, 0, 0);
+    assert_int_equal(MdtContactGroupSetFromCollisions(g, &params, more, 4, out), 4);
+    assert_ptr_equal(out[0], made[0]);
+    assert_ptr_equal(out[1], made[2]); /* nearer to (9, 0, 0) than extra */
+    assert_ptr_equal(out[2], extra);
+    assert_true(out[3] && out[3] != made[0] && out[3] != made[2] && out[3] != extra);
+    assert_int_equal(MdtContactGroupGetCount(g), 4);
+    /* a fifth point finds the pool full: the four served, the fifth left out */
+    assert_reports(ME_ERR_POOL_FULL, assert_int_equal(MdtContactGroupSetFromCollisions(g, &params, more, 5, out), 4));
+    assert_int_equal(MdtContactGroupGetCount(g), 4);
+    /* bad arguments: nothing changed */
+    assert_reports(ME_ERR_NULL_ARGUMENT, assert_int_equal(MdtContactGroupSetFromCollisions(g, NULL, more, 1, out), 0));
+    assert_reports(ME_ERR_NULL_ARGUMENT, assert_int_equal(MdtContactGroupSetFromCollisions(g, &params, NULL, 1, out), 0));
+    assert_reports(ME_ERR_ARGUMENT_RANGE, assert_int_equal(MdtContactGroupSetFromCollisions(g, &params, more, -1, out), 0));
+    assert_int_equal(MdtContactGroupGetCount(g), 4);
+    MdtContactGroupDestroy(g);
+    assert_reports(ME_ERR_INVALID_HANDLE, assert_int_equal(MdtContactGroupSetFromCollisions(g, &params, more, 1, out), 0));
+    MdtWorldDestroy(w);
+}
+
 static int perContactCalls, perPairCalls, intersectCalls;
 static void countIntersect(McdIntersectResult *r)
 {
@@ -624,6 +682,7 @@ int main(void)
         cmocka_unit_test(empty_group_neither_joins_nor_wakes),
         cmocka_unit_test(collision_update_skips_bad_fields_one_by_one),
         cmocka_unit_test(group_contacts_and_positions_in_order),
+        cmocka_unit_test(group_refresh_takes_the_nearest_old_contacts),
         cmocka_unit_test(callbacks_and_parameters),
         cmocka_unit_test(contact_buffer_size_is_the_only_limit),
         cmocka_unit_test(freeze_follows_disable),

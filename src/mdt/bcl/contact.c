@@ -480,6 +480,15 @@ void MdtContactSetParams(MdtContactID id, const MdtContactParams *p)
     setParams(d, p, __func__);
 }
 
+void MdtContactSetCollisionFields(ContactData *d, const MdtContactParams *params, const MeVector3 position,
+                                  const MeVector3 normal, MeReal penetration)
+{
+    setParams(d, params, "MdtContactSetParams");
+    setPosition(d, position[0], position[1], position[2], "MdtContactSetPosition");
+    setNormal(d, normal[0], normal[1], normal[2], "MdtContactSetNormal");
+    setPenetration(d, penetration, "MdtContactSetPenetration");
+}
+
 void MdtContactSetFromCollision(MdtContactID id, const MdtContactParams *params, const MeVector3 position,
                                 const MeVector3 normal, MeReal penetration)
 {
@@ -489,10 +498,7 @@ void MdtContactSetFromCollision(MdtContactID id, const MdtContactParams *params,
     (void)c;
     ME_CHECK_NOT_NULL(position, ME_NOTHING);
     ME_CHECK_NOT_NULL(normal, ME_NOTHING);
-    setParams(d, params, "MdtContactSetParams");
-    setPosition(d, position[0], position[1], position[2], "MdtContactSetPosition");
-    setNormal(d, normal[0], normal[1], normal[2], "MdtContactSetNormal");
-    setPenetration(d, penetration, "MdtContactSetPenetration");
+    MdtContactSetCollisionFields(d, params, position, normal, penetration);
 }
 
 void MdtContactGetRelativeVelocity(MdtContactID id, MeVector3 v)

@@ -213,6 +213,22 @@ static void release(MdtConstraintData *c)
     MdtConstraintAttach(c, b0, b1);
 }
 
+/* Unlink c, which follows prev in d's list (NULL: c is the first). */
+static void unlinkAfter(GroupData *d, MdtConstraintData *prev, MdtConstraintData *c)
+{
+    ContactData *cd = MDT_CONSTRAINT_DATA(c, ContactData);
+    if (prev)
+        MDT_CONSTRAINT_DATA(prev, ContactData)->next = cd->next;
+    else
+        d->first = cd->next;
+    if (d->last == c)
+        d->last = prev;
+    d->count--;
+    cd->group = NULL;
+    cd->next = NULL;
+    c->inGroup = MEFALSE;
+}
+
 /* Unlink c from g's list; returns METRUE if it was there. */
 static MeBool unlink(MdtConstraintData *g, GroupData *d, MdtConstraintData *c)
 {
@@ -220,18 +236,7 @@ static MeBool unlink(MdtConstraintData *g, GroupData *d, MdtConstraintData *c)
     for (MdtConstraintData *it = d->first; it; prev = it, it = MDT_CONSTRAINT_DATA(it, ContactData)->next) {
         if (it != c)
             continue;
-        MdtConstraintData *next = MDT_CONSTRAINT_DATA(c, ContactData)->next;
-        if (prev)
-            MDT_CONSTRAINT_DATA(prev, ContactData)->next = next;
-        else
-            d->first = next;
-        if (d->last == c)
-            d->last = prev;
-        d->count--;
-        ContactData *cd = MDT_CONSTRAINT_DATA(c, ContactData);
-        cd->group = NULL;
-        cd->next = NULL;
-        c->inGroup = MEFALSE;
+        unlinkAfter(d, prev, c);
         (void)g;
         return METRUE;
     }
@@ -312,6 +317,13 @@ MdtContactID MdtContactGroupCreateContact(MdtContactGroupID id)
     return (MdtContactID)c->id;
 }
 
+/* A contact unlinked from its group destroyed. */
+static void destroyUnlinked(MdtConstraintData *c)
+{
+    c->body[0] = c->body[1] = NULL;
+    MdtConstraintRelease(c);
+}
+
 void MdtContactGroupDestroyContact(MdtContactGroupID id, MdtContactID cid)
 {
     GROUP_OR_RETURN(g, d, id, ME_NOTHING);
@@ -326,8 +338,85 @@ void MdtContactGroupDestroyContact(MdtContactGroupID id, MdtContactID cid)
         ME_REPORT(ME_ERR_BAD_STATE, "the contact is not a member of this group");
         return;
     }
-    c->body[0] = c->body[1] = NULL;
-    MdtConstraintRelease(c);
+    destroyUnlinked(c);
+}
+
+/* ---- refreshing the group from a collision's points ------------------------------------------ */
+
+/* The first `old` contacts of d's list not yet matched, the one nearest to p (the first of equals);
+ * NULL if none. */
+static MdtConstraintData *nearestUnmatched(const GroupData *d, int old, const MeVector3 p)
+{
+    MdtConstraintData *best = NULL, *c = d->first;
+    MeReal bestDistance = MEINFINITY;
+    for (int k = 0; k < old; k++, c = MDT_CONSTRAINT_DATA(c, ContactData)->next) {
+        const ContactData *cd = MDT_CONSTRAINT_DATA(c, const ContactData);
+        if (cd->matched)
+            continue;
+        const MeReal distance = MeVector3DistanceSqr(cd->position, p);
+        if (distance < bestDistance) {
+            bestDistance = distance;
+            best = c;
+        }
+    }
+    return best;
+}
+
+/* Destroy those of the first `old` contacts of d's list that no point matched, in list order. */
+static void destroyUnmatched(GroupData *d, int old)
+{
+    MdtConstraintData *prev = NULL, *c = d->first;
+    for (int k = 0; k < old; k++) {
+        MdtConstraintData *next = MDT_CONSTRAINT_DATA(c, ContactData)->next;
+        if (MDT_CONSTRAINT_DATA(c, ContactData)->matched) {
+            prev = c;
+        } else {
+            unlinkAfter(d, prev, c);
+            destroyUnlinked(c);
+        }
+        c = next;
+    }
+}
+
+int MdtContactGroupSetFromCollisions(MdtContactGroupID id, const MdtContactParams *params,
+                                     const MdtCollisionPoint *points, int n, MdtContactID *out)
+{
+    GROUP_OR_RETURN(g, d, id, 0);
+    ME_CHECK_NOT_NULL(params, 0);
+    if (n < 0) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'n' (%d) must not be negative; call ignored", n);
+        return 0;
+    }
+    if (n > 0) {
+        ME_CHECK_NOT_NULL(points, 0);
+        ME_CHECK_NOT_NULL(out, 0);
+    }
+    if (g->world->locked) {
+        ME_REPORT(ME_ERR_WORLD_LOCKED, "contacts cannot be changed during the world's step");
+        return 0;
+    }
+    /* New contacts are appended after the old ones, so the old are the list's first `old`. */
+    const int old = d->count;
+    MdtConstraintData *c = d->first;
+    for (int k = 0; k < old; k++, c = MDT_CONSTRAINT_DATA(c, ContactData)->next)
+        MDT_CONSTRAINT_DATA(c, ContactData)->matched = MEFALSE;
+    int i = 0;
+    for (; i < n; i++) {
+        c = nearestUnmatched(d, old, points[i].position);
+        if (c) {
+            MDT_CONSTRAINT_DATA(c, ContactData)->matched = METRUE;
+        } else {
+            c = MdtConstraintCreateForContacts((MdtWorldID)g->world->id, MdtBclCONTACT, &MdtContactClass, __func__);
+            if (!c)
+                break; /* pool full: reported (once, in the world's caller name when it has one) */
+            append(g, d, c);
+        }
+        MdtContactSetCollisionFields(MDT_CONSTRAINT_DATA(c, ContactData), params, points[i].position,
+                                     points[i].normal, points[i].penetration);
+        out[i] = (MdtContactID)c->id;
+    }
+    destroyUnmatched(d, old);
+    return i;
 }
 
 MeBool MdtContactGroupIsSwapped(MdtContactGroupID id)

@@ -22,6 +22,7 @@ typedef struct ContactData {
     MdtConstraintData *next;      /* next contact of the group */
     unsigned long lodStamp;   /* matrix capping: lodRows holds for the step with this partition stamp */
     int lodRows;              /* rows capping left this contact (0: dropped, 1: frictionless) */
+    MeBool matched;           /* MdtContactGroupSetFromCollisions: a new point took this old contact */
 } ContactData;
 MDT_CONSTRAINT_DATA_FITS(ContactData);
 
@@ -33,6 +34,10 @@ int MdtContactRowCount(const ContactData *d);
 int MdtContactStepRows(const MdtConstraintData *contact);
 /* Write one contact's rows for `owner` (the contact itself, or its group): bodies come from owner. */
 void MdtContactAddRows(const MdtConstraintData *owner, MdtConstraintData *contact, MdtRowWriter *w);
+/* MdtContactSetFromCollision's fields (params, position, normal made unit, penetration), each checked
+ * as its setter would, a bad one skipped and reported in that setter's name. */
+void MdtContactSetCollisionFields(ContactData *d, const MdtContactParams *params, const MeVector3 position,
+                                  const MeVector3 normal, MeReal penetration);
 /* Keep the contact's impulses (warm start) and its normal force. */
 void MdtContactUnpack(MdtConstraintData *contact, const MeReal *impulses, int rows, MeReal h);
 

@@ -18,14 +18,52 @@ static void KeaPackSetRows(const KeaJacobianRow *const rows[KEA_PACK_LANES], MeR
         KeaLanesStoreA(out[k], v[k]);
 }
 
-/* Pack k from the contact blocks block[0 .. lanes - 1] (lanes <= 4; the others hold no contact: zero
- * rows on the world body nb). */
+/* Lane l of the pack from contact block b (its rows s, s + 1, s + 2), the SM step's fields cleared. */
+static void KeaPackSetLane(const KeaProblem *problem, const KeaIterativeWork *w, KeaContactPack *pack, int l, int b)
+{
+    const int s = w->blockStart[b], factored = w->blockFactored[b] != 0;
+    const MeReal *inv = w->blockInv + w->blockMatrix[b];
+    int r, c;
+    for (r = 0; r < 3; ++r) /* KeaBlockSymmetricApply's out[r] reads entry 3 c + r for in[c] */
+        for (c = 0; c < 3; ++c)
+            pack->inv[3 * r + c][l] = factored ? inv[3 * c + r] : ME_R(0.0);
+    for (r = 0; r < 3; ++r) {
+        pack->invDiag[r][l] = w->invDiag[s + r];
+        pack->rhs[r][l] = problem->rhs[s + r];
+        pack->mask[r][l] = pack->keep[r][l] = ME_R(0.0);
+    }
+    pack->full[l] = ME_R(0.0);
+    pack->mu[0][l] = problem->mu[s + 1];
+    pack->mu[1][l] = problem->mu[s + 2];
+    pack->normalHi[l] = problem->hi[s];
+    pack->body[0][l] = w->body[s][0];
+    pack->body[1][l] = w->body[s][1];
+    pack->row[l] = s;
+    pack->live[l] = factored;
+}
+
+/* Lane l of the pack holding no contact: zeros on the world body nb, its rows lane 0's (masked). */
+static void KeaPackClearLane(KeaContactPack *pack, int l, int nb)
+{
+    int r;
+    for (r = 0; r < 9; ++r)
+        pack->inv[r][l] = ME_R(0.0);
+    for (r = 0; r < 3; ++r)
+        pack->invDiag[r][l] = pack->rhs[r][l] = pack->mask[r][l] = pack->keep[r][l] = ME_R(0.0);
+    pack->full[l] = pack->mu[0][l] = pack->mu[1][l] = pack->normalHi[l] = ME_R(0.0);
+    pack->body[0][l] = pack->body[1][l] = nb;
+    pack->row[l] = pack->row[0];
+    pack->live[l] = 0;
+}
+
+/* Pack k from the contact blocks block[0 .. lanes - 1] (1 <= lanes <= 4; the others hold no
+ * contact: zero rows on the world body nb). */
 static void KeaPackSet(const KeaProblem *problem, KeaIterativeWork *w, KeaContactPack *pack, const int *block,
                        int lanes)
 {
     static _Alignas(16) const KeaJacobianRow zero;
     const KeaJacobianRow *J[KEA_PACK_LANES], *B[KEA_PACK_LANES];
-    int l, r, c;
+    int l, r;
     for (r = 0; r < 3; ++r) {
         for (l = 0; l < KEA_PACK_LANES; ++l) {
             const int s = l < lanes ? w->blockStart[block[l]] : 0;
@@ -35,28 +73,10 @@ static void KeaPackSet(const KeaProblem *problem, KeaIterativeWork *w, KeaContac
         KeaPackSetRows(J, pack->J[r]);
         KeaPackSetRows(B, pack->B[r]);
     }
-    for (l = 0; l < KEA_PACK_LANES; ++l) {
-        const int b = l < lanes ? block[l] : block[0], s = w->blockStart[b];
-        const int factored = l < lanes && w->blockFactored[b];
-        const MeReal *inv = w->blockInv + w->blockMatrix[b];
-        for (r = 0; r < 3; ++r) /* KeaBlockSymmetricApply's out[r] reads entry 3 c + r for in[c] */
-            for (c = 0; c < 3; ++c)
-                pack->inv[3 * r + c][l] = factored ? inv[3 * c + r] : ME_R(0.0);
-        for (r = 0; r < 3; ++r) {
-            pack->invDiag[r][l] = l < lanes ? w->invDiag[s + r] : ME_R(0.0);
-            pack->mask[r][l] = pack->keep[r][l] = ME_R(0.0);
-        }
-        pack->full[l] = ME_R(0.0);
-        pack->mu[0][l] = l < lanes ? problem->mu[s + 1] : ME_R(0.0);
-        pack->mu[1][l] = l < lanes ? problem->mu[s + 2] : ME_R(0.0);
-        pack->normalHi[l] = l < lanes ? problem->hi[s] : ME_R(0.0);
-        for (r = 0; r < 3; ++r)
-            pack->rhs[r][l] = l < lanes ? problem->rhs[s + r] : ME_R(0.0);
-        pack->body[0][l] = l < lanes ? w->body[s][0] : problem->nBodies;
-        pack->body[1][l] = l < lanes ? w->body[s][1] : problem->nBodies;
-        pack->row[l] = s;
-        pack->live[l] = factored;
-    }
+    for (l = 0; l < lanes; ++l)
+        KeaPackSetLane(problem, w, pack, l, block[l]);
+    for (; l < KEA_PACK_LANES; ++l)
+        KeaPackClearLane(pack, l, problem->nBodies);
     pack->lanes = lanes;
     pack->pair = lanes == KEA_PACK_LANES;
     for (l = 1; l < KEA_PACK_LANES; ++l)
@@ -156,14 +176,13 @@ int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x)
     int k, l, r, listed = 0;
     for (k = 0; k < nPacks; ++k) {
         KeaContactPack *pack = &packs[k];
-        const int base = KEA_PACK_POSITIONS * k;
+        const int base = KEA_PACK_POSITIONS * k, lanes = pack->lanes;
         MeReal *lo = los + base, *hi = his + base, *xF = xFs + base;
         _Alignas(16) MeReal xs[3][KEA_PACK_LANES], nPos[KEA_PACK_LANES];
         KeaLanes m[3], bound;
-        int allFull = 1;
-        for (l = 0; l < KEA_PACK_LANES; ++l) {
-            const int s = pack->row[l], used = l < pack->lanes;
-            const int on0 = used & was[s], on1 = used & was[s + 1], on2 = used & was[s + 2];
+        int allFull = lanes == KEA_PACK_LANES;
+        for (l = 0; l < lanes; ++l) { /* wasFree holds 0 or 1 */
+            const int s = pack->row[l], on0 = was[s], on1 = was[s + 1], on2 = was[s + 2];
             const int full = pack->live[l] & on0 & on1 & on2;
             pack->mask[0][l] = (MeReal)on0;
             pack->mask[1][l] = (MeReal)on1;
@@ -171,9 +190,15 @@ int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x)
             pack->full[l] = (MeReal)full;
             allFull &= full;
             listed += on0 + on1 + on2;
+            xs[0][l] = x[s];
+            xs[1][l] = x[s + 1];
+            xs[2][l] = x[s + 2];
+            nPos[l] = KeaMax(x[s], ME_R(0.0));
+        }
+        for (; l < KEA_PACK_LANES; ++l) { /* no contact: masked */
             for (r = 0; r < 3; ++r)
-                xs[r][l] = x[s + r];
-            nPos[l] = KeaMax(xs[0][l], ME_R(0.0));
+                pack->mask[r][l] = xs[r][l] = ME_R(0.0);
+            nPos[l] = pack->full[l] = ME_R(0.0);
         }
         pack->allFull = allFull;
         for (r = 0; r < 3; ++r) {
