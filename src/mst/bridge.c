@@ -2,7 +2,7 @@
  *
  * A pair's MdtContactGroup hangs on McdModelPair.userData from the first step its models intersect
  * until the pair's Goodbye (as the User Guide describes; decision M3). Its contacts are refreshed in
- * place each step (a new contact reuses the group's nearest old one, see matchContacts), so the
+ * place each step (a new contact reuses the group's nearest old one, see refreshGroup), so the
  * solver's warm start carries over between steps. A step without contacts (the models apart while
  * their boxes still overlap, every contact refused by the per-contact callback, or the per-pair
  * callback returning 0) empties the group and disables it, as Karma's bridge did: an empty group
