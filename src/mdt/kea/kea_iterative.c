@@ -463,7 +463,6 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
     else
         KeaSetUpRows(problem, w, x, 0, n);
     KeaSetUpBlocks(problem, w, KeaBlockCap(n, params->maxBlockRows));
-    KeaContactConstsFill(problem, w);
     if (w->split) { /* the colouring beside the warm start's chunks */
         KeaSplitRun(w->split, KeaColourAndWarmStartChunks, rowChunks + 1, &t);
         if (!t.coloured)
@@ -471,6 +470,7 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
     } else {
         KeaWarmStartRows(w, x, 0, n);
     }
+    KeaContactConstsFill(problem, w);
     if (w->split) /* dv from the warm start in ranges of bodies, one a worker */
         KeaSplitRun(w->split, KeaBodyVelocityRanges, KeaSplitWorkers(&w->split->hook), &t);
     else
