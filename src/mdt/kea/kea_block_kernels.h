@@ -174,6 +174,10 @@ static inline void KeaBlockScatter(int m, const KeaJacobianRow *B, const MeReal 
                 KeaRowApply4(&B[r], d[r], v0, v1);
     } else if (m == 3) { /* a contact */
         KeaBlockScatterSized(3, B, d, v0, v1);
+    } else if (m == 5) { /* a hinge */
+        KeaBlockScatterSized(5, B, d, v0, v1);
+    } else if (m == 6) { /* a fixed joint */
+        KeaBlockScatterSized(6, B, d, v0, v1);
     } else {
         KeaBlockScatterSized(m, B, d, v0, v1);
     }
@@ -186,11 +190,13 @@ static inline void KeaBlockScatter(int m, const KeaJacobianRow *B, const MeReal 
 static inline void KeaBlockApplyNew(KeaIterativeWork *w, int s, int m, const MeReal *xNew, const MeReal *wb, MeReal *d,
                                     MeReal *x, MeReal *decrease)
 {
+    MeReal decreased = *decrease; /* a local: *decrease may be the sweep's, in memory */
     int r;
     for (r = 0; r < m; ++r) {
         d[r] = xNew[r] - x[s + r];
-        *decrease -= ME_R(0.5) * d[r] * wb[r];
+        decreased -= ME_R(0.5) * d[r] * wb[r];
     }
+    *decrease = decreased;
     /* the world's half (dv[nb], all zero) is not written: a split sweep's blocks on the world run at once */
     if (w->body[s][0] != w->nb)
         KeaBlockScatter(m, &w->B[s], d, &w->dv[w->body[s][0]], w->body[s][1] == w->nb ? NULL : &w->dv[w->body[s][1]]);

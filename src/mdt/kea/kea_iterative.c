@@ -34,13 +34,13 @@ KEA_ALWAYS_INLINE MeReal KeaBlockStepSized(const int m, const KeaProblem *proble
     MeReal worst = ME_R(0.0);
     int r, fits = w->blockFactored[block];
     KeaBlockGather(w, s, m, &w->dv[w->body[s][0]], &w->dv[w->body[s][1]], wb);
-    for (r = 0; r < m; ++r) {
+    for (r = 0; r < m; ++r) /* w_b = J_b dv + eps x_b - r_b (a loop of its own: it vectorises) */
+        wb[r] = wb[r] + eps[s + r] * x[s + r] - rhs[s + r];
+    for (r = 0; r < m; ++r) { /* the bounds (a link inside the block stays a link, with the row's own) */
         const int i = s + r;
-        const MeReal wi = wb[r] + eps[i] * x[i] - rhs[i];
         KeaRowBoundsInline(problem, x, i, &lo[r], &hi[r]);
         if (sweep->measure && w->invDiag[i] != ME_R(0.0))
-            worst = KeaMax(worst, w->diag[i] * KeaFabs(x[i] - KeaClamp(x[i] - wi * w->invDiag[i], lo[r], hi[r])));
-        wb[r] = wi;
+            worst = KeaMax(worst, w->diag[i] * KeaFabs(x[i] - KeaClamp(x[i] - wb[r] * w->invDiag[i], lo[r], hi[r])));
         link[r] = -1;
         if (problem->link && problem->link[i] >= s && problem->link[i] < s + m) {
             link[r] = problem->link[i] - s;
