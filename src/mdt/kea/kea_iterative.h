@@ -51,8 +51,9 @@
  * half. A block of m > 4 rows (a joint's: a fixed joint has 6) computes its w_b = J_b dv from a 12 x m
  * transpose of its J (KeaColumnsApply, one vectorised column kernel for all block products: w_b
  * through KeaColumnsApplyPair, which reads the two bodies in place,
- * A_bb^-1 w_b, the preconditioner, forming A_bb) and applies its deltas to local copies of its two
- * bodies; SM's matrix-free products go through the declared contacts four at a time, a lane each
+ * A_bb^-1 w_b, the preconditioner, forming A_bb; a hinge's 5 rows and a fixed joint's 6 through its
+ * inlined twins with the row count constant, KeaJointApply, kea_block_kernels.h) and applies its
+ * deltas to local copies of its two bodies; SM's matrix-free products go through the declared contacts four at a time, a lane each
  * (kea_contact_packs.h), then through the generic rows' free list a piece (a free row on its own,
  * or a block whose rows are all free) at a time the same way, each piece's rows and bodies listed
  * once per SM step (KeaFreePiece). */
