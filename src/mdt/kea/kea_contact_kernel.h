@@ -62,6 +62,9 @@ static inline int KeaContactTry(const MeReal *A, const MeReal *r, const MeReal *
     return 1;
 }
 
+/* n = 0 is valid: w_n = A 0 - r_n = -r_n >= 0. */
+static inline int KeaContactOpens(MeReal rn) { return -rn >= ME_R(0.0); }
+
 /* One contact with friction (a normal row with bounds [0, inf) and two rows linked to it with no
  * bounds of their own), solved exactly by trying its few active sets, x = (n, f1, f2):
  *   n = 0 (the contact opens; the friction rows are pinned at 0): valid if w_n >= 0;
@@ -73,9 +76,6 @@ static inline int KeaContactTry(const MeReal *A, const MeReal *r, const MeReal *
  * The first valid set in that fixed order is taken (with mu small enough the solution is unique).
  * Exact comparisons: a set valid only within rounding is left to the dense solver. Returns 1 if
  * solved (out holds the solution). */
-/* n = 0 is valid: w_n = A 0 - r_n = -r_n >= 0. */
-static inline int KeaContactOpens(MeReal rn) { return -rn >= ME_R(0.0); }
-
 static inline int KeaContactActiveSets(const MeReal *A, const MeReal *r, const MeReal *mu, MeReal *out)
 {
     if (KeaContactOpens(r[0])) { /* n = 0 */
@@ -137,8 +137,8 @@ static void KeaContactDense(const KeaProblem *problem, KeaIterativeWork *w, int 
 }
 
 /* The contact's r_loc = A_bb x_b - w_b (the local LCP's right-hand side, for which its w is the true
- * w), in lanes 0-2: row r of the symmetric A_bb is A + 3 r, each lane's ((A_0r x_0 + A_1r x_1) +
- * A_2r x_2) - w_r; lane 3 is not used. */
+ * w), in lanes 0-2: A_bb's rows j at A + 3 j give lane r A_jr, so lane r is ((A_0r x_0 + A_1r x_1) +
+ * A_2r x_2) - w_r, the scalar sums in their order; lane 3 is not used. */
 static inline KeaLanes KeaContactRloc(const MeReal *A, const MeReal *xb, KeaLanes wl)
 {
     const KeaLanes x0 = KeaLanesSplat(xb[0]), x1 = KeaLanesSplat(xb[1]), x2 = KeaLanesSplat(xb[2]);
@@ -210,8 +210,8 @@ KEA_ALWAYS_INLINE MeReal KeaContactBlockStep(const KeaProblem *problem, KeaItera
     if (!fits) {
         const MeReal *A = w->blockA + w->blockMatrix[block];
         MeReal rl[4], out[3];
-        /* a contact with n = 0 (open, or at rest on the cone's tip) whose r_loc_n says it stays open:
-         * the closed forms' answer, without their call (with n = 0 they try opening first) */
+        /* an open contact (n not positive) whose r_loc_n says it stays open: the closed forms' answer
+         * without their call (for such a contact they skip the set it was in and try opening first) */
         if (!(x[s] > ME_R(0.0)) && KeaContactOpens(KeaLanesAt(KeaContactRloc(A, x + s, wl), 0))) {
             xn = KeaLanesSplat(ME_R(0.0));
         } else if (KeaContactClosedForms(A, problem->mu + s, x + s, wl, rl, out)) {
