@@ -52,7 +52,7 @@ static void lanes_do_the_scalar_operations(void **state)
 }
 
 /* The contact step's lane helpers (kea_lanes.h) are the scalar operations: the three sums at once,
- * a lane out, |a|, and the compare masks (NaN and -0 among the values). */
+ * a lane out, |a|, the larger of two (KeaMax), and the compare masks (NaN and -0 among the values). */
 static void contact_step_lanes_are_the_scalars(void **state)
 {
     KtRng rng = {2468};
@@ -87,6 +87,12 @@ static void contact_step_lanes_are_the_scalars(void **state)
             assert_true(same_bits(KeaLanesAt(la, k), a[k]));
             assert_true(same_bits(out[k], MeFabs(a[k])));
         }
+        KeaLanesStore(out, KeaLanesMax(la, lb)); /* KeaMax: b for a NaN and for two zeros */
+        for (k = 0; k < 4; ++k)
+            assert_true(same_bits(out[k], a[k] > b[k] ? a[k] : b[k]));
+        KeaLanesStore(out, KeaLanesMax(lb, KeaLanesSplat(ME_R(0.0))));
+        for (k = 0; k < 4; ++k)
+            assert_true(same_bits(out[k], b[k] > ME_R(0.0) ? b[k] : ME_R(0.0)));
         for (k = 0; k < 3; ++k) {
             le |= (a[k] <= b[k]) << k;
             lt |= (a[k] < b[k]) << k;

@@ -23,7 +23,8 @@ typedef struct Fixture {
     _Alignas(16) MeReal lo[NPOS], hi[NPOS], xFree[NPOS], grad[NPOS], epsFree[NPOS], step[NPOS];
     _Alignas(16) MeReal res[NPOS], z[NPOS], dir[NPOS], q[NPOS];
     KeaVel4 dv[NB + 1], dvTmp[NB + 1];
-    unsigned char was[NPOS];
+    unsigned char was[NPOS]; /* by row; the contacts' records hold them as masks */
+    _Alignas(16) MeReal JT[12 * NPOS]; /* the contacts' records (KeaContactConsts at JT + 12 s) */
     MeReal x[NPOS];
     KeaIterativeWork w;
 } Fixture;
@@ -79,10 +80,12 @@ static void make_fixture(KtRng *rng)
             fx.x[r] = (MeReal)kt_range(rng, 2.0, 10.0); /* with mu = MEINFINITY: an infinite bound */
         fx.epsFree[r] = kt_uniform(rng) < 0.3 ? ME_R(0.0) : (MeReal)kt_range(rng, 1e-6, 1e-2);
     }
+    for (r = 0; r < NPOS; r += 3)
+        KeaContactConstsOf(fx.JT, r)->freeRows = fx.was[r] | fx.was[r + 1] << 1 | fx.was[r + 2] << 2;
     fx.w.packs = fx.packs;
+    fx.w.JT = fx.JT;
     fx.w.nPacks = NP;
     fx.w.nb = NB;
-    fx.w.wasFree = fx.was;
     fx.w.lo = fx.lo;
     fx.w.hi = fx.hi;
     fx.w.xFree = fx.xFree;

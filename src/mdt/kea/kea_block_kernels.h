@@ -9,22 +9,74 @@
 
 #include "kea_iterative.h"
 
+/* A joint's block (more than 4 rows, at most 8: a hinge has 5, a fixed joint 6) times a vector,
+ * column by column with the sums of KeaColumnsApply (kea_rows.c: each out[r] a running sum over the
+ * columns in order, from +0), rows 0-3 in lanes and the others one by one. Inlined where m and the
+ * column count are constants, so that it unrolls: in the general kernel its call, the copy of its
+ * input and its loops cost more than the products. */
+enum { KEA_JOINT_ROWS_MAX = 8 };
+
+/* acc (rows 0-3) and tail (rows 4 ... m - 1) += column (m rows) times v. */
+static inline void KeaJointColumn(const int m, const MeReal *column, MeReal v, KeaLanes *acc, MeReal *tail)
+{
+    int r;
+    *acc = KeaLanesAdd(*acc, KeaLanesMul(KeaLanesLoad(column), KeaLanesSplat(v)));
+    for (r = 4; r < m; ++r)
+        tail[r - 4] += column[r] * v;
+}
+
+static inline void KeaJointColumnsOut(const int m, KeaLanes acc, const MeReal *tail, MeReal *out)
+{
+    int r;
+    KeaLanesStore(out, acc);
+    for (r = 4; r < m; ++r)
+        out[r] = tail[r - 4];
+}
+
+/* out = M in for the m x nc column-major M. */
+static inline void KeaJointApply(const int m, const int nc, const MeReal *M, const MeReal *in, MeReal *out)
+{
+    KeaLanes acc = KeaLanesSplat(ME_R(0.0));
+    MeReal tail[KEA_JOINT_ROWS_MAX - 4] = {ME_R(0.0), ME_R(0.0), ME_R(0.0), ME_R(0.0)};
+    int c;
+    for (c = 0; c < nc; ++c)
+        KeaJointColumn(m, M + c * m, in[c], &acc, tail);
+    KeaJointColumnsOut(m, acc, tail, out);
+}
+
+/* out = M (v0, v1) for the m x 12 column-major M of a block's J_b^T (KeaColumnsApplyPair's sums):
+ * component c of the bodies is half c / 3 of (v0 lin, v0 ang, v1 lin, v1 ang), entry c % 3. */
+static inline void KeaJointApplyPair(const int m, const MeReal *M, const KeaVel4 *v0, const KeaVel4 *v1, MeReal *out)
+{
+    const MeReal *const half[4] = {v0->lin, v0->ang, v1->lin, v1->ang};
+    KeaLanes acc = KeaLanesSplat(ME_R(0.0));
+    MeReal tail[KEA_JOINT_ROWS_MAX - 4] = {ME_R(0.0), ME_R(0.0), ME_R(0.0), ME_R(0.0)};
+    int c;
+    for (c = 0; c < 12; ++c)
+        KeaJointColumn(m, M + c * m, half[c / 3][c % 3], &acc, tail);
+    KeaJointColumnsOut(m, acc, tail, out);
+}
+
 /* out = M in for a symmetric m x m block M (out and in distinct): KeaColumnsApply (kea_rows.c); a
- * contact's 3 x 3, the most common block, inline with the same sums. */
+ * contact's 3 x 3, the most common block, inline with the same sums, and a hinge's and a fixed
+ * joint's by KeaJointApply. */
 static inline void KeaBlockSymmetricApply(int m, const MeReal *M, const MeReal *in, MeReal *out)
 {
     int r;
-    if (m != 3) {
-        KeaColumnsApply(m, m, M, in, out);
-        return;
+    switch (m) {
+    case 3:
+        for (r = 0; r < 3; ++r)
+            out[r] = (M[r] * in[0] + M[3 + r] * in[1]) + M[6 + r] * in[2];
+        break;
+    case 5: KeaJointApply(5, 5, M, in, out); break;
+    case 6: KeaJointApply(6, 6, M, in, out); break;
+    default: KeaColumnsApply(m, m, M, in, out); break;
     }
-    for (r = 0; r < 3; ++r)
-        out[r] = (M[r] * in[0] + M[3 + r] * in[1]) + M[6 + r] * in[2];
 }
 
 /* out = J_b (v0, v1) for the block of m rows from s (all on the same two bodies): a block of more
  * than KEA_GATHER_ROW_BY_ROW rows from its transpose JT (12 x m), column by column, each out[r] its own running sum
- * over the 12 components in order; a smaller one row by row. */
+ * over the 12 components in order (a hinge's and a fixed joint's by KeaJointApplyPair); a smaller one row by row. */
 _Static_assert(KEA_GATHER_ROW_BY_ROW == 4, "KeaBlockGatherSmall is written out for 4 rows");
 
 static inline void KeaBlockGatherSmall(const KeaIterativeWork *w, int s, int m, const KeaVel4 *v0, const KeaVel4 *v1,
@@ -43,11 +95,17 @@ static inline void KeaBlockGatherSmall(const KeaIterativeWork *w, int s, int m, 
 static inline void KeaBlockGather(const KeaIterativeWork *w, int s, int m, const KeaVel4 *v0, const KeaVel4 *v1,
                                   MeReal *out)
 {
-    if (m <= KEA_GATHER_ROW_BY_ROW) { /* a ball joint, a contact point: row by row */
-        KeaBlockGatherSmall(w, s, m, v0, v1, out);
-        return;
+    const MeReal *JT = w->JT + 12 * s;
+    switch (m) {
+    case 5: KeaJointApplyPair(5, JT, v0, v1, out); break;
+    case 6: KeaJointApplyPair(6, JT, v0, v1, out); break;
+    default:
+        if (m <= KEA_GATHER_ROW_BY_ROW) /* a ball joint, a contact point: row by row */
+            KeaBlockGatherSmall(w, s, m, v0, v1, out);
+        else
+            KeaColumnsApplyPair(m, JT, v0->lin, v0->ang, v1->lin, v1->ang, out);
+        break;
     }
-    KeaColumnsApplyPair(m, w->JT + 12 * s, v0->lin, v0->ang, v1->lin, v1->ang, out);
 }
 
 /* (v0, v1) += sum_r B_r d_r over a block's m rows (rows with d_r = 0 skipped), in row order: the
@@ -116,30 +174,43 @@ static inline void KeaBlockScatter(int m, const KeaJacobianRow *B, const MeReal 
                 KeaRowApply4(&B[r], d[r], v0, v1);
     } else if (m == 3) { /* a contact */
         KeaBlockScatterSized(3, B, d, v0, v1);
+    } else if (m == 5) { /* a hinge */
+        KeaBlockScatterSized(5, B, d, v0, v1);
+    } else if (m == 6) { /* a fixed joint */
+        KeaBlockScatterSized(6, B, d, v0, v1);
     } else {
         KeaBlockScatterSized(m, B, d, v0, v1);
     }
 }
 
-/* Apply the deltas localX - x of the block's m rows from s (all on the same two bodies) to dv and
- * x, in row order, lowering *decrease by the objective's estimated decrease; localW holds the
- * block's w before the step. */
-static inline void KeaBlockApplyDeltas(KeaIterativeWork *w, int s, int m, MeReal *x, MeReal *decrease)
+/* Apply the deltas xNew - x of the block's m rows from s (all on the same two bodies) to dv and x,
+ * in row order, lowering *decrease by the objective's estimated decrease; wb holds the block's w
+ * before the step, d (m entries) takes the deltas. Size: the step's block, its new values and its w,
+ * as the block steps hold them (in their locals, or in the work's block scratch). */
+static inline void KeaBlockApplyNew(KeaIterativeWork *w, int s, int m, const MeReal *xNew, const MeReal *wb, MeReal *d,
+                                    MeReal *x, MeReal *decrease)
 {
+    MeReal decreased = *decrease; /* a local: *decrease may be the sweep's, in memory */
     int r;
     for (r = 0; r < m; ++r) {
-        w->localD[r] = w->localX[r] - x[s + r];
-        *decrease -= ME_R(0.5) * w->localD[r] * w->localW[r];
+        d[r] = xNew[r] - x[s + r];
+        decreased -= ME_R(0.5) * d[r] * wb[r];
     }
+    *decrease = decreased;
     /* the world's half (dv[nb], all zero) is not written: a split sweep's blocks on the world run at once */
     if (w->body[s][0] != w->nb)
-        KeaBlockScatter(m, &w->B[s], w->localD, &w->dv[w->body[s][0]],
-                        w->body[s][1] == w->nb ? NULL : &w->dv[w->body[s][1]]);
+        KeaBlockScatter(m, &w->B[s], d, &w->dv[w->body[s][0]], w->body[s][1] == w->nb ? NULL : &w->dv[w->body[s][1]]);
     else if (w->body[s][1] != w->nb)
-        KeaBlockScatterHalf1(m, &w->B[s], w->localD, &w->dv[w->body[s][1]]);
+        KeaBlockScatterHalf1(m, &w->B[s], d, &w->dv[w->body[s][1]]);
     for (r = 0; r < m; ++r)
-        if (w->localD[r] != ME_R(0.0))
-            x[s + r] = w->localX[r];
+        if (d[r] != ME_R(0.0))
+            x[s + r] = xNew[r];
+}
+
+/* KeaBlockApplyNew of the work's block scratch: localX the new x, localW the block's w. */
+static inline void KeaBlockApplyDeltas(KeaIterativeWork *w, int s, int m, MeReal *x, MeReal *decrease)
+{
+    KeaBlockApplyNew(w, s, m, w->localX, w->localW, w->localD, x, decrease);
 }
 
 /* The block's local box-LCP with the dense solver: its matrix A_bb, r_loc in localR, own bounds in

@@ -1,8 +1,8 @@
 /* kea_contact_consts.c -- the contact step's constants (KeaContactConsts, kea_iterative.h): each
  * declared contact's inverse, eps, r and mu copied once a solve into one padded record beside its
  * rows, so that the step (kea_contact_kernel.h), run a dozen times a step per contact, reads them
- * as lanes in one place instead of as scalars from four arrays. The same values: the sweep's bits
- * do not change. */
+ * as lanes in one place instead of as scalars from four arrays, with its rows' free flags from the
+ * warm start as one mask. The same values: the sweep's bits do not change. */
 #include <string.h>
 
 #include "kea_iterative.h"
@@ -13,7 +13,8 @@ void KeaContactConstsFill(const KeaProblem *problem, KeaIterativeWork *w)
 {
     const int nBlocks = w->nBlocks;
     const int *restrict blockStart = w->blockStart, *restrict blockMatrix = w->blockMatrix;
-    const unsigned char *restrict contact = w->blockContact, *restrict factored = w->blockFactored;
+    const unsigned char *restrict contact = w->blockContact, *restrict factored = w->blockFactored,
+                        *restrict wasFree = w->wasFree;
     const MeReal *restrict blockInv = w->blockInv, *restrict eps = w->eps, *restrict rhs = problem->rhs,
                  *restrict mu = problem->mu;
     MeReal *restrict JT = w->JT;
@@ -37,6 +38,7 @@ void KeaContactConstsFill(const KeaProblem *problem, KeaIterativeWork *w)
         k.mu[1] = mu[s + 1];
         k.mu[2] = mu[s + 2];
         k.eps[3] = k.rhs[3] = k.mu[3] = ME_R(0.0);
+        k.freeRows = wasFree[s] | wasFree[s + 1] << 1 | wasFree[s + 2] << 2;
         memcpy(JT + 12 * s, &k, sizeof k);
     }
 }

@@ -62,6 +62,9 @@ static inline int KeaContactTry(const MeReal *A, const MeReal *r, const MeReal *
     return 1;
 }
 
+/* n = 0 is valid: w_n = A 0 - r_n = -r_n >= 0. */
+static inline int KeaContactOpens(MeReal rn) { return -rn >= ME_R(0.0); }
+
 /* One contact with friction (a normal row with bounds [0, inf) and two rows linked to it with no
  * bounds of their own), solved exactly by trying its few active sets, x = (n, f1, f2):
  *   n = 0 (the contact opens; the friction rows are pinned at 0): valid if w_n >= 0;
@@ -75,7 +78,7 @@ static inline int KeaContactTry(const MeReal *A, const MeReal *r, const MeReal *
  * solved (out holds the solution). */
 static inline int KeaContactActiveSets(const MeReal *A, const MeReal *r, const MeReal *mu, MeReal *out)
 {
-    if (-r[0] >= ME_R(0.0)) { /* n = 0: w = A 0 - r */
+    if (KeaContactOpens(r[0])) { /* n = 0 */
         out[0] = out[1] = out[2] = ME_R(0.0);
         return 1;
     }
@@ -88,20 +91,18 @@ static inline int KeaContactActiveSets(const MeReal *A, const MeReal *r, const M
 }
 
 /* A contact's rows free now (KeaRowIsFree: its normal row's bounds [0, inf), its friction rows'
- * +-mu n: -b < x_r < b is |x_r| < b) into was, from its impulses xn in lanes; returns how many of the
- * three changed. The sweep calls it after each contact's step, which is that block's last change
- * before the next SM chance (a contact's bounds depend on its own rows only). */
-static inline int KeaContactFreeRows(const KeaContactConsts *k, KeaLanes xn, unsigned char *was)
+ * +-mu n: -b < x_r < b is |x_r| < b) into its record's mask, from its impulses xn in lanes; returns
+ * how many of the three changed. The sweep calls it after each contact's step, which is that block's
+ * last change before the next SM chance (a contact's bounds depend on its own rows only). */
+static inline int KeaContactFreeRows(KeaContactConsts *k, KeaLanes xn)
 {
     static const unsigned char bitsSet[8] = {0, 1, 1, 2, 1, 2, 2, 3};
     const MeReal n = KeaLanesAt(xn, 0);
     const KeaLanes bound = KeaLanesMul(KeaLanesLoadA(k->mu), KeaLanesSplat(KeaMax(n, ME_R(0.0))));
     const int now = (KeaLanesLt3(KeaLanesAbs(xn), bound) & 6) | (ME_R(0.0) < n && n < MEINFINITY);
-    const int before = was[0] | was[1] << 1 | was[2] << 2;
-    was[0] = (unsigned char)(now & 1);
-    was[1] = (unsigned char)(now >> 1 & 1);
-    was[2] = (unsigned char)(now >> 2);
-    return bitsSet[now ^ before];
+    const int changed = bitsSet[now ^ k->freeRows];
+    k->freeRows = now;
+    return changed;
 }
 
 /* The contact step is the sweep's every block on a pile: inlined into the sweep, its fields stay in
@@ -113,14 +114,16 @@ static inline int KeaContactFreeRows(const KeaContactConsts *k, KeaLanes xn, uns
 #  define KEA_ALWAYS_INLINE static inline
 #endif
 
-/* The contact's block when the closed forms fail: its local LCP (r_loc in rl, w in wb, x in xb) to
+/* The contact's block when the closed forms fail: its local LCP (r_loc in rl, w in wl, x in xb) to
  * the dense solver, then applied like a generic block's step. Size: the contact step's state handed
  * on as that step holds it (its one call site). */
-static void KeaContactDense(const KeaProblem *problem, KeaIterativeWork *w, int block, const MeReal *wb,
+static void KeaContactDense(const KeaProblem *problem, KeaIterativeWork *w, int block, KeaLanes wl,
                             const MeReal *rl, MeReal *x, KeaSweepState *sweep)
 {
     const int s = w->blockStart[block];
+    MeReal wb[4];
     int r;
+    KeaLanesStore(wb, wl);
     for (r = 0; r < 3; ++r) {
         w->localW[r] = wb[r];
         w->localR[r] = rl[r];
@@ -133,22 +136,28 @@ static void KeaContactDense(const KeaProblem *problem, KeaIterativeWork *w, int 
     KeaBlockApplyDeltas(w, s, 3, x, &sweep->decrease);
 }
 
-/* The contact step's closed forms when not all rows are free (a quarter of the steps on a pile):
- * r_loc = A_bb x_b - w_b into rl, then the set the contact was in, then KeaContactActiveSets; 1 with
- * the solution in out if one is valid. Kept out of line, so that the common step's registers are not
- * spent on it. Size: the step's state handed on as the step holds it (its one call site). */
-KEA_NOINLINE int KeaContactClosedForms(const KeaIterativeWork *w, int block, const MeReal *mu, const MeReal *xb,
-                                       KeaLanes wl, MeReal *rl, MeReal *out)
+/* The contact's r_loc = A_bb x_b - w_b (the local LCP's right-hand side, for which its w is the true
+ * w), in lanes 0-2: A_bb's rows j at A + 3 j give lane r A_jr, so lane r is ((A_0r x_0 + A_1r x_1) +
+ * A_2r x_2) - w_r, the scalar sums in their order; lane 3 is not used. */
+static inline KeaLanes KeaContactRloc(const MeReal *A, const MeReal *xb, KeaLanes wl)
 {
-    const MeReal *A = w->blockA + w->blockMatrix[block];
+    const KeaLanes x0 = KeaLanesSplat(xb[0]), x1 = KeaLanesSplat(xb[1]), x2 = KeaLanesSplat(xb[2]);
+    return KeaLanesSub(KeaLanesAdd(KeaLanesAdd(KeaLanesMul(KeaLanesLoad(A), x0), KeaLanesMul(KeaLanesLoad(A + 3), x1)),
+                                   KeaLanesMul(KeaLanesLoad3(A + 6), x2)),
+                       wl);
+}
+
+/* The contact's closed forms when not all rows are free (a quarter of the steps on a pile, more
+ * where contacts slide): r_loc into rl, then the set the contact was in, then KeaContactActiveSets;
+ * 1 with the solution in out if one is valid. Kept out of line, so that the common step's registers
+ * are not spent on it. Size: the step's state handed on as the step holds it (its one call site). */
+KEA_NOINLINE int KeaContactClosedForms(const MeReal *A, const MeReal *mu, const MeReal *xb, KeaLanes wl, MeReal *rl,
+                                       MeReal *out)
+{
     const MeReal was1Bound = KeaFrictionBound(mu[1], xb[0]), was2Bound = KeaFrictionBound(mu[2], xb[0]);
     const int was1 = xb[1] >= was1Bound ? 1 : (xb[1] <= -was1Bound ? -1 : 0);
     const int was2 = xb[2] >= was2Bound ? 1 : (xb[2] <= -was2Bound ? -1 : 0);
-    MeReal wb[4];
-    int r;
-    KeaLanesStore(wb, wl);
-    for (r = 0; r < 3; ++r)
-        rl[r] = ((A[r] * xb[0] + A[3 + r] * xb[1]) + A[6 + r] * xb[2]) - wb[r];
+    KeaLanesStore(rl, KeaContactRloc(A, xb, wl));
     return ((was1 | was2) != 0 && xb[0] > ME_R(0.0) && KeaContactTry(A, rl, mu, was1, was2, out)) ||
            KeaContactActiveSets(A, rl, mu, out);
 }
@@ -165,23 +174,23 @@ KEA_ALWAYS_INLINE MeReal KeaContactBlockStep(const KeaProblem *problem, KeaItera
 {
     const int s = w->blockStart[block], onWorld = w->blockContact[block] == KEA_CONTACT_WORLD;
     KeaVel4 *v0 = &w->dv[w->body[s][0]], *v1 = &w->dv[w->body[s][1]];
-    const KeaContactConsts *k = KeaContactConstsOf(w->JT, s);
-    const MeReal *mu = problem->mu + s;
-    const MeReal xb[3] = {x[s], x[s + 1], x[s + 2]};
+    KeaContactConsts *k = KeaContactConstsOf(w->JT, s);
     const KeaLanes xl = KeaLanesLoad3(x + s);
     /* w_b = J_b dv + eps x_b - r_b */
     const KeaLanes wl = KeaLanesSub(KeaLanesAdd(KeaContactGather(&w->J[s], v0, onWorld ? NULL : v1),
                                                 KeaLanesMul(KeaLanesLoadA(k->eps), xl)),
                                     KeaLanesLoadA(k->rhs));
-    const MeReal wb[3] = {KeaLanesAt(wl, 0), KeaLanesAt(wl, 1), KeaLanesAt(wl, 2)};
     KeaLanes xn = xl, d;
-    MeReal bound, worst = ME_R(0.0);
-    int r, fits = 0;
+    MeReal worst = ME_R(0.0);
+    int fits = 0;
     /* the residual before the step (when the sweep still measures): normal row in [0, inf), friction
      * rows in [-mu n, mu n] */
     if (sweep->measure) {
-        worst = KeaMax(worst, w->diag[s] * KeaFabs(xb[0] - KeaClamp(xb[0] - wb[0] * w->invDiag[s], ME_R(0.0),
-                                                                     MEINFINITY)));
+        const MeReal *mu = problem->mu + s;
+        const MeReal xb[3] = {x[s], x[s + 1], x[s + 2]}, wb[3] = {KeaLanesAt(wl, 0), KeaLanesAt(wl, 1), KeaLanesAt(wl, 2)};
+        MeReal bound;
+        int r;
+        worst = w->diag[s] * KeaFabs(xb[0] - KeaClamp(xb[0] - wb[0] * w->invDiag[s], ME_R(0.0), MEINFINITY));
         for (r = 1; r < 3; ++r) {
             bound = KeaFrictionBound(mu[r], xb[0]);
             worst = KeaMax(worst, w->diag[s + r] *
@@ -191,21 +200,27 @@ KEA_ALWAYS_INLINE MeReal KeaContactBlockStep(const KeaProblem *problem, KeaItera
     /* every row free: x_b - A_bb^-1 w_b (the inverse's columns in lanes), if it keeps within the
      * bounds its own normal gives (-b <= x_r <= b is |x_r| <= b) */
     if (w->blockFactored[block]) {
-        const KeaLanes t = KeaLanesAdd(KeaLanesAdd(KeaLanesMul(KeaLanesLoadA(k->inv[0]), KeaLanesSplat(wb[0])),
-                                                   KeaLanesMul(KeaLanesLoadA(k->inv[1]), KeaLanesSplat(wb[1]))),
-                                       KeaLanesMul(KeaLanesLoadA(k->inv[2]), KeaLanesSplat(wb[2])));
+        const KeaLanes t = KeaLanesAdd(KeaLanesAdd(KeaLanesMul(KeaLanesLoadA(k->inv[0]), KeaLanesSplat(KeaLanesAt(wl, 0))),
+                                                   KeaLanesMul(KeaLanesLoadA(k->inv[1]), KeaLanesSplat(KeaLanesAt(wl, 1)))),
+                                       KeaLanesMul(KeaLanesLoadA(k->inv[2]), KeaLanesSplat(KeaLanesAt(wl, 2))));
         const MeReal n = KeaLanesAt(xn = KeaLanesSub(xl, t), 0);
         const KeaLanes bounds = KeaLanesMul(KeaLanesLoadA(k->mu), KeaLanesSplat(KeaMax(n, ME_R(0.0))));
         fits = n >= ME_R(0.0) && (KeaLanesLe3(KeaLanesAbs(xn), bounds) & 6) == 6;
     }
     if (!fits) {
-        MeReal rl[3], out[3];
-        if (!KeaContactClosedForms(w, block, mu, x + s, wl, rl, out)) { /* valid only within rounding, or no factor */
-            KeaContactDense(problem, w, block, wb, rl, x, sweep);
-            sweep->changed += KeaContactFreeRows(k, KeaLanesLoad3(x + s), w->wasFree + s);
+        const MeReal *A = w->blockA + w->blockMatrix[block];
+        MeReal rl[4], out[3];
+        /* an open contact (n not positive) whose r_loc_n says it stays open: the closed forms' answer
+         * without their call (for such a contact they skip the set it was in and try opening first) */
+        if (!(x[s] > ME_R(0.0)) && KeaContactOpens(KeaLanesAt(KeaContactRloc(A, x + s, wl), 0))) {
+            xn = KeaLanesSplat(ME_R(0.0));
+        } else if (KeaContactClosedForms(A, problem->mu + s, x + s, wl, rl, out)) {
+            xn = KeaLanesLoad3(out);
+        } else { /* valid only within rounding, or no factor */
+            KeaContactDense(problem, w, block, wl, rl, x, sweep);
+            sweep->changed += KeaContactFreeRows(k, KeaLanesLoad3(x + s));
             return worst;
         }
-        xn = KeaLanesLoad3(out);
     }
     d = KeaLanesSub(xn, xl);
     if (sweep->tally) { /* only the sweep after an SM step is asked how much it lowered the objective */
@@ -217,7 +232,7 @@ KEA_ALWAYS_INLINE MeReal KeaContactBlockStep(const KeaProblem *problem, KeaItera
     x[s] = KeaLanesAt(xn, 0); /* d_r = 0: xn_r is x_r */
     x[s + 1] = KeaLanesAt(xn, 1);
     x[s + 2] = KeaLanesAt(xn, 2);
-    sweep->changed += KeaContactFreeRows(k, xn, w->wasFree + s);
+    sweep->changed += KeaContactFreeRows(k, xn);
     return worst;
 }
 

@@ -162,13 +162,25 @@ void KeaPacksFill(const KeaProblem *problem, KeaIterativeWork *w)
     KeaPacksSet(problem, w, 0, w->nPacks);
 }
 
+/* A contact's masks in lanes, by its free rows (bit r: row r) and whether its block is factored
+ * (bit 3): (row 0 free, row 1 free, row 2 free, all three free and factored), 1 or 0 each; four
+ * contacts' transposed are a pack's masks and full (KeaPacksListFree). */
+#define KEA_FREE_LANES(m) {(MeReal)((m) & 1), (MeReal)((m) >> 1 & 1), (MeReal)((m) >> 2 & 1), (MeReal)((m) == 15)}
+static _Alignas(16) const MeReal keaFreeLanes[16][KEA_PACK_LANES] = {
+    KEA_FREE_LANES(0),  KEA_FREE_LANES(1),  KEA_FREE_LANES(2),  KEA_FREE_LANES(3),
+    KEA_FREE_LANES(4),  KEA_FREE_LANES(5),  KEA_FREE_LANES(6),  KEA_FREE_LANES(7),
+    KEA_FREE_LANES(8),  KEA_FREE_LANES(9),  KEA_FREE_LANES(10), KEA_FREE_LANES(11),
+    KEA_FREE_LANES(12), KEA_FREE_LANES(13), KEA_FREE_LANES(14), KEA_FREE_LANES(15)};
+static const unsigned char keaBitsSet[8] = {0, 1, 1, 2, 1, 2, 2, 3};
+
 /* A contact's bounds as the contact step reads them (kea_contact_kernel.h: the normal row [0, hi],
  * the friction rows +-mu max(n, 0)), in lanes: each a row's value where its mask is 1, +0 where it
  * is 0 (KeaLanesKeep, a select: a free row's the same bits, a masked row's +0 whatever its value,
- * even a NaN or mu max(n, 0) with mu = MEINFINITY and n = 0). */
+ * even a NaN or mu max(n, 0) with mu = MEINFINITY and n = 0). The masks and x come a contact per
+ * lane, transposed into rows (a lane with no contact: lane 0's x, masked). */
 int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x)
 {
-    const unsigned char *was = w->wasFree;
+    MeReal *const JT = w->JT; /* the contacts' records: their rows' free masks */
     KeaContactPack *const packs = w->packs;
     MeReal *const los = w->lo, *const his = w->hi, *const xFs = w->xFree; /* read once: KeaPackVectors */
     const int nPacks = w->nPacks;
@@ -176,40 +188,32 @@ int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x)
     int k, l, r, listed = 0;
     for (k = 0; k < nPacks; ++k) {
         KeaContactPack *pack = &packs[k];
-        const int base = KEA_PACK_POSITIONS * k, lanes = pack->lanes;
+        const int base = KEA_PACK_POSITIONS * k;
         MeReal *lo = los + base, *hi = his + base, *xF = xFs + base;
-        _Alignas(16) MeReal xs[3][KEA_PACK_LANES], nPos[KEA_PACK_LANES];
-        KeaLanes m[3], bound;
-        int allFull = lanes == KEA_PACK_LANES;
-        for (l = 0; l < lanes; ++l) { /* wasFree holds 0 or 1 */
-            const int s = pack->row[l], on0 = was[s], on1 = was[s + 1], on2 = was[s + 2];
-            const int full = pack->live[l] & on0 & on1 & on2;
-            pack->mask[0][l] = (MeReal)on0;
-            pack->mask[1][l] = (MeReal)on1;
-            pack->mask[2][l] = (MeReal)on2;
-            pack->full[l] = (MeReal)full;
-            allFull &= full;
-            listed += on0 + on1 + on2;
-            xs[0][l] = x[s];
-            xs[1][l] = x[s + 1];
-            xs[2][l] = x[s + 2];
-            nPos[l] = KeaMax(x[s], ME_R(0.0));
+        KeaLanes m[KEA_PACK_LANES], xs[KEA_PACK_LANES], nPos, bound;
+        int allFull = 1;
+        for (l = 0; l < KEA_PACK_LANES; ++l) {
+            const int s = pack->row[l], free = l < pack->lanes ? KeaContactConstsOf(JT, s)->freeRows : 0;
+            m[l] = KeaLanesLoadA(keaFreeLanes[free | pack->live[l] << 3]);
+            xs[l] = KeaLanesLoad3(x + s);
+            allFull &= pack->live[l] & (free == 7);
+            listed += keaBitsSet[free];
         }
-        for (; l < KEA_PACK_LANES; ++l) { /* no contact: masked */
-            for (r = 0; r < 3; ++r)
-                pack->mask[r][l] = xs[r][l] = ME_R(0.0);
-            nPos[l] = pack->full[l] = ME_R(0.0);
-        }
+        KeaLanesTranspose4(&m[0], &m[1], &m[2], &m[3]);
+        KeaLanesTranspose4(&xs[0], &xs[1], &xs[2], &xs[3]);
+        KeaLanesStoreA(pack->full, m[3]);
         pack->allFull = allFull;
         for (r = 0; r < 3; ++r) {
-            m[r] = KeaLanesSelectOf(KeaLanesLoadA(pack->mask[r]));
+            KeaLanesStoreA(pack->mask[r], m[r]);
+            m[r] = KeaLanesSelectOf(m[r]);
             KeaLanesStoreA(pack->keep[r], m[r]);
-            KeaLanesStoreA(xF + KEA_PACK_LANES * r, KeaLanesKeep(KeaLanesLoadA(xs[r]), m[r]));
+            KeaLanesStoreA(xF + KEA_PACK_LANES * r, KeaLanesKeep(xs[r], m[r]));
         }
+        nPos = KeaLanesMax(xs[0], zero);
         KeaLanesStoreA(lo, zero);
         KeaLanesStoreA(hi, KeaLanesKeep(KeaLanesLoadA(pack->normalHi), m[0]));
         for (r = 1; r < 3; ++r) { /* KeaFrictionBound in lanes */
-            bound = KeaLanesKeep(KeaLanesMul(KeaLanesLoadA(pack->mu[r - 1]), KeaLanesLoadA(nPos)), m[r]);
+            bound = KeaLanesKeep(KeaLanesMul(KeaLanesLoadA(pack->mu[r - 1]), nPos), m[r]);
             KeaLanesStoreA(hi + KEA_PACK_LANES * r, bound);
             KeaLanesStoreA(lo + KEA_PACK_LANES * r, KeaLanesMul(bound, minusOne));
         }

@@ -202,9 +202,10 @@ void KeaPacksFill(const KeaProblem *problem, KeaIterativeWork *w);
  * in chunks over its workers). */
 void KeaPacksPlan(const KeaProblem *problem, KeaIterativeWork *w);
 void KeaPacksSet(const KeaProblem *problem, KeaIterativeWork *w, int first, int last);
-/* SM: set the rows' masks and the lanes' preconditioner from wasFree, and the free list's pack
- * region's bounds and x (lo, hi, xFree at its positions; 0 for a masked row, up to the sign of a
- * zero); returns the free rows. (freeRows and epsFree of the region: KeaPacksFill, once.) */
+/* SM: set the rows' masks and the lanes' preconditioner from the contacts' free rows
+ * (KeaContactConsts.freeRows), and the free list's pack region's bounds and x (lo, hi, xFree at its
+ * positions; 0 for a masked row, up to the sign of a zero); returns the free rows. (freeRows and
+ * epsFree of the region: KeaPacksFill, once.) */
 int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x);
 /* dv += M^-1 J^T v over the packs' positions. */
 void KeaPacksScatter(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, int first, int last);

@@ -13,70 +13,80 @@ static MeReal KeaRowW(const KeaProblem *problem, const KeaIterativeWork *w, int 
     return KeaRowVel4(&w->J[i], v0, v1) + w->eps[i] * x[i] - problem->rhs[i];
 }
 
-/* The common case of a block at rest: all its rows free. Try x_b - A_bb^-1 w_b with the block's
- * precomputed factor; if it lies within every row's bounds (friction links inside the block read
- * the new normal values), w_b = 0 there and it is the block's exact solution. Returns 1 if taken. */
-static int KeaBlockAllFree(const KeaProblem *problem, KeaIterativeWork *w, int block, MeReal *x, MeReal *decrease)
-{
-    const int s = w->blockStart[block], m = w->blockStart[block + 1] - s;
-    int r;
-    if (!w->blockFactored[block])
-        return 0;
-    KeaBlockSymmetricApply(m, w->blockInv + w->blockMatrix[block], w->localW, w->localX);
-    for (r = 0; r < m; ++r)
-        w->localX[r] = x[s + r] - w->localX[r];
-    for (r = 0; r < m; ++r) {
-        MeReal lo = w->localLo[r], hi = w->localHi[r];
-        if (w->localLink[r] >= 0)
-            KeaFrictionBounds(lo, hi, problem->mu[s + r], w->localX[w->localLink[r]], &lo, &hi);
-        if (!(w->localX[r] >= lo && w->localX[r] <= hi))
-            return 0;
-    }
-    KeaBlockApplyDeltas(w, s, m, x, decrease);
-    return 1;
-}
-
 /* The generic block step: solve the block of m generic rows from s exactly with the rest of x
  * fixed: its local LCP has the matrix A_bb and r_loc = A_bb x_b - w_b, so that its w is the true w
- * of these rows; all rows free (KeaBlockAllFree) or else the dense box-LCP solver. A friction link
- * to a row outside the block becomes a fixed bound. Contacts written as generic rows (adhesive,
- * bounded friction) come here; declared contacts go to the contact step. Returns the block's
- * largest row residual before (when sweep->measure; else 0). */
-static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, MeReal *x, KeaSweepState *sweep)
+ * of these rows. The common case of a block at rest first: all rows free, x_b - A_bb^-1 w_b with the
+ * block's precomputed inverse, taken if it lies within every row's bounds (friction links inside
+ * the block read the new normal values: w_b = 0 there, the block's exact solution); else the dense
+ * box-LCP solver. A friction link to a row outside the block becomes a fixed bound. Contacts written
+ * as generic rows (adhesive, bounded friction) come here; declared contacts go to the contact step.
+ * Returns the block's largest row residual before (when sweep->measure; else 0).
+ * Inlined with m a constant for a joint's usual blocks (KeaBlockStep), so that its loops over the
+ * rows unroll and its rows stay in locals; the work's block scratch is filled for the dense solver
+ * only. Size: one step's parts sharing those locals. */
+KEA_ALWAYS_INLINE MeReal KeaBlockStepSized(const int m, const KeaProblem *problem, KeaIterativeWork *w, int block,
+                                           MeReal *x, KeaSweepState *sweep)
 {
-    const int s = w->blockStart[block], m = w->blockStart[block + 1] - s;
-    const MeReal *A = w->blockA + w->blockMatrix[block];
+    const int s = w->blockStart[block];
+    const MeReal *const eps = w->eps, *const rhs = problem->rhs;
+    MeReal wb[KEA_MAX_BLOCK_ROWS], lo[KEA_MAX_BLOCK_ROWS], hi[KEA_MAX_BLOCK_ROWS], xNew[KEA_MAX_BLOCK_ROWS];
+    int link[KEA_MAX_BLOCK_ROWS];
     MeReal worst = ME_R(0.0);
-    int r;
-    KeaBlockGather(w, s, m, &w->dv[w->body[s][0]], &w->dv[w->body[s][1]], w->localW);
-    for (r = 0; r < m; ++r) {
+    int r, fits = w->blockFactored[block];
+    KeaBlockGather(w, s, m, &w->dv[w->body[s][0]], &w->dv[w->body[s][1]], wb);
+    for (r = 0; r < m; ++r) /* w_b = J_b dv + eps x_b - r_b (a loop of its own: it vectorises) */
+        wb[r] = wb[r] + eps[s + r] * x[s + r] - rhs[s + r];
+    for (r = 0; r < m; ++r) { /* the bounds (a link inside the block stays a link, with the row's own) */
         const int i = s + r;
-        const MeReal wi = w->localW[r] + w->eps[i] * x[i] - problem->rhs[i];
-        MeReal lo, hi;
-        KeaRowBoundsInline(problem, x, i, &lo, &hi);
+        KeaRowBoundsInline(problem, x, i, &lo[r], &hi[r]);
         if (sweep->measure && w->invDiag[i] != ME_R(0.0))
-            worst = KeaMax(worst, w->diag[i] * KeaFabs(x[i] - KeaClamp(x[i] - wi * w->invDiag[i], lo, hi)));
-        w->localW[r] = wi;
-        w->localLink[r] = -1;
+            worst = KeaMax(worst, w->diag[i] * KeaFabs(x[i] - KeaClamp(x[i] - wb[r] * w->invDiag[i], lo[r], hi[r])));
+        link[r] = -1;
         if (problem->link && problem->link[i] >= s && problem->link[i] < s + m) {
-            w->localLink[r] = problem->link[i] - s;
-            w->localLo[r] = problem->lo[i];
-            w->localHi[r] = problem->hi[i];
-        } else {
-            w->localLo[r] = lo;
-            w->localHi[r] = hi;
+            link[r] = problem->link[i] - s;
+            lo[r] = problem->lo[i];
+            hi[r] = problem->hi[i];
         }
     }
-    if (KeaBlockAllFree(problem, w, block, x, &sweep->decrease))
-        return worst;
-    KeaBlockSymmetricApply(m, A, x + s, w->localR); /* r_loc = A_bb x_b - w_b */
-    for (r = 0; r < m; ++r) {
-        w->localR[r] -= w->localW[r];
-        w->localX[r] = x[s + r];
+    if (fits) { /* every row free */
+        KeaBlockSymmetricApply(m, w->blockInv + w->blockMatrix[block], wb, xNew);
+        for (r = 0; r < m; ++r)
+            xNew[r] = x[s + r] - xNew[r];
+        for (r = 0; r < m; ++r) {
+            MeReal rlo = lo[r], rhi = hi[r];
+            if (link[r] >= 0)
+                KeaFrictionBounds(rlo, rhi, problem->mu[s + r], xNew[link[r]], &rlo, &rhi);
+            fits &= xNew[r] >= rlo && xNew[r] <= rhi;
+        }
     }
+    if (fits) {
+        KeaBlockApplyNew(w, s, m, xNew, wb, w->localD, x, &sweep->decrease);
+        return worst;
+    }
+    for (r = 0; r < m; ++r) {
+        w->localW[r] = wb[r];
+        w->localX[r] = x[s + r];
+        w->localLo[r] = lo[r];
+        w->localHi[r] = hi[r];
+        w->localLink[r] = link[r];
+    }
+    KeaBlockSymmetricApply(m, w->blockA + w->blockMatrix[block], x + s, w->localR); /* r_loc = A_bb x_b - w_b */
+    for (r = 0; r < m; ++r)
+        w->localR[r] -= w->localW[r];
     KeaSmallLcp(problem, w, block, sweep->maxPasses, sweep->stats);
     KeaBlockApplyDeltas(w, s, m, x, &sweep->decrease);
     return worst;
+}
+
+/* KeaBlockStepSized, with m a constant for a hinge's and a fixed joint's blocks. */
+static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, MeReal *x, KeaSweepState *sweep)
+{
+    const int m = w->blockStart[block + 1] - w->blockStart[block];
+    switch (m) {
+    case 5: return KeaBlockStepSized(5, problem, w, block, x, sweep);
+    case 6: return KeaBlockStepSized(6, problem, w, block, x, sweep);
+    default: return KeaBlockStepSized(m, problem, w, block, x, sweep);
+    }
 }
 
 /* One block's step in a sweep (the contact step, the generic block step, or a lone row's scalar
@@ -463,7 +473,6 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
     else
         KeaSetUpRows(problem, w, x, 0, n);
     KeaSetUpBlocks(problem, w, KeaBlockCap(n, params->maxBlockRows));
-    KeaContactConstsFill(problem, w);
     if (w->split) { /* the colouring beside the warm start's chunks */
         KeaSplitRun(w->split, KeaColourAndWarmStartChunks, rowChunks + 1, &t);
         if (!t.coloured)
@@ -471,6 +480,7 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
     } else {
         KeaWarmStartRows(w, x, 0, n);
     }
+    KeaContactConstsFill(problem, w);
     if (w->split) /* dv from the warm start in ranges of bodies, one a worker */
         KeaSplitRun(w->split, KeaBodyVelocityRanges, KeaSplitWorkers(&w->split->hook), &t);
     else

@@ -51,8 +51,9 @@
  * half. A block of m > 4 rows (a joint's: a fixed joint has 6) computes its w_b = J_b dv from a 12 x m
  * transpose of its J (KeaColumnsApply, one vectorised column kernel for all block products: w_b
  * through KeaColumnsApplyPair, which reads the two bodies in place,
- * A_bb^-1 w_b, the preconditioner, forming A_bb) and applies its deltas to local copies of its two
- * bodies; SM's matrix-free products go through the declared contacts four at a time, a lane each
+ * A_bb^-1 w_b, the preconditioner, forming A_bb; a hinge's 5 rows and a fixed joint's 6 through its
+ * inlined twins with the row count constant, KeaJointApply, kea_block_kernels.h) and applies its
+ * deltas to local copies of its two bodies; SM's matrix-free products go through the declared contacts four at a time, a lane each
  * (kea_contact_packs.h), then through the generic rows' free list a piece (a free row on its own,
  * or a block whose rows are all free) at a time the same way, each piece's rows and bodies listed
  * once per SM step (KeaFreePiece). */
@@ -173,18 +174,23 @@ typedef struct KeaFreePiece {
 
 /** A declared contact's constants for the contact step (kea_contact_kernel.h), laid out once a
  *  solve (KeaContactConstsFill) as the step reads them, padded to lanes (pads 0): at JT + 12 s, the
- *  room its block's transpose would take, which a contact (gathered row by row) does not use. */
+ *  room its block's transpose would take, which a contact (gathered row by row) does not use; and
+ *  which of its rows are free, the one field the sweep writes. */
 typedef struct KeaContactConsts {
     _Alignas(16) MeReal inv[3][4]; /**< the columns of its block's inverse A_bb^-1 (when factored) */
     MeReal eps[4];                 /**< its rows' eps_i */
     MeReal rhs[4];                 /**< its rows' r_i */
     MeReal mu[4];                  /**< its friction rows' mu (lanes 1, 2; lane 0 is 0) */
+    int freeRows;                  /**< SM: bit r set where row r is free (wasFree of the other rows):
+                                        from the warm start, then kept by the sweep (KeaContactFreeRows);
+                                        an int, not bytes: a byte store may alias anything for the
+                                        compiler, which then reloads the work's arrays after each */
 } KeaContactConsts;
 
-/** The contact step's constants of the declared contact whose rows start at s. */
-static inline const KeaContactConsts *KeaContactConstsOf(const MeReal *JT, int s)
+/** The contact step's record of the declared contact whose rows start at s. */
+static inline KeaContactConsts *KeaContactConstsOf(MeReal *JT, int s)
 {
-    return (const KeaContactConsts *)(const void *)(JT + 12 * s);
+    return (KeaContactConsts *)(void *)(JT + 12 * s);
 }
 
 /** What one sweep carries from block to block and hands to each block step: a local of KeaSweep
@@ -215,7 +221,8 @@ typedef struct KeaIterativeWork {
                                 again per SM step when free, but factored once a step) */
     unsigned char *blockFactored; /**< the factor exists (A_bb safely positive definite) */
     unsigned char *blockContact;  /**< KEA_CONTACT_* kind of a declared contact's block (KeaContact), else 0 */
-    unsigned char *wasFree;       /**< SM: the row was free at the last SM step (or the warm start) */
+    unsigned char *wasFree;       /**< SM: the row was free at the last SM step (or the warm start); a
+                                       declared contact's rows: its KeaContactConsts.freeRows after the set-up */
     int skippedLast;              /**< SM: the last SM step was skipped */
     MeReal sweepDecrease;         /**< estimated decrease of the QP objective by the last sweep
                                        (KeaSweepState.decrease at its end; its contacts tallied only
@@ -411,7 +418,8 @@ static inline unsigned char KeaRowIsFree(const KeaIterativeWork *w, int i, MeRea
 void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIterativeWork *w);
 void KeaSetUpBlocks(const KeaProblem *problem, KeaIterativeWork *w, int cap);
 
-/* kea_contact_consts.c: every declared contact's KeaContactConsts, after KeaSetUpBlocks. */
+/* kea_contact_consts.c: every declared contact's KeaContactConsts, after KeaSetUpBlocks and the warm
+ * start (wasFree). */
 void KeaContactConstsFill(const KeaProblem *problem, KeaIterativeWork *w);
 
 /* kea_nncg.c: NNCG's momentum step (KeaParameters.nonsmoothCg): KeaNncgStart before the first sweep,

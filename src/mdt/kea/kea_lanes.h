@@ -26,6 +26,8 @@ static inline void KeaLanesStoreA(MeReal *p, KeaLanes a) { _mm_store_ps(p, a); }
 static inline KeaLanes KeaLanesAdd(KeaLanes a, KeaLanes b) { return _mm_add_ps(a, b); }
 static inline KeaLanes KeaLanesSub(KeaLanes a, KeaLanes b) { return _mm_sub_ps(a, b); }
 static inline KeaLanes KeaLanesMul(KeaLanes a, KeaLanes b) { return _mm_mul_ps(a, b); }
+/** a > b ? a : b, lane by lane (KeaMax: b where either is a NaN or both are zeros). */
+static inline KeaLanes KeaLanesMax(KeaLanes a, KeaLanes b) { return _mm_max_ps(a, b); }
 static inline KeaLanes KeaLanesSplat(MeReal s) { return _mm_set1_ps(s); }
 /** The select of a mask m (SM's masks: 1 or 0) for KeaLanesKeep: all bits set where m is not 0. */
 static inline KeaLanes KeaLanesSelectOf(KeaLanes m) { return _mm_cmpneq_ps(m, _mm_setzero_ps()); }
@@ -129,6 +131,13 @@ static inline KeaLanes KeaLanesMul(KeaLanes a, KeaLanes b)
     int k;
     for (k = 0; k < 4; ++k)
         a.v[k] *= b.v[k];
+    return a;
+}
+static inline KeaLanes KeaLanesMax(KeaLanes a, KeaLanes b)
+{
+    int k;
+    for (k = 0; k < 4; ++k)
+        a.v[k] = a.v[k] > b.v[k] ? a.v[k] : b.v[k];
     return a;
 }
 static inline KeaLanes KeaLanesSplat(MeReal s)
