@@ -54,9 +54,24 @@ static int mergeNear(McdContact *c, int n, MeReal radius)
     return kept;
 }
 
+/* Point p (clipped with the slack) moved onto the reference face's extent along its two side axes: a
+ * sliver's points land on the edge or corner itself. */
+static void clampToFace(const Box *ref, int k, MeVector3 p)
+{
+    for (int i = 1; i < 3; i++) {
+        const MeReal *e = ref->ax[(k + i) % 3];
+        const MeReal ce = MeVector3Dot(e, ref->c), he = ref->h[(k + i) % 3], d = MeVector3Dot(e, p) - ce;
+        if (d > he)
+            MeVector3MultiplyAdd(p, he - d, e);
+        else if (d < -he)
+            MeVector3MultiplyAdd(p, -he - d, e);
+    }
+}
+
 /* Face contact: reference box `ref` with face normal nr (unit, pointing towards `inc`) along axis k; the
- * face's sides moved out by `slack` (rounding), so that boxes touching edge to edge or corner to corner
- * clip to their edge or corner instead of to nothing. */
+ * face's sides moved out by `slack` (rounding) for the clipping, so that boxes touching edge to edge or
+ * corner to corner clip to their edge or corner instead of to nothing, and the points then put back
+ * onto the face. */
 /* Size: the reference face (box, axis, normal), the incident box, the order, tolerance, slack, output. */
 static int faceContact(const Box *ref, int k, const MeVector3 nr, const Box *inc, MeBool refIsFirst,
                        MeReal tol, MeReal slack, McdContact *out)
@@ -103,7 +118,9 @@ static int faceContact(const Box *ref, int k, const MeVector3 nr, const Box *inc
     else
         MeVector3Copy(n, nr);
     for (i = 0; i < cnt; i++) {
-        MeReal sep = MeVector3Dot(poly[cur][i], nr) - off;
+        MeReal sep;
+        clampToFace(ref, k, poly[cur][i]);
+        sep = MeVector3Dot(poly[cur][i], nr) - off;
         MeVector3 onRef;
         MeVector3ScaleAndAdd(onRef, poly[cur][i], -sep, nr);
         if (refIsFirst)
