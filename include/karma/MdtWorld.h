@@ -203,7 +203,8 @@ ME_API void MdtWorldSetNonsmoothCG(MdtWorldID w, MeBool on);
  *  solve's own last changes of the impulses, with subspace minimisation at every second chance
  *  only. The same LCP; MEFALSE (the default) keeps NNCG and SM at every chance. */
 ME_API void MdtWorldSetDeflation(MdtWorldID w, MeBool on);
-/** The iterative solver stops early once its residual is below this (m/s, > 0). Default 1e-6. */
+/** The iterative solver stops early once its residual is below this (m/s, > 0). Default 1e-4 x the
+ *  world's length scale. */
 ME_API void MdtWorldSetLCPTolerance(MdtWorldID w, MeReal tolerance);
 /** Called when the world enables a body (also by the partitioner) / disables one (auto-disable). */
 ME_API void MdtWorldSetBodyEnableCallback(MdtWorldID w, MdtBodyEnableCBPtr cb, void *userData);

@@ -45,6 +45,7 @@ void MdtWorldSetDefaults(MdtWorldData *w)
     /* the iterative path's extra effort where the residual stays high (docs/kea.md, decision K36) */
     w->kea.effortResidual = KEA_EFFORT_RESIDUAL * w->lengthScale;
     w->kea.effortRestSpeed = KEA_EFFORT_REST_SPEED * w->lengthScale;
+    w->kea.tolerance = KEA_WORLD_TOLERANCE * w->lengthScale;
     /* Auto hands a partition whose pivots run over their budget to the iterative path (docs/kea.md) */
     w->kea.autoPivotsPerRow = KEA_AUTO_PIVOTS_PER_ROW;
     /* NNCG's momentum on the iterative path's sweeps: the same LCP in fewer sweeps (decision K47) */

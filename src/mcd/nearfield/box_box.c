@@ -5,8 +5,10 @@
  * contact axis (a face axis unless an edge axis is clearly better, which keeps resting contacts
  * steady); a face contact clips the other box's most anti-parallel face against the reference face
  * (Sutherland-Hodgman) and keeps up to four points, an edge contact gives the closest points of the two
- * edges. Boxes apart by less than the tolerance go to the general path (GJK), which measures the true
- * distance, not only its projection on the fifteen axes. */
+ * edges. Boxes apart by less than the tolerance are measured by clipping too when a face axis
+ * separates them most and the clipped face holds the nearest point (the axis's separation is then
+ * the true distance); otherwise they go to the general path (GJK), which measures the true distance,
+ * not only its projection on the fifteen axes. */
 #include <math.h>
 
 #include "nearfield.h"
@@ -35,10 +37,44 @@ static int clipPlane(MeVector3 *in, int n, MeVector3 *out, const MeVector3 o, Me
     return m;
 }
 
-/* Face contact: reference box `ref` with face normal nr (unit, pointing towards `inc`) along axis k. */
-/* Size: the reference face (box, axis, normal), the incident box, the order, tolerance and output. */
+/* Points of a clipped face closer together than `radius`: the one deeper kept (the slack turns a
+ * touching edge or corner into a sliver of near-equal points). Returns the count left. */
+static int mergeNear(McdContact *c, int n, MeReal radius)
+{
+    int kept = 0;
+    for (int i = 0; i < n; i++) {
+        int j = 0;
+        while (j < kept && MeVector3DistanceSqr(c[j].position, c[i].position) > radius * radius)
+            j++;
+        if (j == kept)
+            c[kept++] = c[i];
+        else if (c[i].separation < c[j].separation)
+            c[j] = c[i];
+    }
+    return kept;
+}
+
+/* Point p (clipped with the slack) moved onto the reference face's extent along its two side axes: a
+ * sliver's points land on the edge or corner itself. */
+static void clampToFace(const Box *ref, int k, MeVector3 p)
+{
+    for (int i = 1; i < 3; i++) {
+        const MeReal *e = ref->ax[(k + i) % 3];
+        const MeReal ce = MeVector3Dot(e, ref->c), he = ref->h[(k + i) % 3], d = MeVector3Dot(e, p) - ce;
+        if (d > he)
+            MeVector3MultiplyAdd(p, he - d, e);
+        else if (d < -he)
+            MeVector3MultiplyAdd(p, -he - d, e);
+    }
+}
+
+/* Face contact: reference box `ref` with face normal nr (unit, pointing towards `inc`) along axis k; the
+ * face's sides moved out by `slack` (rounding) for the clipping, so that boxes touching edge to edge or
+ * corner to corner clip to their edge or corner instead of to nothing, and the points then put back
+ * onto the face. */
+/* Size: the reference face (box, axis, normal), the incident box, the order, tolerance, slack, output. */
 static int faceContact(const Box *ref, int k, const MeVector3 nr, const Box *inc, MeBool refIsFirst,
-                       MeReal tol, McdContact *out)
+                       MeReal tol, MeReal slack, McdContact *out)
 {
     MeVector3 poly[2][16], fc, n;
     int j = 0, i, cnt = 4, cur = 0, count = 0;
@@ -66,7 +102,7 @@ static int faceContact(const Box *ref, int k, const MeVector3 nr, const Box *inc
     /* the four side planes of the reference face */
     for (i = 1; i < 3 && cnt > 0; i++) {
         const MeReal *e = ref->ax[(k + i) % 3];
-        MeReal ce = MeVector3Dot(e, ref->c), he = ref->h[(k + i) % 3];
+        MeReal ce = MeVector3Dot(e, ref->c), he = ref->h[(k + i) % 3] + slack;
         MeVector3 me;
         cnt = clipPlane(poly[cur], cnt, poly[1 - cur], e, ce + he);
         cur = 1 - cur;
@@ -82,7 +118,9 @@ static int faceContact(const Box *ref, int k, const MeVector3 nr, const Box *inc
     else
         MeVector3Copy(n, nr);
     for (i = 0; i < cnt; i++) {
-        MeReal sep = MeVector3Dot(poly[cur][i], nr) - off;
+        MeReal sep;
+        clampToFace(ref, k, poly[cur][i]);
+        sep = MeVector3Dot(poly[cur][i], nr) - off;
         MeVector3 onRef;
         MeVector3ScaleAndAdd(onRef, poly[cur][i], -sep, nr);
         if (refIsFirst)
@@ -90,7 +128,7 @@ static int faceContact(const Box *ref, int k, const MeVector3 nr, const Box *inc
         else
             count += McdNfAddPair(out, count, 16, poly[cur][i], onRef, n, tol, 2);
     }
-    return count;
+    return mergeNear(out, count, 4 * slack); /* a sliver is the slack and rounding wide */
 }
 
 /* The edge of box b parallel to axis i that supports direction d. */
@@ -106,14 +144,65 @@ static void supportEdge(const Box *b, int i, const MeVector3 d, MeVector3 e0, Me
     MeVector3MultiplyAdd(e1, b->h[i], b->ax[i]);
 }
 
+/* The contact along face axis faceAxis (A's 0-2, B's 3-5; ta, tb: B's centre from A's in each box's
+ * axes): the incident face clipped against the reference face, reduced to at most maxContacts
+ * (and MCD_NF_MAX_CONTACTS) in `out`; returns the count (0: rounding clipped everything away). */
+/* Size: both boxes, the axis and the offsets it is judged by, and the output. */
+static int faceAxisContacts(const Box *A, const Box *B, int faceAxis, const MeReal ta[3], const MeReal tb[3],
+                            MeReal tolerance, MeReal slack, McdContact *out, int maxContacts)
+{
+    McdContact buf[16];
+    MeVector3 nr;
+    const Box *ref = faceAxis < 3 ? A : B, *inc = faceAxis < 3 ? B : A;
+    const int axis = faceAxis % 3;
+    const MeReal side = faceAxis < 3 ? ta[axis] : -tb[axis];
+    int count, k;
+    MeVector3Copy(nr, ref->ax[axis]);
+    if (side < ME_R(0.0))
+        MeVector3Scale(nr, -ME_R(1.0));
+    count = faceContact(ref, axis, nr, inc, faceAxis < 3, tolerance, slack, buf);
+    if (count == 0)
+        return 0;
+    count = McdNfReduce(buf, count, MeMIN(maxContacts, MCD_NF_MAX_CONTACTS));
+    for (k = 0; k < count; k++)
+        out[k] = buf[k];
+    return count;
+}
+
+/* The contact of edge A_i x B_j, the overlap along it edgeBest (T: B's centre from A's): the closest
+ * points of the two supporting edges, one pair. */
+/* Size: both boxes, the edge pair and its overlap, the centres' offset and the output. */
+static int edgeContact(const Box *A, const Box *B, int edgeI, int edgeJ, MeReal edgeBest, const MeVector3 T,
+                       MeReal tolerance, McdContact *contacts, int maxContacts)
+{
+    MeVector3 edgeAxis, a0, a1, b0, b1, pa, pb, negAxis, on1, on2;
+    MeReal s, t;
+    MeVector3Cross(edgeAxis, A->ax[edgeI], B->ax[edgeJ]);
+    MeVector3Normalize(edgeAxis);
+    if (MeVector3Dot(edgeAxis, T) < ME_R(0.0))
+        MeVector3Scale(edgeAxis, -ME_R(1.0));
+    MeVector3MultiplyScalar(negAxis, edgeAxis, -ME_R(1.0));
+    supportEdge(A, edgeI, edgeAxis, a0, a1);
+    supportEdge(B, edgeJ, negAxis, b0, b1);
+    McdNfSegmentSegment(a0, a1, b0, b1, &s, &t);
+    MeVector3Lerp(pa, a0, a1, s);
+    MeVector3Lerp(pb, b0, b1, t);
+    /* the edges' points lie along the axis to rounding; pair them straight along it */
+    MeVector3Lerp(on1, pa, pb, ME_R(0.5));
+    MeVector3Copy(on2, on1);
+    MeVector3MultiplyAdd(on1, ME_R(0.5) * edgeBest, edgeAxis);
+    MeVector3MultiplyAdd(on2, -ME_R(0.5) * edgeBest, edgeAxis);
+    return McdNfAddPair(contacts, 0, maxContacts, on1, on2, negAxis, tolerance, 0); /* B towards A */
+}
+
 /* Size: McdNearfieldFn's signature. */
 int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2, MeReal tolerance,
                 McdContact *contacts, int maxContacts, void **cache)
 {
     Box A, B;
     MeReal R[3][3], AR[3][3], ta[3], tb[3], faceBest = MEINFINITY, edgeBest = MEINFINITY;
-    MeReal size;
-    MeVector3 T, edgeAxis = {ME_R(0.0), ME_R(0.0), ME_R(0.0)};
+    MeReal size, slack;
+    MeVector3 T;
     int i, j, faceAxis = 0, edgeI = -1, edgeJ = -1;
     MeBool separated = MEFALSE;
     if (maxContacts <= 0)
@@ -127,6 +216,8 @@ int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData 
         B.ax[i] = tm2[i];
     }
     size = MeVector3Magnitude(A.h) + MeVector3Magnitude(B.h);
+    /* rounding of the boxes' coordinates: relative to their size and to their distance from the origin */
+    slack = MCD_NF_REL_EPS * (size + MeFabs(A.c[0]) + MeFabs(A.c[1]) + MeFabs(A.c[2]));
     MeVector3Subtract(T, B.c, A.c);
     for (i = 0; i < 3; i++) {
         ta[i] = MeVector3Dot(T, A.ax[i]);
@@ -183,6 +274,20 @@ int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData 
             }
         }
     }
+    if (separated && faceBest <= edgeBest + slack) {
+        /* Apart, a face axis separating them most (to rounding: an edge axis of aligned boxes is a face
+         * axis): when the clipped incident face holds the incident
+         * box's nearest point (its separation is the axis's), that separation is the exact distance
+         * (no point of the boxes is nearer along the axis, and that one lies over the face), so the
+         * clipped face is the contact without the general path: boxes side by side in a touching
+         * stack are apart or overlapping by rounding, and take the same path either way. */
+        const int count = faceAxisContacts(&A, &B, faceAxis, ta, tb, tolerance, slack, contacts, maxContacts);
+        MeReal nearest = MEINFINITY;
+        for (int k = 0; k < count; k++)
+            nearest = MeMIN(nearest, contacts[k].separation);
+        if (count > 0 && nearest <= -faceBest + slack)
+            return count;
+    }
     if (separated) { /* within the tolerance but apart: the exact distance and its features */
         int count = McdNfConvexConvex(g1, tm1, g2, tm2, tolerance, contacts, maxContacts, cache), k;
         /* A separating axis proves the boxes apart, so a contact that claims an overlap is the general
@@ -197,43 +302,12 @@ int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData 
         if (faceBest > edgeBest)
             return 0;
     } else if (edgeI >= 0 && edgeBest < EDGE_BIAS * faceBest - MCD_NF_REL_EPS * size) {
-        MeVector3 a0, a1, b0, b1, pa, pb, negAxis, on1, on2;
-        MeReal s, t;
-        MeVector3Cross(edgeAxis, A.ax[edgeI], B.ax[edgeJ]);
-        MeVector3Normalize(edgeAxis);
-        if (MeVector3Dot(edgeAxis, T) < ME_R(0.0))
-            MeVector3Scale(edgeAxis, -ME_R(1.0));
-        MeVector3MultiplyScalar(negAxis, edgeAxis, -ME_R(1.0));
-        supportEdge(&A, edgeI, edgeAxis, a0, a1);
-        supportEdge(&B, edgeJ, negAxis, b0, b1);
-        McdNfSegmentSegment(a0, a1, b0, b1, &s, &t);
-        MeVector3Lerp(pa, a0, a1, s);
-        MeVector3Lerp(pb, b0, b1, t);
-        /* the edges' points lie along the axis to rounding; pair them straight along it */
-        MeVector3Lerp(on1, pa, pb, ME_R(0.5));
-        MeVector3Copy(on2, on1);
-        MeVector3MultiplyAdd(on1, ME_R(0.5) * edgeBest, edgeAxis);
-        MeVector3MultiplyAdd(on2, -ME_R(0.5) * edgeBest, edgeAxis);
-        return McdNfAddPair(contacts, 0, maxContacts, on1, on2, negAxis, tolerance, 0); /* B towards A */
+        return edgeContact(&A, &B, edgeI, edgeJ, edgeBest, T, tolerance, contacts, maxContacts);
     }
     {
-        McdContact buf[16];
-        MeVector3 nr;
-        int count, k;
-        const Box *ref = faceAxis < 3 ? &A : &B, *inc = faceAxis < 3 ? &B : &A;
-        int axis = faceAxis % 3;
-        MeReal side = faceAxis < 3 ? ta[axis] : -tb[axis];
-        MeVector3Copy(nr, ref->ax[axis]);
-        if (side < ME_R(0.0))
-            MeVector3Scale(nr, -ME_R(1.0));
-        count = faceContact(ref, axis, nr, inc, faceAxis < 3, tolerance, buf);
+        const int count = faceAxisContacts(&A, &B, faceAxis, ta, tb, tolerance, slack, contacts, maxContacts);
         if (count == 0) /* rounding clipped everything away: the general path */
             return McdNfConvexConvex(g1, tm1, g2, tm2, tolerance, contacts, maxContacts, cache);
-        if (maxContacts > MCD_NF_MAX_CONTACTS)
-            maxContacts = MCD_NF_MAX_CONTACTS;
-        count = McdNfReduce(buf, count, maxContacts);
-        for (k = 0; k < count; k++)
-            contacts[k] = buf[k];
         return count;
     }
 }
