@@ -93,6 +93,7 @@ typedef struct McdSpaceData {
     /* objects */
     McdSpaceObject *obj;
     int *freeObj, freeObjCount, objectCount;
+    int slotEnd;                /* every live slot is below it (slots are handed out from 0 up, a freed one first) */
     int *pending, pendingCount; /* slots inserted since the last merge */
     int cullingObjects;         /* objects with a culling table: the report re-examines every pair */
     int frozenObjects;          /* objects with MCD_OBJ_FROZEN: under two, no pair is both frozen */
@@ -182,8 +183,18 @@ static inline MeBool McdSpaceObjectMoved(const McdSpaceData *s, int slot)
 {
     return s->obj[slot].movedAt == s->sortNumber;
 }
-/* Whether two objects' boxes overlap on every sorted axis (closed intervals). */
-MeBool McdSpaceObjectsOverlap(const McdSpaceData *s, int a, int b);
+/* Whether two objects' boxes overlap on every sorted axis (closed intervals). Inline: the check after
+ * each sort asks it of every recorded overlap that moved. */
+static inline MeBool McdSpaceObjectsOverlap(const McdSpaceData *s, int a, int b)
+{
+    const MeReal *p = &s->box[6 * a], *q = &s->box[6 * b];
+    for (int i = 0; i < s->axisCount; i++) {
+        int k = s->axis[i];
+        if (!(p[k] <= q[k + 3] && q[k] <= p[k + 3]))
+            return MEFALSE;
+    }
+    return METRUE;
+}
 
 /* ---- space_pairs.c ------------------------------------------------------------------------ */
 MeBool McdSpacePairsInit(McdSpaceData *s);

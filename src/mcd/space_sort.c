@@ -122,6 +122,8 @@ int McdSpaceObjectAdd(McdSpaceData *s, uintptr_t handle, struct McdModelData *mo
     int slot = s->freeObj[--s->freeObjCount];
     McdSpaceObject *o = &s->obj[slot];
     const MeU32 movedAt = o->movedAt; /* a slot is in the moved list once */
+    if (slot >= s->slotEnd)
+        s->slotEnd = slot + 1;
     memset(o, 0, sizeof *o);
     o->movedAt = movedAt;
     o->handle = handle;
@@ -216,17 +218,6 @@ void McdSpaceObjectSetFrozen(McdSpaceData *s, int slot, MeBool frozen)
         s->frozenObjects--;
         McdSpacePairTouchObject(s, slot); /* pairs of two frozen models may start now */
     }
-}
-
-MeBool McdSpaceObjectsOverlap(const McdSpaceData *s, int a, int b)
-{
-    const MeReal *p = &s->box[6 * a], *q = &s->box[6 * b];
-    for (int i = 0; i < s->axisCount; i++) {
-        int k = s->axis[i];
-        if (!(p[k] <= q[k + 3] && q[k] <= p[k + 3]))
-            return MEFALSE;
-    }
-    return METRUE;
 }
 
 /* ---- list maintenance --------------------------------------------------------------------- */
