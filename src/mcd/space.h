@@ -44,6 +44,7 @@ typedef struct McdSpaceEndpoint {
 #define MCD_EP_MAX (1u << 30)
 #define MCD_EP_SLOT(tag) ((int)((tag) & (MCD_EP_MAX - 1u)))
 #define MCD_EP_IS_MAX(tag) (((tag) & MCD_EP_MAX) != 0)
+#define MCD_EP_KEY(tag) (2 * MCD_EP_SLOT(tag) + (MCD_EP_IS_MAX(tag) ? 1 : 0)) /* an index per end point */
 
 /* A symmetric bit matrix: models with the same table and id whose indices' bit is set never pair. */
 typedef struct McdCullingTable {
@@ -60,6 +61,7 @@ typedef struct McdSpaceObject {
     MeI32 key;        /* sort key */
     int pairHead;     /* first pair record of this object, or -1 */
     unsigned flags;
+    MeU32 movedAt;    /* McdSpaceData.sortNumber when its box last changed: moved since the last sort */
 } McdSpaceObject;
 
 typedef struct McdSpacePair {
@@ -91,11 +93,14 @@ typedef struct McdSpaceData {
     /* objects */
     McdSpaceObject *obj;
     int *freeObj, freeObjCount, objectCount;
+    int slotEnd;                /* every live slot is below it (slots are handed out from 0 up, a freed one first) */
     int *pending, pendingCount; /* slots inserted since the last merge */
     int cullingObjects;         /* objects with a culling table: the report re-examines every pair */
     int frozenObjects;          /* objects with MCD_OBJ_FROZEN: under two, no pair is both frozen */
     MeBool listsDirty;          /* some object left the lists: compact them */
     MeBool keysChanged;         /* a sort key changed: re-sort the live list at the next report */
+    MeU32 sortNumber;           /* sorts so far, from 1: an object moved since the last sort has movedAt == it */
+    int *moved, movedCount;     /* the slots whose box changed since the last sort (some may have left) */
 
     /* boxes, 6 reals per slot (lo x y z, hi x y z), apart from the objects so that the events of the
      * sort touch little memory */
@@ -105,6 +110,7 @@ typedef struct McdSpaceData {
      * object's interval on filterAxis[k] (another sorted axis when there is one), so that most
      * start-passes-end events are settled without reading the other object's box */
     McdSpaceEndpoint *ep[3];
+    int *epPos[3];     /* epPos[k][MCD_EP_KEY(tag)]: where that end point is in ep[k] */
     int filterAxis[3];
     McdSpaceEndpoint *epTmp;
     int epCount;
@@ -172,8 +178,23 @@ void McdSpaceObjectSetCulling(McdSpaceData *s, int slot, McdCullingTable *table,
 MeBool McdSpaceObjectsCulled(const McdSpaceData *s, int a, int b);
 /* Freezes or unfreezes an object (unfreezing re-examines its pairs at the next report). */
 void McdSpaceObjectSetFrozen(McdSpaceData *s, int slot, MeBool frozen);
-/* Whether two objects' boxes overlap on every sorted axis (closed intervals). */
-MeBool McdSpaceObjectsOverlap(const McdSpaceData *s, int a, int b);
+/* Whether an object's box changed since the last sort (the sort skips what did not move). */
+static inline MeBool McdSpaceObjectMoved(const McdSpaceData *s, int slot)
+{
+    return s->obj[slot].movedAt == s->sortNumber;
+}
+/* Whether two objects' boxes overlap on every sorted axis (closed intervals). Inline: the check after
+ * each sort asks it of every recorded overlap that moved. */
+static inline MeBool McdSpaceObjectsOverlap(const McdSpaceData *s, int a, int b)
+{
+    const MeReal *p = &s->box[6 * a], *q = &s->box[6 * b];
+    for (int i = 0; i < s->axisCount; i++) {
+        int k = s->axis[i];
+        if (!(p[k] <= q[k + 3] && q[k] <= p[k + 3]))
+            return MEFALSE;
+    }
+    return METRUE;
+}
 
 /* ---- space_pairs.c ------------------------------------------------------------------------ */
 MeBool McdSpacePairsInit(McdSpaceData *s);

@@ -155,7 +155,7 @@ void McdSpaceUpdateAll(McdSpaceID space)
     SPACE_OR_RETURN(s, space, ME_NOTHING);
     if (!McdSpaceCheckChanging(s, METRUE, __func__))
         return;
-    for (int slot = 0; slot < s->maxObjects; slot++) {
+    for (int slot = 0; slot < s->slotEnd; slot++) {
         McdSpaceObject *o = &s->obj[slot];
         if (!(o->flags & MCD_OBJ_LIVE) || !o->model)
             continue;

@@ -264,10 +264,11 @@ void McdSpacePairSetOverlap(McdSpaceData *s, int a, int b, MeBool on)
 
 void McdSpacePairDropApart(McdSpaceData *s)
 {
-    /* Backwards: removing entry i moves the last entry (already looked at) into its place. */
+    /* Backwards: removing entry i moves the last entry (already looked at) into its place. Two boxes
+     * that did not move since they were found overlapping still overlap. */
     for (int i = s->overlapCount - 1; i >= 0; i--) {
         const McdSpaceOverlap *o = &s->overlap[i];
-        if (!McdSpaceObjectsOverlap(s, o->a, o->b)) {
+        if ((McdSpaceObjectMoved(s, o->a) || McdSpaceObjectMoved(s, o->b)) && !McdSpaceObjectsOverlap(s, o->a, o->b)) {
             int p = o->pair;
             setOverlapFlag(s, p, MEFALSE);
             touch(s, p);

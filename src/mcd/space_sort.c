@@ -57,6 +57,7 @@ MeBool McdSpaceEngineInit(McdSpaceData *s, int axes, int maxObjects, int maxPair
         s->filterAxis[i] = s->axis[(i + 1) % s->axisCount];
     s->maxObjects = maxObjects;
     s->maxPairs = maxPairs;
+    s->sortNumber = 1; /* above every zeroed object's movedAt */
     s->objectsSizeName = "objectCount in McdSpaceAxisSortCreate";
     s->pairsSizeName = "pairCount in McdSpaceAxisSortCreate";
     size_t n = (size_t)(maxObjects > 0 ? maxObjects : 1);
@@ -69,11 +70,13 @@ MeBool McdSpaceEngineInit(McdSpaceData *s, int axes, int maxObjects, int maxPair
     s->activePosNew = MeMemoryCreate(n * sizeof(int));
     s->epTmp = MeMemoryCreate(2 * n * sizeof(McdSpaceEndpoint));
     s->box = MeMemoryCreateZeroed(6 * n * sizeof(MeReal));
+    s->moved = MeMemoryCreate(n * sizeof(int));
     MeBool ok = s->obj && s->freeObj && s->pending && s->activeAll && s->activeNew && s->activePosAll &&
-                s->activePosNew && s->epTmp && s->box;
+                s->activePosNew && s->epTmp && s->box && s->moved;
     for (int k = 0; k < s->axisCount; k++) {
         s->ep[k] = MeMemoryCreate(2 * n * sizeof(McdSpaceEndpoint));
-        ok = ok && s->ep[k];
+        s->epPos[k] = MeMemoryCreate(2 * n * sizeof(int));
+        ok = ok && s->ep[k] && s->epPos[k];
     }
     if (!ok)
         return MEFALSE;
@@ -96,8 +99,11 @@ void McdSpaceEngineTerm(McdSpaceData *s)
     MeMemoryDestroy(s->activePosNew);
     MeMemoryDestroy(s->epTmp);
     MeMemoryDestroy(s->box);
-    for (int k = 0; k < 3; k++)
+    MeMemoryDestroy(s->moved);
+    for (int k = 0; k < 3; k++) {
         MeMemoryDestroy(s->ep[k]);
+        MeMemoryDestroy(s->epPos[k]);
+    }
 }
 
 static MeBool boxIsValid(const MeReal lo[3], const MeReal hi[3])
@@ -115,7 +121,11 @@ int McdSpaceObjectAdd(McdSpaceData *s, uintptr_t handle, struct McdModelData *mo
         return -1;
     int slot = s->freeObj[--s->freeObjCount];
     McdSpaceObject *o = &s->obj[slot];
+    const MeU32 movedAt = o->movedAt; /* a slot is in the moved list once */
+    if (slot >= s->slotEnd)
+        s->slotEnd = slot + 1;
     memset(o, 0, sizeof *o);
+    o->movedAt = movedAt;
     o->handle = handle;
     o->model = model;
     o->key = key;
@@ -158,9 +168,15 @@ MeBool McdSpaceObjectSetAABB(McdSpaceData *s, int slot, const MeReal lo[3], cons
     if (!boxIsValid(lo, hi))
         return MEFALSE;
     MeReal *b = &s->box[6 * slot];
+    MeBool same = METRUE;
     for (int k = 0; k < 3; k++) {
+        same &= (b[k] == lo[k]) & (b[k + 3] == hi[k]);
         b[k] = lo[k];
         b[k + 3] = hi[k];
+    }
+    if (!same && s->obj[slot].movedAt != s->sortNumber) {
+        s->obj[slot].movedAt = s->sortNumber;
+        s->moved[s->movedCount++] = slot;
     }
     return METRUE;
 }
@@ -204,18 +220,16 @@ void McdSpaceObjectSetFrozen(McdSpaceData *s, int slot, MeBool frozen)
     }
 }
 
-MeBool McdSpaceObjectsOverlap(const McdSpaceData *s, int a, int b)
-{
-    const MeReal *p = &s->box[6 * a], *q = &s->box[6 * b];
-    for (int i = 0; i < s->axisCount; i++) {
-        int k = s->axis[i];
-        if (!(p[k] <= q[k + 3] && q[k] <= p[k + 3]))
-            return MEFALSE;
-    }
-    return METRUE;
-}
-
 /* ---- list maintenance --------------------------------------------------------------------- */
+
+/* Records where ep[axisIndex]'s end points from index `from` on are. */
+static void notePositions(McdSpaceData *s, int axisIndex, int from, int count)
+{
+    const McdSpaceEndpoint *ep = s->ep[axisIndex];
+    int *pos = s->epPos[axisIndex];
+    for (int i = from; i < count; i++)
+        pos[MCD_EP_KEY(ep[i].tag)] = i;
+}
 
 /* Drops the end points of objects that left the lists. */
 static void compactLists(McdSpaceData *s)
@@ -227,6 +241,7 @@ static void compactLists(McdSpaceData *s)
         for (int i = 0; i < s->epCount; i++)
             if (s->obj[MCD_EP_SLOT(ep[i].tag)].flags & MCD_OBJ_INLISTS)
                 ep[n++] = ep[i];
+        notePositions(s, k, 0, n);
     }
     s->epCount = n;
     s->listsDirty = MEFALSE;
@@ -247,37 +262,60 @@ static void setEndpoint(const McdSpaceData *s, int axisIndex, McdSpaceEndpoint *
     e->hi = f[3];
 }
 
-/* Rewrites the lists' values from the objects' boxes (they change between sorts). */
-static void refreshValues(McdSpaceData *s)
+/* Rewrites the end points of the objects whose box changed since the last sort (the others' still hold
+ * their boxes: a resting pile moves few of its objects), and gives each axis's lowest and highest
+ * index of them in first[] and last[] (first > last: none). */
+static void refreshValues(McdSpaceData *s, int first[3], int last[3])
 {
     for (int i = 0; i < s->axisCount; i++) {
-        McdSpaceEndpoint *ep = s->ep[i];
-        for (int j = 0; j < s->epCount; j++)
-            setEndpoint(s, i, &ep[j]);
+        first[i] = s->epCount;
+        last[i] = -1;
+    }
+    for (int m = 0; m < s->movedCount; m++) {
+        const int slot = s->moved[m];
+        if (!(s->obj[slot].flags & MCD_OBJ_INLISTS) || !McdSpaceObjectMoved(s, slot))
+            continue; /* left the lists, or a pending object: the merge sets its end points */
+        for (int i = 0; i < s->axisCount; i++)
+            for (int isMax = 0; isMax < 2; isMax++) {
+                const int at = s->epPos[i][2 * slot + isMax];
+                setEndpoint(s, i, &s->ep[i][at]);
+                first[i] = at < first[i] ? at : first[i];
+                last[i] = at > last[i] ? at : last[i];
+            }
     }
 }
 
-/* Insertion sort of one axis. Only a start passing an end to its left can make two boxes overlap:
- * those events test every axis and record the new overlaps. An end passing a start is ignored here:
- * McdSpacePairDropApart then looks at the recorded overlaps (about one per object, against two or
- * more such events per object and axis when many objects move). */
-static void insertionSort(McdSpaceData *s, int axisIndex)
+/* Insertion sort of one axis, whose changed end points lie between indices first and last. Only a
+ * start passing an end to its left can make two boxes overlap: those events test every axis and
+ * record the new overlaps. An end passing a start is ignored here: McdSpacePairDropApart then looks
+ * at the recorded overlaps (about one per object, against two or more such events per object and
+ * axis when many objects move).
+ * The pass starts at `first` (the end points before it have not changed: in order) and stops at the
+ * first end point in order past `last` (the ones after it have not changed either, and are no lower):
+ * the passes over the rest would move nothing. */
+static void insertionSort(McdSpaceData *s, int axisIndex, int first, int last)
 {
     McdSpaceEndpoint *ep = s->ep[axisIndex];
+    int *pos = s->epPos[axisIndex];
     const MeReal *box = s->box;
     const int n = s->epCount, axisCount = s->axisCount, filter = s->filterAxis[axisIndex];
     int axis[3] = {s->axis[0], s->axis[1], s->axis[2]};
-    for (int i = 1; i < n; i++) {
+    for (int i = first > 1 ? first : 1; i < n; i++) {
         McdSpaceEndpoint e = ep[i];
-        if (!epLess(&e, &ep[i - 1]))
+        if (!epLess(&e, &ep[i - 1])) {
+            if (i > last)
+                break;
             continue;
+        }
         int j = i - 1;
         if (MCD_EP_IS_MAX(e.tag)) { /* an end moving down: no event */
             do {
                 ep[j + 1] = ep[j];
+                pos[MCD_EP_KEY(ep[j + 1].tag)] = j + 1;
                 j--;
             } while (j >= 0 && epLess(&e, &ep[j]));
             ep[j + 1] = e;
+            pos[MCD_EP_KEY(e.tag)] = j + 1;
             continue;
         }
         int se = MCD_EP_SLOT(e.tag);
@@ -301,9 +339,11 @@ static void insertionSort(McdSpaceData *s, int axisIndex)
                     McdSpacePairSetOverlap(s, se, so, METRUE);
             }
             ep[j + 1] = o;
+            pos[MCD_EP_KEY(o.tag)] = j + 1;
             j--;
         } while (j >= 0 && epLess(&e, &ep[j]));
         ep[j + 1] = e;
+        pos[MCD_EP_KEY(e.tag)] = j + 1;
     }
 }
 
@@ -372,6 +412,7 @@ static void mergePending(McdSpaceData *s)
             else
                 ep[w--] = fresh[b--];
         }
+        notePositions(s, i, w + 1, s->epCount + k2); /* below w + 1 nothing moved */
     }
     s->epCount += k2;
     for (int j = 0; j < s->pendingCount; j++) {
@@ -413,11 +454,16 @@ void McdSpaceSort(McdSpaceData *s, MeBool sort, const char *function)
         s->lostPending = MEFALSE;
     if (s->listsDirty)
         compactLists(s);
-    if (sort) {
-        refreshValues(s);
+    if (sort && s->movedCount > 0) { /* no box changed: the lists are in order, the overlaps hold */
+        int first[3], last[3];
+        refreshValues(s, first, last);
         for (int i = 0; i < s->axisCount; i++)
-            insertionSort(s, i);
+            insertionSort(s, i, first[i], last[i]);
         McdSpacePairDropApart(s);
+    }
+    if (sort) { /* every box is now in the lists: nothing has moved since this sort */
+        s->sortNumber++;
+        s->movedCount = 0;
     }
     if (s->pendingCount > 0)
         mergePending(s);

@@ -66,7 +66,7 @@ static void sortPartitions(MdtWorldData *w, MdtBodyData *const *seeds, int seedC
         for (int p = 0; p < out->partitionCount; p++)
             cursor[p] = out->constraintStart[p];
         int placed = 0; /* the walk stops at the last placed constraint, not at the pool's end */
-        for (int i = 0; i < w->constraintPool.capacity && placed < out->constraintCount; i++) {
+        for (int i = 0; i < MePoolSlotEndInline(&w->constraintPool) && placed < out->constraintCount; i++) {
             if (!MePoolSlotIsLiveInline(&w->constraintPool, i))
                 continue;
             MdtConstraintData *c = MePoolSlotInline(&w->constraintPool, i);
@@ -119,7 +119,7 @@ void MdtPartitionStage(MdtWorldData *w)
 
     /* Seeds: the enabled bodies in (key, slot) order. */
     int seedCount = 0;
-    for (int i = 0; i < w->bodyPool.capacity; i++) {
+    for (int i = 0; i < MePoolSlotEndInline(&w->bodyPool); i++) {
         if (!MePoolSlotIsLiveInline(&w->bodyPool, i))
             continue;
         MdtBodyData *b = MePoolSlotInline(&w->bodyPool, i);

@@ -68,8 +68,8 @@ MeBool MdtBodyRestWindowMeans(const MdtBodyData *b, MeReal h, MeVector3 vel, MeV
     /* Oldest complete block first, the block being filled last; t = the block's centre, in steps. */
     MeReal total = 0, sum[6] = {0, 0, 0, 0, 0, 0}, tMean = 0, start = 0;
     MeReal centre[MDT_REST_BLOCKS + 1];
-    for (int j = 0; j < ring; j++) {
-        const int i = (b->restNewest + 1 + j) % ring;
+    const int oldest = b->restNewest + 1 < ring ? b->restNewest + 1 : 0;
+    for (int j = 0, i = oldest; j < ring; j++, i = i + 1 < ring ? i + 1 : 0) { /* i: block j's slot */
         const MeReal n = (MeReal)b->restCount[i];
         centre[j] = start + (n - 1) / 2;
         start += n;
@@ -82,8 +82,7 @@ MeBool MdtBodyRestWindowMeans(const MdtBodyData *b, MeReal h, MeVector3 vel, MeV
     MeReal mean[6], slope[6] = {0, 0, 0, 0, 0, 0}, spread = 0;
     for (int k = 0; k < 6; k++)
         mean[k] = sum[k] / total;
-    for (int j = 0; j < ring; j++) {
-        const int i = (b->restNewest + 1 + j) % ring;
+    for (int j = 0, i = oldest; j < ring; j++, i = i + 1 < ring ? i + 1 : 0) {
         const MeReal n = (MeReal)b->restCount[i];
         if (n <= 0)
             continue;

@@ -80,7 +80,7 @@ static void solvePartition(MdtWorldData *w, const KeaParameters *kea, int p, voi
     problem.contacts = r->contacts + contact0;
     for (int i = 0; i < problem.nContacts; i++)
         r->contacts[contact0 + i].row -= row0;
-    KeaStatus status = KeaSolve(&problem, kea, workspace, need, r->x + row0, r->dv + body0, &res->stats);
+    KeaStatus status = KeaSolveSized(&problem, kea, workspace, need, r->x + row0, r->dv + body0, &res->stats);
     res->stats.status = status;
     MeBool failed = status == KeaStatusBadInput;
     if (!failed && w->checkSim && status != KeaStatusWorkspaceTooSmall)
@@ -164,12 +164,20 @@ static void gatherPartition(MdtWorldData *w, int p, const KeaStats *ks)
 /* Bytes of `n` rounded up to a cache line, so that workers' workspaces do not share lines. */
 static size_t cacheLines(size_t n) { return (n + 63) & ~(size_t)63; }
 
-/* Workspace sizes already asked in this step's loop (a direct-mapped memo, WORKSPACE_MEMO entries). */
-#define WORKSPACE_MEMO 16
-typedef struct WorkspaceSizeMemo {
-    int rows, bodies;
-    size_t bytes;
-} WorkspaceSizeMemo;
+/* KeaMemoryRequired through the world's kept sizes (a direct-mapped memo: a layout pass costs hundreds
+ * of instructions, a scene's partitions repeat a few shapes). */
+static size_t workspaceBytes(MdtWorldData *w, int rows, int bodies, KeaPath path)
+{
+    const unsigned hash = (unsigned)rows + 7u * (unsigned)bodies + 31u * (unsigned)path;
+    MdtWorkspaceSize *m = &w->workspaceSizes[hash % MDT_WORKSPACE_SIZES];
+    if (m->rows != rows || m->bodies != bodies || m->path != path) {
+        m->rows = rows;
+        m->bodies = bodies;
+        m->path = path;
+        m->bytes = KeaMemoryRequired(rows, bodies, path);
+    }
+    return m->bytes;
+}
 
 void MdtSolveStage(MdtWorldData *w)
 {
@@ -193,27 +201,17 @@ void MdtSolveStage(MdtWorldData *w)
     kea.tasks.workers = w->enqueueTask ? w->workerCount : 1;
     kea.tasks.perStage = 0;
 
-    /* One workspace per worker, for the largest partition; then one result per partition. The bytes
-     * depend on the rows and bodies alone (kea is fixed here), and a scene's small partitions repeat a
-     * few shapes (a body on the ground, two boxes): the last sizes asked are remembered. */
+    /* One workspace per worker, for the largest partition (each partition's size is asked here, so
+     * the solves need not size it again: KeaSolveSized); then one result per partition. */
     size_t need = 0;
     int splits = 0;
-    WorkspaceSizeMemo memo[WORKSPACE_MEMO];
-    for (int i = 0; i < WORKSPACE_MEMO; i++)
-        memo[i].rows = -1;
     for (int p = 0; p < out->partitionCount; p++) {
         int rows = r->partitionRowStart[p + 1] - r->partitionRowStart[p];
         int bodies = out->partitionStart[p + 1] - out->partitionStart[p];
         if (rows == 0)
             continue;
-        WorkspaceSizeMemo *m = &memo[(unsigned)(rows + 7 * bodies) % WORKSPACE_MEMO];
-        if (m->rows != rows || m->bodies != bodies) {
-            m->rows = rows;
-            m->bodies = bodies;
-            m->bytes = KeaMemoryRequired(rows, bodies, KeaSelectPath(rows, &kea)) +
-                       KeaSplitMemoryRequired(rows, bodies, &kea);
-        }
-        const size_t bytes = m->bytes;
+        const size_t bytes = workspaceBytes(w, rows, bodies, KeaSelectPath(rows, &kea)) +
+                             KeaSplitMemoryRequired(rows, bodies, &kea);
         splits += splitPartition(w, &kea, p);
         if (bytes > need)
             need = bytes;

@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "../me/check.h"
+#include "../me/profile_at.h"
 #include "world.h"
 
 /* The stage a call needs the world to be in: at least `after`, and before `stage` itself. */
@@ -40,7 +41,8 @@ static MdtWorldData *enterStage(MdtWorldID id, MdtStage stage, MdtStage after, c
     return w;
 }
 
-static MeBool beginStep(MdtWorldData *w, MeReal stepSize, const char *function)
+/* Begins the step (refused: MEFALSE); *start is the clock reading its profile section starts at. */
+static MeBool beginStep(MdtWorldData *w, MeReal stepSize, const char *function, double *start)
 {
     if (!(ME_IS_FINITE(stepSize) && stepSize >= MDT_MIN_STEP_SIZE)) {
         ME_REPORT_IN(function, ME_ERR_STEP_SIZE,
@@ -58,13 +60,15 @@ static MeBool beginStep(MdtWorldData *w, MeReal stepSize, const char *function)
     w->stepSize = stepSize;
     w->droppedRows = w->cappedPartitions = w->simErrors = 0;
     MeProfileFrameStart(&w->profile);
-    MeProfileSectionStart(&w->profile, MDT_SECTION_STEP);
+    *start = MeProfileNow(&w->profile);
+    MeProfileSectionStartAt(&w->profile, MDT_SECTION_STEP, *start);
     return METRUE;
 }
 
-static void endStep(MdtWorldData *w)
+/* Ends the step; `end` is the clock reading its profile section ends at. */
+static void endStep(MdtWorldData *w, double end)
 {
-    MeProfileSectionEnd(&w->profile, MDT_SECTION_STEP);
+    MeProfileSectionEndAt(&w->profile, MDT_SECTION_STEP, end);
     MeProfileFrameEnd(&w->profile);
     w->steps++;
     w->time += w->stepSize;
@@ -90,13 +94,16 @@ static const StageDef stages[] = {
     {MdtUnpackStage, MDT_SECTION_UNPACK, MdtStageUnpacked, MdtStageIntegrated},
 };
 
-/* One stage, timed in its profile section. */
-static void runStage(MdtWorldData *w, const StageDef *stage)
+/* One stage, timed in its profile section from the clock reading `start`; returns the reading at its
+ * end (the next stage's start). */
+static double runStage(MdtWorldData *w, const StageDef *stage, double start)
 {
-    MeProfileSectionStart(&w->profile, stage->section);
+    MeProfileSectionStartAt(&w->profile, stage->section, start);
     stage->run(w);
-    MeProfileSectionEnd(&w->profile, stage->section);
+    const double end = MeProfileNow(&w->profile);
+    MeProfileSectionEndAt(&w->profile, stage->section, end);
     w->stage = stage->done;
+    return end;
 }
 
 /* A stage called by the application: checked against the step's progress, then run. */
@@ -104,14 +111,15 @@ static void publicStage(MdtWorldID id, int index, const char *function)
 {
     MdtWorldData *w = enterStage(id, stages[index].done, stages[index].after, function);
     if (w)
-        runStage(w, &stages[index]);
+        (void)runStage(w, &stages[index], MeProfileNow(&w->profile));
 }
 
 void MdtWorldStepBegin(MdtWorldID id, MeReal stepSize)
 {
     MdtWorldData *w = MdtWorldFromID(id, __func__);
+    double start;
     if (w)
-        beginStep(w, stepSize, __func__);
+        beginStep(w, stepSize, __func__, &start);
 }
 
 void MdtWorldUpdatePartitions(MdtWorldID id) { publicStage(id, 0, __func__); }
@@ -126,17 +134,18 @@ void MdtWorldStepEnd(MdtWorldID id)
 {
     MdtWorldData *w = enterStage(id, (MdtStage)(MdtStageUnpacked + 1), MdtStageUnpacked, __func__);
     if (w)
-        endStep(w);
+        endStep(w, MeProfileNow(&w->profile));
 }
 
 void MdtWorldStep(MdtWorldID id, MeReal stepSize)
 {
     MdtWorldData *w = MdtWorldFromID(id, __func__);
-    if (!w || !beginStep(w, stepSize, w->callerName ? w->callerName : __func__))
+    double now;
+    if (!w || !beginStep(w, stepSize, w->callerName ? w->callerName : __func__, &now))
         return;
     for (size_t i = 0; i < sizeof stages / sizeof stages[0]; i++)
-        runStage(w, &stages[i]);
-    endStep(w);
+        now = runStage(w, &stages[i], now);
+    endStep(w, now);
 }
 
 /* ---- partition queries -------------------------------------------------------------------- */

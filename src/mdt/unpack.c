@@ -17,7 +17,7 @@
 /* Clears the accumulators of the bodies that were simulated; disabled bodies keep theirs. */
 static void clearAccumulators(MdtWorldData *w)
 {
-    for (int i = 0; i < w->bodyPool.capacity; i++) {
+    for (int i = 0; i < MePoolSlotEndInline(&w->bodyPool); i++) {
         if (!MePoolSlotIsLiveInline(&w->bodyPool, i))
             continue;
         MdtBodyData *b = MePoolSlotInline(&w->bodyPool, i);

@@ -84,6 +84,15 @@ typedef struct MdtStepRows {
     size_t workspaceBytes;   /* Kea workspace for the largest partition */
 } MdtStepRows;
 
+/* A workspace size Kea gave (KeaMemoryRequired: a function of its arguments, so a kept answer stays
+ * right); rows = 0 marks an empty entry. A scene's partitions repeat a few shapes step after step. */
+#define MDT_WORKSPACE_SIZES 16
+typedef struct MdtWorkspaceSize {
+    int rows, bodies;
+    KeaPath path;
+    size_t bytes;
+} MdtWorkspaceSize;
+
 typedef struct MdtWorldData {
     int ownerSlot;           /* registry slot behind the MdtWorldID */
     uintptr_t id;
@@ -149,6 +158,7 @@ typedef struct MdtWorldData {
     MeChunk partitionChunk;  /* body and constraint lists, partition offsets */
     MeChunk rowChunk;        /* the step's solver rows */
     MeChunk keaChunk;        /* solver workspace */
+    MdtWorkspaceSize workspaceSizes[MDT_WORKSPACE_SIZES]; /* Kea's sizes, kept (solve_partitions.c) */
     MeChunk taskChunk;       /* marks of the items a task system ran (task_system.c) */
     KeaParameters kea;       /* solver settings (path, iterations, tolerance...) */
     /* the application's task system (MdtTaskSystem.h, task_system.c); workerCount 1 and no

@@ -22,4 +22,9 @@ static inline MeU32 MePoolSlotGenerationInline(const MePool *pool, int index)
     return (index >= 0 && index < pool->capacity) ? pool->generation[index] : 0;
 }
 
+/* Every live slot lies below this index: slots are handed out from 0 up and a freed one is reused first,
+ * so the slots ever handed out are 0 ... highWater - 1. Walks over the live slots stop here, not at the
+ * capacity (a world's pools are sized for the most bodies and contacts, and hold fewer). */
+static inline int MePoolSlotEndInline(const MePool *pool) { return pool->highWater; }
+
 #endif /* ME_POOL_SLOT_H */

@@ -5,6 +5,7 @@
 #include <karma/MeProfile.h>
 
 #include "check.h"
+#include "profile_at.h"
 
 double MeProfileDefaultTimer(void)
 {
@@ -56,51 +57,71 @@ void MeProfileFrameEnd(MeProfile *profile)
     profile->frames++;
 }
 
+/* By pointer first (sections are named by string literals: a step's look-ups then call no strcmp),
+ * then by content. */
 static int findSection(const MeProfile *profile, const char *name)
 {
     for (int i = 0; i < profile->sectionCount; i++)
-        if (profile->sections[i].name == name || strcmp(profile->sections[i].name, name) == 0)
+        if (profile->sections[i].name == name)
+            return i;
+    for (int i = 0; i < profile->sectionCount; i++)
+        if (strcmp(profile->sections[i].name, name) == 0)
             return i;
     return -1;
 }
 
-void MeProfileSectionStart(MeProfile *profile, const char *name)
+double MeProfileNow(const MeProfile *profile) { return profile->enabled ? profile->timer() : 0.0; }
+
+void MeProfileSectionStartAt(MeProfile *profile, const char *name, double now)
 {
     if (!profile->enabled)
         return;
     int i = findSection(profile, name);
     if (i < 0) {
         if (profile->sectionCount == ME_PROFILE_MAX_SECTIONS) {
-            ME_REPORT(ME_ERR_PROFILE_SECTIONS, "no room for section '%s' (at most %d)", name, ME_PROFILE_MAX_SECTIONS);
+            ME_REPORT_IN("MeProfileSectionStart", ME_ERR_PROFILE_SECTIONS, "no room for section '%s' (at most %d)",
+                         name, ME_PROFILE_MAX_SECTIONS);
             return;
         }
         i = profile->sectionCount++;
         profile->sections[i].name = name;
     }
     if (profile->depth == ME_PROFILE_MAX_DEPTH) {
-        ME_REPORT(ME_ERR_PROFILE_NESTING, "section '%s' nests deeper than %d", name, ME_PROFILE_MAX_DEPTH);
+        ME_REPORT_IN("MeProfileSectionStart", ME_ERR_PROFILE_NESTING, "section '%s' nests deeper than %d", name,
+                     ME_PROFILE_MAX_DEPTH);
         return;
     }
     profile->stack[profile->depth] = i;
-    profile->startTimes[profile->depth] = profile->timer();
+    profile->startTimes[profile->depth] = now;
     profile->depth++;
 }
 
-void MeProfileSectionEnd(MeProfile *profile, const char *name)
+void MeProfileSectionEndAt(MeProfile *profile, const char *name, double now)
 {
     if (!profile->enabled || profile->depth == 0)
         return;
     int top = profile->stack[profile->depth - 1];
     MeProfileSection *s = &profile->sections[top];
     if (s->name != name && strcmp(s->name, name) != 0) {
-        ME_REPORT(ME_ERR_PROFILE_NESTING, "ending section '%s' while '%s' is the innermost open one", name, s->name);
+        ME_REPORT_IN("MeProfileSectionEnd", ME_ERR_PROFILE_NESTING,
+                     "ending section '%s' while '%s' is the innermost open one", name, s->name);
         return;
     }
-    double elapsed = profile->timer() - profile->startTimes[profile->depth - 1];
+    double elapsed = now - profile->startTimes[profile->depth - 1];
     profile->depth--;
     s->frameTime += elapsed;
     s->totalTime += elapsed;
     s->calls++;
+}
+
+void MeProfileSectionStart(MeProfile *profile, const char *name)
+{
+    MeProfileSectionStartAt(profile, name, MeProfileNow(profile));
+}
+
+void MeProfileSectionEnd(MeProfile *profile, const char *name)
+{
+    MeProfileSectionEndAt(profile, name, MeProfileNow(profile));
 }
 
 const MeProfileSection *MeProfileGetSection(const MeProfile *profile, const char *name)

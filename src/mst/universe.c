@@ -11,6 +11,7 @@
 #include <karma/MstUniverse.h>
 
 #include "../me/check.h"
+#include "../me/profile_at.h"
 #include "bridge.h"
 #include "continuous.h"
 
@@ -262,8 +263,9 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
     }
     MeProfile *prof = &u->profile;
     MeProfileFrameStart(prof);
-    MeProfileSectionStart(prof, MST_SECTION_COLLISION);
-    MeProfileSectionStart(prof, MST_SECTION_FARFIELD);
+    double now = MeProfileNow(prof); /* one reading where sections meet */
+    MeProfileSectionStartAt(prof, MST_SECTION_COLLISION, now);
+    MeProfileSectionStartAt(prof, MST_SECTION_FARFIELD, now);
     /* Messages of the parts name what the application called: this function (unless the application
      * named its own). */
     const char *worldCaller = MdtWorldGetCallerName(u->world);
@@ -271,12 +273,14 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
         MdtWorldSetCallerName(u->world, __func__);
     McdSpaceSetCallerName(u->space, __func__);
     McdSpaceUpdateAll(u->space);
-    MeProfileSectionEnd(prof, MST_SECTION_FARFIELD);
-    MeProfileSectionStart(prof, MST_SECTION_NEARFIELD);
+    now = MeProfileNow(prof);
+    MeProfileSectionEndAt(prof, MST_SECTION_FARFIELD, now);
+    MeProfileSectionStartAt(prof, MST_SECTION_NEARFIELD, now);
     MstBridgeUpdateContacts(u->bridge, u->space, u->world);
     McdSpaceSetCallerName(u->space, NULL);
-    MeProfileSectionEnd(prof, MST_SECTION_NEARFIELD);
-    MeProfileSectionEnd(prof, MST_SECTION_COLLISION);
+    now = MeProfileNow(prof);
+    MeProfileSectionEndAt(prof, MST_SECTION_NEARFIELD, now);
+    MeProfileSectionEndAt(prof, MST_SECTION_COLLISION, now);
     MeProfileFrameEnd(prof);
     MstContinuousBeforeStep(&u->continuous, u->framework, u->space);
     MdtWorldStep(u->world, stepSize);

@@ -250,6 +250,13 @@ size_t KeaSplitMemoryRequired(int nRows, int nBodies, const KeaParameters *param
 KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void *workspace,
                    size_t workspaceSize, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
 
+/** KeaSolve for a caller that sized the workspace for this problem itself (workspaceSize at least
+ *  KeaSolve's bound above, as the world's solve stage computes it for every partition): the same
+ *  solve, without computing the bound again (a layout pass of hundreds of instructions a partition).
+ *  Seven arguments: KeaSolve's. */
+KeaStatus KeaSolveSized(const KeaProblem *problem, const KeaParameters *params, void *workspace,
+                        size_t workspaceSize, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
+
 /** Delta v = M^-1 J^T x for every body (nBodies entries). */
 void KeaBodyVelocityFromImpulses(const KeaProblem *problem, const MeReal *x, KeaBodyVelocity *dv);
 

@@ -203,16 +203,16 @@ static int KeaProblemIsValid(const KeaProblem *p, const KeaParameters *params)
     return KeaContactsAreValid(p);
 }
 
-/* Size: the problem, its parameters, the caller's workspace (pointer and size) and the three
- * outputs, each its own argument so that the caller owns every buffer (kea.h). */
-KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void *workspace,
-                   size_t workspaceSize, MeReal *x, KeaBodyVelocity *dv, KeaStats *statsOut)
+/* Size: KeaSolve's arguments (the problem, its parameters, the caller's workspace and the three
+ * outputs), and whether the caller sized the workspace for this problem already (KeaSolveSized). */
+static KeaStatus KeaSolveIn(const KeaProblem *problem, const KeaParameters *params, void *workspace,
+                            size_t workspaceSize, MeReal *x, KeaBodyVelocity *dv, KeaStats *statsOut, int sized)
 {
     KeaStats localStats, *stats = statsOut ? statsOut : &localStats;
     KeaArena arena;
     KeaPath path;
     KeaBodyVelocity *velocity = dv;
-    size_t need, skew;
+    size_t need = 0, skew;
     int i;
 
     memset(stats, 0, sizeof *stats);
@@ -230,8 +230,9 @@ KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void 
     stats->bodies = problem->nBodies;
 
     /* Align the workspace base; the velocity output gets workspace room when the caller has none. */
-    need = KeaMemoryRequired(problem->nRows, problem->nBodies, path) +
-           KeaSplitMemoryRequired(problem->nRows, problem->nBodies, params);
+    if (!sized) /* a layout pass over the workspace's allocations: hundreds of instructions */
+        need = KeaMemoryRequired(problem->nRows, problem->nBodies, path) +
+               KeaSplitMemoryRequired(problem->nRows, problem->nBodies, params);
     skew = workspace ? (size_t)((KEA_ALIGN - ((uintptr_t)workspace & (KEA_ALIGN - 1))) & (KEA_ALIGN - 1)) : 0;
     if (!workspace || workspaceSize < need) {
         stats->status = KeaStatusWorkspaceTooSmall;
@@ -269,4 +270,19 @@ KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void 
     if (path == KeaPathIterative)
         stats->status = KeaSolveIterative(problem, params, &arena, x, velocity, stats);
     return stats->status;
+}
+
+/* Size: the problem, its parameters, the caller's workspace (pointer and size) and the three
+ * outputs, each its own argument so that the caller owns every buffer (kea.h). */
+KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void *workspace,
+                   size_t workspaceSize, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
+{
+    return KeaSolveIn(problem, params, workspace, workspaceSize, x, dv, stats, 0);
+}
+
+/* Size: KeaSolve's. */
+KeaStatus KeaSolveSized(const KeaProblem *problem, const KeaParameters *params, void *workspace,
+                        size_t workspaceSize, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
+{
+    return KeaSolveIn(problem, params, workspace, workspaceSize, x, dv, stats, 1);
 }
