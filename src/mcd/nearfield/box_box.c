@@ -196,7 +196,7 @@ int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData 
             return count;
         if (faceBest > edgeBest)
             return 0;
-    } else if (edgeI >= 0 && edgeBest < EDGE_BIAS * faceBest - MCD_NF_REL_EPS * size) {
+    } else if (edgeI >= 0 && edgeBest < EDGE_BIAS * faceBest - MCD_NF_FEATURE_EPS * size) {
         MeVector3 a0, a1, b0, b1, pa, pb, negAxis, on1, on2;
         MeReal s, t;
         MeVector3Cross(edgeAxis, A.ax[edgeI], B.ax[edgeJ]);
