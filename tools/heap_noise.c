@@ -3,7 +3,10 @@
  * those steps, and the RMS of each second to show how it decays. World settings come from the
  * environment so that each candidate cause can be ablated alone:
  *   HN_ITER n (sweeps cap), HN_TOL t, HN_NNCG 0/1, HN_GAMMA g, HN_EPS e, HN_SOLVER d|i|a,
- *   HN_MAXCORR v (max correcting velocity), HN_DIRECTROWS n.
+ *   HN_MAXCORR v (max correcting velocity), HN_DIRECTROWS n. HN_TRACE=1 also lists the bodies over a
+ *   sleep threshold in more than a tenth of the steps, and the worst one's speed, spin and height.
+ * Per heap it prints, besides RMS and largest, the median and 90th percentile of the bodies' speeds
+ * (averaged over the steps) and the share of body-steps over the default sleep thresholds.
  *
  *   heap_noise [firstSeed [lastSeed [boxes]]]     defaults 1 10 120 */
 #include <karma/karma.h>
@@ -48,103 +51,130 @@ static void configure(MdtWorldID w)
         MdtWorldSetLCPSolver(w, s[0] == 'd' ? MdtLCPSolverDirect : s[0] == 'i' ? MdtLCPSolverIterative : MdtLCPSolverAuto);
 }
 
+#define STEPS ((TO_S - FROM_S) * 60)
+#define MAX_BOXES 400
+
+/* Sums over the measured steps, of one heap or of all. */
+typedef struct Tally {
+    double v2, w2, maxV, maxW, med, p90, over, iters, sec[TO_S - FROM_S][2];
+    long count;
+} Tally;
+
+/* Per body and measured step: speed, spin and height, for HN_TRACE. */
+static double traceV[STEPS][MAX_BOXES], traceW[STEPS][MAX_BOXES], traceZ[STEPS][MAX_BOXES];
+static int overOf[MAX_BOXES];
+
+/* One measured step's bodies into t (k: the step's index from FROM_S); sp is scratch for n speeds. */
+static void tallyStep(Tally *t, int k, int n, MdtBodyID *body, double *sp)
+{
+    for (int i = 0; i < n; i++) {
+        MeVector3 v, av, pos;
+        MdtBodyGetLinearVelocity(body[i], v);
+        MdtBodyGetAngularVelocity(body[i], av);
+        MdtBodyGetPosition(body[i], pos);
+        const double sv = MeVector3MagnitudeSqr(v), sw = MeVector3MagnitudeSqr(av);
+        const int over = sqrt(sv) > SLEEP_SPEED || sqrt(sw) > SLEEP_SPIN;
+        t->v2 += sv;
+        t->w2 += sw;
+        t->maxV = fmax(t->maxV, sqrt(sv));
+        t->maxW = fmax(t->maxW, sqrt(sw));
+        t->sec[k / 60][0] += sv;
+        t->sec[k / 60][1] += sw;
+        t->over += over;
+        sp[i] = traceV[k][i] = sqrt(sv);
+        traceW[k][i] = sqrt(sw);
+        traceZ[k][i] = pos[2];
+        overOf[i] += over;
+    }
+    qsort(sp, (size_t)n, sizeof(double), byValue);
+    t->med += sp[n / 2];
+    t->p90 += sp[n * 9 / 10];
+    t->count += n;
+}
+
+/* The bodies over a threshold in more than a tenth of the steps, and the worst one's record. */
+static void printTrace(int n)
+{
+    printf("   bodies over a threshold in more than 10 %% of steps:");
+    int worst = 0;
+    for (int i = 0; i < n; i++) {
+        if (overOf[i] > STEPS / 10)
+            printf(" %d(%d)", i, overOf[i]);
+        if (overOf[i] > overOf[worst])
+            worst = i;
+    }
+    printf("\n   body %d every 4th step (speed, spin, z):", worst);
+    for (int k = 0; k < STEPS; k += 4)
+        printf("%s%.3f/%.3f/%.3f", k % 40 ? " " : "\n    ", traceV[k][worst], traceW[k][worst], traceZ[k][worst]);
+    printf("\n");
+}
+
+/* Drops and runs one heap, prints its line and adds it to *all; 0 when the universe was not made. */
+static int measureHeap(unsigned long long seed, int n, MdtBodyID *body, double *sp, Tally *all)
+{
+    MstUniverseID u = karma_heap_build(n, seed, body);
+    if (!u)
+        return 0;
+    configure(MstUniverseGetWorld(u));
+    Tally t = {0};
+    for (int i = 0; i < n; i++)
+        overOf[i] = 0;
+    for (int step = 1; step <= TO_S * 60; step++) {
+        MstUniverseStep(u, STEP);
+        if (step <= FROM_S * 60)
+            continue;
+        MdtSolverStats st;
+        MdtWorldGetSolverStats(MstUniverseGetWorld(u), &st);
+        t.iters += st.iterations;
+        tallyStep(&t, step - FROM_S * 60 - 1, n, body, sp);
+    }
+    printf("seed %llu: rms %.4f m/s %.4f rad/s, max %.3f m/s %.3f rad/s, median %.4f p90 %.4f m/s, "
+           "over sleep thresholds %.1f %%, sweeps/step %.1f\n",
+           seed, sqrt(t.v2 / t.count), sqrt(t.w2 / t.count), t.maxV, t.maxW, t.med / STEPS, t.p90 / STEPS,
+           100 * t.over / t.count, t.iters / STEPS);
+    if (getenv("HN_TRACE"))
+        printTrace(n);
+    fflush(stdout);
+    all->v2 += t.v2;
+    all->w2 += t.w2;
+    all->maxV = fmax(all->maxV, t.maxV);
+    all->maxW = fmax(all->maxW, t.maxW);
+    all->med += t.med / STEPS;
+    all->p90 += t.p90 / STEPS;
+    all->over += t.over;
+    all->count += t.count;
+    for (int k = 0; k < TO_S - FROM_S; k++) {
+        all->sec[k][0] += t.sec[k][0];
+        all->sec[k][1] += t.sec[k][1];
+    }
+    MstUniverseDestroy(u);
+    return 1;
+}
+
 int main(int argc, char **argv)
 {
     const unsigned long long first = argc > 1 ? strtoull(argv[1], NULL, 10) : 1;
     const unsigned long long last = argc > 2 ? strtoull(argv[2], NULL, 10) : 10;
     const int n = argc > 3 ? atoi(argv[3]) : 120;
-    if (n < 1 || last < first) {
-        fprintf(stderr, "usage: heap_noise [firstSeed [lastSeed [boxes]]]\n");
+    if (n < 1 || n > MAX_BOXES || last < first) {
+        fprintf(stderr, "usage: heap_noise [firstSeed [lastSeed [boxes (1 to %d)]]]\n", MAX_BOXES);
         return 2;
     }
     MdtBodyID *body = malloc(sizeof(MdtBodyID) * (size_t)n);
-    double allV2 = 0, allW2 = 0, allMaxV = 0, allMaxW = 0, sec[TO_S - FROM_S][2] = {{0}};
-    double allMed = 0, allP90 = 0, allOver = 0;
-    long allCount = 0;
+    double *sp = malloc(sizeof(double) * (size_t)n);
+    Tally all = {0};
     int heaps = 0;
-    for (unsigned long long seed = first; seed <= last; seed++) {
-        MstUniverseID u = karma_heap_build(n, seed, body);
-        if (!u)
+    for (unsigned long long seed = first; seed <= last; seed++, heaps++)
+        if (!measureHeap(seed, n, body, sp, &all))
             return 1;
-        configure(MstUniverseGetWorld(u));
-        double v2 = 0, w2 = 0, maxV = 0, maxW = 0, iters = 0, med = 0, p90 = 0, over = 0;
-        double *sp = malloc(sizeof(double) * (size_t)n);
-        static double hv[600][400], hw[600][400], hz[600][400];
-        static int overOf[400];
-        for (int i = 0; i < n; i++)
-            overOf[i] = 0;
-        long count = 0;
-        for (int step = 1; step <= TO_S * 60; step++) {
-            MstUniverseStep(u, STEP);
-            if (step <= FROM_S * 60)
-                continue;
-            MdtSolverStats st;
-            MdtWorldGetSolverStats(MstUniverseGetWorld(u), &st);
-            iters += st.iterations;
-            for (int i = 0; i < n; i++) {
-                MeVector3 v, av;
-                MdtBodyGetLinearVelocity(body[i], v);
-                MdtBodyGetAngularVelocity(body[i], av);
-                const double sv = MeVector3MagnitudeSqr(v), sw = MeVector3MagnitudeSqr(av);
-                v2 += sv;
-                w2 += sw;
-                maxV = fmax(maxV, sqrt(sv));
-                maxW = fmax(maxW, sqrt(sw));
-                sec[(step - 1) / 60 - FROM_S][0] += sv;
-                sec[(step - 1) / 60 - FROM_S][1] += sw;
-                sp[i] = sqrt(sv);
-                hv[step - FROM_S * 60 - 1][i] = sqrt(sv);
-                hw[step - FROM_S * 60 - 1][i] = sqrt(sw);
-                MeVector3 pos;
-                MdtBodyGetPosition(body[i], pos);
-                hz[step - FROM_S * 60 - 1][i] = pos[2];
-                overOf[i] += sqrt(sv) > SLEEP_SPEED || sqrt(sw) > SLEEP_SPIN;
-                over += sqrt(sv) > SLEEP_SPEED || sqrt(sw) > SLEEP_SPIN;
-            }
-            qsort(sp, (size_t)n, sizeof(double), byValue);
-            med += sp[n / 2];
-            p90 += sp[n * 9 / 10];
-            count += n;
-        }
-        const double steps = (TO_S - FROM_S) * 60.0;
-        printf("seed %llu: rms %.4f m/s %.4f rad/s, max %.3f m/s %.3f rad/s, median %.4f p90 %.4f m/s, "
-               "over sleep thresholds %.1f %%, sweeps/step %.1f\n",
-               seed, sqrt(v2 / count), sqrt(w2 / count), maxV, maxW, med / steps, p90 / steps, 100 * over / count,
-               iters / steps);
-        if (getenv("HN_TRACE")) {
-            printf("   bodies over a threshold in more than 10 %% of steps:");
-            int worst = 0;
-            for (int i = 0; i < n; i++) {
-                if (overOf[i] > 60)
-                    printf(" %d(%d)", i, overOf[i]);
-                if (overOf[i] > overOf[worst])
-                    worst = i;
-            }
-            printf("\n   body %d every 4th step (speed, spin, z):", worst);
-            for (int k = 0; k < 600; k += 4)
-                printf("%s%.3f/%.3f/%.3f", k % 40 ? " " : "\n    ", hv[k][worst], hw[k][worst], hz[k][worst]);
-            printf("\n");
-        }
-        allMed += med / steps;
-        allP90 += p90 / steps;
-        allOver += over;
-        free(sp);
-        fflush(stdout);
-        allV2 += v2;
-        allW2 += w2;
-        allCount += count;
-        allMaxV = fmax(allMaxV, maxV);
-        allMaxW = fmax(allMaxW, maxW);
-        heaps++;
-        MstUniverseDestroy(u);
-    }
     printf("%s, %d heaps: %d-%d s rms %.4f m/s %.4f rad/s, max %.3f m/s %.3f rad/s, median %.4f p90 %.4f m/s, "
            "over sleep thresholds %.1f %%; rms by second:",
-           sizeof(MeReal) == sizeof(double) ? "double" : "float", heaps, FROM_S, TO_S, sqrt(allV2 / allCount),
-           sqrt(allW2 / allCount), allMaxV, allMaxW, allMed / heaps, allP90 / heaps, 100 * allOver / allCount);
-    for (int s = 0; s < TO_S - FROM_S; s++)
-        printf(" %.3f/%.3f", sqrt(sec[s][0] / (heaps * 60.0 * n)), sqrt(sec[s][1] / (heaps * 60.0 * n)));
+           sizeof(MeReal) == sizeof(double) ? "double" : "float", heaps, FROM_S, TO_S, sqrt(all.v2 / all.count),
+           sqrt(all.w2 / all.count), all.maxV, all.maxW, all.med / heaps, all.p90 / heaps, 100 * all.over / all.count);
+    for (int k = 0; k < TO_S - FROM_S; k++)
+        printf(" %.3f/%.3f", sqrt(all.sec[k][0] / (heaps * 60.0 * n)), sqrt(all.sec[k][1] / (heaps * 60.0 * n)));
     printf("\n");
+    free(sp);
     free(body);
     return 0;
 }

@@ -24,7 +24,7 @@
 #if KARMA_DOUBLE
 #  define GOLDEN_HASH 0x8ccffac649b66ec3ull
 #else
-#  define GOLDEN_HASH 0x028c4b9a24f6d4a2ull
+#  define GOLDEN_HASH 0x0190f1d19e406517ull
 #endif
 
 static uint64_t runTopple(MeBool trace, int *contactsSeen)
