@@ -5,10 +5,11 @@
  * the test's own heap. A check that settling is no worse than before needs many heaps: one heap is
  * chaotic, and any change to contacts or the solver gives it another trajectory.
  *
- *   heap_sleep [firstSeed [lastSeed [boxes]]]     defaults 17 17 120
+ *   heap_sleep [firstSeed [lastSeed [boxes [maxAwake]]]]     defaults 17 17 120
  *
  * Prints one line per heap and a summary: how many heaps broke a bound, the mean sleep time and the
- * largest figures. Exits 0. */
+ * largest figures. Exits 0, or, given maxAwake (the check of tests/cmake/heap_sleep.cmake), 1 when a
+ * body was put to sleep over a bound or more than maxAwake heaps were still awake at 25 s. */
 #include <karma/karma.h>
 
 #include <math.h>
@@ -66,12 +67,13 @@ int main(int argc, char **argv)
     const unsigned long long first = argc > 1 ? strtoull(argv[1], NULL, 10) : 17;
     const unsigned long long last = argc > 2 ? strtoull(argv[2], NULL, 10) : first;
     const int n = argc > 3 ? atoi(argv[3]) : 120;
+    const int maxAwake = argc > 4 ? atoi(argv[4]) : -1;
     if (n < 1 || last < first) {
-        fprintf(stderr, "usage: heap_sleep [firstSeed [lastSeed [boxes]]]\n");
+        fprintf(stderr, "usage: heap_sleep [firstSeed [lastSeed [boxes [maxAwake]]]]\n");
         return 2;
     }
     MdtBodyID *body = malloc(sizeof(MdtBodyID) * (size_t)n);
-    int heaps = 0, broken = 0, awake = 0;
+    int heaps = 0, broken = 0, awake = 0, fastSleeps = 0;
     double sumTime = 0, maxSpeed = 0, maxSpin = 0;
     for (unsigned long long seed = first; seed <= last; seed++) {
         MstUniverseID u = karma_heap_build(n, seed, body);
@@ -84,6 +86,7 @@ int main(int argc, char **argv)
         heaps++;
         broken += bad;
         awake += o.time < 0;
+        fastSleeps += o.fastSleeps;
         sumTime += o.time < 0 ? SLEEP_LIMIT_S : o.time;
         maxSpeed = fmax(maxSpeed, o.speed);
         maxSpin = fmax(maxSpin, o.spin);
@@ -94,5 +97,10 @@ int main(int argc, char **argv)
            sizeof(MeReal) == sizeof(double) ? "double" : "float", heaps, n, broken, awake, SLEEP_LIMIT_S,
            sumTime / heaps, maxSpeed, maxSpin);
     free(body);
+    if (maxAwake >= 0 && (fastSleeps > 0 || awake > maxAwake)) {
+        printf("FAILED: %d bodies put to sleep over a bound (none allowed), %d heaps awake at %.0f s (at most %d)\n",
+               fastSleeps, awake, SLEEP_LIMIT_S, maxAwake);
+        return 1;
+    }
     return 0;
 }

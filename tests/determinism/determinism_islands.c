@@ -33,11 +33,11 @@
 #define BODIES (STACKS * STACK_HEIGHT + CHAINS * LINKS + PENDULUMS + BALLS)
 
 #if KARMA_DOUBLE
-#  define GOLDEN_DIRECT 0xc370ec8b9545a23eull
-#  define GOLDEN_ITERATIVE 0x0777a3af499e7858ull
+#  define GOLDEN_DIRECT 0xa016b4443252d1c2ull
+#  define GOLDEN_ITERATIVE 0x887ae4aae375fa5full
 #else
-#  define GOLDEN_DIRECT 0x1ccb2de841f1d751ull
-#  define GOLDEN_ITERATIVE 0xffce4016de671224ull
+#  define GOLDEN_DIRECT 0xe9b4a8c6b441fe54ull
+#  define GOLDEN_ITERATIVE 0x42d7026ccd8c25b5ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};

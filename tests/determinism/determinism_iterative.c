@@ -38,18 +38,18 @@
  * for every worker count. */
 #  define SPLIT_ROWS 100
 #  if KARMA_DOUBLE
-#    define GOLDEN_PILE 0x624da1869b948ebaull
-#    define GOLDEN_PYRAMID 0x6d335f8bff0e94caull
+#    define GOLDEN_PILE 0x5d2152b4ce0f0268ull
+#    define GOLDEN_PYRAMID 0xa2db89edddf041deull
 #  else
-#    define GOLDEN_PILE 0x7ac8c1482050c2d8ull
-#    define GOLDEN_PYRAMID 0x54c52ba3b064c713ull
+#    define GOLDEN_PILE 0x47e4711bdc9065d5ull
+#    define GOLDEN_PYRAMID 0x6d04fc8b30539370ull
 #  endif
 #elif KARMA_DOUBLE
-#  define GOLDEN_PILE 0x48ba899ea3cefc5bull
-#  define GOLDEN_PYRAMID 0x66af905eba74687eull
+#  define GOLDEN_PILE 0x404e246667621050ull
+#  define GOLDEN_PYRAMID 0x48382db5e1a47411ull
 #else
-#  define GOLDEN_PILE 0xb4f24690410faa1cull
-#  define GOLDEN_PYRAMID 0x812cd930ed3bcd89ull
+#  define GOLDEN_PILE 0xb5787877bdb1793cull
+#  define GOLDEN_PYRAMID 0x90e8bb9dafa33f7dull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};

@@ -1,10 +1,11 @@
 /* Settled heaps sleep, and wake without a jump (issue 17 point 6).
  *
  * 120 boxes of sizes jittered by 10 % dropped at random orientations onto the ground form one heap, a
- * single partition. The iterative solver leaves its bodies velocity noise, which judged by the last
- * step alone (Karma 1.2's test, MdtWorldSetAutoDisableAveragingTime(w, 0)) can keep a heap awake for
- * good (this one in double precision; bench/RESULTS.md, "SM four contacts at a time"). Averaged over
- * the default time it sleeps within a stated time, no body put to sleep while visibly moving. Tapped
+ * single partition. The iterative solver leaves its bodies some velocity noise (far less since
+ * decision K49: bench/RESULTS.md, "Settled heaps"), which judged by the last step alone (Karma 1.2's
+ * test, MdtWorldSetAutoDisableAveragingTime(w, 0)) can keep a heap awake. Averaged over the default
+ * time it sleeps within a stated time, no body put to sleep while visibly moving (twenty heaps:
+ * tests/cmake/heap_sleep.cmake). Tapped
  * once asleep, the heap wakes and carries on without a jump: at the wake step and after, no body's
  * velocity changes more than the tap and one step of gravity explain. */
 #include "karma_test.h"

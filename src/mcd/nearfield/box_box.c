@@ -301,7 +301,7 @@ int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData 
             return count;
         if (faceBest > edgeBest)
             return 0;
-    } else if (edgeI >= 0 && edgeBest < EDGE_BIAS * faceBest - MCD_NF_REL_EPS * size) {
+    } else if (edgeI >= 0 && edgeBest < EDGE_BIAS * faceBest - MCD_NF_FEATURE_EPS * size) {
         return edgeContact(&A, &B, edgeI, edgeJ, edgeBest, T, tolerance, contacts, maxContacts);
     }
     {

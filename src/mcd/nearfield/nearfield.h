@@ -27,6 +27,11 @@
 #  define MCD_NF_REL_EPS ME_R(2e-6)
 #  define MCD_NF_TOUCH ME_R(1e-4)
 #endif
+/* Relative margin, scaled by the pair's size, by which one feature must beat another to be chosen (a
+ * deeper point added to a clipped manifold, an edge axis over a face axis). It is geometric, not the
+ * iterative methods' accuracy: at double's rounding level a resting box's corners, level to a
+ * trace, took turns at being the deepest, and its contacts changed from step to step (issue 17). */
+#define MCD_NF_FEATURE_EPS ME_R(2e-6)
 /* Two unit axes count as parallel below this sine: well above the rounding of a rotated axis in
  * either precision (about 8 sqrt(epsilon): 2.8e-3 in float), and never below the 1e-4 used before. */
 #if KARMA_DOUBLE

@@ -26,11 +26,31 @@
 #include "../world.h"
 #include "contact_internal.h"
 
+/* The friction axis the contact chooses itself follows its normal: last step's axis made normal to
+ * the new normal, so that the friction impulses it keeps for the warm start act along the same
+ * directions next step. MeVector3PlaneSpace alone would turn the axis by 90 degrees whenever the
+ * normal's two smallest components swap sizes, as they do for a nearly vertical normal tilting by a
+ * trace: the warm start then pushes sideways with last step's friction. A fresh contact, or one whose
+ * normal turned more than 60 degrees towards the old axis, takes the plane's own axis. */
+static void followNormal(ContactData *d)
+{
+    const MeReal along = MeVector3Dot(d->frictionAxis, d->normal);
+    MeVector3 t = {d->frictionAxis[0] - along * d->normal[0], d->frictionAxis[1] - along * d->normal[1],
+                   d->frictionAxis[2] - along * d->normal[2]};
+    if (MeVector3MagnitudeSqr(t) > ME_R(0.25) && MeVector3NormalizeSafe(t)) {
+        MeVector3Copy(d->frictionAxis, t);
+        return;
+    }
+    MeVector3 other;
+    MeVector3PlaneSpace(d->normal, d->frictionAxis, other);
+}
+
 static void resetData(ContactData *d)
 {
     memset(d, 0, sizeof *d);
     MeVector3Set(d->normal, 0, 1, 0);
     MeVector3Set(d->direction, 0, 1, 0);
+    followNormal(d);
     MdtContactParamsReset(&d->params);
 }
 
@@ -204,10 +224,8 @@ static void frictionDirections(const ContactData *d, MeVector3 t[2])
                      d->direction[2] - dn * d->normal[2]);
         haveDirection = MeVector3NormalizeSafe(t[0]);
     }
-    if (!haveDirection) {
-        MeVector3 other;
-        MeVector3PlaneSpace(d->normal, t[0], other);
-    }
+    if (!haveDirection)
+        MeVector3Copy(t[0], d->frictionAxis);
     MeVector3Cross(t[1], t[0], d->normal);
 }
 
@@ -390,6 +408,7 @@ static void setNormal(ContactData *d, MeReal x, MeReal y, MeReal z, const char *
         return;
     }
     MeVector3Copy(d->normal, n);
+    followNormal(d);
 }
 
 void MdtContactSetNormal(MdtContactID id, MeReal x, MeReal y, MeReal z)

@@ -11,6 +11,8 @@ typedef struct ContactData {
     MeVector3 position;       /* world */
     MeVector3 normal;         /* unit, from body 1 towards body 0 (body 0 is pushed along it) */
     MeVector3 direction;      /* primary friction direction (with UseDirection) */
+    MeVector3 frictionAxis;   /* primary friction direction chosen by the contact (without UseDirection),
+                                 carried from step to step with the warm start; zero when fresh */
     MeVector3 worldVelocity;  /* surface velocity of the world (with UseWorldVelocity) */
     MeReal penetration;       /* > 0: overlap */
     MeReal importance;

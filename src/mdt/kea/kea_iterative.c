@@ -267,8 +267,10 @@ static MeReal KeaResidualRows(const KeaProblem *problem, const KeaIterativeWork 
 }
 
 /* Whether the extra effort may run on this partition (kea_tuning.h, KEA_EFFORT_REST_SPEED): every
- * row's target velocity change |r_i| within params->effortRestSpeed (0 = no limit), i.e. a resting
- * partition and not one where bodies collide or slide fast; stops at the first row over it. */
+ * row's target velocity change within params->effortRestSpeed (0 = no limit), i.e. a resting
+ * partition and not one where bodies collide or slide fast; stops at the first row over it. A row
+ * that can only push (lower bound 0: a contact's normal row) counts only a positive r_i: a negative
+ * one is a gap the bodies may close (a contact reported apart, within its tolerance), no motion. */
 static int KeaEffortAllowed(const KeaProblem *problem, const KeaParameters *params)
 {
     int i;
@@ -276,9 +278,11 @@ static int KeaEffortAllowed(const KeaProblem *problem, const KeaParameters *para
         return 0;
     if (!(params->effortRestSpeed > ME_R(0.0)))
         return 1;
-    for (i = 0; i < problem->nRows; ++i)
-        if (!(KeaFabs(problem->rhs[i]) <= params->effortRestSpeed))
+    for (i = 0; i < problem->nRows; ++i) {
+        const MeReal r = problem->lo[i] == ME_R(0.0) ? problem->rhs[i] : KeaFabs(problem->rhs[i]);
+        if (!(r <= params->effortRestSpeed))
             return 0;
+    }
     return 1;
 }
 

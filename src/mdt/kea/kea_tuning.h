@@ -101,15 +101,17 @@
  *  divided by the step (bench/RESULTS.md, "smash"): a resting block then sweeps to the cap. */
 #define KEA_WORLD_TOLERANCE ME_R(1e-4)
 #define KEA_EFFORT_FACTOR 2
-/** The extra effort is for a resting stack that has not converged, not for a pile whose bodies
- *  collide (KeaParameters.effortRestSpeed): it runs only where every row's target velocity change
- *  |r_i| is at most KEA_EFFORT_REST_SPEED (m/s) times the world's length scale, plus what gravity
- *  adds in one step (the world adds it per step). In a resting pyramid the largest |r_i| is gravity's
- *  step (0.16 m/s at 60 Hz) plus a little correction, at most 0.20 m/s in the 60-row one; in the
- *  bench's pile of 1,000 bodies it never fell below 1.6 m/s in 460 steps, although its residual after
- *  the cap is 10 to 100 times 5 mm/s (docs/kea_log.md, "Touching stacks": a threshold relative to the
- *  velocity scale does not separate them). 0.5 let a settled heap's jittering partitions take the
- *  effort, which left them noisier (docs/kea_log.md). */
-#define KEA_EFFORT_REST_SPEED ME_R(0.25)
+/** The extra effort is for a resting stack or heap that has not converged, not for a pile whose
+ *  bodies collide (KeaParameters.effortRestSpeed): it runs only where every row's target velocity
+ *  change r_i (only a positive one for a row that can only push: a negative one is a contact's gap)
+ *  is at most KEA_EFFORT_REST_SPEED (m/s) times the world's length scale, plus what gravity adds in
+ *  one step (the world adds it per step). In a resting pyramid the largest |r_i| is gravity's step
+ *  (0.16 m/s at 60 Hz) plus a little correction, at most 0.20 m/s in the 60-row one; in the bench's
+ *  pile of 1,000 bodies it never fell below 1.6 m/s in 460 steps, although its residual after the cap
+ *  is 10 to 100 times 5 mm/s (docs/kea_log.md, "Touching stacks": a threshold relative to the
+ *  velocity scale does not separate them). A settled heap's jitter reaches 0.5 m/s here and there
+ *  and, with the effort shut, feeds itself; 1 m/s lets the effort calm it (bench/RESULTS.md,
+ *  "Settled heaps"). */
+#define KEA_EFFORT_REST_SPEED ME_R(1.0)
 
 #endif
