@@ -38,18 +38,18 @@
  * for every worker count. */
 #  define SPLIT_ROWS 100
 #  if KARMA_DOUBLE
-#    define GOLDEN_PILE 0x5d2152b4ce0f0268ull
-#    define GOLDEN_PYRAMID 0xa2db89edddf041deull
+#    define GOLDEN_PILE 0xc0f3ebf676f608bbull
+#    define GOLDEN_PYRAMID 0xa76f003c9e19f706ull
 #  else
-#    define GOLDEN_PILE 0x47e4711bdc9065d5ull
-#    define GOLDEN_PYRAMID 0x6d04fc8b30539370ull
+#    define GOLDEN_PILE 0xbbdca1e4589c5d5aull
+#    define GOLDEN_PYRAMID 0x1edeb79737463979ull
 #  endif
 #elif KARMA_DOUBLE
-#  define GOLDEN_PILE 0x404e246667621050ull
-#  define GOLDEN_PYRAMID 0x48382db5e1a47411ull
+#  define GOLDEN_PILE 0x99cee39102bd72fbull
+#  define GOLDEN_PYRAMID 0xd8b080338cba552bull
 #else
-#  define GOLDEN_PILE 0xb5787877bdb1793cull
-#  define GOLDEN_PYRAMID 0x90e8bb9dafa33f7dull
+#  define GOLDEN_PILE 0x746caaccf599cc94ull
+#  define GOLDEN_PYRAMID 0xa8fabcb2672311d9ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
