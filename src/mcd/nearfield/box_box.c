@@ -54,13 +54,14 @@ static int mergeNear(McdContact *c, int n, MeReal radius)
     return kept;
 }
 
-/* Point p (clipped with the slack) moved onto the reference face's extent along its two side axes: a
- * sliver's points land on the edge or corner itself. */
-static void clampToFace(const Box *ref, int k, MeVector3 p)
+/* Point p (clipped with the slack) moved onto the reference face's extent along its two side axes
+ * (centre[i - 1]: the box's centre along side axis (k + i) % 3): a sliver's points land on the edge or
+ * corner itself. */
+static void clampToFace(const Box *ref, int k, const MeReal centre[2], MeVector3 p)
 {
     for (int i = 1; i < 3; i++) {
         const MeReal *e = ref->ax[(k + i) % 3];
-        const MeReal ce = MeVector3Dot(e, ref->c), he = ref->h[(k + i) % 3], d = MeVector3Dot(e, p) - ce;
+        const MeReal he = ref->h[(k + i) % 3], d = MeVector3Dot(e, p) - centre[i - 1];
         if (d > he)
             MeVector3MultiplyAdd(p, he - d, e);
         else if (d < -he)
@@ -78,7 +79,7 @@ static int faceContact(const Box *ref, int k, const MeVector3 nr, const Box *inc
 {
     MeVector3 poly[2][16], fc, n;
     int j = 0, i, cnt = 4, cur = 0, count = 0;
-    MeReal best = -ME_R(1.0), sj, off;
+    MeReal best = -ME_R(1.0), sj, off, centre[2];
     /* incident face: the face of `inc` whose normal is most anti-parallel to nr */
     for (i = 0; i < 3; i++) {
         MeReal d = MeFabs(MeVector3Dot(nr, inc->ax[i]));
@@ -100,9 +101,11 @@ static int faceContact(const Box *ref, int k, const MeVector3 nr, const Box *inc
         }
     }
     /* the four side planes of the reference face */
+    for (i = 1; i < 3; i++)
+        centre[i - 1] = MeVector3Dot(ref->ax[(k + i) % 3], ref->c);
     for (i = 1; i < 3 && cnt > 0; i++) {
         const MeReal *e = ref->ax[(k + i) % 3];
-        MeReal ce = MeVector3Dot(e, ref->c), he = ref->h[(k + i) % 3] + slack;
+        MeReal ce = centre[i - 1], he = ref->h[(k + i) % 3] + slack;
         MeVector3 me;
         cnt = clipPlane(poly[cur], cnt, poly[1 - cur], e, ce + he);
         cur = 1 - cur;
@@ -119,7 +122,7 @@ static int faceContact(const Box *ref, int k, const MeVector3 nr, const Box *inc
         MeVector3Copy(n, nr);
     for (i = 0; i < cnt; i++) {
         MeReal sep;
-        clampToFace(ref, k, poly[cur][i]);
+        clampToFace(ref, k, centre, poly[cur][i]);
         sep = MeVector3Dot(poly[cur][i], nr) - off;
         MeVector3 onRef;
         MeVector3ScaleAndAdd(onRef, poly[cur][i], -sep, nr);
@@ -276,11 +279,11 @@ int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData 
     }
     if (separated && faceBest <= edgeBest + slack) {
         /* Apart, a face axis separating them most (to rounding: an edge axis of aligned boxes is a face
-         * axis): when the clipped incident face holds the incident
-         * box's nearest point (its separation is the axis's), that separation is the exact distance
-         * (no point of the boxes is nearer along the axis, and that one lies over the face), so the
-         * clipped face is the contact without the general path: boxes side by side in a touching
-         * stack are apart or overlapping by rounding, and take the same path either way. */
+         * axis): when the clipped incident face holds the incident box's nearest point (its separation
+         * is the axis's), that separation is the exact distance (no point of the boxes is nearer along
+         * the axis, and that one lies over the face), so the clipped face is the contact without the
+         * general path: boxes side by side in a touching stack are apart or overlapping by rounding,
+         * and take the same path either way. */
         const int count = faceAxisContacts(&A, &B, faceAxis, ta, tb, tolerance, slack, contacts, maxContacts);
         MeReal nearest = MEINFINITY;
         for (int k = 0; k < count; k++)

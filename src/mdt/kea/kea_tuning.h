@@ -93,13 +93,6 @@
  *  costs more sweeps for the same result, 10 mm/s holds less margin; a factor of 2 rather than 1 for
  *  the 60-row pyramid's first settle). */
 #define KEA_EFFORT_RESIDUAL ME_R(5e-3)
-
-/** The world's LCP tolerance (MdtWorldSetLCPTolerance), m/s times its length scale: a solve whose
- *  sweep leaves every row within it stops. A residual of 1e-4 m/s moves a body 2 um in a step at
- *  60 Hz, below the penetration the correction leaves; a tighter stop would chase the rounding of the
- *  contacts' depths, which for a float scene 30 m from the origin is a few um, 1e-5 m/s and more once
- *  divided by the step (bench/RESULTS.md, "smash"): a resting block then sweeps to the cap. */
-#define KEA_WORLD_TOLERANCE ME_R(1e-4)
 #define KEA_EFFORT_FACTOR 2
 /** The extra effort is for a resting stack or heap that has not converged, not for a pile whose
  *  bodies collide (KeaParameters.effortRestSpeed): it runs only where every row's target velocity
@@ -113,5 +106,12 @@
  *  and, with the effort shut, feeds itself; 1 m/s lets the effort calm it (bench/RESULTS.md,
  *  "Settled heaps"). */
 #define KEA_EFFORT_REST_SPEED ME_R(1.0)
+
+/** The world's LCP tolerance (MdtWorldSetLCPTolerance), m/s times its length scale: a solve whose
+ *  sweep leaves every row within it stops. A residual of 1e-4 m/s moves a body 2 um in a step at
+ *  60 Hz, below the penetration the correction leaves; a tighter stop would chase the rounding of the
+ *  contacts' depths, which for a float scene 30 m from the origin is a few um, 1e-5 m/s and more once
+ *  divided by the step (bench/RESULTS.md, "smash"): a resting block then sweeps to the cap. */
+#define KEA_WORLD_TOLERANCE ME_R(1e-4)
 
 #endif
