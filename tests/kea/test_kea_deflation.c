@@ -12,28 +12,28 @@
 
 /* G alpha = -g on an SPD 3 x 3 is solved; with the third direction the first again, it is dropped
  * (alpha_2 = 0) and the first two solved alone. */
+/* alpha solves G alpha = -g (G row-major, 3 x 3) over its first k rows and columns. */
+static void assertSolves(const MeReal G[9], const MeReal g[3], const MeReal alpha[3], int k)
+{
+    for (int i = 0; i < k; ++i) {
+        double s = (double)g[i];
+        for (int j = 0; j < k; ++j)
+            s += (double)G[3 * i + j] * (double)alpha[j];
+        assert_near(s, 0.0, ME_TOL(1e-12, 1e-5));
+    }
+}
+
 static void deflation_solve_drops_dependent_directions(void **state)
 {
     const MeReal G[9] = {4, 1, 0.5, 1, 3, 0.25, 0.5, 0.25, 2}, g[3] = {1, -2, 0.5};
     const MeReal Gd[9] = {4, 1, 4, 1, 3, 1, 4, 1, 4};
     MeReal alpha[3];
-    int i, j;
     (void)state;
     assert_int_equal(KeaDeflationSolve(3, G, g, alpha), 3);
-    for (i = 0; i < 3; ++i) {
-        double s = (double)g[i];
-        for (j = 0; j < 3; ++j)
-            s += (double)G[3 * i + j] * (double)alpha[j];
-        assert_near(s, 0.0, ME_TOL(1e-12, 1e-5));
-    }
+    assertSolves(G, g, alpha, 3);
     assert_int_equal(KeaDeflationSolve(3, Gd, g, alpha), 2);
     assert_true(alpha[2] == ME_R(0.0));
-    for (i = 0; i < 2; ++i) {
-        double s = (double)g[i];
-        for (j = 0; j < 2; ++j)
-            s += (double)Gd[3 * i + j] * (double)alpha[j];
-        assert_near(s, 0.0, ME_TOL(1e-12, 1e-5));
-    }
+    assertSolves(Gd, g, alpha, 2);
     assert_int_equal(KeaDeflationSolve(1, Gd, g, alpha), 1);
     assert_near(alpha[0], -0.25, 1e-6);
 }

@@ -163,6 +163,18 @@ static KeaStatus solve(const KtProblem *t, const KeaParameters *params, Result *
     return status;
 }
 
+/* A hook of that schedule, worker count and chunking (KeaTaskHook.perStage), its shuffle seeded. */
+static Hook hook_of(Schedule schedule, int workers, int perStage, uint64_t seed)
+{
+    Hook hook;
+    memset(&hook, 0, sizeof hook);
+    hook.schedule = schedule;
+    hook.workers = workers;
+    hook.perStage = perStage;
+    hook.rng = kt_rng(seed);
+    return hook;
+}
+
 static KeaParameters split_params(Hook *hook)
 {
     KeaParameters p = kt_params(KeaPathIterative);
@@ -214,13 +226,8 @@ static void any_schedule_gives_the_same_bits(void **state)
         assert_true(reference.stats.subspaceSteps > 0); /* SM ran: its packs' chunks (1500+ contacts: 12+) too */
         overflowSeen |= reference.stats.colours > KEA_COLOUR_COUNT;
         for (s = 0; s < (int)(sizeof schedules / sizeof schedules[0]); ++s) {
-            Hook hook;
+            Hook hook = hook_of(schedules[s], workers[s], perStage[s], 77 + (uint64_t)s);
             KeaParameters params;
-            memset(&hook, 0, sizeof hook);
-            hook.schedule = schedules[s];
-            hook.workers = workers[s];
-            hook.perStage = perStage[s];
-            hook.rng = kt_rng(77 + (uint64_t)s);
             params = split_params(&hook);
             solve(&t, &params, &other);
             if (perStage[s]) {
@@ -252,12 +259,7 @@ static void deflation_gives_the_same_bits_on_any_schedule(void **state)
     params.deflation = 1;
     assert_int_not_equal(solve(&t, &params, &reference), KeaStatusBadInput);
     for (s = 0; s < 4; ++s) {
-        Hook hook;
-        memset(&hook, 0, sizeof hook);
-        hook.schedule = schedules[s];
-        hook.workers = workers[s];
-        hook.perStage = perStage[s];
-        hook.rng = kt_rng(91 + (uint64_t)s);
+        Hook hook = hook_of(schedules[s], workers[s], perStage[s], 91 + (uint64_t)s);
         params = split_params(&hook);
         params.deflation = 1;
         solve(&t, &params, &other);
@@ -533,13 +535,8 @@ static void bad_rows_are_refused_on_the_workers(void **state)
         else
             t.rowBodies[row][1] = t.p.nBodies;
         for (s = 0; s < (int)(sizeof schedules / sizeof schedules[0]); ++s) {
-            Hook hook;
+            Hook hook = hook_of(schedules[s], 3, perStage[s], 91 + (uint64_t)s);
             KeaParameters params;
-            memset(&hook, 0, sizeof hook);
-            hook.schedule = schedules[s];
-            hook.workers = 3;
-            hook.perStage = perStage[s];
-            hook.rng = kt_rng(91 + (uint64_t)s);
             params = split_params(&hook);
             assert_int_equal(solve(&t, &params, &out), KeaStatusBadInput);
             assert_int_equal(hook.calls, 1); /* the check went out; no solve did */
