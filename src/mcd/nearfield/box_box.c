@@ -2,19 +2,24 @@
  *
  * Fifteen candidate axes: the three face normals of each box and the nine cross products of their
  * edges (Gottschalk et al. 1996; Ericson 4.4). Overlapping boxes: the axis of least overlap is the
- * contact axis (a face axis unless an edge axis is clearly better, which keeps resting contacts
- * steady); a face contact clips the other box's most anti-parallel face against the reference face
- * (Sutherland-Hodgman) and keeps up to four points, an edge contact gives the closest points of the two
- * edges. Boxes apart by less than the tolerance are measured by clipping too when a face axis
- * separates them most and the clipped face holds the nearest point (the axis's separation is then
- * the true distance); otherwise they go to the general path (GJK), which measures the true distance,
- * not only its projection on the fifteen axes. */
+ * contact axis (a face axis unless an edge axis is clearly better and not nearly along the face
+ * axis, which keeps resting contacts steady); a face contact clips the other box's most anti-parallel
+ * face against the reference face (Sutherland-Hodgman) and keeps up to four points, an edge contact
+ * gives the closest points of the two edges. Boxes apart by less than the tolerance are measured by
+ * clipping too when a face axis separates them most and the clipped face holds the nearest point (the
+ * axis's separation is then the true distance); otherwise they go to the general path (GJK), which
+ * measures the true distance, not only its projection on the fifteen axes. */
 #include <math.h>
 
 #include "nearfield.h"
 
 /* Prefer a face axis unless an edge axis overlaps less than this fraction of it. */
 #define EDGE_BIAS ME_R(0.999)
+/* An edge axis whose cosine with the face axis is above this (within about 8 degrees), and which
+ * overlaps less than the face axis by under EDGE_FACE_DEPTH of the pair's size, is the face's contact:
+ * the depth stays within the accuracy asked of box-box (10^-3 of the size, with EDGE_BIAS). */
+#define EDGE_FACE_COS ME_R(0.99)
+#define EDGE_FACE_DEPTH ME_R(2e-4)
 
 typedef struct Box {
     const MeReal *c;   /* centre */
@@ -198,6 +203,19 @@ static int edgeContact(const Box *A, const Box *B, int edgeI, int edgeJ, MeReal 
     return McdNfAddPair(contacts, 0, maxContacts, on1, on2, negAxis, tolerance, 0); /* B towards A */
 }
 
+/* Whether edge axis A_i x B_j lies within EDGE_FACE_COS of face axis faceAxis (A's 0-2, B's 3-5). Both
+ * edges then lie nearly in the face's plane: the boxes touch face to face, tilted a little, and their
+ * contact is the clipped face, up to four points. Taken as an edge contact it was one point where two
+ * edges cross, and a box resting so switched between the two from step to step as the tilt changed
+ * by a trace, rocking on the one point and walking down its support (issue 17 point 6). */
+static MeBool edgeAxisNearFace(const Box *A, const Box *B, int i, int j, int faceAxis)
+{
+    MeVector3 axis;
+    const MeReal *face = faceAxis < 3 ? A->ax[faceAxis] : B->ax[faceAxis - 3];
+    MeVector3Cross(axis, A->ax[i], B->ax[j]);
+    return MeFabs(MeVector3Dot(axis, face)) > EDGE_FACE_COS * MeVector3Magnitude(axis);
+}
+
 /* Size: McdNearfieldFn's signature. */
 int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData *g2, MeMatrix4 tm2, MeReal tolerance,
                 McdContact *contacts, int maxContacts, void **cache)
@@ -304,7 +322,8 @@ int McdNfBoxBox(const McdGeometryData *g1, MeMatrix4 tm1, const McdGeometryData 
             return count;
         if (faceBest > edgeBest)
             return 0;
-    } else if (edgeI >= 0 && edgeBest < EDGE_BIAS * faceBest - MCD_NF_FEATURE_EPS * size) {
+    } else if (edgeI >= 0 && edgeBest < EDGE_BIAS * faceBest - MCD_NF_FEATURE_EPS * size &&
+               !(faceBest - edgeBest < EDGE_FACE_DEPTH * size && edgeAxisNearFace(&A, &B, edgeI, edgeJ, faceAxis))) {
         return edgeContact(&A, &B, edgeI, edgeJ, edgeBest, T, tolerance, contacts, maxContacts);
     }
     {
