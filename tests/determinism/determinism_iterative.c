@@ -38,17 +38,17 @@
  * for every worker count. */
 #  define SPLIT_ROWS 100
 #  if KARMA_DOUBLE
-#    define GOLDEN_PILE 0xc0f3ebf676f608bbull
+#    define GOLDEN_PILE 0x727041d3280ad9b0ull
 #    define GOLDEN_PYRAMID 0xa76f003c9e19f706ull
 #  else
-#    define GOLDEN_PILE 0xbbdca1e4589c5d5aull
+#    define GOLDEN_PILE 0xd6311cdee002bd4eull
 #    define GOLDEN_PYRAMID 0x1edeb79737463979ull
 #  endif
 #elif KARMA_DOUBLE
-#  define GOLDEN_PILE 0x99cee39102bd72fbull
+#  define GOLDEN_PILE 0x360a0e49471cdd7eull
 #  define GOLDEN_PYRAMID 0xd8b080338cba552bull
 #else
-#  define GOLDEN_PILE 0x746caaccf599cc94ull
+#  define GOLDEN_PILE 0xdf4bc02d6e0a27b0ull
 #  define GOLDEN_PYRAMID 0xa8fabcb2672311d9ull
 #endif
 
