@@ -60,6 +60,7 @@ struct KeaContactPack {
     int lanes;                         /**< the lanes that hold a contact: 0 ... lanes - 1 */
     int pair;                          /**< 1: all four lanes are contacts on the same two bodies */
     int allFull;                       /**< SM: every lane's full is 1 */
+    int idle;                          /**< SM: no row of the pack is free (every pass skips it) */
 };
 
 /* Lanes 0-2 of four bodies' padded 3-vectors: v[0..2] hold the x, y, z of a, b, c, d a lane each. */
