@@ -34,10 +34,10 @@
 
 #if KARMA_DOUBLE
 #  define GOLDEN_DIRECT 0x3430a8ed90cc6bd4ull
-#  define GOLDEN_ITERATIVE 0x69078beddfb9326aull
+#  define GOLDEN_ITERATIVE 0xffdfa133896d023bull
 #else
 #  define GOLDEN_DIRECT 0x558a6cc270777cd1ull
-#  define GOLDEN_ITERATIVE 0x4552c799b3137973ull
+#  define GOLDEN_ITERATIVE 0xf3cc39dd3bbb46bdull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};

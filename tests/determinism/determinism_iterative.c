@@ -38,18 +38,18 @@
  * for every worker count. */
 #  define SPLIT_ROWS 100
 #  if KARMA_DOUBLE
-#    define GOLDEN_PILE 0xc0f3ebf676f608bbull
-#    define GOLDEN_PYRAMID 0xa76f003c9e19f706ull
+#    define GOLDEN_PILE 0x7d28b1ec5f910ac8ull
+#    define GOLDEN_PYRAMID 0x2046a38bf9b93e1dull
 #  else
-#    define GOLDEN_PILE 0xbbdca1e4589c5d5aull
-#    define GOLDEN_PYRAMID 0x1edeb79737463979ull
+#    define GOLDEN_PILE 0x4e27e1206469cc69ull
+#    define GOLDEN_PYRAMID 0xae33ca84ea7c9adaull
 #  endif
 #elif KARMA_DOUBLE
-#  define GOLDEN_PILE 0x99cee39102bd72fbull
-#  define GOLDEN_PYRAMID 0xd8b080338cba552bull
+#  define GOLDEN_PILE 0x0d1fd9b0d5c26ba3ull
+#  define GOLDEN_PYRAMID 0x7e2dfe8d58d4dc8full
 #else
-#  define GOLDEN_PILE 0x746caaccf599cc94ull
-#  define GOLDEN_PYRAMID 0xa8fabcb2672311d9ull
+#  define GOLDEN_PILE 0x77c10bd05ad8bad8ull
+#  define GOLDEN_PYRAMID 0xc788b08f91a68dd4ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
