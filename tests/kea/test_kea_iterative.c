@@ -714,6 +714,19 @@ static void nncg_converges_faster_to_the_same_solution(void **state)
 }
 
 
+enum { SM_BOXES = 20, SM_ROWS = 12 * SM_BOXES };
+
+/* The cold column of SM_BOXES boxes at rest under gravity, and its direct solution xd. */
+static void cold_column_solved(KtProblem *t, MeReal *xd)
+{
+    static const double g[3] = {0, 0, -9.81}, still[6 * SM_BOXES];
+    KeaParameters exact = kt_params(KeaPathDirect);
+    KeaStats stats;
+    kt_column(t, SM_BOXES, 1.0, 0.6, 1e-2);
+    kt_set_rhs_from_velocities(t, still, 1.0 / 60, g);
+    assert_int_equal(kt_solve(&t->p, &exact, xd, NULL, &stats), KeaStatusOk);
+}
+
 /* SM's schedule (KeaParameters.subspaceEvery, subspaceStop; the world's, decision K55): SM after the
  * first sweep and every second one, CG stopped once r.z has fallen tenfold. On the cold column of 20
  * boxes the first chance comes (after sweep 1, before sweep 2: run or skipped) and, run to
@@ -722,18 +735,13 @@ static void nncg_converges_faster_to_the_same_solution(void **state)
  * before their 7 steps. */
 static void sm_first_chance_and_early_stop_keep_the_limit(void **state)
 {
-    enum { BOXES = 20, N = 12 * BOXES };
-    static const double gravity[3] = {0, 0, -9.81};
-    const double v[6 * BOXES] = {0};
+    MeReal xd[SM_ROWS], xi[SM_ROWS];
     KtProblem t;
-    MeReal xd[N], xi[N];
-    KeaParameters direct = kt_params(KeaPathDirect), iter = kt_params(KeaPathIterative);
+    KeaParameters iter;
     KeaStats st;
     int i, k, steps[2];
     (void)state;
-    kt_column(&t, BOXES, 1.0, 0.6, 1e-2);
-    kt_set_rhs_from_velocities(&t, v, 1.0 / 60, gravity);
-    assert_int_equal(kt_solve(&t.p, &direct, xd, NULL, &st), KeaStatusOk);
+    cold_column_solved(&t, xd);
     for (k = 0; k < 2; ++k) { /* without and with the stop */
         iter = kt_params(KeaPathIterative);
         iter.nonsmoothCg = 1;
@@ -748,7 +756,7 @@ static void sm_first_chance_and_early_stop_keep_the_limit(void **state)
         iter.tolerance = ME_TOL(1e-9, 1e-5);
         kt_solve(&t.p, &iter, xi, NULL, &st);
         assert_true(st.residual <= 10 * iter.tolerance);
-        for (i = 0; i < N; ++i)
+        for (i = 0; i < SM_ROWS; ++i)
             assert_near(xi[i], xd[i], ME_TOL(1e-5, 2e-2) * (1.0 + fabs((double)xd[i])));
     }
     kt_free(&t);
