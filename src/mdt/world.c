@@ -50,6 +50,10 @@ void MdtWorldSetDefaults(MdtWorldData *w)
     w->kea.autoPivotsPerRow = KEA_AUTO_PIVOTS_PER_ROW;
     /* NNCG's momentum on the iterative path's sweeps: the same LCP in fewer sweeps (decision K47) */
     w->kea.nonsmoothCg = 1;
+    /* SM at the first chance and every second one after, longer CG runs (decision K55) */
+    w->kea.subspaceEvery = KEA_WORLD_SM_EVERY;
+    w->kea.subspaceIterations = KEA_WORLD_SM_STEPS;
+    w->kea.subspaceStop = KEA_WORLD_SM_STOP;
     w->autoDisable.enabled = METRUE;
     w->autoDisable.velocity = DEFAULT_AD_VELOCITY * l2;
     w->autoDisable.angularVelocity = DEFAULT_AD_ANGULAR_VELOCITY;

@@ -713,10 +713,76 @@ static void nncg_converges_faster_to_the_same_solution(void **state)
     kt_free(&t);
 }
 
+
+enum { SM_BOXES = 20, SM_ROWS = 12 * SM_BOXES };
+
+/* The cold column of SM_BOXES boxes at rest under gravity, and its direct solution xd. */
+static void cold_column_solved(KtProblem *t, MeReal *xd)
+{
+    static const double g[3] = {0, 0, -9.81}, still[6 * SM_BOXES];
+    KeaParameters exact = kt_params(KeaPathDirect);
+    KeaStats stats;
+    kt_column(t, SM_BOXES, 1.0, 0.6, 1e-2);
+    kt_set_rhs_from_velocities(t, still, 1.0 / 60, g);
+    assert_int_equal(kt_solve(&t->p, &exact, xd, NULL, &stats), KeaStatusOk);
+}
+
+/* SM's schedule (KeaParameters.subspaceEvery, subspaceStop; the world's, decision K55): SM after the
+ * first sweep and every second one, CG stopped once r.z has fallen tenfold. On the cold column of 20
+ * boxes the first chance comes (after sweep 1, before sweep 2: run or skipped) and, run to
+ * convergence with or without the stop, the schedule reaches the direct path's solution: the stop
+ * changes the path, not the limit. On random contact partitions at 10 sweeps the stop ends CG runs
+ * before their 7 steps. */
+static void sm_first_chance_and_early_stop_keep_the_limit(void **state)
+{
+    MeReal xd[SM_ROWS], xi[SM_ROWS];
+    KtProblem t;
+    KeaParameters iter;
+    KeaStats st;
+    int i, k, steps[2];
+    (void)state;
+    cold_column_solved(&t, xd);
+    for (k = 0; k < 2; ++k) { /* without and with the stop */
+        iter = kt_params(KeaPathIterative);
+        iter.nonsmoothCg = 1;
+        iter.subspaceEvery = 2;
+        iter.subspaceIterations = 7;
+        iter.subspaceStop = k ? ME_R(0.1) : ME_R(0.0);
+        iter.maxIterations = 2;
+        iter.tolerance = ME_R(0.0);
+        kt_solve(&t.p, &iter, xi, NULL, &st);
+        assert_true(st.subspaceSteps + st.subspaceSkipped > 0); /* the first chance came (ran or skipped) */
+        iter.maxIterations = 3000;
+        iter.tolerance = ME_TOL(1e-9, 1e-5);
+        kt_solve(&t.p, &iter, xi, NULL, &st);
+        assert_true(st.residual <= 10 * iter.tolerance);
+        for (i = 0; i < SM_ROWS; ++i)
+            assert_near(xi[i], xd[i], ME_TOL(1e-5, 2e-2) * (1.0 + fabs((double)xd[i])));
+    }
+    kt_free(&t);
+    steps[0] = steps[1] = 0;
+    for (i = 0; i < 10; ++i) /* random contact partitions, 10 sweeps: the stop saves CG steps */
+        for (k = 0; k < 2; ++k) {
+            KtRng rng = kt_rng((uint64_t)(900 + i));
+            kt_random_contacts(&t, &rng, 30, 0, 12, 0.5, 1e-2);
+            iter = kt_params(KeaPathIterative);
+            iter.subspaceEvery = 2;
+            iter.subspaceIterations = 7;
+            iter.subspaceStop = k ? ME_R(0.1) : ME_R(0.0);
+            iter.tolerance = ME_R(0.0);
+            kt_solve(&t.p, &iter, xi, NULL, &st);
+            steps[k] += st.subspaceSteps;
+            kt_free(&t);
+        }
+    print_message("random contacts, 10 sweeps: %d CG steps without the stop, %d with\n", steps[0], steps[1]);
+    assert_true(steps[1] < steps[0]);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(error_does_not_grow_with_iteration_cap),
+        cmocka_unit_test(sm_first_chance_and_early_stop_keep_the_limit),
         cmocka_unit_test(friction_links_converge_to_direct),
         cmocka_unit_test(one_contact_block_is_exact_in_one_sweep),
         cmocka_unit_test(generic_contact_path_is_exact_in_one_sweep),

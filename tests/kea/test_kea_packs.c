@@ -80,6 +80,9 @@ static void make_fixture(KtRng *rng)
             fx.x[r] = (MeReal)kt_range(rng, 2.0, 10.0); /* with mu = MEINFINITY: an infinite bound */
         fx.epsFree[r] = kt_uniform(rng) < 0.3 ? ME_R(0.0) : (MeReal)kt_range(rng, 1e-6, 1e-2);
     }
+    for (k = 0; k < NP; ++k) /* a pack with no free row at times: every pass skips it (idle) */
+        if (kt_uniform(rng) < 0.2)
+            memset(&fx.was[KEA_PACK_POSITIONS * k], 0, KEA_PACK_POSITIONS);
     for (r = 0; r < NPOS; r += 3)
         KeaContactConstsOf(fx.JT, r)->freeRows = fx.was[r] | fx.was[r + 1] << 1 | fx.was[r + 2] << 2;
     fx.w.packs = fx.packs;
@@ -146,7 +149,7 @@ static void listed_bounds_are_the_contact_steps(void **state)
         listed = KeaPacksListFree(&fx.w, fx.x);
         for (k = 0; k < NP; ++k) {
             const KeaContactPack *pack = &fx.packs[k];
-            int allFull = 1;
+            int allFull = 1, anyOn = 0;
             for (l = 0; l < KEA_PACK_LANES; ++l) {
                 const int s = pack->row[l];
                 int full = used(k, l) && pack->live[l];
@@ -155,6 +158,7 @@ static void listed_bounds_are_the_contact_steps(void **state)
                     const int on = used(k, l) && fx.was[s + r];
                     const MeReal bound = r == 0 ? pack->normalHi[l] : KeaFrictionBound(pack->mu[r - 1][l], fx.x[s]);
                     full &= on;
+                    anyOn |= on;
                     expectListed += on;
                     assert_true(pack->mask[r][l] == (on ? ME_R(1.0) : ME_R(0.0)));
                     if (on) {
@@ -169,6 +173,7 @@ static void listed_bounds_are_the_contact_steps(void **state)
                 allFull &= full;
             }
             assert_int_equal(pack->allFull, allFull);
+            assert_int_equal(pack->idle, !anyOn);
         }
         assert_int_equal(listed, expectListed);
     }

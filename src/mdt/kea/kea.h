@@ -184,8 +184,12 @@ typedef struct KeaParameters {
                                  after each pair of sweeps (forwards, backwards, SM between) a
                                  Fletcher-Reeves momentum step along the pairs' changes; 0 = plain
                                  sweeps, the default (opt-in: docs/kea_log.md, "NNCG") */
-    int subspaceEvery;      /**< iterative: an SM chance only after every this-many-th sweep (values
-                                 below 1 count as 1); default 1, every sweep */
+    int subspaceEvery;      /**< iterative: an SM chance only after the first sweep and every this-many-th
+                                 (values below 1 count as 1); default 1, every sweep (the world's: 2) */
+    MeReal subspaceStop;    /**< iterative: SM's conjugate gradient stops before subspaceIterations steps
+                                 once its preconditioned residual r.z has fallen to this times its
+                                 first value; 0 = only at rounding's floor, the default (the world's:
+                                 KEA_WORLD_SM_STOP) */
     int deflation;          /**< iterative: 1 = a coarse correction (kea_deflation.c) after each pair of
                                  sweeps in place of NNCG's momentum: the QP minimised over the
                                  solve's last changes of x, and SM at every second chance only;

@@ -191,14 +191,16 @@ int KeaPacksListFree(KeaIterativeWork *w, const MeReal *x)
         const int base = KEA_PACK_POSITIONS * k;
         MeReal *lo = los + base, *hi = his + base, *xF = xFs + base;
         KeaLanes m[KEA_PACK_LANES], xs[KEA_PACK_LANES], nPos, bound;
-        int allFull = 1;
+        int allFull = 1, anyFree = 0;
         for (l = 0; l < KEA_PACK_LANES; ++l) {
             const int s = pack->row[l], free = l < pack->lanes ? KeaContactConstsOf(JT, s)->freeRows : 0;
             m[l] = KeaLanesLoadA(keaFreeLanes[free | pack->live[l] << 3]);
             xs[l] = KeaLanesLoad3(x + s);
             allFull &= pack->live[l] & (free == 7);
+            anyFree |= free;
             listed += keaBitsSet[free];
         }
+        pack->idle = anyFree == 0;
         KeaLanesTranspose4(&m[0], &m[1], &m[2], &m[3]);
         KeaLanesTranspose4(&xs[0], &xs[1], &xs[2], &xs[3]);
         KeaLanesStoreA(pack->full, m[3]);
@@ -226,7 +228,8 @@ void KeaPacksScatter(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *dv, in
     const KeaContactPack *packs = w->packs;
     int k;
     for (k = first; k < last; ++k)
-        KeaPackScatter(&packs[k], v + KEA_PACK_POSITIONS * k, dv, -1);
+        if (!packs[k].idle)
+            KeaPackScatter(&packs[k], v + KEA_PACK_POSITIONS * k, dv, -1);
 }
 
 void KeaPacksScatterDirection(const KeaIterativeWork *w, MeReal beta, int first, int last)
@@ -240,6 +243,8 @@ void KeaPacksScatterDirection(const KeaIterativeWork *w, MeReal beta, int first,
     for (k = first; k < last; ++k) {
         MeReal *dir = dirs + KEA_PACK_POSITIONS * k;
         const MeReal *z = zs + KEA_PACK_POSITIONS * k;
+        if (packs[k].idle)
+            continue;
         for (r = 0; r < 3; ++r) {
             const int o = KEA_PACK_LANES * r;
             KeaLanesStoreA(dir + o, KeaLanesAdd(KeaLanesLoadA(z + o), KeaLanesMul(b, KeaLanesLoadA(dir + o))));
@@ -255,7 +260,8 @@ void KeaPacksScatterSplit(const KeaIterativeWork *w, const MeReal *v, KeaVel4 *d
     const int nb = w->nb;
     int j;
     for (j = first; j < last; ++j)
-        KeaPackScatter(&packs[order[j]], v + KEA_PACK_POSITIONS * order[j], dv, nb);
+        if (!packs[order[j]].idle)
+            KeaPackScatter(&packs[order[j]], v + KEA_PACK_POSITIONS * order[j], dv, nb);
 }
 
 /* The SM arrays of the pack passes read into locals once (a four-lane store may alias anything for
@@ -281,6 +287,17 @@ static KeaPackVectors KeaPackVectorsOf(const KeaIterativeWork *w)
     return v;
 }
 
+/* Every SM vector +0 at a pack's positions from base (an idle pack's, written once an SM step). */
+static void KeaPackZero(const KeaPackVectors *v, int base)
+{
+    MeReal *const vectors[6] = {v->grad, v->res, v->z, v->dir, v->step, v->q};
+    const KeaLanes zero = KeaLanesSplat(ME_R(0.0));
+    int j, o;
+    for (j = 0; j < 6; ++j)
+        for (o = 0; o < KEA_PACK_POSITIONS; o += KEA_PACK_LANES)
+            KeaLanesStoreA(vectors[j] + base + o, zero);
+}
+
 void KeaPacksCgStart(const KeaIterativeWork *w, int first, int last, KeaLanes *acc)
 {
     const KeaPackVectors v = KeaPackVectorsOf(w);
@@ -293,6 +310,10 @@ void KeaPacksCgStart(const KeaIterativeWork *w, int first, int last, KeaLanes *a
         const int base = KEA_PACK_POSITIONS * k;
         MeReal *res = v.res + base, *z = v.z + base;
         KeaLanes g[3];
+        if (pack->idle) { /* its positions 0, as a masked row's, and left so by the passes that skip it */
+            KeaPackZero(&v, base);
+            continue;
+        }
         KeaPackGatherLanes(pack, dv, g);
         for (r = 0; r < 3; ++r) {
             const int o = base + KEA_PACK_LANES * r;
@@ -335,6 +356,8 @@ void KeaPacksCgProduct(const KeaIterativeWork *w, int first, int last, KeaLanes 
     int k, r;
     for (k = first; k < last; ++k) {
         KeaLanes q[3];
+        if (v.packs[k].idle)
+            continue;
         KeaPackProduct(&v, dvTmp, k, v.dir, q);
         for (r = 0; r < 3; ++r) {
             const int o = KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r;
@@ -355,6 +378,8 @@ void KeaPacksCgUpdate(const KeaIterativeWork *w, MeReal a, int first, int last, 
         const int base = KEA_PACK_POSITIONS * k;
         MeReal *res = v.res + base, *z = v.z + base, *step = v.step + base;
         const MeReal *dir = v.dir + base, *q = v.q + base;
+        if (v.packs[k].idle)
+            continue;
         for (r = 0; r < 3; ++r) {
             const int o = KEA_PACK_LANES * r;
             KeaLanesStoreA(step + o, KeaLanesAdd(KeaLanesLoadA(step + o), KeaLanesMul(av, KeaLanesLoadA(dir + o))));
@@ -377,6 +402,8 @@ MeReal KeaPacksTrial(const KeaIterativeWork *w, int first, int last, MeReal df)
     int k, r, l;
     for (k = first; k < last; ++k) {
         KeaLanes As[3];
+        if (v.packs[k].idle)
+            continue;
         KeaPackProduct(&v, dvTmp, k, v.z, As);
         for (r = 0; r < 3; ++r) {
             const int o = KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r;
@@ -396,6 +423,8 @@ void KeaPacksApply(const KeaIterativeWork *w, MeReal *x)
     int k, l, r;
     for (k = 0; k < w->nPacks; ++k) {
         const KeaContactPack *pack = &w->packs[k];
+        if (pack->idle)
+            continue;
         for (l = 0; l < pack->lanes; ++l) { /* a contact's three rows are consecutive in x */
             MeReal *xc = x + pack->row[l];
             for (r = 0; r < 3; ++r) {

@@ -16,7 +16,9 @@
  * nothing to any product, sum or step. Each of CG's stages is one pass over the packs that does its
  * vector work beside its product (KeaPacksCgStart, KeaPacksCgProduct, KeaPacksCgUpdate,
  * KeaPacksScatterDirection, KeaPacksTrial), its sums in SM's position order (docs/kea.md, "SM's
- * passes, one per product"). Masking by a product assumes finite x, rhs and dv (a NaN in a masked
+ * passes, one per product"). A pack none of whose rows is free (KeaContactPack.idle) is skipped by
+ * every pass of that SM step, its positions set to 0 by KeaPacksCgStart: it would add only zeros, and a
+ * body's sum, starting at +0, is never -0, so the bits are the same. Masking by a product assumes finite x, rhs and dv (a NaN in a masked
  * row would reach the sums; SM stops on a non-positive or NaN res . z).
  *
  * The scatter adds a lane's contribution to its bodies lane by lane, in lane order: the four
@@ -60,6 +62,7 @@ struct KeaContactPack {
     int lanes;                         /**< the lanes that hold a contact: 0 ... lanes - 1 */
     int pair;                          /**< 1: all four lanes are contacts on the same two bodies */
     int allFull;                       /**< SM: every lane's full is 1 */
+    int idle;                          /**< SM: no row of the pack is free (every pass skips it) */
 };
 
 /* Lanes 0-2 of four bodies' padded 3-vectors: v[0..2] hold the x, y, z of a, b, c, d a lane each. */

@@ -493,6 +493,7 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
     w->skippedLast = 0;
     w->smRan = 0;
     w->smUnpaid = 0;
+    w->smStop = KeaMax(KEA_SM_CG_STOP, params->subspaceStop);
 }
 
 /* What a solve hands its driver (KeaIterate): the problem, its settings, the work and the outputs. */
@@ -520,6 +521,7 @@ static void KeaIterate(void *data)
     const int nb = problem->nBodies;
     const int effort = KeaEffortAllowed(problem, params);
     const int smEvery = params->deflation ? 2 : (params->subspaceEvery > 1 ? params->subspaceEvery : 1);
+    const int smFirst = !params->deflation; /* the first chance's SM does most of a solve's SM work */
     int it, b, k, limit;
 
     KeaIterativeSetUp(problem, params, w, x);
@@ -531,7 +533,7 @@ static void KeaIterate(void *data)
     /* maxIterations sweeps, then the extra effort (params->effortResidual, kea_tuning.h) if the
      * partition rests (KeaEffortAllowed): while the last sweep leaves a residual above it, two more
      * (so that the last still runs backwards), up to KEA_EFFORT_FACTOR maxIterations more in all.
-     * SM at every subspaceEvery-th chance; with nonsmoothCg, NNCG's momentum after every second sweep;
+     * SM at the first chance and every subspaceEvery-th; with nonsmoothCg, NNCG's momentum after every second sweep;
      * with deflation, its coarse correction there instead and SM at every second chance. */
     limit = params->maxIterations;
     if (params->deflation)
@@ -556,7 +558,7 @@ static void KeaIterate(void *data)
         if (w->smRan) /* did the last SM step lower the objective more than this sweep? */
             w->smUnpaid = w->sweepDecrease > w->smDecrease;
         w->smRan = 0;
-        if (params->subspaceIterations > 0 && it < limit && it % smEvery == 0) {
+        if (params->subspaceIterations > 0 && it < limit && (it % smEvery == 0 || (smFirst && it == 1))) {
             const int steps = KeaSubspaceMinimise(problem, w, params->subspaceIterations, x);
             if (steps < 0)
                 ++stats->subspaceSkipped;

@@ -230,6 +230,8 @@ typedef struct KeaIterativeWork {
     MeReal smDecrease;            /**< decrease of the objective by that SM step (0 if rejected) */
     int smRan;                    /**< an SM step ran since the last sweep */
     int smUnpaid;                 /**< SM: the last SM step did less than the sweep after it */
+    MeReal smStop;                /**< SM: CG stops once r.z is at most this times its first value
+                                       (KeaParameters.subspaceStop, at least KEA_SM_CG_STOP) */
     int nContactBlocks;           /**< blocks that are declared contacts (blockContact) */
     int sweepChanged;             /**< declared contacts' rows that went between free and a bound in
                                        the last sweep (tallied by its steps) */

@@ -32,6 +32,7 @@ void KeaParametersDefault(KeaParameters *params)
     params->tasks.perStage = 0;
     params->nonsmoothCg = 0;
     params->subspaceEvery = 1;
+    params->subspaceStop = ME_R(0.0);
     params->deflation = 0;
 }
 

@@ -466,7 +466,7 @@ static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, KeaSmTa
         t->a = rz / pq;
         rzNew = KeaSmRun(t, KeaCgUpdateChunks);
         ++steps;
-        if (!(rzNew > KEA_SM_CG_STOP * rz0))
+        if (!(rzNew > w->smStop * rz0))
             break;
         beta = rzNew / rz;
         rz = rzNew;

@@ -114,4 +114,14 @@
  *  divided by the step (bench/RESULTS.md, "smash"): a resting block then sweeps to the cap. */
 #define KEA_WORLD_TOLERANCE ME_R(1e-4)
 
+/** The world's SM schedule (KeaParameters.subspaceEvery, subspaceIterations, subspaceStop; K55): SM
+ *  after the first sweep and after every second one (before NNCG's momentum), each up to 7 CG steps,
+ *  stopped once r . P^-1 r has fallen tenfold. The first chance's CG meets that in two steps (it does
+ *  most of a solve's SM work); the later ones never do, and their longer CG runs damp a touching
+ *  wall's slow out-of-plane mode better than four steps at every chance, with about half the SM
+ *  steps' fixed passes (docs/kea_log.md, "SM's schedule"). */
+#define KEA_WORLD_SM_EVERY 2
+#define KEA_WORLD_SM_STEPS 7
+#define KEA_WORLD_SM_STOP ME_R(0.1)
+
 #endif
