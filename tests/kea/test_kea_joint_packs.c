@@ -122,43 +122,44 @@ static void assert_same(void)
         assert_true(kt_same_bits(fx.got[p], fx.expect[p]));
 }
 
-static void gather_is_the_block_kernels(void **state)
+/* The packs' gather (gather 1) or preconditioner against the block kernels, over random fixtures. */
+static void assert_passes_are_the_block_kernels(uint64_t seed, int gather)
 {
-    KtRng rng = kt_rng(1717);
+    KtRng rng = kt_rng(seed);
     int round, b, p;
-    (void)state;
     for (round = 0; round < 50; ++round) {
         make_fixture(&rng);
         fill_and_mark();
         for (p = 0; p < NPOS; ++p)
             fx.got[p] = fx.expect[p] = (MeReal)p; /* untouched positions keep these */
-        KeaJointPacksGather(&fx.w, fx.dv, fx.got);
-        for (b = 0; b < NBLK; ++b)
-            if (in_a_pack(b) && fx.isFree[b]) {
-                const int s = fx.blockStart[b];
+        if (gather)
+            KeaJointPacksGather(&fx.w, fx.dv, fx.got);
+        else
+            KeaJointPacksPrecondition(&fx.w, fx.res, fx.got);
+        for (b = 0; b < NBLK; ++b) {
+            const int s = fx.blockStart[b];
+            if (!in_a_pack(b) || !fx.isFree[b])
+                continue;
+            if (gather)
                 KeaBlockGather(&fx.w, s, kSizes[b], &fx.dv[fx.body[s][0]], &fx.dv[fx.body[s][1]], fx.expect + fx.pos[b]);
-            }
+            else
+                KeaBlockSymmetricApply(kSizes[b], fx.blockInv + fx.blockMatrix[b], fx.res + fx.pos[b],
+                                       fx.expect + fx.pos[b]);
+        }
         assert_same();
     }
 }
 
+static void gather_is_the_block_kernels(void **state)
+{
+    (void)state;
+    assert_passes_are_the_block_kernels(1717, 1);
+}
+
 static void preconditioner_is_the_block_kernels(void **state)
 {
-    KtRng rng = kt_rng(2323);
-    int round, b, p;
     (void)state;
-    for (round = 0; round < 50; ++round) {
-        make_fixture(&rng);
-        fill_and_mark();
-        for (p = 0; p < NPOS; ++p)
-            fx.got[p] = fx.expect[p] = (MeReal)-p;
-        KeaJointPacksPrecondition(&fx.w, fx.res, fx.got);
-        for (b = 0; b < NBLK; ++b)
-            if (in_a_pack(b) && fx.isFree[b])
-                KeaBlockSymmetricApply(kSizes[b], fx.blockInv + fx.blockMatrix[b], fx.res + fx.pos[b],
-                                       fx.expect + fx.pos[b]);
-        assert_same();
-    }
+    assert_passes_are_the_block_kernels(2323, 0);
 }
 
 /* A split solve has no joint packs (its gathers run over chunks of pieces). */

@@ -58,7 +58,8 @@
  * deltas to local copies of its two bodies; SM's matrix-free products go through the declared contacts four at a time, a lane each
  * (kea_contact_packs.h), then through the generic rows' free list a piece (a free row on its own,
  * or a block whose rows are all free) at a time the same way, each piece's rows and bodies listed
- * once per SM step (KeaFreePiece). */
+ * once per SM step (KeaFreePiece); the free hinges' and fixed joints' gather and preconditioner four
+ * blocks at a time (kea_joint_packs.h). */
 #ifndef KEA_ITERATIVE_H
 #define KEA_ITERATIVE_H
 

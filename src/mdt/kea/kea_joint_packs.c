@@ -90,30 +90,32 @@ void KeaJointPacksFinish(KeaIterativeWork *w)
     }
 }
 
-void KeaJointPacksGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out)
+/* Over the packs with a free lane: the gather of dv (res NULL) or the preconditioner of res, to out. */
+static void KeaJointPacksRun(const KeaIterativeWork *w, const KeaVel4 *dv, const MeReal *res, MeReal *out)
 {
     const KeaJointPack *packs = w->jointPacks;
     int k;
     for (k = 0; k < w->nJointPacks; ++k) {
+        const int six = packs[k].rows == 6;
         if (!packs[k].active)
             continue;
-        if (packs[k].rows == 5)
-            KeaJointPackGather(5, &packs[k], dv, out);
-        else
+        if (res && six) /* m a constant in each call, so that the kernel unrolls */
+            KeaJointPackPrecondition(6, &packs[k], res, out);
+        else if (res)
+            KeaJointPackPrecondition(5, &packs[k], res, out);
+        else if (six)
             KeaJointPackGather(6, &packs[k], dv, out);
+        else
+            KeaJointPackGather(5, &packs[k], dv, out);
     }
+}
+
+void KeaJointPacksGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out)
+{
+    KeaJointPacksRun(w, dv, NULL, out);
 }
 
 void KeaJointPacksPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z)
 {
-    const KeaJointPack *packs = w->jointPacks;
-    int k;
-    for (k = 0; k < w->nJointPacks; ++k) {
-        if (!packs[k].active)
-            continue;
-        if (packs[k].rows == 5)
-            KeaJointPackPrecondition(5, &packs[k], res, z);
-        else
-            KeaJointPackPrecondition(6, &packs[k], res, z);
-    }
+    KeaJointPacksRun(w, NULL, res, z);
 }
