@@ -4,6 +4,7 @@
  * which blocks are declared contacts (KeaContact; the sweep's contact step). */
 #include "kea_block_kernels.h"
 #include "kea_contact_packs.h"
+#include "kea_joint_packs.h"
 
 void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIterativeWork *w)
 {
@@ -21,8 +22,11 @@ void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIte
     w->localW = KEA_ALLOC(arena, MeReal, cap);
     w->rowBlock = KEA_ALLOC(arena, int, n);
     w->pieces = KEA_ALLOC(arena, KeaFreePiece, n);
+    w->loosePieces = KEA_ALLOC(arena, int, n);
     w->packs = KEA_ALLOC(arena, KeaContactPack, n / 12 + 1);
     w->packed = KEA_ALLOC(arena, unsigned char, n);
+    w->jointPacks = KEA_ALLOC(arena, KeaJointPack, KeaJointPacksMax(n));
+    w->jointPackOf = KEA_ALLOC(arena, int, n);
     w->localR = KEA_ALLOC(arena, MeReal, cap);
     w->localLo = KEA_ALLOC(arena, MeReal, cap);
     w->localHi = KEA_ALLOC(arena, MeReal, cap);
@@ -228,6 +232,7 @@ static void KeaFindBlocks(const KeaProblem *problem, KeaIterativeWork *w, int ca
     }
     w->blockStart[w->nBlocks] = n;
     w->nPacks = -1; /* SM builds them when it first runs (kea_contact_packs.h) */
+    w->nJointPacks = -1; /* and these (kea_joint_packs.h) */
 }
 
 /* Blocks [b0, b1): each one's matrix A_bb = J_b M^-1 J_b^T + diag(eps) from the rows' B = M^-1 J^T,

@@ -9,6 +9,8 @@
  *   kea_subspace.c        subspace minimisation and its schedule (KeaSubspaceMinimise)
  *   kea_nncg.c            NNCG: a momentum step after each pair of sweeps (KeaNncgStep)
  *   kea_contact_packs.*   declared contacts four to a pack, a lane each (SM's products on them)
+ *   kea_joint_packs.*     joint blocks (hinges, fixed joints) four to a pack (SM's gather and
+ *                         preconditioner on them)
  * This header holds the padded data, the work struct and the row kernels; the tuning constants
  * (KEA_SM_*, KEA_GATHER_ROW_BY_ROW) are in kea_tuning.h.
  *
@@ -56,7 +58,8 @@
  * deltas to local copies of its two bodies; SM's matrix-free products go through the declared contacts four at a time, a lane each
  * (kea_contact_packs.h), then through the generic rows' free list a piece (a free row on its own,
  * or a block whose rows are all free) at a time the same way, each piece's rows and bodies listed
- * once per SM step (KeaFreePiece). */
+ * once per SM step (KeaFreePiece); the free hinges' and fixed joints' gather and preconditioner four
+ * blocks at a time (kea_joint_packs.h). */
 #ifndef KEA_ITERATIVE_H
 #define KEA_ITERATIVE_H
 
@@ -79,6 +82,7 @@
 #endif
 
 typedef struct KeaContactPack KeaContactPack; /* kea_contact_packs.h */
+typedef struct KeaJointPack KeaJointPack;     /* kea_joint_packs.h */
 
 /** A body's velocity change with each 3-vector padded to 4 (pad 0). */
 typedef struct KeaVel4 {
@@ -240,9 +244,14 @@ typedef struct KeaIterativeWork {
     KeaFreePiece *pieces;  /**< SM: the free list after its pack region as rows on their own and
                                 segments (free blocks, preconditioned by their inverse), in order */
     int nPieces;
+    int *loosePieces;      /**< SM, a solve not split: the pieces not in a joint pack (kea_joint_packs.h), in order */
+    int nLoosePieces;
     KeaContactPack *packs; /**< the declared contacts four to a pack (kea_contact_packs.h) */
     int nPacks;            /**< -1 until the solve's first SM step builds them */
     unsigned char *packed; /**< a declared contact's row: its place in SM's free list is in the packs */
+    KeaJointPack *jointPacks; /**< SM: joint blocks of 5 or 6 rows four to a pack (kea_joint_packs.h) */
+    int nJointPacks;       /**< -1 until the solve's first SM step builds them (0 in a split solve) */
+    int *jointPackOf;      /**< each block's pack and lane in it, 4 pack + lane, or -1 */
     MeReal *localR, *localLo, *localHi, *localX; /**< a block's LCP (maxBlockRows each) */
     int *localLink;
     KeaDenseWork *dense;   /**< the dense solver, sized for maxBlockRows */

@@ -28,6 +28,7 @@
  * KeaStats.subspaceSkipped counts the skips. Figures: bench/RESULTS.md. */
 #include "kea_block_kernels.h"
 #include "kea_contact_packs.h"
+#include "kea_joint_packs.h"
 
 /* dvTmp += M^-1 J_F^T v (v by position in the free list) for the pieces (KeaFindSegments) order[j]
  * (order NULL: j itself), j in [j0, j1), in that order: a segment through the sweep's block kernels, a
@@ -117,7 +118,7 @@ static void KeaScatter(const KeaProblem *problem, KeaIterativeWork *w, const MeR
 {
     KeaSplit *split = w->split;
     KeaSmTask t;
-    memset(w->dvTmp, 0, sizeof(KeaVel4) * (size_t)(problem->nBodies + 1));
+    KeaVel4Clear(w->dvTmp, problem->nBodies + 1);
     if (!split) {
         KeaPacksScatter(w, v, w->dvTmp, 0, w->nPacks);
         KeaScatterPieces(w, v, NULL, 0, w->nPieces);
@@ -129,15 +130,15 @@ static void KeaScatter(const KeaProblem *problem, KeaIterativeWork *w, const MeR
     KeaScatterColours(split, KeaScatterChunks, split->pieceColourChunk, &t);
 }
 
-/* out[p] = J_i . dv of the free rows of pieces [k0, k1) (a piece at a time, as KeaScatter; the packs'
- * positions by KeaPacksCg*, KeaPacksTrial). */
-static void KeaGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, int k0, int k1)
+/* out[p] = J_i . dv of the free rows of pieces order[j] (order NULL: j itself), j in [j0, j1). */
+KEA_ALWAYS_INLINE void KeaGatherPieces(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, const int *order,
+                                       int j0, int j1)
 {
     const KeaFreePiece *pieces = w->pieces;
     const KeaJacobianRow *J = w->J;
-    int k;
-    for (k = k0; k < k1; ++k) {
-        const KeaFreePiece *piece = &pieces[k];
+    int j;
+    for (j = j0; j < j1; ++j) {
+        const KeaFreePiece *piece = &pieces[order ? order[j] : j];
         const KeaVel4 *v0 = &dv[piece->body[0]], *v1 = &dv[piece->body[1]];
         MeReal *o = out + piece->pos;
         if (piece->rows == 1)
@@ -147,13 +148,29 @@ static void KeaGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out,
     }
 }
 
+/* out[p] = J_i . dv of the free rows of pieces [k0, k1) (the packs' positions by KeaPacksCg*,
+ * KeaPacksTrial). Not split, [k0, k1) is every piece: the segments in joint packs by the packs, the
+ * others a piece at a time. */
+static void KeaGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, int k0, int k1)
+{
+    if (w->split) {
+        KeaGatherPieces(w, dv, out, NULL, k0, k1);
+        return;
+    }
+    KeaGatherPieces(w, dv, out, w->loosePieces, 0, w->nLoosePieces);
+    KeaJointPacksGather(w, dv, out);
+}
+
 /* After the pack region (positions before first), the blocks whose rows are all free (and whose
  * factor exists) become segments of the free list, preconditioned by their exact inverse A_bb^-1;
  * the other free rows by 1 / d_i. */
 static void KeaFindSegments(KeaIterativeWork *w, int first, int nFree)
 {
     int p = first;
-    w->nPieces = 0;
+    w->nPieces = w->nLoosePieces = 0;
+    if (w->nJointPacks < 0) /* the solve's first SM step that runs */
+        KeaJointPacksFill(w);
+    KeaJointPacksClear(w);
     while (p < nFree) {
         const int i = w->freeRows[p], b = w->rowBlock[i];
         const int m = w->blockStart[b + 1] - w->blockStart[b];
@@ -172,25 +189,43 @@ static void KeaFindSegments(KeaIterativeWork *w, int first, int nFree)
             piece->matrix = -1;
             ++p;
         }
+        if (piece->rows > 1 && w->jointPackOf[b] >= 0)
+            KeaJointPacksMark(w, b, piece->pos);
+        else
+            w->loosePieces[w->nLoosePieces++] = w->nPieces - 1;
     }
+    KeaJointPacksFinish(w);
 }
 
-/* z = P^-1 res (block-Jacobi preconditioner of the free rows) over pieces [k0, k1): a segment by its
- * block's inverse, a row on its own by 1 / d_i (the packs' contacts: KeaPackPrecondition, in
- * KeaPacksCgStart and KeaPacksCgUpdate). */
-static void KeaPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z, int k0, int k1)
+/* z = P^-1 res (block-Jacobi preconditioner of the free rows) over pieces order[j] (order NULL: j
+ * itself), j in [j0, j1): a segment by its block's inverse, a row on its own by 1 / d_i (the packs'
+ * contacts: KeaPackPrecondition, in KeaPacksCgStart and KeaPacksCgUpdate). */
+KEA_ALWAYS_INLINE void KeaPreconditionPieces(const KeaIterativeWork *w, const MeReal *res, MeReal *z, const int *order,
+                                             int j0, int j1)
 {
     const KeaFreePiece *pieces = w->pieces;
     const MeReal *blockInv = w->blockInv, *invDiag = w->invDiag;
-    int k;
-    for (k = k0; k < k1; ++k) {
-        const KeaFreePiece *piece = &pieces[k];
+    int j;
+    for (j = j0; j < j1; ++j) {
+        const KeaFreePiece *piece = &pieces[order ? order[j] : j];
         const int p = piece->pos;
         if (piece->rows == 1)
             z[p] = res[p] * invDiag[piece->row];
         else
             KeaBlockSymmetricApply(piece->rows, blockInv + piece->matrix, res + p, z + p);
     }
+}
+
+/* KeaPreconditionPieces over pieces [k0, k1), as KeaGather: not split, the joint packs' segments by
+ * the packs. */
+static void KeaPrecondition(const KeaIterativeWork *w, const MeReal *res, MeReal *z, int k0, int k1)
+{
+    if (w->split) {
+        KeaPreconditionPieces(w, res, z, NULL, k0, k1);
+        return;
+    }
+    KeaPreconditionPieces(w, res, z, w->loosePieces, 0, w->nLoosePieces);
+    KeaJointPacksPrecondition(w, res, z);
 }
 
 /* q += eps p, returning p . q (the new q) in one pass: the sums of KeaDotN4, in its order, carried
@@ -291,7 +326,7 @@ static void KeaScatterDirection(const KeaProblem *problem, KeaIterativeWork *w, 
         KeaScatter(problem, w, w->dir);
         return;
     }
-    memset(w->dvTmp, 0, sizeof(KeaVel4) * (size_t)(problem->nBodies + 1));
+    KeaVel4Clear(w->dvTmp, problem->nBodies + 1);
     KeaPacksScatterDirection(w, beta, 0, w->nPacks);
     KeaCgDirection(nFree - p0, beta, w->z + p0, w->dir + p0);
     KeaScatterPieces(w, w->dir, NULL, 0, w->nPieces);
