@@ -173,8 +173,12 @@ static void KeaSubtractScaled(MeReal *restrict y, const MeReal *restrict x, MeRe
     int m = 0;
     for (; m + 4 <= n; m += 4)
         KeaLanesStore(y + m, KeaLanesSub(KeaLanesLoad(y + m), KeaLanesMul(KeaLanesLoad(x + m), scale)));
-    for (; m < n; ++m)
-        y[m] -= x[m] * a;
+    switch (n - m) { /* the last one to three entries written out: most calls are that short */
+    case 3: y[m + 2] -= x[m + 2] * a; /* fall through */
+    case 2: y[m + 1] -= x[m + 1] * a; /* fall through */
+    case 1: y[m] -= x[m] * a; /* fall through */
+    default: break;
+    }
 }
 
 static MeReal *KeaRow(const KeaCholesky *c, int k) { return c->L + (size_t)k * (size_t)c->ld; }

@@ -73,10 +73,14 @@ static inline MeReal KeaDotN4(const MeReal *a, const MeReal *b, int n)
     KeaLanes lanes;
     MeReal s[4];
     int m = 0;
-    if (n < 4) { /* the other three sums stay 0 */
+    if (n < 4) { /* the other three sums stay 0; the one to three terms written out, in order */
         MeReal s0 = ME_R(0.0);
-        for (; m < n; ++m)
-            s0 += a[m] * b[m];
+        if (n > 0)
+            s0 += a[0] * b[0];
+        if (n > 1)
+            s0 += a[1] * b[1];
+        if (n > 2)
+            s0 += a[2] * b[2];
         return s0 + ME_R(0.0);
     }
     lanes = KeaLanesSplat(ME_R(0.0)); /* sum k runs over entries k, k + 4, ... (kea_lanes.h) */

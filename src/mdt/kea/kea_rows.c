@@ -2,6 +2,7 @@
  * (friction-linked) bounds, Delta v = M^-1 J^T x, and the natural-map residual that both paths report.
  * Everything here is O(rows + bodies) and needs no workspace. */
 #include "kea_internal.h"
+#include "kea_lanes.h"
 
 static void KeaInvInertiaTimes(const KeaBody *body, const MeReal *v, MeReal *out)
 {
@@ -94,38 +95,54 @@ void KeaBodyVelocityFromImpulses(const KeaProblem *problem, const MeReal *x, Kea
     KeaBodyVelocityFromImpulsesOf(problem, x, dv, 0, problem->nBodies);
 }
 
-void KeaBodyVelocityFromImpulsesOf(const KeaProblem *problem, const MeReal *x, KeaBodyVelocity *dv, int b0, int b1)
+/* Bodies whose impulses one pass over the rows gathers (a stack's worth; a larger partition takes a
+ * pass per chunk). */
+#define KEA_VELOCITY_CHUNK 32
+
+/* J^T x of bodies [c0, c1) (at most KEA_VELOCITY_CHUNK) into acc, four lanes for the linear and four for
+ * the angular part (the pads unused): each component is the scalar loop's sum, term by term in row order. */
+static void KeaImpulsesOfChunk(const KeaProblem *problem, const MeReal *x, int c0, int c1, KeaLanes acc[][2])
 {
-    int i, b, k;
-    /* Accumulate the impulses J^T x per body, then apply M^-1 once per body. */
-    for (b = b0; b < b1; ++b)
-        for (k = 0; k < 3; ++k)
-            dv[b].lin[k] = dv[b].ang[k] = ME_R(0.0);
-    for (i = 0; i < problem->nRows; ++i) {
+    const unsigned width = (unsigned)(c1 - c0); /* the world (-1) and bodies outside wrap past it */
+    for (int b = 0; b < c1 - c0; ++b)
+        acc[b][0] = acc[b][1] = KeaLanesSplat(ME_R(0.0));
+    for (int i = 0; i < problem->nRows; ++i) {
         const KeaJacobianRow *J = &problem->J[i];
         const int *rb = problem->rowBodies[i];
-        MeReal s = x[i];
+        const MeReal s = x[i];
+        KeaLanes sv;
         if (s == ME_R(0.0))
             continue;
-        if (rb[0] >= b0 && rb[0] < b1) /* the world (-1) is below every range */
-            for (k = 0; k < 3; ++k) {
-                dv[rb[0]].lin[k] += J->lin0[k] * s;
-                dv[rb[0]].ang[k] += J->ang0[k] * s;
-            }
-        if (rb[1] >= b0 && rb[1] < b1)
-            for (k = 0; k < 3; ++k) {
-                dv[rb[1]].lin[k] += J->lin1[k] * s;
-                dv[rb[1]].ang[k] += J->ang1[k] * s;
-            }
-    }
-    for (b = b0; b < b1; ++b) {
-        MeReal angularImpulse[3];
-        const KeaBody *body = &problem->bodies[b];
-        for (k = 0; k < 3; ++k) {
-            dv[b].lin[k] *= body->invMass;
-            angularImpulse[k] = dv[b].ang[k];
+        sv = KeaLanesSplat(s);
+        if ((unsigned)(rb[0] - c0) < width) {
+            KeaLanes *a = acc[rb[0] - c0];
+            a[0] = KeaLanesAdd(a[0], KeaLanesMul(KeaLanesLoad(J->lin0), sv));
+            a[1] = KeaLanesAdd(a[1], KeaLanesMul(KeaLanesLoad(J->ang0), sv));
         }
-        KeaInvInertiaTimes(body, angularImpulse, dv[b].ang);
+        if ((unsigned)(rb[1] - c0) < width) {
+            KeaLanes *a = acc[rb[1] - c0];
+            a[0] = KeaLanesAdd(a[0], KeaLanesMul(KeaLanesLoad(J->lin1), sv));
+            a[1] = KeaLanesAdd(a[1], KeaLanesMul(KeaLanesLoad(J->ang1), sv));
+        }
+    }
+}
+
+void KeaBodyVelocityFromImpulsesOf(const KeaProblem *problem, const MeReal *x, KeaBodyVelocity *dv, int b0, int b1)
+{
+    KeaLanes acc[KEA_VELOCITY_CHUNK][2];
+    /* Accumulate the impulses J^T x per body, then apply M^-1 once per body. */
+    for (int c0 = b0; c0 < b1; c0 += KEA_VELOCITY_CHUNK) {
+        const int c1 = MeMIN(b1, c0 + KEA_VELOCITY_CHUNK);
+        KeaImpulsesOfChunk(problem, x, c0, c1, acc);
+        for (int b = c0; b < c1; ++b) {
+            MeReal lin[4], angularImpulse[4];
+            const KeaBody *body = &problem->bodies[b];
+            KeaLanesStore(lin, acc[b - c0][0]);
+            KeaLanesStore(angularImpulse, acc[b - c0][1]);
+            for (int k = 0; k < 3; ++k)
+                dv[b].lin[k] = lin[k] * body->invMass;
+            KeaInvInertiaTimes(body, angularImpulse, dv[b].ang);
+        }
     }
 }
 
