@@ -38,18 +38,18 @@
  * for every worker count. */
 #  define SPLIT_ROWS 100
 #  if KARMA_DOUBLE
-#    define GOLDEN_PILE 0x727041d3280ad9b0ull
-#    define GOLDEN_PYRAMID 0xa76f003c9e19f706ull
+#    define GOLDEN_PILE 0xf3a5d793e84f970full
+#    define GOLDEN_PYRAMID 0x2046a38bf9b93e1dull
 #  else
-#    define GOLDEN_PILE 0xd6311cdee002bd4eull
-#    define GOLDEN_PYRAMID 0x1edeb79737463979ull
+#    define GOLDEN_PILE 0xe1bf21e3c6da9576ull
+#    define GOLDEN_PYRAMID 0xae33ca84ea7c9adaull
 #  endif
 #elif KARMA_DOUBLE
-#  define GOLDEN_PILE 0x360a0e49471cdd7eull
-#  define GOLDEN_PYRAMID 0xd8b080338cba552bull
+#  define GOLDEN_PILE 0x8b0c9d79dfafa76dull
+#  define GOLDEN_PYRAMID 0x7e2dfe8d58d4dc8full
 #else
-#  define GOLDEN_PILE 0xdf4bc02d6e0a27b0ull
-#  define GOLDEN_PYRAMID 0xa8fabcb2672311d9ull
+#  define GOLDEN_PILE 0x652ace4f63df2eafull
+#  define GOLDEN_PYRAMID 0xc788b08f91a68dd4ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
