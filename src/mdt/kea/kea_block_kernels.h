@@ -44,19 +44,6 @@ static inline void KeaJointApply(const int m, const int nc, const MeReal *M, con
     KeaJointColumnsOut(m, acc, tail, out);
 }
 
-/* v[0 .. count - 1] = 0 by two aligned four-lane stores a body: a loop rather than memset, whose
- * glibc version clears a few kilobytes and more by rep stosb, one counted instruction a byte (the
- * instruction counts that measure the solver, bench/README.md). */
-static inline void KeaVel4Clear(KeaVel4 *v, int count)
-{
-    const KeaLanes zero = KeaLanesSplat(ME_R(0.0));
-    int b;
-    for (b = 0; b < count; ++b) {
-        KeaLanesStoreA(v[b].lin, zero);
-        KeaLanesStoreA(v[b].ang, zero);
-    }
-}
-
 /* out = M (v0, v1) for the m x 12 column-major M of a block's J_b^T (KeaColumnsApplyPair's sums):
  * component c of the bodies is half c / 3 of (v0 lin, v0 ang, v1 lin, v1 ang), entry c % 3. */
 static inline void KeaJointApplyPair(const int m, const MeReal *M, const KeaVel4 *v0, const KeaVel4 *v1, MeReal *out)

@@ -133,7 +133,7 @@ static MeReal KeaDeflationTrial(const KeaProblem *problem, KeaIterativeWork *w, 
     *clipped = KeaDeflationClamp(n, alpha, x, w->xPrev, w->nncgDir, w->xStart, w->lo, w->hi, s, c);
     if (!*clipped)
         return model;
-    memset(w->dvTmp, 0, sizeof(KeaVel4) * (size_t)(w->nb + 1));
+    KeaVel4Clear(w->dvTmp, w->nb + 1);
     for (i = 0; i < n; ++i)
         if (c[i] != ME_R(0.0)) {
             KeaDeflationRow row;
@@ -156,7 +156,7 @@ void KeaDeflationStart(KeaIterativeWork *w, const MeReal *x, int n)
     memcpy(w->xPrev, x, sizeof(MeReal) * (size_t)n);
     memcpy(w->dvPrev, w->dv, sizeof(KeaVel4) * (size_t)(w->nb + 1));
     memset(w->nncgDir, 0, sizeof(MeReal) * (size_t)n);
-    memset(w->dvDir, 0, sizeof(KeaVel4) * (size_t)(w->nb + 1));
+    KeaVel4Clear(w->dvDir, w->nb + 1);
     w->nncgLast = ME_R(0.0);
 }
 

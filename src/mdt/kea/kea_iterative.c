@@ -378,15 +378,12 @@ static void KeaColourAndWarmStartChunks(int start, int end, int worker, void *da
  * then M^-1 once, KeaDot3's order lane by lane), four lanes at a time; the pads stay 0. */
 static void KeaWarmVelocityOf(const KeaIterativeWork *w, const MeReal *x, int n, int b0, int b1)
 {
-    const KeaLanes keep = KeaLanesSelectComponents(), zero = KeaLanesSplat(ME_R(0.0));
+    const KeaLanes keep = KeaLanesSelectComponents();
     const KeaJacobianRow *const J = w->J;
     const int(*const body)[2] = (const int(*)[2])w->body;
     KeaVel4 *const dv = w->dv;
     int i, b;
-    for (b = b0; b < b1; ++b) {
-        KeaLanesStoreA(dv[b].lin, zero);
-        KeaLanesStoreA(dv[b].ang, zero);
-    }
+    KeaVel4Clear(dv + b0, b1 - b0);
     for (i = 0; i < n; ++i) {
         const MeReal s = x[i];
         const int h0 = body[i][0], h1 = body[i][1];

@@ -90,6 +90,19 @@ typedef struct KeaVel4 {
     MeReal ang[4];
 } KeaVel4;
 
+/* v[0 .. count - 1] = 0 by two aligned four-lane stores a body: a loop rather than memset, whose
+ * glibc version clears a few kilobytes and more by rep stosb, one counted instruction a byte (the
+ * instruction counts that measure the solver, bench/README.md). */
+static inline void KeaVel4Clear(KeaVel4 *v, int count)
+{
+    const KeaLanes zero = KeaLanesSplat(ME_R(0.0));
+    int b;
+    for (b = 0; b < count; ++b) {
+        KeaLanesStoreA(v[b].lin, zero);
+        KeaLanesStoreA(v[b].ang, zero);
+    }
+}
+
 /** J . (v0, v1) on padded rows: lane k sums component k of the four parts, then the three lanes
  *  are added in a fixed order (kea_lanes.h: the same bits with or without SSE). No branch per body
  *  half. */
