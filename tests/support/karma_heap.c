@@ -11,6 +11,22 @@ static double uniform(unsigned long long *state) /* [-1, 1) */
     return (double)(*state >> 11) / 4503599627370496.0 - 1.0;
 }
 
+/* A rotation drawn uniformly: a point of the unit 4-ball (by rejection), normalised. Only arithmetic and
+ * sqrt, which IEEE rounds exactly: libm's sin and cos may differ in the last bit between machines (glibc
+ * picks its code by CPU), and a heap is chaotic enough for that bit to decide which box creeps. */
+static void randomRotation(unsigned long long *state, double q[4])
+{
+    double n2;
+    do {
+        for (int k = 0; k < 4; k++)
+            q[k] = uniform(state);
+        n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+    } while (n2 > 1.0 || n2 < 1e-6);
+    const double len = sqrt(n2);
+    for (int k = 0; k < 4; k++)
+        q[k] /= len;
+}
+
 MstUniverseID karma_heap_build(int n, unsigned long long seed, MdtBodyID *body)
 {
     MstUniverseSizes sizes = MstUniverseDefaultSizes;
@@ -35,16 +51,14 @@ MstUniverseID karma_heap_build(int n, unsigned long long seed, MdtBodyID *body)
         const int layer = i / 16, j = i % 16;
         const MeReal x = (MeReal)(((j % 4) - 1.5) * 1.6 + 0.1 * uniform(&rng));
         const MeReal y = (MeReal)(((j / 4) - 1.5) * 1.6 + 0.1 * uniform(&rng));
-        double axis[3] = {uniform(&rng), uniform(&rng), uniform(&rng)};
-        const double len = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]) + 1e-9;
-        const double half = 0.5 * 3.14159265358979 * uniform(&rng);
+        double q[4];
+        randomRotation(&rng, q);
         const MeReal edge[3] = {(MeReal)(1.0 + EDGE_JITTER * uniform(&rng)), (MeReal)(1.0 + EDGE_JITTER * uniform(&rng)),
                                 (MeReal)(1.0 + EDGE_JITTER * uniform(&rng))};
         McdModelID m = MstModelAndBodyCreate(u, McdBoxCreate(fw, edge[0], edge[1], edge[2]), 1);
         body[i] = McdModelGetBody(m);
         MdtBodySetPosition(body[i], x, y, (MeReal)(1.0 + 1.6 * layer));
-        MdtBodySetQuaternion(body[i], (MeReal)cos(half), (MeReal)(sin(half) * axis[0] / len),
-                             (MeReal)(sin(half) * axis[1] / len), (MeReal)(sin(half) * axis[2] / len));
+        MdtBodySetQuaternion(body[i], (MeReal)q[0], (MeReal)q[1], (MeReal)q[2], (MeReal)q[3]);
     }
     return u;
 }
