@@ -38,18 +38,18 @@
  * for every worker count. */
 #  define SPLIT_ROWS 100
 #  if KARMA_DOUBLE
-#    define GOLDEN_PILE 0xf3a5d793e84f970full
+#    define GOLDEN_PILE 0x0798d249b69acdfbull
 #    define GOLDEN_PYRAMID 0x2046a38bf9b93e1dull
 #  else
-#    define GOLDEN_PILE 0xe1bf21e3c6da9576ull
-#    define GOLDEN_PYRAMID 0xae33ca84ea7c9adaull
+#    define GOLDEN_PILE 0xbeb61c4119d5043bull
+#    define GOLDEN_PYRAMID 0x79cd9ae29f41e85full
 #  endif
 #elif KARMA_DOUBLE
-#  define GOLDEN_PILE 0x8b0c9d79dfafa76dull
-#  define GOLDEN_PYRAMID 0x7e2dfe8d58d4dc8full
+#  define GOLDEN_PILE 0xd022ff5daab02c53ull
+#  define GOLDEN_PYRAMID 0x4c318aca0ff93c1bull
 #else
-#  define GOLDEN_PILE 0x652ace4f63df2eafull
-#  define GOLDEN_PYRAMID 0xc788b08f91a68dd4ull
+#  define GOLDEN_PILE 0x39a5a090aad34c15ull
+#  define GOLDEN_PYRAMID 0xeb8b9f331fb41317ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};

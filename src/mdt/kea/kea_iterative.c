@@ -136,26 +136,31 @@ static MeReal KeaSweepOmega(const KeaParameters *params)
  * residuals before their steps). Only whether that is within `measureUpTo` (the tolerance, or the
  * extra effort's threshold in a round's last sweep) matters, so once a row is above it the block
  * steps stop measuring (a sizeable part of a contact step's work, and a pile rarely converges within
- * its sweeps); the steps themselves are the same either way. Size: the solve's state, passed as
+ * its sweeps); the steps themselves are the same either way. With `countAbove` every block is
+ * measured and w->sweepAbove counts those above measureUpTo. Size: the solve's state, passed as
  * KeaSolveIterative holds it (its one call site). */
 KEA_NOINLINE MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
-                             MeReal *x, KeaStats *stats, int backward, MeReal measureUpTo)
+                             MeReal *x, KeaStats *stats, int backward, MeReal measureUpTo, int countAbove)
 {
     const MeReal omega = KeaSweepOmega(params);
     MeReal worst = ME_R(0.0);
     KeaSweepState sweep;
-    int k;
+    int k, above = 0;
     sweep.decrease = ME_R(0.0);
     sweep.changed = 0;
     sweep.tally = w->smRan;
     sweep.maxPasses = params->maxFrictionPasses;
     sweep.stats = stats;
     for (k = 0; k < w->nBlocks; ++k) {
-        sweep.measure = worst <= measureUpTo;
-        worst = KeaMax(worst, KeaSweepBlock(problem, w, backward ? w->nBlocks - 1 - k : k, x, &sweep, omega));
+        MeReal r;
+        sweep.measure = countAbove || worst <= measureUpTo;
+        r = KeaSweepBlock(problem, w, backward ? w->nBlocks - 1 - k : k, x, &sweep, omega);
+        above += r > measureUpTo;
+        worst = KeaMax(worst, r);
     }
     w->sweepDecrease = sweep.decrease;
     w->sweepChanged = sweep.changed;
+    w->sweepAbove = above;
     return worst;
 }
 
@@ -165,7 +170,7 @@ typedef struct KeaSplitSweep {
     KeaSplit *split;
     MeReal *x;
     MeReal omega, measureUpTo;
-    int backward, tally, maxPasses;
+    int backward, tally, maxPasses, countAbove;
     int firstChunk, lastChunk; /* the colour's chunks */
 } KeaSplitSweep;
 
@@ -179,7 +184,7 @@ static void KeaSweepChunk(const KeaSplitSweep *t, int chunk, KeaIterativeWork *w
     MeReal worst = ME_R(0.0);
     KeaStats local;
     KeaSweepState sweep;
-    int k;
+    int k, above = 0;
     memset(&local, 0, sizeof local);
     sweep.decrease = ME_R(0.0);
     sweep.changed = 0;
@@ -188,12 +193,16 @@ static void KeaSweepChunk(const KeaSplitSweep *t, int chunk, KeaIterativeWork *w
     sweep.stats = &local;
     for (k = 0; k < count; ++k) {
         const int block = split->order[t->backward ? first + count - 1 - k : first + k];
-        sweep.measure = worst <= t->measureUpTo;
-        worst = KeaMax(worst, KeaSweepBlock(t->problem, w, block, t->x, &sweep, t->omega));
+        MeReal r;
+        sweep.measure = t->countAbove || worst <= t->measureUpTo;
+        r = KeaSweepBlock(t->problem, w, block, t->x, &sweep, t->omega);
+        above += r > t->measureUpTo;
+        worst = KeaMax(worst, r);
     }
     record->decrease = sweep.decrease;
     record->worst = worst;
     record->changed = sweep.changed;
+    record->above = above;
     record->pivots = local.pivots;
     record->regularised = local.regularised;
 }
@@ -211,17 +220,18 @@ static void KeaSweepChunks(int start, int end, int worker, void *data)
  * colour's chunks over the workers (the overflow colour's, whose blocks may share bodies, on this
  * thread in order), then the chunks' tallies added in sweep order. Size: as KeaSweep. */
 KEA_NOINLINE MeReal KeaSweepSplit(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
-                                  MeReal *x, KeaStats *stats, int backward, MeReal measureUpTo)
+                                  MeReal *x, KeaStats *stats, int backward, MeReal measureUpTo, int countAbove)
 {
     KeaSplit *split = w->split;
     KeaSplitSweep t;
     MeReal worst = ME_R(0.0), decrease = ME_R(0.0);
-    int changed = 0, k, c;
+    int changed = 0, above = 0, k, c;
     t.problem = problem;
     t.split = split;
     t.x = x;
     t.omega = KeaSweepOmega(params);
     t.measureUpTo = measureUpTo;
+    t.countAbove = countAbove;
     t.backward = backward;
     t.tally = w->smRan;
     t.maxPasses = params->maxFrictionPasses;
@@ -240,11 +250,13 @@ KEA_NOINLINE MeReal KeaSweepSplit(const KeaProblem *problem, KeaIterativeWork *w
         decrease += record->decrease;
         worst = KeaMax(worst, record->worst);
         changed += record->changed;
+        above += record->above;
         stats->pivots += record->pivots;
         stats->regularised += record->regularised;
     }
     w->sweepDecrease = decrease;
     w->sweepChanged = changed;
+    w->sweepAbove = above;
     return worst;
 }
 
@@ -528,8 +540,9 @@ static void KeaIterate(void *data)
     state->status = KeaStatusMaxIterations;
 
     /* maxIterations sweeps, then the extra effort (params->effortResidual, kea_tuning.h) if the
-     * partition rests (KeaEffortAllowed): while the last sweep leaves a residual above it, two more
-     * (so that the last still runs backwards), up to KEA_EFFORT_FACTOR maxIterations more in all.
+     * partition rests (KeaEffortAllowed): while the last sweep leaves more than KEA_EFFORT_FRACTION of
+     * the blocks above it, two more (so that the last still runs backwards), up to KEA_EFFORT_FACTOR
+     * maxIterations more in all.
      * SM at the first chance and every subspaceEvery-th; with nonsmoothCg, NNCG's momentum after every second sweep;
      * with deflation, its coarse correction there instead and SM at every second chance. */
     limit = params->maxIterations;
@@ -542,13 +555,14 @@ static void KeaIterate(void *data)
                               limit < params->maxIterations * (1 + KEA_EFFORT_FACTOR);
         const MeReal measureUpTo = mayExtend ? KeaMax(params->tolerance, params->effortResidual) : params->tolerance;
         const MeReal sweepResidual = (w->split ? KeaSweepSplit : KeaSweep)(problem, w, params, x, stats, (it & 1) == 0,
-                                                                           measureUpTo);
+                                                                           measureUpTo, mayExtend);
         stats->iterations = it;
         if (sweepResidual <= params->tolerance) {
             state->status = KeaStatusOk;
             break;
         }
-        if (mayExtend && sweepResidual > params->effortResidual) {
+        if (mayExtend && sweepResidual > params->effortResidual &&
+            (MeReal)w->sweepAbove > KEA_EFFORT_FRACTION * (MeReal)w->nBlocks) {
             limit += 2;
             ++stats->effortRounds;
         }

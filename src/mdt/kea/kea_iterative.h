@@ -252,6 +252,8 @@ typedef struct KeaIterativeWork {
     int nContactBlocks;           /**< blocks that are declared contacts (blockContact) */
     int sweepChanged;             /**< declared contacts' rows that went between free and a bound in
                                        the last sweep (tallied by its steps) */
+    int sweepAbove;               /**< blocks of the last sweep whose residual was above its measureUpTo,
+                                       when it counted them (a round's last sweep under the extra effort) */
     MeReal *localW;        /**< a block's w */
     int *rowBlock;         /**< block of each row */
     KeaFreePiece *pieces;  /**< SM: the free list after its pack region as rows on their own and
@@ -342,6 +344,7 @@ typedef struct KeaSplitChunk {
     MeReal decrease;  /**< KeaSweepState.decrease over the chunk's blocks */
     MeReal worst;     /**< the largest residual measured */
     int changed;      /**< KeaSweepState.changed */
+    int above;        /**< blocks above measureUpTo, when counted (KeaIterativeWork.sweepAbove) */
     int pivots;       /**< the dense solver's pivots (KeaStats.pivots) */
     int regularised;  /**< and its raised pivots (KeaStats.regularised) */
 } KeaSplitChunk;
