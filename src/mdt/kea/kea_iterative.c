@@ -136,11 +136,11 @@ static MeReal KeaSweepOmega(const KeaParameters *params)
  * residuals before their steps). Only whether that is within `measureUpTo` (the tolerance, or the
  * extra effort's threshold in a round's last sweep) matters, so once a row is above it the block
  * steps stop measuring (a sizeable part of a contact step's work, and a pile rarely converges within
- * its sweeps); the steps themselves are the same either way. With `countAbove` every block is
- * measured and w->sweepAbove counts those above measureUpTo. Size: the solve's state, passed as
+ * its sweeps); the steps themselves are the same either way. w->sweepAbove counts the blocks above
+ * measureUpTo; blocks are measured on while at most `countUpTo` are (-1: only until the first). Size: the solve's state, passed as
  * KeaSolveIterative holds it (its one call site). */
 KEA_NOINLINE MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
-                             MeReal *x, KeaStats *stats, int backward, MeReal measureUpTo, int countAbove)
+                             MeReal *x, KeaStats *stats, int backward, MeReal measureUpTo, int countUpTo)
 {
     const MeReal omega = KeaSweepOmega(params);
     MeReal worst = ME_R(0.0);
@@ -153,7 +153,7 @@ KEA_NOINLINE MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, con
     sweep.stats = stats;
     for (k = 0; k < w->nBlocks; ++k) {
         MeReal r;
-        sweep.measure = countAbove || worst <= measureUpTo;
+        sweep.measure = worst <= measureUpTo || above <= countUpTo;
         r = KeaSweepBlock(problem, w, backward ? w->nBlocks - 1 - k : k, x, &sweep, omega);
         above += r > measureUpTo;
         worst = KeaMax(worst, r);
@@ -170,7 +170,7 @@ typedef struct KeaSplitSweep {
     KeaSplit *split;
     MeReal *x;
     MeReal omega, measureUpTo;
-    int backward, tally, maxPasses, countAbove;
+    int backward, tally, maxPasses, countUpTo;
     int firstChunk, lastChunk; /* the colour's chunks */
 } KeaSplitSweep;
 
@@ -194,7 +194,7 @@ static void KeaSweepChunk(const KeaSplitSweep *t, int chunk, KeaIterativeWork *w
     for (k = 0; k < count; ++k) {
         const int block = split->order[t->backward ? first + count - 1 - k : first + k];
         MeReal r;
-        sweep.measure = t->countAbove || worst <= t->measureUpTo;
+        sweep.measure = worst <= t->measureUpTo || above <= t->countUpTo;
         r = KeaSweepBlock(t->problem, w, block, t->x, &sweep, t->omega);
         above += r > t->measureUpTo;
         worst = KeaMax(worst, r);
@@ -220,7 +220,7 @@ static void KeaSweepChunks(int start, int end, int worker, void *data)
  * colour's chunks over the workers (the overflow colour's, whose blocks may share bodies, on this
  * thread in order), then the chunks' tallies added in sweep order. Size: as KeaSweep. */
 KEA_NOINLINE MeReal KeaSweepSplit(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
-                                  MeReal *x, KeaStats *stats, int backward, MeReal measureUpTo, int countAbove)
+                                  MeReal *x, KeaStats *stats, int backward, MeReal measureUpTo, int countUpTo)
 {
     KeaSplit *split = w->split;
     KeaSplitSweep t;
@@ -231,7 +231,7 @@ KEA_NOINLINE MeReal KeaSweepSplit(const KeaProblem *problem, KeaIterativeWork *w
     t.x = x;
     t.omega = KeaSweepOmega(params);
     t.measureUpTo = measureUpTo;
-    t.countAbove = countAbove;
+    t.countUpTo = countUpTo;
     t.backward = backward;
     t.tally = w->smRan;
     t.maxPasses = params->maxFrictionPasses;
@@ -554,15 +554,15 @@ static void KeaIterate(void *data)
         const int mayExtend = it == limit && effort &&
                               limit < params->maxIterations * (1 + KEA_EFFORT_FACTOR);
         const MeReal measureUpTo = mayExtend ? KeaMax(params->tolerance, params->effortResidual) : params->tolerance;
+        const int fewAbove = mayExtend ? (int)(KEA_EFFORT_FRACTION * (MeReal)w->nBlocks) : -1;
         const MeReal sweepResidual = (w->split ? KeaSweepSplit : KeaSweep)(problem, w, params, x, stats, (it & 1) == 0,
-                                                                           measureUpTo, mayExtend);
+                                                                           measureUpTo, fewAbove);
         stats->iterations = it;
         if (sweepResidual <= params->tolerance) {
             state->status = KeaStatusOk;
             break;
         }
-        if (mayExtend && sweepResidual > params->effortResidual &&
-            (MeReal)w->sweepAbove > KEA_EFFORT_FRACTION * (MeReal)w->nBlocks) {
+        if (mayExtend && sweepResidual > params->effortResidual && w->sweepAbove > fewAbove) {
             limit += 2;
             ++stats->effortRounds;
         }
