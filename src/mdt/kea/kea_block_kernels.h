@@ -92,11 +92,23 @@ static inline void KeaBlockGatherSmall(const KeaIterativeWork *w, int s, int m, 
         out[3] = KeaRowVel4(&w->J[s + 3], v0, v1);
 }
 
+/* KeaBlockGatherSmall of three rows (a ball joint) with the bodies' lanes loaded once and the three
+ * horizontal sums done at once (KeaContactGather: KeaRowVel4's sums, the world's half included). */
+static inline void KeaBlockGather3(const KeaIterativeWork *w, int s, const KeaVel4 *v0, const KeaVel4 *v1, MeReal *out)
+{
+    _Alignas(16) MeReal rows[4];
+    KeaLanesStoreA(rows, KeaContactGather(&w->J[s], v0, v1));
+    out[0] = rows[0];
+    out[1] = rows[1];
+    out[2] = rows[2];
+}
+
 static inline void KeaBlockGather(const KeaIterativeWork *w, int s, int m, const KeaVel4 *v0, const KeaVel4 *v1,
                                   MeReal *out)
 {
     const MeReal *JT = w->JT + 12 * s;
     switch (m) {
+    case 3: KeaBlockGather3(w, s, v0, v1, out); break;
     case 5: KeaJointApplyPair(5, JT, v0, v1, out); break;
     case 6: KeaJointApplyPair(6, JT, v0, v1, out); break;
     default:

@@ -135,7 +135,8 @@ static int KeaGenericBlockRows(const KeaProblem *problem, int i, int cap, int st
 /* The block of m rows from i on the body pair b: its transpose J_b^T when KeaBlockGather reads it
  * (more than KEA_GATHER_ROW_BY_ROW rows), and its matrix A_bb = J_b M^-1 J_b^T + diag(eps) at A
  * from the rows' B = M^-1 J^T (a 1-row block needs none: its d_i serves). */
-static void KeaFormBlockMatrix(const KeaProblem *problem, KeaIterativeWork *w, int i, int m, const int *b, MeReal *A)
+KEA_ALWAYS_INLINE void KeaFormBlockMatrix(const KeaProblem *problem, KeaIterativeWork *w, int i, int m, const int *b,
+                                          MeReal *A)
 {
     int r, c, h, g;
     for (r = 0; r < m && m > KEA_GATHER_ROW_BY_ROW; ++r) { /* only KeaBlockGather's large blocks read JT */
@@ -235,29 +236,38 @@ static void KeaFindBlocks(const KeaProblem *problem, KeaIterativeWork *w, int ca
     w->nJointPacks = -1; /* and these (kea_joint_packs.h) */
 }
 
-/* Blocks [b0, b1): each one's matrix A_bb = J_b M^-1 J_b^T + diag(eps) from the rows' B = M^-1 J^T,
- * its factor and its inverse. Each block writes
- * only its own entries, so blocks may be set up in any order, on any worker. */
-static void KeaFactorBlocks(const KeaProblem *problem, KeaIterativeWork *w, int b0, int b1)
+/* Block b of m rows: its matrix A_bb = J_b M^-1 J_b^T + diag(eps) from the rows' B = M^-1 J^T, its
+ * factor and its inverse. Always inlined with m a constant for the usual sizes (KeaFactorBlocks), so
+ * that its loops unroll: the same arithmetic as with m a variable. */
+KEA_ALWAYS_INLINE void KeaFactorBlock(const int m, const KeaProblem *problem, KeaIterativeWork *w, int b)
 {
     MeReal L[KEA_MAX_BLOCK_ROWS * KEA_MAX_BLOCK_ROWS]; /* the block's Cholesky factor */
+    const int i = w->blockStart[b], offset = w->blockMatrix[b];
+    const int *bodies = problem->rowBodies[i];
+    w->blockFactored[b] = 0;
+    if (m == 3 && bodies[0] != bodies[1])
+        KeaFormBlockMatrix3(problem, w, i, w->blockA + offset);
+    else
+        KeaFormBlockMatrix(problem, w, i, m, bodies, w->blockA + offset);
+    if (m > 1) {
+        w->blockFactored[b] = (unsigned char)KeaCholeskyDenseInline(m, w->blockA + offset, L);
+        if (w->blockFactored[b])
+            KeaBlockInvert(m, L, w->blockInv + offset);
+    }
+}
+
+/* Blocks [b0, b1), each by KeaFactorBlock. Each block writes only its own entries, so blocks may be
+ * set up in any order, on any worker. */
+static void KeaFactorBlocks(const KeaProblem *problem, KeaIterativeWork *w, int b0, int b1)
+{
     int b;
     for (b = b0; b < b1; ++b) {
-        const int i = w->blockStart[b], m = w->blockStart[b + 1] - i, offset = w->blockMatrix[b];
-        const int *bodies = problem->rowBodies[i];
-        w->blockFactored[b] = 0;
-        if (m == 3 && bodies[0] != bodies[1])
-            KeaFormBlockMatrix3(problem, w, i, w->blockA + offset);
-        else
-            KeaFormBlockMatrix(problem, w, i, m, bodies, w->blockA + offset);
-        if (m == 3) { /* a contact or a ball joint: the same arithmetic, unrolled */
-            w->blockFactored[b] = (unsigned char)KeaCholeskyDenseInline(3, w->blockA + offset, L);
-            if (w->blockFactored[b])
-                KeaBlockInvert(3, L, w->blockInv + offset);
-        } else if (m > 1) {
-            w->blockFactored[b] = (unsigned char)KeaCholeskyDense(m, w->blockA + offset, L);
-            if (w->blockFactored[b])
-                KeaBlockInvert(m, L, w->blockInv + offset);
+        const int m = w->blockStart[b + 1] - w->blockStart[b];
+        switch (m) { /* a contact or a ball joint, a hinge, a fixed joint (or a hinge with a limit) */
+        case 3: KeaFactorBlock(3, problem, w, b); break;
+        case 5: KeaFactorBlock(5, problem, w, b); break;
+        case 6: KeaFactorBlock(6, problem, w, b); break;
+        default: KeaFactorBlock(m, problem, w, b); break;
         }
     }
 }

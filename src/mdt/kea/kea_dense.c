@@ -345,5 +345,3 @@ void KeaDenseSolveFactored(int m, const MeReal *G, const int *perm, MeReal *b)
         b[i] = s / G[i * m + i];
     }
 }
-
-int KeaCholeskyDense(int m, const MeReal *A, MeReal *L) { return KeaCholeskyDenseInline(m, A, L); }

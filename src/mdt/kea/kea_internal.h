@@ -268,9 +268,7 @@ void KeaCholeskyRemove(KeaCholesky *c, int p);
 /** Plain Cholesky A = L L^T of a small dense m x m matrix (row-major): the lower triangle and the
  *  diagonal of L are written, the upper triangle is left as it was (its readers, the blocks'
  *  inverses, do not read it). Returns 0, leaving L unusable, if a pivot falls below the floor (A
- *  not safely positive definite). */
-int KeaCholeskyDense(int m, const MeReal *A, MeReal *L);
-/** KeaCholeskyDense inline, for a caller that knows m (a contact's 3 x 3, unrolled). */
+ *  not safely positive definite). Inline, for callers that know m (the blocks' usual sizes, unrolled). */
 static inline int KeaCholeskyDenseInline(int m, const MeReal *A, MeReal *L)
 {
     int i, j, k;

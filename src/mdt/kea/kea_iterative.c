@@ -78,11 +78,12 @@ KEA_ALWAYS_INLINE MeReal KeaBlockStepSized(const int m, const KeaProblem *proble
     return worst;
 }
 
-/* KeaBlockStepSized, with m a constant for a hinge's and a fixed joint's blocks. */
+/* KeaBlockStepSized, with m a constant for a ball joint's, a hinge's and a fixed joint's blocks. */
 static MeReal KeaBlockStep(const KeaProblem *problem, KeaIterativeWork *w, int block, MeReal *x, KeaSweepState *sweep)
 {
     const int m = w->blockStart[block + 1] - w->blockStart[block];
     switch (m) {
+    case 3: return KeaBlockStepSized(3, problem, w, block, x, sweep);
     case 5: return KeaBlockStepSized(5, problem, w, block, x, sweep);
     case 6: return KeaBlockStepSized(6, problem, w, block, x, sweep);
     default: return KeaBlockStepSized(m, problem, w, block, x, sweep);
