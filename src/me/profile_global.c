@@ -2,9 +2,10 @@
  *
  * One process-wide table of sections, single-threaded like 1.2's: the library itself never feeds
  * it (worlds time themselves in their own MeProfile), so only the program's own calls touch it.
- * Times are kept in nanosecond ticks of MeProfileDefaultTimer. */
+ * Times are kept in nanosecond ticks of the C library's UTC clock (MeProfileDefaultTimer's). */
 #include <stdio.h>
 #include <string.h>
+#include <time.h>
 
 #include <karma/MeMessage.h>
 #include <karma/MeProfile.h>
@@ -33,7 +34,15 @@ static struct {
     unsigned long frames;
 } profiler = {METRUE, MEFALSE, kMeProfileDontLog, {kMeProfileOutputAverage, 0.2f, 0}, {{0}}, 0, 0};
 
-static MeU64 nowTicks(void) { return (MeU64)(MeProfileDefaultTimer() * (double)TICKS_PER_SECOND); }
+/* Integer nanoseconds, not MeProfileDefaultTimer's double seconds: at today's epoch seconds a double
+ * steps by about 240 ns, and a short section would read 0. */
+static MeU64 nowTicks(void)
+{
+    struct timespec ts;
+    if (timespec_get(&ts, TIME_UTC) == 0)
+        return 0;
+    return (MeU64)ts.tv_sec * TICKS_PER_SECOND + (MeU64)ts.tv_nsec;
+}
 
 static double ticksToMs(MeU64 ticks) { return (double)ticks * 1000.0 / (double)TICKS_PER_SECOND; }
 
