@@ -45,6 +45,8 @@
  *
  * The free rows' factor may instead be kept in the bodies' coordinates (KeaDenseWorkUseBodyFactor,
  * kea_body_factor.c: a resting stack); then only A's diagonal is read. */
+#include <string.h>
+
 #include "kea_internal.h"
 
 enum { KEA_FREE = 0, KEA_AT_LO = 1, KEA_AT_HI = 2 };
@@ -85,6 +87,7 @@ struct KeaDenseWork {
     MeReal residual;     /**< then: KeaResidualWithDiagonal of the returned x (same sums) */
     MeReal rScale;       /**< max |r_i| of the LCP being solved (the tolerances' scale) */
     MeReal diagMax;      /**< max A_ii of the LCP being solved */
+    MeReal xScale;       /**< max |x_i| at the last pricing (x unchanged since when it found the optimum) */
     KeaBodyFactor *body; /**< the free rows solved through the bodies (kea_body_factor.c), or NULL */
 };
 
@@ -287,6 +290,7 @@ static int KeaEnteringRow(const KeaDenseLcp *lcp, KeaDenseWork *w, const MeReal 
     int j, nz, best = -1;
     for (j = 0; j < n; ++j)
         xScale = KeaMax(xScale, KeaFabs(x[j]));
+    w->xScale = xScale;
     nz = KeaDensePrepare(lcp, w, x, w->nonzero);
     tolW = KEA_DIRECT_TOL * (w->rScale + w->diagMax * xScale);
     for (j = 0; j < n; ++j) {
@@ -316,8 +320,7 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
     KeaCholesky *c = &w->chol;
     int i, j, p, lastFreed = -1, nLocked = 0;
 
-    for (i = 0; i < n; ++i)
-        w->locked[i] = 0;
+    memset(w->locked, 0, (size_t)n);
     w->velocityOfX = 0; /* x moves from here (and moved in KeaDenseApplyBounds before) */
 
     for (;;) {
@@ -354,8 +357,7 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
             ++stats->pivots;
             if (alpha > ME_R(0.0)) {
                 if (nLocked) {
-                    for (j = 0; j < n; ++j)
-                        w->locked[j] = 0;
+                    memset(w->locked, 0, (size_t)n);
                     nLocked = 0;
                 }
             } else if (i == lastFreed) {
@@ -708,13 +710,12 @@ KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses,
     KeaDenseFactorFree(lcp, w, stats);
 
     for (;;) {
-        MeReal moved, scale = ME_R(0.0);
+        MeReal moved, scale;
         status = KeaActiveSet(lcp, w, x, pivotCap, stats);
         if (status != KeaStatusOk || !lcp->link)
             break;
         moved = KeaDenseBoundMotion(lcp, w, x);
-        for (i = 0; i < n; ++i)
-            scale = KeaMax(scale, KeaFabs(x[i]));
+        scale = w->xScale; /* max |x_i|: x is the one the pricing that ended the active set scanned */
         if (moved <= ME_R(0.0))
             break; /* x is consistent with its own friction bounds */
         /* Try the exact coupled solve with the current states; else settle for small motion. */
