@@ -325,13 +325,8 @@ static void KeaBodyFactorSolveH(KeaBodyFactor *f)
     for (r = D - 1; r >= 0; --r) { /* L^T z = y, by columns so that L is read by rows */
         const MeReal *l = f->L + (size_t)r * (size_t)f->ld;
         const MeReal z = g[r] * f->inv[r];
-        const KeaLanes zl = KeaLanesSplat(z);
         g[r] = z;
-        k = f->first[r];
-        for (; k + 4 <= r; k += 4)
-            KeaLanesStore(g + k, KeaLanesSub(KeaLanesLoad(g + k), KeaLanesMul(KeaLanesLoad(l + k), zl)));
-        for (; k < r; ++k)
-            g[k] -= l[k] * z;
+        KeaSubtractScaled(g + f->first[r], l + f->first[r], z, r - f->first[r]);
     }
     for (r = 0; r < nb; ++r) {
         for (k = 0; k < 3; ++k) {

@@ -165,22 +165,6 @@ void KeaFormDenseMatrix(const KeaProblem *problem, const KeaJacobianRow *B, MeRe
             A[(size_t)i * (size_t)n + (size_t)i] += problem->epsilon[i];
 }
 
-/* y -= a x over n entries; y and x never overlap (four lanes at a time: each entry is one multiply
- * and one subtract either way, so the bits do not depend on it). */
-static void KeaSubtractScaled(MeReal *restrict y, const MeReal *restrict x, MeReal a, int n)
-{
-    const KeaLanes scale = KeaLanesSplat(a);
-    int m = 0;
-    for (; m + 4 <= n; m += 4)
-        KeaLanesStore(y + m, KeaLanesSub(KeaLanesLoad(y + m), KeaLanesMul(KeaLanesLoad(x + m), scale)));
-    switch (n - m) { /* the last one to three entries written out: most calls are that short */
-    case 3: y[m + 2] -= x[m + 2] * a; /* fall through */
-    case 2: y[m + 1] -= x[m + 1] * a; /* fall through */
-    case 1: y[m] -= x[m] * a; /* fall through */
-    default: break;
-    }
-}
-
 static MeReal *KeaRow(const KeaCholesky *c, int k) { return c->L + (size_t)k * (size_t)c->ld; }
 
 void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int lda, int i)
@@ -195,8 +179,14 @@ void KeaCholeskyAppend(KeaCholesky *c, const MeReal *A, int lda, int i)
      * L is zero (fill stays inside the envelope) and is never read. A_F,i goes
      * into row k from f on (with a pattern, only A's structural non-zeros are read: the rest of A
      * may be stale), then forward substitution L l = A_F,i in place, over the two envelopes. */
-    if (c->patternStart) { /* one pass: clear the whole row (cheaper than a second pass over the
-                            * pattern), then place A's entries and find the first */
+    if (c->patternStart && c->patternStart[i + 1] - c->patternStart[i] == lda) {
+        /* row i couples to every row (a partition of one body): every free row is in its pattern,
+         * so the loop below would place them all and find the first at 0 */
+        for (j = 0; j < k; ++j)
+            lk[j] = Ai[c->F[j]];
+        f = 0;
+    } else if (c->patternStart) { /* one pass: clear the whole row (cheaper than a second pass over
+                                   * the pattern), then place A's entries and find the first */
         for (j = 0; j < k; ++j)
             lk[j] = ME_R(0.0);
         for (j = c->patternStart[i]; j < c->patternStart[i + 1]; ++j) {

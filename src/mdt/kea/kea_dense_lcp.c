@@ -45,6 +45,8 @@
  *
  * The free rows' factor may instead be kept in the bodies' coordinates (KeaDenseWorkUseBodyFactor,
  * kea_body_factor.c: a resting stack); then only A's diagonal is read. */
+#include <string.h>
+
 #include "kea_internal.h"
 
 enum { KEA_FREE = 0, KEA_AT_LO = 1, KEA_AT_HI = 2 };
@@ -85,6 +87,7 @@ struct KeaDenseWork {
     MeReal residual;     /**< then: KeaResidualWithDiagonal of the returned x (same sums) */
     MeReal rScale;       /**< max |r_i| of the LCP being solved (the tolerances' scale) */
     MeReal diagMax;      /**< max A_ii of the LCP being solved */
+    MeReal xScale;       /**< max |x_i| at the last pricing (x unchanged since when it found the optimum) */
     KeaBodyFactor *body; /**< the free rows solved through the bodies (kea_body_factor.c), or NULL */
 };
 
@@ -211,15 +214,29 @@ KEA_DENSE_INLINE MeReal KeaDenseRowDot(const KeaDenseLcp *lcp, int i, const MeRe
     return s;
 }
 
+/* y[p] = (r - A v)_F[p] with the products ready for v (KeaDensePrepare returned nz). */
+static void KeaFreeRowsProducts(const KeaDenseLcp *lcp, KeaDenseWork *w, const MeReal *v, int nz)
+{
+    const KeaCholesky *c = &w->chol;
+    const KeaProblem *rows = lcp->rows;
+    int p;
+    if (rows && rows->epsilon) { /* the direct path: KeaDenseRowDot's two tests once, not once a row */
+        for (p = 0; p < c->size; ++p) {
+            const int i = c->F[p];
+            const MeReal Av = KeaRowVelocity(&rows->J[i], rows->rowBodies[i], lcp->velocity) + rows->epsilon[i] * v[i];
+            w->y[p] = lcp->r[i] - Av;
+        }
+        return;
+    }
+    for (p = 0; p < c->size; ++p)
+        w->y[p] = lcp->r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], v, w->nonzero, nz);
+}
+
 /* y[p] = (r - A v)_F[p]: the free rows' right-hand side at v (the Newton point's, the refinement's
  * and the polish's residual). */
 static void KeaFreeRowsResidual(const KeaDenseLcp *lcp, KeaDenseWork *w, const MeReal *v)
 {
-    const KeaCholesky *c = &w->chol;
-    const int nz = KeaDensePrepare(lcp, w, v, w->nonzero);
-    int p;
-    for (p = 0; p < c->size; ++p)
-        w->y[p] = lcp->r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], v, w->nonzero, nz);
+    KeaFreeRowsProducts(lcp, w, v, KeaDensePrepare(lcp, w, v, w->nonzero));
 }
 
 /* Free every row that is free by state, in the LCP's order (a fresh factorisation). */
@@ -287,6 +304,7 @@ static int KeaEnteringRow(const KeaDenseLcp *lcp, KeaDenseWork *w, const MeReal 
     int j, nz, best = -1;
     for (j = 0; j < n; ++j)
         xScale = KeaMax(xScale, KeaFabs(x[j]));
+    w->xScale = xScale;
     nz = KeaDensePrepare(lcp, w, x, w->nonzero);
     tolW = KEA_DIRECT_TOL * (w->rScale + w->diagMax * xScale);
     for (j = 0; j < n; ++j) {
@@ -316,8 +334,7 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
     KeaCholesky *c = &w->chol;
     int i, j, p, lastFreed = -1, nLocked = 0;
 
-    for (i = 0; i < n; ++i)
-        w->locked[i] = 0;
+    memset(w->locked, 0, (size_t)n);
     w->velocityOfX = 0; /* x moves from here (and moved in KeaDenseApplyBounds before) */
 
     for (;;) {
@@ -354,8 +371,7 @@ static KeaStatus KeaActiveSet(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x
             ++stats->pivots;
             if (alpha > ME_R(0.0)) {
                 if (nLocked) {
-                    for (j = 0; j < n; ++j)
-                        w->locked[j] = 0;
+                    memset(w->locked, 0, (size_t)n);
                     nLocked = 0;
                 }
             } else if (i == lastFreed) {
@@ -648,8 +664,7 @@ static void KeaDenseRefine(const KeaDenseLcp *lcp, KeaDenseWork *w, MeReal *x)
     if (c->size == 0)
         return;
     if (w->velocityOfX) {
-        for (p = 0; p < c->size; ++p)
-            w->y[p] = lcp->r[c->F[p]] - KeaDenseRowDot(lcp, c->F[p], x, w->nonzero, 0);
+        KeaFreeRowsProducts(lcp, w, x, 0);
     } else {
         KeaFreeRowsResidual(lcp, w, x);
     }
@@ -708,13 +723,12 @@ KeaStatus KeaDenseLcpSolve(const KeaDenseLcp *lcp, int maxPivots, int maxPasses,
     KeaDenseFactorFree(lcp, w, stats);
 
     for (;;) {
-        MeReal moved, scale = ME_R(0.0);
+        MeReal moved, scale;
         status = KeaActiveSet(lcp, w, x, pivotCap, stats);
         if (status != KeaStatusOk || !lcp->link)
             break;
         moved = KeaDenseBoundMotion(lcp, w, x);
-        for (i = 0; i < n; ++i)
-            scale = KeaMax(scale, KeaFabs(x[i]));
+        scale = w->xScale; /* max |x_i|: x is the one the pricing that ended the active set scanned */
         if (moved <= ME_R(0.0))
             break; /* x is consistent with its own friction bounds */
         /* Try the exact coupled solve with the current states; else settle for small motion. */

@@ -92,6 +92,22 @@ static inline MeReal KeaDotN4(const MeReal *a, const MeReal *b, int n)
     return (s[0] + s[1]) + (s[2] + s[3]);
 }
 
+/** y -= a x over n entries; y and x never overlap (four lanes at a time: each entry is one multiply
+ * and one subtract either way, so the bits do not depend on it). */
+static inline void KeaSubtractScaled(MeReal *restrict y, const MeReal *restrict x, MeReal a, int n)
+{
+    const KeaLanes scale = KeaLanesSplat(a);
+    int m = 0;
+    for (; m + 4 <= n; m += 4)
+        KeaLanesStore(y + m, KeaLanesSub(KeaLanesLoad(y + m), KeaLanesMul(KeaLanesLoad(x + m), scale)));
+    switch (n - m) { /* the last one to three entries written out: most calls are that short */
+    case 3: y[m + 2] -= x[m + 2] * a; /* fall through */
+    case 2: y[m + 1] -= x[m + 1] * a; /* fall through */
+    case 1: y[m] -= x[m] * a; /* fall through */
+    default: break;
+    }
+}
+
 /** J_i . (dv of body b0, dv of body b1): the constraint velocity of row i under dv. */
 static inline MeReal KeaRowVelocity(const KeaJacobianRow *J, const int b[2], const KeaBodyVelocity *dv)
 {
