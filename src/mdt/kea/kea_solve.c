@@ -110,32 +110,37 @@ static int KeaContactsAreValid(const KeaProblem *p)
 }
 
 /* Rows [i0, i1) of KeaProblemIsValid: indices in range, bounds ordered, softness non-negative,
- * numbers where numbers are needed (finite in Karma's sense: within +-MEINFINITY). A row's tests are
- * combined with & into one flag (a comparison with a NaN is false), one branch per row: every step's
- * every row goes through here. */
+ * numbers where numbers are needed (finite in Karma's sense: within +-MEINFINITY). Every step's every
+ * row goes through here, and bad input is rare: the tests are combined with & into one flag over all
+ * the rows (a comparison with a NaN is false), array by array, so the loops have no branch to take;
+ * only the friction links, whose test reads another row, return at the first bad one. */
 static int KeaRowsAreValid(const KeaProblem *p, int i0, int i1)
 {
-    int i;
+    int ok = 1, i;
     for (i = i0; i < i1; ++i) {
         const KeaJacobianRow *J = &p->J[i];
-        int ok = (p->rowBodies[i][0] >= KEA_WORLD) & (p->rowBodies[i][0] < p->nBodies) &
-                 (p->rowBodies[i][1] >= KEA_WORLD) & (p->rowBodies[i][1] < p->nBodies) & (p->lo[i] <= p->hi[i]) &
-                 KeaIsFiniteFlag(p->rhs[i]);
-        ok &= KeaLanesFinite3x4(J->lin0, J->ang0, J->lin1, J->ang1); /* the pads are not read as numbers */
-        if (p->epsilon)
-            ok &= (p->epsilon[i] >= ME_R(0.0)) & KeaIsFiniteFlag(p->epsilon[i]);
-        if (p->x0)
-            ok &= KeaIsFiniteFlag(p->x0[i]);
-        if (!ok)
-            return 0;
-        if (p->link && p->link[i] >= 0) {
-            const int l = p->link[i];
-            if (l >= p->nRows || l == i || (p->link[l] >= 0) || !((p->mu[i] >= ME_R(0.0)) & KeaIsFiniteFlag(p->mu[i])))
-                return 0;
-        } else if (p->link && p->link[i] < -1) {
-            return 0;
-        }
+        ok &= (p->rowBodies[i][0] >= KEA_WORLD) & (p->rowBodies[i][0] < p->nBodies) &
+              (p->rowBodies[i][1] >= KEA_WORLD) & (p->rowBodies[i][1] < p->nBodies) & (p->lo[i] <= p->hi[i]) &
+              KeaIsFiniteFlag(p->rhs[i]) &
+              KeaLanesFinite3x4(J->lin0, J->ang0, J->lin1, J->ang1); /* the pads are not read as numbers */
     }
+    if (p->epsilon)
+        for (i = i0; i < i1; ++i)
+            ok &= (p->epsilon[i] >= ME_R(0.0)) & KeaIsFiniteFlag(p->epsilon[i]);
+    if (p->x0)
+        for (i = i0; i < i1; ++i)
+            ok &= KeaIsFiniteFlag(p->x0[i]);
+    if (!ok)
+        return 0;
+    if (p->link)
+        for (i = i0; i < i1; ++i) {
+            const int l = p->link[i];
+            if (l < -1)
+                return 0;
+            if (l >= 0 && (l >= p->nRows || l == i || p->link[l] >= 0 ||
+                           !((p->mu[i] >= ME_R(0.0)) & KeaIsFiniteFlag(p->mu[i]))))
+                return 0;
+        }
     return 1;
 }
 
