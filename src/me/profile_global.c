@@ -34,8 +34,8 @@ static struct {
     unsigned long frames;
 } profiler = {METRUE, MEFALSE, kMeProfileDontLog, {kMeProfileOutputAverage, 0.2f, 0}, {{0}}, 0, 0};
 
-/* Integer nanoseconds, not MeProfileDefaultTimer's double seconds: at today's epoch seconds a double
- * steps by about 240 ns, and a short section would read 0. */
+/* Integer nanoseconds, not MeProfileDefaultTimer's double seconds: a double holding seconds since
+ * 1970 cannot tell apart instants a fraction of a microsecond apart, and a short section read 0. */
 static MeU64 nowTicks(void)
 {
     struct timespec ts;

@@ -138,8 +138,8 @@ static MeReal KeaSweepOmega(const KeaParameters *params)
  * extra effort's threshold in a round's last sweep) matters, so once a row is above it the block
  * steps stop measuring (a sizeable part of a contact step's work, and a pile rarely converges within
  * its sweeps); the steps themselves are the same either way. w->sweepAbove counts the blocks above
- * measureUpTo; blocks are measured on while at most `countUpTo` are (-1: only until the first). Size: the solve's state, passed as
- * KeaSolveIterative holds it (its one call site). */
+ * measureUpTo; blocks are measured on while at most `countUpTo` are (-1: only until the first).
+ * Size: the solve's state, passed as KeaSolveIterative holds it (its one call site). */
 KEA_NOINLINE MeReal KeaSweep(const KeaProblem *problem, KeaIterativeWork *w, const KeaParameters *params,
                              MeReal *x, KeaStats *stats, int backward, MeReal measureUpTo, int countUpTo)
 {

@@ -95,9 +95,9 @@
 #define KEA_EFFORT_RESIDUAL ME_R(5e-3)
 #define KEA_EFFORT_FACTOR 2
 /** A round of extra effort is added only while more than this fraction of the partition's blocks is
- *  above effortResidual. An unconverged stack has many such blocks; a settled pile of 1,000 mixed
- *  bodies keeps a few (4 to 20 mm/s at its worst row) that more sweeps do not lower, and without the
- *  fraction it swept to the cap at most steps (bench/RESULTS.md, "The pile's extra effort"). */
+ *  above effortResidual. An unconverged stack has many such blocks; a settled pile of mixed bodies
+ *  keeps a few that more sweeps do not lower, and without the fraction it swept to the cap at most
+ *  steps (bench/RESULTS.md, "The pile's extra effort after C22"; decision K57). */
 #define KEA_EFFORT_FRACTION ME_R(0.02)
 /** The extra effort is for a resting stack or heap that has not converged, not for a pile whose
  *  bodies collide (KeaParameters.effortRestSpeed): it runs only where every row's target velocity
