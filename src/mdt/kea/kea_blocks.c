@@ -51,6 +51,8 @@ void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIte
     w->eps = KEA_ALLOC(arena, MeReal, n);
     w->dv = KEA_ALLOC(arena, KeaVel4, nb + 1);
     w->dvTmp = KEA_ALLOC(arena, KeaVel4, nb + 1);
+    w->dvStep = KEA_ALLOC(arena, KeaVel4, nb + 1);
+    w->clamped = KEA_ALLOC(arena, int, positions);
     w->xPrev = KEA_ALLOC(arena, MeReal, n);
     w->nncgDir = KEA_ALLOC(arena, MeReal, n);
     w->dvPrev = KEA_ALLOC(arena, KeaVel4, nb + 1);

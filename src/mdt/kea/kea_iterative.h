@@ -294,6 +294,8 @@ typedef struct KeaIterativeWork {
     MeReal *eps;           /**< eps_i (0 when the problem has none) */
     KeaVel4 *dv;           /**< the solve's dv (nb + 1), copied out at the end */
     KeaVel4 *dvTmp;        /**< per-body scratch for A_FF p and for the trial step (nb + 1) */
+    KeaVel4 *dvStep;       /**< SM: M^-1 J_F^T step, summed over CG's steps (nb + 1) */
+    int *clamped;          /**< SM: the trial step's positions that a bound clamps */
     /* NNCG (kea_nncg.c): */
     MeReal *xPrev;         /**< x before the last sweep (after its momentum step) */
     MeReal *nncgDir;       /**< the momentum direction p (by row) */

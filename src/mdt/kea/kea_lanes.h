@@ -28,7 +28,16 @@ static inline KeaLanes KeaLanesSub(KeaLanes a, KeaLanes b) { return _mm_sub_ps(a
 static inline KeaLanes KeaLanesMul(KeaLanes a, KeaLanes b) { return _mm_mul_ps(a, b); }
 /** a > b ? a : b, lane by lane (KeaMax: b where either is a NaN or both are zeros). */
 static inline KeaLanes KeaLanesMax(KeaLanes a, KeaLanes b) { return _mm_max_ps(a, b); }
+/** a < b ? a : b, lane by lane (b where either is a NaN or both are zeros). */
+static inline KeaLanes KeaLanesMin(KeaLanes a, KeaLanes b) { return _mm_min_ps(a, b); }
 static inline KeaLanes KeaLanesSplat(MeReal s) { return _mm_set1_ps(s); }
+/** The select (as KeaLanesSelectOf's) of the lanes where a != b (true for a NaN). */
+static inline KeaLanes KeaLanesSelectNotEqual(KeaLanes a, KeaLanes b) { return _mm_cmpneq_ps(a, b); }
+/** a where the select k is set, else b, lane by lane. */
+static inline KeaLanes KeaLanesChoose(KeaLanes k, KeaLanes a, KeaLanes b)
+{
+    return _mm_or_ps(_mm_and_ps(k, a), _mm_andnot_ps(k, b));
+}
 /** The select of a mask m (SM's masks: 1 or 0) for KeaLanesKeep: all bits set where m is not 0. */
 static inline KeaLanes KeaLanesSelectOf(KeaLanes m) { return _mm_cmpneq_ps(m, _mm_setzero_ps()); }
 /** a where the select k (KeaLanesSelectOf) is set, else +0: a select, not a product with the mask,
@@ -73,6 +82,8 @@ static inline int KeaLanesLe3(KeaLanes a, KeaLanes b) { return _mm_movemask_ps(_
 static inline int KeaLanesLt3(KeaLanes a, KeaLanes b) { return _mm_movemask_ps(_mm_cmplt_ps(a, b)) & 7; }
 /** Bit k set where a_k != 0 (true for a NaN), lanes 0-2. */
 static inline int KeaLanesNonZero3(KeaLanes a) { return _mm_movemask_ps(_mm_cmpneq_ps(a, _mm_setzero_ps())) & 7; }
+/** Whether some lane of a is not 0 (true for a NaN), all four lanes. */
+static inline int KeaLanesAnyNonZero(KeaLanes a) { return _mm_movemask_ps(_mm_cmpneq_ps(a, _mm_setzero_ps())) != 0; }
 /** [KeaLanesSum3(a), KeaLanesSum3(b), KeaLanesSum3(c), 0]: the three sums at once, the same
  *  additions in the same order (a transpose, then two additions of lanes). */
 static inline KeaLanes KeaLanesSum3Each(KeaLanes a, KeaLanes b, KeaLanes c)
@@ -140,6 +151,27 @@ static inline KeaLanes KeaLanesMax(KeaLanes a, KeaLanes b)
         a.v[k] = a.v[k] > b.v[k] ? a.v[k] : b.v[k];
     return a;
 }
+static inline KeaLanes KeaLanesMin(KeaLanes a, KeaLanes b)
+{
+    int k;
+    for (k = 0; k < 4; ++k)
+        a.v[k] = a.v[k] < b.v[k] ? a.v[k] : b.v[k];
+    return a;
+}
+static inline KeaLanes KeaLanesSelectNotEqual(KeaLanes a, KeaLanes b)
+{
+    int k;
+    for (k = 0; k < 4; ++k)
+        a.v[k] = a.v[k] != b.v[k] ? ME_R(1.0) : ME_R(0.0);
+    return a;
+}
+static inline KeaLanes KeaLanesChoose(KeaLanes k, KeaLanes a, KeaLanes b)
+{
+    int l;
+    for (l = 0; l < 4; ++l)
+        a.v[l] = k.v[l] != ME_R(0.0) ? a.v[l] : b.v[l];
+    return a;
+}
 static inline KeaLanes KeaLanesSplat(MeReal s)
 {
     KeaLanes a;
@@ -194,6 +226,10 @@ static inline int KeaLanesLt3(KeaLanes a, KeaLanes b)
 static inline int KeaLanesNonZero3(KeaLanes a)
 {
     return (a.v[0] != ME_R(0.0)) | (a.v[1] != ME_R(0.0)) << 1 | (a.v[2] != ME_R(0.0)) << 2;
+}
+static inline int KeaLanesAnyNonZero(KeaLanes a)
+{
+    return a.v[0] != ME_R(0.0) || a.v[1] != ME_R(0.0) || a.v[2] != ME_R(0.0) || a.v[3] != ME_R(0.0);
 }
 static inline KeaLanes KeaLanesSum3Each(KeaLanes a, KeaLanes b, KeaLanes c)
 {

@@ -10,7 +10,8 @@
  * x_F <- mid(lo, x_F + a delta, hi), a = 1, 1/2, ... (KEA_SM_LINE_SEARCH_TRIES), accepts the first
  * step that lowers the QP objective
  *   f(x) = 1/2 x^T A x - r^T x;   f(x + s) - f(x) = s . (w + 1/2 (J M^-1 J^T s + eps s))
- * (computed from the step alone, free of cancellation). A rejected step leaves x as PGS made it, so
+ * (A s from CG's residual and the clamped rows alone: KeaTrialStep; dv moves by M^-1 J^T s summed
+ * over CG's steps, with no scatter of s). A rejected step leaves x as PGS made it, so
  * SM never makes the QP worse; the next sweep re-applies the friction links and the active set.
  * Each CG step costs about half a sweep; KeaStats.subspaceSteps counts them.
  *
@@ -332,17 +333,6 @@ static void KeaScatterDirection(const KeaProblem *problem, KeaIterativeWork *w, 
     KeaScatterPieces(w, w->dir, NULL, 0, w->nPieces);
 }
 
-/* The line search's trial step z = mid(lo, xF + scale step, hi) - xF over the free list (xF, lo
- * and hi by position), element by element as KeaCgUpdate. Size: separate restrict arrays, so that
- * the compiler vectorises the loop (a struct of them would hide that they do not alias). */
-static void KeaTrialStep(int nFree, MeReal scale, const MeReal *restrict xF, const MeReal *restrict step,
-                         const MeReal *restrict lo, const MeReal *restrict hi, MeReal *restrict z)
-{
-    int p;
-    for (p = 0; p < nFree; ++p)
-        z[p] = KeaClamp(xF[p] + scale * step[p], lo[p], hi[p]) - xF[p];
-}
-
 /* SM's chunk k: its packs [r[0], r[1]), its pieces [r[2], r[3]) and their positions [r[4], r[5]) in
  * the free list (a chunk holds packs or pieces when split, both when not). */
 static void KeaSmChunk(const KeaSmTask *t, int k, int r[6])
@@ -439,28 +429,6 @@ static void KeaCgUpdateChunks(int start, int end, int worker, void *data)
     }
 }
 
-/* The line search's trial on chunk k: q = J_F dvTmp (KeaScatter of the trial step z before); its
- * partial of the objective's change, sum z (grad + 1/2 (q + eps z)), position by position (the packs
- * by KeaPacksTrial, then the pieces). */
-static void KeaTrialChunks(int start, int end, int worker, void *data)
-{
-    const KeaSmTask *t = data;
-    const KeaIterativeWork *w = t->w;
-    int k, r[6], p;
-    (void)worker;
-    for (k = start; k < end; ++k) {
-        MeReal df;
-        KeaSmChunk(t, k, r);
-        df = KeaPacksTrial(w, r[0], r[1], ME_R(0.0));
-        KeaGather(w, w->dvTmp, w->q, r[2], r[3]);
-        for (p = KeaPiecesFrom(r); p < r[5]; ++p) {
-            const MeReal As = w->q[p] + w->epsFree[p] * w->z[p];
-            df += w->z[p] * (w->grad[p] + ME_R(0.5) * As);
-        }
-        t->partial[k] = df;
-    }
-}
-
 /* Run a chunked loop of SM: over the workers in a split solve (chunks of KEA_SPLIT_PACKS packs, then
  * of KEA_SPLIT_PIECES pieces), else as one chunk; returns its partials added in chunk order. */
 static MeReal KeaSmRun(KeaSmTask *t, KeaTaskFn task)
@@ -478,6 +446,17 @@ static MeReal KeaSmRun(KeaSmTask *t, KeaTaskFn task)
     return sum;
 }
 
+/* dv += a v over bodies 0 ... nb - 1 (the world's, nb, stays 0). */
+static void KeaVel4AddScaled(KeaVel4 *restrict dv, MeReal a, const KeaVel4 *restrict v, int nb)
+{
+    const KeaLanes scale = KeaLanesSplat(a);
+    int b;
+    for (b = 0; b < nb; ++b) {
+        KeaLanesAddScaled(dv[b].lin, v[b].lin, scale);
+        KeaLanesAddScaled(dv[b].ang, v[b].ang, scale);
+    }
+}
+
 /* Preconditioned CG on A_FF step = -w_F from step = 0 over the nFree rows of the free list (grad
  * set to w_F at x); returns the CG steps taken (at most maxSteps). Sets smRan when CG can start. */
 static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, KeaSmTask *t, int maxSteps)
@@ -489,6 +468,7 @@ static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, KeaSmTa
         return 0;
     w->smRan = 1;
     w->smDecrease = ME_R(0.0);
+    KeaVel4Clear(w->dvStep, problem->nBodies + 1);
     while (steps < maxSteps) {
         MeReal pq, rzNew;
         if (steps == 0)
@@ -500,6 +480,7 @@ static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, KeaSmTa
             break;
         t->a = rz / pq;
         rzNew = KeaSmRun(t, KeaCgUpdateChunks);
+        KeaVel4AddScaled(w->dvStep, t->a, w->dvTmp, problem->nBodies);
         ++steps;
         if (!(rzNew > w->smStop * rz0))
             break;
@@ -509,29 +490,89 @@ static int KeaSubspaceCg(const KeaProblem *problem, KeaIterativeWork *w, KeaSmTa
     return steps;
 }
 
-/* Projected backtracking line search on the QP objective (bounds frozen) along CG's step: the first
- * of KEA_SM_LINE_SEARCH_TRIES halvings that lowers it is applied to x and dv (smDecrease set). */
-static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w, KeaSmTask *t, MeReal *x)
+/* The line search's trial at `scale`, s = scale step: at the positions a bound clamps, z = mid(lo,
+ * xF + s, hi) - xF and c = z - s; elsewhere z = s itself (exactly) and c = 0. Writes z and c
+ * (four lanes at a time, then the tail), lists the clamped positions, and returns their count. Its
+ * objective's change, with no product over the free list: CG's recurrence gives A step = -(grad +
+ * res), and A is symmetric, so
+ *   f(x + z) - f(x) = z . (grad + 1/2 A z)
+ *                   = sum_p [z_p grad_p - 1/2 scale (z_p + c_p)(grad_p + res_p)] + 1/2 c . A c,
+ * *sum: the position sum, position p in lane p mod 4 (KeaTrialChange adds the rest). */
+static int KeaTrialStep(KeaIterativeWork *w, int nFree, MeReal scale, MeReal *c, MeReal *sum)
 {
-    const int nFree = t->nFree;
+    const MeReal *xF = w->xFree, *step = w->step, *lo = w->lo, *hi = w->hi, *grad = w->grad, *res = w->res;
+    const KeaLanes scales = KeaLanesSplat(scale), half = KeaLanesSplat(ME_R(0.5) * scale);
+    KeaLanes acc = KeaLanesSplat(ME_R(0.0));
+    MeReal *z = w->z;
+    int p, k, n = 0;
+    for (p = 0; p + 4 <= nFree; p += 4) {
+        const KeaLanes x0 = KeaLanesLoadA(xF + p), s = KeaLanesMul(scales, KeaLanesLoadA(step + p));
+        const KeaLanes t = KeaLanesAdd(x0, s), g = KeaLanesLoadA(grad + p);
+        const KeaLanes m = KeaLanesMin(KeaLanesMax(t, KeaLanesLoadA(lo + p)), KeaLanesLoadA(hi + p));
+        const KeaLanes clamps = KeaLanesSelectNotEqual(m, t), toBound = KeaLanesSub(m, x0);
+        const KeaLanes zp = KeaLanesChoose(clamps, toBound, s), cp = KeaLanesKeep(KeaLanesSub(toBound, s), clamps);
+        const KeaLanes As = KeaLanesMul(half, KeaLanesMul(KeaLanesAdd(zp, cp), KeaLanesAdd(g, KeaLanesLoadA(res + p))));
+        KeaLanesStoreA(z + p, zp);
+        KeaLanesStoreA(c + p, cp);
+        acc = KeaLanesAdd(acc, KeaLanesSub(KeaLanesMul(zp, g), As));
+        if (KeaLanesAnyNonZero(cp))
+            for (k = p; k < p + 4; ++k)
+                if (c[k] != ME_R(0.0))
+                    w->clamped[n++] = k;
+    }
+    KeaLanesStore(sum, acc);
+    for (; p < nFree; ++p) {
+        const MeReal s = scale * step[p], t = xF[p] + s, m = KeaMin(KeaMax(t, lo[p]), hi[p]);
+        z[p] = m != t ? m - xF[p] : s;
+        c[p] = m != t ? (m - xF[p]) - s : ME_R(0.0);
+        sum[p & 3] += z[p] * grad[p] - ME_R(0.5) * scale * ((z[p] + c[p]) * (grad[p] + res[p]));
+        if (c[p] != ME_R(0.0))
+            w->clamped[n++] = p;
+    }
+    return n;
+}
+
+/* The objective's change made by the line search's trial at `scale` (KeaTrialStep), with c . A c =
+ * c . (J_C dvTmp + eps c), dvTmp = M^-1 J_C^T c over the clamped positions C alone (*nClamped of
+ * them). Leaves z the trial step and dvTmp = M^-1 J^T c. */
+static MeReal KeaTrialChange(KeaIterativeWork *w, int nFree, int nBodies, MeReal scale, int *nClamped)
+{
+    MeReal *c = w->q; /* q is free after CG */
+    MeReal sum[4], cAc = ME_R(0.0);
+    const int n = KeaTrialStep(w, nFree, scale, c, sum);
+    int k;
+    KeaVel4Clear(w->dvTmp, nBodies + 1);
+    for (k = 0; k < n; ++k) {
+        const int i = w->freeRows[w->clamped[k]];
+        KeaRowApply4(&w->B[i], c[w->clamped[k]], &w->dvTmp[w->body[i][0]], &w->dvTmp[w->body[i][1]]);
+    }
+    for (k = 0; k < n; ++k) {
+        const int q = w->clamped[k], i = w->freeRows[q];
+        const MeReal Jc = KeaRowVel4(&w->J[i], &w->dvTmp[w->body[i][0]], &w->dvTmp[w->body[i][1]]);
+        cAc += c[q] * (Jc + w->epsFree[q] * c[q]);
+    }
+    *nClamped = n;
+    return ((sum[0] + sum[1]) + (sum[2] + sum[3])) + ME_R(0.5) * cAc;
+}
+
+/* Projected backtracking line search on the QP objective (bounds frozen) along CG's step: the first
+ * of KEA_SM_LINE_SEARCH_TRIES halvings that lowers it (KeaTrialChange) is applied to x and dv
+ * (smDecrease set). */
+static void KeaSubspaceLineSearch(const KeaProblem *problem, KeaIterativeWork *w, int nFree, MeReal *x)
+{
     MeReal scale;
-    int p, b, k, tries;
+    int p, tries, nClamped;
     for (tries = 0, scale = ME_R(1.0); tries < KEA_SM_LINE_SEARCH_TRIES; ++tries, scale *= ME_R(0.5)) {
-        MeReal df;
-        KeaTrialStep(nFree, scale, w->xFree, w->step, w->lo, w->hi, w->z); /* z holds the trial step s */
-        KeaScatter(problem, w, w->z);
-        df = KeaSmRun(t, KeaTrialChunks); /* q is free after CG */
+        const MeReal df = KeaTrialChange(w, nFree, problem->nBodies, scale, &nClamped);
         if (df < ME_R(0.0)) {
             w->smDecrease = -df;
             KeaPacksApply(w, x);
             for (p = KEA_PACK_POSITIONS * w->nPacks; p < nFree; ++p)
                 if (w->z[p] != ME_R(0.0))
                     x[w->freeRows[p]] += w->z[p];
-            for (b = 0; b < problem->nBodies; ++b)
-                for (k = 0; k < 4; ++k) {
-                    w->dv[b].lin[k] += w->dvTmp[b].lin[k];
-                    w->dv[b].ang[k] += w->dvTmp[b].ang[k];
-                }
+            KeaVel4AddScaled(w->dv, scale, w->dvStep, problem->nBodies);
+            if (nClamped > 0)
+                KeaVel4AddScaled(w->dv, ME_R(1.0), w->dvTmp, problem->nBodies);
             return;
         }
     }
@@ -652,6 +693,6 @@ int KeaSubspaceMinimise(const KeaProblem *problem, KeaIterativeWork *w, int maxS
     t.partial = w->split ? w->split->partial : &one;
     steps = KeaSubspaceCg(problem, w, &t, maxSteps);
     if (steps > 0)
-        KeaSubspaceLineSearch(problem, w, &t, x);
+        KeaSubspaceLineSearch(problem, w, nFree, x);
     return steps;
 }
