@@ -786,6 +786,87 @@ static void nncg_converges_faster_to_the_same_solution(void **state)
 }
 
 
+/* The largest gap between the solve's dv and M^-1 J^T x recomputed from the returned x, in double,
+ * as a fraction of the largest |dv| component. */
+static double dv_gap_to_impulses(const KtProblem *t, const MeReal *x, const KeaBodyVelocity *dv)
+{
+    double *want = calloc((size_t)(6 * t->p.nBodies), sizeof(double)), gap = 0.0, size = 0.0;
+    int i, h, b, r, c;
+    assert_non_null(want);
+    for (i = 0; i < t->p.nRows; ++i)
+        for (h = 0; h < 2; ++h) {
+            const KeaBody *body;
+            const MeReal *lin = h ? t->J[i].lin1 : t->J[i].lin0, *ang = h ? t->J[i].ang1 : t->J[i].ang0;
+            if ((b = t->rowBodies[i][h]) < 0)
+                continue;
+            body = &t->bodies[b];
+            for (r = 0; r < 3; ++r) {
+                want[6 * b + r] += (double)body->invMass * (double)lin[r] * (double)x[i];
+                for (c = 0; c < 3; ++c)
+                    want[6 * b + 3 + r] += (double)body->invInertia[r][c] * (double)ang[c] * (double)x[i];
+            }
+        }
+    for (b = 0; b < t->p.nBodies; ++b)
+        for (r = 0; r < 3; ++r) {
+            gap = fmax(gap, fabs((double)dv[b].lin[r] - want[6 * b + r]));
+            gap = fmax(gap, fabs((double)dv[b].ang[r] - want[6 * b + 3 + r]));
+            size = fmax(size, fmax(fabs(want[6 * b + r]), fabs(want[6 * b + 3 + r])));
+        }
+    free(want);
+    return gap / size;
+}
+
+/* The velocity change a solve returns is the one its impulses make, dv = M^-1 J^T x, however long it
+ * runs: SM's accepted steps move dv by CG's step scattered a direction at a time plus the rows a
+ * bound clamped (kea_subspace.c, KeaTrialStep), and the coarse correction by a scatter of the rows it
+ * moved, not by its directions' images, whose rounding added up over a long solve. Random contacts
+ * (friction clamps rows in SM's line search) run to convergence with SM at every chance, and the
+ * cold column with deflation and SM at every second chance, for 3000 sweeps without a stop. */
+static void solves_keep_dv_the_impulses_velocity_change(void **state)
+{
+    enum { COLUMN_BOXES = 20 };
+    static const double gravity[3] = {0, 0, -9.81};
+    const double still[6 * COLUMN_BOXES] = {0};
+    int seed;
+    (void)state;
+    for (seed = 1; seed <= 3; ++seed) {
+        KtRng r = kt_rng((uint64_t)seed);
+        KtProblem t;
+        MeReal *x;
+        KeaBodyVelocity *dv;
+        KeaParameters iter = kt_params(KeaPathIterative);
+        KeaStats st;
+        double gap;
+        if (seed < 3) {
+            kt_random_contacts(&t, &r, 300, 0, 150, 0.6, 1e-2);
+            iter.maxIterations = 1000;
+            iter.subspaceEvery = 1;
+        } else {
+            kt_column(&t, COLUMN_BOXES, 1.0, 0.6, 1e-2);
+            kt_set_rhs_from_velocities(&t, still, 1.0 / 60, gravity);
+            iter.nonsmoothCg = 1;
+            iter.deflation = 1;
+            iter.subspaceIterations = 4;
+            iter.subspaceEvery = 2;
+            iter.maxIterations = 3000;
+            iter.tolerance = ME_R(0.0);
+        }
+        x = malloc(sizeof(MeReal) * (size_t)t.p.nRows);
+        dv = malloc(sizeof(KeaBodyVelocity) * (size_t)t.p.nBodies);
+        assert_non_null(x);
+        assert_non_null(dv);
+        kt_solve(&t.p, &iter, x, dv, &st);
+        gap = dv_gap_to_impulses(&t, x, dv);
+        print_message("%s: %d sweeps, %d SM steps, dv's gap to M^-1 J^T x %.2g of its size\n",
+                      seed < 3 ? "random contacts" : "cold column, deflation", st.iterations, st.subspaceSteps, gap);
+        assert_true(st.subspaceSteps > 0);
+        assert_true(gap < ME_TOL(1e-10, 1e-4));
+        free(x);
+        free(dv);
+        kt_free(&t);
+    }
+}
+
 enum { SM_BOXES = 20, SM_ROWS = 12 * SM_BOXES };
 
 /* The cold column of SM_BOXES boxes at rest under gravity, and its direct solution xd. */
@@ -871,6 +952,7 @@ int main(void)
         cmocka_unit_test(subspace_steps_wait_for_the_active_set),
         cmocka_unit_test(subspace_steps_that_do_not_pay_wait),
         cmocka_unit_test(nncg_converges_faster_to_the_same_solution),
+        cmocka_unit_test(solves_keep_dv_the_impulses_velocity_change),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

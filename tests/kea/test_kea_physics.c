@@ -165,10 +165,17 @@ static void friction_at_bound_when_sliding_inside_when_sticking(void **state)
             assert_near(-g * h + (double)dv[0].lin[2], 0.0, 1e-3 * g * h);
             vx = V + (double)dv[0].lin[0];
             if (V > mu * g * h) { /* sliding: each x-friction row at -mu N_i, speed drops by mu N / m */
+                double sideways = 0.0;
                 for (c = 0; c < 4; ++c) {
                     assert_near(x[3 * c + 1], -mu * (double)x[3 * c], ME_TOL(tight, 1e-6));
-                    assert_near(x[3 * c + 2], 0.0, ME_TOL(tight, 1e-3) * mu * (double)x[3 * c]);
+                    sideways += (double)x[3 * c + 2];
+                    /* The corners' y rows can carry a stress that neither moves nor turns the cube
+                     * (pairs of equal and opposite impulses), resisted by eps alone: the iterative
+                     * path leaves it up to its tolerance / eps, so that path is held to the sum. */
+                    if (paths[p] != KeaPathIterative)
+                        assert_near(x[3 * c + 2], 0.0, ME_TOL(tight, 1e-3) * mu * (double)x[3 * c]);
                 }
+                assert_near(sideways, 0.0, ME_TOL(tight, 1e-3) * mu * normalSum);
                 assert_rel(vx, V - mu * normalSum / m, ME_TOL(tight, 1e-5));
                 assert_true(vx > 0.0);
             } else { /* sticking: stops, friction strictly inside */

@@ -394,29 +394,6 @@ void KeaPacksCgUpdate(const KeaIterativeWork *w, MeReal a, int first, int last, 
     *acc = sum;
 }
 
-MeReal KeaPacksTrial(const KeaIterativeWork *w, int first, int last, MeReal df)
-{
-    const KeaPackVectors v = KeaPackVectorsOf(w);
-    const KeaVel4 *dvTmp = w->dvTmp;
-    const KeaLanes half = KeaLanesSplat(ME_R(0.5));
-    int k, r, l;
-    for (k = first; k < last; ++k) {
-        KeaLanes As[3];
-        if (v.packs[k].idle)
-            continue;
-        KeaPackProduct(&v, dvTmp, k, v.z, As);
-        for (r = 0; r < 3; ++r) {
-            const int o = KEA_PACK_POSITIONS * k + KEA_PACK_LANES * r;
-            _Alignas(16) MeReal term[KEA_PACK_LANES];
-            KeaLanesStoreA(term, KeaLanesMul(KeaLanesLoadA(v.z + o),
-                                             KeaLanesAdd(KeaLanesLoadA(v.grad + o), KeaLanesMul(half, As[r]))));
-            for (l = 0; l < KEA_PACK_LANES; ++l)
-                df += term[l];
-        }
-    }
-    return df;
-}
-
 void KeaPacksApply(const KeaIterativeWork *w, MeReal *x)
 {
     const MeReal *z = w->z;

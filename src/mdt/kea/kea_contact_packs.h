@@ -15,7 +15,7 @@
  * holds 0 in every SM vector (its gather is multiplied by 0, its bounds and x are 0), so it adds
  * nothing to any product, sum or step. Each of CG's stages is one pass over the packs that does its
  * vector work beside its product (KeaPacksCgStart, KeaPacksCgProduct, KeaPacksCgUpdate,
- * KeaPacksScatterDirection, KeaPacksTrial), its sums in SM's position order (docs/kea.md, "SM's
+ * KeaPacksScatterDirection), its sums in SM's position order (docs/kea.md, "SM's
  * passes, one per product"). A pack none of whose rows is free (KeaContactPack.idle) is skipped by
  * every pass of that SM step, its positions set to 0 by KeaPacksCgStart: it would add only zeros, and a
  * body's sum, starting at +0, is never -0, so the bits are the same. Masking by a product assumes finite x, rhs and dv (a NaN in a masked
@@ -230,9 +230,6 @@ void KeaPacksCgStart(const KeaIterativeWork *w, int first, int last, KeaLanes *a
 void KeaPacksCgProduct(const KeaIterativeWork *w, int first, int last, KeaLanes *acc);
 /* CG's update: step += a dir, res -= a q, z = P^-1 res; acc: res . z. */
 void KeaPacksCgUpdate(const KeaIterativeWork *w, MeReal a, int first, int last, KeaLanes *acc);
-/* The line search's trial (z: the trial step s, dvTmp its scatter): returns df + sum s (grad + 1/2
- * (J dvTmp + eps s)), each position's term added in position order (one sum, as SM's scalar loop). */
-MeReal KeaPacksTrial(const KeaIterativeWork *w, int first, int last, MeReal df);
 /* The accepted step: x += z at every pack position whose z is not 0 (a masked row's is 0: x is left
  * alone), with no list of rows. */
 void KeaPacksApply(const KeaIterativeWork *w, MeReal *x);

@@ -22,7 +22,8 @@
  *   f(x + s) - f(x) = alpha.g + 1/2 alpha^T G alpha + c.(w + A u) + 1/2 c^T A c
  * costs a scatter and gathers of those rows only. As SM's trial, a step that does not lower f is
  * halved (KEA_SM_LINE_SEARCH_TRIES times) and otherwise dropped, so the correction never makes the QP
- * worse. It runs on the solve's own thread in a split solve (serial passes: the same bits for any
+ * worse. The accepted step moves dv by a scatter of its rows, not by the images (whose rounding
+ * would add up over a long solve). It runs on the solve's own thread in a split solve (serial passes: the same bits for any
  * worker count). Figures: bench/RESULTS.md, "defl". */
 #include <string.h>
 
@@ -102,8 +103,8 @@ int KeaDeflationSolve(int k, const MeReal G[9], const MeReal g[3], MeReal alpha[
 
 /* The trial's new x, s = mid(lo, x + u, hi) with u = D alpha, and its clipped part c = (s - x) - u
  * (0 where x + u is within the bounds) over n rows, element by element so that the compiler runs it
- * four lanes at a time; returns whether any row was clipped. Size: separate restrict arrays (as
- * kea_subspace.c's KeaTrialStep), so that the loop is vectorised. */
+ * four lanes at a time; returns whether any row was clipped. Size: separate restrict arrays, so
+ * that the loop is vectorised. */
 static int KeaDeflationClamp(int n, const MeReal alpha[3], const MeReal *restrict x, const MeReal *restrict xPrev,
                              const MeReal *restrict p, const MeReal *restrict xStart, const MeReal *restrict lo,
                              const MeReal *restrict hi, MeReal *restrict s, MeReal *restrict c)
@@ -122,8 +123,8 @@ static int KeaDeflationClamp(int n, const MeReal alpha[3], const MeReal *restric
 
 /* The trial x + s = mid(lo, x + D alpha, hi) (the bounds as KeaDeflationRows stored them) into SM's
  * z (the new x itself, within the bounds to the bit), the clipped part c into SM's q, *clipped whether
- * any; returns f(x + s) - f(x) (top comment) from the model's alpha.g + 1/2 alpha^T G alpha, dvTmp
- * left holding M^-1 J^T c when clipped. */
+ * any; returns f(x + s) - f(x) (top comment) from the model's alpha.g + 1/2 alpha^T G alpha (dvTmp
+ * is its scratch for M^-1 J^T c). */
 static MeReal KeaDeflationTrial(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x,
                                 const MeReal alpha[3], MeReal model, int *clipped)
 {
@@ -160,37 +161,32 @@ void KeaDeflationStart(KeaIterativeWork *w, const MeReal *x, int n)
     w->nncgLast = ME_R(0.0);
 }
 
-/* Apply the accepted step: x = the trial's (s), dv += D alpha's image + dvTmp (c's, when clipped);
- * then the pass's whole change becomes d_1 for the next, and x, dv the next pass's start. alpha all
- * 0: nothing applied. */
-static void KeaDeflationApply(const KeaProblem *problem, KeaIterativeWork *w, MeReal *x, const MeReal alpha[3],
-                              const MeReal *s, int clipped)
+/* Apply the accepted step: dv += M^-1 J^T (s - x) by a scatter of the rows that moved, then x = the
+ * trial's (s); then the pass's whole change becomes d_1 for the next, and x, dv the next pass's
+ * start. The images of the directions are exact only up to rounding, and a long solve's steps (with
+ * alpha of a few) would let dv drift from x by the sum of those errors, so the step's own rows are
+ * scattered. s NULL: nothing applied. */
+static void KeaDeflationApply(const KeaProblem *problem, KeaIterativeWork *w, MeReal *x, const MeReal *s)
 {
     const int n = problem->nRows, nb = w->nb;
-    const int moved = alpha[0] != ME_R(0.0) || alpha[1] != ME_R(0.0) || alpha[2] != ME_R(0.0);
     MeReal *restrict xPrev = w->xPrev, *restrict p = w->nncgDir;
     int i, b, k;
-    if (moved)
+    if (s) {
+        for (i = 0; i < n; ++i)
+            if (s[i] != x[i])
+                KeaRowApply4(&w->B[i], s[i] - x[i], &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
         memcpy(x, s, sizeof(MeReal) * (size_t)n); /* s is SM's scratch, apart from x */
+    }
     for (i = 0; i < n; ++i) {
         p[i] = x[i] - xPrev[i];
         xPrev[i] = x[i];
     }
     for (b = 0; b < nb; ++b)
         for (k = 0; k < 4; ++k) {
-            MeReal lin = w->dv[b].lin[k], ang = w->dv[b].ang[k];
-            if (moved) {
-                lin += ((alpha[0] * (lin - w->dvPrev[b].lin[k]) + alpha[1] * w->dvDir[b].lin[k]) +
-                        alpha[2] * (lin - w->dvStart[b].lin[k])) + (clipped ? w->dvTmp[b].lin[k] : ME_R(0.0));
-                ang += ((alpha[0] * (ang - w->dvPrev[b].ang[k]) + alpha[1] * w->dvDir[b].ang[k]) +
-                        alpha[2] * (ang - w->dvStart[b].ang[k])) + (clipped ? w->dvTmp[b].ang[k] : ME_R(0.0));
-                w->dv[b].lin[k] = lin;
-                w->dv[b].ang[k] = ang;
-            }
-            w->dvDir[b].lin[k] = lin - w->dvPrev[b].lin[k];
-            w->dvDir[b].ang[k] = ang - w->dvPrev[b].ang[k];
-            w->dvPrev[b].lin[k] = lin;
-            w->dvPrev[b].ang[k] = ang;
+            w->dvDir[b].lin[k] = w->dv[b].lin[k] - w->dvPrev[b].lin[k];
+            w->dvDir[b].ang[k] = w->dv[b].ang[k] - w->dvPrev[b].ang[k];
+            w->dvPrev[b].lin[k] = w->dv[b].lin[k];
+            w->dvPrev[b].ang[k] = w->dv[b].ang[k];
         }
 }
 
@@ -318,13 +314,12 @@ MeReal KeaDeflationStep(const KeaProblem *problem, KeaIterativeWork *w, MeReal *
                 }
                 df = KeaDeflationTrial(problem, w, x, t, model, &clipped);
                 if (df < ME_R(0.0)) {
-                    KeaDeflationApply(problem, w, x, t, w->z, clipped); /* z: the trial's x */
+                    KeaDeflationApply(problem, w, x, w->z); /* z: the trial's x */
                     return df;
                 }
             }
         }
     }
-    alpha[0] = alpha[1] = alpha[2] = ME_R(0.0);
-    KeaDeflationApply(problem, w, x, alpha, w->z, 0);
+    KeaDeflationApply(problem, w, x, NULL);
     return ME_R(0.0);
 }

@@ -149,8 +149,7 @@ KEA_ALWAYS_INLINE void KeaGatherPieces(const KeaIterativeWork *w, const KeaVel4 
     }
 }
 
-/* out[p] = J_i . dv of the free rows of pieces [k0, k1) (the packs' positions by KeaPacksCg*,
- * KeaPacksTrial). Not split, [k0, k1) is every piece: the segments in joint packs by the packs, the
+/* out[p] = J_i . dv of the free rows of pieces [k0, k1) (the packs' positions by KeaPacksCg*). Not split, [k0, k1) is every piece: the segments in joint packs by the packs, the
  * others a piece at a time. */
 static void KeaGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, int k0, int k1)
 {
