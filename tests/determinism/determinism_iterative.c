@@ -38,18 +38,18 @@
  * for every worker count. */
 #  define SPLIT_ROWS 100
 #  if KARMA_DOUBLE
-#    define GOLDEN_PILE 0x0798d249b69acdfbull
-#    define GOLDEN_PYRAMID 0x2046a38bf9b93e1dull
+#    define GOLDEN_PILE 0x4b6cf79ea09e266full
+#    define GOLDEN_PYRAMID 0x4e64ed1ec85e1587ull
 #  else
-#    define GOLDEN_PILE 0xbeb61c4119d5043bull
-#    define GOLDEN_PYRAMID 0x79cd9ae29f41e85full
+#    define GOLDEN_PILE 0x8846379d0724dc4dull
+#    define GOLDEN_PYRAMID 0xbd8d7d8192464ba5ull
 #  endif
 #elif KARMA_DOUBLE
-#  define GOLDEN_PILE 0xd022ff5daab02c53ull
-#  define GOLDEN_PYRAMID 0x4c318aca0ff93c1bull
+#  define GOLDEN_PILE 0xe324a9556992301dull
+#  define GOLDEN_PYRAMID 0x7944904797b0ef4full
 #else
-#  define GOLDEN_PILE 0x39a5a090aad34c15ull
-#  define GOLDEN_PYRAMID 0xeb8b9f331fb41317ull
+#  define GOLDEN_PILE 0x2a01fd69108df8efull
+#  define GOLDEN_PYRAMID 0xd700a7d560d7ccc3ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
