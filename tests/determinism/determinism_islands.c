@@ -34,10 +34,10 @@
 
 #if KARMA_DOUBLE
 #  define GOLDEN_DIRECT 0x3430a8ed90cc6bd4ull
-#  define GOLDEN_ITERATIVE 0x35e17a05c45a44faull
+#  define GOLDEN_ITERATIVE 0x910d37bf1fe40e71ull
 #else
 #  define GOLDEN_DIRECT 0x558a6cc270777cd1ull
-#  define GOLDEN_ITERATIVE 0xc9ee3c4f0e618732ull
+#  define GOLDEN_ITERATIVE 0xcd8dd6d6cf043bdaull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
