@@ -54,6 +54,8 @@ void MdtWorldSetDefaults(MdtWorldData *w)
     w->kea.subspaceEvery = KEA_WORLD_SM_EVERY;
     w->kea.subspaceIterations = KEA_WORLD_SM_STEPS;
     w->kea.subspaceStop = KEA_WORLD_SM_STOP;
+    w->kea.subspaceJointShare = KEA_WORLD_SM_JOINT_SHARE; /* joint-heavy partitions: fewer SM steps (K58) */
+    w->kea.subspaceJointEvery = KEA_WORLD_SM_JOINT_EVERY;
     w->autoDisable.enabled = METRUE;
     w->autoDisable.velocity = DEFAULT_AD_VELOCITY * l2;
     w->autoDisable.angularVelocity = DEFAULT_AD_ANGULAR_VELOCITY;

@@ -931,11 +931,68 @@ static void sm_first_chance_and_early_stop_keep_the_limit(void **state)
     assert_true(steps[1] < steps[0]);
 }
 
+/* The world's schedule with subspaceJointShare and subspaceJointEvery (decision K58): a partition whose
+ * generic rows (joints) are at least that share of its rows gets SM at the first chance and every eighth
+ * sweep (two chances in 10 sweeps), and run to convergence still reaches the full schedule's solution; a
+ * partition of contacts alone keeps the full schedule,
+ * bit for bit. */
+static MeReal joint_heavy_solve(const KtProblem *t, MeReal share, int maxIterations, MeReal *x, KeaStats *st)
+{
+    KeaParameters iter = kt_params(KeaPathIterative);
+    iter.nonsmoothCg = 1;
+    iter.subspaceEvery = 2;
+    iter.subspaceIterations = 7;
+    iter.subspaceJointShare = share;
+    iter.subspaceJointEvery = 8;
+    iter.maxIterations = maxIterations;
+    iter.tolerance = maxIterations > 10 ? ME_TOL(1e-9, 1e-5) : ME_R(0.0);
+    kt_solve(&t->p, &iter, x, NULL, st);
+    return iter.tolerance;
+}
+
+static void joint_heavy_partitions_get_sm_once(void **state)
+{
+    enum { CONTACTS = 10, JOINT_ROWS = 30, N = 3 * CONTACTS + JOINT_ROWS };
+    MeReal x[N], xFull[N], xd[N];
+    KtProblem t;
+    KeaStats st;
+    int seed, i, steps[2] = {0, 0};
+    (void)state;
+    for (seed = 0; seed < 10; ++seed) {
+        KtRng rng = kt_rng((uint64_t)(950 + seed));
+        MeReal tolerance;
+        kt_random_contacts(&t, &rng, CONTACTS, JOINT_ROWS, 8, 0.5, 1e-2);
+        joint_heavy_solve(&t, ME_R(0.0), 10, xFull, &st);
+        steps[0] += st.subspaceSteps;
+        joint_heavy_solve(&t, ME_R(0.6), 10, x, &st); /* half the rows generic: below the share */
+        assert_memory_equal(x, xFull, sizeof x);
+        joint_heavy_solve(&t, ME_R(0.25), 10, x, &st);
+        assert_true(st.subspaceSteps <= 2 * 7 && st.subspaceSkipped <= 2); /* after sweeps 1 and 8 */
+        steps[1] += st.subspaceSteps;
+        tolerance = joint_heavy_solve(&t, ME_R(0.0), 3000, xd, &st);
+        assert_true(st.residual <= 10 * tolerance);
+        tolerance = joint_heavy_solve(&t, ME_R(0.25), 3000, x, &st);
+        assert_true(st.residual <= 10 * tolerance);
+        for (i = 0; i < N; ++i)
+            assert_near(x[i], xd[i], ME_TOL(1e-5, 2e-2) * (1.0 + fabs((double)xd[i])));
+        kt_free(&t);
+        kt_random_contacts(&t, &rng, CONTACTS, 0, 8, 0.5, 1e-2); /* contacts only: the same bits */
+        joint_heavy_solve(&t, ME_R(0.0), 10, xFull, &st);
+        joint_heavy_solve(&t, ME_R(0.25), 10, x, &st);
+        assert_memory_equal(x, xFull, sizeof(MeReal) * 3 * CONTACTS);
+        kt_free(&t);
+    }
+    print_message("joint-heavy partitions, 10 sweeps: %d CG steps with the full schedule, %d after sweeps 1 and 8\n",
+                  steps[0], steps[1]);
+    assert_true(steps[1] > 0 && steps[1] < steps[0]);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(error_does_not_grow_with_iteration_cap),
         cmocka_unit_test(sm_first_chance_and_early_stop_keep_the_limit),
+        cmocka_unit_test(joint_heavy_partitions_get_sm_once),
         cmocka_unit_test(friction_links_converge_to_direct),
         cmocka_unit_test(one_contact_block_is_exact_in_one_sweep),
         cmocka_unit_test(generic_contact_path_is_exact_in_one_sweep),

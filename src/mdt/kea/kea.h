@@ -194,6 +194,14 @@ typedef struct KeaParameters {
                                  sweeps in place of NNCG's momentum: the QP minimised over the
                                  solve's last changes of x, and SM at every second chance only;
                                  0 = off, the default */
+    MeReal subspaceJointShare; /**< iterative: a partition whose generic rows (every row not in a declared
+                                 contact: joints, limits, motors) are at least this share of its rows
+                                 has its SM chances after the first every subspaceJointEvery sweeps
+                                 instead of every subspaceEvery (not with deflation, whose SM chances
+                                 stay every second); 0 = none, the default (the world's:
+                                 KEA_WORLD_SM_JOINT_SHARE, decision K58) */
+    int subspaceJointEvery; /**< iterative: see subspaceJointShare; 0 = subspaceEvery, the default (the
+                                 world's: KEA_WORLD_SM_JOINT_EVERY) */
 } KeaParameters;
 
 /** What a solve did. */

@@ -506,6 +506,20 @@ KEA_NOINLINE void KeaIterativeSetUp(const KeaProblem *problem, const KeaParamete
     w->smStop = KeaMax(KEA_SM_CG_STOP, params->subspaceStop);
 }
 
+/* SM's chances after the first come every this-many sweeps: subspaceEvery, or subspaceJointEvery in a
+ * partition whose generic rows (those not in a declared contact: joints, limits, motors) are at least
+ * params->subspaceJointShare of its rows (K58). */
+static int KeaSubspaceEvery(const KeaProblem *problem, const KeaParameters *params, const KeaIterativeWork *w)
+{
+    const MeReal generic = (MeReal)(problem->nRows - 3 * w->nContactBlocks);
+    if (params->deflation)
+        return 2;
+    if (params->subspaceJointShare > ME_R(0.0) && params->subspaceJointEvery > 0 &&
+        generic >= params->subspaceJointShare * (MeReal)problem->nRows)
+        return params->subspaceJointEvery;
+    return params->subspaceEvery > 1 ? params->subspaceEvery : 1;
+}
+
 /* What a solve hands its driver (KeaIterate): the problem, its settings, the work and the outputs. */
 typedef struct KeaSolveState {
     const KeaProblem *problem;
@@ -530,11 +544,11 @@ static void KeaIterate(void *data)
     KeaStats *stats = state->stats;
     const int nb = problem->nBodies;
     const int effort = KeaEffortAllowed(problem, params);
-    const int smEvery = params->deflation ? 2 : (params->subspaceEvery > 1 ? params->subspaceEvery : 1);
     const int smFirst = !params->deflation; /* the first chance's SM does most of a solve's SM work */
-    int it, b, k, limit;
+    int it, b, k, limit, smEvery;
 
     KeaIterativeSetUp(problem, params, w, x);
+    smEvery = KeaSubspaceEvery(problem, params, w);
     if (w->split)
         stats->colours = w->split->colours +
                          (w->split->colourStart[KEA_COLOUR_OVERFLOW + 1] > w->split->colourStart[KEA_COLOUR_OVERFLOW]);

@@ -33,6 +33,8 @@ void KeaParametersDefault(KeaParameters *params)
     params->nonsmoothCg = 0;
     params->subspaceEvery = 1;
     params->subspaceStop = ME_R(0.0);
+    params->subspaceJointShare = ME_R(0.0);
+    params->subspaceJointEvery = 0;
     params->deflation = 0;
 }
 

@@ -128,5 +128,14 @@
 #define KEA_WORLD_SM_EVERY 2
 #define KEA_WORLD_SM_STEPS 7
 #define KEA_WORLD_SM_STOP ME_R(0.1)
+/** The world's KeaParameters.subspaceJointShare and subspaceJointEvery (K58): a partition at least a
+ *  quarter of whose rows are generic (joints: a heap of ragdolls is about half, a joint grid all) gets
+ *  SM after its first sweep and its eighth (with 10 sweeps: two SM steps instead of five). The steps
+ *  between lower the QP's objective but do not show in the joints' gaps nor in the floor's penetration,
+ *  and cost a large share of such a step; a late one is kept because without it a hinged chain on the
+ *  iterative path grows unstable (bench/RESULTS.md, "Ragdoll heaps: fewer SM steps"). A stack of
+ *  contacts (the touching walls the later steps are for) keeps the full schedule. */
+#define KEA_WORLD_SM_JOINT_SHARE ME_R(0.25)
+#define KEA_WORLD_SM_JOINT_EVERY 8
 
 #endif
