@@ -34,10 +34,10 @@
 
 #if KARMA_DOUBLE
 #  define GOLDEN_DIRECT 0x3430a8ed90cc6bd4ull
-#  define GOLDEN_ITERATIVE 0xf0ca3dc3a3f67e63ull
+#  define GOLDEN_ITERATIVE 0x292d1c100f81aaefull
 #else
 #  define GOLDEN_DIRECT 0x558a6cc270777cd1ull
-#  define GOLDEN_ITERATIVE 0x0d3c6452b89ef714ull
+#  define GOLDEN_ITERATIVE 0x288e30f3a490b264ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
