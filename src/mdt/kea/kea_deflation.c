@@ -23,8 +23,8 @@
  * costs a scatter and gathers of those rows only. As SM's trial, a step that does not lower f is
  * halved (KEA_SM_LINE_SEARCH_TRIES times) and otherwise dropped, so the correction never makes the QP
  * worse. The accepted step moves dv by a scatter of its rows, not by the images (whose rounding
- * would add up over a long solve). It runs on the solve's own thread in a split solve (serial passes: the same bits for any
- * worker count). Figures: bench/RESULTS.md, "defl". */
+ * would add up over a long solve). It runs on the solve's own thread in a split solve (serial
+ * passes: the same bits for any worker count). Figures: bench/RESULTS.md, "defl". */
 #include <string.h>
 
 #include "kea_iterative.h"

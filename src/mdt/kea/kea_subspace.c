@@ -149,8 +149,9 @@ KEA_ALWAYS_INLINE void KeaGatherPieces(const KeaIterativeWork *w, const KeaVel4 
     }
 }
 
-/* out[p] = J_i . dv of the free rows of pieces [k0, k1) (the packs' positions by KeaPacksCg*). Not split, [k0, k1) is every piece: the segments in joint packs by the packs, the
- * others a piece at a time. */
+/* out[p] = J_i . dv of the free rows of pieces [k0, k1) (the packs' positions by KeaPacksCg*). Not
+ * split, [k0, k1) is every piece: the segments in joint packs by the packs, the others a piece at a
+ * time. */
 static void KeaGather(const KeaIterativeWork *w, const KeaVel4 *dv, MeReal *out, int k0, int k1)
 {
     if (w->split) {
@@ -510,10 +511,11 @@ static int KeaTrialStep(KeaIterativeWork *w, int nFree, MeReal scale, MeReal *c,
         const KeaLanes m = KeaLanesMin(KeaLanesMax(t, KeaLanesLoadA(lo + p)), KeaLanesLoadA(hi + p));
         const KeaLanes clamps = KeaLanesSelectNotEqual(m, t), toBound = KeaLanesSub(m, x0);
         const KeaLanes zp = KeaLanesChoose(clamps, toBound, s), cp = KeaLanesKeep(KeaLanesSub(toBound, s), clamps);
-        const KeaLanes As = KeaLanesMul(half, KeaLanesMul(KeaLanesAdd(zp, cp), KeaLanesAdd(g, KeaLanesLoadA(res + p))));
+        const KeaLanes minusAs = KeaLanesAdd(g, KeaLanesLoadA(res + p)); /* -(A step)_p */
+        const KeaLanes curve = KeaLanesMul(half, KeaLanesMul(KeaLanesAdd(zp, cp), minusAs));
         KeaLanesStoreA(z + p, zp);
         KeaLanesStoreA(c + p, cp);
-        acc = KeaLanesAdd(acc, KeaLanesSub(KeaLanesMul(zp, g), As));
+        acc = KeaLanesAdd(acc, KeaLanesSub(KeaLanesMul(zp, g), curve));
         if (KeaLanesAnyNonZero(cp))
             for (k = p; k < p + 4; ++k)
                 if (c[k] != ME_R(0.0))
