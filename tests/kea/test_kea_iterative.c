@@ -249,6 +249,57 @@ static void generic_contact_path_is_exact_in_one_sweep(void **state)
     assert_true(opened > 10 && sliding > 10 && sticking > 10);
 }
 
+/* A joint's block whose limit the step reaches: five unbounded rows and a limit row (bounded on one
+ * side) on one body pair, or on one body and the world. One sweep solves the block exactly, with the
+ * limit row clamped in closed form (KeaBlockClampOneRow) and no pivot of the dense solver; it agrees
+ * with the direct path to rounding amplified by the block's conditioning (as the contact blocks'
+ * tests). The limit is reached in most of the cases (its all-free value beyond the bound). */
+static void joint_limit_block_is_exact_in_one_sweep(void **state)
+{
+    double worst = 0.0;
+    int seed, atLimit = 0;
+    (void)state;
+    for (seed = 0; seed < 200; ++seed) {
+        KtRng rng = kt_rng((uint64_t)(6100 + seed));
+        KtProblem t;
+        MeReal xd[6], xi[6];
+        KeaStats st;
+        double err;
+        int i, k;
+        kt_alloc(&t, 6, 2, 0);
+        kt_random_body(&rng, &t.bodies[0]);
+        kt_random_body(&rng, &t.bodies[1]);
+        for (i = 0; i < 6; ++i) {
+            t.rowBodies[i][0] = 0;
+            t.rowBodies[i][1] = seed % 2 ? 1 : KEA_WORLD;
+            for (k = 0; k < 3; ++k) {
+                t.J[i].lin0[k] = (MeReal)kt_range(&rng, -1, 1);
+                t.J[i].ang0[k] = (MeReal)kt_range(&rng, -1, 1);
+                t.J[i].lin1[k] = seed % 2 ? (MeReal)kt_range(&rng, -1, 1) : ME_R(0.0);
+                t.J[i].ang1[k] = seed % 2 ? (MeReal)kt_range(&rng, -1, 1) : ME_R(0.0);
+            }
+            t.eps[i] = (MeReal)kt_range(&rng, 1e-3, 1e-2);
+            t.rhs[i] = (MeReal)kt_range(&rng, -1, 1);
+            t.lo[i] = -MEINFINITY;
+            t.hi[i] = MEINFINITY;
+        }
+        if (seed % 4 < 2)
+            t.lo[5] = ME_R(0.0); /* a lower limit */
+        else
+            t.hi[5] = (MeReal)kt_range(&rng, -0.2, 0.2); /* an upper limit, at a force of either sign */
+        err = iterative_vs_direct(&t, 1, xd, xi, &st);
+        worst = fmax(worst, err);
+        atLimit += xd[5] == t.lo[5] || xd[5] == t.hi[5];
+        assert_near(err, 0.0, ME_TOL(1e-9, 1e-4));
+        assert_int_equal(st.pivots, 0);
+        assert_true(xi[5] >= t.lo[5] && xi[5] <= t.hi[5]);
+        kt_free(&t);
+    }
+    print_message("joint limit blocks, one sweep vs direct: 200 blocks (%d at the limit), max relative error %.3g\n",
+                  atLimit, worst);
+    assert_true(atLimit > 50);
+}
+
 /* Contacts whose exact solution sits on the edge of the friction cone (the primary friction
  * impulse at exactly mu n, the secondary inside): the plain contact step's closed forms (all rows
  * free, or the primary sliding) then hold only within rounding, about half the time neither passes
@@ -996,6 +1047,7 @@ int main(void)
         cmocka_unit_test(friction_links_converge_to_direct),
         cmocka_unit_test(one_contact_block_is_exact_in_one_sweep),
         cmocka_unit_test(generic_contact_path_is_exact_in_one_sweep),
+        cmocka_unit_test(joint_limit_block_is_exact_in_one_sweep),
         cmocka_unit_test(contacts_on_the_cone_edge_meet_the_lcp_conditions),
         cmocka_unit_test(contact_step_and_generic_rows_agree),
         cmocka_unit_test(contact_without_a_factor_meets_the_lcp_conditions),

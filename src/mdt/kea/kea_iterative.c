@@ -17,13 +17,46 @@ static MeReal KeaRowW(const KeaProblem *problem, const KeaIterativeWork *w, int 
  * fixed: its local LCP has the matrix A_bb and r_loc = A_bb x_b - w_b, so that its w is the true w
  * of these rows. The common case of a block at rest first: all rows free, x_b - A_bb^-1 w_b with the
  * block's precomputed inverse, taken if it lies within every row's bounds (friction links inside
- * the block read the new normal values: w_b = 0 there, the block's exact solution); else the dense
- * box-LCP solver. A friction link to a row outside the block becomes a fixed bound. Contacts written
+ * the block read the new normal values: w_b = 0 there, the block's exact solution); then a joint
+ * whose limit the step reaches, one bounded row clamped in closed form (KeaBlockClampOneRow); else
+ * the dense box-LCP solver. A friction link to a row outside the block becomes a fixed bound. Contacts written
  * as generic rows (adhesive, bounded friction) come here; declared contacts go to the contact step.
  * Returns the block's largest row residual before (when sweep->measure; else 0).
  * Inlined with m a constant for a joint's usual blocks (KeaBlockStep), so that its loops over the
  * rows unroll and its rows stay in locals; the work's block scratch is filled for the dense solver
  * only. Size: one step's parts sharing those locals. */
+/* A block whose all-free solution xNew breaks the bound of one row l while every other row is
+ * unbounded and no row is linked (a joint whose limit the step reaches): its LCP's solution is row l
+ * at the bound it broke and the others moved by A^-1 e_l mu, mu = (bound - xNew_l) / (A^-1)_ll,
+ * which keeps their w at 0 and makes w_l = mu, of the sign that bound asks ((A^-1)_ll > 0, A
+ * positive definite). Writes that solution into xNew and returns 1; returns 0, xNew unchanged, for
+ * any other block (the dense solver's). */
+KEA_ALWAYS_INLINE int KeaBlockClampOneRow(const int m, const MeReal *inv, const MeReal *lo, const MeReal *hi,
+                                          const int *link, MeReal *xNew)
+{
+    MeReal bound, mu;
+    int r, l = -1;
+    for (r = 0; r < m; ++r) {
+        if (link[r] >= 0)
+            return 0;
+        if (xNew[r] < lo[r] || xNew[r] > hi[r]) {
+            if (l >= 0)
+                return 0;
+            l = r;
+        } else if (KeaIsFinite(lo[r]) || KeaIsFinite(hi[r])) {
+            return 0; /* a bound of its own that the correction could break */
+        }
+    }
+    if (l < 0 || !(inv[l * m + l] > ME_R(0.0)))
+        return 0;
+    bound = xNew[l] < lo[l] ? lo[l] : hi[l];
+    mu = (bound - xNew[l]) / inv[l * m + l];
+    for (r = 0; r < m; ++r)
+        xNew[r] += inv[r * m + l] * mu;
+    xNew[l] = bound;
+    return 1;
+}
+
 KEA_ALWAYS_INLINE MeReal KeaBlockStepSized(const int m, const KeaProblem *problem, KeaIterativeWork *w, int block,
                                            MeReal *x, KeaSweepState *sweep)
 {
@@ -59,7 +92,8 @@ KEA_ALWAYS_INLINE MeReal KeaBlockStepSized(const int m, const KeaProblem *proble
             fits &= xNew[r] >= rlo && xNew[r] <= rhi;
         }
     }
-    if (fits) {
+    if (fits || (w->blockFactored[block] &&
+                 KeaBlockClampOneRow(m, w->blockInv + w->blockMatrix[block], lo, hi, link, xNew))) {
         KeaBlockApplyNew(w, s, m, xNew, wb, w->localD, x, &sweep->decrease);
         return worst;
     }
