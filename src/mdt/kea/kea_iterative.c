@@ -19,8 +19,9 @@ static MeReal KeaRowW(const KeaProblem *problem, const KeaIterativeWork *w, int 
  * block's precomputed inverse, taken if it lies within every row's bounds (friction links inside
  * the block read the new normal values: w_b = 0 there, the block's exact solution); then a joint
  * whose limit the step reaches, one bounded row clamped in closed form (KeaBlockClampOneRow); else
- * the dense box-LCP solver. A friction link to a row outside the block becomes a fixed bound. Contacts written
- * as generic rows (adhesive, bounded friction) come here; declared contacts go to the contact step.
+ * the dense box-LCP solver. A friction link to a row outside the block becomes a fixed bound.
+ * Contacts written as generic rows (adhesive, bounded friction) come here; declared contacts go to
+ * the contact step.
  * Returns the block's largest row residual before (when sweep->measure; else 0).
  * Inlined with m a constant for a joint's usual blocks (KeaBlockStep), so that its loops over the
  * rows unroll and its rows stay in locals; the work's block scratch is filled for the dense solver
@@ -30,9 +31,10 @@ static MeReal KeaRowW(const KeaProblem *problem, const KeaIterativeWork *w, int 
  * at the bound it broke and the others moved by A^-1 e_l mu, mu = (bound - xNew_l) / (A^-1)_ll,
  * which keeps their w at 0 and makes w_l = mu, of the sign that bound asks ((A^-1)_ll > 0, A
  * positive definite). Writes that solution into xNew and returns 1; returns 0, xNew unchanged, for
- * any other block (the dense solver's). */
-KEA_ALWAYS_INLINE int KeaBlockClampOneRow(const int m, const MeReal *inv, const MeReal *lo, const MeReal *hi,
-                                          const int *link, MeReal *xNew)
+ * any other block (the dense solver's). Not inlined: a rare case kept out of the block step's
+ * common path. */
+KEA_NOINLINE int KeaBlockClampOneRow(int m, const MeReal *inv, const MeReal *lo, const MeReal *hi, const int *link,
+                                     MeReal *xNew)
 {
     MeReal bound, mu;
     int r, l = -1;
