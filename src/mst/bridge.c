@@ -297,7 +297,8 @@ int MstBridgeConvertPair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world,
     /* Points apart that cannot close their gap this step add no row the solver needs (C23); a material
      * with a callback sees every point, as reported. */
     if (!mat->intersectCB && !mat->perContactCB && !mat->perPairCB)
-        result->contactCount = MstSpeculativeKeep(world, pair, b1, b2, b->stepSize, result->contacts, result->contactCount);
+        result->contactCount =
+            MstSpeculativeKeep(world, pair, models, b->stepSize, result->contacts, result->contactCount);
     MdtContactGroupID g = (MdtContactGroupID)pair->userData;
     if (result->contactCount <= 0) {
         if (g)

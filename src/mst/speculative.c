@@ -73,16 +73,16 @@ static MeBool canClose(const McdContact *c, const SpeculativeBody *s1, const Spe
     return c->separation <= approach * h;
 }
 
-/* Whether some point is apart by more than `floor`. */
-static MeBool anyApartBeyond(const McdContact *contacts, int n, MeReal floor)
+/* Whether some point is apart by more than `gap`. */
+static MeBool anyApartBeyond(const McdContact *contacts, int n, MeReal gap)
 {
     for (int i = 0; i < n; i++)
-        if (contacts[i].separation > floor)
+        if (contacts[i].separation > gap)
             return METRUE;
     return MEFALSE;
 }
 
-int MstSpeculativeKeep(MdtWorldID world, McdModelPairID pair, MdtBodyID body1, MdtBodyID body2, MeReal h,
+int MstSpeculativeKeep(MdtWorldID world, McdModelPairID pair, const McdModelPairModelInfo *models, MeReal h,
                        McdContact *contacts, int n)
 {
     if (!(h > 0) || !anyApartBeyond(contacts, n, 0))
@@ -96,15 +96,17 @@ int MstSpeculativeKeep(MdtWorldID world, McdModelPairID pair, MdtBodyID body1, M
         return n;
     McdModelID m1, m2;
     McdModelPairGetModels(pair, &m1, &m2);
-    const MeReal floor = MST_SPECULATIVE_FLOOR * (McdModelGetContactTolerance(m1) + McdModelGetContactTolerance(m2));
-    if (!anyApartBeyond(contacts, n, floor))
+    const MeReal near = MST_SPECULATIVE_FLOOR * (McdModelGetContactTolerance(m1) + McdModelGetContactTolerance(m2));
+    if (!anyApartBeyond(contacts, n, near))
         return n;
+    MdtBodyID body1 = (MdtBodyID)models->bodyData[0], body2 = (MdtBodyID)models->bodyData[1];
     SpeculativeBody s1, s2;
     if ((body1 && !bodyBound(body1, &s1)) || (body2 && !bodyBound(body2, &s2)))
         return n;
     int kept = 0;
     for (int i = 0; i < n; i++) {
-        if (contacts[i].separation > floor && !canClose(&contacts[i], body1 ? &s1 : NULL, body2 ? &s2 : NULL, h, gravity))
+        const MeBool apart = contacts[i].separation > near;
+        if (apart && !canClose(&contacts[i], body1 ? &s1 : NULL, body2 ? &s2 : NULL, h, gravity))
             continue;
         contacts[kept++] = contacts[i];
     }

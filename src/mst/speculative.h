@@ -3,7 +3,7 @@
 #define MST_SPECULATIVE_H
 
 #include <karma/McdContact.h>
-#include <karma/McdTypes.h>
+#include <karma/McdModelPair.h>
 #include <karma/MdtTypes.h>
 
 /** Multiple of |g| a point may gain towards the other body in a step: a body held by its supports
@@ -14,11 +14,11 @@
 #define MST_SPECULATIVE_FLOOR ME_R(0.5)
 
 /** Keep, in order at the front of `contacts`, the pair's points that touch or whose gap can close
- *  within a step of h at a conservative bound of the approach speed of body1 (model 1's, NULL for
- *  the world) and body2 (model 2's) of `pair`, or lie within MST_SPECULATIVE_FLOOR of its contact
- *  tolerance; returns how many. h <= 0 (the step not known), or a torque
+ *  within a step of h at a conservative bound of the approach speed of the pair's bodies
+ *  (models->bodyData: model 1's and model 2's, NULL for the world), or lie within MST_SPECULATIVE_FLOOR
+ *  of its contact tolerance; returns how many. h <= 0 (the step not known), or a torque
  *  applied to either body, keeps every point. */
-int MstSpeculativeKeep(MdtWorldID world, McdModelPairID pair, MdtBodyID body1, MdtBodyID body2, MeReal h,
+int MstSpeculativeKeep(MdtWorldID world, McdModelPairID pair, const McdModelPairModelInfo *models, MeReal h,
                        McdContact *contacts, int n);
 
 #endif /* MST_SPECULATIVE_H */

@@ -38,18 +38,18 @@
  * for every worker count. */
 #  define SPLIT_ROWS 100
 #  if KARMA_DOUBLE
-#    define GOLDEN_PILE 0x0798d249b69acdfbull
-#    define GOLDEN_PYRAMID 0x2046a38bf9b93e1dull
+#    define GOLDEN_PILE 0xe4e52c5e75bf1c1full
+#    define GOLDEN_PYRAMID 0x9264a214328e0b73ull
 #  else
-#    define GOLDEN_PILE 0xbeb61c4119d5043bull
-#    define GOLDEN_PYRAMID 0x79cd9ae29f41e85full
+#    define GOLDEN_PILE 0xa879e92393f2cfcdull
+#    define GOLDEN_PYRAMID 0x245b38091f3452e9ull
 #  endif
 #elif KARMA_DOUBLE
-#  define GOLDEN_PILE 0xd022ff5daab02c53ull
-#  define GOLDEN_PYRAMID 0x4c318aca0ff93c1bull
+#  define GOLDEN_PILE 0xea95d14468ab3f71ull
+#  define GOLDEN_PYRAMID 0x8e210400d817d498ull
 #else
-#  define GOLDEN_PILE 0x39a5a090aad34c15ull
-#  define GOLDEN_PYRAMID 0xeb8b9f331fb41317ull
+#  define GOLDEN_PILE 0xbf0cbac85cf50f39ull
+#  define GOLDEN_PYRAMID 0x837e417fca3662d8ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
@@ -207,10 +207,10 @@ static uint64_t runPyramid(MeBool trace, RunStats *stats, MeReal *drift)
 static void report(const char *name, uint64_t first, uint64_t second, uint64_t golden, const RunStats *s)
 {
     print_message("%s: hash 0x%016llx (run 1), 0x%016llx (run 2), golden 0x%016llx (%s); most contacts %d, "
-                  "iterative partitions %d, direct %d, largest partition %d rows\n",
+                  "iterative partitions %d, direct %d, split %d, largest partition %d rows\n",
                   name, (unsigned long long)first, (unsigned long long)second, (unsigned long long)golden,
                   KARMA_DOUBLE ? "double" : "float", s->mostContacts, s->iterativePartitions, s->directPartitions,
-                  s->mostRowsInPartition);
+                  s->splitPartitions, s->mostRowsInPartition);
     if (getenv("KARMA_DETERMINISM_PRINT"))
         printf("#  define GOLDEN_%s 0x%016llxull\n", name, (unsigned long long)first);
 }
@@ -251,7 +251,9 @@ static void pyramid_iterative_same_hash_twice_and_golden(void **state)
     assert_true(s1.mostContacts >= 4 * 28);
     assert_true(s1.iterativePartitions >= PYRAMID_STEPS);
     assert_int_equal(s1.directPartitions, 0);
-    assert_true(KARMA_TEST_SPLIT ? s1.splitPartitions >= PYRAMID_STEPS : s1.splitPartitions == 0);
+    /* Split at every step but the first: the bricks start 1 cm apart at rest, and points apart that
+     * cannot close their gap within the step do not join them yet (decision C23). */
+    assert_true(KARMA_TEST_SPLIT ? s1.splitPartitions >= PYRAMID_STEPS - 1 : s1.splitPartitions == 0);
     /* The pyramid stands: the bricks settle by the 1 cm gaps and a little penetration, no more. */
     assert_true(drift1 < ME_R(0.1));
     assert_true(first == second);
