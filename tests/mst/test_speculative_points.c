@@ -102,8 +102,8 @@ static void dropsLandOnWholeFaces(MeBool onBox)
         Landing on, off;
         dropBox(gap, onBox, METRUE, &on);
         dropBox(gap, onBox, MEFALSE, &off);
-        printf("%s gap %.4f m: depth %.3f mm (every point: %.3f mm), spin %.2e rad/s\n", onBox ? "on a box" : "on the ground",
-               gap, 1e3 * on.depth, 1e3 * off.depth, on.spin);
+        printf("%s gap %.4f m: depth %.3f mm (every point: %.3f mm), spin %.2e rad/s\n",
+               onBox ? "on a box" : "on the ground", gap, 1e3 * on.depth, 1e3 * off.depth, on.spin);
         assert_false(on.oddCount);
         assert_true(on.spin < 1e-3);
         assert_true(on.depth <= off.depth + DEPTH_SLACK);
