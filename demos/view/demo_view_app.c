@@ -190,7 +190,9 @@ void DemoViewAppStep(DemoViewApp *a)
         a->scene->beforeStep(d, h);
     MeProfileStartSection("Collision", 0);
     McdSpaceUpdateAll(MstUniverseGetSpace(d->universe));
+    MstBridgeSetStepSize(MstUniverseGetBridge(d->universe), h);
     MstBridgeUpdateContacts(MstUniverseGetBridge(d->universe), MstUniverseGetSpace(d->universe), d->world);
+    MstBridgeSetStepSize(MstUniverseGetBridge(d->universe), 0);
     MeProfileEndSection("Collision");
     MeProfileStartSection("Dynamics", 0);
     MdtWorldStep(d->world, h);

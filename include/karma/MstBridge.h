@@ -70,6 +70,13 @@ ME_API void MstBridgeSetContactBufferSize(MstBridgeID b, int size);
 /** Size of the contact buffer of one pair test; 0 for an invalid ID (reported). */
 ME_API int MstBridgeGetContactBufferSize(MstBridgeID b);
 
+/** The step size (s) the next updates' contacts are for (0, the default: not known). Knowing it, the
+ *  bridge leaves out a pair's points apart whose gap cannot close within the step (decision C23);
+ *  MstUniverseStep sets its own step for its update. Negative or non-finite sizes are refused. */
+ME_API void MstBridgeSetStepSize(MstBridgeID b, MeReal stepSize);
+/** The step size set by MstBridgeSetStepSize; 0 when not known or for an invalid ID (reported). */
+ME_API MeReal MstBridgeGetStepSize(MstBridgeID b);
+
 /** The whole bridge step: ends the space's change block, reads every pair in chunks, handles
  *  transitions and collisions, and opens a change block again. Call after McdSpaceUpdateAll and
  *  before MdtWorldStep. */

@@ -27,6 +27,7 @@
 #include "../me/check.h"
 #include "../me/handle.h"
 #include "bridge.h"
+#include "speculative.h"
 
 /* Whether `id` is a live ID of an object of `kind` (not an owner's); reported in `function`'s name (argument `argument`) if not. */
 static MeBool checkID(const void *id, MeHandleKind kind, const char *function, const char *argument)
@@ -171,6 +172,24 @@ int MstBridgeGetContactBufferSize(MstBridgeID id)
     return b ? b->contactBufferSize : 0;
 }
 
+void MstBridgeSetStepSize(MstBridgeID id, MeReal stepSize)
+{
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
+    if (!b)
+        return;
+    if (!(ME_IS_FINITE(stepSize) && stepSize >= 0)) {
+        ME_REPORT(ME_ERR_ARGUMENT_RANGE, "argument 'stepSize' (%g) must be finite and not negative", (double)stepSize);
+        return;
+    }
+    b->stepSize = stepSize;
+}
+
+MeReal MstBridgeGetStepSize(MstBridgeID id)
+{
+    MstBridgeData *b = MstBridgeFromID(id, __func__);
+    return b ? b->stepSize : 0;
+}
+
 int MstBridgeGetLastPairCount(MstBridgeID id)
 {
     MstBridgeData *b = MstBridgeFromID(id, __func__);
@@ -275,6 +294,11 @@ int MstBridgeConvertPair(MstBridgeData *b, McdModelPair *pair, MdtWorldID world,
         return 0;
     if (result->contactCount > 0 && mat->intersectCB)
         mat->intersectCB(result);
+    /* Points apart that cannot close their gap this step add no row the solver needs (C23); a material
+     * with a callback sees every point, as reported. */
+    if (!mat->intersectCB && !mat->perContactCB && !mat->perPairCB)
+        result->contactCount =
+            MstSpeculativeKeep(world, pair, models, b->stepSize, result->contacts, result->contactCount);
     MdtContactGroupID g = (MdtContactGroupID)pair->userData;
     if (result->contactCount <= 0) {
         if (g)

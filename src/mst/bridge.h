@@ -52,6 +52,7 @@ typedef struct MstBridgeData {
     int failedPairs, failedContactsPerPair;
     MdtWorldID markedWorld;            /* the world whose task marks were sized for a chunk's tasks */
     const char *converting;            /* the application's call the conversion's messages name */
+    MeReal stepSize;                   /* of the step the contacts are for (MstBridgeSetStepSize), else 0 */
 } MstBridgeData;
 
 MstBridgeData *MstBridgeFromID(MstBridgeID id, const char *function);

@@ -276,7 +276,11 @@ void MstUniverseStep(MstUniverseID id, MeReal stepSize)
     now = MeProfileNow(prof);
     MeProfileSectionEndAt(prof, MST_SECTION_FARFIELD, now);
     MeProfileSectionStartAt(prof, MST_SECTION_NEARFIELD, now);
+    /* The bridge's rule for points apart needs the step (C23); the application's setting is kept. */
+    const MeReal bridgeStep = MstBridgeGetStepSize(u->bridge);
+    MstBridgeSetStepSize(u->bridge, stepSize);
     MstBridgeUpdateContacts(u->bridge, u->space, u->world);
+    MstBridgeSetStepSize(u->bridge, bridgeStep);
     McdSpaceSetCallerName(u->space, NULL);
     now = MeProfileNow(prof);
     MeProfileSectionEndAt(prof, MST_SECTION_NEARFIELD, now);

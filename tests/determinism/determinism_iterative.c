@@ -38,18 +38,18 @@
  * for every worker count. */
 #  define SPLIT_ROWS 100
 #  if KARMA_DOUBLE
-#    define GOLDEN_PILE 0x4b6cf79ea09e266full
-#    define GOLDEN_PYRAMID 0x4e64ed1ec85e1587ull
+#    define GOLDEN_PILE 0x894850519a70cc9bull
+#    define GOLDEN_PYRAMID 0xf140f4cb7ac97a00ull
 #  else
-#    define GOLDEN_PILE 0x8846379d0724dc4dull
-#    define GOLDEN_PYRAMID 0xbd8d7d8192464ba5ull
+#    define GOLDEN_PILE 0x3754208c55bfc075ull
+#    define GOLDEN_PYRAMID 0xeca3657439583c36ull
 #  endif
 #elif KARMA_DOUBLE
-#  define GOLDEN_PILE 0xe324a9556992301dull
-#  define GOLDEN_PYRAMID 0x7944904797b0ef4full
+#  define GOLDEN_PILE 0x9abb8530cec79ba2ull
+#  define GOLDEN_PYRAMID 0x556ebf0be8c9902full
 #else
-#  define GOLDEN_PILE 0x2a01fd69108df8efull
-#  define GOLDEN_PYRAMID 0xd700a7d560d7ccc3ull
+#  define GOLDEN_PILE 0xd684f69c2606518cull
+#  define GOLDEN_PYRAMID 0xbbd9388a53783e81ull
 #endif
 
 static MeMatrix4 groundTM = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
@@ -207,10 +207,10 @@ static uint64_t runPyramid(MeBool trace, RunStats *stats, MeReal *drift)
 static void report(const char *name, uint64_t first, uint64_t second, uint64_t golden, const RunStats *s)
 {
     print_message("%s: hash 0x%016llx (run 1), 0x%016llx (run 2), golden 0x%016llx (%s); most contacts %d, "
-                  "iterative partitions %d, direct %d, largest partition %d rows\n",
+                  "iterative partitions %d, direct %d, split %d, largest partition %d rows\n",
                   name, (unsigned long long)first, (unsigned long long)second, (unsigned long long)golden,
                   KARMA_DOUBLE ? "double" : "float", s->mostContacts, s->iterativePartitions, s->directPartitions,
-                  s->mostRowsInPartition);
+                  s->splitPartitions, s->mostRowsInPartition);
     if (getenv("KARMA_DETERMINISM_PRINT"))
         printf("#  define GOLDEN_%s 0x%016llxull\n", name, (unsigned long long)first);
 }
@@ -251,7 +251,9 @@ static void pyramid_iterative_same_hash_twice_and_golden(void **state)
     assert_true(s1.mostContacts >= 4 * 28);
     assert_true(s1.iterativePartitions >= PYRAMID_STEPS);
     assert_int_equal(s1.directPartitions, 0);
-    assert_true(KARMA_TEST_SPLIT ? s1.splitPartitions >= PYRAMID_STEPS : s1.splitPartitions == 0);
+    /* Split at every step but the first: the bricks start 1 cm apart at rest, and points apart that
+     * cannot close their gap within the step do not join them yet (decision C23). */
+    assert_true(KARMA_TEST_SPLIT ? s1.splitPartitions >= PYRAMID_STEPS - 1 : s1.splitPartitions == 0);
     /* The pyramid stands: the bricks settle by the 1 cm gaps and a little penetration, no more. */
     assert_true(drift1 < ME_R(0.1));
     assert_true(first == second);
