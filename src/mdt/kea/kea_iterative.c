@@ -13,19 +13,6 @@ static MeReal KeaRowW(const KeaProblem *problem, const KeaIterativeWork *w, int 
     return KeaRowVel4(&w->J[i], v0, v1) + w->eps[i] * x[i] - problem->rhs[i];
 }
 
-/* The generic block step: solve the block of m generic rows from s exactly with the rest of x
- * fixed: its local LCP has the matrix A_bb and r_loc = A_bb x_b - w_b, so that its w is the true w
- * of these rows. The common case of a block at rest first: all rows free, x_b - A_bb^-1 w_b with the
- * block's precomputed inverse, taken if it lies within every row's bounds (friction links inside
- * the block read the new normal values: w_b = 0 there, the block's exact solution); then a joint
- * whose limit the step reaches, one bounded row clamped in closed form (KeaBlockClampOneRow); else
- * the dense box-LCP solver. A friction link to a row outside the block becomes a fixed bound.
- * Contacts written as generic rows (adhesive, bounded friction) come here; declared contacts go to
- * the contact step.
- * Returns the block's largest row residual before (when sweep->measure; else 0).
- * Inlined with m a constant for a joint's usual blocks (KeaBlockStep), so that its loops over the
- * rows unroll and its rows stay in locals; the work's block scratch is filled for the dense solver
- * only. Size: one step's parts sharing those locals. */
 /* A block whose all-free solution xNew breaks the bound of one row l while every other row is
  * unbounded and no row is linked (a joint whose limit the step reaches): its LCP's solution is row l
  * at the bound it broke and the others moved by A^-1 e_l mu, mu = (bound - xNew_l) / (A^-1)_ll,
@@ -59,6 +46,19 @@ KEA_NOINLINE int KeaBlockClampOneRow(int m, const MeReal *inv, const MeReal *lo,
     return 1;
 }
 
+/* The generic block step: solve the block of m generic rows from s exactly with the rest of x
+ * fixed: its local LCP has the matrix A_bb and r_loc = A_bb x_b - w_b, so that its w is the true w
+ * of these rows. The common case of a block at rest first: all rows free, x_b - A_bb^-1 w_b with the
+ * block's precomputed inverse, taken if it lies within every row's bounds (friction links inside
+ * the block read the new normal values: w_b = 0 there, the block's exact solution); then a joint
+ * whose limit the step reaches, one bounded row clamped in closed form (KeaBlockClampOneRow); else
+ * the dense box-LCP solver. A friction link to a row outside the block becomes a fixed bound.
+ * Contacts written as generic rows (adhesive, bounded friction) come here; declared contacts go to
+ * the contact step.
+ * Returns the block's largest row residual before (when sweep->measure; else 0).
+ * Inlined with m a constant for a joint's usual blocks (KeaBlockStep), so that its loops over the
+ * rows unroll and its rows stay in locals; the work's block scratch is filled for the dense solver
+ * only. Size: one step's parts sharing those locals. */
 KEA_ALWAYS_INLINE MeReal KeaBlockStepSized(const int m, const KeaProblem *problem, KeaIterativeWork *w, int block,
                                            MeReal *x, KeaSweepState *sweep)
 {
