@@ -535,14 +535,16 @@ static int KeaTrialStep(KeaIterativeWork *w, int nFree, MeReal scale, MeReal *c,
 
 /* The objective's change made by the line search's trial at `scale` (KeaTrialStep), with c . A c =
  * c . (J_C dvTmp + eps c), dvTmp = M^-1 J_C^T c over the clamped positions C alone (*nClamped of
- * them). Leaves z the trial step and dvTmp = M^-1 J^T c. */
+ * them). Leaves z the trial step and, when some position is clamped, dvTmp = M^-1 J^T c (with none,
+ * dvTmp is not written: c is 0). */
 static MeReal KeaTrialChange(KeaIterativeWork *w, int nFree, int nBodies, MeReal scale, int *nClamped)
 {
     MeReal *c = w->q; /* q is free after CG */
     MeReal sum[4], cAc = ME_R(0.0);
     const int n = KeaTrialStep(w, nFree, scale, c, sum);
     int k;
-    KeaVel4Clear(w->dvTmp, nBodies + 1);
+    if (n > 0)
+        KeaVel4Clear(w->dvTmp, nBodies + 1);
     for (k = 0; k < n; ++k) {
         const int i = w->freeRows[w->clamped[k]];
         KeaRowApply4(&w->B[i], c[w->clamped[k]], &w->dvTmp[w->body[i][0]], &w->dvTmp[w->body[i][1]]);
