@@ -73,31 +73,33 @@ static MeBool canClose(const McdContact *c, const SpeculativeBody *s1, const Spe
     return c->separation <= approach * h;
 }
 
-/* Whether some point is apart by more than `gap`. */
-static MeBool anyApartBeyond(const McdContact *contacts, int n, MeReal gap)
+/* The largest of the points' separations, 0 when none is apart (a NaN is not apart). */
+static MeReal largestSeparation(const McdContact *contacts, int n)
 {
+    MeReal largest = 0;
     for (int i = 0; i < n; i++)
-        if (contacts[i].separation > gap)
-            return METRUE;
-    return MEFALSE;
+        if (contacts[i].separation > largest)
+            largest = contacts[i].separation;
+    return largest;
 }
 
 int MstSpeculativeKeep(MdtWorldID world, McdModelPairID pair, const McdModelPairModelInfo *models, MeReal h,
                        McdContact *contacts, int n)
 {
-    if (!(h > 0) || !anyApartBeyond(contacts, n, 0))
+    const MeReal largest = largestSeparation(contacts, n);
+    if (!(h > 0) || !(largest > 0))
         return n;
     MeVector3 g;
     MdtWorldGetGravity(world, g);
     const MeReal gravity = MeVector3Magnitude(g);
     /* Gravity's part of the bound alone closes this much (canClose's least approach · h, rounded the
      * same way): a pair whose points are all nearer keeps them without its bodies being read. */
-    if (!anyApartBeyond(contacts, n, h * MST_SPECULATIVE_GRAVITY * gravity * h))
+    if (!(largest > h * MST_SPECULATIVE_GRAVITY * gravity * h))
         return n;
     McdModelID m1, m2;
     McdModelPairGetModels(pair, &m1, &m2);
     const MeReal near = MST_SPECULATIVE_FLOOR * (McdModelGetContactTolerance(m1) + McdModelGetContactTolerance(m2));
-    if (!anyApartBeyond(contacts, n, near))
+    if (!(largest > near))
         return n;
     MdtBodyID body1 = (MdtBodyID)models->bodyData[0], body2 = (MdtBodyID)models->bodyData[1];
     SpeculativeBody s1, s2;
