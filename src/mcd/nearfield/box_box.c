@@ -27,18 +27,38 @@ typedef struct Box {
     const MeReal *h;   /* half extents */
 } Box;
 
-/* Clip polygon `in` (n points) by the plane o.x <= off; returns the count written to `out`. */
+/* Clip polygon `in` (n points, at most 8) by the plane o.x <= off into `out`; returns the count
+ * written, or -1 when every point is inside (`out` not written: the clip would copy `in`), the
+ * common case for a box resting within a larger one's face. */
 static int clipPlane(MeVector3 *in, int n, MeVector3 *out, const MeVector3 o, MeReal off)
 {
-    int i, m = 0;
+    MeReal dist[8];
+    int i, m = 0, outside = 0;
     for (i = 0; i < n; i++) {
-        const MeReal *p = in[i], *q = in[(i + 1) % n];
-        MeReal sp = MeVector3Dot(o, p) - off, sq = MeVector3Dot(o, q) - off;
-        if (sp <= ME_R(0.0))
-            MeVector3Copy(out[m++], p);
-        if ((sp < ME_R(0.0) && sq > ME_R(0.0)) || (sp > ME_R(0.0) && sq < ME_R(0.0)))
-            MeVector3Lerp(out[m++], p, q, sp / (sp - sq));
+        dist[i] = MeVector3Dot(o, in[i]) - off;
+        outside |= !(dist[i] <= ME_R(0.0));
     }
+    if (!outside)
+        return -1;
+    for (i = 0; i < n; i++) {
+        const int next = i + 1 < n ? i + 1 : 0;
+        const MeReal sp = dist[i], sq = dist[next];
+        if (sp <= ME_R(0.0))
+            MeVector3Copy(out[m++], in[i]);
+        if ((sp < ME_R(0.0) && sq > ME_R(0.0)) || (sp > ME_R(0.0) && sq < ME_R(0.0)))
+            MeVector3Lerp(out[m++], in[i], in[next], sp / (sp - sq));
+    }
+    return m;
+}
+
+/* clipPlane of poly[*cur] (cnt points) into poly[1 - *cur], which becomes the current polygon
+ * unless every point was inside; returns the count. */
+static int clipCurrent(MeVector3 poly[2][16], int *cur, int cnt, const MeVector3 o, MeReal off)
+{
+    const int m = clipPlane(poly[*cur], cnt, poly[1 - *cur], o, off);
+    if (m < 0)
+        return cnt;
+    *cur = 1 - *cur;
     return m;
 }
 
@@ -112,11 +132,9 @@ static int faceContact(const Box *ref, int k, const MeVector3 nr, const Box *inc
         const MeReal *e = ref->ax[(k + i) % 3];
         MeReal ce = centre[i - 1], he = ref->h[(k + i) % 3] + slack;
         MeVector3 me;
-        cnt = clipPlane(poly[cur], cnt, poly[1 - cur], e, ce + he);
-        cur = 1 - cur;
+        cnt = clipCurrent(poly, &cur, cnt, e, ce + he);
         MeVector3MultiplyScalar(me, e, -ME_R(1.0));
-        cnt = clipPlane(poly[cur], cnt, poly[1 - cur], me, -ce + he);
-        cur = 1 - cur;
+        cnt = clipCurrent(poly, &cur, cnt, me, -ce + he);
     }
     MeVector3ScaleAndAdd(fc, ref->c, ref->h[k], nr);
     off = MeVector3Dot(fc, nr);
