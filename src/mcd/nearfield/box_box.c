@@ -27,12 +27,12 @@ typedef struct Box {
     const MeReal *h;   /* half extents */
 } Box;
 
-/* Clip polygon `in` (n points, at most 8) by the plane o.x <= off into `out`; returns the count
+/* Clip polygon `in` (n points, at most 16: faceContact's buffers) by the plane o.x <= off into `out`; returns the count
  * written, or -1 when every point is inside (`out` not written: the clip would copy `in`), the
  * common case for a box resting within a larger one's face. */
 static int clipPlane(MeVector3 *in, int n, MeVector3 *out, const MeVector3 o, MeReal off)
 {
-    MeReal dist[8];
+    MeReal dist[16];
     int i, m = 0, outside = 0;
     for (i = 0; i < n; i++) {
         dist[i] = MeVector3Dot(o, in[i]) - off;
