@@ -158,6 +158,7 @@ typedef struct MdtRowWriter {
     MdtRow *captured; /* when not NULL, rows are copied here instead (MdtConstraintCaptureRows) */
     KeaContact *contacts; /* the step's declared contacts (global rows), contactCount so far */
     int contactCount;
+    int unproven; /* some row written could not be proved valid here (Kea then checks the rows itself) */
 } MdtRowWriter;
 
 /** Append a row for the current constraint; returns its index relative to the constraint's first

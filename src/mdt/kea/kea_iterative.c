@@ -335,8 +335,8 @@ static int KeaEffortAllowed(const KeaProblem *problem, const KeaParameters *para
     return 1;
 }
 
-/* The set-up of rows [i0, i1): B = M^-1 J^T, the diagonal, J with its pads and world halves zeroed,
- * the halves' bodies, and the warm start's bounds (read from the unclamped x, as the direct path
+/* The set-up of rows [i0, i1): B = M^-1 J^T, the diagonal, J with its pads and world halves zeroed
+ * (the work's copy, unless the solve reads the problem's J in place: KeaSolveRowsProved), the halves' bodies, and the warm start's bounds (read from the unclamped x, as the direct path
  * does). Each row writes only its own entries. The arrays' addresses are read once, into locals: the
  * compiler cannot keep them over the rows' stores, which it must assume may alias them. */
 static void KeaSetUpRows(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x, int i0, int i1)
@@ -348,7 +348,8 @@ static void KeaSetUpRows(const KeaProblem *problem, KeaIterativeWork *w, const M
     const MeReal *const mu = problem->mu;
     const int *const link = problem->link;
     const KeaBodyColumns *const columns = w->bodyColumns;
-    KeaJacobianRow *const B = w->B, *const J = w->J;
+    KeaJacobianRow *const B = w->B, *const J = w->paddedJ;
+    const int copyJ = w->J == w->paddedJ;
     MeReal *const diag = w->diag, *const invDiag = w->invDiag, *const eps = w->eps;
     MeReal *const lo = w->lo, *const hi = w->hi;
     int(*const body)[2] = w->body;
@@ -363,10 +364,12 @@ static void KeaSetUpRows(const KeaProblem *problem, KeaIterativeWork *w, const M
         diag[i] = d;
         invDiag[i] = d > ME_R(0.0) ? ME_R(1.0) / d : ME_R(0.0);
         eps[i] = e;
-        KeaLanesStore(J[i].lin0, KeaLanesKeep(KeaLanesLoad(in[i].lin0), keep0));
-        KeaLanesStore(J[i].ang0, KeaLanesKeep(KeaLanesLoad(in[i].ang0), keep0));
-        KeaLanesStore(J[i].lin1, KeaLanesKeep(KeaLanesLoad(in[i].lin1), keep1));
-        KeaLanesStore(J[i].ang1, KeaLanesKeep(KeaLanesLoad(in[i].ang1), keep1));
+        if (copyJ) {
+            KeaLanesStore(J[i].lin0, KeaLanesKeep(KeaLanesLoad(in[i].lin0), keep0));
+            KeaLanesStore(J[i].ang0, KeaLanesKeep(KeaLanesLoad(in[i].ang0), keep0));
+            KeaLanesStore(J[i].lin1, KeaLanesKeep(KeaLanesLoad(in[i].lin1), keep1));
+            KeaLanesStore(J[i].ang1, KeaLanesKeep(KeaLanesLoad(in[i].ang1), keep1));
+        }
         body[i][0] = b0 >= 0 ? b0 : nb;
         body[i][1] = b1 >= 0 ? b1 : nb;
         if (link && link[i] >= 0) { /* KeaRowBoundsInline */
@@ -641,14 +644,17 @@ static void KeaIterate(void *data)
     stats->residual = KeaIterativeResidual(problem, w, x);
 }
 
+/* Size: KeaSolve's problem, parameters and outputs, the arena, and whether the rows were proved. */
 KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
-                            MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
+                            MeReal *x, KeaBodyVelocity *dv, KeaStats *stats, int rowsProved)
 {
     KeaIterativeWork w;
     KeaSplit split;
     KeaSolveState state;
 
     KeaIterativeLayout(arena, problem->nRows, problem->nBodies, KEA_MAX_BLOCK_ROWS, &w);
+    if (rowsProved) /* J's pads and world halves are zero already: read in place, not copied */
+        w.J = problem->J;
     if (KeaSplits(problem->nRows, params)) { /* KeaSplitMemoryRequired has made room */
         KeaSplitLayout(arena, problem->nRows, problem->nBodies, KeaSplitWorkers(&params->tasks), &split);
         split.hook = params->tasks;
