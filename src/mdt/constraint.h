@@ -78,6 +78,7 @@ typedef struct MdtConstraintData {
     /* Step bookkeeping. */
     unsigned long visitStamp;     /* partitioner: step in which it was last placed */
     int rowStart;                 /* first row in the step's row arrays, or -1 */
+    int rowBound;                 /* this step's MdtConstraintRowBound, kept by MdtPackStage for its pieces */
     int partition;
 
     /* Type-specific data, interpreted by the type's file only. */

@@ -312,7 +312,7 @@ static void packPiece(const PackTask *t, int k, int row, int contact)
         MdtConstraintData *c = out->constraints[i];
         writer.constraint = c;
         writer.first = writer.count;
-        writer.capacity = writer.count + MdtConstraintRowBound(c);
+        writer.capacity = writer.count + c->rowBound;
         writer.localBody[0] = c->body[0]->stepIndex - bodyBase;
         writer.localBody[1] = c->body[1] ? c->body[1]->stepIndex - bodyBase : KEA_WORLD;
         /* the rows' bodies in the partition (KeaSolveRowsProved) */
@@ -454,7 +454,7 @@ static void planPieces(MdtWorldData *w, int pieces)
             r->piecePartition[k] = p;
             int bound = 0, end = c0 + (int)((long long)(j + 1) * n / count);
             for (int i = r->pieceConstraintStart[k]; i < end; i++)
-                bound += MdtConstraintRowBound(out->constraints[i]);
+                bound += out->constraints[i]->rowBound;
             r->packRowRoom[k] = user ? -1 - room : room;
             r->packContactRoom[k] = contactRoom;
             room += bound;
@@ -504,8 +504,11 @@ void MdtPackStage(MdtWorldData *w)
     MdtRunStepTask(w, predictTask, out->bodyCount, PREDICT_MIN_RANGE, w);
 
     int total = 0;
-    for (int i = 0; i < out->constraintCount; i++)
-        total += MdtConstraintRowBound(out->constraints[i]);
+    for (int i = 0; i < out->constraintCount; i++) { /* kept: a contact group's bound is a pass over its contacts */
+        MdtConstraintData *c = out->constraints[i];
+        c->rowBound = MdtConstraintRowBound(c);
+        total += c->rowBound;
+    }
     r->count = 0;
     if (!allocateRows(w, total, out->bodyCount, out->partitionCount, out->constraintCount)) {
         /* No memory for rows: the constraints are skipped this step (reported by the chunk). */
