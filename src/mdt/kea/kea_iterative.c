@@ -297,20 +297,49 @@ KEA_NOINLINE MeReal KeaSweepSplit(const KeaProblem *problem, KeaIterativeWork *w
     return worst;
 }
 
+/* worst after a row's residual r: KeaResidual's rule (a NaN stays, else the largest). */
+static MeReal KeaWorseResidual(MeReal worst, MeReal r) { return r > worst || r != r ? r : worst; }
+
+/* KeaResidualRows' measure of a declared contact's rows s, s + 1, s + 2 folded into worst, row after
+ * row: their J dv gathered at once (KeaContactGather, KeaRowVel4's sums with the world's half
+ * included), the friction rows' bounds from the normal row's x (their link, KeaContactsAreValid). */
+static MeReal KeaResidualContact(const KeaProblem *problem, const KeaIterativeWork *w, const MeReal *x, int s,
+                                 MeReal worst)
+{
+    _Alignas(16) MeReal jdv[4];
+    int r;
+    KeaLanesStoreA(jdv, KeaContactGather(&w->J[s], &w->dv[w->body[s][0]], &w->dv[w->body[s][1]]));
+    for (r = 0; r < 3; ++r) {
+        const int i = s + r;
+        const MeReal wi = jdv[r] + w->eps[i] * x[i] - problem->rhs[i];
+        MeReal lo = problem->lo[i], hi = problem->hi[i];
+        if (r > 0)
+            KeaFrictionBounds(problem->lo[i], problem->hi[i], problem->mu[i], x[s], &lo, &hi);
+        worst = KeaWorseResidual(worst, KeaRowResidual(w->diag[i], x[i], wi, lo, hi));
+    }
+    return worst;
+}
+
 /* KeaResidual (kea_rows.c) of rows [i0, i1) of the final x and dv from the work's diagonal and padded
- * rows (no M^-1 J^T recomputed per row): the same measure, J_i dv summed in the padded kernel's order. */
+ * rows (no M^-1 J^T recomputed per row): the same measure, J_i dv summed in the padded kernel's order;
+ * a declared contact whose rows all lie in the range by KeaResidualContact. */
 static MeReal KeaResidualRows(const KeaProblem *problem, const KeaIterativeWork *w, const MeReal *x, int i0, int i1)
 {
     MeReal worst = ME_R(0.0);
     int i;
     for (i = i0; i < i1; ++i) {
+        const int b = w->rowBlock[i];
+        if (w->blockContact[b] && w->blockStart[b] == i && i + 3 <= i1) {
+            worst = KeaResidualContact(problem, w, x, i, worst);
+            i += 2;
+            continue;
+        }
         const MeReal d = w->diag[i];
         const MeReal wi = KeaRowW(problem, w, i, x, &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
         MeReal lo, hi, r;
         KeaRowBoundsInline(problem, x, i, &lo, &hi);
         r = KeaRowResidual(d, x[i], wi, lo, hi);
-        if (r > worst || r != r)
-            worst = r;
+        worst = KeaWorseResidual(worst, r);
     }
     return worst;
 }
