@@ -78,6 +78,7 @@ typedef struct MdtConstraintData {
     /* Step bookkeeping. */
     unsigned long visitStamp;     /* partitioner: step in which it was last placed */
     int rowStart;                 /* first row in the step's row arrays, or -1 */
+    int rowBound;                 /* this step's MdtConstraintRowBound, kept by MdtPackStage for its pieces */
     int partition;
 
     /* Type-specific data, interpreted by the type's file only. */
@@ -158,6 +159,7 @@ typedef struct MdtRowWriter {
     MdtRow *captured; /* when not NULL, rows are copied here instead (MdtConstraintCaptureRows) */
     KeaContact *contacts; /* the step's declared contacts (global rows), contactCount so far */
     int contactCount;
+    int unproven; /* some row written could not be proved valid here (Kea then checks the rows itself) */
 } MdtRowWriter;
 
 /** Append a row for the current constraint; returns its index relative to the constraint's first

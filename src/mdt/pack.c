@@ -94,6 +94,7 @@ int MdtRowWriterAdd(MdtRowWriter *w, const MdtRow *row)
     }
     const MeReal x0 = local < MDT_MAX_JOINT_ROWS ? c->impulse[local] : 0;
     writeRowParameters(w, i, 1, row, b1 != NULL, &jv, &x0);
+    w->unproven |= !KeaLanesFinite3x4(J->lin0, J->ang0, J->lin1, J->ang1); /* proved J (rowsProved) */
     return local;
 }
 
@@ -137,6 +138,11 @@ int MdtRowWriterAddDirections(MdtRowWriter *w, MeVector3 dir[3], const MeVector3
     const KeaLanes jv = KeaLanesAdd(KeaLanesAdd(DOT3(d0, d1, d2, b0->velStar), DOT3(a0, a1, a2, b0->velrotStar)),
                                     KeaLanesAdd(DOT3(l0, l1, l2, v1), DOT3(c0, c1, c2, w1)));
 #undef DOT3
+    /* J proved (rowsProved): its entries are below MEINFINITY when each direction's |d|_1 <= 4 and the
+     * lever arms' |r0|_1 + |r1|_1 < 2^60 (|r x d| <= 2^62); false for a NaN, which leaves it to Kea. */
+    const KeaLanes directions = KeaLanesAdd(KeaLanesAdd(KeaLanesAbs(d0), KeaLanesAbs(d1)), KeaLanesAbs(d2));
+    const MeReal arms = ((MeFabs(r0[0]) + MeFabs(r0[1])) + (MeFabs(r0[2]) + MeFabs(r1[0]))) + (MeFabs(r1[1]) + MeFabs(r1[2]));
+    w->unproven |= !(KeaLanesAllLe4(directions, SPLAT(4)) & (arms < ME_R(1152921504606846976.0)));
 #undef SPLAT
     MeReal jvs[4];
     KeaLanesStore(jvs, jv);
@@ -201,7 +207,7 @@ static MeBool allocateRows(MdtWorldData *w, int rows, int bodies, int partitions
     size_t bytes = sizeof(KeaJacobianRow) * nr + sizeof(KeaBody) * nb + sizeof(KeaBodyVelocity) * nb +
                    sizeof(MeReal) * 6 * nr + sizeof(int) * (3 * nr + (size_t)partitions + 1) +
                    sizeof(KeaContact) * (nr / 3 + 1) + sizeof(int) * ((size_t)partitions + 1) +
-                   sizeof(int) * 7 * pieces + 64;
+                   sizeof(int) * (8 * pieces + (size_t)partitions) + 64;
     unsigned char *mem = MeChunkGetMem(&w->rowChunk, bytes);
     if (!mem)
         return MEFALSE;
@@ -232,6 +238,8 @@ static MeBool allocateRows(MdtWorldData *w, int rows, int bodies, int partitions
     r->pieceConstraintStart = r->packContacts + pieces;
     r->pieceBodyStart = r->pieceConstraintStart + pieces;
     r->piecePartition = r->pieceBodyStart + pieces;
+    r->pieceUnproven = r->piecePartition + pieces;
+    r->partitionUnproven = r->pieceUnproven + pieces;
     return METRUE;
 }
 
@@ -240,6 +248,42 @@ typedef struct PackTask {
     MdtWorldData *w;
     MdtRowWriter proto;
 } PackTask;
+
+/* Rows [i0, i1) keep the promises of KeaRowsAreValid (kea_solve.c) that their values make, proved
+ * over the arrays after they are written so that Kea does not pass over them again
+ * (KeaSolveRowsProved); their bodies are proved per constraint and J as each row is written. r, ε, x0
+ * and μ are finite (|v| < MEINFINITY) when the sum of their magnitudes is (a NaN fails, and a sum
+ * over MEINFINITY only leaves the proof to Kea); ε >= 0 and lo <= hi; μ >= 0 on every row (needed on
+ * linked rows); a link names an earlier row of the range, one without a link. Four rows a step in
+ * lanes, the rest one by one. */
+static int rowsProved(const MdtRowWriter *w, int i0, int i1)
+{
+    const MeReal *const rhs = w->rhs, *const eps = w->epsilon, *const x0 = w->x0, *const mu = w->mu;
+    const MeReal *const lo = w->lo, *const hi = w->hi;
+    const int *const link = w->link;
+    const KeaLanes zero = KeaLanesSplat(0);
+    KeaLanes sum = zero;
+    int proved = 1, i = i0;
+    for (; i + 4 <= i1; i += 4) {
+        const KeaLanes e = KeaLanesLoad(eps + i), m = KeaLanesLoad(mu + i);
+        sum = KeaLanesAdd(sum, KeaLanesAdd(KeaLanesAdd(KeaLanesAbs(KeaLanesLoad(rhs + i)), KeaLanesAbs(e)),
+                                           KeaLanesAdd(KeaLanesAbs(KeaLanesLoad(x0 + i)), KeaLanesAbs(m))));
+        proved &= KeaLanesAllLe4(zero, e) & KeaLanesAllLe4(zero, m) &
+                  KeaLanesAllLe4(KeaLanesLoad(lo + i), KeaLanesLoad(hi + i));
+    }
+    MeReal rest = 0;
+    for (; i < i1; i++) {
+        rest += (MeFabs(rhs[i]) + MeFabs(eps[i])) + (MeFabs(x0[i]) + MeFabs(mu[i]));
+        proved &= (eps[i] >= 0) & (mu[i] >= 0) & (lo[i] <= hi[i]);
+    }
+    proved &= KeaLanesAllLt4(sum, KeaLanesSplat(MEINFINITY)) & (rest < MEINFINITY);
+    for (i = i0; i < i1; i++) {
+        const int l = link[i];
+        if (l >= 0)
+            proved &= (l >= i0) & (l < i) && link[l] == -1;
+    }
+    return proved;
+}
 
 /* Write piece k of a partition: bodies [pieceBodyStart[k], pieceBodyStart[k + 1]) and constraints
  * [pieceConstraintStart[k], ...[k + 1]) of partition piecePartition[k], its rows from `row` and its
@@ -259,22 +303,28 @@ static void packPiece(const PackTask *t, int k, int row, int contact)
         r->bodies[i].invMass = b->invMass;
         MdtBodyWorldInverseInertia(b, r->bodies[i].invInertia);
     }
+    const unsigned bodies = (unsigned)(out->partitionStart[p + 1] - bodyBase);
     MdtRowWriter writer = t->proto;
     writer.count = row;
     writer.contactCount = contact;
+    writer.unproven = 0;
     for (int i = r->pieceConstraintStart[k]; i < r->pieceConstraintStart[k + 1]; i++) {
         MdtConstraintData *c = out->constraints[i];
         writer.constraint = c;
         writer.first = writer.count;
-        writer.capacity = writer.count + MdtConstraintRowBound(c);
+        writer.capacity = writer.count + c->rowBound;
         writer.localBody[0] = c->body[0]->stepIndex - bodyBase;
         writer.localBody[1] = c->body[1] ? c->body[1]->stepIndex - bodyBase : KEA_WORLD;
+        /* the rows' bodies in the partition (KeaSolveRowsProved) */
+        writer.unproven |= (unsigned)writer.localBody[0] >= bodies ||
+                           (writer.localBody[1] != KEA_WORLD && (unsigned)writer.localBody[1] >= bodies);
         c->cls->addRows(c, &writer);
         c->rowStart = writer.first;
         c->rowCount = writer.count - writer.first;
     }
     r->packRows[k] = writer.count - row;
     r->packContacts[k] = writer.contactCount - contact;
+    r->pieceUnproven[k] = writer.unproven || !rowsProved(&writer, row, writer.count);
 }
 
 /* Pieces whose rows the task writes; those of a partition with a user constraint are written on the
@@ -348,6 +398,7 @@ static void initPackTask(PackTask *task, MdtWorldData *w)
     writer->captured = NULL;
     writer->contacts = r->contacts;
     writer->contactCount = 0;
+    writer->unproven = 0;
     writer->h = w->stepSize;
     writer->gamma = w->gamma;
     writer->epsilon0 = w->epsilon;
@@ -371,6 +422,7 @@ static int packInPlace(PackTask *task, int *contacts)
         r->packRowRoom[p] = row;
         r->packContactRoom[p] = contact;
         packPiece(task, p, row, contact);
+        r->partitionUnproven[p] = r->pieceUnproven[p];
         r->partitionRowStart[p] = row;
         r->partitionContactStart[p] = contact;
         row += r->packRows[p];
@@ -402,7 +454,7 @@ static void planPieces(MdtWorldData *w, int pieces)
             r->piecePartition[k] = p;
             int bound = 0, end = c0 + (int)((long long)(j + 1) * n / count);
             for (int i = r->pieceConstraintStart[k]; i < end; i++)
-                bound += MdtConstraintRowBound(out->constraints[i]);
+                bound += out->constraints[i]->rowBound;
             r->packRowRoom[k] = user ? -1 - room : room;
             r->packContactRoom[k] = contactRoom;
             room += bound;
@@ -428,12 +480,14 @@ static int packInPieces(PackTask *task, int pieces, int *contacts)
         const int first = row;
         r->partitionRowStart[p] = row;
         r->partitionContactStart[p] = contact;
+        r->partitionUnproven[p] = 0;
         for (; k < pieces && r->piecePartition[k] == p; k++) {
             if (r->packRowRoom[k] < 0) {
                 r->packRowRoom[k] = -1 - r->packRowRoom[k];
                 packPiece(task, k, r->packRowRoom[k], r->packContactRoom[k]);
             }
             moveRows(w, k, row, contact);
+            r->partitionUnproven[p] |= r->pieceUnproven[k];
             row += r->packRows[k];
             contact += r->packContacts[k];
         }
@@ -450,8 +504,11 @@ void MdtPackStage(MdtWorldData *w)
     MdtRunStepTask(w, predictTask, out->bodyCount, PREDICT_MIN_RANGE, w);
 
     int total = 0;
-    for (int i = 0; i < out->constraintCount; i++)
-        total += MdtConstraintRowBound(out->constraints[i]);
+    for (int i = 0; i < out->constraintCount; i++) { /* kept: a contact group's bound is a pass over its contacts */
+        MdtConstraintData *c = out->constraints[i];
+        c->rowBound = MdtConstraintRowBound(c);
+        total += c->rowBound;
+    }
     r->count = 0;
     if (!allocateRows(w, total, out->bodyCount, out->partitionCount, out->constraintCount)) {
         /* No memory for rows: the constraints are skipped this step (reported by the chunk). */

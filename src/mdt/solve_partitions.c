@@ -80,7 +80,10 @@ static void solvePartition(MdtWorldData *w, const KeaParameters *kea, int p, voi
     problem.contacts = r->contacts + contact0;
     for (int i = 0; i < problem.nContacts; i++)
         r->contacts[contact0 + i].row -= row0;
-    KeaStatus status = KeaSolveSized(&problem, kea, workspace, need, r->x + row0, r->dv + body0, &res->stats);
+    /* Rows the writer proved valid (pack.c) are not checked again. */
+    KeaStatus status = (r->partitionUnproven[p] ? KeaSolveSized : KeaSolveRowsProved)(&problem, kea, workspace, need,
+                                                                                     r->x + row0, r->dv + body0,
+                                                                                     &res->stats);
     res->stats.status = status;
     MeBool failed = status == KeaStatusBadInput;
     if (!failed && w->checkSim && status != KeaStatusWorkspaceTooSmall)

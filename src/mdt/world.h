@@ -79,6 +79,9 @@ typedef struct MdtStepRows {
     int *packRows, *packContacts;       /* per piece: how many it wrote */
     int *pieceConstraintStart, *pieceBodyStart; /* pieces + 1 offsets into the partitions' lists */
     int *piecePartition;                /* per piece: its partition */
+    int *pieceUnproven;                 /* per piece: some row its writer could not prove valid */
+    int *partitionUnproven;             /* per partition: the same, for its pieces together: Kea checks
+                                           its rows (KeaSolveSized), else trusts them (KeaSolveRowsProved) */
     KeaBody *bodies;         /* per step body (partition order) */
     KeaBodyVelocity *dv;     /* per step body: velocity change from the constraints */
     size_t workspaceBytes;   /* Kea workspace for the largest partition */

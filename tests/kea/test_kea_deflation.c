@@ -46,7 +46,8 @@ static void make_work(const KeaProblem *p, KeaIterativeWork *w)
     int i, h, k, c;
     memset(w, 0, sizeof *w);
     w->nb = nb;
-    w->J = calloc((size_t)n, sizeof(KeaJacobianRow));
+    w->paddedJ = calloc((size_t)n, sizeof(KeaJacobianRow));
+    w->J = w->paddedJ;
     w->B = calloc((size_t)n, sizeof(KeaJacobianRow));
     w->body = calloc((size_t)n, sizeof(int[2]));
     w->eps = calloc((size_t)n, sizeof(MeReal));
@@ -71,7 +72,7 @@ static void make_work(const KeaProblem *p, KeaIterativeWork *w)
         for (h = 0; h < 2; ++h) {
             const int b = p->rowBodies[i][h];
             const MeReal *lin = h ? p->J[i].lin1 : p->J[i].lin0, *ang = h ? p->J[i].ang1 : p->J[i].ang0;
-            MeReal *jl = h ? w->J[i].lin1 : w->J[i].lin0, *ja = h ? w->J[i].ang1 : w->J[i].ang0;
+            MeReal *jl = h ? w->paddedJ[i].lin1 : w->paddedJ[i].lin0, *ja = h ? w->paddedJ[i].ang1 : w->paddedJ[i].ang0;
             MeReal *bl = h ? w->B[i].lin1 : w->B[i].lin0, *ba = h ? w->B[i].ang1 : w->B[i].ang0;
             w->body[i][h] = b == KEA_WORLD ? nb : b;
             if (b == KEA_WORLD)
@@ -90,7 +91,7 @@ static void make_work(const KeaProblem *p, KeaIterativeWork *w)
 
 static void free_work(KeaIterativeWork *w)
 {
-    free(w->J);
+    free(w->paddedJ);
     free(w->B);
     free(w->body);
     free(w->eps);

@@ -1038,6 +1038,44 @@ static void joint_heavy_partitions_get_sm_once(void **state)
     assert_true(steps[1] > 0 && steps[1] < steps[0]);
 }
 
+/* A caller that proved its rows (KeaSolveRowsProved: J's pads and world halves zero, as the column's
+ * are) gets the solve of KeaSolveSized bit for bit, J read in place instead of copied; a row it would
+ * have had to check (a NaN rhs) is then the caller's to catch: the same problem through
+ * KeaSolveSized is bad input. */
+static void proved_rows_solve_as_checked_rows(void **state)
+{
+    (void)state;
+    const double v[6 * 12] = {0}, gravity[3] = {0, 0, -9.81};
+    KtProblem t;
+    KeaParameters params = kt_params(KeaPathIterative);
+    kt_column(&t, 12, 1.0, 0.5, 1e-3);
+    kt_set_rhs_from_velocities(&t, v, 0.01, gravity);
+    const int n = t.p.nRows, nb = t.p.nBodies;
+    const size_t bytes = KeaMemoryRequired(n, nb, KeaPathIterative);
+    void *work = malloc(bytes);
+    MeReal *x[2] = {calloc((size_t)n, sizeof(MeReal)), calloc((size_t)n, sizeof(MeReal))};
+    KeaBodyVelocity *dv[2] = {calloc((size_t)nb, sizeof(KeaBodyVelocity)), calloc((size_t)nb, sizeof(KeaBodyVelocity))};
+    KeaStats stats[2];
+    const KeaStatus checked = KeaSolveSized(&t.p, &params, work, bytes, x[0], dv[0], &stats[0]);
+    assert_true(checked == KeaStatusOk || checked == KeaStatusMaxIterations);
+    assert_int_equal(KeaSolveRowsProved(&t.p, &params, work, bytes, x[1], dv[1], &stats[1]), checked);
+    for (int i = 0; i < n; ++i)
+        assert_true(kt_same_bits(x[0][i], x[1][i]));
+    for (int b = 0; b < nb; ++b)
+        for (int k = 0; k < 3; ++k)
+            assert_true(kt_same_bits(dv[0][b].lin[k], dv[1][b].lin[k]) && kt_same_bits(dv[0][b].ang[k], dv[1][b].ang[k]));
+    assert_true(kt_same_bits(stats[0].residual, stats[1].residual));
+    assert_true(stats[0].residual > ME_R(0.0));
+    t.rhs[7] = (MeReal)NAN;
+    assert_int_equal(KeaSolveSized(&t.p, &params, work, bytes, x[0], dv[0], &stats[0]), KeaStatusBadInput);
+    free(work);
+    for (int k = 0; k < 2; ++k) {
+        free(x[k]);
+        free(dv[k]);
+    }
+    kt_free(&t);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1062,6 +1100,7 @@ int main(void)
         cmocka_unit_test(subspace_steps_that_do_not_pay_wait),
         cmocka_unit_test(nncg_converges_faster_to_the_same_solution),
         cmocka_unit_test(solves_keep_dv_the_impulses_velocity_change),
+        cmocka_unit_test(proved_rows_solve_as_checked_rows),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -133,23 +133,37 @@ typedef struct ContactArms {
     MeBool movingWorld;
 } ContactArms;
 
+/* Separating speed of body 0 from body 1 along the normal at the contact (negative when approaching). */
+static MeReal separatingSpeed(const ContactData *d, const ContactArms *a)
+{
+    MeReal vn = pointVelocityAlong(a->b0, a->r0, d->normal) - pointVelocityAlong(a->b1, a->r1, d->normal);
+    if (a->movingWorld)
+        vn -= MeVector3Dot(d->normal, d->worldVelocity);
+    return vn;
+}
+
 /* Restitution. A contact reported with a gap g that the bodies close within this step (at speed
  * v = −vn) bounces now if g is small (the bounce comes at most g early), or else lands exactly
  * this step and bounces at the start of the next with the remembered approach speed (at most
  * one step late); the choice g < e v h / (1 + 2e) balances the two position errors. Returns
- * whether it bounces now, with the approach speed to bounce from in *approachOut. */
-static MeBool bouncesNow(ContactData *d, MeReal vn, const MdtRowWriter *w, MeReal *approachOut)
+ * whether it bounces now, with the approach speed to bounce from in *approachOut (set only then).
+ * A contact without the bounce option never bounces and keeps no pending bounce; its speed is not
+ * needed. */
+static MeBool bouncesNow(ContactData *d, const ContactArms *a, const MdtRowWriter *w, MeReal *approachOut)
 {
     const MdtContactParams *p = &d->params;
     const MeReal h = w->h;
-    const MeBool bounces = (p->options & MdtBclContactOptionBounce) != 0;
+    if (!(p->options & MdtBclContactOptionBounce)) {
+        d->pendingBounce = 0;
+        return MEFALSE;
+    }
     const MeReal gap = -d->penetration;
-    MeReal approach = -vn;
-    if (bounces && d->pendingBounce > approach)
+    MeReal approach = -separatingSpeed(d, a);
+    if (d->pendingBounce > approach)
         approach = d->pendingBounce;
     d->pendingBounce = 0;
     MeBool bounceNow = MEFALSE;
-    if (bounces && approach > p->velThreshold && approach * h >= gap) {
+    if (approach > p->velThreshold && approach * h >= gap) {
         MeReal e = p->restitution;
         if (gap <= 0 || gap * (1 + 2 * e) <= e * approach * h)
             bounceNow = METRUE;
@@ -169,12 +183,8 @@ static void normalRowParams(ContactData *d, const ContactArms *a, const MdtRowWr
     row->lo = (p->options & MdtBclContactOptionAdhesive) ? -p->max_adhesive_force : 0;
     row->hi = MEINFINITY;
     row->epsilon = (p->options & MdtBclContactOptionSoft) ? p->softness : 0;
-    /* Separating speed of body 0 from body 1 (negative when approaching). */
-    MeReal vn = pointVelocityAlong(a->b0, a->r0, d->normal) - pointVelocityAlong(a->b1, a->r1, d->normal);
-    if (a->movingWorld)
-        vn -= MeVector3Dot(d->normal, d->worldVelocity);
-    MeReal approach;
-    if (bouncesNow(d, vn, w, &approach)) {
+    MeReal approach = 0;
+    if (bouncesNow(d, a, w, &approach)) {
         /* Separate at e·|vn|; a deeper penetration's correction wins if it asks for more. */
         MeReal correction = w->gamma * d->penetration / h;
         if (correction > w->maxCorrection)

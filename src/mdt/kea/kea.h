@@ -268,6 +268,13 @@ KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void 
  *  Seven arguments: KeaSolve's. */
 KeaStatus KeaSolveSized(const KeaProblem *problem, const KeaParameters *params, void *workspace,
                         size_t workspaceSize, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
+/** KeaSolveSized for a caller that has proved every row valid itself (the world's row writer,
+ *  src/mdt/pack.c: indices in range, lo <= hi, softness >= 0, rhs, J, x0 and linked mu finite, links
+ *  to unlinked rows) and J's pads and halves on the world zero: the rows are not checked again (the
+ *  bodies and declared contacts are), and the iterative path reads J in place instead of a padded
+ *  copy. A caller that could not prove its rows calls KeaSolveSized. Seven arguments: KeaSolve's. */
+KeaStatus KeaSolveRowsProved(const KeaProblem *problem, const KeaParameters *params, void *workspace,
+                             size_t workspaceSize, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
 
 /** Delta v = M^-1 J^T x for every body (nBodies entries). */
 void KeaBodyVelocityFromImpulses(const KeaProblem *problem, const MeReal *x, KeaBodyVelocity *dv);

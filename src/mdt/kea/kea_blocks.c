@@ -44,7 +44,8 @@ void KeaIterativeLayout(KeaArena *arena, int n, int nb, int maxBlockRows, KeaIte
     w->z = KEA_ALLOC(arena, MeReal, positions);
     w->dir = KEA_ALLOC(arena, MeReal, positions);
     w->q = KEA_ALLOC(arena, MeReal, positions);
-    w->J = KEA_ALLOC(arena, KeaJacobianRow, n);
+    w->paddedJ = KEA_ALLOC(arena, KeaJacobianRow, n);
+    w->J = w->paddedJ;
     w->JT = KEA_ALLOC(arena, MeReal, (size_t)n * 12);
     w->localD = KEA_ALLOC(arena, MeReal, cap);
     w->body = (int(*)[2])KeaArenaAlloc(arena, sizeof(int[2]) * (size_t)n);

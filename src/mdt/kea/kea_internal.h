@@ -412,7 +412,9 @@ KeaStatus KeaSolveDirect(const KeaProblem *problem, const KeaParameters *params,
  *  residual are not set; the iterative path takes over. Never returned by KeaSolve. */
 #define KeaStatusOverBudget ((KeaStatus)-2)
 
+/** The iterative path; rowsProved: the caller proved the rows (KeaSolveRowsProved), J's pads and
+ *  world halves among them, so that the solve reads the problem's J in place. */
 KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
-                            MeReal *x, KeaBodyVelocity *dv, KeaStats *stats);
+                            MeReal *x, KeaBodyVelocity *dv, KeaStats *stats, int rowsProved);
 
 #endif /* KEA_INTERNAL_H */

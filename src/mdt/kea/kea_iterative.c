@@ -297,20 +297,49 @@ KEA_NOINLINE MeReal KeaSweepSplit(const KeaProblem *problem, KeaIterativeWork *w
     return worst;
 }
 
+/* worst after a row's residual r: KeaResidual's rule (a NaN stays, else the largest). */
+static MeReal KeaWorseResidual(MeReal worst, MeReal r) { return r > worst || r != r ? r : worst; }
+
+/* KeaResidualRows' measure of a declared contact's rows s, s + 1, s + 2 folded into worst, row after
+ * row: their J dv gathered at once (KeaContactGather, KeaRowVel4's sums with the world's half
+ * included), the friction rows' bounds from the normal row's x (their link, KeaContactsAreValid). */
+static MeReal KeaResidualContact(const KeaProblem *problem, const KeaIterativeWork *w, const MeReal *x, int s,
+                                 MeReal worst)
+{
+    _Alignas(16) MeReal jdv[4];
+    int r;
+    KeaLanesStoreA(jdv, KeaContactGather(&w->J[s], &w->dv[w->body[s][0]], &w->dv[w->body[s][1]]));
+    for (r = 0; r < 3; ++r) {
+        const int i = s + r;
+        const MeReal wi = jdv[r] + w->eps[i] * x[i] - problem->rhs[i];
+        MeReal lo = problem->lo[i], hi = problem->hi[i];
+        if (r > 0)
+            KeaFrictionBounds(problem->lo[i], problem->hi[i], problem->mu[i], x[s], &lo, &hi);
+        worst = KeaWorseResidual(worst, KeaRowResidual(w->diag[i], x[i], wi, lo, hi));
+    }
+    return worst;
+}
+
 /* KeaResidual (kea_rows.c) of rows [i0, i1) of the final x and dv from the work's diagonal and padded
- * rows (no M^-1 J^T recomputed per row): the same measure, J_i dv summed in the padded kernel's order. */
+ * rows (no M^-1 J^T recomputed per row): the same measure, J_i dv summed in the padded kernel's order;
+ * a declared contact whose rows all lie in the range by KeaResidualContact. */
 static MeReal KeaResidualRows(const KeaProblem *problem, const KeaIterativeWork *w, const MeReal *x, int i0, int i1)
 {
     MeReal worst = ME_R(0.0);
     int i;
     for (i = i0; i < i1; ++i) {
+        const int b = w->rowBlock[i];
+        if (w->blockContact[b] && w->blockStart[b] == i && i + 3 <= i1) {
+            worst = KeaResidualContact(problem, w, x, i, worst);
+            i += 2;
+            continue;
+        }
         const MeReal d = w->diag[i];
         const MeReal wi = KeaRowW(problem, w, i, x, &w->dv[w->body[i][0]], &w->dv[w->body[i][1]]);
         MeReal lo, hi, r;
         KeaRowBoundsInline(problem, x, i, &lo, &hi);
         r = KeaRowResidual(d, x[i], wi, lo, hi);
-        if (r > worst || r != r)
-            worst = r;
+        worst = KeaWorseResidual(worst, r);
     }
     return worst;
 }
@@ -335,8 +364,8 @@ static int KeaEffortAllowed(const KeaProblem *problem, const KeaParameters *para
     return 1;
 }
 
-/* The set-up of rows [i0, i1): B = M^-1 J^T, the diagonal, J with its pads and world halves zeroed,
- * the halves' bodies, and the warm start's bounds (read from the unclamped x, as the direct path
+/* The set-up of rows [i0, i1): B = M^-1 J^T, the diagonal, J with its pads and world halves zeroed
+ * (the work's copy, unless the solve reads the problem's J in place: KeaSolveRowsProved), the halves' bodies, and the warm start's bounds (read from the unclamped x, as the direct path
  * does). Each row writes only its own entries. The arrays' addresses are read once, into locals: the
  * compiler cannot keep them over the rows' stores, which it must assume may alias them. */
 static void KeaSetUpRows(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x, int i0, int i1)
@@ -348,7 +377,8 @@ static void KeaSetUpRows(const KeaProblem *problem, KeaIterativeWork *w, const M
     const MeReal *const mu = problem->mu;
     const int *const link = problem->link;
     const KeaBodyColumns *const columns = w->bodyColumns;
-    KeaJacobianRow *const B = w->B, *const J = w->J;
+    KeaJacobianRow *const B = w->B, *const J = w->paddedJ;
+    const int copyJ = w->J == w->paddedJ;
     MeReal *const diag = w->diag, *const invDiag = w->invDiag, *const eps = w->eps;
     MeReal *const lo = w->lo, *const hi = w->hi;
     int(*const body)[2] = w->body;
@@ -363,10 +393,12 @@ static void KeaSetUpRows(const KeaProblem *problem, KeaIterativeWork *w, const M
         diag[i] = d;
         invDiag[i] = d > ME_R(0.0) ? ME_R(1.0) / d : ME_R(0.0);
         eps[i] = e;
-        KeaLanesStore(J[i].lin0, KeaLanesKeep(KeaLanesLoad(in[i].lin0), keep0));
-        KeaLanesStore(J[i].ang0, KeaLanesKeep(KeaLanesLoad(in[i].ang0), keep0));
-        KeaLanesStore(J[i].lin1, KeaLanesKeep(KeaLanesLoad(in[i].lin1), keep1));
-        KeaLanesStore(J[i].ang1, KeaLanesKeep(KeaLanesLoad(in[i].ang1), keep1));
+        if (copyJ) {
+            KeaLanesStore(J[i].lin0, KeaLanesKeep(KeaLanesLoad(in[i].lin0), keep0));
+            KeaLanesStore(J[i].ang0, KeaLanesKeep(KeaLanesLoad(in[i].ang0), keep0));
+            KeaLanesStore(J[i].lin1, KeaLanesKeep(KeaLanesLoad(in[i].lin1), keep1));
+            KeaLanesStore(J[i].ang1, KeaLanesKeep(KeaLanesLoad(in[i].ang1), keep1));
+        }
         body[i][0] = b0 >= 0 ? b0 : nb;
         body[i][1] = b1 >= 0 ? b1 : nb;
         if (link && link[i] >= 0) { /* KeaRowBoundsInline */
@@ -641,14 +673,17 @@ static void KeaIterate(void *data)
     stats->residual = KeaIterativeResidual(problem, w, x);
 }
 
+/* Size: KeaSolve's problem, parameters and outputs, the arena, and whether the rows were proved. */
 KeaStatus KeaSolveIterative(const KeaProblem *problem, const KeaParameters *params, KeaArena *arena,
-                            MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
+                            MeReal *x, KeaBodyVelocity *dv, KeaStats *stats, int rowsProved)
 {
     KeaIterativeWork w;
     KeaSplit split;
     KeaSolveState state;
 
     KeaIterativeLayout(arena, problem->nRows, problem->nBodies, KEA_MAX_BLOCK_ROWS, &w);
+    if (rowsProved) /* J's pads and world halves are zero already: read in place, not copied */
+        w.J = problem->J;
     if (KeaSplits(problem->nRows, params)) { /* KeaSplitMemoryRequired has made room */
         KeaSplitLayout(arena, problem->nRows, problem->nBodies, KeaSplitWorkers(&params->tasks), &split);
         split.hook = params->tasks;

@@ -284,7 +284,9 @@ typedef struct KeaIterativeWork {
      * per body half. Bodies are KeaVel4 (4-padded 3-vectors, pads 0) with one extra all-zero body
      * at index nb that stands for the world; the rows' copies of J have zero pads and zero halves
      * on the world, so that the extra body contributes exact zeros. */
-    KeaJacobianRow *J;     /**< J_i with pads and world halves zeroed */
+    const KeaJacobianRow *J; /**< J_i with pads and world halves zeroed: paddedJ, or the problem's own
+                                  J when its caller proved it so (KeaSolveRowsProved) */
+    KeaJacobianRow *paddedJ; /**< the work's copy of J, pads and world halves zeroed */
     MeReal *JT;            /**< per block of m rows from s, its 12 x m transpose J_b^T (pads
                                 dropped) at JT + 12 s: J_b v is then a sum of 12 columns; a
                                 declared contact's (gathered row by row) holds its

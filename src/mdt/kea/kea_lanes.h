@@ -84,6 +84,9 @@ static inline int KeaLanesLt3(KeaLanes a, KeaLanes b) { return _mm_movemask_ps(_
 static inline int KeaLanesNonZero3(KeaLanes a) { return _mm_movemask_ps(_mm_cmpneq_ps(a, _mm_setzero_ps())) & 7; }
 /** Whether some lane of a is not 0 (true for a NaN), all four lanes. */
 static inline int KeaLanesAnyNonZero(KeaLanes a) { return _mm_movemask_ps(_mm_cmpneq_ps(a, _mm_setzero_ps())) != 0; }
+/** Whether a <= b (a < b) in all four lanes (false where a NaN is). */
+static inline int KeaLanesAllLe4(KeaLanes a, KeaLanes b) { return _mm_movemask_ps(_mm_cmple_ps(a, b)) == 15; }
+static inline int KeaLanesAllLt4(KeaLanes a, KeaLanes b) { return _mm_movemask_ps(_mm_cmplt_ps(a, b)) == 15; }
 /** [KeaLanesSum3(a), KeaLanesSum3(b), KeaLanesSum3(c), 0]: the three sums at once, the same
  *  additions in the same order (a transpose, then two additions of lanes). */
 static inline KeaLanes KeaLanesSum3Each(KeaLanes a, KeaLanes b, KeaLanes c)
@@ -230,6 +233,14 @@ static inline int KeaLanesNonZero3(KeaLanes a)
 static inline int KeaLanesAnyNonZero(KeaLanes a)
 {
     return a.v[0] != ME_R(0.0) || a.v[1] != ME_R(0.0) || a.v[2] != ME_R(0.0) || a.v[3] != ME_R(0.0);
+}
+static inline int KeaLanesAllLe4(KeaLanes a, KeaLanes b)
+{
+    return (a.v[0] <= b.v[0]) & (a.v[1] <= b.v[1]) & (a.v[2] <= b.v[2]) & (a.v[3] <= b.v[3]);
+}
+static inline int KeaLanesAllLt4(KeaLanes a, KeaLanes b)
+{
+    return (a.v[0] < b.v[0]) & (a.v[1] < b.v[1]) & (a.v[2] < b.v[2]) & (a.v[3] < b.v[3]);
 }
 static inline KeaLanes KeaLanesSum3Each(KeaLanes a, KeaLanes b, KeaLanes c)
 {

@@ -169,8 +169,9 @@ static void KeaRowsCheckChunks(int start, int end, int worker, void *data)
 }
 
 /* The problem keeps kea.h's promises (the bodies, the rows: KeaRowsAreValid, the declared contacts);
- * the rows in chunks over params' workers when the partition will be split. */
-static int KeaProblemIsValid(const KeaProblem *p, const KeaParameters *params)
+ * the rows in chunks over params' workers when the partition will be split, and not at all when the
+ * caller proved them (KeaSolveRowsProved). */
+static int KeaProblemIsValid(const KeaProblem *p, const KeaParameters *params, int rowsProved)
 {
     int b, k;
     if (p->nRows < 0 || p->nBodies < 0)
@@ -189,7 +190,9 @@ static int KeaProblemIsValid(const KeaProblem *p, const KeaParameters *params)
         if (!ok)
             return 0;
     }
-    if (KeaSplits(p->nRows, params)) { /* on one worker the same chunks, here */
+    if (rowsProved) {
+        /* the caller's proof stands for KeaRowsAreValid */
+    } else if (KeaSplits(p->nRows, params)) { /* on one worker the same chunks, here */
         const int chunks = KeaRowChunkCount(p->nRows);
         KeaRowsCheck check;
         check.problem = p;
@@ -211,10 +214,15 @@ static int KeaProblemIsValid(const KeaProblem *p, const KeaParameters *params)
     return KeaContactsAreValid(p);
 }
 
+/* What the caller did already (KeaSolveIn's `done`): sized the workspace for this problem
+ * (KeaSolveSized), proved the rows valid (KeaSolveRowsProved). */
+#define KEA_DONE_SIZED 1
+#define KEA_DONE_ROWS_PROVED 2
+
 /* Size: KeaSolve's arguments (the problem, its parameters, the caller's workspace and the three
- * outputs), and whether the caller sized the workspace for this problem already (KeaSolveSized). */
+ * outputs), and what the caller did already (KEA_DONE_*). */
 static KeaStatus KeaSolveIn(const KeaProblem *problem, const KeaParameters *params, void *workspace,
-                            size_t workspaceSize, MeReal *x, KeaBodyVelocity *dv, KeaStats *statsOut, int sized)
+                            size_t workspaceSize, MeReal *x, KeaBodyVelocity *dv, KeaStats *statsOut, int done)
 {
     KeaStats localStats, *stats = statsOut ? statsOut : &localStats;
     KeaArena arena;
@@ -230,7 +238,7 @@ static KeaStatus KeaSolveIn(const KeaProblem *problem, const KeaParameters *para
     }
     path = KeaSelectPath(problem ? problem->nRows : 0, params);
     stats->path = path;
-    if (!problem || (!x && problem->nRows > 0) || !KeaProblemIsValid(problem, params)) {
+    if (!problem || (!x && problem->nRows > 0) || !KeaProblemIsValid(problem, params, (done & KEA_DONE_ROWS_PROVED) != 0)) {
         stats->status = KeaStatusBadInput;
         return stats->status;
     }
@@ -238,7 +246,7 @@ static KeaStatus KeaSolveIn(const KeaProblem *problem, const KeaParameters *para
     stats->bodies = problem->nBodies;
 
     /* Align the workspace base; the velocity output gets workspace room when the caller has none. */
-    if (!sized) /* a layout pass over the workspace's allocations: hundreds of instructions */
+    if (!(done & KEA_DONE_SIZED)) /* a layout pass over the workspace's allocations: hundreds of instructions */
         need = KeaMemoryRequired(problem->nRows, problem->nBodies, path) +
                KeaSplitMemoryRequired(problem->nRows, problem->nBodies, params);
     skew = workspace ? (size_t)((KEA_ALIGN - ((uintptr_t)workspace & (KEA_ALIGN - 1))) & (KEA_ALIGN - 1)) : 0;
@@ -276,7 +284,8 @@ static KeaStatus KeaSolveIn(const KeaProblem *problem, const KeaParameters *para
         stats->status = KeaSolveDirect(problem, params, &arena, 0, x, velocity, stats);
     }
     if (path == KeaPathIterative)
-        stats->status = KeaSolveIterative(problem, params, &arena, x, velocity, stats);
+        stats->status = KeaSolveIterative(problem, params, &arena, x, velocity, stats,
+                                          (done & KEA_DONE_ROWS_PROVED) != 0);
     return stats->status;
 }
 
@@ -292,5 +301,12 @@ KeaStatus KeaSolve(const KeaProblem *problem, const KeaParameters *params, void 
 KeaStatus KeaSolveSized(const KeaProblem *problem, const KeaParameters *params, void *workspace,
                         size_t workspaceSize, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
 {
-    return KeaSolveIn(problem, params, workspace, workspaceSize, x, dv, stats, 1);
+    return KeaSolveIn(problem, params, workspace, workspaceSize, x, dv, stats, KEA_DONE_SIZED);
+}
+
+/* Size: KeaSolve's. */
+KeaStatus KeaSolveRowsProved(const KeaProblem *problem, const KeaParameters *params, void *workspace,
+                             size_t workspaceSize, MeReal *x, KeaBodyVelocity *dv, KeaStats *stats)
+{
+    return KeaSolveIn(problem, params, workspace, workspaceSize, x, dv, stats, KEA_DONE_SIZED | KEA_DONE_ROWS_PROVED);
 }
