@@ -141,7 +141,8 @@ int MdtRowWriterAddDirections(MdtRowWriter *w, MeVector3 dir[3], const MeVector3
     /* J proved (rowsProved): its entries are below MEINFINITY when each direction's |d|_1 <= 4 and the
      * lever arms' |r0|_1 + |r1|_1 < 2^60 (|r x d| <= 2^62); false for a NaN, which leaves it to Kea. */
     const KeaLanes directions = KeaLanesAdd(KeaLanesAdd(KeaLanesAbs(d0), KeaLanesAbs(d1)), KeaLanesAbs(d2));
-    const MeReal arms = ((MeFabs(r0[0]) + MeFabs(r0[1])) + (MeFabs(r0[2]) + MeFabs(r1[0]))) + (MeFabs(r1[1]) + MeFabs(r1[2]));
+    const MeReal arms =
+        ((MeFabs(r0[0]) + MeFabs(r0[1])) + (MeFabs(r0[2]) + MeFabs(r1[0]))) + (MeFabs(r1[1]) + MeFabs(r1[2]));
     w->unproven |= !(KeaLanesAllLe4(directions, SPLAT(4)) & (arms < ME_R(1152921504606846976.0)));
 #undef SPLAT
     MeReal jvs[4];
@@ -280,7 +281,7 @@ static int rowsProved(const MdtRowWriter *w, int i0, int i1)
     for (i = i0; i < i1; i++) {
         const int l = link[i];
         if (l >= 0)
-            proved &= (l >= i0) & (l < i) && link[l] == -1;
+            proved &= ((l >= i0) & (l < i)) && link[l] == -1; /* link[l] read only in the range */
     }
     return proved;
 }

@@ -1063,7 +1063,8 @@ static void proved_rows_solve_as_checked_rows(void **state)
         assert_true(kt_same_bits(x[0][i], x[1][i]));
     for (int b = 0; b < nb; ++b)
         for (int k = 0; k < 3; ++k)
-            assert_true(kt_same_bits(dv[0][b].lin[k], dv[1][b].lin[k]) && kt_same_bits(dv[0][b].ang[k], dv[1][b].ang[k]));
+            assert_true(kt_same_bits(dv[0][b].lin[k], dv[1][b].lin[k]) &&
+                        kt_same_bits(dv[0][b].ang[k], dv[1][b].ang[k]));
     assert_true(kt_same_bits(stats[0].residual, stats[1].residual));
     assert_true(stats[0].residual > ME_R(0.0));
     t.rhs[7] = (MeReal)NAN;

@@ -365,7 +365,8 @@ static int KeaEffortAllowed(const KeaProblem *problem, const KeaParameters *para
 }
 
 /* The set-up of rows [i0, i1): B = M^-1 J^T, the diagonal, J with its pads and world halves zeroed
- * (the work's copy, unless the solve reads the problem's J in place: KeaSolveRowsProved), the halves' bodies, and the warm start's bounds (read from the unclamped x, as the direct path
+ * (the work's copy, unless the solve reads the problem's J in place: KeaSolveRowsProved), the
+ * halves' bodies, and the warm start's bounds (read from the unclamped x, as the direct path
  * does). Each row writes only its own entries. The arrays' addresses are read once, into locals: the
  * compiler cannot keep them over the rows' stores, which it must assume may alias them. */
 static void KeaSetUpRows(const KeaProblem *problem, KeaIterativeWork *w, const MeReal *x, int i0, int i1)

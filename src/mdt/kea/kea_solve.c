@@ -168,9 +168,29 @@ static void KeaRowsCheckChunks(int start, int end, int worker, void *data)
     }
 }
 
-/* The problem keeps kea.h's promises (the bodies, the rows: KeaRowsAreValid, the declared contacts);
- * the rows in chunks over params' workers when the partition will be split, and not at all when the
- * caller proved them (KeaSolveRowsProved). */
+/* The rows keep kea.h's promises (KeaRowsAreValid): in chunks over params' workers when the
+ * partition will be split (on one worker the same chunks, here). */
+static int KeaProblemRowsAreValid(const KeaProblem *p, const KeaParameters *params)
+{
+    if (KeaSplits(p->nRows, params)) {
+        const int chunks = KeaRowChunkCount(p->nRows);
+        KeaRowsCheck check;
+        check.problem = p;
+        atomic_init(&check.invalid, 0);
+        atomic_init(&check.chunksRun, 0);
+        if (params->tasks.run && params->tasks.workers > 1)
+            params->tasks.run(KeaRowsCheckChunks, chunks, 1, &check, params->tasks.user);
+        else
+            KeaRowsCheckChunks(0, chunks, 0, &check);
+        if (atomic_load_explicit(&check.chunksRun, memory_order_relaxed) != chunks)
+            return KeaRowsAreValid(p, 0, p->nRows);
+        return !atomic_load_explicit(&check.invalid, memory_order_relaxed);
+    }
+    return KeaRowsAreValid(p, 0, p->nRows);
+}
+
+/* The problem keeps kea.h's promises (the bodies, the rows, the declared contacts); the rows not
+ * checked when the caller proved them (KeaSolveRowsProved). */
 static int KeaProblemIsValid(const KeaProblem *p, const KeaParameters *params, int rowsProved)
 {
     int b, k;
@@ -190,27 +210,8 @@ static int KeaProblemIsValid(const KeaProblem *p, const KeaParameters *params, i
         if (!ok)
             return 0;
     }
-    if (rowsProved) {
-        /* the caller's proof stands for KeaRowsAreValid */
-    } else if (KeaSplits(p->nRows, params)) { /* on one worker the same chunks, here */
-        const int chunks = KeaRowChunkCount(p->nRows);
-        KeaRowsCheck check;
-        check.problem = p;
-        atomic_init(&check.invalid, 0);
-        atomic_init(&check.chunksRun, 0);
-        if (params->tasks.run && params->tasks.workers > 1)
-            params->tasks.run(KeaRowsCheckChunks, chunks, 1, &check, params->tasks.user);
-        else
-            KeaRowsCheckChunks(0, chunks, 0, &check);
-        if (atomic_load_explicit(&check.chunksRun, memory_order_relaxed) != chunks) {
-            if (!KeaRowsAreValid(p, 0, p->nRows))
-                return 0;
-        } else if (atomic_load_explicit(&check.invalid, memory_order_relaxed)) {
-            return 0;
-        }
-    } else if (!KeaRowsAreValid(p, 0, p->nRows)) {
+    if (!rowsProved && !KeaProblemRowsAreValid(p, params))
         return 0;
-    }
     return KeaContactsAreValid(p);
 }
 
@@ -238,7 +239,8 @@ static KeaStatus KeaSolveIn(const KeaProblem *problem, const KeaParameters *para
     }
     path = KeaSelectPath(problem ? problem->nRows : 0, params);
     stats->path = path;
-    if (!problem || (!x && problem->nRows > 0) || !KeaProblemIsValid(problem, params, (done & KEA_DONE_ROWS_PROVED) != 0)) {
+    if (!problem || (!x && problem->nRows > 0) ||
+        !KeaProblemIsValid(problem, params, (done & KEA_DONE_ROWS_PROVED) != 0)) {
         stats->status = KeaStatusBadInput;
         return stats->status;
     }
